@@ -1,0 +1,96 @@
+# dynx: one entry point for everything.
+#   make run    install missing packages, build, run the default deck, say where results are
+#   make test   unit tests (debug build) and regression tests (release build)
+#   make bench  benchmarks (recorded in docs/performance.md)
+#   make studies  error-against-run-time studies (docs/studies/)
+SHELL := /bin/sh
+FC := h5pfc
+SRC_DIRS := base parallel model materials deck elements loads io solvers
+LIB_SRC := $(foreach d,$(SRC_DIRS),$(wildcard src/$(d)/*.f90))
+PROG_SRC := src/main/dynx.f90 $(wildcard src/tools/*.f90)
+ALL_SRC := $(LIB_SRC) $(PROG_SRC)
+TEST_SRC := $(wildcard tests/unit/*.f90)
+LIBS := -lmetis -llapack -lblas -lfftw3
+COMMON := -I/usr/include -ffree-line-length-132
+REL_FLAGS := $(COMMON) -O3 -march=native -funroll-loops
+DBG_FLAGS := $(COMMON) -O0 -g -std=f2008 -Wall -Wextra -Wimplicit-interface -fcheck=all \
+             -ffpe-trap=invalid,zero,overflow -fbacktrace -Wno-unused-dummy-argument \
+             -Wno-maybe-uninitialized -Wno-compare-reals -Wno-function-elimination
+DEFAULT_DECK := decks/taylor_bar/deck.k
+OUT := out
+
+PROGS := bin/dynx $(patsubst src/tools/%.f90,bin/%,$(wildcard src/tools/*.f90))
+PROGS := $(subst _,-,$(PROGS))
+
+.PHONY: all deps run test unit regression bench studies clean debug
+all: $(PROGS)
+
+deps:
+	@sh scripts/install-deps.sh
+
+build/deps.mk: $(ALL_SRC) $(TEST_SRC) scripts/f90deps.py
+	@mkdir -p build
+	@python3 scripts/f90deps.py $(ALL_SRC) $(TEST_SRC) > $@.tmp
+	@mv $@.tmp $@
+
+OBJ := build/release
+include build/deps.mk
+OBJ := build/debug
+include build/deps.mk
+
+REL_LIB_OBJ := $(patsubst %.f90,build/release/%.o,$(notdir $(LIB_SRC)))
+DBG_LIB_OBJ := $(patsubst %.f90,build/debug/%.o,$(notdir $(LIB_SRC)))
+vpath %.f90 $(addprefix src/,$(SRC_DIRS) main tools) tests/unit
+
+build/release/%.o: %.f90 | build/release
+	$(FC) $(REL_FLAGS) -Jbuild/release -c $< -o $@
+build/debug/%.o: %.f90 | build/debug
+	$(FC) $(DBG_FLAGS) -Jbuild/debug -c $< -o $@
+build/release build/debug bin:
+	@mkdir -p $@
+
+build/release/libdynx.a: $(REL_LIB_OBJ)
+	ar rcs $@ $^
+build/debug/libdynx.a: $(DBG_LIB_OBJ)
+	ar rcs $@ $^
+
+bin/dynx: build/release/dynx.o build/release/libdynx.a | bin
+	$(FC) $(REL_FLAGS) -o $@ $^ $(LIBS)
+bin/dynx-debug: build/debug/dynx.o build/debug/libdynx.a | bin
+	$(FC) $(DBG_FLAGS) -o $@ $^ $(LIBS)
+bin/dynx-%: build/release/dynx_%.o build/release/libdynx.a | bin
+	$(FC) $(REL_FLAGS) -o $@ $^ $(LIBS)
+
+UNIT_TESTS := $(patsubst tests/unit/%.f90,build/debug/tests/%,$(filter tests/unit/test_%,$(TEST_SRC)))
+build/debug/tests/%: build/debug/%.o build/debug/dx_assert.o build/debug/libdynx.a
+	@mkdir -p build/debug/tests
+	$(FC) $(DBG_FLAGS) -o $@ $^ $(LIBS)
+
+debug: bin/dynx-debug
+
+run: deps
+	@$(MAKE) --no-print-directory all
+	@bin/dynx -i $(DEFAULT_DECK) -o $(OUT)/taylor_bar
+	@echo "dynx: results of $(DEFAULT_DECK) are in $(OUT)/taylor_bar/ (open $(OUT)/taylor_bar/d3plot.xdmf in ParaView)"
+
+unit: $(UNIT_TESTS)
+	@sh scripts/run_unit_tests.sh $(UNIT_TESTS)
+
+regression: all bin/dynx-debug
+	@sh scripts/run_regression.sh
+
+test: deps
+	@$(MAKE) --no-print-directory all debug $(UNIT_TESTS)
+	@sh scripts/run_unit_tests.sh $(UNIT_TESTS)
+	@sh scripts/run_regression.sh
+
+bench: deps
+	@$(MAKE) --no-print-directory all
+	@sh scripts/bench.sh
+
+studies: deps
+	@$(MAKE) --no-print-directory all
+	@sh scripts/studies.sh
+
+clean:
+	rm -rf build bin out

@@ -1,0 +1,45 @@
+!> Error reporting in the fpm pattern: library code returns type(error_t), allocatable;
+!> only the main program turns an error into an exit code.
+!> Exit codes: 2 input error, 3 numerical failure in the run, 4 I/O failure.
+module dx_error
+   use, intrinsic :: iso_c_binding, only: c_int
+   implicit none
+   private
+   public :: error_t, set_error, EXIT_INPUT, EXIT_NUMERIC, EXIT_IO, EXIT_OK, exit_process
+
+   integer, parameter :: EXIT_OK = 0, EXIT_INPUT = 2, EXIT_NUMERIC = 3, EXIT_IO = 4
+
+   type :: error_t
+      character(:), allocatable :: message   !< full message, may span lines
+      integer :: code = EXIT_INPUT           !< exit code the main program uses
+   end type error_t
+
+   interface
+      subroutine c_exit(status) bind(C, name='exit')
+         import :: c_int
+         integer(c_int), value :: status
+      end subroutine c_exit
+   end interface
+
+contains
+
+   !> End the process with this exit code (only the main programs call it).
+   subroutine exit_process(code)
+      integer, intent(in) :: code
+      flush(6)
+      flush(0)
+      call c_exit(int(code, c_int))
+   end subroutine exit_process
+
+   !> Allocate error and set its message and exit code (default: input error).
+   subroutine set_error(error, message, code)
+      type(error_t), allocatable, intent(inout) :: error
+      character(*), intent(in) :: message
+      integer, intent(in), optional :: code
+      if (allocated(error)) deallocate(error)
+      allocate(error)
+      error%message = message
+      error%code = EXIT_INPUT
+      if (present(code)) error%code = code
+   end subroutine set_error
+end module dx_error

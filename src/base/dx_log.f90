@@ -1,0 +1,71 @@
+!> Logging: info lines, warnings (collected and summarized at the end), status verbosity.
+!> The only mutable module state besides parallel/: the log settings and the warning list.
+module dx_log
+   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+   implicit none
+   private
+   public :: log_info, log_warn, log_error, log_summary, log_set_quiet, log_set_unit, &
+             nwarnings, log_flush
+
+   logical :: quiet = .false.
+   integer :: extra_unit = -1              !< optional log file (dynx.log in the output dir)
+   integer :: nwarn = 0
+   integer, parameter :: max_kept = 50
+   character(len=400) :: kept(max_kept)
+
+contains
+   subroutine log_set_quiet(q)
+      logical, intent(in) :: q
+      quiet = q
+   end subroutine log_set_quiet
+
+   !> Also write every message to this open unit (negative: none).
+   subroutine log_set_unit(u)
+      integer, intent(in) :: u
+      extra_unit = u
+   end subroutine log_set_unit
+
+   !> An informational line on stdout (and the log file).
+   subroutine log_info(msg)
+      character(*), intent(in) :: msg
+      if (.not. quiet) write(output_unit, '(a)') msg
+      if (extra_unit > 0) write(extra_unit, '(a)') msg
+   end subroutine log_info
+
+   !> A warning: printed at once, kept for the end-of-run summary.
+   subroutine log_warn(msg)
+      character(*), intent(in) :: msg
+      nwarn = nwarn + 1
+      if (nwarn <= max_kept) kept(nwarn) = msg
+      write(error_unit, '(a)') 'dynx: warning: '//msg
+      if (extra_unit > 0) write(extra_unit, '(a)') 'dynx: warning: '//msg
+   end subroutine log_warn
+
+   !> An error message on stderr (and the log file).
+   subroutine log_error(msg)
+      character(*), intent(in) :: msg
+      write(error_unit, '(a)') 'dynx: error: '//msg
+      if (extra_unit > 0) write(extra_unit, '(a)') 'dynx: error: '//msg
+   end subroutine log_error
+
+   integer function nwarnings()
+      nwarnings = nwarn
+   end function nwarnings
+
+   !> Print the collected warnings once more at the end of a run.
+   subroutine log_summary()
+      integer :: i
+      character(12) :: buf
+      if (nwarn == 0) return
+      write(buf, '(i0)') nwarn
+      call log_info('dynx: '//trim(buf)//' warning(s):')
+      do i = 1, min(nwarn, max_kept)
+         call log_info('  - '//trim(kept(i)))
+      end do
+   end subroutine log_summary
+
+   subroutine log_flush()
+      flush(output_unit)
+      if (extra_unit > 0) flush(extra_unit)
+   end subroutine log_flush
+end module dx_log

@@ -1,0 +1,68 @@
+!> Small string helpers.
+module dx_strings
+   use dx_kinds, only: wp
+   implicit none
+   private
+   public :: upper, lower, str, rstr
+
+   interface str
+      module procedure str_int, str_int8
+   end interface str
+contains
+   !> Upper-case copy of s (ASCII).
+   pure function upper(s) result(u)
+      character(*), intent(in) :: s
+      character(len(s)) :: u
+      integer :: i, k
+      u = s
+      do i = 1, len(s)
+         k = iachar(s(i:i))
+         if (k >= iachar('a') .and. k <= iachar('z')) u(i:i) = achar(k - 32)
+      end do
+   end function upper
+
+   !> Lower-case copy of s (ASCII).
+   pure function lower(s) result(u)
+      character(*), intent(in) :: s
+      character(len(s)) :: u
+      integer :: i, k
+      u = s
+      do i = 1, len(s)
+         k = iachar(s(i:i))
+         if (k >= iachar('A') .and. k <= iachar('Z')) u(i:i) = achar(k + 32)
+      end do
+   end function lower
+
+   !> Integer as a trimmed string.
+   pure function str_int(i) result(s)
+      integer, intent(in) :: i
+      character(:), allocatable :: s
+      character(24) :: buf
+      write(buf, '(i0)') i
+      s = trim(buf)
+   end function str_int
+
+   pure function str_int8(i) result(s)
+      use dx_kinds, only: i8
+      integer(i8), intent(in) :: i
+      character(:), allocatable :: s
+      character(24) :: buf
+      write(buf, '(i0)') i
+      s = trim(buf)
+   end function str_int8
+
+   !> Real as a short trimmed string (es format with given significant digits, default 6).
+   function rstr(x, digits) result(s)
+      real(wp), intent(in) :: x
+      integer, intent(in), optional :: digits
+      character(:), allocatable :: s
+      character(40) :: buf
+      character(20) :: fmt
+      integer :: d
+      d = 6
+      if (present(digits)) d = digits
+      write(fmt, '(a,i0,a,i0,a)') '(es', d + 8, '.', d - 1, ')'
+      write(buf, fmt) x
+      s = trim(adjustl(buf))
+   end function rstr
+end module dx_strings

@@ -1,0 +1,95 @@
+!> Hex8 geometry on chunks of elements: the Flanagan-Belytschko uniform-strain gradient
+!> vectors B_iI = integral over V of dN_I/dx_i (closed form, exact for the trilinear hex),
+!> the volume V = sum_I x_I B_xI, the hourglass base vectors and the characteristic length.
+!> Ref: D.P. Flanagan, T. Belytschko, "A uniform strain hexahedron and quadrilateral with
+!> orthogonal hourglass control", IJNME 17 (1981) 679-706, eq. (79) and its node permutations.
+!> Node order: LS-DYNA's (1-4 bottom face counter-clockwise seen from outside... i.e. the
+!> natural coordinates of node I are XI_NODE(:,I)); arrays are (nv, 8): element index first.
+module dx_hex8_geometry
+   use dx_kinds, only: wp
+   implicit none
+   private
+   public :: hex8_bvectors, hex8_char_length, GAMMA_HG, XI_NODE
+
+   !> natural coordinates of the 8 nodes
+   real(wp), parameter :: XI_NODE(3, 8) = reshape([ &
+      -1.0_wp, -1.0_wp, -1.0_wp,   1.0_wp, -1.0_wp, -1.0_wp,   1.0_wp, 1.0_wp, -1.0_wp, &
+      -1.0_wp, 1.0_wp, -1.0_wp,   -1.0_wp, -1.0_wp, 1.0_wp,    1.0_wp, -1.0_wp, 1.0_wp, &
+       1.0_wp, 1.0_wp, 1.0_wp,    -1.0_wp, 1.0_wp, 1.0_wp], [3, 8])
+   !> hourglass base vectors Gamma(alpha, I): nodal values of eta*zeta, zeta*xi, xi*eta, xi*eta*zeta
+   real(wp), parameter :: GAMMA_HG(4, 8) = reshape([ &
+       1.0_wp,  1.0_wp,  1.0_wp, -1.0_wp,   1.0_wp, -1.0_wp, -1.0_wp,  1.0_wp, &
+      -1.0_wp, -1.0_wp,  1.0_wp, -1.0_wp,  -1.0_wp,  1.0_wp, -1.0_wp,  1.0_wp, &
+      -1.0_wp, -1.0_wp,  1.0_wp,  1.0_wp,  -1.0_wp,  1.0_wp, -1.0_wp, -1.0_wp, &
+       1.0_wp,  1.0_wp,  1.0_wp,  1.0_wp,   1.0_wp, -1.0_wp, -1.0_wp, -1.0_wp], [4, 8])
+   !> node permutations that carry the formula for node 1 to node I (FB 1981, table 1)
+   integer, parameter :: PERM(8, 8) = reshape([ &
+      1, 2, 3, 4, 5, 6, 7, 8,   2, 3, 4, 1, 6, 7, 8, 5,   3, 4, 1, 2, 7, 8, 5, 6, &
+      4, 1, 2, 3, 8, 5, 6, 7,   5, 8, 7, 6, 1, 4, 3, 2,   6, 5, 8, 7, 2, 1, 4, 3, &
+      7, 6, 5, 8, 3, 2, 1, 4,   8, 7, 6, 5, 4, 3, 2, 1], [8, 8])
+
+contains
+
+   !> B vectors (nv,8) per direction and the volume of nv hexes with nodal coordinates x,y,z.
+   pure subroutine hex8_bvectors(n, nv, x, y, z, bx, by, bz, vol)
+      integer, intent(in) :: n, nv
+      real(wp), intent(in) :: x(nv, 8), y(nv, 8), z(nv, 8)
+      real(wp), intent(out) :: bx(nv, 8), by(nv, 8), bz(nv, 8), vol(nv)
+      integer :: ii, i
+      integer :: p1, p2, p3, p4, p5, p6, p8
+      real(wp), parameter :: c12 = 1.0_wp/12.0_wp
+      do ii = 1, 8
+         p1 = PERM(1, ii); p2 = PERM(2, ii); p3 = PERM(3, ii); p4 = PERM(4, ii)
+         p5 = PERM(5, ii); p6 = PERM(6, ii); p8 = PERM(8, ii)
+         do i = 1, n
+            bx(i, ii) = c12*(y(i,p2)*((z(i,p6) - z(i,p3)) - (z(i,p4) - z(i,p5))) &
+                     + y(i,p3)*(z(i,p2) - z(i,p4)) &
+                     + y(i,p4)*((z(i,p3) - z(i,p8)) - (z(i,p5) - z(i,p2))) &
+                     + y(i,p5)*((z(i,p8) - z(i,p6)) - (z(i,p2) - z(i,p4))) &
+                     + y(i,p6)*(z(i,p5) - z(i,p2)) + y(i,p8)*(z(i,p4) - z(i,p5)))
+            by(i, ii) = c12*(z(i,p2)*((x(i,p6) - x(i,p3)) - (x(i,p4) - x(i,p5))) &
+                     + z(i,p3)*(x(i,p2) - x(i,p4)) &
+                     + z(i,p4)*((x(i,p3) - x(i,p8)) - (x(i,p5) - x(i,p2))) &
+                     + z(i,p5)*((x(i,p8) - x(i,p6)) - (x(i,p2) - x(i,p4))) &
+                     + z(i,p6)*(x(i,p5) - x(i,p2)) + z(i,p8)*(x(i,p4) - x(i,p5)))
+            bz(i, ii) = c12*(x(i,p2)*((y(i,p6) - y(i,p3)) - (y(i,p4) - y(i,p5))) &
+                     + x(i,p3)*(y(i,p2) - y(i,p4)) &
+                     + x(i,p4)*((y(i,p3) - y(i,p8)) - (y(i,p5) - y(i,p2))) &
+                     + x(i,p5)*((y(i,p8) - y(i,p6)) - (y(i,p2) - y(i,p4))) &
+                     + x(i,p6)*(y(i,p5) - y(i,p2)) + x(i,p8)*(y(i,p4) - y(i,p5)))
+         end do
+      end do
+      do i = 1, n
+         vol(i) = x(i,1)*bx(i,1) + x(i,2)*bx(i,2) + x(i,3)*bx(i,3) + x(i,4)*bx(i,4) &
+                + x(i,5)*bx(i,5) + x(i,6)*bx(i,6) + x(i,7)*bx(i,7) + x(i,8)*bx(i,8)
+      end do
+   end subroutine hex8_bvectors
+
+   !> Characteristic length V / A_max (largest face area), LS-DYNA's choice for solids.
+   pure subroutine hex8_char_length(n, nv, x, y, z, vol, lc)
+      integer, intent(in) :: n, nv
+      real(wp), intent(in) :: x(nv, 8), y(nv, 8), z(nv, 8), vol(nv)
+      real(wp), intent(out) :: lc(nv)
+      integer, parameter :: FACE(4, 6) = reshape([1, 2, 3, 4,  5, 6, 7, 8,  1, 2, 6, 5, &
+                                                  2, 3, 7, 6,  3, 4, 8, 7,  4, 1, 5, 8], [4, 6])
+      integer :: i, k
+      real(wp) :: a2max, d1(3), d2(3), c(3)
+      do i = 1, n
+         a2max = 0.0_wp
+         do k = 1, 6
+            d1(1) = x(i, FACE(3,k)) - x(i, FACE(1,k))
+            d1(2) = y(i, FACE(3,k)) - y(i, FACE(1,k))
+            d1(3) = z(i, FACE(3,k)) - z(i, FACE(1,k))
+            d2(1) = x(i, FACE(4,k)) - x(i, FACE(2,k))
+            d2(2) = y(i, FACE(4,k)) - y(i, FACE(2,k))
+            d2(3) = z(i, FACE(4,k)) - z(i, FACE(2,k))
+            c(1) = d1(2)*d2(3) - d1(3)*d2(2)
+            c(2) = d1(3)*d2(1) - d1(1)*d2(3)
+            c(3) = d1(1)*d2(2) - d1(2)*d2(1)
+            a2max = max(a2max, c(1)**2 + c(2)**2 + c(3)**2)
+         end do
+         ! face area = |d1 x d2|/2
+         lc(i) = vol(i)/(0.5_wp*sqrt(a2max))
+      end do
+   end subroutine hex8_char_length
+end module dx_hex8_geometry

@@ -1,0 +1,837 @@
+!> Numerical comparison of dynx outputs against gold files, used by dynx-compare and the
+!> regression runner: ASCII time histories (glstat, nodout: columns by header name, rows by
+!> order) and HDF5 plot files (/states/times, every dataset of /mesh and of every state).
+!> Rule: a test value t passes against gold g when t is finite and |t - g| <= abs + rel*|g|;
+!> NaN or Inf anywhere in the test file fails, even where gold has NaN.
+!> Tolerances per (file glob, quantity): docs/output-format.md. No matching rule:
+!> DEFAULT_ABS, DEFAULT_REL. Every failing quantity is reported with its worst (largest)
+!> difference: time, node/element id and component where known, gold, test, difference.
+!> NaN checks come before any arithmetic so the debug build's FPE traps stay quiet.
+module dx_compare
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
+   use dx_kinds, only: wp, i8
+   use dx_error, only: error_t, set_error, EXIT_INPUT
+   use dx_io_sys, only: sys_fnmatch
+   use dx_h5, only: h5_file_t, h5_open_read, h5_close, h5_exists, h5_dims, h5_read, &
+                    h5_read_attr, h5_list, H5_GROUP, H5_DATASET
+   implicit none
+   private
+   public :: tol_table_t, compare_report_t, qdiff_t, within_tol, read_tolerances, &
+             read_table, compare_tables, compare_files, compare_ascii, compare_h5, &
+             DEFAULT_ABS, DEFAULT_REL
+
+   real(wp), parameter :: DEFAULT_ABS = 1.0e-12_wp, DEFAULT_REL = 1.0e-9_wp
+   integer, parameter :: MAXLINE = 4096
+
+   type :: tol_rule_t
+      character(:), allocatable :: glob, quantity
+      real(wp) :: abs_tol = DEFAULT_ABS, rel_tol = DEFAULT_REL
+   end type tol_rule_t
+
+   !> Tolerance rules '<file-glob> <quantity> <abs> <rel>'; exact quantity beats '*',
+   !> among equals the later line wins.
+   type :: tol_table_t
+      integer :: n = 0
+      type(tol_rule_t), allocatable :: rules(:)
+   contains
+      procedure :: add => tol_add
+      procedure :: lookup => tol_lookup
+   end type tol_table_t
+
+   !> Accumulated differences of one quantity (column or dataset name).
+   type :: qdiff_t
+      character(:), allocatable :: name
+      real(wp) :: abs_tol = DEFAULT_ABS, rel_tol = DEFAULT_REL
+      integer(i8) :: nvals = 0, nbad = 0, nnonfinite = 0
+      logical :: have_worst = .false.
+      real(wp) :: worst_diff = -1.0_wp, gold = 0.0_wp, test = 0.0_wp, time = 0.0_wp
+      logical :: has_time = .false., nonfinite_worst = .false.
+      integer :: id = 0, comp = 0
+      character(:), allocatable :: id_kind
+   end type qdiff_t
+
+   type :: msg_t
+      character(:), allocatable :: s
+   end type msg_t
+
+   !> Result of comparing one pair of files.
+   type :: compare_report_t
+      character(:), allocatable :: file
+      integer :: nq = 0, nmsg = 0
+      type(qdiff_t), allocatable :: q(:)
+      type(msg_t), allocatable :: msgs(:)      !< structural failures (missing, shape, ...)
+   contains
+      procedure :: passed => report_passed
+      procedure :: nfailed => report_nfailed
+      procedure :: print => report_print
+      procedure :: fail => report_fail
+      procedure :: find => report_find
+   end type compare_report_t
+
+   character(*), parameter :: NODE_DSETS(4) = [character(12) :: 'coordinates', &
+      'displacement', 'velocity', 'node_ids']
+
+contains
+
+   !> The comparison rule: t finite and |t - g| <= abs + rel*|g| (gold NaN/Inf: fails).
+   elemental logical function within_tol(gold, test, abs_tol, rel_tol)
+      real(wp), intent(in) :: gold, test, abs_tol, rel_tol
+      within_tol = .false.
+      if (.not. ieee_is_finite(test)) return
+      if (.not. ieee_is_finite(gold)) return
+      within_tol = abs(test - gold) <= abs_tol + rel_tol*abs(gold)
+   end function within_tol
+
+   subroutine tol_add(self, glob, quantity, abs_tol, rel_tol)
+      class(tol_table_t), intent(inout) :: self
+      character(*), intent(in) :: glob, quantity
+      real(wp), intent(in) :: abs_tol, rel_tol
+      type(tol_rule_t), allocatable :: tmp(:)
+      if (.not. allocated(self%rules)) allocate(self%rules(8))
+      if (self%n == size(self%rules)) then
+         allocate(tmp(2*self%n))
+         tmp(1:self%n) = self%rules(1:self%n)
+         call move_alloc(tmp, self%rules)
+      end if
+      self%n = self%n + 1
+      self%rules(self%n) = tol_rule_t(glob, quantity, abs_tol, rel_tol)
+   end subroutine tol_add
+
+   !> Tolerances for quantity in the file named fname (a base name).
+   subroutine tol_lookup(self, fname, quantity, abs_tol, rel_tol)
+      class(tol_table_t), intent(in) :: self
+      character(*), intent(in) :: fname, quantity
+      real(wp), intent(out) :: abs_tol, rel_tol
+      integer :: i, best, rank
+      abs_tol = DEFAULT_ABS
+      rel_tol = DEFAULT_REL
+      best = 0
+      do i = 1, self%n
+         associate (r => self%rules(i))
+            if (.not. sys_fnmatch(r%glob, fname)) cycle
+            if (r%quantity == quantity) then
+               rank = 2
+            else if (r%quantity == '*') then
+               rank = 1
+            else
+               cycle
+            end if
+            if (rank >= best) then
+               best = rank
+               abs_tol = r%abs_tol
+               rel_tol = r%rel_tol
+            end if
+         end associate
+      end do
+   end subroutine tol_lookup
+
+   !> Read a tolerance file: lines '<file-glob> <quantity> <abs> <rel>', '#' comments.
+   subroutine read_tolerances(path, table, error)
+      character(*), intent(in) :: path
+      type(tol_table_t), intent(inout) :: table
+      type(error_t), allocatable, intent(out) :: error
+      integer :: u, ios, lineno, nt
+      character(MAXLINE) :: line
+      character(256) :: msg
+      character(:), allocatable :: toks(:)
+      real(wp) :: a, r
+      character(16) :: buf
+      open(newunit=u, file=path, status='old', action='read', iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         call set_error(error, 'cannot open tolerance file '//path//': '//trim(msg), &
+                        EXIT_INPUT)
+         return
+      end if
+      lineno = 0
+      do
+         read(u, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         lineno = lineno + 1
+         if (index(line, '#') > 0) line = line(1:index(line, '#') - 1)
+         call split(line, toks, nt)
+         if (nt == 0) cycle
+         write(buf, '(i0)') lineno
+         if (nt /= 4) then
+            call set_error(error, path//':'//trim(buf)//': expected ''<file-glob> '// &
+                           '<quantity> <abs> <rel>'', got '//trim(line), EXIT_INPUT)
+            exit
+         end if
+         read(toks(3), *, iostat=ios) a
+         if (ios == 0) read(toks(4), *, iostat=ios) r
+         if (ios == 0) then
+            if (.not. (ieee_is_finite(a) .and. ieee_is_finite(r))) ios = 1
+         end if
+         if (ios == 0) then
+            if (a < 0.0_wp .or. r < 0.0_wp) ios = 1
+         end if
+         if (ios /= 0) then
+            call set_error(error, path//':'//trim(buf)//': abs and rel must be numbers '// &
+                           '>= 0, got '//trim(toks(3))//' '//trim(toks(4)), EXIT_INPUT)
+            exit
+         end if
+         call table%add(trim(toks(1)), trim(toks(2)), a, r)
+      end do
+      close(u)
+   end subroutine read_tolerances
+
+   !> Whitespace-separated tokens of line.
+   subroutine split(line, toks, n)
+      character(*), intent(in) :: line
+      character(:), allocatable, intent(out) :: toks(:)
+      integer, intent(out) :: n
+      integer :: i, j, l, maxlen
+      l = len_trim(line)
+      n = 0
+      maxlen = 1
+      i = 1
+      do while (i <= l)
+         if (is_space(line(i:i))) then
+            i = i + 1
+            cycle
+         end if
+         j = i
+         do while (j < l)
+            if (is_space(line(j + 1:j + 1))) exit
+            j = j + 1
+         end do
+         n = n + 1
+         maxlen = max(maxlen, j - i + 1)
+         i = j + 1
+      end do
+      allocate(character(maxlen) :: toks(n))
+      n = 0
+      i = 1
+      do while (i <= l)
+         if (is_space(line(i:i))) then
+            i = i + 1
+            cycle
+         end if
+         j = i
+         do while (j < l)
+            if (is_space(line(j + 1:j + 1))) exit
+            j = j + 1
+         end do
+         n = n + 1
+         toks(n) = line(i:j)
+         i = j + 1
+      end do
+   contains
+      pure logical function is_space(c)
+         character, intent(in) :: c
+         is_space = c == ' ' .or. c == achar(9) .or. c == achar(13)
+      end function is_space
+   end subroutine split
+
+   !> Read an ASCII history: the last '#' line before the data names the columns;
+   !> rows(ncol, nrow). A data line with a wrong column count or a token that is not a
+   !> number is an error.
+   subroutine read_table(path, names, rows, error)
+      character(*), intent(in) :: path
+      character(:), allocatable, intent(out) :: names(:)
+      real(wp), allocatable, intent(out) :: rows(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: u, ios, lineno, nt, nrow, ncol, j
+      character(MAXLINE) :: line
+      character(256) :: msg
+      character(:), allocatable :: toks(:)
+      real(wp), allocatable :: tmp(:, :)
+      character(16) :: buf
+      logical :: have_header
+      open(newunit=u, file=path, status='old', action='read', iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         call set_error(error, 'cannot open '//path//': '//trim(msg), EXIT_INPUT)
+         return
+      end if
+      have_header = .false.
+      ncol = 0
+      nrow = 0
+      allocate(character(1) :: names(0))
+      allocate(rows(0, 0))
+      lineno = 0
+      do
+         read(u, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         lineno = lineno + 1
+         write(buf, '(i0)') lineno
+         if (len_trim(line) == 0) cycle
+         line = adjustl(line)
+         if (line(1:1) == '#') then
+            if (nrow == 0) then
+               call split(line(index(line, '#') + 1:), names, ncol)
+               have_header = .true.
+            end if
+            cycle
+         end if
+         if (.not. have_header) then
+            call set_error(error, path//':'//trim(buf)//': data before a # header naming '// &
+                           'the columns', EXIT_INPUT)
+            exit
+         end if
+         if (nrow == 0) then
+            deallocate(rows)
+            allocate(rows(ncol, 64))
+         end if
+         call split(line, toks, nt)
+         if (nt /= ncol) then
+            write(msg, '(a,i0,a,i0,a)') ': ', nt, ' columns, header names ', ncol, ''
+            call set_error(error, path//':'//trim(buf)//trim(msg), EXIT_INPUT)
+            exit
+         end if
+         if (nrow == size(rows, 2)) then
+            allocate(tmp(ncol, 2*nrow))
+            tmp(:, 1:nrow) = rows(:, 1:nrow)
+            call move_alloc(tmp, rows)
+         end if
+         nrow = nrow + 1
+         do j = 1, ncol
+            read(toks(j), *, iostat=ios) rows(j, nrow)
+            if (ios /= 0) exit
+         end do
+         if (ios /= 0) then
+            call set_error(error, path//':'//trim(buf)//': not a number: '//trim(toks(j)), &
+                           EXIT_INPUT)
+            exit
+         end if
+      end do
+      close(u)
+      if (allocated(error)) return
+      if (.not. have_header) then
+         call set_error(error, path//': no # header line naming the columns', EXIT_INPUT)
+         return
+      end if
+      if (nrow == 0) then
+         deallocate(rows)
+         allocate(rows(ncol, 0))
+      else
+         rows = rows(:, 1:nrow)
+      end if
+   end subroutine read_table
+
+   !> Compare two tables (columns by name, rows by order) into report.
+   subroutine compare_tables(report, fname, gnames, gold, tnames, test, tol)
+      type(compare_report_t), intent(inout) :: report
+      character(*), intent(in) :: fname
+      character(*), intent(in) :: gnames(:), tnames(:)
+      real(wp), intent(in) :: gold(:, :), test(:, :)
+      type(tol_table_t), intent(in) :: tol
+      integer :: j, jt, i, nrow, itime, iid, q
+      character(16) :: a, b
+      character(:), allocatable :: kind
+      real(wp) :: time
+      integer :: id
+
+      report%file = fname
+      if (size(gold, 2) /= size(test, 2)) then
+         write(a, '(i0)') size(gold, 2)
+         write(b, '(i0)') size(test, 2)
+         call report%fail('rows: gold has '//trim(a)//', test has '//trim(b))
+      end if
+      nrow = min(size(gold, 2), size(test, 2))
+      itime = find_name(tnames, 'time')
+      iid = find_name(tnames, 'node_id')
+      kind = ''
+      if (iid > 0) kind = 'node'
+      do j = 1, size(gnames)
+         jt = find_name(tnames, gnames(j))
+         if (jt == 0) then
+            call report%fail(trim(gnames(j))//': column missing in test')
+            cycle
+         end if
+         q = report%find(trim(gnames(j)), fname, tol)
+         do i = 1, nrow
+            time = 0.0_wp
+            if (itime > 0) time = gold(find_name(gnames, 'time'), i)
+            id = 0
+            if (iid > 0) id = nint_safe(test(iid, i))
+            call accumulate(report%q(q), gold(j, i), test(jt, i), itime > 0, time, &
+                            kind, id, 0)
+         end do
+         ! values beyond the common rows still must be finite
+         do i = nrow + 1, size(test, 2)
+            if (.not. ieee_is_finite(test(jt, i))) then
+               call accumulate(report%q(q), 0.0_wp, test(jt, i), .false., 0.0_wp, '', 0, 0)
+            end if
+         end do
+      end do
+      ! NaN/Inf in columns gold does not have
+      do jt = 1, size(tnames)
+         if (find_name(gnames, tnames(jt)) > 0) cycle
+         if (any(.not. ieee_is_finite(test(jt, :)))) then
+            call report%fail(trim(tnames(jt))//': NaN or Inf in test (column not in gold)')
+         end if
+      end do
+   end subroutine compare_tables
+
+   integer function nint_safe(x)
+      real(wp), intent(in) :: x
+      nint_safe = 0
+      if (ieee_is_finite(x)) then
+         if (abs(x) < 2.0e9_wp) nint_safe = nint(x)
+      end if
+   end function nint_safe
+
+   integer function find_name(names, name)
+      character(*), intent(in) :: names(:), name
+      integer :: i
+      find_name = 0
+      do i = 1, size(names)
+         if (trim(names(i)) == trim(name)) then
+            find_name = i
+            return
+         end if
+      end do
+   end function find_name
+
+   !> Account one value pair; the worst failing pair is the one with the largest
+   !> difference (a non-finite test value outranks any finite difference).
+   subroutine accumulate(q, g, t, has_time, time, kind, id, comp)
+      type(qdiff_t), intent(inout) :: q
+      real(wp), intent(in) :: g, t, time
+      logical, intent(in) :: has_time
+      character(*), intent(in) :: kind
+      integer, intent(in) :: id, comp
+      real(wp) :: d
+      logical :: nonfinite
+      q%nvals = q%nvals + 1
+      if (within_tol(g, t, q%abs_tol, q%rel_tol)) return
+      q%nbad = q%nbad + 1
+      nonfinite = .not. ieee_is_finite(t)
+      if (nonfinite) q%nnonfinite = q%nnonfinite + 1
+      if (nonfinite .or. .not. ieee_is_finite(g)) then
+         d = huge(1.0_wp)
+         if (q%have_worst .and. (q%nonfinite_worst .or. .not. nonfinite)) return
+      else
+         d = abs(t - g)
+         if (q%have_worst .and. (q%nonfinite_worst .or. d <= q%worst_diff)) return
+      end if
+      q%have_worst = .true.
+      q%nonfinite_worst = nonfinite
+      q%worst_diff = d
+      q%gold = g
+      q%test = t
+      q%has_time = has_time
+      q%time = time
+      q%id_kind = kind
+      q%id = id
+      q%comp = comp
+   end subroutine accumulate
+
+   !> Index of quantity name in report (added, with its tolerances, if new).
+   integer function report_find(self, name, fname, tol) result(k)
+      class(compare_report_t), intent(inout) :: self
+      character(*), intent(in) :: name, fname
+      type(tol_table_t), intent(in) :: tol
+      type(qdiff_t), allocatable :: tmp(:)
+      character(:), allocatable :: key
+      integer :: i
+      do k = 1, self%nq
+         if (self%q(k)%name == name) return
+      end do
+      if (.not. allocated(self%q)) allocate(self%q(16))
+      if (self%nq == size(self%q)) then
+         allocate(tmp(2*self%nq))
+         tmp(1:self%nq) = self%q(1:self%nq)
+         call move_alloc(tmp, self%q)
+      end if
+      self%nq = self%nq + 1
+      k = self%nq
+      self%q(k)%name = name
+      ! tolerance key: the dataset or column name without any group prefix
+      i = index(name, '/', back=.true.)
+      key = name(i + 1:)
+      call tol%lookup(fname, key, self%q(k)%abs_tol, self%q(k)%rel_tol)
+   end function report_find
+
+   !> Record a structural failure.
+   subroutine report_fail(self, msg)
+      class(compare_report_t), intent(inout) :: self
+      character(*), intent(in) :: msg
+      type(msg_t), allocatable :: tmp(:)
+      if (.not. allocated(self%msgs)) allocate(self%msgs(8))
+      if (self%nmsg == size(self%msgs)) then
+         allocate(tmp(2*self%nmsg))
+         tmp(1:self%nmsg) = self%msgs(1:self%nmsg)
+         call move_alloc(tmp, self%msgs)
+      end if
+      self%nmsg = self%nmsg + 1
+      self%msgs(self%nmsg)%s = msg
+   end subroutine report_fail
+
+   !> Number of failures: structural ones plus failing quantities.
+   integer function report_nfailed(self)
+      class(compare_report_t), intent(in) :: self
+      integer :: k
+      report_nfailed = self%nmsg
+      do k = 1, self%nq
+         if (self%q(k)%nbad > 0) report_nfailed = report_nfailed + 1
+      end do
+   end function report_nfailed
+
+   logical function report_passed(self)
+      class(compare_report_t), intent(in) :: self
+      report_passed = self%nfailed() == 0
+   end function report_passed
+
+   !> Print the verdict and every failure to unit u.
+   subroutine report_print(self, u, verbose)
+      class(compare_report_t), intent(in) :: self
+      integer, intent(in) :: u
+      logical, intent(in), optional :: verbose
+      integer :: k
+      integer(i8) :: nv
+      character(:), allocatable :: fname
+      character(64) :: b1, b2
+      fname = '?'
+      if (allocated(self%file)) fname = self%file
+      nv = 0
+      do k = 1, self%nq
+         nv = nv + self%q(k)%nvals
+      end do
+      if (self%passed()) then
+         write(u, '(a,i0,a,i0,a)') 'PASS '//fname//' (', self%nq, ' quantities, ', nv, &
+            ' values)'
+         if (present(verbose)) then
+            if (verbose) call print_quantities(.true.)
+         end if
+         return
+      end if
+      write(u, '(a,i0,a)') 'FAIL '//fname//' (', self%nfailed(), ' failing)'
+      do k = 1, self%nmsg
+         write(u, '(a)') '  '//self%msgs(k)%s
+      end do
+      call print_quantities(.false.)
+   contains
+      subroutine print_quantities(all)
+         logical, intent(in) :: all
+         character(:), allocatable :: where
+         integer :: kk
+         do kk = 1, self%nq
+            associate (q => self%q(kk))
+               if (q%nbad == 0) then
+                  if (all) write(u, '(a,i0,a)') '  ok '//q%name//' (', q%nvals, ' values)'
+                  cycle
+               end if
+               write(b1, '(es10.3)') q%abs_tol
+               write(b2, '(es10.3)') q%rel_tol
+               write(u, '(a,i0,a,i0,a)') '  '//q%name//': ', q%nbad, ' of ', q%nvals, &
+                  ' values outside |test-gold| <= '//trim(adjustl(b1))//' + '// &
+                  trim(adjustl(b2))//'*|gold|'
+               if (q%nnonfinite > 0) write(u, '(a,i0,a)') '    test has ', q%nnonfinite, &
+                  ' NaN/Inf value(s)'
+               where = ''
+               if (q%has_time) then
+                  write(b1, '(es17.10e3)') q%time
+                  where = where//' time '//trim(adjustl(b1))
+               end if
+               if (allocated(q%id_kind)) then
+                  if (len(q%id_kind) > 0 .and. q%id /= 0) then
+                     write(b1, '(i0)') q%id
+                     where = where//' '//q%id_kind//' '//trim(b1)
+                  end if
+               end if
+               if (q%comp > 0) then
+                  write(b1, '(i0)') q%comp
+                  where = where//' component '//trim(b1)
+               end if
+               if (len(where) == 0) where = ' (no time)'
+               write(u, '(a)') '    worst at'//where//': gold '//num(q%gold)//', test '// &
+                  num(q%test)//', diff '//diffstr(q)
+            end associate
+         end do
+      end subroutine print_quantities
+   end subroutine report_print
+
+   function num(x) result(s)
+      real(wp), intent(in) :: x
+      character(:), allocatable :: s
+      character(32) :: buf
+      if (ieee_is_nan(x)) then
+         s = 'NaN'
+      else if (.not. ieee_is_finite(x)) then
+         s = 'Inf'
+         if (x < 0.0_wp) s = '-Inf'
+      else
+         write(buf, '(es18.10e3)') x
+         s = trim(adjustl(buf))
+      end if
+   end function num
+
+   function diffstr(q) result(s)
+      type(qdiff_t), intent(in) :: q
+      character(:), allocatable :: s
+      if (q%nonfinite_worst .or. .not. ieee_is_finite(q%gold)) then
+         s = 'n/a'
+      else
+         s = num(q%test - q%gold)
+      end if
+   end function diffstr
+
+   !> Base name of a path.
+   function basename(path) result(b)
+      character(*), intent(in) :: path
+      character(:), allocatable :: b
+      b = path(index(path, '/', back=.true.) + 1:)
+   end function basename
+
+   !> Compare two files: HDF5 plot files (*.h5) or ASCII histories (anything else).
+   subroutine compare_files(gold_path, test_path, tol, report)
+      character(*), intent(in) :: gold_path, test_path
+      type(tol_table_t), intent(in) :: tol
+      type(compare_report_t), intent(out) :: report
+      integer :: n
+      n = len_trim(gold_path)
+      if (n >= 3) then
+         if (gold_path(n - 2:n) == '.h5') then
+            call compare_h5(gold_path, test_path, tol, report)
+            return
+         end if
+      end if
+      call compare_ascii(gold_path, test_path, tol, report)
+   end subroutine compare_files
+
+   !> Compare two ASCII histories.
+   subroutine compare_ascii(gold_path, test_path, tol, report)
+      character(*), intent(in) :: gold_path, test_path
+      type(tol_table_t), intent(in) :: tol
+      type(compare_report_t), intent(out) :: report
+      character(:), allocatable :: gnames(:), tnames(:)
+      real(wp), allocatable :: gold(:, :), test(:, :)
+      type(error_t), allocatable :: error
+      report%file = basename(gold_path)
+      call read_table(gold_path, gnames, gold, error)
+      if (allocated(error)) then
+         call report%fail('gold: '//error%message)
+         return
+      end if
+      call read_table(test_path, tnames, test, error)
+      if (allocated(error)) then
+         call report%fail('test: '//error%message)
+         return
+      end if
+      call compare_tables(report, basename(gold_path), gnames, gold, tnames, test, tol)
+   end subroutine compare_ascii
+
+   !> Compare two HDF5 plot files: /states/times, every dataset of /mesh and of every state.
+   subroutine compare_h5(gold_path, test_path, tol, report)
+      character(*), intent(in) :: gold_path, test_path
+      type(tol_table_t), intent(in) :: tol
+      type(compare_report_t), intent(out) :: report
+      type(h5_file_t) :: fg, ft
+      type(error_t), allocatable :: error, e2
+      character(len=256), allocatable :: gm(:), tm(:)
+      integer, allocatable :: gk(:), tk(:)
+      integer, allocatable :: node_ids(:), elem_ids(:)
+      real(wp), allocatable :: buf(:)
+      real(wp) :: time
+      character(:), allocatable :: fname, grp
+      character(16) :: a, b
+      integer :: i, j
+      logical :: there
+
+      fname = basename(gold_path)
+      report%file = fname
+      call h5_open_read(fg, gold_path, error)
+      if (allocated(error)) then
+         call report%fail('gold: '//error%message)
+         return
+      end if
+      call h5_open_read(ft, test_path, error)
+      if (allocated(error)) then
+         call report%fail('test: '//error%message)
+         call h5_close(fg, e2)
+         return
+      end if
+
+      work: block
+         allocate(node_ids(0), elem_ids(0))
+         call h5_exists(fg, '/mesh/node_ids', there, error)
+         if (there) then
+            call h5_read(fg, '/mesh/node_ids', buf, error)
+            if (allocated(error)) exit work
+            node_ids = nint(buf)
+         end if
+         call h5_exists(fg, '/mesh/element_ids', there, error)
+         if (there) then
+            call h5_read(fg, '/mesh/element_ids', buf, error)
+            if (allocated(error)) exit work
+            elem_ids = nint(buf)
+         end if
+
+         call compare_group('/mesh', .false., 0.0_wp)
+         if (allocated(error)) exit work
+
+         ! states: times first, then every state group of gold
+         call h5_exists(fg, '/states/times', there, error)
+         if (there) call compare_dataset('/states/times', .false., 0.0_wp)
+         if (allocated(error)) exit work
+         call h5_exists(fg, '/states', there, error)
+         if (.not. there) exit work
+         call h5_list(fg, '/states', gm, gk, error)
+         if (allocated(error)) exit work
+         call h5_exists(ft, '/states', there, error)
+         if (.not. there) then
+            call report%fail('/states: group missing in test')
+            exit work
+         end if
+         call h5_list(ft, '/states', tm, tk, error)
+         if (allocated(error)) exit work
+         do i = 1, size(gm)
+            if (gk(i) /= H5_GROUP) cycle
+            grp = '/states/'//trim(gm(i))
+            call h5_read_attr(fg, grp, 'time', time, e2)
+            if (allocated(e2)) time = 0.0_wp
+            if (.not. any(tm == gm(i))) then
+               write(a, '(es14.6e3)') time
+               call report%fail(grp//': state missing in test (gold time '// &
+                                trim(adjustl(a))//')')
+               cycle
+            end if
+            call compare_group(grp, .true., time)
+            if (allocated(error)) exit work
+         end do
+         j = 0
+         do i = 1, size(tm)
+            if (tk(i) /= H5_GROUP) cycle
+            if (any(gm == tm(i))) cycle
+            j = j + 1
+            ! extra states must still be finite
+            call scan_group('/states/'//trim(tm(i)))
+         end do
+         if (j > 0) then
+            write(a, '(i0)') count(gk == H5_GROUP)
+            write(b, '(i0)') count(tk == H5_GROUP)
+            call report%fail('/states: gold has '//trim(a)//' states, test has '//trim(b))
+         end if
+      end block work
+      if (allocated(error)) call report%fail(error%message)
+      call h5_close(fg, e2)
+      call h5_close(ft, e2)
+
+   contains
+
+      !> Compare every dataset of group grp (present in gold) and scan test-only ones.
+      subroutine compare_group(grp, timed, t)
+         character(*), intent(in) :: grp
+         logical, intent(in) :: timed
+         real(wp), intent(in) :: t
+         character(len=256), allocatable :: gn(:), tn(:)
+         integer, allocatable :: gkk(:), tkk(:)
+         integer :: k
+         logical :: ok
+         call h5_exists(fg, grp, ok, error)
+         if (.not. ok .or. allocated(error)) return
+         call h5_list(fg, grp, gn, gkk, error)
+         if (allocated(error)) return
+         call h5_exists(ft, grp, ok, error)
+         if (allocated(error)) return
+         if (.not. ok) then
+            call report%fail(grp//': group missing in test')
+            return
+         end if
+         call h5_list(ft, grp, tn, tkk, error)
+         if (allocated(error)) return
+         do k = 1, size(gn)
+            if (gkk(k) /= H5_DATASET) cycle
+            if (.not. any(tn == gn(k))) then
+               call report%fail(grp//'/'//trim(gn(k))//': dataset missing in test')
+               cycle
+            end if
+            call compare_dataset(grp//'/'//trim(gn(k)), timed, t)
+            if (allocated(error)) return
+         end do
+         do k = 1, size(tn)
+            if (tkk(k) /= H5_DATASET) cycle
+            if (any(gn == tn(k))) cycle
+            call scan_dataset(grp//'/'//trim(tn(k)))
+            if (allocated(error)) return
+         end do
+      end subroutine compare_group
+
+      !> NaN/Inf check of every dataset of a test-only group.
+      subroutine scan_group(grp)
+         character(*), intent(in) :: grp
+         character(len=256), allocatable :: tn(:)
+         integer, allocatable :: tkk(:)
+         integer :: k
+         call h5_list(ft, grp, tn, tkk, error)
+         if (allocated(error)) return
+         do k = 1, size(tn)
+            if (tkk(k) == H5_DATASET) call scan_dataset(grp//'/'//trim(tn(k)))
+            if (allocated(error)) return
+         end do
+      end subroutine scan_group
+
+      subroutine scan_dataset(path)
+         character(*), intent(in) :: path
+         real(wp), allocatable :: tv(:)
+         call h5_read(ft, path, tv, error)
+         if (allocated(error)) return
+         if (any(.not. ieee_is_finite(tv))) then
+            call report%fail(path//': NaN or Inf in test (dataset not in gold)')
+         end if
+      end subroutine scan_dataset
+
+      subroutine compare_dataset(path, timed, t)
+         character(*), intent(in) :: path
+         logical, intent(in) :: timed
+         real(wp), intent(in) :: t
+         integer(i8), allocatable :: gd(:), td(:)
+         real(wp), allocatable :: gv(:), tv(:)
+         character(:), allocatable :: name, key, kind
+         integer :: q, ncomp, n, ent, id, comp
+         integer(i8) :: k
+         character(80) :: s1, s2
+         call h5_dims(fg, path, gd, error)
+         if (allocated(error)) return
+         call h5_dims(ft, path, td, error)
+         if (allocated(error)) return
+         if (size(gd) /= size(td)) then
+            call report%fail(path//': rank differs between gold and test')
+            return
+         end if
+         if (any(gd /= td)) then
+            write(s1, '(*(i0,:,","))') gd
+            write(s2, '(*(i0,:,","))') td
+            call report%fail(path//': shape ('//trim(s1)//') in gold, ('//trim(s2)// &
+                             ') in test')
+            return
+         end if
+         call h5_read(fg, path, gv, error)
+         if (allocated(error)) return
+         call h5_read(ft, path, tv, error)
+         if (allocated(error)) return
+         key = path(index(path, '/', back=.true.) + 1:)
+         if (path(1:6) == '/mesh/') then
+            name = path
+         else if (path == '/states/times') then
+            name = path
+         else
+            name = key
+         end if
+         q = report%find(name, fname, tol)
+         ncomp = 1
+         if (size(gd) >= 2) ncomp = int(product(gd(1:size(gd) - 1)))
+         n = 0
+         if (size(gd) >= 1) n = int(gd(size(gd)))
+         kind = ''
+         if (any(NODE_DSETS == key) .and. n == size(node_ids)) then
+            kind = 'node'
+         else if (n == size(elem_ids) .and. path /= '/states/times') then
+            kind = 'element'
+         end if
+         do k = 1, size(gv, kind=i8)
+            ent = int((k - 1)/ncomp) + 1
+            comp = 0
+            if (ncomp > 1) comp = int(mod(k - 1, int(ncomp, i8))) + 1
+            id = 0
+            if (kind == 'node') id = node_ids(ent)
+            if (kind == 'element') id = elem_ids(ent)
+            if (path == '/states/times') then
+               call accumulate(report%q(q), gv(k), tv(k), .true., gv(k), '', 0, 0)
+            else
+               call accumulate(report%q(q), gv(k), tv(k), timed, t, kind, id, comp)
+            end if
+         end do
+      end subroutine compare_dataset
+   end subroutine compare_h5
+end module dx_compare

@@ -1,0 +1,723 @@
+!> The only user of the `hdf5` Fortran module: thin wrappers that open the library once,
+!> check every return code and close every handle they open on every exit path.
+!> Callers see an opaque h5_file_t and dataset paths; errors come back as error_t with
+!> code EXIT_IO naming the file, the object and the operation.
+!> Arrays are written in Fortran order: a Fortran (3,nn) array is an HDF5 dataset whose
+!> dimensions h5dump shows as (nn,3) (C order). h5_dims returns Fortran order.
+!> Module state: one flag remembering that h5open_f was called (the library is opened once
+!> per process and left open; HDF5 closes itself at exit).
+module dx_h5
+   use hdf5
+   use dx_kinds, only: wp, i8
+   use dx_error, only: error_t, set_error, EXIT_IO
+   implicit none
+   private
+   public :: h5_file_t, h5_create, h5_open_read, h5_close, h5_flush, h5_create_group, &
+             h5_write, h5_write_attr, h5_create_extendible, h5_append, h5_exists, h5_dims, &
+             h5_read, h5_read_attr, h5_list, H5_GROUP, H5_DATASET, H5_OTHER
+
+   integer, parameter :: H5_GROUP = 1, H5_DATASET = 2, H5_OTHER = 3
+   integer, parameter :: NAME_LEN = 256
+
+   !> An open HDF5 file (id < 0: not open).
+   type :: h5_file_t
+      integer(hid_t) :: id = -1
+      character(:), allocatable :: name
+   contains
+      procedure :: is_open => h5_is_open
+   end type h5_file_t
+
+   interface h5_write
+      module procedure write_r1, write_r2, write_i1, write_i2
+   end interface h5_write
+
+   interface h5_write_attr
+      module procedure attr_write_real, attr_write_int, attr_write_str
+   end interface h5_write_attr
+
+   interface h5_read_attr
+      module procedure attr_read_real, attr_read_int
+   end interface h5_read_attr
+
+   logical, save :: lib_open = .false.
+
+contains
+
+   logical function h5_is_open(self)
+      class(h5_file_t), intent(in) :: self
+      h5_is_open = self%id >= 0
+   end function h5_is_open
+
+   !> Error naming the file, the operation and the object.
+   subroutine fail(f, error, op, obj)
+      type(h5_file_t), intent(in) :: f
+      type(error_t), allocatable, intent(inout) :: error
+      character(*), intent(in) :: op, obj
+      character(:), allocatable :: fname
+      fname = '?'
+      if (allocated(f%name)) fname = f%name
+      call set_error(error, 'HDF5: '//op//' '''//obj//''' in '//fname//' failed', EXIT_IO)
+   end subroutine fail
+
+   subroutine lib_init(error)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ierr
+      if (lib_open) return
+      call h5open_f(ierr)
+      if (ierr < 0) then
+         call set_error(error, 'HDF5: h5open_f failed (cannot initialize the library)', EXIT_IO)
+         return
+      end if
+      ! our own messages name the file and the operation; the library's stack trace is noise
+      call h5eset_auto_f(0, ierr)
+      lib_open = .true.
+   end subroutine lib_init
+
+   !> Create (truncate) a file for writing.
+   subroutine h5_create(f, path, error)
+      type(h5_file_t), intent(inout) :: f
+      character(*), intent(in) :: path
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ierr
+      call lib_init(error)
+      if (allocated(error)) return
+      f%name = path
+      call h5fcreate_f(path, H5F_ACC_TRUNC_F, f%id, ierr)
+      if (ierr < 0) then
+         f%id = -1
+         call fail(f, error, 'create file', path)
+      end if
+   end subroutine h5_create
+
+   !> Open an existing file read-only.
+   subroutine h5_open_read(f, path, error)
+      type(h5_file_t), intent(inout) :: f
+      character(*), intent(in) :: path
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ierr
+      logical :: there
+      call lib_init(error)
+      if (allocated(error)) return
+      f%name = path
+      inquire(file=path, exist=there)
+      if (.not. there) then
+         call set_error(error, 'cannot open '//path//': no such file', EXIT_IO)
+         return
+      end if
+      call h5fopen_f(path, H5F_ACC_RDONLY_F, f%id, ierr)
+      if (ierr < 0) then
+         f%id = -1
+         call fail(f, error, 'open file (not an HDF5 file?)', path)
+      end if
+   end subroutine h5_open_read
+
+   !> Close the file if open (safe to call twice).
+   subroutine h5_close(f, error)
+      type(h5_file_t), intent(inout) :: f
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ierr
+      if (f%id < 0) return
+      call h5fclose_f(f%id, ierr)
+      f%id = -1
+      if (ierr < 0) call fail(f, error, 'close file', '/')
+   end subroutine h5_close
+
+   !> Flush all buffers of the file to disk (H5F_SCOPE_GLOBAL).
+   subroutine h5_flush(f, error)
+      type(h5_file_t), intent(in) :: f
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ierr
+      call h5fflush_f(f%id, H5F_SCOPE_GLOBAL_F, ierr)
+      if (ierr < 0) call fail(f, error, 'flush file', '/')
+   end subroutine h5_flush
+
+   !> Create a group (its parent must exist).
+   subroutine h5_create_group(f, path, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: gid
+      integer :: ierr, ierr2
+      call h5gcreate_f(f%id, path, gid, ierr)
+      if (ierr < 0) then
+         call fail(f, error, 'create group', path)
+         return
+      end if
+      call h5gclose_f(gid, ierr2)
+      if (ierr2 < 0) call fail(f, error, 'close group', path)
+   end subroutine h5_create_group
+
+   !> Create a dataset of type dtype and shape dims; returns its id (caller closes).
+   subroutine create_dataset(f, path, dtype, dims, dset, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      integer(hid_t), intent(in) :: dtype
+      integer(hsize_t), intent(in) :: dims(:)
+      integer(hid_t), intent(out) :: dset
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: space
+      integer :: ierr, ierr2
+      dset = -1
+      call h5screate_simple_f(size(dims), dims, space, ierr)
+      if (ierr < 0) then
+         call fail(f, error, 'create dataspace for', path)
+         return
+      end if
+      call h5dcreate_f(f%id, path, dtype, space, dset, ierr)
+      if (ierr < 0) then
+         dset = -1
+         call fail(f, error, 'create dataset', path)
+      end if
+      call h5sclose_f(space, ierr2)
+      if (ierr2 < 0 .and. .not. allocated(error)) call fail(f, error, 'close dataspace of', path)
+   end subroutine create_dataset
+
+   !> Close a dataset; report a failure only if no earlier error is pending.
+   subroutine close_dataset(f, path, dset, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      integer(hid_t), intent(inout) :: dset
+      type(error_t), allocatable, intent(inout) :: error
+      integer :: ierr
+      if (dset < 0) return
+      call h5dclose_f(dset, ierr)
+      dset = -1
+      if (ierr < 0 .and. .not. allocated(error)) call fail(f, error, 'close dataset', path)
+   end subroutine close_dataset
+
+   subroutine write_r1(f, path, a, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      real(wp), intent(in) :: a(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(1)
+      integer :: ierr
+      dims = shape(a, kind=hsize_t)
+      call create_dataset(f, path, H5T_NATIVE_DOUBLE, dims, dset, error)
+      if (allocated(error)) return
+      call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, a, dims, ierr)
+      if (ierr < 0) call fail(f, error, 'write dataset', path)
+      call close_dataset(f, path, dset, error)
+   end subroutine write_r1
+
+   subroutine write_r2(f, path, a, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      real(wp), intent(in) :: a(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(2)
+      integer :: ierr
+      dims = shape(a, kind=hsize_t)
+      call create_dataset(f, path, H5T_NATIVE_DOUBLE, dims, dset, error)
+      if (allocated(error)) return
+      call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, a, dims, ierr)
+      if (ierr < 0) call fail(f, error, 'write dataset', path)
+      call close_dataset(f, path, dset, error)
+   end subroutine write_r2
+
+   subroutine write_i1(f, path, a, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      integer, intent(in) :: a(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(1)
+      integer :: ierr
+      dims = shape(a, kind=hsize_t)
+      call create_dataset(f, path, H5T_NATIVE_INTEGER, dims, dset, error)
+      if (allocated(error)) return
+      call h5dwrite_f(dset, H5T_NATIVE_INTEGER, a, dims, ierr)
+      if (ierr < 0) call fail(f, error, 'write dataset', path)
+      call close_dataset(f, path, dset, error)
+   end subroutine write_i1
+
+   subroutine write_i2(f, path, a, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      integer, intent(in) :: a(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(2)
+      integer :: ierr
+      dims = shape(a, kind=hsize_t)
+      call create_dataset(f, path, H5T_NATIVE_INTEGER, dims, dset, error)
+      if (allocated(error)) return
+      call h5dwrite_f(dset, H5T_NATIVE_INTEGER, a, dims, ierr)
+      if (ierr < 0) call fail(f, error, 'write dataset', path)
+      call close_dataset(f, path, dset, error)
+   end subroutine write_i2
+
+   !> Open an object (group or dataset) by path; obj < 0 on failure (error set).
+   subroutine open_object(f, path, obj, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      integer(hid_t), intent(out) :: obj
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ierr
+      call h5oopen_f(f%id, path, obj, ierr)
+      if (ierr < 0) then
+         obj = -1
+         call fail(f, error, 'open object', path)
+      end if
+   end subroutine open_object
+
+   subroutine close_object(f, path, obj, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      integer(hid_t), intent(inout) :: obj
+      type(error_t), allocatable, intent(inout) :: error
+      integer :: ierr
+      if (obj < 0) return
+      call h5oclose_f(obj, ierr)
+      obj = -1
+      if (ierr < 0 .and. .not. allocated(error)) call fail(f, error, 'close object', path)
+   end subroutine close_object
+
+   !> Open attribute name on obj for writing, creating it (scalar, type dtype) if absent.
+   !> A string attribute is always recreated (its size may change).
+   subroutine open_attr_for_write(f, obj, objpath, name, dtype, recreate, attr, error)
+      type(h5_file_t), intent(in) :: f
+      integer(hid_t), intent(in) :: obj, dtype
+      character(*), intent(in) :: objpath, name
+      logical, intent(in) :: recreate
+      integer(hid_t), intent(out) :: attr
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: space
+      logical :: exists
+      integer :: ierr, ierr2
+      attr = -1
+      call h5aexists_f(obj, name, exists, ierr)
+      if (ierr < 0) then
+         call fail(f, error, 'query attribute '//name//' of', objpath)
+         return
+      end if
+      if (exists .and. recreate) then
+         call h5adelete_f(obj, name, ierr)
+         if (ierr < 0) then
+            call fail(f, error, 'delete attribute '//name//' of', objpath)
+            return
+         end if
+         exists = .false.
+      end if
+      if (exists) then
+         call h5aopen_f(obj, name, attr, ierr)
+         if (ierr < 0) then
+            attr = -1
+            call fail(f, error, 'open attribute '//name//' of', objpath)
+         end if
+         return
+      end if
+      call h5screate_f(H5S_SCALAR_F, space, ierr)
+      if (ierr < 0) then
+         call fail(f, error, 'create scalar dataspace for attribute '//name//' of', objpath)
+         return
+      end if
+      call h5acreate_f(obj, name, dtype, space, attr, ierr)
+      if (ierr < 0) then
+         attr = -1
+         call fail(f, error, 'create attribute '//name//' of', objpath)
+      end if
+      call h5sclose_f(space, ierr2)
+      if (ierr2 < 0 .and. .not. allocated(error)) then
+         call fail(f, error, 'close dataspace of attribute '//name//' of', objpath)
+      end if
+   end subroutine open_attr_for_write
+
+   subroutine close_attr(f, objpath, name, attr, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: objpath, name
+      integer(hid_t), intent(inout) :: attr
+      type(error_t), allocatable, intent(inout) :: error
+      integer :: ierr
+      if (attr < 0) return
+      call h5aclose_f(attr, ierr)
+      attr = -1
+      if (ierr < 0 .and. .not. allocated(error)) then
+         call fail(f, error, 'close attribute '//name//' of', objpath)
+      end if
+   end subroutine close_attr
+
+   !> Set (create or overwrite) a scalar float64 attribute of the object at objpath.
+   subroutine attr_write_real(f, objpath, name, val, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: objpath, name
+      real(wp), intent(in) :: val
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: obj, attr
+      integer(hsize_t) :: dims(1) = [1]
+      integer :: ierr
+      call open_object(f, objpath, obj, error)
+      if (allocated(error)) return
+      call open_attr_for_write(f, obj, objpath, name, H5T_NATIVE_DOUBLE, .false., attr, error)
+      if (.not. allocated(error)) then
+         call h5awrite_f(attr, H5T_NATIVE_DOUBLE, val, dims, ierr)
+         if (ierr < 0) call fail(f, error, 'write attribute '//name//' of', objpath)
+      end if
+      call close_attr(f, objpath, name, attr, error)
+      call close_object(f, objpath, obj, error)
+   end subroutine attr_write_real
+
+   !> Set (create or overwrite) a scalar integer attribute of the object at objpath.
+   subroutine attr_write_int(f, objpath, name, val, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: objpath, name
+      integer, intent(in) :: val
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: obj, attr
+      integer(hsize_t) :: dims(1) = [1]
+      integer :: ierr
+      call open_object(f, objpath, obj, error)
+      if (allocated(error)) return
+      call open_attr_for_write(f, obj, objpath, name, H5T_NATIVE_INTEGER, .false., attr, error)
+      if (.not. allocated(error)) then
+         call h5awrite_f(attr, H5T_NATIVE_INTEGER, val, dims, ierr)
+         if (ierr < 0) call fail(f, error, 'write attribute '//name//' of', objpath)
+      end if
+      call close_attr(f, objpath, name, attr, error)
+      call close_object(f, objpath, obj, error)
+   end subroutine attr_write_int
+
+   !> Set a fixed-length string attribute (at least one character) of the object at objpath.
+   subroutine attr_write_str(f, objpath, name, val, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: objpath, name
+      character(*), intent(in) :: val
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: obj, attr, stype
+      integer(hsize_t) :: dims(1) = [1]
+      integer :: ierr, ierr2
+      character(len=max(1, len(val))) :: buf
+      buf = val
+      call open_object(f, objpath, obj, error)
+      if (allocated(error)) return
+      attr = -1
+      call h5tcopy_f(H5T_NATIVE_CHARACTER, stype, ierr)
+      if (ierr < 0) then
+         call fail(f, error, 'copy string type for attribute '//name//' of', objpath)
+         call close_object(f, objpath, obj, error)
+         return
+      end if
+      call h5tset_size_f(stype, int(len(buf), size_t), ierr)
+      if (ierr < 0) call fail(f, error, 'set string size for attribute '//name//' of', objpath)
+      if (.not. allocated(error)) then
+         call open_attr_for_write(f, obj, objpath, name, stype, .true., attr, error)
+      end if
+      if (.not. allocated(error)) then
+         call h5awrite_f(attr, stype, buf, dims, ierr)
+         if (ierr < 0) call fail(f, error, 'write attribute '//name//' of', objpath)
+      end if
+      call close_attr(f, objpath, name, attr, error)
+      call h5tclose_f(stype, ierr2)
+      if (ierr2 < 0 .and. .not. allocated(error)) then
+         call fail(f, error, 'close string type of attribute '//name//' of', objpath)
+      end if
+      call close_object(f, objpath, obj, error)
+   end subroutine attr_write_str
+
+   !> Create an empty, extendible (unlimited, chunked) 1-D float64 dataset.
+   subroutine h5_create_extendible(f, path, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: space, plist, dset
+      integer(hsize_t) :: dims(1), maxdims(1), chunk(1)
+      integer :: ierr
+      dims = 0
+      maxdims = H5S_UNLIMITED_F
+      chunk = 64
+      space = -1; plist = -1; dset = -1
+      work: block
+         call h5screate_simple_f(1, dims, space, ierr, maxdims)
+         if (ierr < 0) then
+            space = -1
+            call fail(f, error, 'create unlimited dataspace for', path)
+            exit work
+         end if
+         call h5pcreate_f(H5P_DATASET_CREATE_F, plist, ierr)
+         if (ierr < 0) then
+            plist = -1
+            call fail(f, error, 'create property list for', path)
+            exit work
+         end if
+         call h5pset_chunk_f(plist, 1, chunk, ierr)
+         if (ierr < 0) then
+            call fail(f, error, 'set chunking of', path)
+            exit work
+         end if
+         call h5dcreate_f(f%id, path, H5T_NATIVE_DOUBLE, space, dset, ierr, plist)
+         if (ierr < 0) then
+            dset = -1
+            call fail(f, error, 'create extendible dataset', path)
+            exit work
+         end if
+      end block work
+      call close_dataset(f, path, dset, error)
+      if (plist >= 0) then
+         call h5pclose_f(plist, ierr)
+         if (ierr < 0 .and. .not. allocated(error)) call fail(f, error, 'close plist of', path)
+      end if
+      if (space >= 0) then
+         call h5sclose_f(space, ierr)
+         if (ierr < 0 .and. .not. allocated(error)) call fail(f, error, 'close space of', path)
+      end if
+   end subroutine h5_create_extendible
+
+   !> Append one value to an extendible 1-D float64 dataset; n returns its new length.
+   subroutine h5_append(f, path, val, n, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      real(wp), intent(in) :: val
+      integer, intent(out) :: n
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: dset, fspace, mspace
+      integer(hsize_t) :: dims(1), maxdims(1), start(1), count(1)
+      real(wp) :: buf(1)
+      integer :: ierr
+      dset = -1; fspace = -1; mspace = -1
+      n = 0
+      buf(1) = val
+      work: block
+         call h5dopen_f(f%id, path, dset, ierr)
+         if (ierr < 0) then
+            dset = -1
+            call fail(f, error, 'open dataset', path)
+            exit work
+         end if
+         call h5dget_space_f(dset, fspace, ierr)
+         if (ierr < 0) then
+            fspace = -1
+            call fail(f, error, 'get dataspace of', path)
+            exit work
+         end if
+         call h5sget_simple_extent_dims_f(fspace, dims, maxdims, ierr)
+         if (ierr < 0) then
+            call fail(f, error, 'get extent of', path)
+            exit work
+         end if
+         call h5sclose_f(fspace, ierr)
+         fspace = -1
+         if (ierr < 0) then
+            call fail(f, error, 'close dataspace of', path)
+            exit work
+         end if
+         start = dims
+         dims = dims + 1
+         call h5dset_extent_f(dset, dims, ierr)
+         if (ierr < 0) then
+            call fail(f, error, 'extend dataset', path)
+            exit work
+         end if
+         call h5dget_space_f(dset, fspace, ierr)
+         if (ierr < 0) then
+            fspace = -1
+            call fail(f, error, 'get extended dataspace of', path)
+            exit work
+         end if
+         count = 1
+         call h5sselect_hyperslab_f(fspace, H5S_SELECT_SET_F, start, count, ierr)
+         if (ierr < 0) then
+            call fail(f, error, 'select hyperslab of', path)
+            exit work
+         end if
+         call h5screate_simple_f(1, count, mspace, ierr)
+         if (ierr < 0) then
+            mspace = -1
+            call fail(f, error, 'create memory dataspace for', path)
+            exit work
+         end if
+         call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, buf, count, ierr, mspace, fspace)
+         if (ierr < 0) then
+            call fail(f, error, 'append to dataset', path)
+            exit work
+         end if
+         n = int(dims(1))
+      end block work
+      if (mspace >= 0) then
+         call h5sclose_f(mspace, ierr)
+         if (ierr < 0 .and. .not. allocated(error)) call fail(f, error, 'close space of', path)
+      end if
+      if (fspace >= 0) then
+         call h5sclose_f(fspace, ierr)
+         if (ierr < 0 .and. .not. allocated(error)) call fail(f, error, 'close space of', path)
+      end if
+      call close_dataset(f, path, dset, error)
+   end subroutine h5_append
+
+   !> Whether every link along an absolute path exists.
+   subroutine h5_exists(f, path, exists, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      logical, intent(out) :: exists
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i, ierr
+      exists = .true.
+      if (path == '/' .or. len_trim(path) == 0) return
+      do i = 2, len_trim(path) + 1
+         if (i <= len_trim(path)) then
+            if (path(i:i) /= '/') cycle
+         end if
+         call h5lexists_f(f%id, path(1:i - 1), exists, ierr)
+         if (ierr < 0) then
+            exists = .false.
+            call fail(f, error, 'check link', path(1:i - 1))
+            return
+         end if
+         if (.not. exists) return
+      end do
+   end subroutine h5_exists
+
+   !> Dimensions of a dataset, Fortran order (a Fortran (3,nn) array gives [3, nn]).
+   subroutine h5_dims(f, path, dims, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      integer(i8), allocatable, intent(out) :: dims(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: dset, space
+      integer(hsize_t), allocatable :: d(:), md(:)
+      integer :: ierr, rank
+      dset = -1; space = -1
+      work: block
+         call h5dopen_f(f%id, path, dset, ierr)
+         if (ierr < 0) then
+            dset = -1
+            call fail(f, error, 'open dataset', path)
+            exit work
+         end if
+         call h5dget_space_f(dset, space, ierr)
+         if (ierr < 0) then
+            space = -1
+            call fail(f, error, 'get dataspace of', path)
+            exit work
+         end if
+         call h5sget_simple_extent_ndims_f(space, rank, ierr)
+         if (ierr < 0) then
+            call fail(f, error, 'get rank of', path)
+            exit work
+         end if
+         allocate(d(rank), md(rank))
+         if (rank > 0) then
+            call h5sget_simple_extent_dims_f(space, d, md, ierr)
+            if (ierr < 0) then
+               call fail(f, error, 'get dimensions of', path)
+               exit work
+            end if
+         end if
+         dims = int(d, i8)
+      end block work
+      if (space >= 0) then
+         call h5sclose_f(space, ierr)
+         if (ierr < 0 .and. .not. allocated(error)) call fail(f, error, 'close space of', path)
+      end if
+      call close_dataset(f, path, dset, error)
+   end subroutine h5_dims
+
+   !> Read a whole dataset (any numeric type) as a flat float64 array in Fortran order.
+   subroutine h5_read(f, path, buf, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      real(wp), allocatable, intent(out) :: buf(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer(i8), allocatable :: dims(:)
+      integer(hsize_t) :: n(1)
+      integer(hid_t) :: dset
+      integer :: ierr
+      call h5_dims(f, path, dims, error)
+      if (allocated(error)) return
+      n(1) = int(product(dims), hsize_t)
+      allocate(buf(n(1)))
+      if (n(1) == 0) return
+      call h5dopen_f(f%id, path, dset, ierr)
+      if (ierr < 0) then
+         call fail(f, error, 'open dataset', path)
+         return
+      end if
+      call h5dread_f(dset, H5T_NATIVE_DOUBLE, buf, n, ierr)
+      if (ierr < 0) call fail(f, error, 'read dataset', path)
+      call close_dataset(f, path, dset, error)
+   end subroutine h5_read
+
+   !> Open attribute name of objpath for reading.
+   subroutine open_attr_read(f, objpath, name, obj, attr, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: objpath, name
+      integer(hid_t), intent(out) :: obj, attr
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ierr
+      attr = -1
+      call open_object(f, objpath, obj, error)
+      if (allocated(error)) return
+      call h5aopen_f(obj, name, attr, ierr)
+      if (ierr < 0) then
+         attr = -1
+         call fail(f, error, 'open attribute '//name//' of', objpath)
+         call close_object(f, objpath, obj, error)
+      end if
+   end subroutine open_attr_read
+
+   subroutine attr_read_real(f, objpath, name, val, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: objpath, name
+      real(wp), intent(out) :: val
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: obj, attr
+      integer(hsize_t) :: dims(1) = [1]
+      integer :: ierr
+      val = 0.0_wp
+      call open_attr_read(f, objpath, name, obj, attr, error)
+      if (allocated(error)) return
+      call h5aread_f(attr, H5T_NATIVE_DOUBLE, val, dims, ierr)
+      if (ierr < 0) call fail(f, error, 'read attribute '//name//' of', objpath)
+      call close_attr(f, objpath, name, attr, error)
+      call close_object(f, objpath, obj, error)
+   end subroutine attr_read_real
+
+   subroutine attr_read_int(f, objpath, name, val, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: objpath, name
+      integer, intent(out) :: val
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: obj, attr
+      integer(hsize_t) :: dims(1) = [1]
+      integer :: ierr
+      val = 0
+      call open_attr_read(f, objpath, name, obj, attr, error)
+      if (allocated(error)) return
+      call h5aread_f(attr, H5T_NATIVE_INTEGER, val, dims, ierr)
+      if (ierr < 0) call fail(f, error, 'read attribute '//name//' of', objpath)
+      call close_attr(f, objpath, name, attr, error)
+      call close_object(f, objpath, obj, error)
+   end subroutine attr_read_int
+
+   !> Members of a group with their kinds (H5_GROUP, H5_DATASET, H5_OTHER), in name order.
+   subroutine h5_list(f, group, names, kinds, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: group
+      character(len=NAME_LEN), allocatable, intent(out) :: names(:)
+      integer, allocatable, intent(out) :: kinds(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: n, i, ierr, otype
+      call h5gn_members_f(f%id, group, n, ierr)
+      if (ierr < 0) then
+         call fail(f, error, 'count members of group', group)
+         return
+      end if
+      allocate(names(n), kinds(n))
+      do i = 1, n
+         names(i) = ''
+         call h5gget_obj_info_idx_f(f%id, group, i - 1, names(i), otype, ierr)
+         if (ierr < 0) then
+            call fail(f, error, 'get member of group', group)
+            return
+         end if
+         if (otype == H5G_GROUP_F) then
+            kinds(i) = H5_GROUP
+         else if (otype == H5G_DATASET_F) then
+            kinds(i) = H5_DATASET
+         else
+            kinds(i) = H5_OTHER
+         end if
+      end do
+   end subroutine h5_list
+end module dx_h5

@@ -1,0 +1,76 @@
+!> File-system helpers for the output writers, through bind(C) interfaces to libc (POSIX):
+!> rename(2) for the atomic replace of the XDMF file, mkdir(2)/access(2) for `mkdir -p`,
+!> fnmatch(3) for the file globs of the comparator's tolerance file.
+module dx_io_sys
+   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+   use dx_error, only: error_t, set_error, EXIT_IO
+   implicit none
+   private
+   public :: sys_rename, sys_mkdir_p, sys_fnmatch
+
+   integer(c_int), parameter :: W_OK = 2_c_int
+   integer(c_int), parameter :: MODE_755 = int(o'755', c_int)
+
+   interface
+      function c_rename(old, new) bind(C, name='rename') result(r)
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: old(*), new(*)
+         integer(c_int) :: r
+      end function c_rename
+      function c_mkdir(path, mode) bind(C, name='mkdir') result(r)
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int), value :: mode
+         integer(c_int) :: r
+      end function c_mkdir
+      function c_access(path, mode) bind(C, name='access') result(r)
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int), value :: mode
+         integer(c_int) :: r
+      end function c_access
+      function c_fnmatch(pattern, string, flags) bind(C, name='fnmatch') result(r)
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: pattern(*), string(*)
+         integer(c_int), value :: flags
+         integer(c_int) :: r
+      end function c_fnmatch
+   end interface
+
+contains
+
+   !> Atomically replace new by old (POSIX rename).
+   subroutine sys_rename(old, new, error)
+      character(*), intent(in) :: old, new
+      type(error_t), allocatable, intent(out) :: error
+      if (c_rename(old//c_null_char, new//c_null_char) /= 0) then
+         call set_error(error, 'cannot rename '//old//' to '//new, EXIT_IO)
+      end if
+   end subroutine sys_rename
+
+   !> Create directory dir and its missing parents; error unless it ends up writable.
+   subroutine sys_mkdir_p(dir, error)
+      character(*), intent(in) :: dir
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i, n
+      integer(c_int) :: r
+      n = len_trim(dir)
+      if (n == 0) then
+         call set_error(error, 'empty output directory name', EXIT_IO)
+         return
+      end if
+      do i = 2, n
+         if (dir(i:i) == '/') r = c_mkdir(dir(1:i - 1)//c_null_char, MODE_755)
+      end do
+      r = c_mkdir(dir(1:n)//c_null_char, MODE_755)   ! fails harmlessly when it exists
+      if (c_access(dir(1:n)//c_null_char, W_OK) /= 0) then
+         call set_error(error, 'cannot create or write to output directory '//dir(1:n), EXIT_IO)
+      end if
+   end subroutine sys_mkdir_p
+
+   !> Shell-style glob match (*, ?, [...]) of name against pattern.
+   logical function sys_fnmatch(pattern, name)
+      character(*), intent(in) :: pattern, name
+      sys_fnmatch = c_fnmatch(pattern//c_null_char, name//c_null_char, 0_c_int) == 0
+   end function sys_fnmatch
+end module dx_io_sys

@@ -1,0 +1,125 @@
+!> The output facade the solver calls: plot states (HDF5 + XDMF, *DATABASE_BINARY_D3PLOT)
+!> and ASCII time histories (*DATABASE_GLSTAT, *DATABASE_NODOUT with
+!> *DATABASE_HISTORY_NODE). Opens only what the deck asks for: the plot file always,
+!> glstat when glstat_dt > 0, nodout when nodout_dt > 0 and history nodes exist.
+!> The solver decides when output is due; each call here writes one state or line(s).
+!> File formats: docs/output-format.md.
+module dx_output
+   use dx_error, only: error_t
+   use dx_model, only: model_t
+   use dx_io_sys, only: sys_mkdir_p
+   use dx_plot_hdf5, only: plot_file_t
+   use dx_thist, only: thist_file_t, GLSTAT_COLUMNS, NODOUT_COLUMNS
+   implicit none
+   private
+   public :: output_t
+
+   type :: output_t
+      integer :: nplot = 0                   !< plot states written
+      character(:), allocatable, private :: dir
+      type(plot_file_t), private :: plot
+      type(thist_file_t), private :: glstat
+      type(thist_file_t), private :: nodout
+      logical, private :: glstat_on = .false., nodout_on = .false.
+   contains
+      procedure :: open => output_open
+      procedure :: write_plot => output_write_plot
+      procedure :: write_glstat => output_write_glstat
+      procedure :: write_nodout => output_write_nodout
+      procedure :: close => output_close
+      procedure :: has_glstat => output_has_glstat
+      procedure :: has_nodout => output_has_nodout
+   end type output_t
+
+contains
+
+   !> Create dir if missing and open the files the deck asks for.
+   subroutine output_open(self, model, dir, error)
+      class(output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      character(*), intent(in) :: dir
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: err2
+      character(:), allocatable :: title
+      logical :: nodes
+
+      self%dir = trim(dir)
+      self%nplot = 0
+      title = ''
+      if (allocated(model%title)) title = model%title
+      call sys_mkdir_p(self%dir, error)
+      if (allocated(error)) return
+
+      call self%plot%open(model, self%dir, error)
+      if (allocated(error)) return
+
+      self%glstat_on = model%db%glstat_dt > 0
+      if (self%glstat_on) then
+         call self%glstat%open(self%dir//'/glstat', 'glstat', title, GLSTAT_COLUMNS, error)
+      end if
+      nodes = .false.
+      if (allocated(model%db%hist_nodes)) nodes = size(model%db%hist_nodes) > 0
+      self%nodout_on = model%db%nodout_dt > 0 .and. nodes
+      if (self%nodout_on .and. .not. allocated(error)) then
+         call self%nodout%open(self%dir//'/nodout', 'nodout', title, NODOUT_COLUMNS, error)
+      end if
+      if (allocated(error)) call self%close(err2)   ! keep the first error
+   end subroutine output_open
+
+   !> Write one plot state at model%time.
+   subroutine output_write_plot(self, model, error)
+      class(output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      call self%plot%write_state(model, error)
+      self%nplot = self%plot%nstates
+   end subroutine output_write_plot
+
+   !> Write one glstat line (nothing when the deck asks for none).
+   subroutine output_write_glstat(self, model, error)
+      class(output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. self%glstat_on) return
+      call self%glstat%write_glstat(model, error)
+   end subroutine output_write_glstat
+
+   !> Write the nodout lines of one output time (nothing when the deck asks for none).
+   subroutine output_write_nodout(self, model, error)
+      class(output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      if (.not. self%nodout_on) return
+      call self%nodout%write_nodout(model, error)
+   end subroutine output_write_nodout
+
+   !> Flush and close everything; safe to call twice and after errors. Returns the first
+   !> failure but still closes the other files.
+   subroutine output_close(self, error)
+      class(output_t), intent(inout) :: self
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: e1, e2, e3
+      call self%plot%close(e1)
+      call self%glstat%close(e2)
+      call self%nodout%close(e3)
+      if (allocated(e1)) then
+         call move_alloc(e1, error)
+      else if (allocated(e2)) then
+         call move_alloc(e2, error)
+      else if (allocated(e3)) then
+         call move_alloc(e3, error)
+      end if
+   end subroutine output_close
+
+   !> Whether a glstat file is open (the deck asked for one).
+   logical function output_has_glstat(self)
+      class(output_t), intent(in) :: self
+      output_has_glstat = self%glstat_on
+   end function output_has_glstat
+
+   !> Whether a nodout file is open (the deck asked for one and has history nodes).
+   logical function output_has_nodout(self)
+      class(output_t), intent(in) :: self
+      output_has_nodout = self%nodout_on
+   end function output_has_nodout
+end module dx_output

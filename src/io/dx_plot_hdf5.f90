@@ -1,0 +1,231 @@
+!> Plot states in HDF5 (d3plot.h5) plus its XDMF description (d3plot.xdmf), the dynx
+!> counterpart of LS-DYNA's *DATABASE_BINARY_D3PLOT. Layout (docs/output-format.md):
+!>   /mesh/coordinates (3,nn) f64, node_ids (nn), hex8 (8,ne) 0-based, element_ids (ne),
+!>   part_ids (ne); file attributes title, nstates
+!>   /states/NNNNNN/ (attribute time): coordinates, displacement, velocity (3,nn),
+!>   stress (6,ne) averaged over the integration points, von_mises, pressure = -tr(sig)/3,
+!>   eff_plastic_strain, failed (ne) int; /states/times (extendible)
+!> Crash safety: a state's datasets first, then its time appended and nstates set, then a
+!> global flush, then the XDMF rewritten (tmp + rename) listing only complete states.
+!> All HDF5 calls go through dx_h5.
+module dx_plot_hdf5
+   use dx_kinds, only: wp
+   use dx_error, only: error_t
+   use dx_model, only: model_t
+   use dx_h5, only: h5_file_t, h5_create, h5_close, h5_flush, h5_create_group, h5_write, &
+                    h5_write_attr, h5_create_extendible, h5_append
+   use dx_xdmf, only: xdmf_write, state_group
+   implicit none
+   private
+   public :: plot_file_t, element_results
+
+   character(*), parameter :: H5NAME = 'd3plot.h5', XMFNAME = 'd3plot.xdmf'
+
+   !> One open plot file and the times of the states written so far.
+   type :: plot_file_t
+      type(h5_file_t) :: h5
+      integer :: nstates = 0
+      integer :: nn = 0, ne = 0
+      real(wp), allocatable :: times(:)
+      character(:), allocatable :: xdmf_path, title
+   contains
+      procedure :: open => plot_open
+      procedure :: write_state => plot_write_state
+      procedure :: close => plot_close
+   end type plot_file_t
+
+contains
+
+   !> Create dir/d3plot.h5 with the mesh and an empty state list, and dir/d3plot.xdmf.
+   subroutine plot_open(self, model, dir, error)
+      class(plot_file_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      character(*), intent(in) :: dir
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: hex(:, :), ids(:), nlab(:), elab(:)
+      integer :: ib, i, e
+      type(error_t), allocatable :: err2
+
+      self%nn = model%nn
+      self%ne = model%ne
+      self%nstates = 0
+      allocate(self%times(16))
+      self%title = ''
+      if (allocated(model%title)) self%title = model%title
+      self%xdmf_path = dir//'/'//XMFNAME
+      call h5_create(self%h5, dir//'/'//H5NAME, error)
+      if (allocated(error)) return
+
+      allocate(hex(8, model%ne), ids(model%ne))
+      hex = 0
+      ids = 0
+      if (allocated(model%blocks)) then
+         do ib = 1, size(model%blocks)
+            associate (blk => model%blocks(ib))
+               do i = 1, blk%nel
+                  e = blk%elem(i)
+                  hex(:, e) = blk%conn(1:8, i) - 1
+               end do
+            end associate
+         end do
+      end if
+      do e = 1, model%ne
+         ids(e) = model%parts(model%elem_part(e))%label
+      end do
+      ! labels default to the dense index when a hand-built model has none
+      nlab = [(i, i = 1, model%nn)]
+      if (allocated(model%node_label)) nlab = model%node_label
+      elab = [(i, i = 1, model%ne)]
+      if (allocated(model%elem_label)) elab = model%elem_label
+
+      work: block
+         call h5_create_group(self%h5, '/mesh', error)
+         if (allocated(error)) exit work
+         call h5_write(self%h5, '/mesh/coordinates', model%x0, error)
+         if (allocated(error)) exit work
+         call h5_write(self%h5, '/mesh/node_ids', nlab, error)
+         if (allocated(error)) exit work
+         call h5_write(self%h5, '/mesh/hex8', hex, error)
+         if (allocated(error)) exit work
+         call h5_write(self%h5, '/mesh/element_ids', elab, error)
+         if (allocated(error)) exit work
+         call h5_write(self%h5, '/mesh/part_ids', ids, error)
+         if (allocated(error)) exit work
+         call h5_write_attr(self%h5, '/', 'title', self%title, error)
+         if (allocated(error)) exit work
+         call h5_write_attr(self%h5, '/', 'nstates', 0, error)
+         if (allocated(error)) exit work
+         call h5_create_group(self%h5, '/states', error)
+         if (allocated(error)) exit work
+         call h5_create_extendible(self%h5, '/states/times', error)
+         if (allocated(error)) exit work
+         call h5_flush(self%h5, error)
+         if (allocated(error)) exit work
+         call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, &
+                         self%times(1:0), error)
+      end block work
+      if (allocated(error)) call h5_close(self%h5, err2)   ! keep the first error
+   end subroutine plot_open
+
+   !> Element results: stress averaged over integration points, von Mises, pressure,
+   !> effective plastic strain (0 where the material has none) and the failed flag.
+   subroutine element_results(model, stress, vm, pres, epsp, failed)
+      type(model_t), intent(in) :: model
+      real(wp), intent(out) :: stress(:, :), vm(:), pres(:), epsp(:)
+      integer, intent(out) :: failed(:)
+      integer :: ib, i, e, ip, k, imat
+      real(wp) :: s(6)
+
+      stress = 0.0_wp
+      epsp = 0.0_wp
+      failed = 0
+      if (allocated(model%blocks)) then
+         do ib = 1, size(model%blocks)
+            associate (blk => model%blocks(ib))
+               k = 0
+               imat = model%parts(blk%ipart)%imat
+               if (imat >= 1 .and. allocated(model%mats)) then
+                  if (imat <= size(model%mats)) then
+                     if (allocated(model%mats(imat)%m)) k = model%mats(imat)%m%hv_eps_p
+                  end if
+               end if
+               if (k > blk%nhv .or. .not. allocated(blk%hv)) k = 0
+               do i = 1, blk%nel
+                  e = blk%elem(i)
+                  if (allocated(blk%sig)) then
+                     do ip = 1, blk%nip
+                        stress(:, e) = stress(:, e) + blk%sig(i, :, ip)
+                     end do
+                     stress(:, e) = stress(:, e)/real(blk%nip, wp)
+                  end if
+                  if (k > 0) epsp(e) = sum(blk%hv(i, k, 1:blk%nip))/real(blk%nip, wp)
+                  if (allocated(blk%failed)) then
+                     if (blk%failed(i)) failed(e) = 1
+                  end if
+               end do
+            end associate
+         end do
+      end if
+      do e = 1, size(vm)
+         s = stress(:, e)
+         vm(e) = sqrt(max(0.0_wp, 0.5_wp*((s(1) - s(2))**2 + (s(2) - s(3))**2 &
+                 + (s(3) - s(1))**2) + 3.0_wp*(s(4)**2 + s(5)**2 + s(6)**2)))
+         pres(e) = -(s(1) + s(2) + s(3))/3.0_wp
+      end do
+   end subroutine element_results
+
+   !> Write one plot state at model%time (see the module header for the order of writes).
+   subroutine plot_write_state(self, model, error)
+      class(plot_file_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: x(:, :), stress(:, :), vm(:), pres(:), epsp(:), tmp(:)
+      integer, allocatable :: failed(:)
+      character(:), allocatable :: g
+      integer :: k, n
+
+      k = self%nstates + 1
+      g = state_group(k)
+      allocate(x(3, self%nn), stress(6, self%ne), vm(self%ne), pres(self%ne), &
+               epsp(self%ne), failed(self%ne))
+      if (allocated(model%x)) then
+         x = model%x
+      else
+         x = model%x0
+      end if
+      call element_results(model, stress, vm, pres, epsp, failed)
+
+      call h5_create_group(self%h5, g, error)
+      if (allocated(error)) return
+      call h5_write_attr(self%h5, g, 'time', model%time, error)
+      if (allocated(error)) return
+      call h5_write(self%h5, g//'/coordinates', x, error)
+      if (allocated(error)) return
+      call h5_write(self%h5, g//'/displacement', x - model%x0, error)
+      if (allocated(error)) return
+      if (allocated(model%v)) then
+         call h5_write(self%h5, g//'/velocity', model%v, error)
+      else
+         x = 0.0_wp
+         call h5_write(self%h5, g//'/velocity', x, error)
+      end if
+      if (allocated(error)) return
+      call h5_write(self%h5, g//'/stress', stress, error)
+      if (allocated(error)) return
+      call h5_write(self%h5, g//'/von_mises', vm, error)
+      if (allocated(error)) return
+      call h5_write(self%h5, g//'/pressure', pres, error)
+      if (allocated(error)) return
+      call h5_write(self%h5, g//'/eff_plastic_strain', epsp, error)
+      if (allocated(error)) return
+      call h5_write(self%h5, g//'/failed', failed, error)
+      if (allocated(error)) return
+      ! the state is complete: publish it
+      call h5_append(self%h5, '/states/times', model%time, n, error)
+      if (allocated(error)) return
+      call h5_write_attr(self%h5, '/', 'nstates', k, error)
+      if (allocated(error)) return
+      call h5_flush(self%h5, error)
+      if (allocated(error)) return
+      self%nstates = k
+      if (k > size(self%times)) then
+         allocate(tmp(2*size(self%times)))
+         tmp(1:k - 1) = self%times(1:k - 1)
+         call move_alloc(tmp, self%times)
+      end if
+      self%times(k) = model%time
+      call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, &
+                      self%times(1:k), error)
+   end subroutine plot_write_state
+
+   !> Flush and close (safe to call twice and after errors).
+   subroutine plot_close(self, error)
+      class(plot_file_t), intent(inout) :: self
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: err2
+      if (.not. self%h5%is_open()) return
+      call h5_flush(self%h5, error)
+      call h5_close(self%h5, err2)
+      if (.not. allocated(error) .and. allocated(err2)) call move_alloc(err2, error)
+   end subroutine plot_close
+end module dx_plot_hdf5

@@ -1,0 +1,134 @@
+!> ASCII time histories, the dynx counterparts of LS-DYNA's *DATABASE_GLSTAT (global
+!> energies and momentum) and *DATABASE_NODOUT (nodal displacement, velocity, acceleration
+!> and coordinates of *DATABASE_HISTORY_NODE nodes).
+!> Format (docs/output-format.md): '#' header lines, the last one naming the columns, then
+!> whitespace-separated columns in es18.10e3 (10 significant digits, 3-digit exponent) so
+!> regression diffs are meaningful. Each line is written by one WRITE and flushed at once,
+!> so a killed run leaves only whole lines.
+module dx_thist
+   use dx_kinds, only: wp
+   use dx_error, only: error_t, set_error, EXIT_IO
+   use dx_model, only: model_t
+   implicit none
+   private
+   public :: thist_file_t, GLSTAT_COLUMNS, NODOUT_COLUMNS
+
+   character(*), parameter :: GLSTAT_COLUMNS = 'time cycle dt kinetic internal hourglass ' // &
+      'external_work rigidwall total energy_ratio xmom ymom zmom'
+   character(*), parameter :: NODOUT_COLUMNS = 'time node_id x_disp y_disp z_disp ' // &
+      'x_vel y_vel z_vel x_acc y_acc z_acc x_coor y_coor z_coor'
+   character(*), parameter :: GLSTAT_FMT = '(es18.10e3, 1x, i10, 11(1x, es18.10e3))'
+   character(*), parameter :: NODOUT_FMT = '(es18.10e3, 1x, i10, 12(1x, es18.10e3))'
+
+   !> One open ASCII history file (unit < 0: not open).
+   type :: thist_file_t
+      integer :: unit = -1
+      character(:), allocatable :: path
+   contains
+      procedure :: open => thist_open
+      procedure :: write_glstat
+      procedure :: write_nodout
+      procedure :: close => thist_close
+   end type thist_file_t
+
+contains
+
+   !> Create path and write the header: '# dynx <what>', '# title: ...', '# <columns>'.
+   subroutine thist_open(self, path, what, title, columns, error)
+      class(thist_file_t), intent(inout) :: self
+      character(*), intent(in) :: path, what, title, columns
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ios
+      character(256) :: msg
+      self%path = path
+      open(newunit=self%unit, file=path, status='replace', action='write', &
+           form='formatted', iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         self%unit = -1
+         call set_error(error, 'cannot open '//path//' for writing: '//trim(msg), EXIT_IO)
+         return
+      end if
+      call put_line(self, '# dynx '//what, error)
+      if (allocated(error)) return
+      call put_line(self, '# title: '//trim(title), error)
+      if (allocated(error)) return
+      call put_line(self, '# '//columns, error)
+   end subroutine thist_open
+
+   !> Write one whole line and flush it.
+   subroutine put_line(self, line, error)
+      class(thist_file_t), intent(in) :: self
+      character(*), intent(in) :: line
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ios
+      character(256) :: msg
+      write(self%unit, '(a)', iostat=ios, iomsg=msg) line
+      if (ios == 0) flush(self%unit, iostat=ios, iomsg=msg)
+      if (ios /= 0) call set_error(error, 'cannot write '//self%path//': '//trim(msg), EXIT_IO)
+   end subroutine put_line
+
+   !> One glstat line at model%time.
+   subroutine write_glstat(self, model, error)
+      class(thist_file_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      character(260) :: line
+      integer :: ios
+      character(256) :: msg
+      associate (en => model%energy)
+         write(line, GLSTAT_FMT, iostat=ios, iomsg=msg) model%time, model%cycle, model%dt, &
+            en%kinetic, en%internal, en%hourglass, en%external_work, en%rigidwall, &
+            en%total, en%ratio, en%momentum
+      end associate
+      if (ios /= 0) then
+         call set_error(error, 'cannot format a glstat line: '//trim(msg), EXIT_IO)
+         return
+      end if
+      call put_line(self, trim(line), error)
+   end subroutine write_glstat
+
+   !> One nodout line per history node at model%time; acceleration = f/mass (0 if mass 0).
+   subroutine write_nodout(self, model, error)
+      class(thist_file_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      character(280) :: line
+      integer :: ios, k, n, lab
+      character(256) :: msg
+      real(wp) :: x(3), v(3), a(3)
+      if (.not. allocated(model%db%hist_nodes)) return
+      do k = 1, size(model%db%hist_nodes)
+         n = model%db%hist_nodes(k)
+         x = model%x0(:, n)
+         if (allocated(model%x)) x = model%x(:, n)
+         v = 0.0_wp
+         if (allocated(model%v)) v = model%v(:, n)
+         a = 0.0_wp
+         if (allocated(model%f) .and. allocated(model%mass)) then
+            if (model%mass(n) > 0.0_wp) a = model%f(:, n)/model%mass(n)
+         end if
+         lab = n
+         if (allocated(model%node_label)) lab = model%node_label(n)
+         write(line, NODOUT_FMT, iostat=ios, iomsg=msg) model%time, lab, &
+            x - model%x0(:, n), v, a, x
+         if (ios /= 0) then
+            call set_error(error, 'cannot format a nodout line: '//trim(msg), EXIT_IO)
+            return
+         end if
+         call put_line(self, trim(line), error)
+         if (allocated(error)) return
+      end do
+   end subroutine write_nodout
+
+   !> Close the file if open (safe to call twice).
+   subroutine thist_close(self, error)
+      class(thist_file_t), intent(inout) :: self
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ios
+      character(256) :: msg
+      if (self%unit < 0) return
+      close(self%unit, iostat=ios, iomsg=msg)
+      self%unit = -1
+      if (ios /= 0) call set_error(error, 'cannot close '//self%path//': '//trim(msg), EXIT_IO)
+   end subroutine thist_close
+end module dx_thist

@@ -1,0 +1,133 @@
+!> XDMF 3 description of the HDF5 plot file (d3plot.h5) so ParaView/VisIt can read it:
+!> a temporal collection with one uniform Grid per complete state, hexahedral topology
+!> from /mesh/hex8, geometry from the state's current coordinates, nodal vectors and
+!> cell scalars/tensors from the state group. Rewritten after every state through a
+!> temporary file and rename(2), so a reader never sees a half-written file.
+!> Dimensions: a Fortran (3,nn) dataset is (nn,3) in HDF5's C order, hence "nn 3".
+module dx_xdmf
+   use dx_kinds, only: wp
+   use dx_error, only: error_t, set_error, EXIT_IO
+   use dx_io_sys, only: sys_rename
+   implicit none
+   private
+   public :: xdmf_write, state_group
+
+contains
+
+   !> HDF5 group of state k (1-based): /states/000001, ...
+   function state_group(k) result(g)
+      integer, intent(in) :: k
+      character(:), allocatable :: g
+      character(14) :: buf
+      write(buf, '(a,i6.6)') '/states/', k
+      g = trim(buf)
+   end function state_group
+
+   !> Write the XDMF file path listing states 1..size(times) of h5name (relative name).
+   subroutine xdmf_write(path, h5name, title, nn, ne, times, error)
+      character(*), intent(in) :: path, h5name, title
+      integer, intent(in) :: nn, ne
+      real(wp), intent(in) :: times(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: u, ios, k
+      character(256) :: msg
+      character(:), allocatable :: tmp, g, snn, sne
+      character(32) :: buf
+
+      tmp = path//'.tmp'
+      write(buf, '(i0)') nn
+      snn = trim(buf)
+      write(buf, '(i0)') ne
+      sne = trim(buf)
+      open(newunit=u, file=tmp, status='replace', action='write', iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         call set_error(error, 'cannot open '//tmp//' for writing: '//trim(msg), EXIT_IO)
+         return
+      end if
+      call put('<?xml version="1.0" ?>')
+      call put('<!DOCTYPE Xdmf SYSTEM "Xdmf.dtd" []>')
+      call put('<Xdmf xmlns:xi="http://www.w3.org/2001/XInclude" Version="3.0">')
+      call put(' <Domain>')
+      call put('  <Grid Name="dynx" GridType="Collection" CollectionType="Temporal">')
+      call put('   <Information Name="title" Value="'//xml_escape(title)//'"/>')
+      do k = 1, size(times)
+         g = state_group(k)
+         write(buf, '(es24.16e3)') times(k)
+         call put('   <Grid Name="state'//g(9:)//'" GridType="Uniform">')
+         call put('    <Time Value="'//trim(adjustl(buf))//'"/>')
+         call put('    <Topology TopologyType="Hexahedron" NumberOfElements="'//sne//'">')
+         call item(sne//' 8', 'Int', '4', '/mesh/hex8')
+         call put('    </Topology>')
+         call put('    <Geometry GeometryType="XYZ">')
+         call item(snn//' 3', 'Float', '8', g//'/coordinates')
+         call put('    </Geometry>')
+         call attribute('displacement', 'Vector', 'Node', snn//' 3', 'Float', '8', &
+                        g//'/displacement')
+         call attribute('velocity', 'Vector', 'Node', snn//' 3', 'Float', '8', g//'/velocity')
+         call attribute('stress', 'Tensor6', 'Cell', sne//' 6', 'Float', '8', g//'/stress')
+         call attribute('von_mises', 'Scalar', 'Cell', sne, 'Float', '8', g//'/von_mises')
+         call attribute('pressure', 'Scalar', 'Cell', sne, 'Float', '8', g//'/pressure')
+         call attribute('eff_plastic_strain', 'Scalar', 'Cell', sne, 'Float', '8', &
+                        g//'/eff_plastic_strain')
+         call attribute('failed', 'Scalar', 'Cell', sne, 'Int', '4', g//'/failed')
+         call attribute('part_id', 'Scalar', 'Cell', sne, 'Int', '4', '/mesh/part_ids')
+         call attribute('element_id', 'Scalar', 'Cell', sne, 'Int', '4', '/mesh/element_ids')
+         call attribute('node_id', 'Scalar', 'Node', snn, 'Int', '4', '/mesh/node_ids')
+         call put('   </Grid>')
+      end do
+      call put('  </Grid>')
+      call put(' </Domain>')
+      call put('</Xdmf>')
+      if (allocated(error)) then
+         close(u, status='delete', iostat=ios)
+         return
+      end if
+      close(u, iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         call set_error(error, 'cannot close '//tmp//': '//trim(msg), EXIT_IO)
+         return
+      end if
+      call sys_rename(tmp, path, error)
+
+   contains
+
+      subroutine put(line)
+         character(*), intent(in) :: line
+         if (allocated(error)) return
+         write(u, '(a)', iostat=ios, iomsg=msg) line
+         if (ios /= 0) call set_error(error, 'cannot write '//tmp//': '//trim(msg), EXIT_IO)
+      end subroutine put
+
+      subroutine item(dims, ntype, prec, dset)
+         character(*), intent(in) :: dims, ntype, prec, dset
+         call put('     <DataItem Dimensions="'//dims//'" NumberType="'//ntype// &
+                  '" Precision="'//prec//'" Format="HDF">'//h5name//':'//dset//'</DataItem>')
+      end subroutine item
+
+      subroutine attribute(name, atype, center, dims, ntype, prec, dset)
+         character(*), intent(in) :: name, atype, center, dims, ntype, prec, dset
+         call put('    <Attribute Name="'//name//'" AttributeType="'//atype// &
+                  '" Center="'//center//'">')
+         call item(dims, ntype, prec, dset)
+         call put('    </Attribute>')
+      end subroutine attribute
+   end subroutine xdmf_write
+
+   !> Escape the XML special characters of s.
+   pure function xml_escape(s) result(r)
+      character(*), intent(in) :: s
+      character(:), allocatable :: r
+      integer :: i
+      r = ''
+      do i = 1, len_trim(s)
+         select case (s(i:i))
+         case ('&'); r = r//'&amp;'
+         case ('<'); r = r//'&lt;'
+         case ('>'); r = r//'&gt;'
+         case ('"'); r = r//'&quot;'
+         case default
+            if (iachar(s(i:i)) >= 32) r = r//s(i:i)
+         end select
+      end do
+   end function xml_escape
+end module dx_xdmf

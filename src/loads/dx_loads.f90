@@ -1,0 +1,73 @@
+!> External loads evaluated once per cycle: *LOAD_NODE_POINT (force along a global axis) and
+!> *LOAD_SEGMENT(_SET) pressure on 3/4-node segments of the current geometry. A positive
+!> pressure acts against the segment normal given by the right-hand rule on n1..n4
+!> (LS-DYNA convention). Nodal shares: area vector A = (d13 x d24)/2 split 1/4 per node for a
+!> quadrilateral (exact for a flat segment under uniform pressure), (d12 x d13)/2 in thirds
+!> for a triangle.
+module dx_loads
+   use dx_kinds, only: wp
+   use dx_model, only: model_t
+   implicit none
+   private
+   public :: add_external_loads, has_external_loads
+contains
+
+   !> .true. when the deck defines any external load (so the solver skips the pass otherwise).
+   pure logical function has_external_loads(model)
+      type(model_t), intent(in) :: model
+      has_external_loads = .false.
+      if (allocated(model%node_loads)) has_external_loads = size(model%node_loads) > 0
+      if (allocated(model%seg_loads)) has_external_loads = has_external_loads .or. &
+                                                            size(model%seg_loads) > 0
+   end function has_external_loads
+
+   !> Add the external forces at time t to fext(3,nn) (zeroed by the caller).
+   subroutine add_external_loads(model, t, fext)
+      type(model_t), intent(in) :: model
+      real(wp), intent(in) :: t
+      real(wp), intent(inout) :: fext(:, :)
+      integer :: k, nd, n1, n2, n3, n4
+      real(wp) :: val, p, d1(3), d2(3), area(3)
+      if (allocated(model%node_loads)) then
+         do k = 1, size(model%node_loads)
+            associate (ld => model%node_loads(k))
+               val = ld%sf*model%curves(ld%curve)%eval(t)
+               nd = ld%node
+               if (ld%dof >= 1 .and. ld%dof <= 3) fext(ld%dof, nd) = fext(ld%dof, nd) + val
+            end associate
+         end do
+      end if
+      if (allocated(model%seg_loads)) then
+         do k = 1, size(model%seg_loads)
+            associate (ls => model%seg_loads(k))
+               if (t < ls%at) cycle
+               p = ls%sf*model%curves(ls%curve)%eval(t - ls%at)
+               if (p == 0.0_wp) cycle
+               n1 = ls%nodes(1); n2 = ls%nodes(2); n3 = ls%nodes(3); n4 = ls%nodes(4)
+               if (n4 == 0 .or. n4 == n3) then
+                  d1 = model%x(:, n2) - model%x(:, n1)
+                  d2 = model%x(:, n3) - model%x(:, n1)
+                  area = 0.5_wp*cross(d1, d2)
+                  fext(:, n1) = fext(:, n1) - p*area/3.0_wp
+                  fext(:, n2) = fext(:, n2) - p*area/3.0_wp
+                  fext(:, n3) = fext(:, n3) - p*area/3.0_wp
+               else
+                  d1 = model%x(:, n3) - model%x(:, n1)
+                  d2 = model%x(:, n4) - model%x(:, n2)
+                  area = 0.5_wp*cross(d1, d2)
+                  fext(:, n1) = fext(:, n1) - 0.25_wp*p*area
+                  fext(:, n2) = fext(:, n2) - 0.25_wp*p*area
+                  fext(:, n3) = fext(:, n3) - 0.25_wp*p*area
+                  fext(:, n4) = fext(:, n4) - 0.25_wp*p*area
+               end if
+            end associate
+         end do
+      end if
+   end subroutine add_external_loads
+
+   pure function cross(a, b) result(c)
+      real(wp), intent(in) :: a(3), b(3)
+      real(wp) :: c(3)
+      c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
+   end function cross
+end module dx_loads

@@ -1,0 +1,256 @@
+!> *MAT_PIECEWISE_LINEAR_PLASTICITY (*MAT_024): isotropic J2 plasticity with tabulated
+!> hardening, radial return (Wilkins 1964; Krieg & Krieg 1977) solved exactly for the
+!> piecewise-linear hardening curve by a safeguarded Newton iteration.
+!> Yield curve, in LS-DYNA's order of precedence: LCSS (curve of yield stress against effective
+!> plastic strain, extrapolated linearly beyond its last point), else the EPS1-8/ES1-8 pairs,
+!> else the bilinear SIGY + Ep*eps_p with Ep = E*ETAN/(E - ETAN).
+!> Rate effects: LCSR (yield scale factor against strain rate), else Cowper-Symonds C, P.
+!> VP = 0 scales the yield stress with the effective total (deviatoric) strain rate,
+!> R = 1 + (rate/C)**(1/P); VP = 1 is viscoplastic: sigma_y = h(eps_p) + SIGY*(rate_p/C)**(1/P)
+!> with the plastic strain rate of the step, solved in the same return.
+!> FAIL: effective plastic strain at which the element erodes. History: 1 = eff. plastic strain.
+module dx_mat_piecewise_linear
+   use dx_kinds, only: wp
+   use dx_error, only: error_t, set_error
+   use dx_strings, only: rstr, str
+   use dx_material, only: material_t
+   use dx_mat_elastic, only: check_elastic_constants
+   use dx_curve, only: curve_t
+   implicit none
+   private
+   public :: mat_piecewise_linear_t
+
+   type, extends(material_t) :: mat_piecewise_linear_t
+      real(wp) :: e = 0.0_wp, pr = 0.0_wp, sigy = 0.0_wp, etan = 0.0_wp
+      real(wp) :: fail = 1.0e21_wp, tdel = 0.0_wp
+      real(wp) :: c = 0.0_wp, p = 0.0_wp
+      integer :: lcss = 0, lcsr = 0          !< curve labels from the deck
+      real(wp) :: vp = 0.0_wp
+      real(wp) :: eps(8) = 0.0_wp, es(8) = 0.0_wp
+      type(curve_t) :: hard                  !< hardening curve h(eps_p) in use
+      logical :: bilinear = .true.
+      real(wp) :: ep = 0.0_wp                !< bilinear plastic modulus
+      type(curve_t) :: rate_curve
+      logical :: has_rate_curve = .false.
+   contains
+      procedure :: setup => pl_setup
+      procedure :: nhist => pl_nhist
+      procedure :: update => pl_update
+      procedure :: fails => pl_fails
+      procedure :: resolve_curves => pl_resolve
+      procedure :: yield_static            !< h(eps_p)
+   end type mat_piecewise_linear_t
+
+contains
+
+   subroutine pl_resolve(self, curves, error)
+      class(mat_piecewise_linear_t), intent(inout) :: self
+      type(curve_t), intent(in) :: curves(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k
+      if (self%lcss /= 0) then
+         k = findloc(curves(:)%label, self%lcss, dim=1)
+         if (k == 0) then
+            call set_error(error, 'field LCSS: curve '//str(self%lcss)//' is not defined'); return
+         end if
+         self%hard = curves(k)
+         self%bilinear = .false.
+      end if
+      if (self%lcsr /= 0) then
+         k = findloc(curves(:)%label, self%lcsr, dim=1)
+         if (k == 0) then
+            call set_error(error, 'field LCSR: curve '//str(self%lcsr)//' is not defined'); return
+         end if
+         self%rate_curve = curves(k)
+         self%has_rate_curve = .true.
+      end if
+   end subroutine pl_resolve
+
+   subroutine pl_setup(self, error)
+      class(mat_piecewise_linear_t), intent(inout) :: self
+      type(error_t), allocatable, intent(out) :: error
+      integer :: n, i
+      call check_elastic_constants(self, self%e, self%pr, error)
+      if (allocated(error)) return
+      if (self%tdel /= 0.0_wp) then
+         call set_error(error, 'field TDEL: element deletion by time step is not supported'); return
+      end if
+      if (self%fail < 0.0_wp) then
+         call set_error(error, 'field FAIL: user failure subroutines (FAIL < 0) are not supported')
+         return
+      end if
+      if (self%fail == 0.0_wp) self%fail = 1.0e21_wp
+      if (self%vp /= 0.0_wp .and. self%vp /= 1.0_wp) then
+         call set_error(error, 'field VP: must be 0 or 1, got '//rstr(self%vp)); return
+      end if
+      if (self%c < 0.0_wp .or. self%p < 0.0_wp .or. &
+          ((self%c > 0.0_wp) .neqv. (self%p > 0.0_wp))) then
+         call set_error(error, 'fields C, P: Cowper-Symonds C and P must both be > 0 '// &
+                        '(or both 0), got '//rstr(self%c)//', '//rstr(self%p)); return
+      end if
+      if (self%vp == 1.0_wp .and. self%has_rate_curve) then
+         call set_error(error, 'field LCSR: VP = 1 with a rate curve is not supported'); return
+      end if
+      if (self%bilinear .and. any(self%es /= 0.0_wp)) then
+         ! EPS/ES pairs: the points up to the last with increasing EPS
+         n = 1
+         do i = 2, 8
+            if (self%eps(i) <= self%eps(i-1)) exit
+            n = i
+         end do
+         if (n < 2) then
+            call set_error(error, 'fields EPS1-8/ES1-8: at least two points with increasing '// &
+                           'EPS are needed'); return
+         end if
+         self%hard%x = self%eps(1:n)
+         self%hard%y = self%es(1:n)
+         self%bilinear = .false.
+      end if
+      if (self%bilinear) then
+         if (.not. (self%sigy > 0.0_wp)) then
+            call set_error(error, 'field SIGY: yield stress must be > 0, got '//rstr(self%sigy))
+            return
+         end if
+         if (self%etan < 0.0_wp .or. self%etan >= self%e) then
+            call set_error(error, 'field ETAN: tangent modulus must lie in [0, E), got '// &
+                           rstr(self%etan)); return
+         end if
+         self%ep = self%e*self%etan/(self%e - self%etan)
+      else
+         if (size(self%hard%x) < 1) then
+            call set_error(error, 'field LCSS: the hardening curve has no points'); return
+         end if
+         if (.not. (self%hard%eval_extrap(0.0_wp) > 0.0_wp)) then
+            call set_error(error, 'field LCSS: the initial yield stress of the curve must be '// &
+                           '> 0, got '//rstr(self%hard%eval_extrap(0.0_wp))); return
+         end if
+      end if
+      self%hv_eps_p = 1
+   end subroutine pl_setup
+
+   pure integer function pl_nhist(self)
+      class(mat_piecewise_linear_t), intent(in) :: self
+      pl_nhist = 1
+   end function pl_nhist
+
+   !> Static yield stress h(eps_p) and its slope.
+   pure subroutine yield_static(self, epsp, h, dh)
+      class(mat_piecewise_linear_t), intent(in) :: self
+      real(wp), intent(in) :: epsp
+      real(wp), intent(out) :: h, dh
+      if (self%bilinear) then
+         h = self%sigy + self%ep*epsp
+         dh = self%ep
+      else if (size(self%hard%x) == 1) then
+         h = self%hard%y(1); dh = 0.0_wp
+      else
+         h = self%hard%eval_extrap(epsp)
+         dh = self%hard%slope(epsp)
+      end if
+   end subroutine yield_static
+
+   subroutine pl_update(self, nv, dt, deps, relvol, eint, sig, hv, ierr)
+      class(mat_piecewise_linear_t), intent(in) :: self
+      integer, intent(in) :: nv
+      real(wp), intent(in) :: dt
+      real(wp), intent(in) :: deps(nv, 6), relvol(nv), eint(nv)
+      real(wp), intent(inout) :: sig(nv, 6)
+      real(wp), intent(inout) :: hv(:, :)
+      integer, intent(inout) :: ierr(nv)
+      real(wp) :: g, g2, k, p, dv, s(6), s2, seff, r, h, dh, rate, dep, scale
+      integer :: i
+      g = self%shear
+      g2 = 2.0_wp*g
+      k = self%bulk
+      do i = 1, nv
+         dv = (deps(i, 1) + deps(i, 2) + deps(i, 3))/3.0_wp
+         p = (sig(i, 1) + sig(i, 2) + sig(i, 3))/3.0_wp
+         s(1) = sig(i, 1) - p + g2*(deps(i, 1) - dv)
+         s(2) = sig(i, 2) - p + g2*(deps(i, 2) - dv)
+         s(3) = sig(i, 3) - p + g2*(deps(i, 3) - dv)
+         s(4) = sig(i, 4) + g2*deps(i, 4)
+         s(5) = sig(i, 5) + g2*deps(i, 5)
+         s(6) = sig(i, 6) + g2*deps(i, 6)
+         p = p + 3.0_wp*k*dv
+         s2 = s(1)**2 + s(2)**2 + s(3)**2 + 2.0_wp*(s(4)**2 + s(5)**2 + s(6)**2)
+         seff = sqrt(1.5_wp*s2)
+         call self%yield_static(hv(i, 1), h, dh)
+         r = 1.0_wp
+         if (self%vp == 0.0_wp .and. (self%c > 0.0_wp .or. self%has_rate_curve) .and. &
+             dt > 0.0_wp) then
+            rate = sqrt((2.0_wp/3.0_wp)*((deps(i, 1) - dv)**2 + (deps(i, 2) - dv)**2 + &
+                   (deps(i, 3) - dv)**2 + 2.0_wp*(deps(i, 4)**2 + deps(i, 5)**2 + &
+                   deps(i, 6)**2)))/dt
+            if (self%has_rate_curve) then
+               r = self%rate_curve%eval(rate)
+            else
+               r = 1.0_wp + (rate/self%c)**(1.0_wp/self%p)
+            end if
+         end if
+         if (seff > r*h .or. (self%vp == 1.0_wp .and. seff > h)) then
+            dep = return_map(self, seff, hv(i, 1), r, dt)
+            if (dep < 0.0_wp) then
+               ierr(i) = 1
+               dep = 0.0_wp
+            end if
+            scale = 1.0_wp - 3.0_wp*g*dep/seff
+            s = s*scale
+            hv(i, 1) = hv(i, 1) + dep
+         end if
+         sig(i, 1:3) = s(1:3) + p
+         sig(i, 4:6) = s(4:6)
+      end do
+   end subroutine pl_update
+
+   !> Solve seff - 3G*dep = yield(eps_p + dep) for dep >= 0: safeguarded Newton on the
+   !> piecewise-linear (or viscoplastic) yield function. Returns -1 if it fails.
+   function return_map(self, seff, epsp, r, dt) result(dep)
+      class(mat_piecewise_linear_t), intent(in) :: self
+      real(wp), intent(in) :: seff, epsp, r, dt
+      real(wp) :: dep
+      real(wp) :: lo, hi, f, df, h, dh, yv, dyv, x
+      integer :: it
+      lo = 0.0_wp
+      hi = seff/(3.0_wp*self%shear)      ! f(hi) <= 0 since the yield stress is >= 0
+      call self%yield_static(epsp, h, dh)
+      x = max(0.0_wp, (seff - r*h)/(3.0_wp*self%shear + r*max(dh, 0.0_wp)))
+      x = min(x, hi)
+      do it = 1, 60
+         call self%yield_static(epsp + x, h, dh)
+         if (self%vp == 1.0_wp .and. self%c > 0.0_wp .and. dt > 0.0_wp) then
+            yv = 0.0_wp; dyv = 0.0_wp
+            if (x > 0.0_wp) then
+               yv = self%sigy*(x/(dt*self%c))**(1.0_wp/self%p)
+               dyv = yv/(self%p*x)
+            end if
+            f = seff - 3.0_wp*self%shear*x - h - yv
+            df = -3.0_wp*self%shear - dh - dyv
+         else
+            f = seff - 3.0_wp*self%shear*x - r*h
+            df = -3.0_wp*self%shear - r*dh
+         end if
+         if (f > 0.0_wp) then
+            lo = x
+         else
+            hi = x
+         end if
+         if (abs(f) <= 1.0e-13_wp*seff) then
+            dep = x; return
+         end if
+         x = x - f/df
+         if (x <= lo .or. x >= hi) x = 0.5_wp*(lo + hi)
+         if (hi - lo <= 1.0e-15_wp*max(hi, 1.0e-300_wp)) then
+            dep = x; return
+         end if
+      end do
+      dep = -1.0_wp
+   end function return_map
+
+   subroutine pl_fails(self, nv, hv, failed)
+      class(mat_piecewise_linear_t), intent(in) :: self
+      integer, intent(in) :: nv
+      real(wp), intent(in) :: hv(:, :)
+      logical, intent(out) :: failed(nv)
+      failed = hv(1:nv, 1) >= self%fail
+   end subroutine pl_fails
+end module dx_mat_piecewise_linear

@@ -1,0 +1,217 @@
+!> The model a deck builds and the solver advances: nodes, element blocks, parts, sets, curves,
+!> boundary conditions, loads, controls, output requests, and the nodal state.
+!> IDs from the deck are labels; everything here is indexed densely from 1. The label arrays
+!> (node_label, elem_label, parts(:)%label, ...) are kept for messages and output.
+module dx_model
+   use dx_kinds, only: wp, nv_chunk
+   use dx_material, only: mat_holder_t
+   use dx_curve, only: curve_t
+   implicit none
+   private
+   public :: model_t, elem_block_t, part_t, section_t, hourglass_t, node_set_t, part_set_t, &
+             segment_set_t, spc_t, prescribed_t, load_node_t, load_segment_t, rigidwall_t, &
+             control_t, database_t, energy_t, ETYPE_HEX8_1PT, ETYPE_HEX8_SRI
+
+   !> element formulations (ELFORM of *SECTION_SOLID)
+   integer, parameter :: ETYPE_HEX8_1PT = 1   !< one-point, uniform strain, hourglass control
+   integer, parameter :: ETYPE_HEX8_SRI = 2   !< 2x2x2 selectively reduced (mean dilatation)
+
+   !> *SECTION_SOLID
+   type :: section_t
+      integer :: label = 0
+      character(:), allocatable :: title
+      integer :: elform = 1
+      integer :: aet = 0
+   end type section_t
+
+   !> *HOURGLASS (a negative or zero value means: take the *CONTROL_* default)
+   type :: hourglass_t
+      integer :: label = 0
+      integer :: ihq = 0
+      real(wp) :: qm = -1.0_wp
+      integer :: ibq = 0
+      real(wp) :: q1 = -1.0_wp, q2 = -1.0_wp
+      real(wp) :: qb = -1.0_wp, qw = -1.0_wp
+   end type hourglass_t
+
+   !> *PART with its resolved section, material and hourglass settings
+   type :: part_t
+      integer :: label = 0
+      character(:), allocatable :: title
+      integer :: secid = 0, mid = 0, eosid = 0, hgid = 0    !< labels as read
+      integer :: isec = 0, imat = 0, ihg = 0                !< dense indices (0: none)
+      integer :: ihq = 1           !< resolved hourglass type (LS-DYNA IHQ)
+      real(wp) :: qh = 0.1_wp      !< resolved hourglass coefficient
+      real(wp) :: q1 = 1.5_wp      !< resolved quadratic bulk viscosity coefficient
+      real(wp) :: q2 = 0.06_wp     !< resolved linear bulk viscosity coefficient
+   end type part_t
+
+   !> A group of at most nv_chunk elements of one part and one formulation.
+   !> State arrays have the element index first (unit stride over elements).
+   type :: elem_block_t
+      integer :: ipart = 0          !< dense part index
+      integer :: etype = ETYPE_HEX8_1PT
+      integer :: nel = 0            !< elements in this block (<= nv_chunk)
+      integer :: nip = 1            !< integration points per element
+      integer :: nhv = 0            !< history variables per point (from the material)
+      integer, allocatable :: conn(:, :)     !< (8, nel) dense node indices
+      integer, allocatable :: elem(:)        !< (nel) dense global element index
+      real(wp), allocatable :: sig(:, :, :)  !< (nel, 6, nip) Cauchy stress
+      real(wp), allocatable :: hv(:, :, :)   !< (nel, nhv, nip) material history
+      real(wp), allocatable :: vol0(:)       !< (nel) initial volume
+      real(wp), allocatable :: relvol(:)     !< (nel) current V/V0
+      real(wp), allocatable :: eint(:)       !< (nel) internal energy (work of stress)
+      real(wp), allocatable :: ehg(:)        !< (nel) hourglass energy
+      real(wp), allocatable :: hgs(:, :, :)  !< (nel, 3, 4) hourglass resisting forces (IHQ 4,5)
+      logical, allocatable :: failed(:)      !< (nel) eroded elements carry no force
+   end type elem_block_t
+
+   type :: node_set_t
+      integer :: label = 0
+      integer, allocatable :: nodes(:)       !< dense node indices
+   end type node_set_t
+
+   type :: part_set_t
+      integer :: label = 0
+      integer, allocatable :: parts(:)       !< dense part indices
+   end type part_set_t
+
+   type :: segment_set_t
+      integer :: label = 0
+      integer, allocatable :: seg(:, :)      !< (4, nseg) dense nodes; a triangle repeats n3
+   end type segment_set_t
+
+   !> one constrained node (*BOUNDARY_SPC_*): dof(1:3) translations, dof(4:6) rotations
+   type :: spc_t
+      integer :: node = 0
+      logical :: dof(6) = .false.
+   end type spc_t
+
+   !> *BOUNDARY_PRESCRIBED_MOTION_NODE/_SET, one per node
+   type :: prescribed_t
+      integer :: node = 0
+      integer :: dof = 0            !< LS-DYNA DOF code: 1,2,3 = x,y,z; 4 = along dir
+      integer :: vad = 0            !< 0 velocity, 1 acceleration, 2 displacement
+      integer :: curve = 0          !< dense curve index
+      real(wp) :: sf = 1.0_wp
+      real(wp) :: dir(3) = 0.0_wp   !< unit direction (dof 1..3 give the axis)
+      real(wp) :: death = 1.0e28_wp, birth = 0.0_wp
+   end type prescribed_t
+
+   !> *LOAD_NODE_POINT: force on node along dof 1..3 (4..6: moments, not on solids)
+   type :: load_node_t
+      integer :: node = 0
+      integer :: dof = 0
+      integer :: curve = 0
+      real(wp) :: sf = 1.0_wp
+   end type load_node_t
+
+   !> *LOAD_SEGMENT(_SET): pressure p(t) = sf*curve(t - at) on a 3/4-node segment;
+   !> positive pressure acts against the segment normal (right-hand rule on n1..n4)
+   type :: load_segment_t
+      integer :: nodes(4) = 0
+      integer :: curve = 0
+      real(wp) :: sf = 1.0_wp
+      real(wp) :: at = 0.0_wp
+   end type load_segment_t
+
+   !> *RIGIDWALL_PLANAR (stonewall): fixed infinite plane through x0 with unit normal n
+   !> pointing into the allowed half space
+   type :: rigidwall_t
+      integer :: label = 0
+      integer, allocatable :: nodes(:)     !< slave nodes (dense)
+      real(wp) :: x0(3) = 0.0_wp, n(3) = [0.0_wp, 0.0_wp, 1.0_wp]
+      real(wp) :: fric = 0.0_wp
+      real(wp) :: force(3) = 0.0_wp        !< resultant force on the wall, last cycle
+   end type rigidwall_t
+
+   !> *CONTROL_TERMINATION, *CONTROL_TIMESTEP, *CONTROL_HOURGLASS, *CONTROL_BULK_VISCOSITY
+   type :: control_t
+      real(wp) :: endtim = 0.0_wp
+      integer :: endcyc = 0
+      real(wp) :: dtmin = 0.0_wp        !< fraction of the initial step below which the run stops
+      real(wp) :: endeng = 0.0_wp, endmas = 0.0_wp
+      real(wp) :: dtinit = 0.0_wp
+      real(wp) :: tssfac = 0.9_wp
+      integer :: isdo = 0
+      real(wp) :: tslimt = 0.0_wp
+      real(wp) :: dt2ms = 0.0_wp
+      integer :: lctm = 0               !< dense curve index limiting dt (0: none)
+      integer :: erode = 0
+      integer :: ihq = 1
+      real(wp) :: qh = 0.1_wp
+      real(wp) :: q1 = 1.5_wp, q2 = 0.06_wp
+      integer :: ibq = 1
+   end type control_t
+
+   !> output requests
+   type :: database_t
+      real(wp) :: d3plot_dt = 0.0_wp    !< 0: no plot states beyond first and last
+      integer :: d3plot_lcdt = 0
+      real(wp) :: glstat_dt = 0.0_wp    !< 0: no glstat file
+      real(wp) :: nodout_dt = 0.0_wp    !< 0: no nodout file
+      integer, allocatable :: hist_nodes(:)   !< dense node indices for nodout
+   end type database_t
+
+   !> global energies and momentum (glstat)
+   type :: energy_t
+      real(wp) :: kinetic = 0.0_wp
+      real(wp) :: internal = 0.0_wp
+      real(wp) :: hourglass = 0.0_wp
+      real(wp) :: external_work = 0.0_wp
+      real(wp) :: rigidwall = 0.0_wp    !< energy taken by rigid walls (positive = absorbed)
+      real(wp) :: total = 0.0_wp        !< kinetic + internal + hourglass
+      real(wp) :: initial = 0.0_wp      !< total at t = 0
+      real(wp) :: ratio = 1.0_wp        !< (total + rigidwall) / (initial + external work)
+      real(wp) :: momentum(3) = 0.0_wp
+      real(wp) :: mass = 0.0_wp
+   end type energy_t
+
+   type :: model_t
+      character(:), allocatable :: title
+      character(:), allocatable :: deck_file
+      ! --- nodes
+      integer :: nn = 0
+      integer, allocatable :: node_label(:)
+      real(wp), allocatable :: x0(:, :)        !< (3, nn) initial coordinates
+      real(wp), allocatable :: v0(:, :)        !< (3, nn) initial velocity
+      ! --- elements
+      integer :: ne = 0
+      integer, allocatable :: elem_label(:)    !< (ne) element ids
+      integer, allocatable :: elem_part(:)     !< (ne) dense part index
+      integer, allocatable :: elem_block(:)    !< (ne) block holding the element
+      integer, allocatable :: elem_pos(:)      !< (ne) position inside that block
+      type(elem_block_t), allocatable :: blocks(:)
+      ! --- definitions
+      type(part_t), allocatable :: parts(:)
+      type(section_t), allocatable :: sections(:)
+      type(hourglass_t), allocatable :: hourglasses(:)
+      type(mat_holder_t), allocatable :: mats(:)
+      type(curve_t), allocatable :: curves(:)
+      type(node_set_t), allocatable :: node_sets(:)
+      type(part_set_t), allocatable :: part_sets(:)
+      type(segment_set_t), allocatable :: segment_sets(:)
+      ! --- boundary conditions and loads
+      type(spc_t), allocatable :: spcs(:)
+      type(prescribed_t), allocatable :: prescribed(:)
+      type(load_node_t), allocatable :: node_loads(:)
+      type(load_segment_t), allocatable :: seg_loads(:)
+      type(rigidwall_t), allocatable :: walls(:)
+      ! --- controls and output
+      type(control_t) :: ctrl
+      type(database_t) :: db
+      ! --- state (allocated by the solver)
+      real(wp), allocatable :: x(:, :)         !< (3, nn) current coordinates
+      real(wp), allocatable :: v(:, :)         !< (3, nn) velocity at t(n+1/2) after a cycle
+      real(wp), allocatable :: f(:, :)         !< (3, nn) force (external - internal)
+      real(wp), allocatable :: mass(:)         !< (nn) lumped mass
+      real(wp) :: time = 0.0_wp
+      real(wp) :: dt = 0.0_wp
+      integer :: cycle = 0
+      integer :: dt_elem = 0                   !< dense element controlling dt
+      type(energy_t) :: energy
+   end type model_t
+
+   ! keep nv_chunk visible to users of the model (block sizes)
+   public :: nv_chunk
+end module dx_model

@@ -1,0 +1,250 @@
+!> The model as the deck states it, before labels are resolved: every record keeps the deck
+!> labels it refers to and where it came from (file index, line, keyword), so the build step
+!> (dx_model_build) can report a bad reference at the card that made it.
+!> Filled by the keyword readers in src/deck/, consumed (and emptied) by build_model.
+module dx_model_input
+   use dx_kinds, only: wp
+   use dx_model, only: part_t, section_t, hourglass_t, control_t
+   use dx_material, only: mat_holder_t
+   use dx_curve, only: curve_t
+   implicit none
+   private
+   public :: model_input_t, string_t, origin_t, label_list_t, segment_list_t, spc_in_t, &
+             motion_in_t, ivel_in_t, load_node_in_t, load_seg_in_t, wall_in_t, &
+             IVEL_SET, IVEL_NODE, IVEL_GEN, add_node, add_element, origin, input_init
+
+   integer, parameter :: IVEL_SET = 1   !< *INITIAL_VELOCITY
+   integer, parameter :: IVEL_NODE = 2  !< *INITIAL_VELOCITY_NODE
+   integer, parameter :: IVEL_GEN = 3   !< *INITIAL_VELOCITY_GENERATION
+
+   type :: string_t
+      character(:), allocatable :: s
+   end type string_t
+
+   !> where a record came from: file index into model_input_t%files, line, keyword (no '*')
+   type :: origin_t
+      integer :: ifile = 0, line = 0
+      character(:), allocatable :: key
+   end type origin_t
+
+   !> *SET_NODE_LIST / *SET_PART_LIST as read (labels)
+   type :: label_list_t
+      integer :: label = 0
+      integer, allocatable :: ids(:)
+      type(origin_t) :: src
+   end type label_list_t
+
+   !> *SET_SEGMENT as read: (4, nseg) node labels, a triangle repeats n3
+   type :: segment_list_t
+      integer :: label = 0
+      integer, allocatable :: seg(:, :)
+      type(origin_t) :: src
+   end type segment_list_t
+
+   !> *BOUNDARY_SPC_NODE/_SET record
+   type :: spc_in_t
+      integer :: id = 0               !< node label or node set label
+      logical :: is_set = .false.
+      logical :: dof(6) = .false.
+      type(origin_t) :: src
+   end type spc_in_t
+
+   !> *BOUNDARY_PRESCRIBED_MOTION_NODE/_SET record
+   type :: motion_in_t
+      integer :: id = 0
+      logical :: is_set = .false.
+      integer :: dof = 0, vad = 0, lcid = 0
+      real(wp) :: sf = 1.0_wp, death = 1.0e28_wp, birth = 0.0_wp
+      type(origin_t) :: src
+   end type motion_in_t
+
+   !> one *INITIAL_VELOCITY* record
+   type :: ivel_in_t
+      integer :: kind = IVEL_SET
+      integer :: id = 0                !< NSID / NID / generation ID
+      integer :: nsidex = 0            !< *INITIAL_VELOCITY: excluded node set
+      integer :: styp = 0              !< GENERATION: 1 part set, 2 part, 3 node set
+      real(wp) :: v(3) = 0.0_wp        !< translational velocity
+      real(wp) :: vex(3) = 0.0_wp      !< velocity of the excluded nodes (NSIDEX)
+      real(wp) :: omega = 0.0_wp
+      real(wp) :: xc(3) = 0.0_wp, axis(3) = 0.0_wp
+      type(origin_t) :: src
+   end type ivel_in_t
+
+   type :: load_node_in_t
+      integer :: nid = 0, dof = 0, lcid = 0
+      real(wp) :: sf = 1.0_wp
+      type(origin_t) :: src
+   end type load_node_in_t
+
+   !> *LOAD_SEGMENT (n(1:4) node labels) or *LOAD_SEGMENT_SET (ssid)
+   type :: load_seg_in_t
+      integer :: n(4) = 0
+      integer :: ssid = 0
+      integer :: lcid = 0
+      real(wp) :: sf = 1.0_wp, at = 0.0_wp
+      type(origin_t) :: src
+   end type load_seg_in_t
+
+   !> *RIGIDWALL_PLANAR as read
+   type :: wall_in_t
+      integer :: label = 0
+      integer :: nsid = 0, nsidex = 0
+      real(wp) :: offset = 0.0_wp
+      real(wp) :: xt(3) = 0.0_wp, xh(3) = 0.0_wp
+      real(wp) :: fric = 0.0_wp
+      type(origin_t) :: src
+   end type wall_in_t
+
+   type :: model_input_t
+      type(string_t), allocatable :: files(:)      !< deck file names (index = ifile)
+      character(:), allocatable :: title
+      ! --- nodes (grown by add_node; arrays longer than nn)
+      integer :: nn = 0
+      integer, allocatable :: node_label(:)
+      real(wp), allocatable :: x(:, :)               !< (3, :)
+      integer, allocatable :: node_tc(:), node_rc(:)  !< *NODE TC, RC constraint codes
+      integer, allocatable :: node_src(:, :)         !< (2, :) ifile, line
+      ! --- solid elements (grown by add_element)
+      integer :: ne = 0
+      integer, allocatable :: elem_label(:), elem_pid(:)
+      integer, allocatable :: elem_conn(:, :)        !< (8, :) node labels
+      integer, allocatable :: elem_src(:, :)         !< (2, :) ifile, line
+      ! --- definitions
+      type(part_t), allocatable :: parts(:)
+      type(origin_t), allocatable :: part_src(:)
+      type(section_t), allocatable :: sections(:)
+      type(origin_t), allocatable :: section_src(:)
+      type(hourglass_t), allocatable :: hourglasses(:)
+      type(origin_t), allocatable :: hourglass_src(:)
+      type(mat_holder_t), allocatable :: mats(:)
+      type(origin_t), allocatable :: mat_src(:)
+      type(curve_t), allocatable :: curves(:)
+      type(origin_t), allocatable :: curve_src(:)
+      type(label_list_t), allocatable :: node_sets(:), part_sets(:)
+      type(segment_list_t), allocatable :: segment_sets(:)
+      ! --- boundary conditions, loads, initial conditions
+      type(spc_in_t), allocatable :: spcs(:)
+      type(motion_in_t), allocatable :: motions(:)
+      type(ivel_in_t), allocatable :: ivels(:)
+      type(load_node_in_t), allocatable :: node_loads(:)
+      type(load_seg_in_t), allocatable :: seg_loads(:)
+      type(wall_in_t), allocatable :: walls(:)
+      ! --- controls and output requests
+      type(control_t) :: ctrl
+      logical :: has_termination = .false.
+      type(origin_t) :: term_src, timestep_src
+      integer :: lctm = 0                  !< *CONTROL_TIMESTEP LCTM (curve label)
+      real(wp) :: d3plot_dt = 0.0_wp
+      integer :: d3plot_lcdt = 0           !< curve label
+      integer :: d3plot_npltc = 0
+      type(origin_t) :: d3plot_src
+      real(wp) :: glstat_dt = 0.0_wp, nodout_dt = 0.0_wp
+      type(label_list_t), allocatable :: hist_nodes(:)      !< *DATABASE_HISTORY_NODE cards
+      type(label_list_t), allocatable :: hist_node_sets(:)  !< *DATABASE_HISTORY_NODE_SET cards
+   end type model_input_t
+
+contains
+
+   !> Empty input: every list allocated with size 0 so readers can append.
+   subroutine input_init(inp)
+      type(model_input_t), intent(out) :: inp
+      allocate(inp%files(0), inp%parts(0), inp%part_src(0), inp%sections(0), &
+               inp%section_src(0), inp%hourglasses(0), inp%hourglass_src(0), inp%mats(0), &
+               inp%mat_src(0), inp%curves(0), inp%curve_src(0), inp%node_sets(0), &
+               inp%part_sets(0), inp%segment_sets(0), inp%spcs(0), inp%motions(0), &
+               inp%ivels(0), inp%node_loads(0), inp%seg_loads(0), inp%walls(0), &
+               inp%hist_nodes(0), inp%hist_node_sets(0))
+      allocate(inp%node_label(0), inp%x(3, 0), inp%node_tc(0), inp%node_rc(0), &
+               inp%node_src(2, 0))
+      allocate(inp%elem_label(0), inp%elem_pid(0), inp%elem_conn(8, 0), inp%elem_src(2, 0))
+   end subroutine input_init
+
+   !> An origin record for keyword key at (ifile, line).
+   pure function origin(ifile, line, key) result(o)
+      integer, intent(in) :: ifile, line
+      character(*), intent(in) :: key
+      type(origin_t) :: o
+      o%ifile = ifile
+      o%line = line
+      o%key = key
+   end function origin
+
+   !> Append one *NODE record (capacity doubles).
+   subroutine add_node(inp, label, x, tc, rc, ifile, line)
+      type(model_input_t), intent(inout) :: inp
+      integer, intent(in) :: label, tc, rc, ifile, line
+      real(wp), intent(in) :: x(3)
+      integer :: cap
+      if (size(inp%node_label) == 0) then
+         cap = 1024
+         deallocate(inp%node_label, inp%x, inp%node_tc, inp%node_rc, inp%node_src)
+         allocate(inp%node_label(cap), inp%x(3, cap), inp%node_tc(cap), inp%node_rc(cap), &
+                  inp%node_src(2, cap))
+      else if (inp%nn == size(inp%node_label)) then
+         cap = 2*size(inp%node_label)
+         call grow_i1(inp%node_label, cap)
+         call grow_r2(inp%x, cap)
+         call grow_i1(inp%node_tc, cap)
+         call grow_i1(inp%node_rc, cap)
+         call grow_i2(inp%node_src, cap)
+      end if
+      inp%nn = inp%nn + 1
+      inp%node_label(inp%nn) = label
+      inp%x(:, inp%nn) = x
+      inp%node_tc(inp%nn) = tc
+      inp%node_rc(inp%nn) = rc
+      inp%node_src(:, inp%nn) = [ifile, line]
+   end subroutine add_node
+
+   !> Append one *ELEMENT_SOLID record (capacity doubles).
+   subroutine add_element(inp, label, pid, conn, ifile, line)
+      type(model_input_t), intent(inout) :: inp
+      integer, intent(in) :: label, pid, conn(8), ifile, line
+      integer :: cap
+      if (size(inp%elem_label) == 0) then
+         cap = 1024
+         deallocate(inp%elem_label, inp%elem_pid, inp%elem_conn, inp%elem_src)
+         allocate(inp%elem_label(cap), inp%elem_pid(cap), inp%elem_conn(8, cap), &
+                  inp%elem_src(2, cap))
+      else if (inp%ne == size(inp%elem_label)) then
+         cap = 2*size(inp%elem_label)
+         call grow_i1(inp%elem_label, cap)
+         call grow_i1(inp%elem_pid, cap)
+         call grow_i2(inp%elem_conn, cap)
+         call grow_i2(inp%elem_src, cap)
+      end if
+      inp%ne = inp%ne + 1
+      inp%elem_label(inp%ne) = label
+      inp%elem_pid(inp%ne) = pid
+      inp%elem_conn(:, inp%ne) = conn
+      inp%elem_src(:, inp%ne) = [ifile, line]
+   end subroutine add_element
+
+   subroutine grow_i1(a, cap)
+      integer, allocatable, intent(inout) :: a(:)
+      integer, intent(in) :: cap
+      integer, allocatable :: t(:)
+      allocate(t(cap))
+      t(1:size(a)) = a
+      call move_alloc(t, a)
+   end subroutine grow_i1
+
+   subroutine grow_i2(a, cap)
+      integer, allocatable, intent(inout) :: a(:, :)
+      integer, intent(in) :: cap
+      integer, allocatable :: t(:, :)
+      allocate(t(size(a, 1), cap))
+      t(:, 1:size(a, 2)) = a
+      call move_alloc(t, a)
+   end subroutine grow_i2
+
+   subroutine grow_r2(a, cap)
+      real(wp), allocatable, intent(inout) :: a(:, :)
+      integer, intent(in) :: cap
+      real(wp), allocatable :: t(:, :)
+      allocate(t(size(a, 1), cap))
+      t(:, 1:size(a, 2)) = a
+      call move_alloc(t, a)
+   end subroutine grow_r2
+end module dx_model_input

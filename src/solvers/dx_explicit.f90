@@ -1,0 +1,333 @@
+!> The explicit central-difference solver (DYNA3D's time loop; Hallquist, DYNA3D User's
+!> Manual UCRL-MA-107254, and Belytschko, Liu & Moran 2000, box 6.1):
+!>   f(n) = f_ext(n) - f_int(x(n), sigma(n)),  a(n) = f(n)/m,
+!>   v(n+1/2) = v(n-1/2) + (dt(n-1/2) + dt(n+1/2))/2 a(n),  x(n+1) = x(n) + dt(n+1/2) v(n+1/2),
+!> lumped mass (rho*V0/8 per hex node), dt(n+1/2) = TSSFAC * min over elements, energy balance
+!> each cycle with the time-centred kinetic energy 1/2 m v(n-1/2).v(n+1/2) and the external and
+!> constraint work  W += f(n).(du(n-1/2) + du(n+1/2))/2, which the central-difference scheme
+!> balances exactly for linear problems at constant dt.
+module dx_explicit
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use dx_kinds, only: wp, huge_wp
+   use dx_error, only: error_t, set_error, EXIT_NUMERIC
+   use dx_strings, only: str, rstr
+   use dx_log, only: log_info, log_flush
+   use dx_timer, only: wall_time
+   use dx_model, only: model_t, elem_block_t
+   use dx_hex8, only: hex8_block, hex8_volume, block_result_t, HEX_ERR_NEGVOL
+   use dx_loads, only: add_external_loads, has_external_loads
+   use dx_constraints, only: apply_spc, apply_prescribed, apply_rigidwalls
+   use dx_output, only: output_t
+   implicit none
+   private
+   public :: run_options_t, init_state, run_explicit
+
+   type :: run_options_t
+      character(:), allocatable :: outdir
+      integer :: nstatus = 10          !< status lines over the run
+   end type run_options_t
+
+contains
+
+   !> Allocate and initialize the nodal state: x = x0, v = v0, lumped mass.
+   subroutine init_state(model)
+      type(model_t), intent(inout) :: model
+      integer :: b, i, k
+      real(wp) :: m
+      allocate(model%x(3, model%nn), model%v(3, model%nn), model%f(3, model%nn))
+      allocate(model%mass(model%nn))
+      model%x = model%x0
+      model%v = model%v0
+      model%f = 0.0_wp
+      model%mass = 0.0_wp
+      do b = 1, size(model%blocks)
+         associate (blk => model%blocks(b))
+            m = model%mats(model%parts(blk%ipart)%imat)%m%ro
+            do i = 1, blk%nel
+               do k = 1, 8
+                  model%mass(blk%conn(k, i)) = model%mass(blk%conn(k, i)) + m*blk%vol0(i)/8.0_wp
+               end do
+            end do
+         end associate
+      end do
+      model%time = 0.0_wp
+      model%cycle = 0
+      model%energy%mass = sum(model%mass)
+   end subroutine init_state
+
+   !> Run the explicit time loop to ENDTIM/ENDCYC, writing output as the deck asks.
+   subroutine run_explicit(model, opts, out, error)
+      type(model_t), intent(inout) :: model
+      type(run_options_t), intent(in) :: opts
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: vold(:, :), fext(:, :), vfree(:, :)
+      integer, allocatable :: cnodes(:)
+      real(wp) :: dt, dt_old, dtavg, dtcrit, tsmin, t, wext, wrw, wcon, next_plot, next_glstat
+      real(wp) :: next_nodout, next_status, t0wall, ke, eint, ehg, du(3), tend, dt_first
+      integer :: b, i, ibmin, iemin, nd
+      logical :: loads, done
+      type(block_result_t) :: res
+      type(error_t), allocatable :: ioerr
+
+      call init_state(model)
+      allocate(vold(3, model%nn))
+      loads = has_external_loads(model)
+      if (loads) allocate(fext(3, model%nn))
+      call constrained_nodes(model, cnodes)
+      allocate(vfree(3, size(cnodes)))
+      tend = model%ctrl%endtim
+      if (tend <= 0.0_wp) tend = huge_wp
+      dt_old = 0.0_wp
+      dt_first = 0.0_wp
+      tsmin = 0.0_wp
+      wext = 0.0_wp; wrw = 0.0_wp; wcon = 0.0_wp
+      next_plot = 0.0_wp; next_glstat = 0.0_wp; next_nodout = 0.0_wp; next_status = 0.0_wp
+      model%energy%initial = 0.5_wp*sum(model%mass*sum(model%v**2, dim=1))
+      t0wall = wall_time()
+      call log_info('      cycle        time          dt  dt-element   wall [s]   left [s]')
+      done = .false.
+      do
+         t = model%time
+         ! ---- internal forces (element pass) and the critical step
+         model%f = 0.0_wp
+         dtcrit = huge_wp; ibmin = 0; iemin = 0
+         do b = 1, size(model%blocks)
+            associate (blk => model%blocks(b), part => model%parts(model%blocks(b)%ipart))
+               call hex8_block(blk, model%mats(part%imat)%m, part, model%x, model%v, dt_old, &
+                               model%f, res)
+               if (res%ibad /= 0) then
+                  call element_failure(model, b, res, error)
+                  call finish(model, out, error)
+                  return
+               end if
+               if (res%dt < dtcrit) then
+                  dtcrit = res%dt; ibmin = b; iemin = res%imin
+               end if
+            end associate
+         end do
+         if (ibmin > 0) model%dt_elem = model%blocks(ibmin)%elem(iemin)
+         ! ---- external forces
+         if (loads) then
+            fext = 0.0_wp
+            call add_external_loads(model, t, fext)
+            model%f = model%f + fext
+         end if
+         ! ---- time step
+         dt = model%ctrl%tssfac*dtcrit
+         if (model%cycle == 0 .and. model%ctrl%dtinit > 0.0_wp) dt = min(dt, model%ctrl%dtinit)
+         if (model%ctrl%lctm > 0) dt = min(dt, model%curves(model%ctrl%lctm)%eval(t))
+         if (model%cycle == 0) then
+            dt_first = dt
+            if (model%ctrl%dtmin > 0.0_wp) tsmin = model%ctrl%dtmin*dt
+         end if
+         if (.not. (dt > tsmin) .or. .not. ieee_is_finite(dt) .or. dt >= huge_wp) then
+            call set_error(error, 'time step '//rstr(dt)//' at cycle '//str(model%cycle)// &
+               ', time '//rstr(t)//' is below the floor '//rstr(tsmin)//' (DTMIN*first step '// &
+               rstr(dt_first)//'); controlling element '//str(elem_label(model)), EXIT_NUMERIC)
+            call finish(model, out, error)
+            return
+         end if
+         dtavg = 0.5_wp*(dt_old + dt)
+         ! ---- velocities: v(n+1/2) = v(n-1/2) + dtavg*f/m
+         vold = model%v
+         do i = 1, model%nn
+            if (model%mass(i) > 0.0_wp) model%v(:, i) = model%v(:, i) + dtavg*model%f(:, i)/model%mass(i)
+         end do
+         ! ---- constraints (work of the reaction forces enters the external work)
+         do i = 1, size(cnodes)
+            vfree(:, i) = model%v(:, cnodes(i))
+         end do
+         call apply_spc(model, model%v)
+         call apply_prescribed(model, t, dt, dtavg, vold, model%v)
+         do i = 1, size(cnodes)
+            nd = cnodes(i)
+            du = 0.5_wp*(dt_old*vold(:, nd) + dt*model%v(:, nd))
+            wcon = wcon + model%mass(nd)*dot_product(model%v(:, nd) - vfree(:, i), du)/dtavg
+         end do
+         if (allocated(model%walls)) call apply_rigidwalls(model, dt, dt_old, dtavg, vold, &
+                                                           model%v, wrw)
+         if (loads) then
+            do i = 1, model%nn
+               wext = wext + dot_product(fext(:, i), 0.5_wp*(dt_old*vold(:, i) + dt*model%v(:, i)))
+            end do
+         end if
+         ! ---- energies at t(n)
+         ke = 0.0_wp
+         do i = 1, model%nn
+            ke = ke + model%mass(i)*dot_product(vold(:, i), model%v(:, i))
+         end do
+         ke = 0.5_wp*ke
+         if (.not. ieee_is_finite(ke)) then
+            call nan_failure(model, error)
+            call finish(model, out, error)
+            return
+         end if
+         eint = 0.0_wp; ehg = 0.0_wp
+         do b = 1, size(model%blocks)
+            eint = eint + sum(model%blocks(b)%eint)
+            ehg = ehg + sum(model%blocks(b)%ehg)
+         end do
+         model%dt = dt
+         call set_energy(model, ke, eint, ehg, wext + wcon, -wrw)
+         ! ---- output at t(n)
+         done = t >= tend .or. (model%ctrl%endcyc > 0 .and. model%cycle >= model%ctrl%endcyc)
+         if (t >= next_plot .or. done) then
+            call out%write_plot(model, ioerr)
+            if (allocated(ioerr)) then
+               call move_alloc(ioerr, error); call finish(model, out, error); return
+            end if
+            if (model%db%d3plot_dt > 0.0_wp) then
+               next_plot = next_plot + model%db%d3plot_dt*real(max(1, &
+                           ceiling((t - next_plot)/model%db%d3plot_dt + 1.0e-9_wp)), wp)
+            else
+               next_plot = huge_wp
+            end if
+         end if
+         if (model%db%glstat_dt > 0.0_wp .and. (t >= next_glstat .or. done)) then
+            call out%write_glstat(model, ioerr)
+            if (allocated(ioerr)) then
+               call move_alloc(ioerr, error); call finish(model, out, error); return
+            end if
+            next_glstat = next_glstat + model%db%glstat_dt*real(max(1, &
+                          ceiling((t - next_glstat)/model%db%glstat_dt + 1.0e-9_wp)), wp)
+         end if
+         if (model%db%nodout_dt > 0.0_wp .and. (t >= next_nodout .or. done)) then
+            call out%write_nodout(model, ioerr)
+            if (allocated(ioerr)) then
+               call move_alloc(ioerr, error); call finish(model, out, error); return
+            end if
+            next_nodout = next_nodout + model%db%nodout_dt*real(max(1, &
+                          ceiling((t - next_nodout)/model%db%nodout_dt + 1.0e-9_wp)), wp)
+         end if
+         if (t >= next_status .or. done) then
+            call status_line(model, t, dt, t0wall, tend)
+            if (tend < huge_wp) then
+               next_status = next_status + tend/real(max(1, opts%nstatus), wp)
+            else
+               next_status = huge_wp
+            end if
+         end if
+         if (done) exit
+         ! ---- positions
+         model%x = model%x + dt*model%v
+         model%time = t + dt
+         model%cycle = model%cycle + 1
+         dt_old = dt
+      end do
+      call log_info('dynx: normal termination at cycle '//str(model%cycle)//', time '// &
+                    rstr(model%time)//', energy ratio '//rstr(model%energy%ratio, 8))
+      call log_info('dynx: wall time '//rstr(wall_time() - t0wall, 4)//' s, '// &
+         rstr(1.0e9_wp*(wall_time() - t0wall)/real(max(1, model%cycle), wp)/ &
+         real(max(1, model%ne), wp), 4)//' ns per element-cycle')
+      call out%close(ioerr)
+      if (allocated(ioerr)) call move_alloc(ioerr, error)
+   end subroutine run_explicit
+
+   subroutine set_energy(model, ke, eint, ehg, wext, erw)
+      type(model_t), intent(inout) :: model
+      real(wp), intent(in) :: ke, eint, ehg, wext, erw
+      real(wp) :: den
+      integer :: d
+      model%energy%kinetic = ke
+      model%energy%internal = eint
+      model%energy%hourglass = ehg
+      model%energy%external_work = wext
+      model%energy%rigidwall = erw
+      model%energy%total = ke + eint + ehg
+      den = model%energy%initial + wext
+      if (abs(den) > 0.0_wp) then
+         model%energy%ratio = (model%energy%total + erw)/den
+      else
+         model%energy%ratio = 1.0_wp
+      end if
+      do d = 1, 3
+         model%energy%momentum(d) = sum(model%mass*model%v(d, :))
+      end do
+   end subroutine set_energy
+
+   !> Nodes with an SPC or prescribed motion (their reaction forces do work).
+   subroutine constrained_nodes(model, nodes)
+      type(model_t), intent(in) :: model
+      integer, allocatable, intent(out) :: nodes(:)
+      logical, allocatable :: mark(:)
+      integer :: k
+      allocate(mark(model%nn))
+      mark = .false.
+      if (allocated(model%spcs)) then
+         do k = 1, size(model%spcs)
+            if (any(model%spcs(k)%dof(1:3))) mark(model%spcs(k)%node) = .true.
+         end do
+      end if
+      if (allocated(model%prescribed)) then
+         do k = 1, size(model%prescribed)
+            mark(model%prescribed(k)%node) = .true.
+         end do
+      end if
+      nodes = pack([(k, k = 1, model%nn)], mark)
+   end subroutine constrained_nodes
+
+   integer function elem_label(model)
+      type(model_t), intent(in) :: model
+      elem_label = 0
+      if (model%dt_elem > 0) elem_label = model%elem_label(model%dt_elem)
+   end function elem_label
+
+   subroutine status_line(model, t, dt, t0wall, tend)
+      type(model_t), intent(in) :: model
+      real(wp), intent(in) :: t, dt, t0wall, tend
+      character(100) :: line
+      real(wp) :: el, left
+      el = wall_time() - t0wall
+      left = 0.0_wp
+      if (t > 0.0_wp .and. tend < huge_wp) left = el*max(tend - t, 0.0_wp)/t
+      write(line, '(i11,2es12.4,i12,2f11.2)') model%cycle, t, dt, elem_label(model), el, left
+      call log_info(trim(line))
+      call log_flush()
+   end subroutine status_line
+
+   !> A kernel flagged an element: name it, its part, the cycle and the time.
+   subroutine element_failure(model, b, res, error)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: b
+      type(block_result_t), intent(in) :: res
+      type(error_t), allocatable, intent(out) :: error
+      integer :: e
+      character(:), allocatable :: what
+      e = model%blocks(b)%elem(res%ibad)
+      if (res%errcode == HEX_ERR_NEGVOL) then
+         what = 'negative volume'
+      else
+         what = 'material update failed'
+      end if
+      call set_error(error, what//' in element '//str(model%elem_label(e))//' (part '// &
+         str(model%parts(model%blocks(b)%ipart)%label)//') at cycle '//str(model%cycle)// &
+         ', time '//rstr(model%time), EXIT_NUMERIC)
+   end subroutine element_failure
+
+   subroutine nan_failure(model, error)
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i
+      do i = 1, model%nn
+         if (.not. all(ieee_is_finite(model%v(:, i)))) exit
+      end do
+      i = min(i, model%nn)
+      call set_error(error, 'non-finite velocity (NaN or Inf) at node '// &
+         str(model%node_label(i))//' at cycle '//str(model%cycle)//', time '// &
+         rstr(model%time), EXIT_NUMERIC)
+   end subroutine nan_failure
+
+   !> After a failure: write the last state and close the files so the output stays readable.
+   subroutine finish(model, out, error)
+      type(model_t), intent(inout) :: model
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(inout) :: error
+      type(error_t), allocatable :: ioerr
+      call out%write_plot(model, ioerr)
+      if (allocated(ioerr)) deallocate(ioerr)
+      call out%close(ioerr)
+      if (allocated(error)) error%message = error%message//new_line('a')// &
+         'dynx: the last state (time '//rstr(model%time)//') was written to the plot file'
+   end subroutine finish
+end module dx_explicit
