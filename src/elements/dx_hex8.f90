@@ -99,13 +99,12 @@ contains
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: f(:, :)
       type(block_result_t), intent(out) :: res
-      integer, parameter :: nv = nv_chunk
-      real(wp), dimension(nv, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
-      real(wp), dimension(nv) :: vol, volm, rv, c, lc, q, trd, w12, w23, w31, ein, alive, ah
-      real(wp) :: deps(nv, 6), sold(nv, 6), l(3, 3), hx(4), hy(4), hz(4), qx(4), qy(4), qz(4)
+      real(wp), dimension(blk%nel, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
+      real(wp), dimension(blk%nel) :: vol, volm, rv, c, lc, q, trd, w12, w23, w31, ein, alive, ah
+      real(wp) :: deps(blk%nel, 6), sold(blk%nel, 6), l(3, 3), hx(4), hy(4), hz(4), qx(4), qy(4), qz(4)
       real(wp) :: g(4, 8), rho, trde, qb, dtl, rvm, a, kh, bb, hgsum, ein_sum, ehg_sum
-      integer :: ierr(nv)
-      logical :: failed(nv)
+      integer :: ierr(blk%nel)
+      logical :: failed(blk%nel)
       integer :: i, k, n, nn, ihq
       n = blk%nel
       ihq = part%ihq
@@ -125,7 +124,7 @@ contains
             zm(i, k) = ze(i, k) - 0.5_wp*dt_old*vz(i, k)
          end do
       end do
-      call hex8_bvectors(n, nv, xm, ym, zm, bx, by, bz, volm)
+      call hex8_bvectors(n, n, xm, ym, zm, bx, by, bz, volm)
       ierr = 0
       do i = 1, n
          if (.not. (volm(i) > 0.0_wp)) ierr(i) = HEX_ERR_NEGVOL
@@ -158,7 +157,7 @@ contains
          trd(i) = (l(1, 1) + l(2, 2) + l(3, 3))/volm(i)
       end do
       ! ---- geometry at t(n): forces, volume, time step
-      call hex8_bvectors(n, nv, xe, ye, ze, bx, by, bz, vol)
+      call hex8_bvectors(n, n, xe, ye, ze, bx, by, bz, vol)
       do i = 1, n
          if (.not. (vol(i) > 0.0_wp)) ierr(i) = HEX_ERR_NEGVOL
          if (.not. (vol(i) > 0.0_wp)) vol(i) = 1.0_wp
@@ -167,7 +166,7 @@ contains
          ein(i) = blk%eint(i)/blk%vol0(i)
       end do
       ! ---- stress: rotate, update
-      call jaumann(n, nv, w12, w23, w31, blk%sig(:, :, 1))
+      call jaumann(n, n, w12, w23, w31, blk%sig(:, :, 1))
       sold(1:n, :) = blk%sig(1:n, :, 1)
       call mat%update(n, dt_old, deps, rv, ein, blk%sig(:, :, 1), blk%hv(:, :, 1), ierr)
       call mat%fails(n, blk%hv(:, :, 1), failed)
@@ -274,7 +273,7 @@ contains
          end do
       end do
       ! ---- stable time step
-      call hex8_char_length(n, nv, xe, ye, ze, vol, lc)
+      call hex8_char_length(n, n, xe, ye, ze, vol, lc)
       do i = 1, n
          qb = 0.0_wp
          if (trd(i) < 0.0_wp) qb = part%q2*c(i) + part%q1*lc(i)*abs(trd(i))
@@ -310,14 +309,14 @@ contains
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: f(:, :)
       type(block_result_t), intent(out) :: res
-      integer, parameter :: nv = nv_chunk
-      real(wp), dimension(nv, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
-      real(wp), dimension(nv) :: vol, volm, rv, c, lc, q, trd, w12, w23, w31, ein, alive, pbar
-      real(wp) :: deps(nv, 6), sold(nv, 6), dn(3, 8, 8), dnx(3, 8), l(3, 3)
+      real(wp), dimension(blk%nel, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
+      real(wp), dimension(blk%nel) :: vol, volm, rv, c, lc, q, trd, w12, w23, w31, ein, alive, pbar
+      real(wp) :: deps(blk%nel, 6), sold(blk%nel, 6), dn(3, 8, 8), dnx(3, 8), l(3, 3)
+      real(wp) :: p8(8), q8(8), r8(8)
       real(wp), allocatable :: dng(:, :, :, :)
-      real(wp) :: jwg(8, nv), wm(nv), dtl, rho, a, qb, trde, trp, pm, ein_sum
-      integer :: ierr(nv)
-      logical :: failed(nv), fpt(nv)
+      real(wp) :: jwg(8, blk%nel), wm(blk%nel), dtl, rho, a, qb, trde, trp, pm, ein_sum
+      integer :: ierr(blk%nel)
+      logical :: failed(blk%nel), fpt(blk%nel)
       integer :: i, k, n, nn, ip
       n = blk%nel
       allocate(dng(3, 8, 8, n))
@@ -333,8 +332,8 @@ contains
          end do
       end do
       ierr = 0
-      call hex8_bvectors(n, nv, xe, ye, ze, bx, by, bz, vol)
-      call hex8_bvectors(n, nv, xm, ym, zm, fx, fy, fz, volm)
+      call hex8_bvectors(n, n, xe, ye, ze, bx, by, bz, vol)
+      call hex8_bvectors(n, n, xm, ym, zm, fx, fy, fz, volm)
       do i = 1, n
          if (.not. (volm(i) > 0.0_wp .and. vol(i) > 0.0_wp)) then
             ierr(i) = HEX_ERR_NEGVOL; volm(i) = 1.0_wp; vol(i) = 1.0_wp
@@ -354,11 +353,13 @@ contains
       fpt = .false.
       ! geometry at t(n) per Gauss point for the forces
       do i = 1, n
-         call point_gradients(dn, xe(i, :), ye(i, :), ze(i, :), dng(:, :, :, i), jwg(:, i))
+         p8 = xe(i, :); q8 = ye(i, :); r8 = ze(i, :)
+         call point_gradients(dn, p8, q8, r8, dng(:, :, :, i), jwg(:, i))
       end do
       do ip = 1, 8
          do i = 1, n
-            call point_gradients_one(dn(:, :, ip), xm(i, :), ym(i, :), zm(i, :), dnx, wm(i))
+            p8 = xm(i, :); q8 = ym(i, :); r8 = zm(i, :)
+            call point_gradients_one(dn(:, :, ip), p8, q8, r8, dnx, wm(i))
             l = 0.0_wp
             do k = 1, 8
                l(1, :) = l(1, :) + vx(i, k)*dnx(:, k)
@@ -377,7 +378,7 @@ contains
             w23(i) = 0.5_wp*(l(2, 3) - l(3, 2))*dtl
             w31(i) = 0.5_wp*(l(3, 1) - l(1, 3))*dtl
          end do
-         call jaumann(n, nv, w12, w23, w31, blk%sig(:, :, ip))
+         call jaumann(n, n, w12, w23, w31, blk%sig(:, :, ip))
          sold(1:n, :) = blk%sig(1:n, :, ip)
          call mat%update(n, dt_old, deps, rv, ein, blk%sig(:, :, ip), blk%hv(:, :, ip), ierr)
          call mat%fails(n, blk%hv(:, :, ip), failed)
@@ -434,7 +435,7 @@ contains
          end do
       end do
       res%dehg = 0.0_wp
-      call hex8_char_length(n, nv, xe, ye, ze, vol, lc)
+      call hex8_char_length(n, n, xe, ye, ze, vol, lc)
       do i = 1, n
          qb = 0.0_wp
          if (trd(i) < 0.0_wp) qb = part%q2*c(i) + part%q1*lc(i)*abs(trd(i))
