@@ -1,12 +1,13 @@
 !> File-system helpers for the output writers, through bind(C) interfaces to libc (POSIX):
 !> rename(2) for the atomic replace of the XDMF file, mkdir(2)/access(2) for `mkdir -p`,
-!> fnmatch(3) for the file globs of the comparator's tolerance file.
+!> fnmatch(3) for the file globs of the comparator's tolerance file, exit(3) so command-line
+!> tools end with a status code and no runtime trace (ERROR STOP prints a backtrace).
 module dx_io_sys
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
    use dx_error, only: error_t, set_error, EXIT_IO
    implicit none
    private
-   public :: sys_rename, sys_mkdir_p, sys_fnmatch
+   public :: sys_rename, sys_mkdir_p, sys_fnmatch, sys_exit
 
    integer(c_int), parameter :: W_OK = 2_c_int
    integer(c_int), parameter :: MODE_755 = int(o'755', c_int)
@@ -35,6 +36,10 @@ module dx_io_sys
          integer(c_int), value :: flags
          integer(c_int) :: r
       end function c_fnmatch
+      subroutine c_exit(status) bind(C, name='exit')
+         import :: c_int
+         integer(c_int), value :: status
+      end subroutine c_exit
    end interface
 
 contains
@@ -73,4 +78,13 @@ contains
       character(*), intent(in) :: pattern, name
       sys_fnmatch = c_fnmatch(pattern//c_null_char, name//c_null_char, 0_c_int) == 0
    end function sys_fnmatch
+
+   !> End the program with this exit status (only for main programs; flushes stdout/stderr).
+   subroutine sys_exit(status)
+      use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+      integer, intent(in) :: status
+      flush(output_unit)
+      flush(error_unit)
+      call c_exit(int(status, c_int))
+   end subroutine sys_exit
 end module dx_io_sys

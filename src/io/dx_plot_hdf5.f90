@@ -49,6 +49,7 @@ contains
       self%nn = model%nn
       self%ne = model%ne
       self%nstates = 0
+      if (allocated(self%times)) deallocate(self%times)
       allocate(self%times(16))
       self%title = ''
       if (allocated(model%title)) self%title = model%title

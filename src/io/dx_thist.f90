@@ -20,9 +20,10 @@ module dx_thist
    character(*), parameter :: GLSTAT_FMT = '(es18.10e3, 1x, i10, 11(1x, es18.10e3))'
    character(*), parameter :: NODOUT_FMT = '(es18.10e3, 1x, i10, 12(1x, es18.10e3))'
 
-   !> One open ASCII history file (unit < 0: not open).
+   !> One ASCII history file (newunit numbers are negative: a flag tells whether it is open).
    type :: thist_file_t
-      integer :: unit = -1
+      integer :: unit = 0
+      logical :: opened = .false.
       character(:), allocatable :: path
    contains
       procedure :: open => thist_open
@@ -44,10 +45,10 @@ contains
       open(newunit=self%unit, file=path, status='replace', action='write', &
            form='formatted', iostat=ios, iomsg=msg)
       if (ios /= 0) then
-         self%unit = -1
          call set_error(error, 'cannot open '//path//' for writing: '//trim(msg), EXIT_IO)
          return
       end if
+      self%opened = .true.
       call put_line(self, '# dynx '//what, error)
       if (allocated(error)) return
       call put_line(self, '# title: '//trim(title), error)
@@ -126,9 +127,9 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: ios
       character(256) :: msg
-      if (self%unit < 0) return
+      if (.not. self%opened) return
       close(self%unit, iostat=ios, iomsg=msg)
-      self%unit = -1
+      self%opened = .false.
       if (ios /= 0) call set_error(error, 'cannot close '//self%path//': '//trim(msg), EXIT_IO)
    end subroutine thist_close
 end module dx_thist

@@ -79,7 +79,7 @@ contains
       integer, intent(in) :: k
       character(:), allocatable :: a
       integer :: l
-      if (k > command_argument_count()) call die_usage('missing value after '//get_arg(k - 1))
+      if (k > command_argument_count()) call die_usage('missing value after the last option')
       call get_command_argument(k, length=l)
       allocate(character(l) :: a)
       call get_command_argument(k, a)

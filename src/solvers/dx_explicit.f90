@@ -12,7 +12,7 @@ module dx_explicit
    use dx_error, only: error_t, set_error, EXIT_NUMERIC
    use dx_strings, only: str, rstr
    use dx_log, only: log_info, log_flush
-   use dx_timer, only: wall_time
+   use dx_timer, only: wall_time, peak_memory_kb
    use dx_model, only: model_t, elem_block_t
    use dx_hex8, only: hex8_block, hex8_volume, block_result_t, HEX_ERR_NEGVOL
    use dx_loads, only: add_external_loads, has_external_loads
@@ -219,7 +219,8 @@ contains
                     rstr(model%time)//', energy ratio '//rstr(model%energy%ratio, 8))
       call log_info('dynx: wall time '//rstr(wall_time() - t0wall, 4)//' s, '// &
          rstr(1.0e9_wp*(wall_time() - t0wall)/real(max(1, model%cycle), wp)/ &
-         real(max(1, model%ne), wp), 4)//' ns per element-cycle')
+         real(max(1, model%ne), wp), 4)//' ns per element-cycle, peak memory '// &
+         str(peak_memory_kb())//' KiB')
       call out%close(ioerr)
       if (allocated(ioerr)) call move_alloc(ioerr, error)
    end subroutine run_explicit

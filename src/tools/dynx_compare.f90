@@ -8,6 +8,7 @@ program dynx_compare
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use dx_error, only: error_t
    use dx_compare, only: tol_table_t, compare_report_t, read_tolerances, compare_files
+   use dx_io_sys, only: sys_exit
    implicit none
    type(tol_table_t) :: tol
    type(compare_report_t) :: report
@@ -47,12 +48,12 @@ program dynx_compare
       call read_tolerances(tolfile, tol, error)
       if (allocated(error)) then
          write(error_unit, '(a)') 'dynx-compare: error: '//error%message
-         error stop 2
+         call sys_exit(2)
       end if
    end if
    call compare_files(gold, test, tol, report)
    call report%print(output_unit, verbose)
-   if (.not. report%passed()) error stop 1
+   if (.not. report%passed()) call sys_exit(1)
 
 contains
 
@@ -68,8 +69,8 @@ contains
    subroutine usage(msg)
       character(*), intent(in) :: msg
       if (len(msg) > 0) write(error_unit, '(a)') 'dynx-compare: error: '//msg
-      write(error_unit, '(a)') 'usage: dynx-compare [--tol tolfile] [--verbose] gold_file test_file'
-      if (len(msg) == 0) stop
-      error stop 2
+      write(error_unit, '(a)') 'usage: dynx-compare [--tol tolfile] [--verbose] gold test'
+      if (len(msg) == 0) call sys_exit(0)
+      call sys_exit(2)
    end subroutine usage
 end program dynx_compare

@@ -1,0 +1,39 @@
+#!/bin/sh
+# make bench: ns per element-cycle and peak memory per element of the explicit hex8 kernel on
+# an elastic-plastic cube of growing size (1e3 .. 1e6 elements), and the 10,368-element
+# copper Taylor bar of the performance target. Appends a dated table to docs/performance.md.
+set -e
+cd "$(dirname "$0")/.."
+B=build/bench
+mkdir -p $B
+host=$(uname -n); cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')
+rev=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+{
+echo ""
+echo "### make bench, $(date -u +%Y-%m-%d), commit $rev, $cpu"
+echo ""
+echo "| case | elements | cycles | wall [s] | ns / element-cycle | peak RSS [KiB] | bytes / element |"
+echo "|---|---|---|---|---|---|---|"
+} > $B/table.md
+run_case() {   # name deck elements
+    bin/dynx -i "$2" -o $B/$1 --status 2 > $B/$1.log 2>&1 || { echo "bench: $1 failed"; tail $B/$1.log; exit 1; }
+    ns=$(grep 'ns per element-cycle' $B/$1.log | sed 's/.*s, \([0-9.eE+-]*\) ns per.*/\1/')
+    wall=$(grep 'ns per element-cycle' $B/$1.log | sed 's/.*wall time \([0-9.eE+-]*\) s.*/\1/')
+    kib=$(grep 'ns per element-cycle' $B/$1.log | sed 's/.*peak memory \([0-9]*\) KiB.*/\1/')
+    cyc=$(grep 'normal termination' $B/$1.log | sed 's/.*cycle \([0-9]*\),.*/\1/')
+    bpe=$(python3 -c "print(round($kib*1024/$3))")
+    echo "| $1 | $3 | $cyc | $wall | $ns | $kib | $bpe |" >> $B/table.md
+    echo "bench: $1: $ns ns/element-cycle, $bpe bytes/element"
+}
+for n in 10 22 46 100; do
+    ne=$((n*n*n))
+    cyc=$((20000000 / ne)); [ $cyc -lt 50 ] && cyc=50; [ $cyc -gt 2000 ] && cyc=2000
+    python3 scripts/gen_cube_deck.py $n $cyc $B/cube_$n.k
+    run_case cube_$ne $B/cube_$n.k $ne
+done
+if [ -f ../shared/bench/gen_taylor.py ]; then
+    python3 ../shared/bench/gen_taylor.py 8 4 54 0.080 $B/taylor_10k.k > /dev/null
+    run_case taylor_10k $B/taylor_10k.k 10368
+fi
+cat $B/table.md >> docs/performance.md
+cat $B/table.md
