@@ -68,9 +68,14 @@ with open(a.outdir + '/constant_strain.k', 'w') as f:
         v = [sum(L[r][c] * p[c] for c in range(3)) for r in range(3)]
         w('*INITIAL_VELOCITY_NODE\n%10d%10.6g%10.6g%10.6g\n' % (k + 1, *v))
         if k < 8:
-            w('*BOUNDARY_PRESCRIBED_MOTION_NODE\n')
+            # SF = 0 means the default 1.0 in LS-DYNA: a zero component is an SPC instead
             for d in range(3):
-                w('%10d%10d%10d%10d%10.6g\n' % (k + 1, d + 1, 0, 1, v[d]))
+                if v[d] != 0.0:
+                    w('*BOUNDARY_PRESCRIBED_MOTION_NODE\n%10d%10d%10d%10d%10.6g\n'
+                      % (k + 1, d + 1, 0, 1, v[d]))
+                else:
+                    w('*BOUNDARY_SPC_NODE\n%10d         0%10d%10d%10d\n'
+                      % (k + 1, d == 0, d == 1, d == 2))
     w('*END\n')
 
 # rigid rotation: 90 degrees about the unit axis n through the cube centre, theta = (pi/2) t
@@ -88,7 +93,7 @@ def rotate(p, th):
     return [ctr[k] + r[k] * c + cx[k] * s + n[k] * ndr * (1 - c) for k in range(3)]
 
 
-NPT = 201
+NPT = 401
 with open(a.outdir + '/rigid_rotation.k', 'w') as f:
     w = f.write
     header(w, 'MacNeal-Harder patch, rigid rotation 90 deg (elform %d, ihq %d)' % (a.elform, a.ihq),

@@ -11,6 +11,9 @@
 #   gold/       gold outputs (d3plot.h5, glstat, nodout, ...), each compared with the file of
 #               the same name in the output directory by bin/dynx-compare
 #   tolerances  tolerance file for bin/dynx-compare (format: docs/output-format.md)
+#   check       an analytic check: a shell script run as 'sh check OUTDIR' from the top
+#               directory after a successful run; a non-zero exit fails the case (its output is
+#               kept in OUTDIR/check.log and shown on failure)
 # Without 'expect' the run must exit 0 and every gold file must compare equal within tolerance.
 # Outputs go to build/regression/<case>/ (stdout and stderr captured there).
 # Prints 'PASS <case>' or 'FAIL <case>: reason' per case, then 'N passed, N failed';
@@ -126,14 +129,14 @@ check_gold() {
         report=$(tail -n 5 "$OUTROOT/$c/stderr")
         return
     fi
-    if [ ! -d "$ROOT/$c/gold" ]; then
-        reason="no gold/ and no expect file"
+    if [ ! -d "$ROOT/$c/gold" ] && [ ! -f "$ROOT/$c/check" ]; then
+        reason="no gold/, no check and no expect file"
         return
     fi
     tol=""
     [ -f "$ROOT/$c/tolerances" ] && tol="--tol $ROOT/$c/tolerances"
     ncmp=0
-    for g in "$ROOT/$c/gold"/*; do
+    for g in "$ROOT/$c"/gold/*; do
         [ -f "$g" ] || continue
         f=${g##*/}
         case $f in
@@ -154,7 +157,14 @@ check_gold() {
 "
         fi
     done
-    [ $ncmp -eq 0 ] && reason="gold/ holds no files to compare"
+    [ $ncmp -eq 0 ] && [ ! -f "$ROOT/$c/check" ] && reason="gold/ holds no files to compare"
+    if [ -f "$ROOT/$c/check" ]; then
+        if ! sh "$ROOT/$c/check" "$OUTROOT/$c" >"$OUTROOT/$c/check.log" 2>&1; then
+            reason="${reason:+$reason; }analytic check failed"
+            report="$report$(cat "$OUTROOT/$c/check.log")
+"
+        fi
+    fi
 }
 
 for c in $cases; do
