@@ -64,24 +64,25 @@ contains
       integer, intent(out) :: k
       character(:), allocatable, intent(out) :: base
       logical, intent(out) :: opt_title, opt_id
-      integer :: i
+      integer :: i, n
       opt_title = .false.
       opt_id = .false.
-      base = ''
       do i = 1, self%n
-         associate (nm => trim(self%e(i)%name))
-            k = i
-            base = nm
-            if (name == nm) return
-            if (self%e(i)%title .and. name == nm//'_TITLE') then
-               opt_title = .true.; return
-            end if
-            if (self%e(i)%id .and. name == nm//'_ID') then
-               opt_id = .true.; return
-            end if
-         end associate
+         n = len_trim(self%e(i)%name)
+         k = i
+         if (name == self%e(i)%name(1:n)) exit
+         if (self%e(i)%title .and. name == self%e(i)%name(1:n)//'_TITLE') then
+            opt_title = .true.; exit
+         end if
+         if (self%e(i)%id .and. name == self%e(i)%name(1:n)//'_ID') then
+            opt_id = .true.; exit
+         end if
+         k = 0
       end do
-      k = 0
-      base = ''
+      if (k > 0) then
+         base = self%e(k)%name(1:len_trim(self%e(k)%name))
+      else
+         base = ''
+      end if
    end subroutine registry_lookup
 end module dx_deck_registry

@@ -56,10 +56,10 @@ contains
 
    !> Stonewalls: correct v so no slave node crosses its wall during the step; accumulate
    !> the wall's resultant force (force on the wall = - sum m*dv/dtavg).
-   !> work: accumulates the work the walls do on the nodes, f.(du(n-1/2) + du(n+1/2))/2.
-   subroutine apply_rigidwalls(model, dt, dt_old, dtavg, vold, v, work)
+   !> work: accumulates the work the walls do on the nodes, f.dtavg (v(n-1/2) + v(n+1/2))/2.
+   subroutine apply_rigidwalls(model, dt, dtavg, vold, v, work)
       type(model_t), intent(inout) :: model
-      real(wp), intent(in) :: dt, dt_old, dtavg
+      real(wp), intent(in) :: dt, dtavg
       real(wp), intent(in) :: vold(:, :)
       real(wp), intent(inout) :: v(:, :)
       real(wp), intent(inout) :: work
@@ -90,8 +90,7 @@ contains
                end if
                v(:, nd) = v(:, nd) + dvel
                fsum = fsum - model%mass(nd)*dvel/dtavg
-               work = work + model%mass(nd)*dot_product(dvel, 0.5_wp*(dt_old*vold(:, nd) + &
-                             dt*v(:, nd)))/dtavg
+               work = work + 0.5_wp*model%mass(nd)*dot_product(dvel, vold(:, nd) + v(:, nd))
             end do
             wall%force = fsum
          end associate

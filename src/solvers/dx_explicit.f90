@@ -3,9 +3,10 @@
 !>   f(n) = f_ext(n) - f_int(x(n), sigma(n)),  a(n) = f(n)/m,
 !>   v(n+1/2) = v(n-1/2) + (dt(n-1/2) + dt(n+1/2))/2 a(n),  x(n+1) = x(n) + dt(n+1/2) v(n+1/2),
 !> lumped mass (rho*V0/8 per hex node), dt(n+1/2) = TSSFAC * min over elements, energy balance
-!> each cycle with the time-centred kinetic energy 1/2 m v(n-1/2).v(n+1/2) and the external and
-!> constraint work  W += f(n).(du(n-1/2) + du(n+1/2))/2, which the central-difference scheme
-!> balances exactly for linear problems at constant dt.
+!> each cycle with the time-centred kinetic energy KE(n) = 1/2 m v(n-1/2).v(n+1/2) and the
+!> external and constraint work W += f(n).dtavg(n) (v(n-1/2) + v(n+1/2))/2, dtavg(n) =
+!> (dt(n-1/2) + dt(n+1/2))/2: KE(n) - KE(n-1) telescopes exactly into these sums for any
+!> time-step sequence, impulsive starts (cycle 0, dt(-1/2) = 0) included.
 module dx_explicit
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use dx_kinds, only: wp, huge_wp
@@ -142,14 +143,14 @@ contains
          call apply_prescribed(model, t, dt, dtavg, vold, model%v)
          do i = 1, size(cnodes)
             nd = cnodes(i)
-            du = 0.5_wp*(dt_old*vold(:, nd) + dt*model%v(:, nd))
+            du = 0.5_wp*dtavg*(vold(:, nd) + model%v(:, nd))
             wcon = wcon + model%mass(nd)*dot_product(model%v(:, nd) - vfree(:, i), du)/dtavg
          end do
-         if (allocated(model%walls)) call apply_rigidwalls(model, dt, dt_old, dtavg, vold, &
+         if (allocated(model%walls)) call apply_rigidwalls(model, dt, dtavg, vold, &
                                                            model%v, wrw)
          if (loads) then
             do i = 1, model%nn
-               wext = wext + dot_product(fext(:, i), 0.5_wp*(dt_old*vold(:, i) + dt*model%v(:, i)))
+               wext = wext + dot_product(fext(:, i), 0.5_wp*dtavg*(vold(:, i) + model%v(:, i)))
             end do
          end if
          ! ---- energies at t(n)

@@ -1,0 +1,316 @@
+!> Readers for the mesh and part keywords: *NODE, *ELEMENT_SOLID, *PART, *SECTION_SOLID,
+!> *HOURGLASS. Field layouts and defaults: LS-DYNA Keyword User's Manual, Vol. I.
+!> *NODE: NID X Y Z TC RC as i8,3e16,2i8 (long: i20,3e20,2i20).
+!> *ELEMENT_SOLID: EID PID on card 1 and N1..N10 on card 2 (i8 fields, long i20), or the
+!> older one-card layout EID PID N1..N8, recognised by text beyond column 16 (long: 40).
+module dx_read_nodes_elements
+   use dx_kinds, only: wp
+   use dx_error, only: error_t
+   use dx_strings, only: str
+   use dx_deck_cards, only: deck_t, block_t, get_int, get_real, field_error, card_error, &
+                            block_error, std_widths, data_start
+   use dx_deck_registry, only: registry_t
+   use dx_model, only: part_t, section_t, hourglass_t
+   use dx_model_input, only: model_input_t, add_node, add_element, origin
+   implicit none
+   private
+   public :: register_nodes_elements
+
+contains
+
+   !> Add this family's keywords to the registry.
+   subroutine register_nodes_elements(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('NODE', read_node)
+      call reg%add('ELEMENT_SOLID', read_element_solid)
+      call reg%add('PART', read_part)
+      call reg%add('SECTION_SOLID', read_section_solid, title=.true.)
+      call reg%add('HOURGLASS', read_hourglass, title=.true.)
+   end subroutine register_nodes_elements
+
+   subroutine read_node(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: w(6), ic, nid, tc, rc, k
+      real(wp) :: x(3)
+      character(len=1), parameter :: xyz(3) = ['X', 'Y', 'Z']
+      if (blk%long) then
+         w = 20
+      else
+         w = [8, 16, 16, 16, 8, 8]
+      end if
+      do ic = 1, blk%n
+         call get_int(deck, blk, ic, 1, w, 'NID', 0, nid, error)
+         if (allocated(error)) return
+         if (nid <= 0) then
+            call field_error(deck, blk, ic, 1, w, 'NID', 'node id must be > 0, got '// &
+                             str(nid), error)
+            return
+         end if
+         do k = 1, 3
+            call get_real(deck, blk, ic, 1 + k, w, xyz(k), 0.0_wp, x(k), error)
+            if (allocated(error)) return
+         end do
+         call get_int(deck, blk, ic, 5, w, 'TC', 0, tc, error)
+         if (allocated(error)) return
+         call get_int(deck, blk, ic, 6, w, 'RC', 0, rc, error)
+         if (allocated(error)) return
+         if (tc < 0 .or. tc > 7) then
+            call field_error(deck, blk, ic, 5, w, 'TC', 'must be 0 to 7, got '//str(tc), error)
+            return
+         end if
+         if (rc < 0 .or. rc > 7) then
+            call field_error(deck, blk, ic, 6, w, 'RC', 'must be 0 to 7, got '//str(rc), error)
+            return
+         end if
+         call add_node(inp, nid, x, tc, rc, blk%ifile, blk%cards(ic)%line)
+      end do
+   end subroutine read_node
+
+   subroutine read_element_solid(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: w(10), ic, eid, pid, conn(10), k, lim, kn, icn, line
+      logical :: one_line
+      w = 8
+      lim = 16
+      if (blk%long) then
+         w = 20
+         lim = 40
+      end if
+      ic = 1
+      do while (ic <= blk%n)
+         associate (c => blk%cards(ic)%text)
+            if (index(c, ',') > 0) then
+               one_line = count_commas(c) >= 2
+            else
+               one_line = .false.
+               if (len(c) > lim) one_line = len_trim(c(lim+1:)) > 0
+            end if
+         end associate
+         call get_int(deck, blk, ic, 1, w, 'EID', 0, eid, error)
+         if (allocated(error)) return
+         if (eid <= 0) then
+            call field_error(deck, blk, ic, 1, w, 'EID', 'element id must be > 0, got '// &
+                             str(eid), error)
+            return
+         end if
+         call get_int(deck, blk, ic, 2, w, 'PID', 0, pid, error)
+         if (allocated(error)) return
+         if (pid <= 0) then
+            call field_error(deck, blk, ic, 2, w, 'PID', 'part id must be > 0, got '// &
+                             str(pid), error)
+            return
+         end if
+         line = blk%cards(ic)%line
+         if (one_line) then
+            icn = ic
+            kn = 2            ! N1 is field 3
+            conn(9:10) = 0
+         else
+            icn = ic + 1
+            kn = 0
+            if (icn > blk%n) then
+               call card_error(deck, blk, ic, 'missing card 2 (N1 ... N8) of element '// &
+                               str(eid), error)
+               return
+            end if
+         end if
+         do k = 1, merge(8, 10, one_line)
+            call get_int(deck, blk, icn, kn + k, w, 'N'//str(k), 0, conn(k), error)
+            if (allocated(error)) return
+            if (k <= 8 .and. conn(k) <= 0) then
+               call field_error(deck, blk, icn, kn + k, w, 'N'//str(k), &
+                  'node id must be > 0, got '//str(conn(k)), error)
+               return
+            end if
+            if (k > 8 .and. conn(k) /= 0) then
+               call field_error(deck, blk, icn, kn + k, w, 'N'//str(k), &
+                  '10-node tetrahedra are not supported', error)
+               return
+            end if
+         end do
+         call add_element(inp, eid, pid, conn(1:8), blk%ifile, line)
+         ic = icn + 1
+      end do
+   end subroutine read_element_solid
+
+   pure integer function count_commas(s)
+      character(*), intent(in) :: s
+      integer :: i
+      count_commas = 0
+      do i = 1, len(s)
+         if (s(i:i) == ',') count_commas = count_commas + 1
+      end do
+   end function count_commas
+
+   !> *PART: heading card, then PID SECID MID EOSID HGID GRAV ADPOPT TMID; pairs repeat.
+   subroutine read_part(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: w(8), ic, v, k
+      type(part_t) :: p
+      character(len=6), parameter :: unsup(3) = ['GRAV  ', 'ADPOPT', 'TMID  ']
+      w = std_widths(blk, 8)
+      if (blk%n < 2) then
+         call block_error(deck, blk, 0, 'missing card 2 (PID SECID MID EOSID HGID GRAV '// &
+                          'ADPOPT TMID)', error)
+         return
+      end if
+      ic = 1
+      do while (ic <= blk%n)
+         if (ic + 1 > blk%n) then
+            call card_error(deck, blk, ic, 'missing card 2 (PID SECID MID ...) after the '// &
+                            'heading card', error)
+            return
+         end if
+         p = part_t()
+         p%title = trim(adjustl(blk%cards(ic)%text(1:min(70, len(blk%cards(ic)%text)))))
+         ic = ic + 1
+         call get_int(deck, blk, ic, 1, w, 'PID', 0, p%label, error)
+         if (allocated(error)) return
+         if (p%label <= 0) then
+            call field_error(deck, blk, ic, 1, w, 'PID', 'part id must be > 0, got '// &
+                             str(p%label), error)
+            return
+         end if
+         call get_int(deck, blk, ic, 2, w, 'SECID', 0, p%secid, error)
+         if (allocated(error)) return
+         call get_int(deck, blk, ic, 3, w, 'MID', 0, p%mid, error)
+         if (allocated(error)) return
+         call get_int(deck, blk, ic, 4, w, 'EOSID', 0, p%eosid, error)
+         if (allocated(error)) return
+         if (p%eosid /= 0) then
+            call field_error(deck, blk, ic, 4, w, 'EOSID', 'equations of state are not '// &
+                             'supported (the supported materials take none)', error)
+            return
+         end if
+         call get_int(deck, blk, ic, 5, w, 'HGID', 0, p%hgid, error)
+         if (allocated(error)) return
+         do k = 6, 8
+            call get_int(deck, blk, ic, k, w, trim(unsup(k-5)), 0, v, error)
+            if (allocated(error)) return
+            if (v /= 0) then
+               call field_error(deck, blk, ic, k, w, trim(unsup(k-5)), 'nonzero value '// &
+                                str(v)//' is not supported', error)
+               return
+            end if
+         end do
+         if (p%secid <= 0) then
+            call field_error(deck, blk, ic, 2, w, 'SECID', 'a section id is required', error)
+            return
+         end if
+         if (p%mid <= 0) then
+            call field_error(deck, blk, ic, 3, w, 'MID', 'a material id is required', error)
+            return
+         end if
+         inp%parts = [inp%parts, p]
+         inp%part_src = [inp%part_src, origin(blk%ifile, blk%cards(ic)%line, blk%name)]
+         ic = ic + 1
+      end do
+   end subroutine read_part
+
+   !> *SECTION_SOLID: SECID ELFORM AET per card (each after its title card with _TITLE).
+   subroutine read_section_solid(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: w(8), ic, step
+      type(section_t) :: s
+      w = std_widths(blk, 8)
+      step = data_start(blk)
+      if (blk%n < step) then
+         call block_error(deck, blk, 0, 'missing card 1 (SECID ELFORM AET)', error)
+         return
+      end if
+      ic = step
+      do while (ic <= blk%n)
+         s = section_t()
+         s%title = ''
+         if (blk%opt_title) s%title = trim(adjustl(blk%cards(ic-1)%text))
+         call get_int(deck, blk, ic, 1, w, 'SECID', 0, s%label, error)
+         if (allocated(error)) return
+         if (s%label <= 0) then
+            call field_error(deck, blk, ic, 1, w, 'SECID', 'section id must be > 0, got '// &
+                             str(s%label), error)
+            return
+         end if
+         call get_int(deck, blk, ic, 2, w, 'ELFORM', 1, s%elform, error)
+         if (allocated(error)) return
+         if (s%elform == 0) s%elform = 1
+         if (s%elform /= 1 .and. s%elform /= 2) then
+            call field_error(deck, blk, ic, 2, w, 'ELFORM', 'solid formulation '// &
+               str(s%elform)//' is not supported (supported: 1 one-point, 2 selectively '// &
+               'reduced)', error)
+            return
+         end if
+         call get_int(deck, blk, ic, 3, w, 'AET', 0, s%aet, error)
+         if (allocated(error)) return
+         if (s%aet /= 0) then
+            call field_error(deck, blk, ic, 3, w, 'AET', 'ambient element types are not '// &
+                             'supported', error)
+            return
+         end if
+         inp%sections = [inp%sections, s]
+         inp%section_src = [inp%section_src, origin(blk%ifile, blk%cards(ic)%line, blk%name)]
+         ic = ic + step
+      end do
+   end subroutine read_section_solid
+
+   !> *HOURGLASS: HGID IHQ QM IBQ Q1 Q2 QB/VDC QW; blank or zero values defer to *CONTROL_*.
+   subroutine read_hourglass(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: w(8), ic, step
+      type(hourglass_t) :: h
+      w = std_widths(blk, 8)
+      step = data_start(blk)
+      if (blk%n < step) then
+         call block_error(deck, blk, 0, 'missing card 1 (HGID IHQ QM IBQ Q1 Q2 QB QW)', error)
+         return
+      end if
+      ic = step
+      do while (ic <= blk%n)
+         h = hourglass_t()
+         call get_int(deck, blk, ic, 1, w, 'HGID', 0, h%label, error)
+         if (allocated(error)) return
+         if (h%label <= 0) then
+            call field_error(deck, blk, ic, 1, w, 'HGID', 'hourglass id must be > 0, got '// &
+                             str(h%label), error)
+            return
+         end if
+         call get_int(deck, blk, ic, 2, w, 'IHQ', 0, h%ihq, error)
+         if (allocated(error)) return
+         if (h%ihq < 0 .or. h%ihq > 5) then
+            call field_error(deck, blk, ic, 2, w, 'IHQ', 'hourglass type '//str(h%ihq)// &
+                             ' is not supported (supported: 1 to 5)', error)
+            return
+         end if
+         call get_real(deck, blk, ic, 3, w, 'QM', -1.0_wp, h%qm, error)
+         if (allocated(error)) return
+         call get_int(deck, blk, ic, 4, w, 'IBQ', 0, h%ibq, error)
+         if (allocated(error)) return
+         call get_real(deck, blk, ic, 5, w, 'Q1', -1.0_wp, h%q1, error)
+         if (allocated(error)) return
+         call get_real(deck, blk, ic, 6, w, 'Q2', -1.0_wp, h%q2, error)
+         if (allocated(error)) return
+         call get_real(deck, blk, ic, 7, w, 'QB', -1.0_wp, h%qb, error)
+         if (allocated(error)) return
+         call get_real(deck, blk, ic, 8, w, 'QW', -1.0_wp, h%qw, error)
+         if (allocated(error)) return
+         inp%hourglasses = [inp%hourglasses, h]
+         inp%hourglass_src = [inp%hourglass_src, origin(blk%ifile, blk%cards(ic)%line, &
+                                                        blk%name)]
+         ic = ic + step
+      end do
+   end subroutine read_hourglass
+end module dx_read_nodes_elements

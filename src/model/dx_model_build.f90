@@ -1,0 +1,816 @@
+!> Model build: turns the deck as read (model_input_t, labels) into the model the solver runs
+!> (model_t, dense indices). Resolves labels, reports duplicate ids and dangling references at
+!> the card that made them, rejects degenerate and inverted hexahedra, groups elements by part
+!> into blocks of at most nv_chunk elements, resolves hourglass and bulk viscosity settings per
+!> part, and expands initial velocities, constraints, loads and rigid walls onto nodes.
+!> Initial volume: exact trilinear hexahedron volume (2x2x2 Gauss integration of det J, exact
+!> for the trilinear map; equal to the Flanagan-Belytschko 1981 B-vector volume).
+module dx_model_build
+   use dx_kinds, only: wp, nv_chunk
+   use dx_error, only: error_t, set_error
+   use dx_strings, only: str, rstr
+   use dx_model, only: model_t, node_set_t, part_set_t, segment_set_t, spc_t, prescribed_t, &
+                       load_node_t, load_segment_t, rigidwall_t, ETYPE_HEX8_1PT, ETYPE_HEX8_SRI
+   use dx_model_input, only: model_input_t, origin_t, IVEL_SET, IVEL_NODE, IVEL_GEN
+   use dx_label_map, only: label_map_t
+   implicit none
+   private
+   public :: build_model, hex_volume
+
+   !> label maps of one build
+   type :: maps_t
+      type(label_map_t) :: node, elem, part, sec, mat, hg, curve, nset, pset, sset
+   end type maps_t
+
+contains
+
+   !> "file:line: *KEY: " of a record
+   function at(inp, src) result(s)
+      type(model_input_t), intent(in) :: inp
+      type(origin_t), intent(in) :: src
+      character(:), allocatable :: s
+      s = inp%files(src%ifile)%s//':'//str(src%line)//': *'//src%key//': '
+   end function at
+
+   function at_line(inp, isrc, key) result(s)
+      type(model_input_t), intent(in) :: inp
+      integer, intent(in) :: isrc(2)
+      character(*), intent(in) :: key
+      character(:), allocatable :: s
+      s = inp%files(isrc(1))%s//':'//str(isrc(2))//': *'//key//': '
+   end function at_line
+
+   !> Build model from inp (inp's materials and curves are moved into model).
+   subroutine build_model(inp, model, error)
+      type(model_input_t), intent(inout) :: inp
+      type(model_t), intent(inout) :: model
+      type(error_t), allocatable, intent(out) :: error
+      type(maps_t) :: mp
+      character(:), allocatable :: deck0
+      deck0 = 'deck'
+      if (size(inp%files) > 0) deck0 = inp%files(1)%s
+      if (allocated(inp%title)) model%title = inp%title
+      if (.not. allocated(model%title)) model%title = ''
+      if (inp%ne == 0) then
+         call set_error(error, deck0//': deck has no elements (no *ELEMENT_SOLID cards)')
+         return
+      end if
+      if (inp%nn == 0) then
+         call set_error(error, deck0//': deck has no elements: no *NODE cards')
+         return
+      end if
+      call build_nodes(inp, model, mp, error)
+      if (allocated(error)) return
+      call build_definitions(inp, model, mp, error)
+      if (allocated(error)) return
+      call build_parts(inp, model, mp, error)
+      if (allocated(error)) return
+      call build_elements(inp, model, mp, error)
+      if (allocated(error)) return
+      call build_sets(inp, model, mp, error)
+      if (allocated(error)) return
+      call build_bcs(inp, model, mp, error)
+      if (allocated(error)) return
+      call build_initial_velocity(inp, model, mp, error)
+      if (allocated(error)) return
+      call build_loads(inp, model, mp, error)
+      if (allocated(error)) return
+      call build_controls(inp, model, mp, deck0, error)
+   end subroutine build_model
+
+   subroutine build_nodes(inp, model, mp, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(inout) :: model
+      type(maps_t), intent(inout) :: mp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i, old
+      call mp%node%init(inp%nn)
+      do i = 1, inp%nn
+         call mp%node%insert(inp%node_label(i), i, old)
+         if (old /= 0) then
+            call set_error(error, at_line(inp, inp%node_src(:, i), 'NODE')// &
+               'duplicate node id '//str(inp%node_label(i))//' (first defined at '// &
+               inp%files(inp%node_src(1, old))%s//':'//str(inp%node_src(2, old))//')')
+            return
+         end if
+      end do
+      model%nn = inp%nn
+      model%node_label = inp%node_label(1:inp%nn)
+      model%x0 = inp%x(:, 1:inp%nn)
+   end subroutine build_nodes
+
+   !> unique labels -> map; error naming both cards on a duplicate
+   subroutine map_labels(inp, map, labels, src, what, error)
+      type(model_input_t), intent(in) :: inp
+      type(label_map_t), intent(inout) :: map
+      integer, intent(in) :: labels(:)
+      type(origin_t), intent(in) :: src(:)
+      character(*), intent(in) :: what
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i, old
+      call map%init(size(labels))
+      do i = 1, size(labels)
+         call map%insert(labels(i), i, old)
+         if (old /= 0) then
+            call set_error(error, at(inp, src(i))//'duplicate '//what//' id '// &
+               str(labels(i))//' (first defined at '//inp%files(src(old)%ifile)%s//':'// &
+               str(src(old)%line)//')')
+            return
+         end if
+      end do
+   end subroutine map_labels
+
+   !> curves, sections, hourglass definitions, materials (resolve_curves, setup)
+   subroutine build_definitions(inp, model, mp, error)
+      type(model_input_t), intent(inout) :: inp
+      type(model_t), intent(inout) :: model
+      type(maps_t), intent(inout) :: mp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i, n
+      integer, allocatable :: labels(:), lab(:)
+      character(:), allocatable :: msg
+      lab = inp%curves(:)%label
+      call map_labels(inp, mp%curve, lab, inp%curve_src, 'curve', error)
+      if (allocated(error)) return
+      model%curves = inp%curves
+      lab = inp%sections(:)%label
+      call map_labels(inp, mp%sec, lab, inp%section_src, 'section', error)
+      if (allocated(error)) return
+      model%sections = inp%sections
+      lab = inp%hourglasses(:)%label
+      call map_labels(inp, mp%hg, lab, inp%hourglass_src, 'hourglass', &
+                      error)
+      if (allocated(error)) return
+      model%hourglasses = inp%hourglasses
+      n = size(inp%mats)
+      allocate(labels(n))
+      do i = 1, n
+         labels(i) = inp%mats(i)%m%label
+      end do
+      call map_labels(inp, mp%mat, labels, inp%mat_src, 'material', error)
+      if (allocated(error)) return
+      do i = 1, n
+         call inp%mats(i)%m%resolve_curves(model%curves, error)
+         if (allocated(error)) exit
+         call inp%mats(i)%m%setup(error)
+         if (allocated(error)) exit
+      end do
+      if (allocated(error)) then
+         msg = at(inp, inp%mat_src(i))//'material '//str(labels(i))//': '//error%message
+         call set_error(error, msg)
+         return
+      end if
+      allocate(model%mats(n))
+      do i = 1, n
+         call move_alloc(inp%mats(i)%m, model%mats(i)%m)
+      end do
+   end subroutine build_definitions
+
+   !> parts: references, hourglass type and coefficients, bulk viscosity
+   subroutine build_parts(inp, model, mp, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(inout) :: model
+      type(maps_t), intent(inout) :: mp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i
+      integer, allocatable :: lab(:)
+      character(:), allocatable :: w
+      lab = inp%parts(:)%label
+      call map_labels(inp, mp%part, lab, inp%part_src, 'part', error)
+      if (allocated(error)) return
+      model%parts = inp%parts
+      do i = 1, size(model%parts)
+         w = at(inp, inp%part_src(i))
+         associate (p => model%parts(i), c => inp%ctrl)
+            p%isec = mp%sec%get(p%secid)
+            if (p%isec == 0) then
+               call set_error(error, w//'part '//str(p%label)//': field SECID: section '// &
+                              str(p%secid)//' is not defined (*SECTION_SOLID)')
+               return
+            end if
+            p%imat = mp%mat%get(p%mid)
+            if (p%imat == 0) then
+               call set_error(error, w//'part '//str(p%label)//': field MID: material '// &
+                              str(p%mid)//' is not defined (*MAT_...)')
+               return
+            end if
+            p%ihq = c%ihq
+            p%qh = c%qh
+            p%q1 = c%q1
+            p%q2 = c%q2
+            if (p%hgid > 0) then
+               p%ihg = mp%hg%get(p%hgid)
+               if (p%ihg == 0) then
+                  call set_error(error, w//'part '//str(p%label)//': field HGID: hourglass '// &
+                                 str(p%hgid)//' is not defined (*HOURGLASS)')
+                  return
+               end if
+               associate (h => model%hourglasses(p%ihg))
+                  if (h%ihq > 0) p%ihq = h%ihq
+                  if (h%qm > 0.0_wp) p%qh = h%qm
+                  if (h%q1 > 0.0_wp) p%q1 = h%q1
+                  if (h%q2 > 0.0_wp) p%q2 = h%q2
+               end associate
+            end if
+            if (p%ihq == 0) p%ihq = 1
+            if (p%ihq < 1 .or. p%ihq > 5) then
+               call set_error(error, w//'part '//str(p%label)//': hourglass type IHQ = '// &
+                              str(p%ihq)//' is not supported (supported: 1 to 5)')
+               return
+            end if
+         end associate
+      end do
+   end subroutine build_parts
+
+   !> Exact volume of the trilinear hexahedron with corner coordinates xe(3,8)
+   !> (LS-DYNA node order: 1-4 one face counter-clockwise seen from 5-8).
+   pure function hex_volume(xe) result(vol)
+      real(wp), intent(in) :: xe(3, 8)
+      real(wp) :: vol
+      real(wp), parameter :: xi(8) = [-1, 1, 1, -1, -1, 1, 1, -1]*1.0_wp
+      real(wp), parameter :: et(8) = [-1, -1, 1, 1, -1, -1, 1, 1]*1.0_wp
+      real(wp), parameter :: ze(8) = [-1, -1, -1, -1, 1, 1, 1, 1]*1.0_wp
+      real(wp), parameter :: g = 0.577350269189625764509148780502_wp
+      real(wp) :: jac(3, 3), dn(8, 3), a, b, c
+      integer :: ia, ib, ic, k
+      vol = 0.0_wp
+      do ia = -1, 1, 2
+         do ib = -1, 1, 2
+            do ic = -1, 1, 2
+               a = ia*g; b = ib*g; c = ic*g
+               dn(:, 1) = 0.125_wp*xi*(1 + et*b)*(1 + ze*c)
+               dn(:, 2) = 0.125_wp*et*(1 + xi*a)*(1 + ze*c)
+               dn(:, 3) = 0.125_wp*ze*(1 + xi*a)*(1 + et*b)
+               do k = 1, 3
+                  jac(:, k) = matmul(xe, dn(:, k))
+               end do
+               vol = vol + jac(1, 1)*(jac(2, 2)*jac(3, 3) - jac(3, 2)*jac(2, 3)) &
+                         - jac(1, 2)*(jac(2, 1)*jac(3, 3) - jac(3, 1)*jac(2, 3)) &
+                         + jac(1, 3)*(jac(2, 1)*jac(3, 2) - jac(3, 1)*jac(2, 2))
+            end do
+         end do
+      end do
+   end function hex_volume
+
+   !> elements: references, degenerate and inverted checks, blocks by part
+   subroutine build_elements(inp, model, mp, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(inout) :: model
+      type(maps_t), intent(inout) :: mp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ne, e, k, j, old, ip, nb, ib, nel, pos, nip, nhv, etype
+      integer, allocatable :: conn(:, :), npart(:), order(:), start(:), fill(:)
+      real(wp), allocatable :: vol(:)
+      character(:), allocatable :: w
+      ne = inp%ne
+      model%ne = ne
+      allocate(conn(8, ne), vol(ne), model%elem_part(ne), model%elem_block(ne), &
+               model%elem_pos(ne))
+      model%elem_label = inp%elem_label(1:ne)
+      call mp%elem%init(ne)
+      do e = 1, ne
+         w = at_line(inp, inp%elem_src(:, e), 'ELEMENT_SOLID')
+         associate (lab => inp%elem_label(e))
+            call mp%elem%insert(lab, e, old)
+            if (old /= 0) then
+               call set_error(error, w//'duplicate element id '//str(lab)// &
+                  ' (first defined at '//inp%files(inp%elem_src(1, old))%s//':'// &
+                  str(inp%elem_src(2, old))//')')
+               return
+            end if
+            model%elem_part(e) = mp%part%get(inp%elem_pid(e))
+            if (model%elem_part(e) == 0) then
+               call set_error(error, w//'element '//str(lab)//': field PID: part '// &
+                              str(inp%elem_pid(e))//' is not defined (*PART)')
+               return
+            end if
+            do k = 1, 8
+               conn(k, e) = mp%node%get(inp%elem_conn(k, e))
+               if (conn(k, e) == 0) then
+                  call set_error(error, w//'element '//str(lab)//': field N'//str(k)// &
+                                 ': node '//str(inp%elem_conn(k, e))//' is not defined (*NODE)')
+                  return
+               end if
+            end do
+            do k = 2, 8
+               do j = 1, k - 1
+                  if (conn(k, e) == conn(j, e)) then
+                     call set_error(error, w//'element '//str(lab)//': node '// &
+                        str(inp%elem_conn(k, e))//' appears twice (N'//str(j)//' and N'// &
+                        str(k)//'): degenerate solid not supported')
+                     return
+                  end if
+               end do
+            end do
+            vol(e) = hex_volume(model%x0(:, conn(:, e)))
+            if (.not. (vol(e) > 0.0_wp)) then
+               call set_error(error, w//'element '//str(lab)//' is inverted at t = 0 '// &
+                  '(volume '//rstr(vol(e))//' <= 0; check the node order N1..N8)')
+               return
+            end if
+         end associate
+      end do
+      ! blocks: parts in deck order, elements of a part in deck order, nv_chunk at most
+      allocate(npart(size(model%parts)))
+      npart = 0
+      do e = 1, ne
+         npart(model%elem_part(e)) = npart(model%elem_part(e)) + 1
+      end do
+      allocate(start(size(model%parts) + 1), fill(size(model%parts)), order(ne))
+      start(1) = 1
+      do ip = 1, size(model%parts)
+         start(ip + 1) = start(ip) + npart(ip)
+      end do
+      fill = 0
+      do e = 1, ne
+         ip = model%elem_part(e)
+         order(start(ip) + fill(ip)) = e
+         fill(ip) = fill(ip) + 1
+      end do
+      nb = sum((npart + nv_chunk - 1)/nv_chunk)
+      allocate(model%blocks(nb))
+      ib = 0
+      do ip = 1, size(model%parts)
+         associate (p => model%parts(ip))
+            if (model%sections(p%isec)%elform == 2) then
+               etype = ETYPE_HEX8_SRI; nip = 8
+            else
+               etype = ETYPE_HEX8_1PT; nip = 1
+            end if
+            nhv = model%mats(p%imat)%m%nhist()
+            pos = start(ip)
+            do while (pos < start(ip + 1))
+               nel = min(nv_chunk, start(ip + 1) - pos)
+               ib = ib + 1
+               associate (b => model%blocks(ib))
+                  b%ipart = ip
+                  b%etype = etype
+                  b%nel = nel
+                  b%nip = nip
+                  b%nhv = nhv
+                  b%elem = order(pos:pos + nel - 1)
+                  b%conn = conn(:, b%elem)
+                  allocate(b%sig(nel, 6, nip), b%hv(nel, nhv, nip))
+                  b%sig = 0.0_wp
+                  b%hv = 0.0_wp
+                  b%vol0 = vol(b%elem)
+                  allocate(b%relvol(nel), b%eint(nel), b%ehg(nel), b%failed(nel))
+                  b%relvol = 1.0_wp
+                  b%eint = 0.0_wp
+                  b%ehg = 0.0_wp
+                  b%failed = .false.
+                  if (p%ihq == 4 .or. p%ihq == 5) then
+                     allocate(b%hgs(nel, 3, 4))
+                     b%hgs = 0.0_wp
+                  end if
+                  do k = 1, nel
+                     model%elem_block(b%elem(k)) = ib
+                     model%elem_pos(b%elem(k)) = k
+                  end do
+               end associate
+               pos = pos + nel
+            end do
+         end associate
+      end do
+   end subroutine build_elements
+
+   !> node, part and segment sets
+   subroutine build_sets(inp, model, mp, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(inout) :: model
+      type(maps_t), intent(inout) :: mp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i, k, j
+      integer, allocatable :: lab(:)
+      type(origin_t), allocatable :: src(:)
+      src = [(inp%node_sets(i)%src, i = 1, size(inp%node_sets))]
+      lab = inp%node_sets(:)%label
+      call map_labels(inp, mp%nset, lab, src, 'node set', error)
+      if (allocated(error)) return
+      allocate(model%node_sets(size(inp%node_sets)))
+      do i = 1, size(inp%node_sets)
+         associate (s => inp%node_sets(i))
+            model%node_sets(i)%label = s%label
+            allocate(model%node_sets(i)%nodes(size(s%ids)))
+            do k = 1, size(s%ids)
+               j = mp%node%get(s%ids(k))
+               if (j == 0) then
+                  call set_error(error, at(inp, s%src)//'set '//str(s%label)//': node '// &
+                                 str(s%ids(k))//' is not defined (*NODE)')
+                  return
+               end if
+               model%node_sets(i)%nodes(k) = j
+            end do
+         end associate
+      end do
+      src = [(inp%part_sets(i)%src, i = 1, size(inp%part_sets))]
+      lab = inp%part_sets(:)%label
+      call map_labels(inp, mp%pset, lab, src, 'part set', error)
+      if (allocated(error)) return
+      allocate(model%part_sets(size(inp%part_sets)))
+      do i = 1, size(inp%part_sets)
+         associate (s => inp%part_sets(i))
+            model%part_sets(i)%label = s%label
+            allocate(model%part_sets(i)%parts(size(s%ids)))
+            do k = 1, size(s%ids)
+               j = mp%part%get(s%ids(k))
+               if (j == 0) then
+                  call set_error(error, at(inp, s%src)//'set '//str(s%label)//': part '// &
+                                 str(s%ids(k))//' is not defined (*PART)')
+                  return
+               end if
+               model%part_sets(i)%parts(k) = j
+            end do
+         end associate
+      end do
+      src = [(inp%segment_sets(i)%src, i = 1, size(inp%segment_sets))]
+      lab = inp%segment_sets(:)%label
+      call map_labels(inp, mp%sset, lab, src, 'segment set', error)
+      if (allocated(error)) return
+      allocate(model%segment_sets(size(inp%segment_sets)))
+      do i = 1, size(inp%segment_sets)
+         associate (s => inp%segment_sets(i))
+            model%segment_sets(i)%label = s%label
+            call dense_segments(inp, mp, s%seg, s%src, model%segment_sets(i)%seg, error)
+            if (allocated(error)) return
+         end associate
+      end do
+   end subroutine build_sets
+
+   subroutine dense_segments(inp, mp, seg, src, dseg, error)
+      type(model_input_t), intent(in) :: inp
+      type(maps_t), intent(in) :: mp
+      integer, intent(in) :: seg(:, :)
+      type(origin_t), intent(in) :: src
+      integer, allocatable, intent(out) :: dseg(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i, k
+      allocate(dseg(4, size(seg, 2)))
+      do i = 1, size(seg, 2)
+         do k = 1, 4
+            dseg(k, i) = mp%node%get(seg(k, i))
+            if (dseg(k, i) == 0) then
+               call set_error(error, at(inp, src)//'segment '//str(i)//': node '// &
+                              str(seg(k, i))//' is not defined (*NODE)')
+               return
+            end if
+         end do
+      end do
+   end subroutine dense_segments
+
+   !> dense node list of node set label id (0: error unless allow_all, then all nodes)
+   subroutine set_nodes(inp, model, mp, id, allow_all, src, what, nodes, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(in) :: model
+      type(maps_t), intent(in) :: mp
+      integer, intent(in) :: id
+      logical, intent(in) :: allow_all
+      type(origin_t), intent(in) :: src
+      character(*), intent(in) :: what
+      integer, allocatable, intent(out) :: nodes(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k, i
+      if (id == 0 .and. allow_all) then
+         nodes = [(i, i = 1, model%nn)]
+         return
+      end if
+      k = mp%nset%get(id)
+      if (k == 0) then
+         call set_error(error, at(inp, src)//'field '//what//': node set '//str(id)// &
+                        ' is not defined (*SET_NODE_LIST)')
+         return
+      end if
+      nodes = model%node_sets(k)%nodes
+   end subroutine set_nodes
+
+   integer function curve_index(inp, mp, lcid, src, what, error) result(k)
+      type(model_input_t), intent(in) :: inp
+      type(maps_t), intent(in) :: mp
+      integer, intent(in) :: lcid
+      type(origin_t), intent(in) :: src
+      character(*), intent(in) :: what
+      type(error_t), allocatable, intent(inout) :: error
+      k = mp%curve%get(lcid)
+      if (k == 0) call set_error(error, at(inp, src)//'field '//what//': curve '//str(lcid)// &
+                                 ' is not defined (*DEFINE_CURVE)')
+   end function curve_index
+
+   integer function node_index(inp, mp, nid, src, what, error) result(k)
+      type(model_input_t), intent(in) :: inp
+      type(maps_t), intent(in) :: mp
+      integer, intent(in) :: nid
+      type(origin_t), intent(in) :: src
+      character(*), intent(in) :: what
+      type(error_t), allocatable, intent(inout) :: error
+      k = mp%node%get(nid)
+      if (k == 0) call set_error(error, at(inp, src)//'field '//what//': node '//str(nid)// &
+                                 ' is not defined (*NODE)')
+   end function node_index
+
+   !> constraints (*NODE TC/RC, *BOUNDARY_SPC_*) and prescribed motions
+   subroutine build_bcs(inp, model, mp, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(inout) :: model
+      type(maps_t), intent(in) :: mp
+      type(error_t), allocatable, intent(out) :: error
+      logical, allocatable :: fix(:, :)
+      integer, allocatable :: nodes(:)
+      integer :: i, k, n, c
+      type(prescribed_t), allocatable :: pr(:)
+      logical, parameter :: code(3, 0:7) = reshape([.false., .false., .false., &
+         .true., .false., .false., .false., .true., .false., .false., .false., .true., &
+         .true., .true., .false., .false., .true., .true., .true., .false., .true., &
+         .true., .true., .true.], [3, 8])
+      allocate(fix(6, model%nn))
+      fix = .false.
+      do i = 1, model%nn
+         fix(1:3, i) = code(:, inp%node_tc(i))
+         fix(4:6, i) = code(:, inp%node_rc(i))
+      end do
+      do i = 1, size(inp%spcs)
+         associate (s => inp%spcs(i))
+            if (s%is_set) then
+               call set_nodes(inp, model, mp, s%id, .false., s%src, 'NSID', nodes, error)
+               if (allocated(error)) return
+            else
+               nodes = [node_index(inp, mp, s%id, s%src, 'NID', error)]
+               if (allocated(error)) return
+            end if
+            do k = 1, size(nodes)
+               fix(:, nodes(k)) = fix(:, nodes(k)) .or. s%dof
+            end do
+         end associate
+      end do
+      n = count(any(fix, dim=1))
+      allocate(model%spcs(n))
+      n = 0
+      do i = 1, model%nn
+         if (any(fix(:, i))) then
+            n = n + 1
+            model%spcs(n)%node = i
+            model%spcs(n)%dof = fix(:, i)
+         end if
+      end do
+      allocate(pr(0))
+      do i = 1, size(inp%motions)
+         associate (m => inp%motions(i))
+            c = curve_index(inp, mp, m%lcid, m%src, 'LCID', error)
+            if (allocated(error)) return
+            if (m%is_set) then
+               call set_nodes(inp, model, mp, m%id, .false., m%src, 'NSID', nodes, error)
+               if (allocated(error)) return
+            else
+               nodes = [node_index(inp, mp, m%id, m%src, 'NID', error)]
+               if (allocated(error)) return
+            end if
+            do k = 1, size(nodes)
+               pr = [pr, prescribed_t(node=nodes(k), dof=m%dof, vad=m%vad, curve=c, sf=m%sf, &
+                     dir=unit_axis(m%dof), death=m%death, birth=m%birth)]
+            end do
+         end associate
+      end do
+      call move_alloc(pr, model%prescribed)
+   end subroutine build_bcs
+
+   pure function unit_axis(d) result(a)
+      integer, intent(in) :: d
+      real(wp) :: a(3)
+      a = 0.0_wp
+      if (d >= 1 .and. d <= 3) a(d) = 1.0_wp
+   end function unit_axis
+
+   !> v0 from *INITIAL_VELOCITY and _GENERATION in deck order, then _NODE (overrides)
+   subroutine build_initial_velocity(inp, model, mp, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(inout) :: model
+      type(maps_t), intent(in) :: mp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i, k, j, ip
+      integer, allocatable :: nodes(:), ex(:)
+      logical, allocatable :: excl(:), pmask(:), nmask(:)
+      real(wp) :: r(3)
+      allocate(model%v0(3, model%nn), excl(model%nn), pmask(size(model%parts)), &
+               nmask(model%nn))
+      model%v0 = 0.0_wp
+      do i = 1, size(inp%ivels)
+         associate (q => inp%ivels(i))
+            select case (q%kind)
+            case (IVEL_SET)
+               call set_nodes(inp, model, mp, q%id, .true., q%src, 'NSID', nodes, error)
+               if (allocated(error)) return
+               excl = .false.
+               if (q%nsidex > 0) then
+                  call set_nodes(inp, model, mp, q%nsidex, .false., q%src, 'NSIDEX', ex, error)
+                  if (allocated(error)) return
+                  excl(ex) = .true.
+                  do k = 1, size(ex)
+                     model%v0(:, ex(k)) = q%vex
+                  end do
+               end if
+               do k = 1, size(nodes)
+                  if (.not. excl(nodes(k))) model%v0(:, nodes(k)) = q%v
+               end do
+            case (IVEL_GEN)
+               nmask = .false.
+               if (q%id == 0) then
+                  nmask = .true.
+               else if (q%styp == 3) then
+                  call set_nodes(inp, model, mp, q%id, .false., q%src, 'ID', nodes, error)
+                  if (allocated(error)) return
+                  nmask(nodes) = .true.
+               else
+                  pmask = .false.
+                  if (q%styp == 2) then
+                     ip = mp%part%get(q%id)
+                     if (ip == 0) then
+                        call set_error(error, at(inp, q%src)//'field ID: part '//str(q%id)// &
+                                       ' is not defined (*PART)')
+                        return
+                     end if
+                     pmask(ip) = .true.
+                  else
+                     j = mp%pset%get(q%id)
+                     if (j == 0) then
+                        call set_error(error, at(inp, q%src)//'field ID: part set '// &
+                                       str(q%id)//' is not defined (*SET_PART_LIST)')
+                        return
+                     end if
+                     pmask(model%part_sets(j)%parts) = .true.
+                  end if
+                  do j = 1, size(model%blocks)
+                     if (.not. pmask(model%blocks(j)%ipart)) cycle
+                     do k = 1, model%blocks(j)%nel
+                        nmask(model%blocks(j)%conn(:, k)) = .true.
+                     end do
+                  end do
+               end if
+               do k = 1, model%nn
+                  if (.not. nmask(k)) cycle
+                  r = model%x0(:, k) - q%xc
+                  model%v0(:, k) = q%v + q%omega*cross(q%axis, r)
+               end do
+            end select
+         end associate
+      end do
+      do i = 1, size(inp%ivels)
+         associate (q => inp%ivels(i))
+            if (q%kind /= IVEL_NODE) cycle
+            k = node_index(inp, mp, q%id, q%src, 'NID', error)
+            if (allocated(error)) return
+            model%v0(:, k) = q%v
+         end associate
+      end do
+   end subroutine build_initial_velocity
+
+   pure function cross(a, b) result(c)
+      real(wp), intent(in) :: a(3), b(3)
+      real(wp) :: c(3)
+      c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
+   end function cross
+
+   !> nodal loads, segment pressures, rigid walls
+   subroutine build_loads(inp, model, mp, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(inout) :: model
+      type(maps_t), intent(in) :: mp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i, k, c, s, nseg
+      integer, allocatable :: seg(:, :), nodes(:), ex(:)
+      logical, allocatable :: keep(:)
+      real(wp) :: d
+      allocate(model%node_loads(size(inp%node_loads)))
+      do i = 1, size(inp%node_loads)
+         associate (l => inp%node_loads(i))
+            model%node_loads(i)%node = node_index(inp, mp, l%nid, l%src, 'NID', error)
+            if (allocated(error)) return
+            model%node_loads(i)%curve = curve_index(inp, mp, l%lcid, l%src, 'LCID', error)
+            if (allocated(error)) return
+            model%node_loads(i)%dof = l%dof
+            model%node_loads(i)%sf = l%sf
+         end associate
+      end do
+      nseg = 0
+      do i = 1, size(inp%seg_loads)
+         if (inp%seg_loads(i)%ssid == 0) then
+            nseg = nseg + 1
+         else
+            s = mp%sset%get(inp%seg_loads(i)%ssid)
+            if (s == 0) then
+               call set_error(error, at(inp, inp%seg_loads(i)%src)//'field SSID: segment '// &
+                  'set '//str(inp%seg_loads(i)%ssid)//' is not defined (*SET_SEGMENT)')
+               return
+            end if
+            nseg = nseg + size(model%segment_sets(s)%seg, 2)
+         end if
+      end do
+      allocate(model%seg_loads(nseg))
+      nseg = 0
+      do i = 1, size(inp%seg_loads)
+         associate (l => inp%seg_loads(i))
+            c = curve_index(inp, mp, l%lcid, l%src, 'LCID', error)
+            if (allocated(error)) return
+            if (l%ssid == 0) then
+               call dense_segments(inp, mp, reshape(l%n, [4, 1]), l%src, seg, error)
+               if (allocated(error)) return
+            else
+               seg = model%segment_sets(mp%sset%get(l%ssid))%seg
+            end if
+            do k = 1, size(seg, 2)
+               nseg = nseg + 1
+               model%seg_loads(nseg) = load_segment_t(nodes=seg(:, k), curve=c, sf=l%sf, &
+                                                      at=l%at)
+            end do
+         end associate
+      end do
+      allocate(model%walls(size(inp%walls)), keep(model%nn))
+      do i = 1, size(inp%walls)
+         associate (r => inp%walls(i), wl => model%walls(i))
+            wl%label = r%label
+            wl%x0 = r%xt
+            wl%n = (r%xh - r%xt)/norm2(r%xh - r%xt)
+            wl%fric = r%fric
+            call set_nodes(inp, model, mp, r%nsid, .true., r%src, 'NSID', nodes, error)
+            if (allocated(error)) return
+            keep = .false.
+            keep(nodes) = .true.
+            if (r%nsidex > 0) then
+               call set_nodes(inp, model, mp, r%nsidex, .false., r%src, 'NSIDEX', ex, error)
+               if (allocated(error)) return
+               keep(ex) = .false.
+            end if
+            if (r%offset > 0.0_wp) then
+               do k = 1, model%nn
+                  if (.not. keep(k)) cycle
+                  d = dot_product(model%x0(:, k) - wl%x0, wl%n)
+                  keep(k) = abs(d) <= r%offset
+               end do
+            end if
+            wl%nodes = pack([(k, k = 1, model%nn)], keep)
+         end associate
+      end do
+   end subroutine build_loads
+
+   !> controls and output requests; the run must end
+   subroutine build_controls(inp, model, mp, deck0, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(inout) :: model
+      type(maps_t), intent(in) :: mp
+      character(*), intent(in) :: deck0
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i, k, j
+      integer, allocatable :: h(:), nodes(:)
+      logical, allocatable :: seen(:)
+      model%ctrl = inp%ctrl
+      model%ctrl%lctm = 0
+      if (inp%lctm /= 0) then
+         model%ctrl%lctm = curve_index(inp, mp, inp%lctm, inp%timestep_src, 'LCTM', error)
+         if (allocated(error)) return
+      end if
+      model%db%d3plot_dt = inp%d3plot_dt
+      if (inp%d3plot_npltc > 0 .and. inp%ctrl%endtim > 0.0_wp) &
+         model%db%d3plot_dt = inp%ctrl%endtim/inp%d3plot_npltc
+      model%db%d3plot_lcdt = 0
+      if (inp%d3plot_lcdt /= 0) then
+         model%db%d3plot_lcdt = curve_index(inp, mp, inp%d3plot_lcdt, inp%d3plot_src, 'LCDT', &
+                                            error)
+         if (allocated(error)) return
+      end if
+      model%db%glstat_dt = inp%glstat_dt
+      model%db%nodout_dt = inp%nodout_dt
+      allocate(h(0), seen(model%nn))
+      seen = .false.
+      do i = 1, size(inp%hist_nodes)
+         associate (l => inp%hist_nodes(i))
+            do k = 1, size(l%ids)
+               j = node_index(inp, mp, l%ids(k), l%src, 'ID'//str(k), error)
+               if (allocated(error)) return
+               if (.not. seen(j)) h = [h, j]
+               seen(j) = .true.
+            end do
+         end associate
+      end do
+      do i = 1, size(inp%hist_node_sets)
+         associate (l => inp%hist_node_sets(i))
+            do k = 1, size(l%ids)
+               call set_nodes(inp, model, mp, l%ids(k), .false., l%src, 'ID'//str(k), nodes, &
+                              error)
+               if (allocated(error)) return
+               do j = 1, size(nodes)
+                  if (.not. seen(nodes(j))) h = [h, nodes(j)]
+                  seen(nodes(j)) = .true.
+               end do
+            end do
+         end associate
+      end do
+      call move_alloc(h, model%db%hist_nodes)
+      if (.not. inp%has_termination) then
+         call set_error(error, deck0//': no *CONTROL_TERMINATION: the run would not end '// &
+                        '(give ENDTIM > 0 or ENDCYC > 0)')
+         return
+      end if
+      if (.not. (inp%ctrl%endtim > 0.0_wp) .and. inp%ctrl%endcyc <= 0) then
+         call set_error(error, at(inp, inp%term_src)//'ENDTIM <= 0 and ENDCYC <= 0: the run '// &
+                        'would not end')
+      end if
+   end subroutine build_controls
+end module dx_model_build
