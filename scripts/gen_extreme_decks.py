@@ -2,31 +2,36 @@
 """Write the decks of the stiff and extreme regression cases (tests/regression/extreme_*/,
 described in docs/extreme-cases.md). Units mm, ms, kg, GPa.
 
-  incompressible  a 10 mm rubber-like cube (*MAT_ELASTIC, E 0.01, PR 0.4999) of n^3 hexes,
-                  bottom face on rollers, top face driven down at v (velocity ramp over 0.05 ms,
-                  *BOUNDARY_PRESCRIBED_MOTION_SET), squeezed to about 30 % nominal strain
-  distorted       two disjoint single hexes (part 1 ELFORM 1, part 2 ELFORM 2), each strongly
-                  skewed and warped but with positive Jacobian at every corner; bottom nodes
-                  fixed, top nodes with an initial velocity: a free vibration
-  crush           a column of nz hexes, labels 101.., bottom fixed, the top face prescribed
-                  down at v for good: the top element must invert (negative volume)
-  dtmin           the incompressible cube hit at high speed with *CONTROL_TERMINATION DTMIN so
-                  that the shrinking time step falls below DTMIN*first step
+  incompressible  a 10 mm rubber-like cube (*MAT_ELASTIC RO 1.1e-6, E 0.01, PR 0.4999; the
+                  octant of a 20 mm block: symmetry planes x = 0, y = 0) of n^3 hexes, bottom
+                  face on rollers, top face driven down at v (velocity ramp over 0.05 ms, then
+                  constant; *BOUNDARY_PRESCRIBED_MOTION_SET)
+  distorted       one strongly skewed and warped hex (15 degree base corner, top face sheared
+                  by 2.5 heights, twisted, corner Jacobians 0.008..0.056 of the mean, volume
+                  0.287) in steel, bottom nodes fixed, top nodes with an initial velocity
+                  (1, -0.5, -2) m/s: a free vibration. Part 1 ELFORM 1, part 2 ELFORM 2 (a
+                  separate copy 10 mm away); --only 1|2 keeps one; --shape cube puts a unit
+                  cube in its place (reference)
+  crush           three unit hexes in a row, labels 7, 4711, 9, bottom nodes fixed; the top
+                  face of 4711 is driven down at v (x, y held), so 4711 is flattened at t = 1/v
+                  and must be reported as a negative volume
 
-Usage: gen_extreme_decks.py incompressible|distorted|crush|dtmin [options] out.k
+Usage: gen_extreme_decks.py incompressible|distorted|crush [options] out.k
 """
 import argparse
 
 ap = argparse.ArgumentParser()
-ap.add_argument('kind', choices=['incompressible', 'distorted', 'crush', 'dtmin'])
+ap.add_argument('kind', choices=['incompressible', 'distorted', 'crush'])
 ap.add_argument('--n', type=int, default=4, help='elements per side of the cube')
-ap.add_argument('--nz', type=int, default=4, help='elements of the crush column')
 ap.add_argument('--elform', type=int, default=1)
 ap.add_argument('--pr', type=float, default=0.4999)
 ap.add_argument('--v', type=float, default=10.0, help='m/s = mm/ms')
 ap.add_argument('--tend', type=float, default=0.3)
-ap.add_argument('--dtmin', type=float, default=0.0)
 ap.add_argument('--ihq', type=int, default=1)
+ap.add_argument('--soft', action='store_true', help='crush: rubber-like material')
+ap.add_argument('--only', type=int, default=0, help='distorted: only part 1 or 2')
+ap.add_argument('--shape', choices=['skewed', 'cube'], default='skewed',
+                help='distorted: the skewed hex, or an undistorted unit cube (reference)')
 ap.add_argument('out')
 a = ap.parse_args()
 
@@ -94,15 +99,11 @@ def cube(n, size=10.0):
     return xyz, els, bottom, top, xsym, ysym
 
 
-if a.kind in ('incompressible', 'dtmin'):
+if a.kind == 'incompressible':
     n = a.n
     xyz, els, bottom, top, xsym, ysym = cube(n)
-    if a.kind == 'incompressible':
-        head('Nearly incompressible cube PR %g ELFORM %d, top driven at %g m/s (mm, ms, kg, GPa)'
-             % (a.pr, a.elform, a.v), a.tend)
-    else:
-        head('Cube PR %g ELFORM %d driven at %g m/s, DTMIN %g (mm, ms, kg, GPa)'
-             % (a.pr, a.elform, a.v, a.dtmin), a.tend, a.dtmin)
+    head('Nearly incompressible cube PR %g ELFORM %d, top driven at %g m/s (mm, ms, kg, GPa)'
+         % (a.pr, a.elform, a.v), a.tend)
     part(1, a.elform, RUBBER)
     nodes(xyz)
     elements(els)
@@ -122,16 +123,21 @@ if a.kind in ('incompressible', 'dtmin'):
     w('*BOUNDARY_PRESCRIBED_MOTION_SET\n$     NSID       DOF       VAD      LCID        SF\n'
       '         2         3         0         1%10.4f\n' % (-a.v))
 elif a.kind == 'distorted':
-    head('Two strongly skewed single hexes, ELFORM 1 and 2, free vibration (mm, ms, kg, GPa)',
-         a.tend)
-    part(1, 1, STEEL)
-    part(2, 2, STEEL)
+    head('%s, ELFORM %s, free vibration (mm, ms, kg, GPa)'
+         % ('Strongly skewed single hex' if a.shape == 'skewed' else 'Unit cube (reference)',
+            a.only or '1 and 2'), a.tend, nplot=50)
+    pids = [a.only] if a.only else [1, 2]
+    for p in pids:
+        part(p, p, STEEL)
     # unit-height hex: bottom face a rhombus with a 15 degree corner, top face sheared by
     # 2.5 units and twisted; node 7 pulled in so the element is warped (non-planar faces)
     base = [(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (1.966, 0.259, 0.0), (0.966, 0.259, 0.0),
             (2.5, 0.3, 1.0), (3.4, 0.1, 0.9), (4.3, 0.6, 1.3), (3.2, 0.5, 1.0)]
+    if a.shape == 'cube':
+        base = [(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (1.0, 1.0, 0.0), (0.0, 1.0, 0.0),
+                (0.0, 0.0, 1.0), (1.0, 0.0, 1.0), (1.0, 1.0, 1.0), (0.0, 1.0, 1.0)]
     xyz, els, fixed, free = [], [], [], []
-    for p, dx in ((1, 0.0), (2, 10.0)):
+    for p, dx in [(p, 10.0 * (p - 1)) for p in pids]:
         ids = [100 * p + k for k in range(1, 9)]
         xyz += [(i, x + dx, y, z) for i, (x, y, z) in zip(ids, base)]
         els.append((p, p, ids))
@@ -144,24 +150,27 @@ elif a.kind == 'distorted':
       '         1         0         1         1         1\n')
     w('*INITIAL_VELOCITY_NODE\n')
     for i in free:
-        w('%8d%16.6f%16.6f%16.6f\n' % (i, 1.0, -0.5, -2.0))
+        w('%10d%10.4f%10.4f%10.4f\n' % (i, 1.0, -0.5, -2.0))
 else:                                  # crush
-    nz = a.nz
-    head('Column of %d hexes crushed at %g m/s until the top element inverts '
-         '(mm, ms, kg, GPa)' % (nz, a.v), a.tend)
-    part(1, a.elform, STEEL)
-    nid = lambda i, j, k: 1 + i + 2 * j + 4 * k
-    xyz = [(nid(i, j, k), float(i), float(j), float(k)) for k in range(nz + 1) for j in range(2)
-           for i in range(2)]
-    els = [(101 + k, 1, [nid(0, 0, k), nid(1, 0, k), nid(1, 1, k), nid(0, 1, k),
-                         nid(0, 0, k + 1), nid(1, 0, k + 1), nid(1, 1, k + 1), nid(0, 1, k + 1)])
-           for k in range(nz)]
+    # three hexes in a row, labels 7, 4711, 9 (deck order = dense index 1, 2, 3); all bottom
+    # nodes fixed; the top face of the middle element driven down at v with x, y held
+    # (kinematic), so element 4711 is squeezed flat and then through itself
+    head('Hex 4711 crushed at %g m/s by prescribed motion until it inverts (mm, ms, kg, GPa)'
+         % a.v, a.tend, nplot=10)
+    part(1, a.elform, RUBBER if a.soft else STEEL)
+    nid = lambda i, j, k: 1 + i + 4 * j + 8 * k
+    xyz = [(nid(i, j, k), float(i), float(j), float(k)) for k in range(2) for j in range(2)
+           for i in range(4)]
+    els = [(lab, 1, [nid(i, 0, 0), nid(i + 1, 0, 0), nid(i + 1, 1, 0), nid(i, 1, 0),
+                     nid(i, 0, 1), nid(i + 1, 0, 1), nid(i + 1, 1, 1), nid(i, 1, 1)])
+           for i, lab in enumerate((7, 4711, 9))]
     nodes(xyz)
     elements(els)
-    node_set(1, [nid(i, j, 0) for j in range(2) for i in range(2)])
-    node_set(2, [nid(i, j, nz) for j in range(2) for i in range(2)])
+    node_set(1, [nid(i, j, 0) for j in range(2) for i in range(4)])
+    node_set(2, [nid(i, j, 1) for j in range(2) for i in (1, 2)])
     w('*BOUNDARY_SPC_SET\n$     NSID       CID      DOFX      DOFY      DOFZ\n'
       '         1         0         1         1         1\n')
+    w('*BOUNDARY_SPC_SET\n         2         0         1         1         0\n')
     w('*DEFINE_CURVE\n$     LCID      SIDR       SFA       SFO\n         1         0       1.0'
       '       1.0\n')
     w('%20.6f%20.6f\n%20.6f%20.6f\n' % (0.0, 1.0, 1000.0, 1.0))

@@ -12,8 +12,9 @@
 #               the same name in the output directory by bin/dynx-compare
 #   tolerances  tolerance file for bin/dynx-compare (format: docs/output-format.md)
 #   check       an analytic check: a shell script run as 'sh check OUTDIR' from the top
-#               directory after a successful run; a non-zero exit fails the case (its output is
-#               kept in OUTDIR/check.log and shown on failure)
+#               directory after the run (after a successful run, or after an expected failure
+#               when the case has an expect file); a non-zero exit fails the case (its output
+#               is kept in OUTDIR/check.log and shown on failure)
 # Without 'expect' the run must exit 0 and every gold file must compare equal within tolerance.
 # Outputs go to build/regression/<case>/ (stdout and stderr captured there).
 # Prints 'PASS <case>' or 'FAIL <case>: reason' per case, then 'N passed, N failed';
@@ -195,6 +196,12 @@ for c in $cases; do
         report=""
         check_expect "$c"
         [ -n "$reason" ] && report=$(tail -n 5 "$OUTROOT/$c/stderr")
+        # a failing run may also have a check (e.g. its last state must stay readable)
+        if [ -f "$ROOT/$c/check" ] && \
+           ! sh "$ROOT/$c/check" "$OUTROOT/$c" >"$OUTROOT/$c/check.log" 2>&1; then
+            reason="${reason:+$reason; }check failed"
+            report="$report$(cat "$OUTROOT/$c/check.log")"
+        fi
     else
         check_gold "$c"
     fi
