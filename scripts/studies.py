@@ -531,7 +531,8 @@ def readme(build, docs):
              WG_LF_L0 * WG_L0 - fine['Lf'], ' / '.join('%.4f' % r['RfR0'] for r in ri),
              100 * (fine['RfR0'] / WG_RF_R0 - 1)),
           '- Why: the static curve is the flow stress at low strain rate, while the impact end '
-          'deforms at strain rates of order 1e3-1e5 1/s, where OFHC copper is stronger (the '
+          'deforms at strain rates of order 1e3-1e5 1/s (typical of Taylor tests; not measured '
+          'here), where OFHC copper is stronger (the '
           'Johnson-Cook rate term 1 + 0.025 ln(rate / 1 s^-1) gives +17% to +29%). A softer '
           'bar absorbs the same kinetic energy over a larger plastic zone and ends shorter.',
           '- Cowper-Symonds C = 40 1/s, P = 5 (the fallback; no copper pair was found with the '
