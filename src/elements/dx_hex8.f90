@@ -16,7 +16,7 @@ module dx_hex8
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_model, only: elem_block_t, part_t
    use dx_material, only: material_t
-   use dx_hex8_geometry, only: hex8_bvectors, hex8_char_length, GAMMA_HG, XI_NODE
+   use dx_hex8_geometry, only: hex8_bvectors, hex8_char_length, inv3, GAMMA_HG, XI_NODE
    implicit none
    private
    public :: hex8_block, HEX_ERR_NEGVOL, HEX_ERR_MATERIAL, hex8_volume
@@ -100,9 +100,9 @@ contains
       real(wp), intent(inout) :: f(:, :)
       type(block_result_t), intent(out) :: res
       real(wp), dimension(blk%nel, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
-      real(wp), dimension(blk%nel) :: vol, volm, rv, c, lc, q, trd, w12, w23, w31, ein, alive, ah
+      real(wp), dimension(blk%nel) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive, ah
       real(wp) :: deps(blk%nel, 6), sold(blk%nel, 6), l(3, 3), hx(4), hy(4), hz(4), qx(4), qy(4), qz(4)
-      real(wp) :: g(4, 8), rho, trde, qb, dtl, rvm, a, kh, bb, hgsum, ein_sum, ehg_sum
+      real(wp) :: g(4, 8), rho, dtl, rvm, a, kh, bb, hgsum, ein_sum, ehg_sum
       integer :: ierr(blk%nel)
       logical :: failed(blk%nel)
       integer :: i, k, n, nn, ihq
@@ -175,11 +175,7 @@ contains
       ein_sum = 0.0_wp
       do i = 1, n
          rho = mat%ro/rv(i)
-         q(i) = 0.0_wp
-         if (trd(i) < 0.0_wp) then
-            a = vol(i)**(1.0_wp/3.0_wp)
-            q(i) = rho*a*(part%q1*a*trd(i)**2 - part%q2*c(i)*trd(i))
-         end if
+         q(i) = bulk_viscosity(part, rho, vol(i), trd(i), c(i))
          rvm = 0.5_wp*volm(i)
          a = rvm*((sold(i,1) + blk%sig(i,1,1))*deps(i,1) + (sold(i,2) + blk%sig(i,2,1))*deps(i,2) &
              + (sold(i,3) + blk%sig(i,3,1))*deps(i,3) + 2.0_wp*((sold(i,4) + blk%sig(i,4,1)) &
@@ -273,6 +269,32 @@ contains
          end do
       end do
       ! ---- stable time step
+      call stable_time_step(blk, part, xe, ye, ze, vol, trd, c, res)
+      call first_error(n, ierr, res)
+   end subroutine hex8_1pt
+
+   !> DYNA bulk viscosity q = rho*l*(Q1*l*e_kk**2 - Q2*c*e_kk) for e_kk < 0, l = V**(1/3).
+   pure real(wp) function bulk_viscosity(part, rho, vol, trd, c) result(q)
+      type(part_t), intent(in) :: part
+      real(wp), intent(in) :: rho, vol, trd, c
+      real(wp) :: l
+      q = 0.0_wp
+      if (trd < 0.0_wp) then
+         l = vol**(1.0_wp/3.0_wp)
+         q = rho*l*(part%q1*l*trd**2 - part%q2*c*trd)
+      end if
+   end function bulk_viscosity
+
+   !> Smallest element step L/(Q + sqrt(Q**2 + c**2)), L = V/A_max, Q = Q2*c + Q1*L*|e_kk|
+   !> (compression only); eroded elements do not count.
+   subroutine stable_time_step(blk, part, xe, ye, ze, vol, trd, c, res)
+      type(elem_block_t), intent(in) :: blk
+      type(part_t), intent(in) :: part
+      real(wp), intent(in) :: xe(:, :), ye(:, :), ze(:, :), vol(:), trd(:), c(:)
+      type(block_result_t), intent(inout) :: res
+      real(wp) :: lc(blk%nel), qb, trde
+      integer :: i, n
+      n = blk%nel
       call hex8_char_length(n, n, xe, ye, ze, vol, lc)
       do i = 1, n
          qb = 0.0_wp
@@ -283,8 +305,7 @@ contains
             res%dt = trde; res%imin = i
          end if
       end do
-      call first_error(n, ierr, res)
-   end subroutine hex8_1pt
+   end subroutine stable_time_step
 
    subroutine first_error(n, ierr, res)
       integer, intent(in) :: n, ierr(:)
@@ -310,11 +331,11 @@ contains
       real(wp), intent(inout) :: f(:, :)
       type(block_result_t), intent(out) :: res
       real(wp), dimension(blk%nel, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
-      real(wp), dimension(blk%nel) :: vol, volm, rv, c, lc, q, trd, w12, w23, w31, ein, alive, pbar
+      real(wp), dimension(blk%nel) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive, pbar
       real(wp) :: deps(blk%nel, 6), sold(blk%nel, 6), dn(3, 8, 8), dnx(3, 8), l(3, 3)
       real(wp) :: p8(8), q8(8), r8(8)
       real(wp), allocatable :: dng(:, :, :, :)
-      real(wp) :: jwg(8, blk%nel), wm(blk%nel), dtl, rho, a, qb, trde, trp, pm, ein_sum
+      real(wp) :: jwg(8, blk%nel), wm(blk%nel), dtl, rho, a, trp, pm, ein_sum
       integer :: ierr(blk%nel)
       logical :: failed(blk%nel), fpt(blk%nel)
       integer :: i, k, n, nn, ip
@@ -408,11 +429,7 @@ contains
       ! bulk viscosity, mean pressure through the exact mean B, erosion
       do i = 1, n
          rho = mat%ro/rv(i)
-         q(i) = 0.0_wp
-         if (trd(i) < 0.0_wp) then
-            a = vol(i)**(1.0_wp/3.0_wp)
-            q(i) = rho*a*(part%q1*a*trd(i)**2 - part%q2*c(i)*trd(i))
-         end if
+         q(i) = bulk_viscosity(part, rho, vol(i), trd(i), c(i))
          a = -q(i)*trd(i)*dt_old*vol(i)*alive(i)
          blk%eint(i) = blk%eint(i) + a
          ein_sum = ein_sum + a
@@ -435,16 +452,7 @@ contains
          end do
       end do
       res%dehg = 0.0_wp
-      call hex8_char_length(n, n, xe, ye, ze, vol, lc)
-      do i = 1, n
-         qb = 0.0_wp
-         if (trd(i) < 0.0_wp) qb = part%q2*c(i) + part%q1*lc(i)*abs(trd(i))
-         trde = lc(i)/(qb + sqrt(qb*qb + c(i)*c(i)))
-         if (blk%failed(i)) trde = huge_wp
-         if (trde < res%dt) then
-            res%dt = trde; res%imin = i
-         end if
-      end do
+      call stable_time_step(blk, part, xe, ye, ze, vol, trd, c, res)
       call first_error(n, ierr, res)
    end subroutine hex8_sri
 
@@ -478,18 +486,7 @@ contains
       real(wp), intent(out) :: dnx(3, 8), jw
       real(wp) :: j(3, 3), ji(3, 3), det
       j(:, 1) = matmul(dn, xe); j(:, 2) = matmul(dn, ye); j(:, 3) = matmul(dn, ze)
-      det = j(1,1)*(j(2,2)*j(3,3) - j(2,3)*j(3,2)) - j(1,2)*(j(2,1)*j(3,3) - j(2,3)*j(3,1)) &
-          + j(1,3)*(j(2,1)*j(3,2) - j(2,2)*j(3,1))
-      if (det == 0.0_wp) det = tiny(1.0_wp)
-      ji(1,1) = (j(2,2)*j(3,3) - j(2,3)*j(3,2))/det
-      ji(1,2) = -(j(1,2)*j(3,3) - j(1,3)*j(3,2))/det
-      ji(1,3) = (j(1,2)*j(2,3) - j(1,3)*j(2,2))/det
-      ji(2,1) = -(j(2,1)*j(3,3) - j(2,3)*j(3,1))/det
-      ji(2,2) = (j(1,1)*j(3,3) - j(1,3)*j(3,1))/det
-      ji(2,3) = -(j(1,1)*j(2,3) - j(1,3)*j(2,1))/det
-      ji(3,1) = (j(2,1)*j(3,2) - j(2,2)*j(3,1))/det
-      ji(3,2) = -(j(1,1)*j(3,2) - j(1,2)*j(3,1))/det
-      ji(3,3) = (j(1,1)*j(2,2) - j(1,2)*j(2,1))/det
+      call inv3(j, ji, det)
       dnx = matmul(ji, dn)
       jw = det
    end subroutine point_gradients_one

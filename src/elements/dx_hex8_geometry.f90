@@ -9,7 +9,7 @@ module dx_hex8_geometry
    use dx_kinds, only: wp
    implicit none
    private
-   public :: hex8_bvectors, hex8_char_length, GAMMA_HG, XI_NODE
+   public :: hex8_bvectors, hex8_char_length, inv3, GAMMA_HG, XI_NODE
 
    !> natural coordinates of the 8 nodes
    real(wp), parameter :: XI_NODE(3, 8) = reshape([ &
@@ -92,4 +92,22 @@ contains
          lc(i) = vol(i)/(0.5_wp*sqrt(a2max))
       end do
    end subroutine hex8_char_length
+
+   !> Inverse ji and determinant det of a 3x3 matrix (a zero determinant is replaced by tiny).
+   pure subroutine inv3(j, ji, det)
+      real(wp), intent(in) :: j(3, 3)
+      real(wp), intent(out) :: ji(3, 3), det
+      det = j(1,1)*(j(2,2)*j(3,3) - j(2,3)*j(3,2)) - j(1,2)*(j(2,1)*j(3,3) - j(2,3)*j(3,1)) &
+          + j(1,3)*(j(2,1)*j(3,2) - j(2,2)*j(3,1))
+      if (det == 0.0_wp) det = tiny(1.0_wp)
+      ji(1,1) = (j(2,2)*j(3,3) - j(2,3)*j(3,2))/det
+      ji(1,2) = -(j(1,2)*j(3,3) - j(1,3)*j(3,2))/det
+      ji(1,3) = (j(1,2)*j(2,3) - j(1,3)*j(2,2))/det
+      ji(2,1) = -(j(2,1)*j(3,3) - j(2,3)*j(3,1))/det
+      ji(2,2) = (j(1,1)*j(3,3) - j(1,3)*j(3,1))/det
+      ji(2,3) = -(j(1,1)*j(2,3) - j(1,3)*j(2,1))/det
+      ji(3,1) = (j(2,1)*j(3,2) - j(2,2)*j(3,1))/det
+      ji(3,2) = -(j(1,1)*j(3,2) - j(1,2)*j(3,1))/det
+      ji(3,3) = (j(1,1)*j(2,2) - j(1,2)*j(2,1))/det
+   end subroutine inv3
 end module dx_hex8_geometry

@@ -6,6 +6,7 @@
 !> for a triangle.
 module dx_loads
    use dx_kinds, only: wp
+   use dx_vec3, only: cross
    use dx_model, only: model_t
    implicit none
    private
@@ -65,9 +66,4 @@ contains
       end if
    end subroutine add_external_loads
 
-   pure function cross(a, b) result(c)
-      real(wp), intent(in) :: a(3), b(3)
-      real(wp) :: c(3)
-      c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
-   end function cross
 end module dx_loads

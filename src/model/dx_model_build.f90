@@ -7,6 +7,7 @@
 !> for the trilinear map; equal to the Flanagan-Belytschko 1981 B-vector volume).
 module dx_model_build
    use dx_kinds, only: wp, nv_chunk
+   use dx_vec3, only: cross
    use dx_error, only: error_t, set_error
    use dx_strings, only: str, rstr
    use dx_model, only: model_t, node_set_t, part_set_t, segment_set_t, spc_t, prescribed_t, &
@@ -662,11 +663,6 @@ contains
       end do
    end subroutine build_initial_velocity
 
-   pure function cross(a, b) result(c)
-      real(wp), intent(in) :: a(3), b(3)
-      real(wp) :: c(3)
-      c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
-   end function cross
 
    !> nodal loads, segment pressures, rigid walls
    subroutine build_loads(inp, model, mp, error)

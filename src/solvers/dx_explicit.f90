@@ -179,8 +179,7 @@ contains
                call move_alloc(ioerr, error); call finish(model, out, error); return
             end if
             if (model%db%d3plot_dt > 0.0_wp) then
-               next_plot = next_plot + model%db%d3plot_dt*real(max(1, &
-                           ceiling((t - next_plot)/model%db%d3plot_dt + 1.0e-9_wp)), wp)
+               next_plot = next_output_time(next_plot, model%db%d3plot_dt, t)
             else
                next_plot = huge_wp
             end if
@@ -190,16 +189,14 @@ contains
             if (allocated(ioerr)) then
                call move_alloc(ioerr, error); call finish(model, out, error); return
             end if
-            next_glstat = next_glstat + model%db%glstat_dt*real(max(1, &
-                          ceiling((t - next_glstat)/model%db%glstat_dt + 1.0e-9_wp)), wp)
+            next_glstat = next_output_time(next_glstat, model%db%glstat_dt, t)
          end if
          if (model%db%nodout_dt > 0.0_wp .and. (t >= next_nodout .or. done)) then
             call out%write_nodout(model, ioerr)
             if (allocated(ioerr)) then
                call move_alloc(ioerr, error); call finish(model, out, error); return
             end if
-            next_nodout = next_nodout + model%db%nodout_dt*real(max(1, &
-                          ceiling((t - next_nodout)/model%db%nodout_dt + 1.0e-9_wp)), wp)
+            next_nodout = next_output_time(next_nodout, model%db%nodout_dt, t)
          end if
          if (t >= next_status .or. done) then
             call status_line(model, t, dt, t0wall, tend)
@@ -225,6 +222,12 @@ contains
       call out%close(ioerr)
       if (allocated(ioerr)) call move_alloc(ioerr, error)
    end subroutine run_explicit
+
+   !> The first output time on the grid next + k*interval (k >= 1) that lies after t.
+   pure real(wp) function next_output_time(next, interval, t) result(tn)
+      real(wp), intent(in) :: next, interval, t
+      tn = next + interval*real(max(1, ceiling((t - next)/interval + 1.0e-9_wp)), wp)
+   end function next_output_time
 
    subroutine set_energy(model, ke, eint, ehg, wext, erw)
       type(model_t), intent(inout) :: model

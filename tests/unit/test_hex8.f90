@@ -7,7 +7,7 @@ program test_hex8
    use dx_error, only: error_t
    use dx_model, only: elem_block_t, part_t
    use dx_mat_elastic, only: mat_elastic_t
-   use dx_hex8_geometry, only: hex8_bvectors, XI_NODE, GAMMA_HG
+   use dx_hex8_geometry, only: hex8_bvectors, inv3, XI_NODE, GAMMA_HG
    use dx_hex8, only: hex8_block, block_result_t
    use dx_assert, only: check, check_close, assert_summary
    implicit none
@@ -163,22 +163,6 @@ contains
                        abs(gb(3, :) - bz(1, :))), 0.0_wp, 1.0e-13_wp, 0.0_wp, &
                        'B vectors = integral of dN/dx (2x2x2 Gauss, exact)')
    end subroutine test_bvectors
-
-   pure subroutine inv3(j, ji, det)
-      real(wp), intent(in) :: j(3, 3)
-      real(wp), intent(out) :: ji(3, 3), det
-      det = j(1,1)*(j(2,2)*j(3,3) - j(2,3)*j(3,2)) - j(1,2)*(j(2,1)*j(3,3) - j(2,3)*j(3,1)) &
-          + j(1,3)*(j(2,1)*j(3,2) - j(2,2)*j(3,1))
-      ji(1,1) = (j(2,2)*j(3,3) - j(2,3)*j(3,2))/det
-      ji(1,2) = -(j(1,2)*j(3,3) - j(1,3)*j(3,2))/det
-      ji(1,3) = (j(1,2)*j(2,3) - j(1,3)*j(2,2))/det
-      ji(2,1) = -(j(2,1)*j(3,3) - j(2,3)*j(3,1))/det
-      ji(2,2) = (j(1,1)*j(3,3) - j(1,3)*j(3,1))/det
-      ji(2,3) = -(j(1,1)*j(2,3) - j(1,3)*j(2,1))/det
-      ji(3,1) = (j(2,1)*j(3,2) - j(2,2)*j(3,1))/det
-      ji(3,2) = -(j(1,1)*j(3,2) - j(1,2)*j(3,1))/det
-      ji(3,3) = (j(1,1)*j(2,2) - j(1,2)*j(2,1))/det
-   end subroutine inv3
 
    !> A 2x2x2 patch of a distorted 2x2x2 cube: 27 nodes, interior node 14 moved off-centre,
    !> outer nodes skewed; mid-step coordinates in xm.
