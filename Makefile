@@ -5,7 +5,7 @@
 #   make studies  error-against-run-time studies (docs/studies/)
 SHELL := /bin/sh
 FC := h5pfc
-SRC_DIRS := base parallel model materials deck elements loads io solvers
+SRC_DIRS := base parallel model materials deck elements rigid contact loads io solvers
 LIB_SRC := $(foreach d,$(SRC_DIRS),$(wildcard src/$(d)/*.f90))
 PROG_SRC := src/main/dynx.f90 $(wildcard src/tools/*.f90)
 ALL_SRC := $(LIB_SRC) $(PROG_SRC)
