@@ -10,7 +10,9 @@ LIB_SRC := $(foreach d,$(SRC_DIRS),$(wildcard src/$(d)/*.f90))
 PROG_SRC := src/main/dynx.f90 $(wildcard src/tools/*.f90)
 ALL_SRC := $(LIB_SRC) $(PROG_SRC)
 TEST_SRC := $(wildcard tests/unit/*.f90)
-LIBS := -lmetis -llapack -lblas -lfftw3
+# h5pfc moves archives (libdynx.a) after the -l flags; --no-as-needed keeps libmetis.so
+# linked so libdynx.a can resolve METIS symbols from it
+LIBS := -Wl,--no-as-needed -lmetis -llapack -lblas -lfftw3
 COMMON := -I/usr/include -ffree-line-length-132
 REL_FLAGS := $(COMMON) -O3 -march=native -funroll-loops
 DBG_FLAGS := $(COMMON) -O0 -g -std=f2008 -Wall -Wextra -Wimplicit-interface -fcheck=all \

@@ -36,7 +36,7 @@ module dx_h5
    end interface h5_write_attr
 
    interface h5_read_attr
-      module procedure attr_read_real, attr_read_int
+      module procedure attr_read_real, attr_read_int, attr_read_str
    end interface h5_read_attr
 
    logical, save :: lib_open = .false.
@@ -689,6 +689,62 @@ contains
       call close_attr(f, objpath, name, attr, error)
       call close_object(f, objpath, obj, error)
    end subroutine attr_read_int
+
+   !> Read a fixed-length string attribute (as written by h5_write_attr) of objpath.
+   subroutine attr_read_str(f, objpath, name, val, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: objpath, name
+      character(:), allocatable, intent(out) :: val
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: obj, attr, ftype, stype
+      integer(hsize_t) :: dims(1) = [1]
+      integer(size_t) :: n
+      integer :: ierr, ierr2
+      val = ''
+      call open_attr_read(f, objpath, name, obj, attr, error)
+      if (allocated(error)) return
+      stype = -1
+      work: block
+         call h5aget_type_f(attr, ftype, ierr)
+         if (ierr < 0) then
+            call fail(f, error, 'get type of attribute '//name//' of', objpath)
+            exit work
+         end if
+         call h5tget_size_f(ftype, n, ierr)
+         call h5tclose_f(ftype, ierr2)
+         if (ierr < 0 .or. ierr2 < 0) then
+            call fail(f, error, 'get size of attribute '//name//' of', objpath)
+            exit work
+         end if
+         call h5tcopy_f(H5T_NATIVE_CHARACTER, stype, ierr)
+         if (ierr < 0) then
+            stype = -1
+            call fail(f, error, 'copy string type for attribute '//name//' of', objpath)
+            exit work
+         end if
+         call h5tset_size_f(stype, n, ierr)
+         if (ierr < 0) then
+            call fail(f, error, 'set string size for attribute '//name//' of', objpath)
+            exit work
+         end if
+         block
+            character(len=n) :: buf
+            call h5aread_f(attr, stype, buf, dims, ierr)
+            if (ierr < 0) then
+               call fail(f, error, 'read attribute '//name//' of', objpath)
+               exit work
+            end if
+            val = buf
+         end block
+      end block work
+      if (stype >= 0) then
+         call h5tclose_f(stype, ierr2)
+         if (ierr2 < 0 .and. .not. allocated(error)) &
+            call fail(f, error, 'close string type of attribute '//name//' of', objpath)
+      end if
+      call close_attr(f, objpath, name, attr, error)
+      call close_object(f, objpath, obj, error)
+   end subroutine attr_read_str
 
    !> Members of a group with their kinds (H5_GROUP, H5_DATASET, H5_OTHER), in name order.
    subroutine h5_list(f, group, names, kinds, error)

@@ -1,0 +1,558 @@
+!> Domain decomposition for ParaDyn-style runs (Hoover, DeGroot, Maltby and Procassini,
+!> "ParaDyn: DYNA3D for massively parallel computers", LLNL Engineering Research, Development
+!> and Technology FY95, UCRL-53868-95; partitioning with METIS: Karypis and Kumar 1998).
+!>
+!> The element graph: one vertex per element, weighted by the element formulation's measured
+!> cost (COST_HEX8_1PT, COST_HEX8_SRI; docs/design.md), one edge between two elements that
+!> share at least one node (METIS_MeshToDual with ncommon = 1), weighted by the number of
+!> nodes they share. Elements that share only an edge or a corner still put that node on two
+!> ranks, so they cost communication too; the face-only dual graph (ncommon = 4) would not
+!> see that cost.
+!> Groups of elements that must stay on one rank (contact surface pairs) are condensed into
+!> one super vertex whose weight is the sum of its elements' weights (the number of elements
+!> condensed, times their cost) and whose edge weights sum the node connectivity of its
+!> elements. Overlapping groups are merged (union-find).
+!> From the element partition: nodes per rank, the owner of each node (the lowest rank
+!> holding it), shared-node lists per pair of ranks (symmetric by construction), and the
+!> balance statistic max(rank weight)/mean(rank weight) (1.0 = perfect).
+module dx_partition
+   use dx_kinds, only: wp
+   use dx_error, only: error_t, set_error, EXIT_INPUT
+   use dx_strings, only: str
+   use dx_model, only: model_t, ETYPE_HEX8_SRI
+   use dx_metis, only: metis_part_kway
+   implicit none
+   private
+   public :: partition_t, rank_part_t, element_graph, condense_groups, partition_model, &
+             partition_elements, rank_part, elem_costs, serial_order, write_report, COST_HEX8_1PT, &
+             COST_HEX8_SRI
+
+   !> Element cost weights (integer, METIS needs integers): ELFORM 2 measured at about
+   !> 8x ELFORM 1 per element-cycle (docs/design.md, "Partition weights").
+   integer, parameter :: COST_HEX8_1PT = 1, COST_HEX8_SRI = 8
+
+   !> A partition of the whole model.
+   type :: partition_t
+      integer :: np = 1
+      integer :: ne = 0, nn = 0
+      integer :: edgecut = 0
+      integer, allocatable :: epart(:)       !< (ne) rank of each element, 0..np-1
+      integer, allocatable :: ewgt(:)        !< (ne) element cost weight
+      integer, allocatable :: node_owner(:)  !< (nn) lowest rank holding the node
+      integer, allocatable :: rank_wgt(:)    !< (0:np-1) summed element weight
+      integer, allocatable :: rank_ne(:), rank_nn(:), rank_nshared(:)   !< (0:np-1)
+      real(wp) :: balance = 1.0_wp           !< max(rank_wgt) / mean(rank_wgt)
+      ! node -> ranks holding it (CSR over nodes; ranks ascending)
+      integer, allocatable :: nr_ptr(:), nr_rank(:)
+   end type partition_t
+
+   !> What one rank holds (the content of its rank file). Global indices are the dense
+   !> 1-based indices of the serial model, ascending.
+   type :: rank_part_t
+      integer :: rank = 0, np = 1, ne_global = 0, nn_global = 0
+      integer, allocatable :: elements(:)    !< global element indices, ascending
+      integer, allocatable :: nodes(:)       !< global node indices, ascending
+      integer, allocatable :: node_owner(:)  !< (size(nodes)) owning rank of each node
+      integer, allocatable :: nbr(:)         !< neighbour ranks, ascending
+      integer, allocatable :: nbr_ptr(:)     !< (size(nbr)+1) offsets into nbr_nodes
+      integer, allocatable :: nbr_nodes(:)   !< nodes shared with each neighbour, ascending
+      integer, allocatable :: spcs(:)        !< indices into model%spcs on local nodes
+      integer, allocatable :: prescribed(:)  !< indices into model%prescribed
+      integer, allocatable :: node_loads(:)  !< indices into model%node_loads
+      integer, allocatable :: seg_loads(:)   !< indices into model%seg_loads computed here
+      integer, allocatable :: wall_ptr(:)    !< (nwalls+1) offsets into wall_nodes
+      integer, allocatable :: wall_nodes(:)  !< local slave nodes of each rigid wall
+      integer, allocatable :: hist_nodes(:)  !< indices into model%db%hist_nodes
+   end type rank_part_t
+
+contains
+
+   !> Cost weight of every element from its formulation.
+   subroutine elem_costs(model, ewgt)
+      type(model_t), intent(in) :: model
+      integer, allocatable, intent(out) :: ewgt(:)
+      integer :: ib
+      allocate(ewgt(model%ne))
+      do ib = 1, size(model%blocks)
+         associate (b => model%blocks(ib))
+            if (b%etype == ETYPE_HEX8_SRI) then
+               ewgt(b%elem) = COST_HEX8_SRI
+            else
+               ewgt(b%elem) = COST_HEX8_1PT
+            end if
+         end associate
+      end do
+   end subroutine elem_costs
+
+   !> Position of each element in the serial scatter order (blocks in order, elements in
+   !> block order): the order in which the serial run adds element forces into a node.
+   subroutine serial_order(model, seq)
+      type(model_t), intent(in) :: model
+      integer, allocatable, intent(out) :: seq(:)
+      integer :: ib, k, n
+      allocate(seq(model%ne))
+      n = 0
+      do ib = 1, size(model%blocks)
+         do k = 1, model%blocks(ib)%nel
+            n = n + 1
+            seq(model%blocks(ib)%elem(k)) = n
+         end do
+      end do
+   end subroutine serial_order
+
+   !> Node -> elements (CSR) from the connectivity conn(nen, ne).
+   subroutine node_elements(conn, nn, ptr, lst)
+      integer, intent(in) :: conn(:, :), nn
+      integer, allocatable, intent(out) :: ptr(:), lst(:)
+      integer :: e, k, n
+      integer, allocatable :: fill(:)
+      allocate(ptr(nn + 1), fill(nn))
+      ptr = 0
+      do e = 1, size(conn, 2)
+         do k = 1, size(conn, 1)
+            ptr(conn(k, e) + 1) = ptr(conn(k, e) + 1) + 1
+         end do
+      end do
+      ptr(1) = 1
+      do n = 1, nn
+         ptr(n + 1) = ptr(n + 1) + ptr(n)
+      end do
+      allocate(lst(ptr(nn + 1) - 1))
+      fill = 0
+      do e = 1, size(conn, 2)
+         do k = 1, size(conn, 1)
+            n = conn(k, e)
+            lst(ptr(n) + fill(n)) = e
+            fill(n) = fill(n) + 1
+         end do
+      end do
+   end subroutine node_elements
+
+   !> Union-find root with path halving.
+   integer function find_root(parent, i) result(r)
+      integer, intent(inout) :: parent(:)
+      integer, intent(in) :: i
+      r = i
+      do while (parent(r) /= r)
+         parent(r) = parent(parent(r))
+         r = parent(r)
+      end do
+   end function find_root
+
+   !> Vertex of each element: elements of one group (groups given as CSR grp_ptr/grp_elem;
+   !> overlapping groups merge) share one vertex; vertices are numbered in the order of
+   !> their first element. vwgt sums the element weights of each vertex.
+   subroutine condense_groups(ne, ewgt, grp_ptr, grp_elem, vtx, nv, vwgt, error)
+      integer, intent(in) :: ne, ewgt(:), grp_ptr(:), grp_elem(:)
+      integer, allocatable, intent(out) :: vtx(:), vwgt(:)
+      integer, intent(out) :: nv
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: parent(:), rootv(:)
+      integer :: g, k, e, r1, r2
+      allocate(parent(ne), vtx(ne), rootv(ne))
+      parent = [(e, e = 1, ne)]
+      do g = 1, size(grp_ptr) - 1
+         do k = grp_ptr(g), grp_ptr(g + 1) - 1
+            e = grp_elem(k)
+            if (e < 1 .or. e > ne) then
+               call set_error(error, 'element group '//str(g)//': element index '//str(e)// &
+                              ' out of range 1..'//str(ne), EXIT_INPUT)
+               return
+            end if
+            r1 = find_root(parent, grp_elem(grp_ptr(g)))
+            r2 = find_root(parent, e)
+            if (r1 /= r2) parent(max(r1, r2)) = min(r1, r2)
+         end do
+      end do
+      rootv = 0
+      nv = 0
+      do e = 1, ne
+         r1 = find_root(parent, e)
+         if (rootv(r1) == 0) then
+            nv = nv + 1
+            rootv(r1) = nv
+         end if
+         vtx(e) = rootv(r1)
+      end do
+      allocate(vwgt(nv))
+      vwgt = 0
+      do e = 1, ne
+         vwgt(vtx(e)) = vwgt(vtx(e)) + ewgt(e)
+      end do
+   end subroutine condense_groups
+
+   !> The weighted dual graph over vertices vtx(e): an edge between two vertices whose
+   !> elements share nodes, weight = sum over element pairs of the number of shared nodes.
+   !> CSR with 0-based adjncy (METIS convention), neighbours in ascending order.
+   subroutine element_graph(conn, nn, vtx, nv, xadj, adjncy, adjwgt)
+      integer, intent(in) :: conn(:, :), nn, vtx(:), nv
+      integer, allocatable, intent(out) :: xadj(:), adjncy(:), adjwgt(:)
+      integer, allocatable :: nptr(:), nlst(:), vptr(:), vel(:), cnt(:), mark(:), nb(:)
+      integer :: e, v, k, j, n, w, f, nnb, tot, cap
+      call node_elements(conn, nn, nptr, nlst)
+      ! vertex -> elements
+      allocate(vptr(nv + 1), vel(size(vtx)))
+      vptr = 0
+      do e = 1, size(vtx)
+         vptr(vtx(e) + 1) = vptr(vtx(e) + 1) + 1
+      end do
+      vptr(1) = 1
+      do v = 1, nv
+         vptr(v + 1) = vptr(v + 1) + vptr(v)
+      end do
+      allocate(cnt(nv))
+      cnt = 0
+      do e = 1, size(vtx)
+         vel(vptr(vtx(e)) + cnt(vtx(e))) = e
+         cnt(vtx(e)) = cnt(vtx(e)) + 1
+      end do
+      cnt = 0
+      allocate(mark(nv), nb(nv), xadj(nv + 1))
+      mark = 0
+      cap = 27*nv
+      allocate(adjncy(cap), adjwgt(cap))
+      xadj(1) = 0
+      tot = 0
+      do v = 1, nv
+         nnb = 0
+         do k = vptr(v), vptr(v + 1) - 1
+            e = vel(k)
+            do j = 1, size(conn, 1)
+               n = conn(j, e)
+               do f = nptr(n), nptr(n + 1) - 1
+                  w = vtx(nlst(f))
+                  if (w == v) cycle
+                  if (mark(w) /= v) then
+                     mark(w) = v
+                     cnt(w) = 0
+                     nnb = nnb + 1
+                     nb(nnb) = w
+                  end if
+                  cnt(w) = cnt(w) + 1
+               end do
+            end do
+         end do
+         call sort_int(nb(1:nnb))
+         if (tot + nnb > cap) then
+            cap = max(2*cap, tot + nnb)
+            call grow(adjncy, cap)
+            call grow(adjwgt, cap)
+         end if
+         do k = 1, nnb
+            adjncy(tot + k) = nb(k) - 1
+            adjwgt(tot + k) = cnt(nb(k))
+         end do
+         tot = tot + nnb
+         xadj(v + 1) = tot
+      end do
+      adjncy = adjncy(1:tot)
+      adjwgt = adjwgt(1:tot)
+   end subroutine element_graph
+
+   subroutine grow(a, n)
+      integer, allocatable, intent(inout) :: a(:)
+      integer, intent(in) :: n
+      integer, allocatable :: t(:)
+      allocate(t(n))
+      t(1:size(a)) = a
+      call move_alloc(t, a)
+   end subroutine grow
+
+   !> Ascending sort (insertion sort for short lists, heap sort otherwise).
+   subroutine sort_int(a)
+      integer, intent(inout) :: a(:)
+      integer :: i, j, t, n
+      n = size(a)
+      if (n <= 32) then
+         do i = 2, n
+            t = a(i)
+            j = i - 1
+            do while (j >= 1)
+               if (a(j) <= t) exit
+               a(j + 1) = a(j)
+               j = j - 1
+            end do
+            a(j + 1) = t
+         end do
+         return
+      end if
+      do i = n/2, 1, -1
+         call sift(a, i, n)
+      end do
+      do i = n, 2, -1
+         t = a(1); a(1) = a(i); a(i) = t
+         call sift(a, 1, i - 1)
+      end do
+   end subroutine sort_int
+
+   subroutine sift(a, start, n)
+      integer, intent(inout) :: a(:)
+      integer, intent(in) :: start, n
+      integer :: r, c, t
+      r = start
+      do while (2*r <= n)
+         c = 2*r
+         if (c < n) then
+            if (a(c + 1) > a(c)) c = c + 1
+         end if
+         if (a(r) >= a(c)) return
+         t = a(r); a(r) = a(c); a(c) = t
+         r = c
+      end do
+   end subroutine sift
+
+   !> Partition elements with connectivity conn(nen, ne) over nn nodes into np ranks.
+   !> ewgt: element weights; groups (CSR grp_ptr/grp_elem) stay whole on one rank.
+   subroutine partition_elements(conn, nn, ewgt, grp_ptr, grp_elem, np, part, error)
+      integer, intent(in) :: conn(:, :), nn, ewgt(:), grp_ptr(:), grp_elem(:), np
+      type(partition_t), intent(out) :: part
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: vtx(:), vwgt(:), xadj(:), adjncy(:), adjwgt(:), vpart(:)
+      integer :: nv, ne, e, n, k, r, i, j, q
+      integer, allocatable :: cnt(:), mark(:)
+      ne = size(conn, 2)
+      if (np < 1) then
+         call set_error(error, 'number of ranks must be >= 1, got '//str(np), EXIT_INPUT)
+         return
+      end if
+      part%np = np
+      part%ne = ne
+      part%nn = nn
+      part%ewgt = ewgt
+      allocate(part%epart(ne))
+      if (np == 1) then
+         part%epart = 0
+      else
+         call condense_groups(ne, ewgt, grp_ptr, grp_elem, vtx, nv, vwgt, error)
+         if (allocated(error)) return
+         call element_graph(conn, nn, vtx, nv, xadj, adjncy, adjwgt)
+         allocate(vpart(nv))
+         call metis_part_kway(nv, xadj, adjncy, vwgt, adjwgt, np, vpart, part%edgecut, error)
+         if (allocated(error)) return
+         part%epart = vpart(vtx)
+      end if
+      ! ranks of each node (ascending, distinct); a node of no element goes to rank 0
+      allocate(cnt(nn + 1), mark(0:np - 1))
+      cnt = 0
+      mark = 0
+      allocate(part%nr_ptr(nn + 1))
+      block
+         integer, allocatable :: nptr(:), nlst(:), tmp(:)
+         call node_elements(conn, nn, nptr, nlst)
+         allocate(tmp(np))
+         part%nr_ptr(1) = 1
+         allocate(part%nr_rank(size(nlst) + nn))
+         do n = 1, nn
+            k = 0
+            do i = nptr(n), nptr(n + 1) - 1
+               r = part%epart(nlst(i))
+               if (mark(r) /= n) then
+                  mark(r) = n
+                  k = k + 1
+                  tmp(k) = r
+               end if
+            end do
+            if (k == 0) then
+               k = 1
+               tmp(1) = 0
+            end if
+            call sort_int(tmp(1:k))
+            part%nr_rank(part%nr_ptr(n):part%nr_ptr(n) + k - 1) = tmp(1:k)
+            part%nr_ptr(n + 1) = part%nr_ptr(n) + k
+         end do
+         part%nr_rank = part%nr_rank(1:part%nr_ptr(nn + 1) - 1)
+      end block
+      allocate(part%node_owner(nn))
+      allocate(part%rank_wgt(0:np - 1), part%rank_ne(0:np - 1), part%rank_nn(0:np - 1), &
+               part%rank_nshared(0:np - 1))
+      part%rank_wgt = 0; part%rank_ne = 0; part%rank_nn = 0; part%rank_nshared = 0
+      do e = 1, ne
+         part%rank_wgt(part%epart(e)) = part%rank_wgt(part%epart(e)) + ewgt(e)
+         part%rank_ne(part%epart(e)) = part%rank_ne(part%epart(e)) + 1
+      end do
+      do n = 1, nn
+         i = part%nr_ptr(n); j = part%nr_ptr(n + 1) - 1
+         part%node_owner(n) = part%nr_rank(i)
+         do k = i, j
+            q = part%nr_rank(k)
+            part%rank_nn(q) = part%rank_nn(q) + 1
+            if (j > i) part%rank_nshared(q) = part%rank_nshared(q) + 1
+         end do
+      end do
+      if (sum(part%rank_wgt) > 0) then
+         part%balance = real(maxval(part%rank_wgt), wp)* &
+                        real(np, wp)/real(sum(part%rank_wgt), wp)
+      else
+         part%balance = 1.0_wp
+      end if
+   end subroutine partition_elements
+
+   !> Partition a built model: connectivity and costs from its blocks.
+   subroutine partition_model(model, np, grp_ptr, grp_elem, part, error)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: np, grp_ptr(:), grp_elem(:)
+      type(partition_t), intent(out) :: part
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: conn(:, :), ewgt(:)
+      integer :: ib
+      allocate(conn(8, model%ne))
+      do ib = 1, size(model%blocks)
+         conn(:, model%blocks(ib)%elem) = model%blocks(ib)%conn
+      end do
+      call elem_costs(model, ewgt)
+      call partition_elements(conn, model%nn, ewgt, grp_ptr, grp_elem, np, part, error)
+   end subroutine partition_model
+
+   !> What rank r holds: its elements and nodes, shared-node lists per neighbour, and the
+   !> boundary conditions and loads on its nodes. A segment load is computed by the lowest
+   !> rank holding all of its nodes (error if no rank holds them all).
+   subroutine rank_part(model, part, r, rp, error)
+      type(model_t), intent(in) :: model
+      type(partition_t), intent(in) :: part
+      integer, intent(in) :: r
+      type(rank_part_t), intent(out) :: rp
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: local(:), cnt(:)
+      integer :: n, k, i, q, nl, w, j
+      logical :: all_here
+      rp%rank = r
+      rp%np = part%np
+      rp%ne_global = part%ne
+      rp%nn_global = part%nn
+      rp%elements = pack([(i, i = 1, part%ne)], part%epart == r)
+      ! local(n): position of node n in this rank's node list (0: not here)
+      allocate(local(part%nn))
+      local = 0
+      nl = 0
+      do n = 1, part%nn
+         if (any(part%nr_rank(part%nr_ptr(n):part%nr_ptr(n + 1) - 1) == r)) then
+            nl = nl + 1
+            local(n) = nl
+         end if
+      end do
+      allocate(rp%nodes(nl), rp%node_owner(nl))
+      do n = 1, part%nn
+         if (local(n) > 0) then
+            rp%nodes(local(n)) = n
+            rp%node_owner(local(n)) = part%node_owner(n)
+         end if
+      end do
+      ! shared-node lists: for each other rank q, the local nodes q holds too
+      allocate(cnt(0:part%np - 1))
+      cnt = 0
+      do i = 1, nl
+         n = rp%nodes(i)
+         do k = part%nr_ptr(n), part%nr_ptr(n + 1) - 1
+            q = part%nr_rank(k)
+            if (q /= r) cnt(q) = cnt(q) + 1
+         end do
+      end do
+      rp%nbr = pack([(q, q = 0, part%np - 1)], cnt > 0)
+      allocate(rp%nbr_ptr(size(rp%nbr) + 1))
+      rp%nbr_ptr(1) = 1
+      do k = 1, size(rp%nbr)
+         rp%nbr_ptr(k + 1) = rp%nbr_ptr(k) + cnt(rp%nbr(k))
+      end do
+      allocate(rp%nbr_nodes(rp%nbr_ptr(size(rp%nbr) + 1) - 1))
+      do k = 1, size(rp%nbr)
+         q = rp%nbr(k)
+         j = rp%nbr_ptr(k)
+         do i = 1, nl
+            n = rp%nodes(i)
+            if (any(part%nr_rank(part%nr_ptr(n):part%nr_ptr(n + 1) - 1) == q)) then
+               rp%nbr_nodes(j) = n
+               j = j + 1
+            end if
+         end do
+      end do
+      ! boundary conditions and loads restricted to the local nodes
+      rp%spcs = [integer ::]
+      rp%prescribed = [integer ::]
+      rp%node_loads = [integer ::]
+      rp%seg_loads = [integer ::]
+      rp%hist_nodes = [integer ::]
+      if (allocated(model%spcs)) &
+         rp%spcs = pack([(k, k = 1, size(model%spcs))], local(model%spcs(:)%node) > 0)
+      if (allocated(model%prescribed)) rp%prescribed = &
+         pack([(k, k = 1, size(model%prescribed))], local(model%prescribed(:)%node) > 0)
+      if (allocated(model%node_loads)) rp%node_loads = &
+         pack([(k, k = 1, size(model%node_loads))], local(model%node_loads(:)%node) > 0)
+      if (allocated(model%db%hist_nodes)) rp%hist_nodes = &
+         pack([(k, k = 1, size(model%db%hist_nodes))], local(model%db%hist_nodes) > 0)
+      if (allocated(model%seg_loads)) then
+         do k = 1, size(model%seg_loads)
+            associate (nd => model%seg_loads(k)%nodes)
+               ! the lowest rank holding all the segment's nodes computes it
+               q = -1
+               do i = part%nr_ptr(nd(1)), part%nr_ptr(nd(1) + 1) - 1
+                  all_here = .true.
+                  do j = 2, 4
+                     if (.not. any(part%nr_rank(part%nr_ptr(nd(j)):part%nr_ptr(nd(j) + 1) - 1) &
+                                   == part%nr_rank(i))) all_here = .false.
+                  end do
+                  if (all_here) then
+                     q = part%nr_rank(i)
+                     exit
+                  end if
+               end do
+               if (q < 0) then
+                  call set_error(error, '*LOAD_SEGMENT '//str(k)//': no rank holds all '// &
+                     'its nodes (the segment is not the face of an element)', EXIT_INPUT)
+                  return
+               end if
+               if (q == r) rp%seg_loads = [rp%seg_loads, k]
+            end associate
+         end do
+      end if
+      allocate(rp%wall_ptr(1))
+      rp%wall_ptr(1) = 1
+      rp%wall_nodes = [integer ::]
+      if (allocated(model%walls)) then
+         deallocate(rp%wall_ptr)
+         allocate(rp%wall_ptr(size(model%walls) + 1))
+         rp%wall_ptr(1) = 1
+         do w = 1, size(model%walls)
+            rp%wall_nodes = [rp%wall_nodes, pack(model%walls(w)%nodes, &
+                                                 local(model%walls(w)%nodes) > 0)]
+            rp%wall_ptr(w + 1) = size(rp%wall_nodes) + 1
+         end do
+      end if
+   end subroutine rank_part
+
+   !> The partition report: elements, weight, nodes, shared nodes and neighbours per rank,
+   !> the edge cut and the balance statistic max(weight)/mean(weight).
+   subroutine write_report(unit, part, deck, hash)
+      integer, intent(in) :: unit
+      type(partition_t), intent(in) :: part
+      character(*), intent(in) :: deck, hash
+      integer :: r, n, k, nshared_total
+      integer, allocatable :: nnb(:)
+      logical, allocatable :: adj(:, :)
+      allocate(adj(0:part%np - 1, 0:part%np - 1), nnb(0:part%np - 1))
+      adj = .false.
+      nshared_total = 0
+      do n = 1, part%nn
+         if (part%nr_ptr(n + 1) - part%nr_ptr(n) > 1) nshared_total = nshared_total + 1
+         do k = part%nr_ptr(n), part%nr_ptr(n + 1) - 1
+            do r = part%nr_ptr(n), part%nr_ptr(n + 1) - 1
+               if (r /= k) adj(part%nr_rank(k), part%nr_rank(r)) = .true.
+            end do
+         end do
+      end do
+      nnb = count(adj, dim=2)
+      write(unit, '(a)') 'dynx-part: partition of '//deck//' (deck content hash '//hash//')'
+      write(unit, '(a,i0,a,i0,a,i0,a)') 'ranks ', part%np, ', elements ', part%ne, &
+         ', nodes ', part%nn, ' (element graph: elements sharing a node; METIS k-way)'
+      write(unit, '(a,i0,a,i0,a)') 'element cost weights: ELFORM 1 = ', COST_HEX8_1PT, &
+         ', ELFORM 2 = ', COST_HEX8_SRI, ' (measured per element-cycle ratio)'
+      write(unit, '(a)') '  rank   elements     weight      nodes     shared  neighbours'
+      do r = 0, part%np - 1
+         write(unit, '(i6,4i11,i12)') r, part%rank_ne(r), part%rank_wgt(r), part%rank_nn(r), &
+            part%rank_nshared(r), nnb(r)
+      end do
+      write(unit, '(a,i0)') 'shared nodes (held by more than one rank): ', nshared_total
+      write(unit, '(a,i0)') 'edge cut (weighted): ', part%edgecut
+      write(unit, '(a,f8.4,a)') 'balance (max weight / mean weight): ', part%balance, &
+         '   (1.0 = perfect; 1.0-1.1 reasonable)'
+   end subroutine write_report
+end module dx_partition

@@ -1,0 +1,139 @@
+!> dynx-part: the ParaDyn-style preprocessor. Reads a deck (read_deck_input + build_model,
+!> as bin/dynx does), partitions its element graph with METIS (dx_partition), writes one
+!> HDF5 file per rank (dx_rank_file) and the partition report (stdout and DIR/partition.txt).
+!> Exit codes: 0 normal, 2 input error, 4 I/O failure.
+program dynx_part
+   use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+   use dx_error, only: error_t, EXIT_INPUT, EXIT_IO, exit_process, set_error
+   use dx_strings, only: str
+   use dx_log, only: log_error, log_info
+   use dx_model, only: model_t
+   use dx_model_input, only: model_input_t
+   use dx_deck, only: read_deck_input
+   use dx_model_build, only: build_model
+   use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report
+   use dx_rank_file, only: write_rank_file, rank_file_name, deck_content_hash
+   use dx_io_sys, only: sys_mkdir_p
+   implicit none
+   character(:), allocatable :: deck, outdir, arg, val
+   type(model_input_t) :: inp
+   type(model_t) :: model
+   type(partition_t) :: part
+   type(rank_part_t) :: rp
+   type(error_t), allocatable :: error
+   character(16) :: hash
+   logical :: ignore_unknown
+   integer :: i, n, np, ios, r, u
+   integer, allocatable :: grp_ptr(:), grp_elem(:)
+
+   np = 0
+   outdir = '.'
+   deck = ''
+   ignore_unknown = .false.
+   n = command_argument_count()
+   i = 0
+   do while (i < n)
+      i = i + 1
+      arg = get_arg(i)
+      select case (arg)
+      case ('-h', '--help')
+         call usage(); stop
+      case ('-n', '--nprocs')
+         i = i + 1; val = get_arg(i)
+         read(val, *, iostat=ios) np
+         if (ios /= 0 .or. np < 1) call die_usage('-n needs a positive integer, got '//val)
+      case ('-o', '--outdir')
+         i = i + 1; outdir = get_arg(i)
+      case ('--ignore-unknown')
+         ignore_unknown = .true.
+      case default
+         if (arg(1:1) == '-' .or. len(deck) > 0) call die_usage('unknown argument '//arg)
+         deck = arg
+      end select
+   end do
+   if (len(deck) == 0) call die_usage('no input deck: dynx-part deck.k -n NP [-o DIR]')
+   if (np < 1) call die_usage('no number of ranks: dynx-part deck.k -n NP [-o DIR]')
+
+   call read_deck_input(deck, inp, error, ignore_unknown)
+   if (allocated(error)) call die(error)
+   model%deck_file = deck
+   call build_model(inp, model, error)
+   if (allocated(error)) call die(error)
+   call deck_content_hash(inp%files, hash, error)
+   if (allocated(error)) call die(error)
+   if (np > model%ne) then
+      call set_error(error, deck//': cannot split '//str(model%ne)//' elements into '// &
+                     str(np)//' ranks', EXIT_INPUT)
+      call die(error)
+   end if
+
+   ! element groups that must stay on one rank: none yet. The contact pairs of the deck
+   ! (*CONTACT_...) will feed in here: one group per pair, holding the elements with a face
+   ! on either surface of the pair.
+   allocate(grp_ptr(1), grp_elem(0))
+   grp_ptr(1) = 1
+   call partition_model(model, np, grp_ptr, grp_elem, part, error)
+   if (allocated(error)) call die(error)
+
+   call sys_mkdir_p(outdir, error)
+   if (allocated(error)) call die(error)
+   do r = 0, np - 1
+      call rank_part(model, part, r, rp, error)
+      if (allocated(error)) call die(error)
+      call write_rank_file(rank_file_name(outdir, r), rp, hash, error)
+      if (allocated(error)) call die(error)
+   end do
+   call write_report(output_unit, part, deck, hash)
+   open(newunit=u, file=outdir//'/partition.txt', status='replace', action='write', iostat=ios)
+   if (ios /= 0) then
+      call set_error(error, 'cannot write '//outdir//'/partition.txt', EXIT_IO)
+      call die(error)
+   end if
+   call write_report(u, part, deck, hash)
+   close(u)
+   call log_info('dynx-part: wrote '//str(np)//' rank files '//rank_file_name(outdir, 0)// &
+                 ' ... and '//outdir//'/partition.txt')
+
+contains
+
+   function get_arg(k) result(a)
+      integer, intent(in) :: k
+      character(:), allocatable :: a
+      integer :: l
+      if (k > command_argument_count()) call die_usage('missing value after the last option')
+      call get_command_argument(k, length=l)
+      allocate(character(l) :: a)
+      call get_command_argument(k, a)
+   end function get_arg
+
+   subroutine usage()
+      write(output_unit, '(a)') &
+         'usage: dynx-part deck.k -n NP [-o DIR] [--ignore-unknown]', &
+         '', &
+         'Partitions the deck''s elements into NP ranks with METIS and writes', &
+         '  DIR/rank_00000.h5 ... one HDF5 file per rank (elements, nodes, shared nodes,', &
+         '                        boundary conditions and loads on its nodes)', &
+         '  DIR/partition.txt     the partition report (also printed)', &
+         '', &
+         'options:', &
+         '  -n, --nprocs NP      number of ranks (required)', &
+         '  -o, --outdir DIR     output directory (default: current directory)', &
+         '  --ignore-unknown     unknown keywords are warnings, not errors', &
+         '  -h, --help           this text', &
+         '', &
+         'exit codes: 0 normal, 2 input error, 4 I/O failure'
+   end subroutine usage
+
+   subroutine die_usage(msg)
+      character(*), intent(in) :: msg
+      call log_error(msg)
+      write(error_unit, '(a)') 'dynx-part: try dynx-part --help'
+      call exit_process(EXIT_INPUT)
+   end subroutine die_usage
+
+   subroutine die(err)
+      type(error_t), intent(in) :: err
+      call log_error(err%message)
+      call exit_process(err%code)
+   end subroutine die
+end program dynx_part
