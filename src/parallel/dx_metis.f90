@@ -11,7 +11,7 @@ module dx_metis
    use dx_strings, only: str
    implicit none
    private
-   public :: metis_part_kway, METIS_SEED
+   public :: metis_part_kway, METIS_SEED, METIS_KWAY, METIS_RECURSIVE
 
    integer, parameter :: idx_t = c_int32_t
    integer, parameter :: METIS_NOPTIONS = 40
@@ -21,6 +21,8 @@ module dx_metis
    integer, parameter :: METIS_OK = 1, METIS_ERROR_INPUT = -2, METIS_ERROR_MEMORY = -3
    !> the fixed seed (any fixed value gives a reproducible partition)
    integer, parameter :: METIS_SEED = 20260
+   !> methods: k-way (the default) and recursive bisection
+   integer, parameter :: METIS_KWAY = 1, METIS_RECURSIVE = 2
 
    interface
       function c_metis_setdefaultoptions(options) bind(C, name='METIS_SetDefaultOptions') &
@@ -42,14 +44,29 @@ module dx_metis
          integer(idx_t), intent(out) :: part(*)
          integer(idx_t) :: rc
       end function c_metis_partgraphkway
+
+      function c_metis_partgraphrecursive(nvtxs, ncon, xadj, adjncy, vwgt, vsize, adjwgt, &
+            nparts, tpwgts, ubvec, options, edgecut, part) &
+            bind(C, name='METIS_PartGraphRecursive') result(rc)
+         import :: idx_t, c_ptr
+         integer(idx_t), intent(in) :: nvtxs, ncon, nparts
+         integer(idx_t), intent(in) :: xadj(*), adjncy(*), vwgt(*), adjwgt(*)
+         type(c_ptr), value :: vsize, tpwgts, ubvec
+         integer(idx_t), intent(in) :: options(*)
+         integer(idx_t), intent(out) :: edgecut
+         integer(idx_t), intent(out) :: part(*)
+         integer(idx_t) :: rc
+      end function c_metis_partgraphrecursive
    end interface
 
 contains
 
    !> Partition the graph (xadj(nv+1), 0-based adjncy, vertex weights vwgt, edge weights
-   !> adjwgt) into np parts; part(nv) in 0..np-1. np = 1 calls nothing.
-   subroutine metis_part_kway(nv, xadj, adjncy, vwgt, adjwgt, np, part, edgecut, error)
+   !> adjwgt) into np parts; part(nv) in 0..np-1. np = 1 calls nothing. method: METIS_KWAY
+   !> (default, METIS_PartGraphKway) or METIS_RECURSIVE (METIS_PartGraphRecursive).
+   subroutine metis_part_kway(nv, xadj, adjncy, vwgt, adjwgt, np, part, edgecut, error, method)
       integer, intent(in) :: nv, np
+      integer, intent(in), optional :: method
       integer, intent(in) :: xadj(:), adjncy(:), vwgt(:), adjwgt(:)
       integer, intent(out) :: part(:)
       integer, intent(out) :: edgecut
@@ -83,15 +100,26 @@ contains
       else
          adj = [0_idx_t]; aw = [1_idx_t]
       end if
-      rc = c_metis_partgraphkway(nvtxs, ncon, int(xadj, idx_t), adj, int(vwgt, idx_t), &
-              c_null_ptr, aw, nparts, c_null_ptr, c_null_ptr, options, cut, p)
+      if (present(method)) then
+         if (method == METIS_RECURSIVE) then
+            rc = c_metis_partgraphrecursive(nvtxs, ncon, int(xadj, idx_t), adj, &
+                    int(vwgt, idx_t), c_null_ptr, aw, nparts, c_null_ptr, c_null_ptr, &
+                    options, cut, p)
+         else
+            rc = c_metis_partgraphkway(nvtxs, ncon, int(xadj, idx_t), adj, int(vwgt, idx_t), &
+                    c_null_ptr, aw, nparts, c_null_ptr, c_null_ptr, options, cut, p)
+         end if
+      else
+         rc = c_metis_partgraphkway(nvtxs, ncon, int(xadj, idx_t), adj, int(vwgt, idx_t), &
+                 c_null_ptr, aw, nparts, c_null_ptr, c_null_ptr, options, cut, p)
+      end if
       if (rc /= METIS_OK) then
          if (rc == METIS_ERROR_MEMORY) then
-            call set_error(error, 'METIS_PartGraphKway: out of memory', EXIT_INPUT)
+            call set_error(error, 'METIS partitioning: out of memory', EXIT_INPUT)
          else if (rc == METIS_ERROR_INPUT) then
-            call set_error(error, 'METIS_PartGraphKway: input error (code -2)', EXIT_INPUT)
+            call set_error(error, 'METIS partitioning: input error (code -2)', EXIT_INPUT)
          else
-            call set_error(error, 'METIS_PartGraphKway failed (code '//str(int(rc))//')', &
+            call set_error(error, 'METIS partitioning failed (code '//str(int(rc))//')', &
                            EXIT_INPUT)
          end if
          return

@@ -20,7 +20,7 @@ module dx_partition
    use dx_error, only: error_t, set_error, EXIT_INPUT
    use dx_strings, only: str
    use dx_model, only: model_t, ETYPE_HEX8_SRI
-   use dx_metis, only: metis_part_kway
+   use dx_metis, only: metis_part_kway, METIS_RECURSIVE
    implicit none
    private
    public :: partition_t, rank_part_t, element_graph, condense_groups, partition_model, &
@@ -329,6 +329,22 @@ contains
          allocate(vpart(nv))
          call metis_part_kway(nv, xadj, adjncy, vwgt, adjwgt, np, vpart, part%edgecut, error)
          if (allocated(error)) return
+         ! k-way can leave ranks empty or unbalanced on small graphs; then recursive
+         ! bisection is tried too and the partition with the lighter heaviest rank is kept
+         if (max_weight(vpart, vwgt, np) > 1.1_wp*real(sum(vwgt), wp)/real(np, wp)) then
+            block
+               integer, allocatable :: vpart2(:)
+               integer :: cut2
+               allocate(vpart2(nv))
+               call metis_part_kway(nv, xadj, adjncy, vwgt, adjwgt, np, vpart2, cut2, error, &
+                                    METIS_RECURSIVE)
+               if (allocated(error)) return
+               if (max_weight(vpart2, vwgt, np) < max_weight(vpart, vwgt, np)) then
+                  vpart = vpart2
+                  part%edgecut = cut2
+               end if
+            end block
+         end if
          part%epart = vpart(vtx)
       end if
       ! ranks of each node (ascending, distinct); a node of no element goes to rank 0
@@ -386,6 +402,17 @@ contains
          part%balance = 1.0_wp
       end if
    end subroutine partition_elements
+
+   !> Heaviest rank weight of a vertex partition.
+   integer function max_weight(vpart, vwgt, np) result(m)
+      integer, intent(in) :: vpart(:), vwgt(:), np
+      integer :: w(0:np - 1), v
+      w = 0
+      do v = 1, size(vpart)
+         w(vpart(v)) = w(vpart(v)) + vwgt(v)
+      end do
+      m = maxval(w)
+   end function max_weight
 
    !> Partition a built model: connectivity and costs from its blocks.
    subroutine partition_model(model, np, grp_ptr, grp_elem, part, error)

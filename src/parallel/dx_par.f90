@@ -1,0 +1,392 @@
+!> The MPI layer: the only module that uses mpi_f08. A serial run needs no mpirun: MPI_Init
+!> is called only when the process was started by an MPI launcher (Open MPI's
+!> OMPI_COMM_WORLD_SIZE, or PMI_SIZE / PMIX_RANK), and every call below is then a no-op with
+!> one rank (no separate serial code path).
+!>
+!> Shared-node sums in a fixed order (OpenRadioss /PARITH/ON; Hoover et al., ParaDyn, LLNL
+!> UCRL-53868-95): the force on a node shared by several ranks is the sum of its elements'
+!> contributions taken in global element order (the serial scatter order), whatever the
+!> partition. Each rank keeps its contributions to shared nodes apart, tagged by their
+!> element's global order key; par_shared_setup exchanges the keys once and builds, for each
+!> shared node, the merged list of contributions (own and received) sorted by key;
+!> par_shared_sum then exchanges only the values, once per call, and every rank sharing a
+!> node forms the same sum from 0 in the same order: bit for bit the serial sum.
+!> Module state: the communicator, this rank, the number of ranks, whether MPI is on.
+module dx_par
+   use, intrinsic :: iso_fortran_env, only: error_unit, int64
+   use mpi_f08
+   use dx_kinds, only: wp
+   use dx_error, only: error_t, set_error, exit_process, EXIT_NUMERIC
+   use dx_strings, only: str
+   implicit none
+   private
+   public :: par_init, par_finalize, par_rank, par_size, par_active, par_barrier, &
+             par_allreduce, par_abort, shared_sum_t, par_shared_setup, par_shared_sum, &
+             PAR_SUM, PAR_MIN, PAR_MAX
+
+   integer, parameter :: PAR_SUM = 1, PAR_MIN = 2, PAR_MAX = 3
+   integer, parameter :: TAG_COUNT = 101, TAG_KEYS = 102, TAG_VALUES = 103
+
+   type(MPI_Comm), save :: comm
+   logical, save :: mpi_on = .false.
+   integer, save :: my_rank = 0, nranks = 1
+
+   !> A shared-node summation plan (built once, used every cycle).
+   type :: shared_sum_t
+      integer :: nshared = 0            !< shared nodes of this rank, numbered 1..nshared
+      integer :: ncontrib = 0           !< own contributions to shared nodes
+      integer, allocatable :: nbr(:)    !< neighbour ranks
+      integer, allocatable :: send_ptr(:), send_idx(:)   !< own contributions sent to nbr(k)
+      integer, allocatable :: recv_ptr(:)                !< received contributions from nbr(k)
+      integer, allocatable :: ord_ptr(:), ord_src(:)     !< per shared node: sources by key
+   end type shared_sum_t
+
+   interface par_allreduce
+      module procedure allreduce_r0, allreduce_r1, allreduce_i0, allreduce_i1
+   end interface par_allreduce
+
+contains
+
+   !> Start MPI when launched by mpirun/srun (else run serial with one rank).
+   subroutine par_init(error)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ierr, l
+      logical :: launched
+      launched = .false.
+      call get_environment_variable('OMPI_COMM_WORLD_SIZE', length=l)
+      if (l > 0) launched = .true.
+      call get_environment_variable('PMI_SIZE', length=l)
+      if (l > 0) launched = .true.
+      call get_environment_variable('PMIX_RANK', length=l)
+      if (l > 0) launched = .true.
+      if (.not. launched) return
+      call MPI_Init(ierr)
+      if (ierr /= MPI_SUCCESS) then
+         call set_error(error, 'MPI_Init failed (code '//str(ierr)//')', EXIT_NUMERIC)
+         return
+      end if
+      call MPI_Comm_dup(MPI_COMM_WORLD, comm, ierr)
+      call check(ierr, 'MPI_Comm_dup')
+      ! errors come back as codes, so a failing call can abort all ranks with a message
+      call MPI_Comm_set_errhandler(comm, MPI_ERRORS_RETURN, ierr)
+      call check(ierr, 'MPI_Comm_set_errhandler')
+      call MPI_Comm_rank(comm, my_rank, ierr)
+      call check(ierr, 'MPI_Comm_rank')
+      call MPI_Comm_size(comm, nranks, ierr)
+      call check(ierr, 'MPI_Comm_size')
+      mpi_on = .true.
+   end subroutine par_init
+
+   !> Finalize MPI if it was started.
+   subroutine par_finalize()
+      integer :: ierr
+      if (.not. mpi_on) return
+      call MPI_Comm_free(comm, ierr)
+      call MPI_Finalize(ierr)
+      mpi_on = .false.
+   end subroutine par_finalize
+
+   integer function par_rank()
+      par_rank = my_rank
+   end function par_rank
+
+   integer function par_size()
+      par_size = nranks
+   end function par_size
+
+   !> Whether MPI was started (false for a serial run).
+   logical function par_active()
+      par_active = mpi_on
+   end function par_active
+
+   subroutine par_barrier()
+      integer :: ierr
+      if (.not. mpi_on) return
+      call MPI_Barrier(comm, ierr)
+      call check(ierr, 'MPI_Barrier')
+   end subroutine par_barrier
+
+   !> Stop every rank: the message names this rank; exit code code (MPI_Abort under MPI).
+   subroutine par_abort(msg, code)
+      character(*), intent(in) :: msg
+      integer, intent(in) :: code
+      integer :: ierr
+      if (mpi_on) then
+         write(error_unit, '(a)') 'dynx: error: rank '//str(my_rank)//' of '//str(nranks)// &
+            ': '//msg
+         flush(error_unit)
+         call MPI_Abort(MPI_COMM_WORLD, code, ierr)
+      end if
+      write(error_unit, '(a)') 'dynx: error: '//msg
+      call exit_process(code)
+   end subroutine par_abort
+
+   !> A failed MPI call aborts all ranks, naming the call and the rank.
+   subroutine check(ierr, what)
+      integer, intent(in) :: ierr
+      character(*), intent(in) :: what
+      character(len=MPI_MAX_ERROR_STRING) :: s
+      integer :: l, ie
+      if (ierr == MPI_SUCCESS) return
+      call MPI_Error_string(ierr, s, l, ie)
+      call par_abort(what//' failed: '//s(1:l), EXIT_NUMERIC)
+   end subroutine check
+
+   function reduce_op(op) result(o)
+      integer, intent(in) :: op
+      type(MPI_Op) :: o
+      select case (op)
+      case (PAR_MIN)
+         o = MPI_MIN
+      case (PAR_MAX)
+         o = MPI_MAX
+      case default
+         o = MPI_SUM
+      end select
+   end function reduce_op
+
+   !> x = op over ranks of x (PAR_SUM, PAR_MIN, PAR_MAX); all ranks get the result.
+   !> A sum over ranks depends on MPI's reduction order: use it for counts and flags, and
+   !> the fixed-order paths for anything that must match the serial run bit for bit.
+   subroutine allreduce_r0(x, op)
+      real(wp), intent(inout) :: x
+      integer, intent(in) :: op
+      real(wp) :: y(1)
+      integer :: ierr
+      if (.not. mpi_on) return
+      call MPI_Allreduce([x], y, 1, MPI_DOUBLE_PRECISION, reduce_op(op), comm, ierr)
+      call check(ierr, 'MPI_Allreduce')
+      x = y(1)
+   end subroutine allreduce_r0
+
+   subroutine allreduce_r1(x, op)
+      real(wp), intent(inout) :: x(:)
+      integer, intent(in) :: op
+      real(wp) :: y(size(x))
+      integer :: ierr
+      if (.not. mpi_on) return
+      call MPI_Allreduce(x, y, size(x), MPI_DOUBLE_PRECISION, reduce_op(op), comm, ierr)
+      call check(ierr, 'MPI_Allreduce')
+      x = y
+   end subroutine allreduce_r1
+
+   subroutine allreduce_i0(x, op)
+      integer, intent(inout) :: x
+      integer, intent(in) :: op
+      integer :: y(1)
+      integer :: ierr
+      if (.not. mpi_on) return
+      call MPI_Allreduce([x], y, 1, MPI_INTEGER, reduce_op(op), comm, ierr)
+      call check(ierr, 'MPI_Allreduce')
+      x = y(1)
+   end subroutine allreduce_i0
+
+   subroutine allreduce_i1(x, op)
+      integer, intent(inout) :: x(:)
+      integer, intent(in) :: op
+      integer :: y(size(x))
+      integer :: ierr
+      if (.not. mpi_on) return
+      call MPI_Allreduce(x, y, size(x), MPI_INTEGER, reduce_op(op), comm, ierr)
+      call check(ierr, 'MPI_Allreduce')
+      x = y
+   end subroutine allreduce_i1
+
+   !> Build the plan. nshared: this rank's shared nodes (local numbering 1..nshared);
+   !> nbr(k) the neighbour ranks and nbr_ptr/nbr_snode the shared nodes (local numbers) of
+   !> each, listed in the same (global-node) order on both sides; c_node(i), c_key(i): the
+   !> shared node and the global order key of own contribution i (keys distinct over all
+   !> ranks for one node).
+   subroutine par_shared_setup(plan, nshared, nbr, nbr_ptr, nbr_snode, c_node, c_key)
+      type(shared_sum_t), intent(out) :: plan
+      integer, intent(in) :: nshared, nbr(:), nbr_ptr(:), nbr_snode(:), c_node(:), c_key(:)
+      integer :: nnb, k, i, j, s, nc, n, m, ierr, pos
+      integer, allocatable :: own_ptr(:), own_lst(:), fill(:), cnt_send(:), cnt_recv(:)
+      integer, allocatable :: keys_send(:), keys_recv(:), rcnt_ptr(:), rkey_ptr(:)
+      integer, allocatable :: src(:), key(:)
+      type(MPI_Request), allocatable :: req(:)
+      nnb = size(nbr)
+      nc = size(c_node)
+      plan%nshared = nshared
+      plan%ncontrib = nc
+      plan%nbr = nbr
+      ! own contributions per shared node, sorted by key
+      allocate(own_ptr(nshared + 1), own_lst(nc), fill(nshared))
+      own_ptr = 0
+      do i = 1, nc
+         own_ptr(c_node(i) + 1) = own_ptr(c_node(i) + 1) + 1
+      end do
+      own_ptr(1) = 1
+      do s = 1, nshared
+         own_ptr(s + 1) = own_ptr(s + 1) + own_ptr(s)
+      end do
+      fill = 0
+      do i = 1, nc
+         s = c_node(i)
+         own_lst(own_ptr(s) + fill(s)) = i
+         fill(s) = fill(s) + 1
+      end do
+      do s = 1, nshared
+         call sort_by_key(own_lst(own_ptr(s):own_ptr(s + 1) - 1), c_key)
+      end do
+      ! what goes to neighbour k: for each node shared with k (in list order) its own
+      ! contributions in key order; counts per node first, then keys
+      allocate(plan%send_ptr(nnb + 1))
+      plan%send_ptr(1) = 1
+      do k = 1, nnb
+         n = 0
+         do j = nbr_ptr(k), nbr_ptr(k + 1) - 1
+            s = nbr_snode(j)
+            n = n + own_ptr(s + 1) - own_ptr(s)
+         end do
+         plan%send_ptr(k + 1) = plan%send_ptr(k) + n
+      end do
+      allocate(plan%send_idx(plan%send_ptr(nnb + 1) - 1))
+      allocate(cnt_send(nbr_ptr(nnb + 1) - 1), cnt_recv(nbr_ptr(nnb + 1) - 1))
+      pos = 0
+      do k = 1, nnb
+         do j = nbr_ptr(k), nbr_ptr(k + 1) - 1
+            s = nbr_snode(j)
+            cnt_send(j) = own_ptr(s + 1) - own_ptr(s)
+            do i = own_ptr(s), own_ptr(s + 1) - 1
+               pos = pos + 1
+               plan%send_idx(pos) = own_lst(i)
+            end do
+         end do
+      end do
+      keys_send = c_key(plan%send_idx)
+      allocate(req(2*nnb))
+      if (nnb > 0) then
+         do k = 1, nnb
+            associate (a => nbr_ptr(k), b => nbr_ptr(k + 1) - 1)
+               call MPI_Irecv(cnt_recv(a:b), b - a + 1, MPI_INTEGER, nbr(k), TAG_COUNT, comm, &
+                              req(k), ierr)
+               call check(ierr, 'MPI_Irecv (shared-node counts)')
+               call MPI_Isend(cnt_send(a:b), b - a + 1, MPI_INTEGER, nbr(k), TAG_COUNT, comm, &
+                              req(nnb + k), ierr)
+               call check(ierr, 'MPI_Isend (shared-node counts)')
+            end associate
+         end do
+         call MPI_Waitall(2*nnb, req, MPI_STATUSES_IGNORE, ierr)
+         call check(ierr, 'MPI_Waitall (shared-node counts)')
+      end if
+      ! received contributions from neighbour k: recv_ptr
+      allocate(plan%recv_ptr(nnb + 1), rcnt_ptr(size(cnt_recv) + 1))
+      plan%recv_ptr(1) = 1
+      do k = 1, nnb
+         plan%recv_ptr(k + 1) = plan%recv_ptr(k) + sum(cnt_recv(nbr_ptr(k):nbr_ptr(k + 1) - 1))
+      end do
+      rcnt_ptr(1) = 1
+      do j = 1, size(cnt_recv)
+         rcnt_ptr(j + 1) = rcnt_ptr(j) + cnt_recv(j)
+      end do
+      allocate(keys_recv(plan%recv_ptr(nnb + 1) - 1))
+      if (nnb > 0) then
+         do k = 1, nnb
+            associate (a => plan%recv_ptr(k), b => plan%recv_ptr(k + 1) - 1, &
+                       c => plan%send_ptr(k), d => plan%send_ptr(k + 1) - 1)
+               call MPI_Irecv(keys_recv(a:b), b - a + 1, MPI_INTEGER, nbr(k), TAG_KEYS, comm, &
+                              req(k), ierr)
+               call check(ierr, 'MPI_Irecv (shared-node keys)')
+               call MPI_Isend(keys_send(c:d), d - c + 1, MPI_INTEGER, nbr(k), TAG_KEYS, comm, &
+                              req(nnb + k), ierr)
+               call check(ierr, 'MPI_Isend (shared-node keys)')
+            end associate
+         end do
+         call MPI_Waitall(2*nnb, req, MPI_STATUSES_IGNORE, ierr)
+         call check(ierr, 'MPI_Waitall (shared-node keys)')
+      end if
+      ! per shared node: all sources (own i -> i; received j -> nc + j), sorted by key
+      allocate(rkey_ptr(nshared + 1))
+      rkey_ptr = 0
+      do j = 1, size(cnt_recv)
+         s = nbr_snode(j)
+         rkey_ptr(s + 1) = rkey_ptr(s + 1) + cnt_recv(j)
+      end do
+      allocate(plan%ord_ptr(nshared + 1))
+      plan%ord_ptr(1) = 1
+      do s = 1, nshared
+         plan%ord_ptr(s + 1) = plan%ord_ptr(s) + (own_ptr(s + 1) - own_ptr(s)) + rkey_ptr(s + 1)
+      end do
+      allocate(plan%ord_src(plan%ord_ptr(nshared + 1) - 1))
+      allocate(key(nc + size(keys_recv)))
+      key(1:nc) = c_key
+      key(nc + 1:) = keys_recv
+      fill = 0
+      do s = 1, nshared
+         do i = own_ptr(s), own_ptr(s + 1) - 1
+            plan%ord_src(plan%ord_ptr(s) + fill(s)) = own_lst(i)
+            fill(s) = fill(s) + 1
+         end do
+      end do
+      do j = 1, size(cnt_recv)
+         s = nbr_snode(j)
+         do m = rcnt_ptr(j), rcnt_ptr(j + 1) - 1
+            plan%ord_src(plan%ord_ptr(s) + fill(s)) = nc + m
+            fill(s) = fill(s) + 1
+         end do
+      end do
+      do s = 1, nshared
+         src = plan%ord_src(plan%ord_ptr(s):plan%ord_ptr(s + 1) - 1)
+         call sort_by_key(src, key)
+         plan%ord_src(plan%ord_ptr(s):plan%ord_ptr(s + 1) - 1) = src
+      end do
+   end subroutine par_shared_setup
+
+   !> Sort the indices idx by key(idx) (insertion sort: a node has a few dozen at most).
+   subroutine sort_by_key(idx, key)
+      integer, intent(inout) :: idx(:)
+      integer, intent(in) :: key(:)
+      integer :: i, j, t
+      do i = 2, size(idx)
+         t = idx(i)
+         j = i - 1
+         do while (j >= 1)
+            if (key(idx(j)) <= key(t)) exit
+            idx(j + 1) = idx(j)
+            j = j - 1
+         end do
+         idx(j + 1) = t
+      end do
+   end subroutine sort_by_key
+
+   !> res(:, s) = sum over all ranks' contributions to shared node s, from 0 in key order;
+   !> cval(:, i) is own contribution i (as in par_shared_setup). One exchange.
+   subroutine par_shared_sum(plan, cval, res)
+      type(shared_sum_t), intent(in) :: plan
+      real(wp), intent(in) :: cval(:, :)
+      real(wp), intent(out) :: res(:, :)
+      real(wp), allocatable :: buf(:, :), sendbuf(:, :)
+      type(MPI_Request), allocatable :: req(:)
+      integer :: nc, nr, ncomp, k, s, i, ierr, nnb
+      ncomp = size(cval, 1)
+      nc = plan%ncontrib
+      nnb = size(plan%nbr)
+      nr = plan%recv_ptr(nnb + 1) - 1
+      allocate(buf(ncomp, nc + nr))
+      buf(:, 1:nc) = cval(:, 1:nc)
+      if (nnb > 0) then
+         sendbuf = cval(:, plan%send_idx)
+         allocate(req(2*nnb))
+         do k = 1, nnb
+            associate (a => plan%recv_ptr(k), b => plan%recv_ptr(k + 1) - 1, &
+                       c => plan%send_ptr(k), d => plan%send_ptr(k + 1) - 1)
+               call MPI_Irecv(buf(:, nc + a:nc + b), ncomp*(b - a + 1), MPI_DOUBLE_PRECISION, &
+                              plan%nbr(k), TAG_VALUES, comm, req(k), ierr)
+               call check(ierr, 'MPI_Irecv (shared-node sum)')
+               call MPI_Isend(sendbuf(:, c:d), ncomp*(d - c + 1), MPI_DOUBLE_PRECISION, &
+                              plan%nbr(k), TAG_VALUES, comm, req(nnb + k), ierr)
+               call check(ierr, 'MPI_Isend (shared-node sum)')
+            end associate
+         end do
+         call MPI_Waitall(2*nnb, req, MPI_STATUSES_IGNORE, ierr)
+         call check(ierr, 'MPI_Waitall (shared-node sum)')
+      end if
+      do s = 1, plan%nshared
+         res(:, s) = 0.0_wp
+         do i = plan%ord_ptr(s), plan%ord_ptr(s + 1) - 1
+            res(:, s) = res(:, s) + buf(:, plan%ord_src(i))
+         end do
+      end do
+   end subroutine par_shared_sum
+end module dx_par
