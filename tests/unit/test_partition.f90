@@ -1,0 +1,398 @@
+!> Unit tests of the partitioner (dx_partition, dx_metis), the checksum (dx_checksum) and the
+!> per-rank files (dx_rank_file): published check values, hand-counted graphs, invariants
+!> of the partition (every element on exactly one rank, symmetric shared-node lists, groups
+!> whole on one rank, reproducible), the balance statistic, and the rank-file round trip
+!> with its error paths (another NP, another deck, another rank, missing, corrupt).
+program test_partition
+   use, intrinsic :: iso_fortran_env, only: int8, int64
+   use dx_kinds, only: wp
+   use dx_error, only: error_t, EXIT_INPUT, EXIT_IO
+   use dx_checksum, only: checksum_t
+   use dx_model, only: model_t, spc_t, load_segment_t
+   use dx_model_input, only: model_input_t
+   use dx_deck, only: read_deck_input
+   use dx_model_build, only: build_model
+   use dx_partition, only: partition_t, rank_part_t, element_graph, condense_groups, &
+                           partition_elements, partition_model, rank_part
+   use dx_rank_file, only: write_rank_file, read_rank_file, rank_file_name, deck_content_hash
+   use dx_io_sys, only: sys_mkdir_p
+   use dx_assert, only: check, check_close, assert_summary
+   implicit none
+   character(*), parameter :: TMP = 'build/test_partition'
+   type(error_t), allocatable :: error
+
+   call sys_mkdir_p(TMP, error)
+   if (allocated(error)) error stop 'cannot create '//TMP
+   call test_checksum()
+   call test_condense()
+   call test_graph()
+   call test_box_partitions()
+   call test_bcs_on_ranks()
+   call test_rank_files()
+   call assert_summary()
+
+contains
+
+   subroutine test_checksum()
+      type(checksum_t) :: c1, c2, c3
+      character(16) :: h
+      write(*, '(a)') 'checksum'
+      call c1%add_text('123456789')
+      ! CRC-32/IEEE check value of '123456789' (Rocksoft catalogue): CBF43926
+      h = c1%hex()
+      call check(h(1:8) == 'CBF43926', 'CRC-32 of "123456789" = CBF43926')
+      call c2%add_text('a')
+      ! FNV-1a 32-bit of 'a' (Fowler-Noll-Vo test vectors): E40C292C
+      h = c2%hex()
+      call check(h(9:16) == 'E40C292C', 'FNV-1a-32 of "a" = E40C292C')
+      call c3%add_ints([1, 2])
+      call c2%add_ints([1])
+      call c2%add_ints([2])
+      call check(c3%hex() /= c2%hex(), 'length-prefixed arrays: [1,2] differs from [1],[2]')
+   end subroutine test_checksum
+
+   !> Synthetic groups: {2,5,7}, {7,9} (overlap: merge), {1}, {} over 10 elements.
+   subroutine test_condense()
+      integer, allocatable :: vtx(:), vwgt(:)
+      integer :: nv
+      write(*, '(a)') 'condense_groups'
+      call condense_groups(10, [1, 1, 1, 1, 1, 1, 8, 1, 1, 1], [1, 4, 6, 7, 7], &
+                           [2, 5, 7, 7, 9, 1], vtx, nv, vwgt, error)
+      call check(.not. allocated(error), 'condense: no error')
+      call check(nv == 7, 'condense: 10 elements, groups {2,5,7}+{7,9} merged -> 7 vertices')
+      call check(all(vtx == [1, 2, 3, 4, 2, 5, 2, 6, 2, 7]), 'condense: vertex of each element')
+      call check(vwgt(2) == 11 .and. sum(vwgt) == 17, &
+                 'condense: super vertex weight = sum of its 4 element weights (1+1+8+1)')
+      call condense_groups(3, [1, 1, 1], [1, 2], [4], vtx, nv, vwgt, error)
+      call check(allocated(error), 'condense: element index out of range is an error')
+      if (allocated(error)) call check(error%code == EXIT_INPUT, 'condense: exit code 2')
+   end subroutine test_condense
+
+   !> Structured box of nx*ny*nz hex8 (nodes numbered i fastest).
+   subroutine box(nx, ny, nz, conn, nn)
+      integer, intent(in) :: nx, ny, nz
+      integer, allocatable, intent(out) :: conn(:, :)
+      integer, intent(out) :: nn
+      integer :: i, j, k, e
+      allocate(conn(8, nx*ny*nz))
+      nn = (nx + 1)*(ny + 1)*(nz + 1)
+      e = 0
+      do k = 0, nz - 1
+         do j = 0, ny - 1
+            do i = 0, nx - 1
+               e = e + 1
+               conn(:, e) = [gid(i, j, k, nx, ny), gid(i + 1, j, k, nx, ny), &
+                  gid(i + 1, j + 1, k, nx, ny), gid(i, j + 1, k, nx, ny), &
+                  gid(i, j, k + 1, nx, ny), gid(i + 1, j, k + 1, nx, ny), &
+                  gid(i + 1, j + 1, k + 1, nx, ny), gid(i, j + 1, k + 1, nx, ny)]
+            end do
+         end do
+      end do
+   end subroutine box
+
+   pure integer function gid(a, b, c, nx, ny)
+      integer, intent(in) :: a, b, c, nx, ny
+      gid = 1 + a + (nx + 1)*(b + (ny + 1)*c)
+   end function gid
+
+   subroutine test_graph()
+      integer, allocatable :: conn(:, :), xadj(:), adjncy(:), adjwgt(:), vtx(:)
+      integer :: nn, c, e
+      write(*, '(a)') 'element_graph'
+      call box(2, 1, 1, conn, nn)
+      vtx = [1, 2]
+      call element_graph(conn, nn, vtx, 2, xadj, adjncy, adjwgt)
+      call check(all(xadj == [0, 1, 2]) .and. all(adjncy == [1, 0]) .and. all(adjwgt == 4), &
+                 'two hexes sharing a face: one edge each way, weight 4 shared nodes')
+      call box(3, 3, 3, conn, nn)
+      vtx = [(e, e = 1, 27)]
+      call element_graph(conn, nn, vtx, 27, xadj, adjncy, adjwgt)
+      c = 14   ! the centre element of the 3x3x3 box
+      call check(xadj(c + 1) - xadj(c) == 26, '3x3x3 box: centre element has 26 neighbours')
+      call check(sum(adjwgt(xadj(c) + 1:xadj(c + 1))) == 6*4 + 12*2 + 8*1, &
+                 '3x3x3 box: centre edge weights 6 faces x4 + 12 edges x2 + 8 corners x1 = 56')
+      call check(xadj(2) - xadj(1) == 7, '3x3x3 box: corner element has 7 neighbours')
+      call check(sum(xadj(2:) - xadj(:27)) == size(adjncy) .and. &
+                 mod(size(adjncy), 2) == 0, '3x3x3 box: adjacency is symmetric in size')
+      ! a group {1,27} (opposite corners) condensed: its vertex touches both corners' sets
+      vtx = [1, (e, e = 2, 26), 1]
+      call element_graph(conn, nn, vtx, 26, xadj, adjncy, adjwgt)
+      ! corners 1 and 27 have 7 neighbours each; the centre element 14 is common to both
+      call check(xadj(2) - xadj(1) == 13, 'condensed corners {1,27}: 7 + 7 - 1 neighbours')
+      call check(adjwgt(xadj(1) + findloc(adjncy(xadj(1) + 1:xadj(2)), 13, dim=1)) == 2, &
+                 'condensed corners {1,27}: edge weight to the centre = 1 + 1 shared nodes')
+   end subroutine test_graph
+
+   !> Partition invariants on a 10x10x10 box with groups, np = 2, 3, 4.
+   subroutine test_box_partitions()
+      integer, allocatable :: conn(:, :), ewgt(:), gp(:), ge(:), first(:)
+      type(partition_t) :: part, part2
+      type(rank_part_t), allocatable :: rps(:)
+      integer :: nn, np, e, r, q, k, kq, n, i
+      logical :: ok
+      character(1) :: c
+      write(*, '(a)') 'partition of a 10x10x10 box with groups'
+      call box(10, 10, 10, conn, nn)
+      allocate(ewgt(size(conn, 2)))
+      ewgt = 1
+      ! groups: the bottom layer (100 elements), {5, 900}, {900, 950} (overlapping)
+      gp = [1, 101, 103, 105]
+      ge = [[(e, e = 1, 100)], 5, 900, 900, 950]
+      do np = 2, 4
+         write(c, '(i1)') np
+         call partition_elements(conn, nn, ewgt, gp, ge, np, part, error)
+         call check(.not. allocated(error), 'np='//c//': partition without error')
+         if (allocated(error)) cycle
+         call check(all(part%epart >= 0 .and. part%epart < np) .and. &
+                    sum(part%rank_ne) == 1000, 'np='//c//': every element on exactly one rank')
+         call check(all(part%rank_ne > 0), 'np='//c//': no empty rank')
+         call check(all(part%epart(1:100) == part%epart(1)), &
+                    'np='//c//': group of 100 elements whole on one rank')
+         call check(part%epart(5) == part%epart(900) .and. part%epart(900) == part%epart(950), &
+                    'np='//c//': overlapping groups {5,900},{900,950} on one rank')
+         call check(part%balance <= 1.1_wp, 'np='//c//': balance <= 1.1 (got '// &
+                    trim(rs(part%balance))//')')
+         call check_close(part%balance, real(maxval(part%rank_wgt), wp)/(1000.0_wp/np), &
+                          0.0_wp, 1.0e-14_wp, 'np='//c//': balance = max/mean weight')
+         call partition_elements(conn, nn, ewgt, gp, ge, np, part2, error)
+         call check(all(part2%epart == part%epart), 'np='//c//': partition is reproducible')
+         ! rank contents: shared lists symmetric, nodes and owners consistent
+         if (allocated(rps)) deallocate(rps)
+         allocate(rps(0:np - 1))
+         do r = 0, np - 1
+            block
+               type(model_t) :: empty
+               call rank_part(empty, part, r, rps(r), error)
+            end block
+         end do
+         ok = .true.
+         do r = 0, np - 1
+            do k = 1, size(rps(r)%nbr)
+               q = rps(r)%nbr(k)
+               kq = findloc(rps(q)%nbr, r, dim=1)
+               if (kq == 0) then
+                  ok = .false.
+                  cycle
+               end if
+               if (.not. same(rps(r)%nbr_nodes(rps(r)%nbr_ptr(k):rps(r)%nbr_ptr(k + 1) - 1), &
+                              rps(q)%nbr_nodes(rps(q)%nbr_ptr(kq):rps(q)%nbr_ptr(kq + 1) - 1))) &
+                  ok = .false.
+            end do
+         end do
+         call check(ok, 'np='//c//': shared-node lists symmetric (node shared by a and b '// &
+                    'in both lists)')
+         ! every node on >= 1 rank; owner = lowest rank holding it; shared iff on > 1 rank
+         allocate(first(nn))
+         first = -1
+         ok = .true.
+         do r = np - 1, 0, -1
+            first(rps(r)%nodes) = r
+            do i = 1, size(rps(r)%nodes)
+               n = rps(r)%nodes(i)
+               if (rps(r)%node_owner(i) /= part%node_owner(n)) ok = .false.
+            end do
+         end do
+         call check(all(first >= 0) .and. all(first == part%node_owner) .and. ok, &
+                    'np='//c//': every node on a rank, owner = lowest rank holding it')
+         deallocate(first)
+         ok = .true.
+         do e = 1, size(conn, 2)
+            r = part%epart(e)
+            do k = 1, 8
+               if (findloc(rps(r)%nodes, conn(k, e), dim=1) == 0) ok = .false.
+            end do
+         end do
+         call check(ok, 'np='//c//': a rank holds every node of its elements')
+      end do
+   end subroutine test_box_partitions
+
+   logical function same(a, b)
+      integer, intent(in) :: a(:), b(:)
+      same = size(a) == size(b)
+      if (same) same = all(a == b)
+   end function same
+
+   function rs(x) result(s)
+      real(wp), intent(in) :: x
+      character(16) :: s
+      write(s, '(f8.4)') x
+   end function rs
+
+   !> BCs and loads restricted to ranks: an SPC on every rank holding its node; each segment
+   !> load on exactly one rank, which holds all its nodes.
+   subroutine test_bcs_on_ranks()
+      integer, allocatable :: conn(:, :), ewgt(:), gp(:), ge(:), cnt(:)
+      type(partition_t) :: part
+      type(rank_part_t) :: rp
+      type(model_t) :: model
+      integer :: nn, r, k, n, e, np
+      logical :: ok
+      write(*, '(a)') 'boundary conditions and loads on ranks'
+      np = 3
+      call box(6, 6, 6, conn, nn)
+      allocate(ewgt(size(conn, 2)), gp(1), ge(0))
+      ewgt = 1
+      gp = 1
+      call partition_elements(conn, nn, ewgt, gp, ge, np, part, error)
+      allocate(model%spcs(nn), model%seg_loads(36))
+      do n = 1, nn
+         model%spcs(n)%node = n
+      end do
+      do e = 1, 36     ! the bottom faces (z = 0) of the bottom layer
+         model%seg_loads(e)%nodes = conn([4, 3, 2, 1], e)
+      end do
+      allocate(cnt(36))
+      cnt = 0
+      ok = .true.
+      k = 0
+      do r = 0, np - 1
+         call rank_part(model, part, r, rp, error)
+         k = k + size(rp%spcs)
+         if (.not. all(rp%nodes(:) == model%spcs(rp%spcs)%node)) ok = .false.
+         do e = 1, size(rp%seg_loads)
+            cnt(rp%seg_loads(e)) = cnt(rp%seg_loads(e)) + 1
+            do n = 1, 4
+               if (findloc(rp%nodes, model%seg_loads(rp%seg_loads(e))%nodes(n), dim=1) == 0) &
+                  ok = .false.
+            end do
+         end do
+      end do
+      call check(k == sum(part%rank_nn) .and. ok, &
+                 'an SPC is on every rank holding its node; segment nodes on their rank')
+      call check(all(cnt == 1), 'each of 36 segment loads computed by exactly one rank')
+   end subroutine test_bcs_on_ranks
+
+   !> Rank files of a real deck: round trip, and every error path.
+   subroutine test_rank_files()
+      character(*), parameter :: DECK = 'tests/regression/elastic_wave/deck.k'
+      character(*), parameter :: DECK2 = 'tests/regression/taylor_simo/deck.k'
+      type(model_input_t) :: inp
+      type(model_t) :: model
+      type(partition_t) :: part
+      type(rank_part_t) :: rp, back
+      character(16) :: hash, hash2, hash_again
+      integer :: r, np, gp(1), ge(0)
+      integer, allocatable :: seen_spc(:), seen_pm(:)
+      logical :: ok
+      character(:), allocatable :: path
+      write(*, '(a)') 'rank files'
+      np = 3
+      call read_deck_input(DECK, inp, error)
+      call check(.not. allocated(error), 'read '//DECK)
+      if (allocated(error)) return
+      call build_model(inp, model, error)
+      call deck_content_hash(inp%files, hash, error)
+      call deck_content_hash(inp%files, hash_again, error)
+      call check(hash == hash_again, 'deck content hash is reproducible')
+      block
+         type(model_input_t) :: inp2
+         call read_deck_input(DECK2, inp2, error)
+         call deck_content_hash(inp2%files, hash2, error)
+      end block
+      call check(hash /= hash2, 'two decks have different content hashes')
+      gp = 1
+      call partition_model(model, np, gp, ge, part, error)
+      call check(.not. allocated(error), 'partition '//DECK//' into 3')
+      ok = .true.
+      allocate(seen_spc(size(model%spcs)), seen_pm(size(model%prescribed)))
+      seen_spc = 0
+      seen_pm = 0
+      do r = 0, np - 1
+         call rank_part(model, part, r, rp, error)
+         seen_spc(rp%spcs) = 1
+         seen_pm(rp%prescribed) = 1
+         path = rank_file_name(TMP, r)
+         call write_rank_file(path, rp, hash, error)
+         if (allocated(error)) then
+            ok = .false.
+            cycle
+         end if
+         call read_rank_file(path, hash, np, r, back, error)
+         if (allocated(error)) then
+            ok = .false.
+            cycle
+         end if
+         ok = ok .and. same(back%elements, rp%elements) .and. same(back%nodes, rp%nodes) &
+            .and. same(back%node_owner, rp%node_owner) .and. same(back%nbr, rp%nbr) &
+            .and. same(back%nbr_ptr, rp%nbr_ptr) .and. same(back%nbr_nodes, rp%nbr_nodes) &
+            .and. same(back%spcs, rp%spcs) .and. same(back%prescribed, rp%prescribed) &
+            .and. same(back%node_loads, rp%node_loads) .and. same(back%seg_loads, rp%seg_loads)&
+            .and. same(back%wall_ptr, rp%wall_ptr) .and. same(back%wall_nodes, rp%wall_nodes) &
+            .and. same(back%hist_nodes, rp%hist_nodes) .and. back%rank == r &
+            .and. back%np == np .and. back%ne_global == model%ne &
+            .and. back%nn_global == model%nn
+      end do
+      call check(ok, 'rank files round-trip (all 13 arrays and the header, 3 ranks)')
+      call check(size(seen_spc) > 0 .and. all(seen_spc == 1) .and. size(seen_pm) > 0 .and. &
+                 all(seen_pm == 1), 'every SPC and prescribed motion of the deck is on a rank')
+      path = rank_file_name(TMP, 1)
+      call read_rank_file(path, hash, 2, 1, back, error)
+      call check(has_error(EXIT_INPUT, path, 'NP = 3'), 'another NP: exit 2, file named')
+      call read_rank_file(path, hash2, np, 1, back, error)
+      call check(has_error(EXIT_INPUT, path, 'another deck'), 'another deck: exit 2, file named')
+      call read_rank_file(path, hash, np, 2, back, error)
+      call check(has_error(EXIT_INPUT, path, 'holds rank 1'), 'another rank: exit 2, file named')
+      call read_rank_file(TMP//'/rank_missing.h5', hash, np, 1, back, error)
+      call check(has_error(EXIT_IO, TMP//'/rank_missing.h5', 'no such file'), &
+                 'missing file: exit 4, file named')
+      call corrupt_elements(path, back_elements_of(path, hash, np))
+      call read_rank_file(path, hash, np, 1, back, error)
+      call check(has_error(EXIT_IO, path, 'checksum'), 'one flipped payload byte: exit 4 '// &
+                 '(checksum), file named')
+   end subroutine test_rank_files
+
+   function back_elements_of(path, hash, np) result(el)
+      character(*), intent(in) :: path, hash
+      integer, intent(in) :: np
+      integer, allocatable :: el(:)
+      type(rank_part_t) :: b
+      call read_rank_file(path, hash, np, 1, b, error)
+      el = b%elements
+   end function back_elements_of
+
+   logical function has_error(code, path, text)
+      integer, intent(in) :: code
+      character(*), intent(in) :: path, text
+      has_error = allocated(error)
+      if (.not. has_error) return
+      write(*, '(a)') '    ('//error%message//')'
+      has_error = error%code == code .and. index(error%message, path) > 0 .and. &
+                  index(error%message, text) > 0
+   end function has_error
+
+   !> Flip one bit inside the stored /elements data: find its first three values as
+   !> little-endian int32 bytes in the file and change the middle value.
+   subroutine corrupt_elements(path, el)
+      character(*), intent(in) :: path
+      integer, intent(in) :: el(:)
+      integer(int8), allocatable :: buf(:), pat(:)
+      integer :: u, i, j, k, b
+      integer(int64) :: sz
+      logical :: found
+      allocate(pat(12))
+      do k = 1, 3
+         do j = 0, 3
+            b = iand(ishft(el(k), -8*j), 255)
+            if (b > 127) b = b - 256
+            pat(4*(k - 1) + j + 1) = int(b, int8)
+         end do
+      end do
+      open(newunit=u, file=path, access='stream', form='unformatted', status='old')
+      inquire(unit=u, size=sz)
+      allocate(buf(sz))
+      read(u) buf
+      found = .false.
+      do i = 1, int(sz) - 11
+         if (all(buf(i:i + 11) == pat)) then
+            b = int(buf(i + 4))
+            b = ieor(b, 1)
+            buf(i + 4) = int(b, int8)
+            found = .true.
+            exit
+         end if
+      end do
+      call check(found, 'found the /elements payload in '//path)
+      write(u, pos=1) buf
+      close(u)
+   end subroutine corrupt_elements
+end program test_partition
