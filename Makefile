@@ -64,6 +64,7 @@ bin/dynx-%: build/release/dynx_%.o build/release/libdynx.a | bin
 	$(FC) $(REL_FLAGS) -o $@ $^ $(LIBS)
 
 UNIT_TESTS := $(patsubst tests/unit/%.f90,build/debug/tests/%,$(filter tests/unit/test_%,$(TEST_SRC)))
+MPI_TESTS := build/debug/tests/mpi_par_test
 build/debug/tests/%: build/debug/%.o build/debug/dx_assert.o build/debug/libdynx.a
 	@mkdir -p build/debug/tests
 	$(FC) $(DBG_FLAGS) -o $@ $^ $(LIBS)
@@ -82,8 +83,10 @@ regression: all bin/dynx-debug
 	@sh scripts/run_regression.sh
 
 test: deps
-	@$(MAKE) --no-print-directory all debug $(UNIT_TESTS)
+	@$(MAKE) --no-print-directory all debug $(UNIT_TESTS) $(MPI_TESTS)
 	@sh scripts/run_unit_tests.sh $(UNIT_TESTS)
+	@sh scripts/run_mpi_tests.sh $(MPI_TESTS)
+	@sh scripts/run_partition_tests.sh
 	@sh scripts/run_regression.sh
 
 bench: deps

@@ -12,7 +12,7 @@ program dynx_part
    use dx_deck, only: read_deck_input
    use dx_model_build, only: build_model
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report
-   use dx_rank_file, only: write_rank_file, rank_file_name, deck_content_hash
+   use dx_rank_file, only: write_rank_file, read_rank_file, rank_file_name, deck_content_hash
    use dx_io_sys, only: sys_mkdir_p
    implicit none
    character(:), allocatable :: deck, outdir, arg, val
@@ -22,7 +22,7 @@ program dynx_part
    type(rank_part_t) :: rp
    type(error_t), allocatable :: error
    character(16) :: hash
-   logical :: ignore_unknown
+   logical :: ignore_unknown, verify
    integer :: i, n, np, ios, r, u
    integer, allocatable :: grp_ptr(:), grp_elem(:)
 
@@ -30,6 +30,7 @@ program dynx_part
    outdir = '.'
    deck = ''
    ignore_unknown = .false.
+   verify = .false.
    n = command_argument_count()
    i = 0
    do while (i < n)
@@ -46,6 +47,8 @@ program dynx_part
          i = i + 1; outdir = get_arg(i)
       case ('--ignore-unknown')
          ignore_unknown = .true.
+      case ('--verify')
+         verify = .true.
       case default
          if (arg(1:1) == '-' .or. len(deck) > 0) call die_usage('unknown argument '//arg)
          deck = arg
@@ -61,6 +64,11 @@ program dynx_part
    if (allocated(error)) call die(error)
    call deck_content_hash(inp%files, hash, error)
    if (allocated(error)) call die(error)
+   if (verify) then
+      call verify_files(error)
+      if (allocated(error)) call die(error)
+      stop
+   end if
    if (np > model%ne) then
       call set_error(error, deck//': cannot split '//str(model%ne)//' elements into '// &
                      str(np)//' ranks', EXIT_INPUT)
@@ -96,6 +104,98 @@ program dynx_part
 
 contains
 
+   !> --verify: read every rank file of DIR for this deck and NP (each is checked for its
+   !> checksum, deck hash, NP and rank) and check them together: every element on exactly
+   !> one rank, each rank holding the nodes of its elements, symmetric shared-node lists.
+   subroutine verify_files(error)
+      type(error_t), allocatable, intent(out) :: error
+      type(rank_part_t), allocatable :: rps(:)
+      integer, allocatable :: seen(:), conn(:, :), holder(:, :)
+      integer :: r, k, q, kq, e, ib, j, nsh
+      allocate(rps(0:np - 1), seen(model%ne), conn(8, model%ne))
+      do ib = 1, size(model%blocks)
+         conn(:, model%blocks(ib)%elem) = model%blocks(ib)%conn
+      end do
+      seen = 0
+      do r = 0, np - 1
+         call read_rank_file(rank_file_name(outdir, r), hash, np, r, rps(r), error)
+         if (allocated(error)) return
+         if (rps(r)%ne_global /= model%ne .or. rps(r)%nn_global /= model%nn) then
+            call set_error(error, rank_file_name(outdir, r)//': element or node count '// &
+                           'differs from the deck', EXIT_INPUT)
+            return
+         end if
+         do k = 1, size(rps(r)%elements)
+            e = rps(r)%elements(k)
+            seen(e) = seen(e) + 1
+            if (k > 1) then
+               if (e <= rps(r)%elements(k - 1)) then
+                  call set_error(error, rank_file_name(outdir, r)//': elements not in '// &
+                                 'ascending global order', EXIT_INPUT)
+                  return
+               end if
+            end if
+         end do
+      end do
+      if (any(seen /= 1)) then
+         call set_error(error, outdir//': '//str(count(seen == 0))//' elements on no rank, '// &
+            str(count(seen > 1))//' on more than one', EXIT_INPUT)
+         return
+      end if
+      ! holder(n, r): node n is in rank r's node list
+      allocate(holder(model%nn, 0:np - 1))
+      holder = 0
+      do r = 0, np - 1
+         holder(rps(r)%nodes, r) = 1
+         do k = 1, size(rps(r)%elements)
+            if (any(holder(conn(:, rps(r)%elements(k)), r) == 0)) then
+               call set_error(error, rank_file_name(outdir, r)//': element '// &
+                  str(model%elem_label(rps(r)%elements(k)))//' has a node missing from '// &
+                  'the rank''s node list', EXIT_INPUT)
+               return
+            end if
+         end do
+      end do
+      nsh = 0
+      do r = 0, np - 1
+         do k = 1, size(rps(r)%nbr)
+            q = rps(r)%nbr(k)
+            kq = findloc(rps(q)%nbr, r, dim=1)
+            associate (a => rps(r)%nbr_nodes(rps(r)%nbr_ptr(k):rps(r)%nbr_ptr(k + 1) - 1))
+               if (kq == 0) then
+                  call set_error(error, rank_file_name(outdir, r)//': shares nodes with rank '// &
+                     str(q)//', which does not list rank '//str(r), EXIT_INPUT)
+                  return
+               end if
+               associate (b => rps(q)%nbr_nodes(rps(q)%nbr_ptr(kq):rps(q)%nbr_ptr(kq + 1) - 1))
+                  if (size(a) /= size(b)) then
+                     call set_error(error, 'shared-node lists of ranks '//str(r)//' and '// &
+                                    str(q)//' differ in length', EXIT_INPUT)
+                     return
+                  end if
+                  if (any(a /= b)) then
+                     call set_error(error, 'shared-node lists of ranks '//str(r)//' and '// &
+                                    str(q)//' differ', EXIT_INPUT)
+                     return
+                  end if
+               end associate
+               do j = 1, size(a)
+                  if (holder(a(j), q) == 0) then
+                     call set_error(error, 'rank '//str(r)//' lists node '// &
+                        str(model%node_label(a(j)))//' as shared with rank '//str(q)// &
+                        ', which does not hold it', EXIT_INPUT)
+                     return
+                  end if
+               end do
+               nsh = nsh + size(a)
+            end associate
+         end do
+      end do
+      call log_info('dynx-part: verified '//str(np)//' rank files in '//outdir//': every '// &
+         'element on exactly one rank, shared-node lists symmetric ('//str(nsh/2)// &
+         ' node-rank pairs)')
+   end subroutine verify_files
+
    function get_arg(k) result(a)
       integer, intent(in) :: k
       character(:), allocatable :: a
@@ -108,7 +208,7 @@ contains
 
    subroutine usage()
       write(output_unit, '(a)') &
-         'usage: dynx-part deck.k -n NP [-o DIR] [--ignore-unknown]', &
+         'usage: dynx-part deck.k -n NP [-o DIR] [--ignore-unknown] [--verify]', &
          '', &
          'Partitions the deck''s elements into NP ranks with METIS and writes', &
          '  DIR/rank_00000.h5 ... one HDF5 file per rank (elements, nodes, shared nodes,', &
@@ -119,6 +219,9 @@ contains
          '  -n, --nprocs NP      number of ranks (required)', &
          '  -o, --outdir DIR     output directory (default: current directory)', &
          '  --ignore-unknown     unknown keywords are warnings, not errors', &
+         '  --verify             write nothing: read DIR''s rank files back and check them', &
+         '                       against the deck (checksum, deck hash, NP, every element', &
+         '                       on exactly one rank, symmetric shared-node lists)', &
          '  -h, --help           this text', &
          '', &
          'exit codes: 0 normal, 2 input error, 4 I/O failure'

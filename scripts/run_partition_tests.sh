@@ -1,0 +1,117 @@
+#!/bin/sh
+# Partitioner tests (bin/dynx-part), run by `make test`:
+#  - every regression deck that reads (not bad_*) and a generated 100 000-element box
+#    (scripts/gen_box_deck.py) at NP = 2, 3, 4: the rank files pass `dynx-part --verify`
+#    (checksums, deck hash, NP, every element on exactly one rank, symmetric shared-node
+#    lists), and on the decks with at least 64 elements and the box the balance statistic
+#    (max weight / mean weight) is <= 1.1. Decks of 2-7 elements are only verified (their
+#    balance is bounded by the element granularity: 7 elements on 3 ranks give 3/2.33).
+#  - the partition is reproducible (same report and checksums from a second run)
+#  - errors: files for another NP or another deck (exit 2, file named), a corrupt file
+#    (exit 4, checksum), a missing file (exit 4), bad -n (exit 2).
+# Closes with 'N passed, N failed'; exits 1 if anything failed.
+set -u
+LC_ALL=C
+export LC_ALL
+cd "$(dirname "$0")/.." || exit 2
+PART=${DYNX_PART:-bin/dynx-part}
+OUT=build/partition_tests
+MAXBAL=1.1
+np_=0
+nf_=0
+pass() { echo "  PASS $1"; np_=$((np_ + 1)); }
+fail() { echo "  FAIL $1"; nf_=$((nf_ + 1)); }
+rm -rf "$OUT"
+mkdir -p "$OUT"
+
+# partition DECK NP DIR CHECKBAL
+partition() {
+    deck=$1; n=$2; dir=$3; chk=$4
+    if ! "$PART" "$deck" -n "$n" -o "$dir" >"$dir.log" 2>&1; then
+        fail "$deck -n $n: dynx-part failed: $(tail -n 1 "$dir.log")"
+        return
+    fi
+    bal=$(sed -n 's/^balance (max weight \/ mean weight): *\([0-9.]*\).*/\1/p' "$dir/partition.txt")
+    if "$PART" "$deck" -n "$n" -o "$dir" --verify >"$dir.verify" 2>&1; then
+        pass "$deck -n $n: rank files verified, balance $bal"
+    else
+        fail "$deck -n $n: --verify: $(tail -n 1 "$dir.verify")"
+    fi
+    if [ "$chk" = 1 ]; then
+        if awk -v b="$bal" -v m="$MAXBAL" 'BEGIN { exit !(b != "" && b + 0 <= m + 0) }'; then
+            pass "$deck -n $n: balance $bal <= $MAXBAL"
+        else
+            fail "$deck -n $n: balance '$bal' > $MAXBAL"
+        fi
+    fi
+}
+
+echo "== regression decks"
+for d in tests/regression/*/; do
+    c=${d%/}; c=${c##*/}
+    case $c in
+        bad_*) continue ;;   # decks with input errors
+        extreme_crushed_element|extreme_distorted_element) nps="2"; chk=0 ;;
+        patch_*) nps="2 3 4"; chk=0 ;;
+        *) nps="2 3 4"; chk=1 ;;
+    esac
+    for n in $nps; do
+        partition "${d}deck.k" "$n" "$OUT/${c}_$n" "$chk"
+    done
+done
+
+echo "== 100 000-element box (scripts/gen_box_deck.py)"
+python3 scripts/gen_box_deck.py "$OUT/box.k" 50 50 40
+for n in 2 3 4; do
+    partition "$OUT/box.k" "$n" "$OUT/box_$n" 1
+done
+
+echo "== reproducibility and errors"
+deck=tests/regression/taylor_simo/deck.k
+other=tests/regression/taylor_wilkins_guinan/deck.k
+"$PART" "$deck" -n 3 -o "$OUT/rep" >/dev/null 2>&1
+if cmp -s "$OUT/rep/partition.txt" "$OUT/taylor_simo_3/partition.txt" && \
+   [ "$(h5dump -a /checksum "$OUT/rep/rank_00001.h5" | grep '(0)')" = \
+     "$(h5dump -a /checksum "$OUT/taylor_simo_3/rank_00001.h5" | grep '(0)')" ]; then
+    pass "a second run gives the same partition report and rank-file checksums"
+else
+    fail "a second run gives a different partition"
+fi
+# expect_err LABEL CODE TEXT CMD...
+expect_err() {
+    label=$1; code=$2; text=$3; shift 3
+    "$@" >"$OUT/err.out" 2>"$OUT/err.txt"
+    rc=$?
+    if [ $rc -eq "$code" ] && grep -qF -- "$text" "$OUT/err.txt"; then
+        pass "$label: exit $code, '$text'"
+    else
+        fail "$label: exit $rc (expected $code), stderr: $(cat "$OUT/err.txt")"
+    fi
+}
+expect_err "files for NP = 3 read with -n 2" 2 "rank_00000.h5: rank file was written for NP = 3" \
+    "$PART" "$deck" -n 2 -o "$OUT/rep" --verify
+expect_err "files read for another deck" 2 "rank_00000.h5: rank file was written for another deck" \
+    "$PART" "$other" -n 3 -o "$OUT/rep" --verify
+cp -r "$OUT/rep" "$OUT/corrupt"
+off=$(h5dump -p -d /elements "$OUT/corrupt/rank_00001.h5" | sed -n 's/.*OFFSET \([0-9]*\).*/\1/p')
+if [ -n "$off" ]; then
+    python3 -c "
+import sys
+p, o = sys.argv[1], int(sys.argv[2]) + 5
+b = bytearray(open(p, 'rb').read()); b[o] ^= 1; open(p, 'wb').write(bytes(b))" \
+        "$OUT/corrupt/rank_00001.h5" "$off"
+    expect_err "one flipped bit in /elements" 4 "rank_00001.h5: rank file is corrupt (checksum mismatch)" \
+        "$PART" "$deck" -n 3 -o "$OUT/corrupt" --verify
+else
+    fail "could not find the /elements data offset with h5dump -p"
+fi
+cp -r "$OUT/rep" "$OUT/missing"
+rm -f "$OUT/missing/rank_00002.h5"
+expect_err "a missing rank file" 4 "rank_00002.h5: no such file" \
+    "$PART" "$deck" -n 3 -o "$OUT/missing" --verify
+expect_err "-n 0" 2 "-n needs a positive integer" "$PART" "$deck" -n 0
+expect_err "more ranks than elements" 2 "cannot split 7 elements into 8 ranks" \
+    "$PART" tests/regression/patch_constant_strain/deck.k -n 8 -o "$OUT/x"
+echo "$np_ passed, $nf_ failed"
+[ $nf_ -eq 0 ] || exit 1
+exit 0
