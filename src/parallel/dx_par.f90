@@ -3,8 +3,9 @@
 !> OMPI_COMM_WORLD_SIZE, or PMI_SIZE / PMIX_RANK), and every call below is then a no-op with
 !> one rank (no separate serial code path).
 !>
-!> Shared-node sums in a fixed order (OpenRadioss /PARITH/ON; Hoover et al., ParaDyn, LLNL
-!> UCRL-53868-95): the force on a node shared by several ranks is the sum of its elements'
+!> Shared-node sums in a fixed order (the idea of OpenRadioss's /PARITH/ON; the one shared-
+!> node exchange per cycle of ParaDyn, LLNL Engineering Thrust Area Report FY97, article 4
+!> of shared/seed): the force on a node shared by several ranks is the sum of its elements'
 !> contributions taken in global element order (the serial scatter order), whatever the
 !> partition. Each rank keeps its contributions to shared nodes apart, tagged by their
 !> element's global order key; par_shared_setup exchanges the keys once and builds, for each

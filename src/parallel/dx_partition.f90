@@ -1,6 +1,8 @@
-!> Domain decomposition for ParaDyn-style runs (Hoover, DeGroot, Maltby and Procassini,
-!> "ParaDyn: DYNA3D for massively parallel computers", LLNL Engineering Research, Development
-!> and Technology FY95, UCRL-53868-95; partitioning with METIS: Karypis and Kumar 1998).
+!> Domain decomposition for ParaDyn-style runs: "Parallel contact in ParaDyn", LLNL
+!> Engineering Thrust Area Report FY97, Computational Mechanics (article 4 of
+!> shared/seed/000_ada67627fd8120d3.txt: element graph, super elements for contact pairs,
+!> balance statistic); graph partitioning with METIS (Karypis and Kumar, SIAM J. Sci.
+!> Comput. 20(1), 1998).
 !>
 !> The element graph: one vertex per element, weighted by the element formulation's measured
 !> cost (COST_HEX8_1PT, COST_HEX8_SRI; docs/design.md), one edge between two elements that
