@@ -26,7 +26,8 @@ module dx_partition
    implicit none
    private
    public :: partition_t, rank_part_t, element_graph, condense_groups, partition_model, &
-             partition_elements, rank_part, elem_costs, serial_order, write_report, COST_HEX8_1PT, &
+             partition_elements, rank_part, elem_costs, serial_order, write_report, face_elements, &
+             model_conn, COST_HEX8_1PT, &
              COST_HEX8_SRI
 
    !> Element cost weights (integer, METIS needs integers): ELFORM 2 measured at about
@@ -416,6 +417,45 @@ contains
       m = maxval(w)
    end function max_weight
 
+
+   !> Connectivity conn(8, ne) of a built model, in global element order.
+   subroutine model_conn(model, conn)
+      type(model_t), intent(in) :: model
+      integer, allocatable, intent(out) :: conn(:, :)
+      integer :: ib
+      allocate(conn(8, model%ne))
+      do ib = 1, size(model%blocks)
+         conn(:, model%blocks(ib)%elem) = model%blocks(ib)%conn
+      end do
+   end subroutine model_conn
+
+   !> The elements having a face on a surface: for each segment seg(4, nseg) (dense nodes; a
+   !> triangle repeats n3), every element holding all its nodes. Ascending, no repeats.
+   !> A contact pair's group is face_elements of its master and slave segments together.
+   subroutine face_elements(conn, nn, seg, elems)
+      integer, intent(in) :: conn(:, :), nn, seg(:, :)
+      integer, allocatable, intent(out) :: elems(:)
+      integer, allocatable :: nptr(:), nlst(:)
+      logical, allocatable :: take(:)
+      integer :: s, i, e, j
+      logical :: all_in
+      call node_elements(conn, nn, nptr, nlst)
+      allocate(take(size(conn, 2)))
+      take = .false.
+      do s = 1, size(seg, 2)
+         ! candidates: the elements of the segment's first node
+         do i = nptr(seg(1, s)), nptr(seg(1, s) + 1) - 1
+            e = nlst(i)
+            all_in = .true.
+            do j = 2, 4
+               if (.not. any(conn(:, e) == seg(j, s))) all_in = .false.
+            end do
+            if (all_in) take(e) = .true.
+         end do
+      end do
+      elems = pack([(e, e = 1, size(conn, 2))], take)
+   end subroutine face_elements
+
    !> Partition a built model: connectivity and costs from its blocks.
    subroutine partition_model(model, np, grp_ptr, grp_elem, part, error)
       type(model_t), intent(in) :: model
@@ -423,11 +463,7 @@ contains
       type(partition_t), intent(out) :: part
       type(error_t), allocatable, intent(out) :: error
       integer, allocatable :: conn(:, :), ewgt(:)
-      integer :: ib
-      allocate(conn(8, model%ne))
-      do ib = 1, size(model%blocks)
-         conn(:, model%blocks(ib)%elem) = model%blocks(ib)%conn
-      end do
+      call model_conn(model, conn)
       call elem_costs(model, ewgt)
       call partition_elements(conn, model%nn, ewgt, grp_ptr, grp_elem, np, part, error)
    end subroutine partition_model

@@ -76,8 +76,9 @@ program dynx_part
    end if
 
    ! element groups that must stay on one rank: none yet. The contact pairs of the deck
-   ! (*CONTACT_...) will feed in here: one group per pair, holding the elements with a face
-   ! on either surface of the pair.
+   ! (*CONTACT_...) feed in here: one group per pair, the elements with a face on either
+   ! surface, face_elements(conn, nn, [master segments, slave segments], group) with the
+   ! connectivity from model_conn (dx_partition), appended to grp_ptr/grp_elem.
    allocate(grp_ptr(1), grp_elem(0))
    grp_ptr(1) = 1
    call partition_model(model, np, grp_ptr, grp_elem, part, error)

@@ -13,7 +13,7 @@ program test_partition
    use dx_deck, only: read_deck_input
    use dx_model_build, only: build_model
    use dx_partition, only: partition_t, rank_part_t, element_graph, condense_groups, &
-                           partition_elements, partition_model, rank_part
+                           partition_elements, partition_model, rank_part, face_elements
    use dx_rank_file, only: write_rank_file, read_rank_file, rank_file_name, deck_content_hash
    use dx_io_sys, only: sys_mkdir_p
    use dx_assert, only: check, check_close, assert_summary
@@ -27,6 +27,7 @@ program test_partition
    call test_condense()
    call test_graph()
    call test_box_partitions()
+   call test_contact_pair_group()
    call test_bcs_on_ranks()
    call test_rank_files()
    call assert_summary()
@@ -205,6 +206,48 @@ contains
          call check(ok, 'np='//c//': a rank holds every node of its elements')
       end do
    end subroutine test_box_partitions
+
+   !> A synthetic contact pair on a 8x8x8 box: the top face of the bottom slab (z = 2) and
+   !> the bottom face of the top slab (z = 6) as its two surfaces; face_elements gives the
+   !> group, which lands whole on one rank at np = 2, 3, 4.
+   subroutine test_contact_pair_group()
+      integer, allocatable :: conn(:, :), ewgt(:), seg(:, :), grp(:)
+      type(partition_t) :: part
+      integer :: nn, i, j, k, np
+      character(1) :: c
+      write(*, '(a)') 'contact pair condensed into one super element'
+      call box(8, 8, 8, conn, nn)
+      allocate(seg(4, 128), ewgt(size(conn, 2)))
+      ewgt = 1
+      k = 0
+      do j = 0, 7
+         do i = 0, 7
+            k = k + 1
+            seg(:, k) = [gid(i, j, 2, 8, 8), gid(i + 1, j, 2, 8, 8), gid(i + 1, j + 1, 2, 8, 8), &
+                         gid(i, j + 1, 2, 8, 8)]
+            seg(:, 64 + k) = [gid(i, j, 6, 8, 8), gid(i, j + 1, 6, 8, 8), &
+                              gid(i + 1, j + 1, 6, 8, 8), gid(i + 1, j, 6, 8, 8)]
+         end do
+      end do
+      call face_elements(conn, nn, seg, grp)
+      ! the face z = 2 belongs to layers 2 and 3 (k = 1, 2), z = 6 to layers 6 and 7
+      call check(size(grp) == 4*64 .and. all(grp(1:64) == [(64 + i, i = 1, 64)]) .and. &
+                 all(grp(193:256) == [(384 + i, i = 1, 64)]), &
+                 'face_elements: 4 layers of 64 elements touch the two surfaces')
+      do np = 2, 4
+         write(c, '(i1)') np
+         call partition_elements(conn, nn, ewgt, [1, size(grp) + 1], grp, np, part, error)
+         call check(.not. allocated(error), 'np='//c//': partition with the pair')
+         if (allocated(error)) cycle
+         call check(all(part%epart(grp) == part%epart(grp(1))), &
+                    'np='//c//': the contact pair (256 elements) is whole on one rank')
+         ! the pair alone weighs 256 of 512: balance cannot go below 256/(512/np), so the
+         ! bound is max(1.1, np/2) (the seed: the largest contact surface limits NP)
+         call check(part%balance <= max(1.1_wp, 0.5_wp*np) + 1.0e-12_wp, 'np='//c// &
+                    ': balance <= max(1.1, weight of the pair / mean) (got '// &
+                    trim(rs(part%balance))//')')
+      end do
+   end subroutine test_contact_pair_group
 
    logical function same(a, b)
       integer, intent(in) :: a(:), b(:)
