@@ -65,6 +65,10 @@ bin/dynx-%: build/release/dynx_%.o build/release/libdynx.a | bin
 
 UNIT_TESTS := $(patsubst tests/unit/%.f90,build/debug/tests/%,$(filter tests/unit/test_%,$(TEST_SRC)))
 MPI_TESTS := build/debug/tests/mpi_par_test
+MPI_BENCH := build/release/bench/mpi_shared_bench
+build/release/bench/%: build/release/%.o build/release/libdynx.a
+	@mkdir -p build/release/bench
+	$(FC) $(REL_FLAGS) -o $@ $^ $(LIBS)
 build/debug/tests/%: build/debug/%.o build/debug/dx_assert.o build/debug/libdynx.a
 	@mkdir -p build/debug/tests
 	$(FC) $(DBG_FLAGS) -o $@ $^ $(LIBS)
@@ -90,8 +94,9 @@ test: deps
 	@sh scripts/run_regression.sh
 
 bench: deps
-	@$(MAKE) --no-print-directory all
+	@$(MAKE) --no-print-directory all $(MPI_BENCH)
 	@sh scripts/bench.sh
+	@sh scripts/bench_shared_sum.sh
 
 studies: deps
 	@$(MAKE) --no-print-directory all

@@ -23,7 +23,7 @@ module dx_par
    private
    public :: par_init, par_finalize, par_rank, par_size, par_active, par_barrier, &
              par_allreduce, par_abort, shared_sum_t, par_shared_setup, par_shared_sum, &
-             PAR_SUM, PAR_MIN, PAR_MAX
+             par_shared_sum_plain, par_wtime, PAR_SUM, PAR_MIN, PAR_MAX
 
    integer, parameter :: PAR_SUM = 1, PAR_MIN = 2, PAR_MAX = 3
    integer, parameter :: TAG_COUNT = 101, TAG_KEYS = 102, TAG_VALUES = 103
@@ -40,6 +40,7 @@ module dx_par
       integer, allocatable :: send_ptr(:), send_idx(:)   !< own contributions sent to nbr(k)
       integer, allocatable :: recv_ptr(:)                !< received contributions from nbr(k)
       integer, allocatable :: ord_ptr(:), ord_src(:)     !< per shared node: sources by key
+      integer, allocatable :: nbr_ptr(:), nbr_snode(:)   !< shared nodes of each neighbour
    end type shared_sum_t
 
    interface par_allreduce
@@ -211,6 +212,8 @@ contains
       plan%nshared = nshared
       plan%ncontrib = nc
       plan%nbr = nbr
+      plan%nbr_ptr = nbr_ptr
+      plan%nbr_snode = nbr_snode
       ! own contributions per shared node, sorted by key
       allocate(own_ptr(nshared + 1), own_lst(nc), fill(nshared))
       own_ptr = 0
@@ -390,4 +393,62 @@ contains
          end do
       end do
    end subroutine par_shared_sum
+
+   !> The plain alternative, for comparison: partial(:, s) is this rank's own sum at shared
+   !> node s; res(:, s) adds the holders' partial sums in rank order. Deterministic for a
+   !> given partition, but not the serial sum (the partials round differently); one exchange.
+   subroutine par_shared_sum_plain(plan, partial, res)
+      type(shared_sum_t), intent(in) :: plan
+      real(wp), intent(in) :: partial(:, :)
+      real(wp), intent(out) :: res(:, :)
+      real(wp), allocatable :: rbuf(:, :), sbuf(:, :)
+      type(MPI_Request), allocatable :: req(:)
+      integer :: ncomp, nnb, k, j, ierr
+      logical :: own_added
+      ncomp = size(partial, 1)
+      nnb = size(plan%nbr)
+      res(:, 1:plan%nshared) = 0.0_wp
+      if (nnb == 0) then
+         res(:, 1:plan%nshared) = partial(:, 1:plan%nshared)
+         return
+      end if
+      sbuf = partial(:, plan%nbr_snode)
+      allocate(rbuf(ncomp, size(plan%nbr_snode)), req(2*nnb))
+      do k = 1, nnb
+         associate (a => plan%nbr_ptr(k), b => plan%nbr_ptr(k + 1) - 1)
+            call MPI_Irecv(rbuf(:, a:b), ncomp*(b - a + 1), MPI_DOUBLE_PRECISION, plan%nbr(k), &
+                           TAG_VALUES, comm, req(k), ierr)
+            call check(ierr, 'MPI_Irecv (plain shared-node sum)')
+            call MPI_Isend(sbuf(:, a:b), ncomp*(b - a + 1), MPI_DOUBLE_PRECISION, plan%nbr(k), &
+                           TAG_VALUES, comm, req(nnb + k), ierr)
+            call check(ierr, 'MPI_Isend (plain shared-node sum)')
+         end associate
+      end do
+      call MPI_Waitall(2*nnb, req, MPI_STATUSES_IGNORE, ierr)
+      call check(ierr, 'MPI_Waitall (plain shared-node sum)')
+      ! neighbours in ascending rank order; own partial in its place
+      own_added = .false.
+      do k = 1, nnb
+         if (.not. own_added .and. plan%nbr(k) > my_rank) then
+            res(:, 1:plan%nshared) = res(:, 1:plan%nshared) + partial(:, 1:plan%nshared)
+            own_added = .true.
+         end if
+         do j = plan%nbr_ptr(k), plan%nbr_ptr(k + 1) - 1
+            res(:, plan%nbr_snode(j)) = res(:, plan%nbr_snode(j)) + rbuf(:, j)
+         end do
+      end do
+      if (.not. own_added) res(:, 1:plan%nshared) = res(:, 1:plan%nshared) + &
+                                                    partial(:, 1:plan%nshared)
+   end subroutine par_shared_sum_plain
+
+   !> Wall-clock seconds (MPI_Wtime under MPI, else the system clock).
+   real(wp) function par_wtime()
+      integer(int64) :: c, r
+      if (mpi_on) then
+         par_wtime = MPI_Wtime()
+      else
+         call system_clock(c, r)
+         par_wtime = real(c, wp)/real(r, wp)
+      end if
+   end function par_wtime
 end module dx_par
