@@ -34,8 +34,9 @@ done
 {
 echo ""
 echo "scatter+exchange: one step = scatter the 8 corner forces of every element (shared corners"
-echo "into contribution slots for the fixed-order sum) and the exchange. 'exchange' times the"
-echo "exchange call alone, which includes waiting for the slowest neighbour. Ratio = fixed/plain."
+echo "into contribution slots for the fixed-order sum), a barrier, and the exchange. 'exchange'"
+echo "times the exchange call alone, after the barrier (so without waiting for slower ranks)."
+echo "Ratio = fixed/plain. The machine is shared with other jobs: compare ratios, not times."
 } >> $B/shared_sum.md
 cat $B/shared_sum.md >> docs/performance.md
 cat $B/shared_sum.md

@@ -4,12 +4,15 @@
 !> what one explicit cycle would do after the element kernels: scatter the 8 corner forces of
 !> every element (into f, or into the contribution slots at shared nodes) and exchange.
 !> The two variants alternate in rounds; rank 0 prints the slowest rank's time per step.
+!> A barrier before each exchange keeps the waiting for slower ranks out of the exchange
+!> time (and inside the step time).
 !> Usage: mpi_shared_bench [nx ny nz [steps]]
 program mpi_shared_bench
    use, intrinsic :: iso_fortran_env, only: output_unit
    use dx_kinds, only: wp, nv_chunk
    use dx_error, only: error_t
    use dx_par, only: par_init, par_finalize, par_rank, par_size, par_allreduce, par_wtime, &
+                     par_barrier, &
                      shared_sum_t, par_shared_setup, par_shared_sum, par_shared_sum_plain, &
                      PAR_MAX, PAR_SUM
    use dx_partition, only: partition_t, partition_elements
@@ -137,6 +140,7 @@ program mpi_shared_bench
          do i = 1, nc
             cval(:, i) = -fe(:, sk(i), sl(i))
          end do
+         call par_barrier()
          tmp = par_wtime()
          call par_shared_sum(plan, cval(:, 1:nc), res)
          x_fixed = x_fixed + par_wtime() - tmp
@@ -150,6 +154,7 @@ program mpi_shared_bench
                f(:, conn(k, mine(l))) = f(:, conn(k, mine(l))) - fe(:, k, l)
             end do
          end do
+         call par_barrier()
          tmp = par_wtime()
          partial = f(:, shared_nodes)
          call par_shared_sum_plain(plan, partial, res)
