@@ -48,7 +48,11 @@ contains
       integer, intent(in) :: r
       character(:), allocatable :: path
       character(16) :: buf
-      write(buf, '(i5.5)') r
+      if (r < 100000) then
+         write(buf, '(i5.5)') r
+      else
+         write(buf, '(i0)') r
+      end if
       path = dir//'/rank_'//trim(adjustl(buf))//'.h5'
    end function rank_file_name
 

@@ -18,7 +18,7 @@
 !> holding it), shared-node lists per pair of ranks (symmetric by construction), and the
 !> balance statistic max(rank weight)/mean(rank weight) (1.0 = perfect).
 module dx_partition
-   use dx_kinds, only: wp
+   use dx_kinds, only: wp, nv_chunk
    use dx_error, only: error_t, set_error, EXIT_INPUT
    use dx_strings, only: str
    use dx_model, only: model_t, ETYPE_HEX8_SRI
@@ -27,7 +27,7 @@ module dx_partition
    private
    public :: partition_t, rank_part_t, element_graph, condense_groups, partition_model, &
              partition_elements, rank_part, elem_costs, serial_order, write_report, face_elements, &
-             model_conn, COST_HEX8_1PT, &
+             model_conn, scatter_keys, COST_HEX8_1PT, &
              COST_HEX8_SRI
 
    !> Element cost weights (integer, METIS needs integers): ELFORM 2 measured at about
@@ -417,6 +417,22 @@ contains
       m = maxval(w)
    end function max_weight
 
+
+   !> The order key of every element force contribution (corner k, element e): the serial
+   !> run adds them into f block by block, in the loop `do k = 1, 8; do i = 1, nel` of the
+   !> hex8 kernels, so key = ((block - 1)*8 + k - 1)*nv_chunk + position in the block.
+   !> Summing a node's contributions from 0 in key order gives the serial f bit for bit.
+   subroutine scatter_keys(model, keys)
+      type(model_t), intent(in) :: model
+      integer, allocatable, intent(out) :: keys(:, :)
+      integer :: e, k
+      allocate(keys(8, model%ne))
+      do e = 1, model%ne
+         do k = 1, 8
+            keys(k, e) = ((model%elem_block(e) - 1)*8 + k - 1)*nv_chunk + model%elem_pos(e)
+         end do
+      end do
+   end subroutine scatter_keys
 
    !> Connectivity conn(8, ne) of a built model, in global element order.
    subroutine model_conn(model, conn)

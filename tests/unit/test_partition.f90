@@ -13,7 +13,8 @@ program test_partition
    use dx_deck, only: read_deck_input
    use dx_model_build, only: build_model
    use dx_partition, only: partition_t, rank_part_t, element_graph, condense_groups, &
-                           partition_elements, partition_model, rank_part, face_elements
+                           partition_elements, partition_model, rank_part, face_elements, &
+                           scatter_keys
    use dx_rank_file, only: write_rank_file, read_rank_file, rank_file_name, deck_content_hash
    use dx_io_sys, only: sys_mkdir_p
    use dx_assert, only: check, check_close, assert_summary
@@ -30,6 +31,7 @@ program test_partition
    call test_contact_pair_group()
    call test_bcs_on_ranks()
    call test_rank_files()
+   call test_serial_order_emulation()
    call assert_summary()
 
 contains
@@ -248,6 +250,182 @@ contains
                     trim(rs(part%balance))//')')
       end do
    end subroutine test_contact_pair_group
+
+   !> The bit-for-bit design on a real model (taylor_simo, 1536 elements in 12 blocks), in one
+   !> process: random adversarial corner forces; the serial sum with the hex8 kernels' loop
+   !> order; then NP = 3 ranks (METIS): each rank runs the same loop over the pieces of the
+   !> serial blocks it holds, adding into interior nodes, and keeps shared-node contributions
+   !> apart with their scatter_keys; shared nodes are summed over all ranks in key order.
+   !> Every node must equal the serial sum bit for bit. Merging a rank's pieces into full
+   !> 128-element blocks instead must not (it interleaves corner slots of two serial blocks).
+   subroutine test_serial_order_emulation()
+      character(*), parameter :: DECK = 'tests/regression/taylor_simo/deck.k'
+      integer, parameter :: NP = 3
+      type(model_t) :: model
+      type(model_input_t) :: inp
+      type(partition_t) :: part
+      integer, allocatable :: keys(:, :), nhold(:), ck(:), cn(:), order(:), piece(:)
+      real(wp), allocatable :: val(:, :, :), ref(:, :), loc(:, :), cv(:, :), merged(:, :)
+      integer :: e, k, b, i, r, n, nc, gp(1), ge(0), nbad, nbad_merged, m, j
+      integer(int64) :: st
+      write(*, '(a)') 'serial order emulation (taylor_simo, NP = 3)'
+      call read_deck_input(DECK, inp, error)
+      if (.not. allocated(error)) call build_model(inp, model, error)
+      call check(.not. allocated(error), 'read and build '//DECK)
+      if (allocated(error)) return
+      call scatter_keys(model, keys)
+      allocate(val(3, 8, model%ne))
+      st = 4242_int64
+      do e = 1, model%ne
+         do k = 1, 8
+            do i = 1, 3
+               val(i, k, e) = adv(st)
+            end do
+         end do
+      end do
+      ! serial: blocks in order, do k = 1, 8; do i = 1, nel (as hex8_1pt / hex8_sri)
+      allocate(ref(3, model%nn))
+      ref = 0.0_wp
+      do b = 1, size(model%blocks)
+         do k = 1, 8
+            do i = 1, model%blocks(b)%nel
+               e = model%blocks(b)%elem(i)
+               n = model%blocks(b)%conn(k, i)
+               ref(:, n) = ref(:, n) - val(:, k, e)
+            end do
+         end do
+      end do
+      gp = 1
+      call partition_model(model, NP, gp, ge, part, error)
+      allocate(nhold(model%nn))
+      nhold = part%nr_ptr(2:) - part%nr_ptr(:model%nn)
+      ! ranks: interior nodes summed locally, shared contributions (value, key) collected
+      allocate(cv(3, 8*model%ne), ck(8*model%ne), cn(8*model%ne), loc(3, model%nn), &
+               merged(3, model%nn))
+      nc = 0
+      nbad = 0
+      nbad_merged = 0
+      loc = 0.0_wp
+      merged = 0.0_wp
+      do r = 0, NP - 1
+         do b = 1, size(model%blocks)
+            piece = pack([(i, i = 1, model%blocks(b)%nel)], &
+                         part%epart(model%blocks(b)%elem) == r)
+            do k = 1, 8
+               do j = 1, size(piece)
+                  i = piece(j)
+                  e = model%blocks(b)%elem(i)
+                  n = model%blocks(b)%conn(k, i)
+                  if (nhold(n) == 1) then
+                     loc(:, n) = loc(:, n) - val(:, k, e)
+                  else
+                     nc = nc + 1
+                     cv(:, nc) = -val(:, k, e)
+                     ck(nc) = keys(k, e)
+                     cn(nc) = n
+                  end if
+               end do
+            end do
+         end do
+         ! the wrong way: the rank's elements (serial order) in consolidated 128-blocks
+         order = pack([(i, i = 1, model%ne)], part%epart == r)
+         call sort_by_serial(order, keys)
+         do m = 1, size(order), 128
+            do k = 1, 8
+               do j = m, min(m + 127, size(order))
+                  e = order(j)
+                  n = model%blocks(model%elem_block(e))%conn(k, model%elem_pos(e))
+                  if (nhold(n) == 1) merged(:, n) = merged(:, n) - val(:, k, e)
+               end do
+            end do
+         end do
+      end do
+      ! shared nodes: all contributions in key order, from 0
+      block
+         integer, allocatable :: idx(:)
+         idx = [(i, i = 1, nc)]
+         call sort_by_serial2(idx, ck(1:nc))
+         do j = 1, nc
+            i = idx(j)
+            loc(:, cn(i)) = loc(:, cn(i)) + cv(:, i)
+         end do
+      end block
+      do n = 1, model%nn
+         if (any(transfer(loc(:, n), 1_int64, 3) /= transfer(ref(:, n), 1_int64, 3))) &
+            nbad = nbad + 1
+         if (nhold(n) == 1) then
+            if (any(transfer(merged(:, n), 1_int64, 3) /= transfer(ref(:, n), 1_int64, 3))) &
+               nbad_merged = nbad_merged + 1
+         end if
+      end do
+      write(*, '(a,i0,a,i0,a)') '    (', count(nhold > 1), ' shared nodes; consolidated '// &
+         'blocks differ at ', nbad_merged, ' interior nodes)'
+      call check(nbad == 0, 'pieces of serial blocks + key-ordered shared sums = serial f '// &
+                 'bit for bit at every node')
+      call check(nbad_merged > 0, 'consolidated 128-element rank blocks do not reproduce '// &
+                 'the serial f (the rule is needed)')
+   end subroutine test_serial_order_emulation
+
+   !> Sort element indices by their first-corner key (= serial block order, then position).
+   subroutine sort_by_serial(idx, keys)
+      integer, intent(inout) :: idx(:)
+      integer, intent(in) :: keys(:, :)
+      integer, allocatable :: kk(:)
+      kk = keys(1, idx)
+      call sort_pairs(kk, idx)
+   end subroutine sort_by_serial
+
+   subroutine sort_by_serial2(idx, key)
+      integer, intent(inout) :: idx(:)
+      integer, intent(in) :: key(:)
+      integer, allocatable :: kk(:)
+      kk = key(idx)
+      call sort_pairs(kk, idx)
+   end subroutine sort_by_serial2
+
+   !> Heap sort of kk (distinct keys), carrying idx along.
+   subroutine sort_pairs(kk, idx)
+      integer, intent(inout) :: kk(:), idx(:)
+      integer :: n, i, t
+      n = size(kk)
+      do i = n/2, 1, -1
+         call sift2(kk, idx, i, n)
+      end do
+      do i = n, 2, -1
+         t = kk(1); kk(1) = kk(i); kk(i) = t
+         t = idx(1); idx(1) = idx(i); idx(i) = t
+         call sift2(kk, idx, 1, i - 1)
+      end do
+   end subroutine sort_pairs
+
+   subroutine sift2(kk, idx, start, n)
+      integer, intent(inout) :: kk(:), idx(:)
+      integer, intent(in) :: start, n
+      integer :: r, c, t
+      r = start
+      do while (2*r <= n)
+         c = 2*r
+         if (c < n) then
+            if (kk(c + 1) > kk(c)) c = c + 1
+         end if
+         if (kk(r) >= kk(c)) return
+         t = kk(r); kk(r) = kk(c); kk(c) = t
+         t = idx(r); idx(r) = idx(c); idx(c) = t
+         r = c
+      end do
+   end subroutine sift2
+
+   !> Adversarial value: random sign and mantissa times 10**(-30..30) (Park-Miller generator).
+   real(wp) function adv(st)
+      integer(int64), intent(inout) :: st
+      real(wp) :: u(3)
+      integer :: i
+      do i = 1, 3
+         st = modulo(16807_int64*st, 2147483647_int64)
+         u(i) = real(st, wp)/2147483647.0_wp
+      end do
+      adv = merge(1.0_wp, -1.0_wp, u(1) < 0.5_wp)*(1.0_wp + u(2))*10.0_wp**(int(61.0_wp*u(3)) - 30)
+   end function adv
 
    logical function same(a, b)
       integer, intent(in) :: a(:), b(:)
