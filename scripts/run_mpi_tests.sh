@@ -1,13 +1,16 @@
 #!/bin/sh
-# MPI test runner: scripts/run_mpi_tests.sh [prog]   (default build/debug/tests/mpi_par_test)
-# Runs the MPI test program serially (no mpirun: MPI is never initialized), then under
+# MPI test runner: scripts/run_mpi_tests.sh [prog...]
+#   (default build/debug/tests/mpi_par_test build/debug/tests/mpi_par_model_test)
+# Runs each MPI test program serially (no mpirun: MPI is never initialized), then under
 # `mpirun --oversubscribe -np 2, 3, 4` (plus --allow-run-as-root when run as root), then
-# checks that a rank calling par_abort stops every rank with exit code 3 and a message
-# naming the rank. Each run has a time limit (MPI_TEST_TIMEOUT seconds, default 300), so a
+# checks with mpi_par_test that a rank calling par_abort stops every rank with exit code 3
+# and a message naming the rank. Each run has a time limit (MPI_TEST_TIMEOUT seconds, default 300), so a
 # hang is a failure. Closes with 'N passed, N failed'; exits 1 if anything failed.
 set -u
 cd "$(dirname "$0")/.." || exit 2
-prog=${1:-build/debug/tests/mpi_par_test}
+if [ $# -eq 0 ]; then
+    set -- build/debug/tests/mpi_par_test build/debug/tests/mpi_par_model_test
+fi
 TIMEOUT=${MPI_TEST_TIMEOUT:-300}
 MPIRUN="mpirun --oversubscribe"
 [ "$(id -u)" = 0 ] && MPIRUN="$MPIRUN --allow-run-as-root"
@@ -15,11 +18,6 @@ tmp=${TMPDIR:-/tmp}/dynx_mpi.$$
 trap 'rm -f "$tmp" "$tmp.err"' EXIT INT TERM
 tp=0
 tf=0
-if [ ! -x "$prog" ]; then
-    echo "FAIL $prog: not found (make $prog)"
-    echo "0 passed, 1 failed"
-    exit 1
-fi
 
 # run_one LABEL CMD...: runs, prints the output, adds its summary line to the totals
 run_one() {
@@ -48,10 +46,18 @@ run_one() {
     fi
 }
 
-run_one "$prog (serial, no mpirun)" "$prog"
-for np in 2 3 4; do
-    run_one "$MPIRUN -np $np $prog" $MPIRUN -np $np "$prog"
+for prog in "$@"; do
+    if [ ! -x "$prog" ]; then
+        echo "FAIL $prog: not found (make $prog)"
+        tf=$((tf + 1))
+        continue
+    fi
+    run_one "$prog (serial, no mpirun)" "$prog"
+    for np in 2 3 4; do
+        run_one "$MPIRUN -np $np $prog" $MPIRUN -np $np "$prog"
+    done
 done
+prog=build/debug/tests/mpi_par_test
 
 echo "== $MPIRUN -np 3 $prog abort"
 timeout "$TIMEOUT" $MPIRUN -np 3 "$prog" abort >"$tmp" 2>"$tmp.err"
