@@ -23,7 +23,8 @@ module dx_par
    private
    public :: par_init, par_finalize, par_rank, par_size, par_active, par_barrier, &
              par_allreduce, par_abort, shared_sum_t, par_shared_setup, par_shared_sum, &
-             par_shared_sum_plain, par_wtime, PAR_SUM, PAR_MIN, PAR_MAX
+             par_shared_sum_plain, par_wtime, par_minloc, par_gather_ordered, PAR_SUM, &
+             PAR_MIN, PAR_MAX
 
    integer, parameter :: PAR_SUM = 1, PAR_MIN = 2, PAR_MAX = 3
    integer, parameter :: TAG_COUNT = 101, TAG_KEYS = 102, TAG_VALUES = 103
@@ -440,6 +441,91 @@ contains
       if (.not. own_added) res(:, 1:plan%nshared) = res(:, 1:plan%nshared) + &
                                                     partial(:, 1:plan%nshared)
    end subroutine par_shared_sum_plain
+
+   !> The global minimum of x and, among ranks holding it, the lowest key (the serial loop's
+   !> first minimum): for the stable time step and its controlling element. key < 2**53.
+   subroutine par_minloc(x, key)
+      real(wp), intent(inout) :: x
+      integer, intent(inout) :: key
+      real(wp) :: pin(2, 1), pout(2, 1)
+      integer :: ierr
+      if (.not. mpi_on) return
+      ! MPI_MINLOC takes the lowest index among equal values, exactly the tie rule wanted
+      pin(1, 1) = x
+      pin(2, 1) = real(key, wp)
+      call MPI_Allreduce(pin, pout, 1, MPI_2DOUBLE_PRECISION, MPI_MINLOC, comm, ierr)
+      call check(ierr, 'MPI_Allreduce (MINLOC)')
+      x = pout(1, 1)
+      key = nint(pout(2, 1))
+   end subroutine par_minloc
+
+   !> Every rank's (key, value) pairs, gathered on every rank and sorted by key (keys distinct
+   !> over all ranks): the caller then sums them in the serial order and structure (for
+   !> energies, kinetic energy and momentum at output times). vals(ncomp, n).
+   subroutine par_gather_ordered(keys, vals, all_keys, all_vals)
+      integer, intent(in) :: keys(:)
+      real(wp), intent(in) :: vals(:, :)
+      integer, allocatable, intent(out) :: all_keys(:)
+      real(wp), allocatable, intent(out) :: all_vals(:, :)
+      integer, allocatable :: counts(:), displs(:), idx(:), kk(:)
+      real(wp), allocatable :: vv(:, :)
+      integer :: ncomp, ntot, r, ierr, i
+      ncomp = size(vals, 1)
+      if (.not. mpi_on) then
+         kk = keys
+         vv = vals
+      else
+         allocate(counts(0:nranks - 1), displs(0:nranks - 1))
+         call MPI_Allgather(size(keys), 1, MPI_INTEGER, counts, 1, MPI_INTEGER, comm, ierr)
+         call check(ierr, 'MPI_Allgather (ordered gather counts)')
+         displs(0) = 0
+         do r = 1, nranks - 1
+            displs(r) = displs(r - 1) + counts(r - 1)
+         end do
+         ntot = sum(counts)
+         allocate(kk(ntot), vv(ncomp, ntot))
+         call MPI_Allgatherv(keys, size(keys), MPI_INTEGER, kk, counts, displs, MPI_INTEGER, &
+                             comm, ierr)
+         call check(ierr, 'MPI_Allgatherv (ordered gather keys)')
+         call MPI_Allgatherv(vals, size(vals), MPI_DOUBLE_PRECISION, vv, ncomp*counts, &
+                             ncomp*displs, MPI_DOUBLE_PRECISION, comm, ierr)
+         call check(ierr, 'MPI_Allgatherv (ordered gather values)')
+      end if
+      idx = [(i, i = 1, size(kk))]
+      call sort_idx_by_key(idx, kk)
+      all_keys = kk(idx)
+      all_vals = vv(:, idx)
+   end subroutine par_gather_ordered
+
+   !> Heap sort of idx by key(idx) (many entries: the insertion sort above is for short lists).
+   subroutine sort_idx_by_key(idx, key)
+      integer, intent(inout) :: idx(:)
+      integer, intent(in) :: key(:)
+      integer :: n, i, t
+      n = size(idx)
+      do i = n/2, 1, -1
+         call sift(i, n)
+      end do
+      do i = n, 2, -1
+         t = idx(1); idx(1) = idx(i); idx(i) = t
+         call sift(1, i - 1)
+      end do
+   contains
+      subroutine sift(start, m)
+         integer, intent(in) :: start, m
+         integer :: r, c, tt
+         r = start
+         do while (2*r <= m)
+            c = 2*r
+            if (c < m) then
+               if (key(idx(c + 1)) > key(idx(c))) c = c + 1
+            end if
+            if (key(idx(r)) >= key(idx(c))) return
+            tt = idx(r); idx(r) = idx(c); idx(c) = tt
+            r = c
+         end do
+      end subroutine sift
+   end subroutine sort_idx_by_key
 
    !> Wall-clock seconds (MPI_Wtime under MPI, else the system clock).
    real(wp) function par_wtime()

@@ -9,7 +9,7 @@ program mpi_par_test
    use dx_error, only: error_t
    use dx_par, only: par_init, par_finalize, par_rank, par_size, par_allreduce, par_abort, &
                      par_barrier, shared_sum_t, par_shared_setup, par_shared_sum, PAR_SUM, &
-                     PAR_MIN, PAR_MAX
+                     PAR_MIN, PAR_MAX, par_minloc, par_gather_ordered
    use dx_model, only: model_t
    use dx_partition, only: partition_t, rank_part_t, partition_elements, rank_part
    use dx_assert, only: check, assert_summary
@@ -35,6 +35,8 @@ program mpi_par_test
    call test_random_partition(1000, 400, 1)
    call test_random_partition(3000, 500, 2)
    call test_metis_box()
+   call test_minloc()
+   call test_ordered_energy()
    call par_finalize()
    if (me == 0) call assert_summary()
 
@@ -72,6 +74,53 @@ contains
       call par_allreduce(ia, PAR_SUM)
       call check_all(ia(1) == np .and. ia(2) == np*(np - 1)/2, 'allreduce integer(:) sum')
    end subroutine test_reductions
+
+   !> Global minimum with the lowest key among ties (the serial loop's first minimum).
+   subroutine test_minloc()
+      real(wp) :: x
+      integer :: key, lastev
+      x = 1.0_wp + real(mod(me, 2), wp)
+      key = 100 - 7*me
+      call par_minloc(x, key)
+      lastev = 2*((np - 1)/2)
+      call check_all(x == 1.0_wp .and. key == 100 - 7*lastev, &
+                     'par_minloc: minimum 1 held by the even ranks, lowest key among them')
+   end subroutine test_minloc
+
+   !> Energies: 1000 per-element values (2 components, adversarial) in blocks of 128; the
+   !> serial glstat sum is `e = e + sum(blk%eint)` block by block. Elements spread over the
+   !> ranks (e*7 mod np); par_gather_ordered brings them back in key order and the same
+   !> block-structured sum gives the serial bits on every rank.
+   subroutine test_ordered_energy()
+      integer, parameter :: NE = 1000, NB = 128
+      real(wp) :: val(2, NE), ser(2), par(2)
+      integer, allocatable :: mykeys(:), allk(:)
+      real(wp), allocatable :: myvals(:, :), allv(:, :)
+      integer(int64) :: st
+      integer :: e, b
+      st = 4711_int64
+      do e = 1, NE
+         val(1, e) = adversarial(st)
+         val(2, e) = adversarial(st)
+      end do
+      ser = 0.0_wp
+      do b = 1, NE, NB
+         ser(1) = ser(1) + sum(val(1, b:min(b + NB - 1, NE)))
+         ser(2) = ser(2) + sum(val(2, b:min(b + NB - 1, NE)))
+      end do
+      mykeys = pack([(e, e = 1, NE)], [(mod(7*e, np) == me, e = 1, NE)])
+      myvals = val(:, mykeys)
+      call par_gather_ordered(mykeys, myvals, allk, allv)
+      par = 0.0_wp
+      do b = 1, NE, NB
+         par(1) = par(1) + sum(allv(1, b:min(b + NB - 1, NE)))
+         par(2) = par(2) + sum(allv(2, b:min(b + NB - 1, NE)))
+      end do
+      call check_all(size(allk) == NE .and. all(allk == [(e, e = 1, NE)]), &
+                     'par_gather_ordered: all 1000 keys, in order, on every rank')
+      call check_all(all(transfer(par, 1_int64, 2) == transfer(ser, 1_int64, 2)), &
+                     'ordered energy sum = serial block-by-block sum bit for bit')
+   end subroutine test_ordered_energy
 
    !> A deterministic generator (Park and Miller minimal standard, 1988), in (0, 1).
    real(wp) function rnd(state)
