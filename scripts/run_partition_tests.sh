@@ -8,7 +8,7 @@
 #    balance is bounded by the element granularity: 7 elements on 3 ranks give 3/2.33).
 #  - the partition is reproducible (same report and checksums from a second run)
 #  - errors: files for another NP or another deck (exit 2, file named), a corrupt file
-#    (exit 4, checksum), a missing file (exit 4), bad -n (exit 2).
+#    (exit 4, checksum), a missing file (exit 4), bad -n and a bad deck (exit 2).
 # Closes with 'N passed, N failed'; exits 1 if anything failed.
 set -u
 LC_ALL=C
@@ -109,6 +109,8 @@ cp -r "$OUT/rep" "$OUT/missing"
 rm -f "$OUT/missing/rank_00002.h5"
 expect_err "a missing rank file" 4 "rank_00002.h5: no such file" \
     "$PART" "$deck" -n 3 -o "$OUT/missing" --verify
+expect_err "a deck with an input error" 2 "deck.k:14:11: *MAT_ELASTIC: field RO:" \
+    "$PART" tests/regression/bad_negative_density/deck.k -n 2 -o "$OUT/x"
 expect_err "-n 0" 2 "-n needs a positive integer" "$PART" "$deck" -n 0
 expect_err "more ranks than elements" 2 "cannot split 7 elements into 8 ranks" \
     "$PART" tests/regression/patch_constant_strain/deck.k -n 8 -o "$OUT/x"

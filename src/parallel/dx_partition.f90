@@ -312,7 +312,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer, allocatable :: vtx(:), vwgt(:), xadj(:), adjncy(:), adjwgt(:), vpart(:)
       integer :: nv, ne, e, n, k, r, i, j, q
-      integer, allocatable :: cnt(:), mark(:)
+      integer, allocatable :: mark(:)
       ne = size(conn, 2)
       if (np < 1) then
          call set_error(error, 'number of ranks must be >= 1, got '//str(np), EXIT_INPUT)
@@ -351,8 +351,7 @@ contains
          part%epart = vpart(vtx)
       end if
       ! ranks of each node (ascending, distinct); a node of no element goes to rank 0
-      allocate(cnt(nn + 1), mark(0:np - 1))
-      cnt = 0
+      allocate(mark(0:np - 1))
       mark = 0
       allocate(part%nr_ptr(nn + 1))
       block

@@ -6,7 +6,7 @@ program dynx_part
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use dx_error, only: error_t, EXIT_INPUT, EXIT_IO, exit_process, set_error
    use dx_strings, only: str
-   use dx_log, only: log_error, log_info
+   use dx_log, only: log_info
    use dx_model, only: model_t
    use dx_model_input, only: model_input_t
    use dx_deck, only: read_deck_input
@@ -230,14 +230,14 @@ contains
 
    subroutine die_usage(msg)
       character(*), intent(in) :: msg
-      call log_error(msg)
+      write(error_unit, '(a)') 'dynx-part: error: '//msg
       write(error_unit, '(a)') 'dynx-part: try dynx-part --help'
       call exit_process(EXIT_INPUT)
    end subroutine die_usage
 
    subroutine die(err)
       type(error_t), intent(in) :: err
-      call log_error(err%message)
+      write(error_unit, '(a)') 'dynx-part: error: '//err%message
       call exit_process(err%code)
    end subroutine die
 end program dynx_part
