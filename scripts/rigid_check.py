@@ -17,8 +17,11 @@ OUTDIR/glstat; numpy only). Each prints what it measured and exits 1 when a chec
       glstat momentum component K against the impulse of a piecewise-linear force.
   rigid_check.py energy OUTDIR --band B [--after T]
       glstat energy ratio within 1 +- B (after time T).
+  rigid_check.py punch OUTDIR --z0 Z --v V --ramp T --tol T
+      prescribed rigid motion (velocity ramp to V over T, then constant) on the centre.
   rigid_check.py mass OUTDIR --body ID --mass M --xc X Y Z --inertia XX XY XZ YY YZ ZZ --tol T
-      mass properties in the rbdout header (relative to the largest value of each group).
+      mass properties in the rbdout header (relative to the largest value of each group);
+      with --v0 VX VY VZ --w0 WX WY WZ also the first-row velocity and angular velocity.
 """
 import argparse
 import sys
@@ -153,6 +156,22 @@ def energy(a):
     return result('energy ratio max |ratio - 1|', dev, a.band, dev <= a.band)
 
 
+def punch(a):
+    """prescribed rigid motion: x_c,z(t) = z0 - (ramp displacement), x and y fixed (CON1 = 4),
+    no rotation (CON2 = 7)"""
+    hdr, r = read_rbdout(a.outdir)
+    t = r[:, 0]
+    tr = a.ramp
+    d = np.where(t < tr, a.v * t * t / (2 * tr), a.v * (tr / 2 + (t - tr)))
+    ez = np.max(np.abs(r[:, 4] - (a.z0 - d))) / np.max(np.abs(d))
+    ok = result('punch z(t) vs prescribed displacement (rel)', ez, a.tol, ez <= a.tol)
+    exy = np.max(np.abs(r[:, 2:4] - r[0, 2:4]))
+    ok &= result('punch x, y drift (abs, CON1 = 4)', exy, 1e-12, exy <= 1e-12)
+    ew = np.max(np.abs(r[:, 8:11]))
+    ok &= result('punch angular velocity (abs, CON2 = 7)', ew, 0.0, ew == 0.0)
+    return ok
+
+
 def mass(a):
     hdr, _ = read_rbdout(a.outdir)
     h = hdr[a.body]
@@ -163,6 +182,13 @@ def mass(a):
     ok &= result('centre of mass (rel)', ex, a.tol, ex <= a.tol)
     ei = np.max(np.abs(h['inertia'] - np.array(a.inertia))) / np.max(np.abs(a.inertia))
     ok &= result('inertia tensor (rel)', ei, a.tol, ei <= a.tol)
+    if a.v0 is not None:
+        _, r = read_rbdout(a.outdir)
+        row = r[(r[:, 0] == r[0, 0]) & (r[:, 1] == a.body)][0]
+        ev = np.max(np.abs(row[5:8] - np.array(a.v0)))
+        ew = np.max(np.abs(row[8:11] - np.array(a.w0)))
+        ok &= result('initial velocity of the centre (abs)', ev, a.tol, ev <= a.tol)
+        ok &= result('initial angular velocity (abs)', ew, a.tol, ew <= a.tol)
     return ok
 
 
@@ -189,14 +215,22 @@ def main():
     q = s.add_parser('energy'); q.add_argument('outdir')
     q.add_argument('--band', type=float, required=True)
     q.add_argument('--after', type=float, default=0.0)
+    q = s.add_parser('punch'); q.add_argument('outdir')
+    q.add_argument('--z0', type=float, required=True)
+    q.add_argument('--v', type=float, required=True)
+    q.add_argument('--ramp', type=float, required=True)
+    q.add_argument('--tol', type=float, required=True)
     q = s.add_parser('mass'); q.add_argument('outdir')
     q.add_argument('--body', type=int, required=True)
     q.add_argument('--mass', type=float, required=True)
     q.add_argument('--xc', type=float, nargs=3, required=True)
     q.add_argument('--inertia', type=float, nargs=6, required=True)
+    q.add_argument('--v0', type=float, nargs=3)
+    q.add_argument('--w0', type=float, nargs=3)
     q.add_argument('--tol', type=float, required=True)
     a = p.parse_args()
-    ok = dict(spin=spin, top=top, fall=fall, momentum=momentum, energy=energy, mass=mass)[a.cmd](a)
+    ok = dict(spin=spin, top=top, fall=fall, momentum=momentum, energy=energy, mass=mass,
+              punch=punch)[a.cmd](a)
     sys.exit(0 if ok else 1)
 
 
