@@ -63,19 +63,6 @@ contains
                                    ' is not supported: '//why, error)
    end subroutine zero_int
 
-   subroutine zero_real(deck, blk, ic, k, w, fname, why, error)
-      type(deck_t), intent(in) :: deck
-      type(block_t), intent(in) :: blk
-      integer, intent(in) :: ic, k, w(:)
-      character(*), intent(in) :: fname, why
-      type(error_t), allocatable, intent(out) :: error
-      real(wp) :: v
-      call get_real(deck, blk, ic, k, w, fname, 0.0_wp, v, error)
-      if (allocated(error)) return
-      if (v /= 0.0_wp) call field_error(deck, blk, ic, k, w, fname, 'nonzero value '// &
-                                        rstr(v)//' is not supported: '//why, error)
-   end subroutine zero_real
-
    subroutine positive_id(deck, blk, ic, k, w, fname, v, error)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk

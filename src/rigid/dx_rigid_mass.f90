@@ -97,9 +97,17 @@ contains
          if (off <= 1.0e-18_wp*scale) exit
          do p = 1, 2
             do r = p + 1, 3
-               if (b(p, r) == 0.0_wp) cycle
-               th = (b(r, r) - b(p, p))/(2.0_wp*b(p, r))
-               t = sign(1.0_wp, th)/(abs(th) + sqrt(th*th + 1.0_wp))
+               if (abs(b(p, r)) <= 1.0e-18_wp*scale) then
+                  b(p, r) = 0.0_wp; b(r, p) = 0.0_wp
+                  cycle
+               end if
+               th = b(r, r) - b(p, p)
+               if (abs(th) > 1.0e8_wp*abs(b(p, r))) then
+                  t = b(p, r)/th          ! small rotation; avoids th**2 overflow
+               else
+                  th = th/(2.0_wp*b(p, r))
+                  t = sign(1.0_wp, th)/(abs(th) + sqrt(th*th + 1.0_wp))
+               end if
                c = 1.0_wp/sqrt(t*t + 1.0_wp)
                s = t*c
                ! b <- J^T b J with the rotation in the (p, r) plane
