@@ -247,7 +247,7 @@ contains
          do i = 1, size(rs%bodies(b)%nodes)
             nd = rs%bodies(b)%nodes(i)
             if (rs%node_body(nd) /= 0) then
-               call set_error(error, body_where(inp, model, rs, b, nrb, nb)//'node '// &
+               call set_error(error, body_where(inp, rs, b, nrb, nb)//'node '// &
                   str(model%node_label(nd))//' belongs to two rigid bodies (part '// &
                   str(rs%bodies(rs%node_body(nd))%label)//' and part '// &
                   str(rs%bodies(b)%label)//'); merge them into one')
@@ -272,7 +272,7 @@ contains
                end do
             end do
             if (.not. (bm(b) > 0.0_wp)) then
-               call set_error(error, body_where(inp, model, rs, b, nrb, nb)//'rigid body '// &
+               call set_error(error, body_where(inp, rs, b, nrb, nb)//'rigid body '// &
                   str(bd%label)//' has no mass (its nodes belong to no element)')
                return
             end if
@@ -307,7 +307,7 @@ contains
          do k = 1, size(model%spcs)
             nd = model%spcs(k)%node
             if (rs%node_body(nd) /= 0 .and. any(model%spcs(k)%dof(1:3))) then
-               call set_error(error, body_where(inp, model, rs, rs%node_body(nd), nrb, nb)// &
+               call set_error(error, body_where(inp, rs, rs%node_body(nd), nrb, nb)// &
                   'node '//str(model%node_label(nd))//' of rigid body '// &
                   str(rs%bodies(rs%node_body(nd))%label)//' has a nodal constraint '// &
                   '(*BOUNDARY_SPC_* or *NODE TC); constrain rigid bodies with CMO/CON1/CON2 '// &
@@ -320,7 +320,7 @@ contains
          do k = 1, size(model%prescribed)
             nd = model%prescribed(k)%node
             if (rs%node_body(nd) /= 0) then
-               call set_error(error, body_where(inp, model, rs, rs%node_body(nd), nrb, nb)// &
+               call set_error(error, body_where(inp, rs, rs%node_body(nd), nrb, nb)// &
                   'node '//str(model%node_label(nd))//' of rigid body '// &
                   str(rs%bodies(rs%node_body(nd))%label)//' has a nodal prescribed motion; '// &
                   'use *BOUNDARY_PRESCRIBED_MOTION_RIGID')
@@ -370,9 +370,8 @@ contains
    end function find_body
 
    !> "file:line: *KEY: " of the card that made body b
-   function body_where(inp, model, rs, b, nrb, nb) result(s)
+   function body_where(inp, rs, b, nrb, nb) result(s)
       type(model_input_t), intent(in) :: inp
-      type(model_t), intent(in) :: model
       type(rigid_system_t), intent(in) :: rs
       integer, intent(in) :: b, nrb, nb
       character(:), allocatable :: s
@@ -384,7 +383,6 @@ contains
          s = inp%files(inp%part_src(ip)%ifile)%s//':'//str(inp%part_src(ip)%line)//': *'// &
              inp%part_src(ip)%key//': '
       end if
-      if (.false.) s = s//str(model%nn)
    end function body_where
 
    !> centre, inertia, principal frame, body coordinates and initial motion of body b
@@ -426,7 +424,7 @@ contains
          end if
          call principal_axes(ten, ip, q)
          if (.not. (ip(1) > 1.0e-12_wp*ip(3)) .or. .not. (ip(3) > 0.0_wp)) then
-            call set_error(error, body_where(inp, model, rs, b, nrb, nb)//'rigid body '// &
+            call set_error(error, body_where(inp, rs, b, nrb, nb)//'rigid body '// &
                str(bd%label)//': the inertia tensor is singular (principal moments '// &
                rstr(ip(1))//', '//rstr(ip(2))//', '//rstr(ip(3))//'): are its nodes collinear?')
             return
@@ -519,7 +517,8 @@ contains
       real(wp) :: xe(3, 8), amax, c, a(3)
       dt = huge(1.0_wp)
       do b = 1, size(model%blocks)
-         associate (blk => model%blocks(b), mt => model%mats(model%parts(model%blocks(b)%ipart)%imat)%m)
+         associate (blk => model%blocks(b), &
+                    mt => model%mats(model%parts(model%blocks(b)%ipart)%imat)%m)
             if (.not. mt%is_rigid) cycle
             c = sqrt((mt%bulk + 4.0_wp*mt%shear/3.0_wp)/mt%ro)
             do e = 1, blk%nel
