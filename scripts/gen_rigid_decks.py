@@ -131,22 +131,29 @@ def main():
               50.0, 8100.0, 0.05)
 
     # (c) free fall of a rigid block under *LOAD_BODY_Z (g = 9.81), v0 = (1, 0, 2)
+    # and beside it an elastic block (2x2x1, TSSFAC 0.6) falling the same way
     m = Mesh()
     m.box(1, 0.0, 1.0, 2, 0.0, 1.0, 2, 0.0, 0.5, 1)
+    m.box(2, 3.0, 1.0, 2, 0.0, 1.0, 2, 0.0, 0.5, 1)
+    probe = m.nodes_where(lambda x, y, z: abs(x - 3.0) < 1e-9 and y < 1e-9 and z < 1e-9)[0]
     body = '\n'.join([
         '*CONTROL_TERMINATION', card(1.0),
-        '*CONTROL_TIMESTEP', card(0.0, 0.9),
+        '*CONTROL_TIMESTEP', card(0.0, 0.6),
         '*DATABASE_GLSTAT', card(0.01),
         '*DATABASE_RBDOUT', card(0.01),
+        '*DATABASE_NODOUT', card(0.01),
+        '*DATABASE_HISTORY_NODE', card(probe),
         '*DATABASE_BINARY_D3PLOT', card(0.25),
         '*PART', 'falling rigid block', card(1, 1, 1),
+        '*PART', 'falling elastic block', card(2, 1, 2),
         '*SECTION_SOLID', card(1, 1),
         '*MAT_RIGID', card(1, 7800.0, 2.0e11, 0.3),
+        '*MAT_ELASTIC', card(2, 7800.0, 2.0e11, 0.3),
         '*INITIAL_VELOCITY', card(0), card(1.0, 0.0, 2.0),
         '*LOAD_BODY_Z', card(1),
         curve(1, [(0.0, 9.81), (100.0, 9.81)]),
         m.text()])
-    write('rigid_free_fall', 'rigid block in free fall under *LOAD_BODY_Z', body)
+    write('rigid_free_fall', 'rigid and elastic blocks in free fall under *LOAD_BODY_Z', body)
 
     # TSSFAC 0.6 in the deformable decks: with 0.9 the one-point hex of the current kernel goes
     # unstable on these coarse free meshes (a bar of 10 cubes pushed sideways, a 2x2x1 block
@@ -199,8 +206,49 @@ def main():
         node_set(3, base),
         m.text()])
     mass_deck()
+    rotation_deck()
     write('rigid_punch_prescribed', 'rigid punch driven into an elastic block by '
           '*BOUNDARY_PRESCRIBED_MOTION_RIGID', body)
+
+
+def rotation_deck():
+    """prescribed rigid rotations: body 1 (1x2x3 block at the origin) turns about z at
+    1 rad/s (DOF 7, VAD 0); body 2 (the same block shifted to x = 5) turns about y by the
+    angle 0.5 t (DOF 6, VAD 2). Body 3: a unit rigid cube at y = 5 whose extra nodes are the
+    face x = 2 of a separate elastic cube (rho 8: 1 per node), spun by
+    *INITIAL_VELOCITY_GENERATION about z."""
+    m = Mesh()
+    m.box(1, 0.0, 1.0, 1, 0.0, 2.0, 1, 0.0, 3.0, 1)
+    m.box(2, 5.0, 1.0, 1, 0.0, 2.0, 1, 0.0, 3.0, 1)
+    m.box(3, 0.0, 1.0, 1, 5.0, 1.0, 1, 0.0, 1.0, 1)
+    m.box(4, 2.0, 1.0, 1, 5.0, 1.0, 1, 0.0, 1.0, 1)
+    face = m.nodes_where(lambda x, y, z: abs(x - 2.0) < 1e-9 and y > 4.9)
+    # parts 3 and 4 (cube and elastic cube) start in one rigid rotation about z through the
+    # body's centre (1.7, 5.5, 0.5)
+    body = '\n'.join([
+        '*CONTROL_TERMINATION', card(2.0),
+        '*CONTROL_TIMESTEP', card(0.0, 0.6),
+        '*DATABASE_GLSTAT', card(0.02),
+        '*DATABASE_RBDOUT', card(0.02),
+        '*DATABASE_BINARY_D3PLOT', card(0.5),
+        '*PART', 'turning block', card(1, 1, 1),
+        '*PART', 'tilting block', card(2, 1, 1),
+        '*PART', 'cube with extra nodes', card(3, 1, 1),
+        '*PART', 'elastic cube', card(4, 1, 2),
+        '*SECTION_SOLID', card(1, 1),
+        '*MAT_RIGID', card(1, 1.0, 1.0e4, 0.25),
+        '*MAT_ELASTIC', card(2, 8.0, 1.0e4, 0.25),
+        '*BOUNDARY_PRESCRIBED_MOTION_RIGID', card(1, 7, 0, 1, 1.0), card(2, 6, 2, 2, 1.0),
+        curve(1, [(0.0, 1.0), (100.0, 1.0)]),
+        curve(2, [(0.0, 0.0), (100.0, 50.0)]),
+        '*CONSTRAINED_EXTRA_NODES_SET', card(3, 7),
+        node_set(7, face),
+        '*SET_PART_LIST', card(3), card(3, 4),
+        '*INITIAL_VELOCITY_GENERATION', card(3, 1, 0.5, 0.0, 0.0, 0.0),
+        card(1.7, 5.5, 0.5, 0.0, 0.0, 1.0),
+        m.text()])
+    write('rigid_prescribed_rotation', 'prescribed rigid rotations (DOF 7 velocity, DOF 6 '
+          'angle) and extra nodes', body)
 
 
 def mass_deck():

@@ -12,13 +12,16 @@ OUTDIR/glstat; numpy only). Each prints what it measured and exits 1 when a chec
       body-frame angular velocity turns about axis 1 at (I1 - I3)/I3 * w1 (least-squares slope
       of the unwrapped phase of (w2, w3)).
   rigid_check.py fall OUTDIR --g G --x0 X Y Z --v0 X Y Z --tol T
-      x_c(t) = x0 + v0 t - g t^2/2 e_z and v_c(t + dt/2) = v0 - g (t + dt/2) e_z.
+      x_c(t) = x0 + v0 t - g t^2/2 e_z and v_c(t + dt/2) = v0 - g (t + dt/2) e_z;
+      with --node-x0 X Y Z also the nodout coordinates of the (deformable) history node.
   rigid_check.py momentum OUTDIR --axis K --force-curve T0 F0 T1 F1 ... --tol T
       glstat momentum component K against the impulse of a piecewise-linear force.
   rigid_check.py energy OUTDIR --band B [--after T]
       glstat energy ratio within 1 +- B (after time T).
   rigid_check.py punch OUTDIR --z0 Z --v V --ramp T --tol T
       prescribed rigid motion (velocity ramp to V over T, then constant) on the centre.
+  rigid_check.py rotation OUTDIR --body ID --axis K --rate W --tol T
+      prescribed rotation about global axis K by the angle W t, centre fixed.
   rigid_check.py mass OUTDIR --body ID --mass M --xc X Y Z --inertia XX XY XZ YY YZ ZZ --tol T
       mass properties in the rbdout header (relative to the largest value of each group);
       with --v0 VX VY VZ --w0 WX WY WZ also the first-row velocity and angular velocity.
@@ -130,6 +133,13 @@ def fall(a):
         ve = v0 + g * (t[k] + 0.5 * d)
         ev = max(ev, np.max(np.abs(r[k, 5:8] - ve)) / np.linalg.norm(v0))
     ok &= result('velocity v_c(t + dt/2) (rel)', ev, a.tol, ev <= a.tol)
+    if a.node_x0 is not None:
+        rows = np.array([[float(v) for v in l.split()] for l in open(a.outdir + '/nodout')
+                         if not l.startswith('#')])
+        tn = rows[:, 0]
+        xe = np.array(a.node_x0) + np.outer(tn, v0) + 0.5 * np.outer(tn * tn, g)
+        en = np.max(np.abs(rows[:, 11:14] - xe)) / np.max(np.abs(xe))
+        ok &= result('deformable node x(t) (rel)', en, a.tol, en <= a.tol)
     return ok
 
 
@@ -172,6 +182,29 @@ def punch(a):
     return ok
 
 
+def axis_rot(k, th):
+    c, s = np.cos(th), np.sin(th)
+    i, j = (k + 1) % 3, (k + 2) % 3
+    r = np.eye(3)
+    r[i, i] = c; r[j, j] = c; r[j, i] = s; r[i, j] = -s
+    return r
+
+
+def rotation(a):
+    """prescribed rotation about global axis K by the angle RATE * t: R(t) R(0)^T = rot_K,
+    centre fixed"""
+    _, r = read_rbdout(a.outdir)
+    r = r[r[:, 1] == a.body]
+    rot = r[:, 18:27].reshape(-1, 3, 3).transpose(0, 2, 1)
+    err = max(np.max(np.abs(q @ rot[0].T - axis_rot(a.axis - 1, a.rate * t)))
+              for q, t in zip(rot, r[:, 0]))
+    ok = result('body %d: R(t) R(0)^T vs rotation %g t about axis %d' % (a.body, a.rate, a.axis),
+                err, a.tol, err <= a.tol)
+    ex = np.max(np.abs(r[:, 2:5] - r[0, 2:5]))
+    ok &= result('body %d: centre fixed (abs)' % a.body, ex, a.tol, ex <= a.tol)
+    return ok
+
+
 def mass(a):
     hdr, _ = read_rbdout(a.outdir)
     h = hdr[a.body]
@@ -207,6 +240,7 @@ def main():
     q.add_argument('--g', type=float, required=True)
     q.add_argument('--x0', type=float, nargs=3, required=True)
     q.add_argument('--v0', type=float, nargs=3, required=True)
+    q.add_argument('--node-x0', type=float, nargs=3)
     q.add_argument('--tol', type=float, required=True)
     q = s.add_parser('momentum'); q.add_argument('outdir')
     q.add_argument('--axis', type=int, required=True)
@@ -220,6 +254,11 @@ def main():
     q.add_argument('--v', type=float, required=True)
     q.add_argument('--ramp', type=float, required=True)
     q.add_argument('--tol', type=float, required=True)
+    q = s.add_parser('rotation'); q.add_argument('outdir')
+    q.add_argument('--body', type=int, required=True)
+    q.add_argument('--axis', type=int, required=True)
+    q.add_argument('--rate', type=float, required=True)
+    q.add_argument('--tol', type=float, required=True)
     q = s.add_parser('mass'); q.add_argument('outdir')
     q.add_argument('--body', type=int, required=True)
     q.add_argument('--mass', type=float, required=True)
@@ -230,7 +269,7 @@ def main():
     q.add_argument('--tol', type=float, required=True)
     a = p.parse_args()
     ok = dict(spin=spin, top=top, fall=fall, momentum=momentum, energy=energy, mass=mass,
-              punch=punch)[a.cmd](a)
+              punch=punch, rotation=rotation)[a.cmd](a)
     sys.exit(0 if ok else 1)
 
 
