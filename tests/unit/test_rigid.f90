@@ -3,11 +3,16 @@
 !> top b x b, height h) has V = h (a^2 + ab + b^2)/3, z_c = h (a^2 + 2ab + 3b^2) /
 !> (4 (a^2 + ab + b^2)) and I_zz = rho h (b^5 - a^5) / (30 (b - a)) about its axis, to 1e-13;
 !> the principal axes of Q diag(1, 2, 3) Q^T are (1, 2, 3) and the columns of Q to 1e-13, a
-!> degenerate tensor still gives a proper rotation; an axis rotation is exact.
+!> degenerate tensor still gives a proper rotation; an axis rotation is exact. Deck reading:
+!> a deck without rigid bodies allocates neither model%rigid nor model%body_loads; the punch
+!> deck's *MAT_RIGID CON1/CON2, prescribed rigid motion and merged mass (3900 to 1e-13).
 program test_rigid
    use dx_kinds, only: wp
    use dx_rigid_mass, only: hex_moments, inertia_about, principal_axes, rotation_about
    use dx_assert, only: check, check_close, assert_summary
+   use dx_error, only: error_t
+   use dx_model, only: model_t
+   use dx_deck, only: read_deck
    implicit none
    real(wp), parameter :: a = 2.0_wp, b = 1.0_wp, h = 1.5_wp, rho = 3.0_wp
    real(wp), parameter :: pi = 3.14159265358979323846_wp
@@ -69,8 +74,42 @@ program test_rigid
               <= 1.0e-15_wp, 'rotation about z by pi/2 maps x to y')
    r = rotation_about(1, 1.234_wp)
    call check(maxval(abs(matmul(transpose(r), r) - eye)) <= 1.0e-15_wp, 'rotation orthogonal')
+
+   ! ---- decks (run from the top directory): nothing allocated without rigid bodies
+   call deck_checks()
    call assert_summary()
 contains
+   subroutine deck_checks()
+      type(model_t) :: md
+      type(error_t), allocatable :: err
+      call read_deck('tests/regression/elastic_wave/deck.k', md, err)
+      call check(.not. allocated(err), 'deformable deck reads')
+      call check(.not. allocated(md%rigid), 'deformable deck: model%rigid not allocated')
+      call check(.not. allocated(md%body_loads), 'deformable deck: no body loads allocated')
+      call read_deck('tests/regression/rigid_punch_prescribed/deck.k', md, err)
+      call check(.not. allocated(err), 'punch deck reads')
+      if (allocated(err)) return
+      call check(allocated(md%rigid), 'punch deck: model%rigid allocated')
+      call check(size(md%rigid%bodies) == 1, 'punch deck: one rigid body')
+      associate (bd => md%rigid%bodies(1))
+         call check(bd%label == 2, 'punch: body label = part id 2')
+         call check(all(bd%fix_t .eqv. [.true., .true., .false.]), 'punch: CON1 = 4 fixes x, y')
+         call check(all(bd%fix_r), 'punch: CON2 = 7 fixes all rotations')
+         call check(size(bd%motions) == 1, 'punch: one prescribed motion')
+         call check(bd%motions(1)%dof == 3 .and. bd%motions(1)%vad == 0, 'punch: DOF 3, VAD 0')
+         call check_close(bd%motions(1)%sf, -1.0_wp, 0.0_wp, 0.0_wp, 'punch: SF')
+         call check_close(bd%mass, 3900.0_wp, 0.0_wp, 1.0e-13_wp, &
+                          'punch: mass 1950 + 1950 lumped from the block')
+         call check(count(md%rigid%node_body > 0) == 18, 'punch: 18 rigid nodes')
+      end associate
+      call read_deck('tests/regression/rigid_free_fall/deck.k', md, err)
+      call check(.not. allocated(err), 'free-fall deck reads')
+      if (allocated(err)) return
+      call check(allocated(md%body_loads), 'free fall: body loads allocated')
+      call check(size(md%body_loads) == 1, 'free fall: one body load')
+      call check(md%body_loads(1)%dir == 3, 'free fall: *LOAD_BODY_Z acts along z')
+   end subroutine deck_checks
+
    pure real(wp) function det(m)
       real(wp), intent(in) :: m(3, 3)
       det = m(1, 1)*(m(2, 2)*m(3, 3) - m(3, 2)*m(2, 3)) - m(1, 2)*(m(2, 1)*m(3, 3) - &
