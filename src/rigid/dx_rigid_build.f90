@@ -307,7 +307,7 @@ contains
          do k = 1, size(model%spcs)
             nd = model%spcs(k)%node
             if (rs%node_body(nd) /= 0 .and. any(model%spcs(k)%dof(1:3))) then
-               call set_error(error, body_where(inp, rs, rs%node_body(nd), nrb, nb)// &
+               call set_error(error, constraint_where(inp, model, nset_map, nd, .true.)// &
                   'node '//str(model%node_label(nd))//' of rigid body '// &
                   str(rs%bodies(rs%node_body(nd))%label)//' has a nodal constraint '// &
                   '(*BOUNDARY_SPC_* or *NODE TC); constrain rigid bodies with CMO/CON1/CON2 '// &
@@ -320,7 +320,7 @@ contains
          do k = 1, size(model%prescribed)
             nd = model%prescribed(k)%node
             if (rs%node_body(nd) /= 0) then
-               call set_error(error, body_where(inp, rs, rs%node_body(nd), nrb, nb)// &
+               call set_error(error, constraint_where(inp, model, nset_map, nd, .false.)// &
                   'node '//str(model%node_label(nd))//' of rigid body '// &
                   str(rs%bodies(rs%node_body(nd))%label)//' has a nodal prescribed motion; '// &
                   'use *BOUNDARY_PRESCRIBED_MOTION_RIGID')
@@ -384,6 +384,46 @@ contains
              inp%part_src(ip)%key//': '
       end if
    end function body_where
+
+   !> "file:line: *KEY: " of the first SPC (spc) or nodal prescribed motion card on node nd
+   function constraint_where(inp, model, nset_map, nd, spc) result(s)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(in) :: model
+      type(label_map_t), intent(in) :: nset_map
+      integer, intent(in) :: nd
+      logical, intent(in) :: spc
+      character(:), allocatable :: s
+      integer :: k, n
+      logical :: is_set, hit
+      integer :: id
+      n = size(inp%motions)
+      if (spc) n = size(inp%spcs)
+      do k = 1, n
+         if (spc) then
+            is_set = inp%spcs(k)%is_set; id = inp%spcs(k)%id
+         else
+            is_set = inp%motions(k)%is_set; id = inp%motions(k)%id
+         end if
+         if (is_set) then
+            hit = nset_map%get(id) > 0
+            if (hit) hit = any(model%node_sets(nset_map%get(id))%nodes == nd)
+         else
+            hit = id == model%node_label(nd)
+         end if
+         if (hit) then
+            if (spc) then
+               s = inp%files(inp%spcs(k)%src%ifile)%s//':'//str(inp%spcs(k)%src%line)// &
+                   ': *'//inp%spcs(k)%src%key//': '
+            else
+               s = inp%files(inp%motions(k)%src%ifile)%s//':'// &
+                   str(inp%motions(k)%src%line)//': *'//inp%motions(k)%src%key//': '
+            end if
+            return
+         end if
+      end do
+      ! *NODE TC
+      s = inp%files(inp%node_src(1, nd))%s//':'//str(inp%node_src(2, nd))//': *NODE: '
+   end function constraint_where
 
    !> centre, inertia, principal frame, body coordinates and initial motion of body b
    subroutine finish_body(inp, model, rs, b, inert, m, m1, m2, xref, node_map, nrb, nb, &
