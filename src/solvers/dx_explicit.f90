@@ -87,7 +87,8 @@ contains
       wext = 0.0_wp; wrw = 0.0_wp; wcon = 0.0_wp
       next_plot = 0.0_wp; next_glstat = 0.0_wp; next_nodout = 0.0_wp; next_status = 0.0_wp
       model%energy%initial = 0.5_wp*sum(model%mass*sum(model%v**2, dim=1))
-      if (allocated(model%rigid)) model%energy%initial = model%energy%initial + model%rigid%ke0_corr
+      if (allocated(model%rigid)) model%energy%initial = model%energy%initial + &
+                                                        model%rigid%ke0_corr
       t0wall = wall_time()
       call log_info('      cycle        time          dt  dt-element   wall [s]   left [s]')
       done = .false.
@@ -210,7 +211,8 @@ contains
             next_nodout = next_output_time(next_nodout, model%db%nodout_dt, t)
          end if
          if (allocated(model%rigid)) then
-            if (model%rigid%rbdout_dt > 0.0_wp .and. (t >= model%rigid%next_rbdout .or. done)) then
+            if (model%rigid%rbdout_dt > 0.0_wp .and. &
+                (t >= model%rigid%next_rbdout .or. done)) then
                call rigid_write_rbdout(model%rigid, opts%outdir, t, ioerr)
                if (allocated(ioerr)) then
                   call move_alloc(ioerr, error); call finish(model, out, error); return
