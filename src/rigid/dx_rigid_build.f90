@@ -162,7 +162,9 @@ contains
                end do
             end do
             bd%nodes = pack([(i, i = 1, model%nn)], inbody)
-            xref(:, b) = sum(model%x0(:, bd%nodes), dim=2)/real(size(bd%nodes), wp)
+            xref(:, b) = 0.0_wp
+            if (size(bd%nodes) > 0) &
+               xref(:, b) = sum(model%x0(:, bd%nodes), dim=2)/real(size(bd%nodes), wp)
             rho = model%mats(model%parts(ip)%imat)%m%ro
             do k = 1, size(model%blocks)
                if (model%blocks(k)%ipart /= ip) cycle
@@ -242,8 +244,13 @@ contains
             rs%bodies(b)%nodes = pack([(i, i = 1, model%nn)], inbody)
          end associate
       end do
-      ! ---- every node in one body only
+      ! ---- every body has nodes, every node is in one body only
       do b = 1, size(rs%bodies)
+         if (size(rs%bodies(b)%nodes) == 0) then
+            call set_error(error, body_where(inp, rs, b, nrb, nb)//'rigid part '// &
+               str(rs%bodies(b)%label)//' has no elements and no extra nodes')
+            return
+         end if
          do i = 1, size(rs%bodies(b)%nodes)
             nd = rs%bodies(b)%nodes(i)
             if (rs%node_body(nd) /= 0) then

@@ -141,6 +141,7 @@ contains
          do i = 1, model%nn
             if (model%mass(i) > 0.0_wp) model%v(:, i) = model%v(:, i) + dtavg*model%f(:, i)/model%mass(i)
          end do
+         ! rigid bodies take their nodes' summed forces and overwrite their velocities
          if (allocated(model%rigid)) call rigid_step(model%rigid, model, t, dt, dtavg, vold)
          ! ---- constraints (work of the reaction forces enters the external work)
          do i = 1, size(cnodes)
