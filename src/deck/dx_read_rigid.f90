@@ -199,8 +199,6 @@ contains
             'XC YC ZC TM IRCS NODEID; IXX IXY IXZ IYY IYZ IZZ; VTX VTY VTZ VRX VRY VRZ', error)
          return
       end if
-      call check_max_cards(deck, blk, 5, error)
-      if (allocated(error)) return
       p%title = trim(adjustl(blk%cards(1)%text(1:min(70, len(blk%cards(1)%text)))))
       ic = 2
       call positive_id(deck, blk, ic, 1, w, 'PID', p%label, error)
@@ -237,6 +235,8 @@ contains
                           'is not supported; give the tensor in the global system', error)
          return
       end if
+      call check_max_cards(deck, blk, 5, error)
+      if (allocated(error)) return
       call get_int(deck, blk, ic, 6, w, 'NODEID', 0, q%nodeid, error)
       if (allocated(error)) return
       if (q%nodeid < 0) then
