@@ -19,6 +19,7 @@ module dx_explicit
    use dx_loads, only: add_external_loads, has_external_loads
    use dx_constraints, only: apply_spc, apply_prescribed, apply_rigidwalls
    use dx_output, only: output_t
+   use dx_rigid_solver, only: rigid_step, rigid_write_rbdout, rigid_close
    implicit none
    private
    public :: run_options_t, init_state, run_explicit
@@ -54,6 +55,7 @@ contains
       model%time = 0.0_wp
       model%cycle = 0
       model%energy%mass = sum(model%mass)
+      if (allocated(model%rigid)) model%energy%mass = model%energy%mass + model%rigid%mass_corr
    end subroutine init_state
 
    !> Run the explicit time loop to ENDTIM/ENDCYC, writing output as the deck asks.
@@ -65,7 +67,7 @@ contains
       real(wp), allocatable :: vold(:, :), fext(:, :), vfree(:, :)
       integer, allocatable :: cnodes(:)
       real(wp) :: dt, dt_old, dtavg, dtcrit, tsmin, t, wext, wrw, wcon, next_plot, next_glstat
-      real(wp) :: next_nodout, next_status, t0wall, ke, eint, ehg, du(3), tend, dt_first
+      real(wp) :: next_nodout, next_status, t0wall, ke, eint, ehg, du(3), tend, dt_first, wrig
       integer :: b, i, ibmin, iemin, nd
       logical :: loads, done
       type(block_result_t) :: res
@@ -85,6 +87,8 @@ contains
       wext = 0.0_wp; wrw = 0.0_wp; wcon = 0.0_wp
       next_plot = 0.0_wp; next_glstat = 0.0_wp; next_nodout = 0.0_wp; next_status = 0.0_wp
       model%energy%initial = 0.5_wp*sum(model%mass*sum(model%v**2, dim=1))
+      if (allocated(model%rigid)) model%energy%initial = model%energy%initial + &
+                                                        model%rigid%ke0_corr
       t0wall = wall_time()
       call log_info('      cycle        time          dt  dt-element   wall [s]   left [s]')
       done = .false.
@@ -94,6 +98,7 @@ contains
          model%f = 0.0_wp
          dtcrit = huge_wp; ibmin = 0; iemin = 0
          do b = 1, size(model%blocks)
+            if (model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%is_rigid) cycle
             associate (blk => model%blocks(b), part => model%parts(model%blocks(b)%ipart))
                call hex8_block(blk, model%mats(part%imat)%m, part, model%x, model%v, dt_old, &
                                model%f, res)
@@ -108,6 +113,7 @@ contains
             end associate
          end do
          if (ibmin > 0) model%dt_elem = model%blocks(ibmin)%elem(iemin)
+         if (allocated(model%rigid) .and. ibmin == 0) dtcrit = model%rigid%dtcrit
          ! ---- external forces
          if (loads) then
             fext = 0.0_wp
@@ -135,6 +141,8 @@ contains
          do i = 1, model%nn
             if (model%mass(i) > 0.0_wp) model%v(:, i) = model%v(:, i) + dtavg*model%f(:, i)/model%mass(i)
          end do
+         ! rigid bodies take their nodes' summed forces and overwrite their velocities
+         if (allocated(model%rigid)) call rigid_step(model%rigid, model, t, dt, dtavg, vold)
          ! ---- constraints (work of the reaction forces enters the external work)
          do i = 1, size(cnodes)
             vfree(:, i) = model%v(:, cnodes(i))
@@ -159,6 +167,11 @@ contains
             ke = ke + model%mass(i)*dot_product(vold(:, i), model%v(:, i))
          end do
          ke = 0.5_wp*ke
+         wrig = 0.0_wp
+         if (allocated(model%rigid)) then
+            ke = ke + model%rigid%ke_corr
+            wrig = model%rigid%work
+         end if
          if (.not. ieee_is_finite(ke)) then
             call nan_failure(model, error)
             call finish(model, out, error)
@@ -170,7 +183,7 @@ contains
             ehg = ehg + sum(model%blocks(b)%ehg)
          end do
          model%dt = dt
-         call set_energy(model, ke, eint, ehg, wext + wcon, -wrw)
+         call set_energy(model, ke, eint, ehg, wext + wcon + wrig, -wrw)
          ! ---- output at t(n)
          done = t >= tend .or. (model%ctrl%endcyc > 0 .and. model%cycle >= model%ctrl%endcyc)
          if (t >= next_plot .or. done) then
@@ -198,6 +211,17 @@ contains
             end if
             next_nodout = next_output_time(next_nodout, model%db%nodout_dt, t)
          end if
+         if (allocated(model%rigid)) then
+            if (model%rigid%rbdout_dt > 0.0_wp .and. &
+                (t >= model%rigid%next_rbdout .or. done)) then
+               call rigid_write_rbdout(model%rigid, opts%outdir, t, ioerr)
+               if (allocated(ioerr)) then
+                  call move_alloc(ioerr, error); call finish(model, out, error); return
+               end if
+               model%rigid%next_rbdout = next_output_time(model%rigid%next_rbdout, &
+                                                          model%rigid%rbdout_dt, t)
+            end if
+         end if
          if (t >= next_status .or. done) then
             call status_line(model, t, dt, t0wall, tend)
             if (tend < huge_wp) then
@@ -219,6 +243,7 @@ contains
          rstr(1.0e9_wp*(wall_time() - t0wall)/real(max(1, model%cycle), wp)/ &
          real(max(1, model%ne), wp), 4)//' ns per element-cycle, peak memory '// &
          str(peak_memory_kb())//' KiB')
+      if (allocated(model%rigid)) call rigid_close(model%rigid)
       call out%close(ioerr)
       if (allocated(ioerr)) call move_alloc(ioerr, error)
    end subroutine run_explicit
@@ -249,6 +274,8 @@ contains
       do d = 1, 3
          model%energy%momentum(d) = sum(model%mass*model%v(d, :))
       end do
+      if (allocated(model%rigid)) model%energy%momentum = model%energy%momentum + &
+                                                         model%rigid%p_corr
    end subroutine set_energy
 
    !> Nodes with an SPC or prescribed motion (their reaction forces do work).
@@ -331,6 +358,7 @@ contains
       type(error_t), allocatable :: ioerr
       call out%write_plot(model, ioerr)
       if (allocated(ioerr)) deallocate(ioerr)
+      if (allocated(model%rigid)) call rigid_close(model%rigid)
       call out%close(ioerr)
       if (allocated(error)) error%message = error%message//new_line('a')// &
          'dynx: the last state (time '//rstr(model%time)//') was written to the plot file'
