@@ -6,6 +6,7 @@ module dx_model
    use dx_kinds, only: wp, nv_chunk
    use dx_material, only: mat_holder_t
    use dx_curve, only: curve_t
+   use dx_contact_types, only: contact_set_t
    implicit none
    private
    public :: model_t, elem_block_t, part_t, section_t, hourglass_t, node_set_t, part_set_t, &
@@ -160,9 +161,10 @@ module dx_model
       real(wp) :: hourglass = 0.0_wp
       real(wp) :: external_work = 0.0_wp
       real(wp) :: rigidwall = 0.0_wp    !< energy taken by rigid walls (positive = absorbed)
+      real(wp) :: sliding = 0.0_wp      !< sliding interface energy: -(work of contact forces)
       real(wp) :: total = 0.0_wp        !< kinetic + internal + hourglass
       real(wp) :: initial = 0.0_wp      !< total at t = 0
-      real(wp) :: ratio = 1.0_wp        !< (total + rigidwall) / (initial + external work)
+      real(wp) :: ratio = 1.0_wp        !< (total + rigidwall + sliding) / (initial + ext. work)
       real(wp) :: momentum(3) = 0.0_wp
       real(wp) :: mass = 0.0_wp
    end type energy_t
@@ -197,6 +199,7 @@ module dx_model
       type(load_node_t), allocatable :: node_loads(:)
       type(load_segment_t), allocatable :: seg_loads(:)
       type(rigidwall_t), allocatable :: walls(:)
+      type(contact_set_t), allocatable :: contact   !< *CONTACT_* state (none: not allocated)
       ! --- controls and output
       type(control_t) :: ctrl
       type(database_t) :: db
