@@ -88,7 +88,7 @@ def rod(a):
     d.w('*CONTROL_TERMINATION\n%10.6g\n' % tend)
     d.w('*CONTROL_TIMESTEP\n       0.0       0.9\n')
     d.w('*DATABASE_GLSTAT\n%10.4g\n' % (tend / 400))
-    d.w('*DATABASE_RCFORC\n%10.4g\n' % (tend / 400))
+    d.w('*DATABASE_RCFORC\n%10.4g\n' % (tend / 2000))
     d.w('*DATABASE_NODOUT\n%10.4g\n' % (tend / 20))
     d.w('*DATABASE_BINARY_D3PLOT\n%10.4g\n' % (tend / 4))
     mat_part(d, 1, rho, E, 0.0, 'striker')
@@ -99,11 +99,23 @@ def rod(a):
     d.node_set(3, range(1, 8 * (a.nx + 1) + 1))
     d.w('*INITIAL_VELOCITY\n         1\n%10.4g       0.0       0.0\n' % a.v)
     d.w('*DATABASE_HISTORY_NODE_SET\n         3\n')
+    if a.sets:
+        # slave: the striker's end nodes (node set 10); master: the target's end face as a
+        # segment set (20), written with the inward node order on purpose (dynx orients it)
+        nx = a.nx
+        d.node_set(10, [s[nx][j][k] for j in range(2) for k in range(2)])
+        d.w('*SET_SEGMENT\n        20\n%10d%10d%10d%10d\n' % (t[0][0][0], t[0][0][1], t[0][1][1],
+                                                            t[0][1][0]))
     cid = '_ID' if a.id else ''
     d.w('*CONTACT_%s%s\n' % (a.kw, cid))
     if a.id:
         d.w('        12rod ends\n')
-    d.w('$     SSID      MSID     SSTYP     MSTYP\n         1         2         3         3\n')
+    if a.sets:
+        d.w('$     SSID      MSID     SSTYP     MSTYP\n        10        20         4         0\n')
+    elif 'SINGLE' in a.kw:
+        d.w('$     SSID      MSID     SSTYP     MSTYP\n         0         0         5\n')
+    else:
+        d.w('$     SSID      MSID     SSTYP     MSTYP\n         1         2         3         3\n')
     d.w('$       FS        FD\n       0.0       0.0\n')
     d.w('$      SFS       SFM\n%10.4g%10.4g\n' % (a.sfs, a.sfs))
     d.write(a.out, '*TITLE\nTwo equal elastic rods, striker at %g m/s, nx=%d, *CONTACT_%s\n'
@@ -120,6 +132,7 @@ def main():
     p.add_argument('--kw', default='SURFACE_TO_SURFACE')
     p.add_argument('--sfs', type=float, default=1.0)
     p.add_argument('--id', action='store_true')
+    p.add_argument('--sets', action='store_true', help='node set slave, segment set master')
     p.add_argument('out')
     a = ap.parse_args()
     {'rod': rod}[a.cmd](a)
