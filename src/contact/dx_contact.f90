@@ -54,6 +54,7 @@ contains
                   do j = 1, size(f%pass)
                      f%pass(j)%iseg = 0
                      f%pass(j)%ft = 0.0_wp
+                     f%pass(j)%gap = 0.0_wp
                   end do
                   cycle
                end if
@@ -63,7 +64,7 @@ contains
                      if (model%cycle - p%last_sort >= f%bsort .or. &
                          2.0_wp*p%moved >= p%margin) then
                         t1 = wall_time()
-                        margin = 0.5_wp*mean_extent(p, model%x)
+                        margin = 0.25_wp*mean_extent(p, model%x)
                         margin = max(margin, 4.0_wp*vmax*dt_est)
                         call bucket_sort(p, model%x, margin)
                         p%last_sort = model%cycle
@@ -117,7 +118,7 @@ contains
       real(wp), intent(in) :: vold(:, :), dtavg
       character(*), intent(in) :: outdir
       type(error_t), allocatable, intent(out) :: error
-      integer :: i, nd
+      integer :: i, j, nd, ncand, nslave
       real(wp) :: w, t
       logical :: done
       associate (cs => model%contact)
@@ -139,11 +140,19 @@ contains
          end if
          if (done .and. .not. cs%finished) then
             cs%finished = .true.
+            ncand = 0; nslave = 0
+            do i = 1, size(cs%iface)
+               do j = 1, size(cs%iface(i)%pass)
+                  ncand = ncand + size(cs%iface(i)%pass(j)%cand)
+                  nslave = nslave + cs%iface(i)%pass(j)%nnode
+               end do
+            end do
             call log_info('dynx: contact: '//str(size(cs%iface))//' interface(s), '// &
                str(size(cs%node))//' contact nodes, '//str(sum([(sum(cs%iface(i)%pass(:)%nsort), &
                i = 1, size(cs%iface))]))//' bucket sorts, wall time search '// &
                rstr(cs%t_search, 4)//' s, local search + forces '// &
-               rstr(cs%t_force - cs%t_search, 4)//' s, sliding energy '// &
+               rstr(cs%t_force - cs%t_search, 4)//' s, candidates per slave node '// &
+               rstr(real(ncand, wp)/real(max(1, nslave), wp), 4)//', sliding energy '// &
                rstr(model%energy%sliding, 6))
             if (cs%rcforc_open) close(cs%rcforc_unit)
             cs%rcforc_open = .false.

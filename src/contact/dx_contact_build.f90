@@ -200,9 +200,10 @@ contains
          p%nloc(p%node) = [(i, i = 1, p%nnode)]
          p%nnrm = 0.0_wp
       end if
-      allocate(p%ft(3, p%nnode), p%iseg(p%nnode))
+      allocate(p%ft(3, p%nnode), p%iseg(p%nnode), p%gap(p%nnode))
       p%ft = 0.0_wp
       p%iseg = 0
+      p%gap = 0.0_wp
       allocate(p%cand_ptr(p%nnode + 1), p%cand(0))
       p%cand_ptr = 1
    end subroutine make_pass

@@ -98,6 +98,21 @@ contains
       end if
    end subroutine project_point
 
+   !> whether xs lies outside the box of the n points xe grown by d
+   pure logical function outside_box(xe, n, xs, d) result(out)
+      real(wp), intent(in) :: xe(3, 4), xs(3), d
+      integer, intent(in) :: n
+      integer :: a
+      real(wp) :: lo, hi
+      out = .true.
+      do a = 1, 3
+         lo = min(xe(a, 1), xe(a, 2), xe(a, 3), xe(a, n))
+         hi = max(xe(a, 1), xe(a, 2), xe(a, 3), xe(a, n))
+         if (xs(a) < lo - d .or. xs(a) > hi + d) return
+      end do
+      out = .false.
+   end function outside_box
+
    pure subroutine quad_geom(xe, xi, nsh, xc, t1, t2)
       real(wp), intent(in) :: xe(3, 4), xi(2)
       real(wp), intent(out) :: nsh(4), xc(3), t1(3), t2(3)
@@ -134,6 +149,17 @@ contains
             s = p%cand(c)
             n = p%nsn(s)
             xe(:, 1:n) = x(:, p%seg(1:n, s))
+            ! cheap rejections before the projection: outside the segment's box grown by
+            ! the depth, or facing away (normal at the centre)
+            if (outside_box(xe, n, x(:, k), p%depth(s))) cycle
+            if (p%nsseg > 0) then
+               if (n == 4) then
+                  nrm = cross(xe(:, 3) - xe(:, 1), xe(:, 4) - xe(:, 2))
+               else
+                  nrm = cross(xe(:, 2) - xe(:, 1), xe(:, 3) - xe(:, 1))
+               end if
+               if (dot_product(p%nnrm(:, i), nrm) >= 0.0_wp) cycle
+            end if
             call project_point(n, xe, x(:, k), nsh, xc, nrm, xi, inside)
             if (.not. inside) cycle
             ! only segments facing the node's own surface (rejects the side faces of a
@@ -151,12 +177,29 @@ contains
          end do
          if (sb == 0) then
             p%iseg(i) = 0
+            p%gap(i) = 0.0_wp
             p%ft(:, i) = 0.0_wp
             cycle
          end if
+         n = p%nsn(sb)
+         vrel = v(:, k)
+         do j = 1, n
+            vrel = vrel - nb(j)*v(:, p%seg(j, sb))
+         end do
+         vn = dot_product(vrel, nrmb)
+         ! the penetration can only grow by what the node travelled in one step: a deeper
+         ! first contact, or a jump onto another segment deeper than the last gap (a node
+         ! coming round an edge already inside), is not taken, since its penalty force
+         ! would inject energy
+         if (-gbest > -p%gap(i) + 2.0_wp*abs(vn)*dt_est + 0.02_wp*p%depth(sb)) then
+            p%iseg(i) = 0
+            p%gap(i) = 0.0_wp
+            p%ft(:, i) = 0.0_wp
+            cycle
+         end if
+         p%gap(i) = gbest
          nactive = nactive + 1
          p%iseg(i) = sb
-         n = p%nsn(sb)
          ! ---- stiffness and masses
          ms = mass(k)
          inv_mm = 0.0_wp
@@ -169,12 +212,6 @@ contains
          if (f%soft == 1 .and. dt_est > 0.0_wp) &
             kk = max(kk, 0.5_wp*f%sofscl*min(ms, mm)/dt_est**2)
          fn = -kk*gbest
-         ! ---- relative velocity of the slave node and the contact point
-         vrel = v(:, k)
-         do j = 1, n
-            vrel = vrel - nb(j)*v(:, p%seg(j, sb))
-         end do
-         vn = dot_product(vrel, nrmb)
          if (f%vdc > 0.0_wp) then
             meff = 0.0_wp
             if (ms > 0.0_wp .and. inv_mm > 0.0_wp) meff = 1.0_wp/(1.0_wp/ms + inv_mm)

@@ -23,7 +23,8 @@ contains
       type(contact_pass_t), intent(inout) :: p
       real(wp), intent(in) :: x(:, :)
       real(wp), intent(in) :: margin
-      real(wp), allocatable :: blo(:, :), bhi(:, :)
+      real(wp), allocatable :: blo(:, :), bhi(:, :), snrm(:, :)
+      real(wp) :: d1(3), d2(3)
       real(wp) :: lo(3), hi(3), ext, h, vol
       integer :: i, s, k, n, c, ic(3), jlo(3), jhi(3), i1, i2, i3, ncap, ncells, nc
       integer, allocatable :: fill(:), cand(:), tmp(:)
@@ -96,6 +97,20 @@ contains
             end do
          end do
       end do
+      ! ---- unit normals of the segments (diagonal cross product)
+      allocate(snrm(3, p%nseg))
+      do s = 1, p%nseg
+         associate (sg => p%seg(:, s))
+            if (p%nsn(s) == 4) then
+               d1 = x(:, sg(3)) - x(:, sg(1)); d2 = x(:, sg(4)) - x(:, sg(2))
+            else
+               d1 = x(:, sg(2)) - x(:, sg(1)); d2 = x(:, sg(3)) - x(:, sg(1))
+            end if
+         end associate
+         snrm(:, s) = [d1(2)*d2(3) - d1(3)*d2(2), d1(3)*d2(1) - d1(1)*d2(3), &
+                       d1(1)*d2(2) - d1(2)*d2(1)]
+         snrm(:, s) = snrm(:, s)/max(norm2(snrm(:, s)), tiny(1.0_wp))
+      end do
       ! ---- candidates of each slave node
       allocate(cand(max(16, 2*p%nnode)))
       nc = 0
@@ -110,6 +125,11 @@ contains
             if (any(p%seg(1:p%nsn(s), s) == k)) cycle
             if (p%exclude_owner) then
                if (any(p%owner(:, s) == k)) cycle
+            end if
+            ! segments clearly facing the same way as the node's surface (its own face and
+            ! its neighbours on a single surface) cannot be hit before the next sort
+            if (p%nsseg > 0) then
+               if (dot_product(p%nnrm(:, i), snrm(:, s)) > 0.3_wp) cycle
             end if
             if (nc == size(cand)) then
                allocate(tmp(2*nc))

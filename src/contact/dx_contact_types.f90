@@ -36,7 +36,7 @@ module dx_contact_types
       ! --- bucket sort and candidate lists (rebuilt every BSORT cycles or on motion)
       real(wp) :: margin = 0.0_wp              !< search distance beyond the depth
       real(wp) :: moved = 0.0_wp               !< max nodal travel since the last sort
-      integer :: last_sort = -huge(1)          !< cycle of the last sort
+      integer :: last_sort = -1000000          !< cycle of the last sort
       integer :: nsort = 0
       integer, allocatable :: cand_ptr(:)      !< (nnode+1) CSR into cand
       integer, allocatable :: cand(:)          !< candidate segments of each slave node
@@ -46,6 +46,7 @@ module dx_contact_types
       ! --- per-node state
       real(wp), allocatable :: ft(:, :)        !< (3, nnode) tangential (trial) force
       integer, allocatable :: iseg(:)          !< (nnode) segment in contact (0: none)
+      real(wp), allocatable :: gap(:)          !< (nnode) its normal gap (< 0), 0: none
    end type contact_pass_t
 
    !> One *CONTACT_... interface: parameters, one or two passes, resultant forces.

@@ -102,7 +102,7 @@ contains
       p%depth = [0.5_wp]
       p%area = [1.0_wp]
       allocate(p%owner(8, 1)); p%owner = 0
-      allocate(p%ft(3, 1), p%iseg(1)); p%ft = 0.0_wp; p%iseg = 0
+      allocate(p%ft(3, 1), p%iseg(1), p%gap(1)); p%ft = 0.0_wp; p%iseg = 0; p%gap = 0.0_wp
       allocate(p%cand_ptr(2), p%cand(0)); p%cand_ptr = 1
    end subroutine one_segment
 
