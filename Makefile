@@ -87,6 +87,7 @@ test: deps
 bench: deps
 	@$(MAKE) --no-print-directory all
 	@sh scripts/bench.sh
+	@sh scripts/bench_contact.sh
 
 studies: deps
 	@$(MAKE) --no-print-directory all

@@ -71,6 +71,62 @@ def rod(a):
     return ok
 
 
+def hertz(a):
+    """Contact radius a and peak pressure p0 from the last plot state: p = -sigma_zz of the
+    block's top element layer (centroids at depth h/2) fitted by the Hertz ellipse
+    p^2 = p0^2 (1 - r^2/a^2) (least squares of p^2 against r^2 over the elements with
+    p > 0.3 max p); the force F from rcforc (mean of the last 10 % of the run, x4 for the
+    quarter model). Hertz (Johnson 1985, ch. 4): a = (3 F R/(4 E*))^(1/3), p0 = 3F/(2 pi a^2)."""
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import dxpost
+    h5 = os.path.join(a.out, 'd3plot.h5')
+    times = dxpost.states(h5)
+    k = len(times)
+    _, xyz = dxpost.dataset(h5, dxpost.state_path(k) + '/coordinates')
+    _, sig = dxpost.dataset(h5, dxpost.state_path(k) + '/stress')
+    _, conn = dxpost.dataset(h5, '/mesh/hex8')
+    _, pid = dxpost.dataset(h5, '/mesh/part_ids')
+    ne = len(pid)
+    x = dxpost.vec3(xyz)
+    cents = []
+    for e in range(ne):
+        if pid[e] != 1:
+            continue
+        nodes = conn[8 * e:8 * e + 8]
+        c = [sum(x[n][q] for n in nodes) / 8.0 for q in range(3)]
+        ztop = max(x[n][2] for n in nodes)
+        cents.append((e, c, ztop))
+    zmax = max(z for _, _, z in cents)
+    top = [(math.hypot(c[0], c[1]), -sig[6 * e + 2]) for e, c, z in cents
+           if z > zmax - 0.2 * a.zone / a.n - 1e-9 and c[2] > zmax - a.zone / a.n]
+    pmax = max(p for _, p in top)
+    pts = [(r * r, p * p) for r, p in top if p > 0.3 * pmax]
+    n = len(pts)
+    mx = sum(u for u, _ in pts) / n
+    my = sum(v for _, v in pts) / n
+    sxx = sum((u - mx) ** 2 for u, _ in pts)
+    sxy = sum((u - mx) * (v - my) for u, v in pts)
+    slope = sxy / sxx
+    p0 = math.sqrt(my - slope * mx)
+    arad = math.sqrt(-(my - slope * mx) / slope)
+    names, rows = table(os.path.join(a.out, 'rcforc'))
+    fz = names.index('master_z')
+    tl = rows[-1][0]
+    last = [abs(r[fz]) for r in rows if r[0] >= 0.9 * tl]
+    F = 4.0 * sum(last) / len(last)
+    estar = a.E / (2.0 * (1.0 - a.nu ** 2))
+    ah = (3.0 * F * a.R / (4.0 * estar)) ** (1.0 / 3.0)
+    p0h = 3.0 * F / (2.0 * math.pi * ah * ah)
+    print('force F = %.6g kN (full model), %d top elements in the fit, max element p %.4g GPa'
+          % (F, n, pmax))
+    ok = report('contact radius a [mm] vs Hertz', arad, ah, 0.0, a.tol)
+    ok &= report('peak pressure p0 [GPa] vs Hertz', p0, p0h, 0.0, a.tol)
+    if a.csv:
+        with open(a.csv, 'a') as f:
+            f.write('%s %.6g %.6g %.6g %.6g %.6g\n' % (a.out, F, arad, ah, p0, p0h))
+    return ok
+
+
 def main():
     ap = argparse.ArgumentParser()
     sub = ap.add_subparsers(dest='cmd', required=True)
@@ -85,8 +141,16 @@ def main():
     p.add_argument('--tol-v', type=float, default=0.03)
     p.add_argument('--tol-e', type=float, default=0.01)
     p.add_argument('--single', action='store_true', help='single surface: no force check')
+    p = sub.add_parser('hertz'); p.add_argument('out')
+    p.add_argument('--R', type=float, default=10.0)
+    p.add_argument('--E', type=float, default=210.0)
+    p.add_argument('--nu', type=float, default=0.3)
+    p.add_argument('--n', type=int, default=12)
+    p.add_argument('--zone', type=float, default=1.0)
+    p.add_argument('--tol', type=float, default=0.05)
+    p.add_argument('--csv')
     a = ap.parse_args()
-    ok = {'rod': rod}[a.cmd](a)
+    ok = {'rod': rod, 'hertz': hertz}[a.cmd](a)
     sys.exit(0 if ok else 1)
 
 

@@ -3,8 +3,9 @@
 !>    (every BSORT cycles, and whenever twice the largest nodal travel since the last sort
 !>    reaches the search margin), local search and penalty forces for every active interface
 !>    (BT <= t <= DT), added into model%f; the contact springs enter the critical step as
-!>    dt <= 1/sqrt(1/dt_e^2 + w_c^2/4) (a node between its element and a contact spring of
-!>    frequency w_c = sqrt(k(1/m_s + sum N_i^2/m_i))).
+!>    dt <= 1/sqrt(1/dt_e^2 + w_c^2/4), w_c^2 = max over nodes of the Gershgorin row sum of
+!>    the contact stiffness over the nodal mass (2k on a slave node, 2k N_i on a master node,
+!>    summed over its springs): an upper bound of the contact frequencies.
 !>  contact_work: after the velocity update: work of the contact forces with the centred
 !>    weighting of docs/design.md, W += f_c(n).dtavg(n)(v(n-1/2) + v(n+1/2))/2; the sliding
 !>    interface energy is -W (stored penalty energy plus friction dissipation); writes rcforc.
@@ -37,6 +38,7 @@ contains
       associate (cs => model%contact)
          do i = 1, size(cs%node)
             cs%fc(:, cs%node(i)) = 0.0_wp
+            cs%krow(cs%node(i)) = 0.0_wp
          end do
          vmax = 0.0_wp
          do i = 1, size(cs%node)
@@ -66,13 +68,14 @@ contains
                         t1 = wall_time()
                         margin = 0.25_wp*mean_extent(p, model%x)
                         margin = max(margin, 4.0_wp*vmax*dt_est)
-                        call bucket_sort(p, model%x, margin)
+                        call bucket_sort(p, model%x, margin, model%mass)
                         p%last_sort = model%cycle
                         cs%t_search = cs%t_search + (wall_time() - t1)
                      end if
+                     w2max = max(w2max, p%w2pot)
                      fsum = 0.0_wp
                      call pass_forces(f, p, model%x, model%v, model%mass, dt_old, dt_est, &
-                                      cs%fc, fsum, w2max, f%nactive)
+                                      2.0_wp*vmax*dt_est, cs%fc, fsum, cs%krow, f%nactive)
                      if (j == 1) then
                         f%fslave = f%fslave + fsum
                         f%fmaster = f%fmaster - fsum
@@ -87,10 +90,11 @@ contains
          do i = 1, size(cs%node)
             nd = cs%node(i)
             model%f(:, nd) = model%f(:, nd) + cs%fc(:, nd)
+            if (model%mass(nd) > 0.0_wp) w2max = max(w2max, cs%krow(nd)/model%mass(nd))
          end do
          cs%dt_limit = huge(1.0_wp)
          if (w2max > 0.0_wp) then
-            cs%dt_limit = 1.0_wp/sqrt(1.0_wp/dtcrit**2 + 0.25_wp*w2max)
+            cs%dt_limit = 1.0_wp/sqrt(1.0_wp/dtcrit**2 + w2max)
             dtcrit = min(dtcrit, cs%dt_limit)
          end if
          cs%t_force = cs%t_force + (wall_time() - t0)

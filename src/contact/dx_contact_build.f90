@@ -65,8 +65,9 @@ contains
          end associate
       end do
       model%contact%node = pack([(i, i = 1, model%nn)], used)
-      allocate(model%contact%fc(3, model%nn))
+      allocate(model%contact%fc(3, model%nn), model%contact%krow(model%nn))
       model%contact%fc = 0.0_wp
+      model%contact%krow = 0.0_wp
       model%contact%rcforc_dt = inp%contact%rcforc_dt
    end subroutine build_contact
 

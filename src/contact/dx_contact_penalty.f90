@@ -127,24 +127,28 @@ contains
    end subroutine quad_geom
 
    !> Contact forces of pass p into fc; fsum: resultant on the slave nodes of the pass;
-   !> w2max: largest contact frequency^2 k(1/m_s + sum N_i^2/m_i) (for the time step);
-   !> dt_old: the last step (tangential slip increment), dt_est: the step being taken.
-   subroutine pass_forces(f, p, x, v, mass, dt_old, dt_est, fc, fsum, w2max, nactive)
+   !> krow: Gershgorin row sums of the contact stiffness, 2k on the slave node and 2k N_i on
+   !> the master nodes (max krow/m bounds the contact frequency^2, for the time step);
+   !> dt_old: the last step (tangential slip increment), dt_est: the step being taken;
+   !> a node closer than gtol to a segment (not yet touching) also enters krow, so that the
+   !> step is already small in the cycle its contact starts.
+   subroutine pass_forces(f, p, x, v, mass, dt_old, dt_est, gtol, fc, fsum, krow, nactive)
       type(contact_iface_t), intent(in) :: f
       type(contact_pass_t), intent(inout) :: p
       real(wp), intent(in) :: x(:, :), v(:, :), mass(:)
-      real(wp), intent(in) :: dt_old, dt_est
-      real(wp), intent(inout) :: fc(:, :), fsum(3), w2max
+      real(wp), intent(in) :: dt_old, dt_est, gtol
+      real(wp), intent(inout) :: fc(:, :), fsum(3), krow(:)
       integer, intent(inout) :: nactive
       real(wp) :: xe(3, 4), nsh(4), xc(3), nrm(3), xi(2), g, gbest, nb(4), nrmb(3)
       real(wp) :: kk, fn, vrel(3), vn, vt(3), vtm, ms, mm, meff, mu, fy, ftr(3), fsl(3), fmag
-      real(wp) :: w2, inv_mm
+      real(wp) :: inv_mm
       integer :: i, k, c, s, sb, j, n
-      logical :: inside
+      logical :: inside, near
       do i = 1, p%nnode
          k = p%node(i)
          sb = 0
          gbest = -huge(1.0_wp)
+         near = .false.
          do c = p%cand_ptr(i), p%cand_ptr(i + 1) - 1
             s = p%cand(c)
             n = p%nsn(s)
@@ -168,6 +172,13 @@ contains
                if (dot_product(p%nnrm(:, i), nrm) >= 0.0_wp) cycle
             end if
             g = dot_product(x(:, k) - xc, nrm)
+            if (g >= 0.0_wp .and. g < gtol .and. .not. near) then
+               near = .true.
+               krow(k) = krow(k) + 2.0_wp*p%kseg(s)
+               do j = 1, n
+                  krow(p%seg(j, s)) = krow(p%seg(j, s)) + 2.0_wp*p%kseg(s)*nsh(j)
+               end do
+            end if
             ! a node on the segment's plane up to round-off (an edge shared with the master
             ! body's side) is not penetrating it
             if (g >= -1.0e-8_wp*p%depth(s) .or. -g > p%depth(s)) cycle
@@ -236,9 +247,10 @@ contains
             fc(:, p%seg(j, sb)) = fc(:, p%seg(j, sb)) - nb(j)*fsl
          end do
          fsum = fsum + fsl
-         w2 = 0.0_wp
-         if (ms > 0.0_wp) w2 = kk*(1.0_wp/ms + inv_mm)
-         w2max = max(w2max, w2)
+         krow(k) = krow(k) + 2.0_wp*kk
+         do j = 1, n
+            krow(p%seg(j, sb)) = krow(p%seg(j, sb)) + 2.0_wp*kk*nb(j)
+         end do
       end do
    end subroutine pass_forces
 end module dx_contact_penalty

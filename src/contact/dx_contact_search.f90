@@ -19,10 +19,14 @@ module dx_contact_search
 contains
 
    !> Rebuild the candidate lists of pass p from coordinates x; margin: search distance.
-   subroutine bucket_sort(p, x, margin)
+   !> mass (optional): nodal masses, for the frequency bound w2pot of the candidate pairs,
+   !> max over slave nodes with candidates of 4 k_max/min(m_slave, m_master nodes): a pair
+   !> that may touch before the next sort keeps the step small even while it is apart.
+   subroutine bucket_sort(p, x, margin, mass)
       type(contact_pass_t), intent(inout) :: p
       real(wp), intent(in) :: x(:, :)
       real(wp), intent(in) :: margin
+      real(wp), intent(in), optional :: mass(:)
       real(wp), allocatable :: blo(:, :), bhi(:, :), snrm(:, :)
       real(wp) :: d1(3), d2(3)
       real(wp) :: lo(3), hi(3), ext, h, vol
@@ -141,6 +145,17 @@ contains
          end do
       end do
       p%cand_ptr(p%nnode + 1) = nc + 1
+      p%w2pot = 0.0_wp
+      if (present(mass)) then
+         do i = 1, p%nnode
+            do n = p%cand_ptr(i), nc
+               if (n >= p%cand_ptr(i + 1)) exit
+               s = cand(n)
+               vol = min(mass(p%node(i)), minval(mass(p%seg(1:p%nsn(s), s))))
+               if (vol > 0.0_wp) p%w2pot = max(p%w2pot, 4.0_wp*p%kseg(s)/vol)
+            end do
+         end do
+      end if
       ok = .true.
       if (allocated(p%cand)) deallocate(p%cand)
       p%cand = cand(1:nc)

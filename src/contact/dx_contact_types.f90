@@ -38,6 +38,7 @@ module dx_contact_types
       real(wp) :: moved = 0.0_wp               !< max nodal travel since the last sort
       integer :: last_sort = -1000000          !< cycle of the last sort
       integer :: nsort = 0
+      real(wp) :: w2pot = 0.0_wp               !< contact frequency^2 bound of the candidates
       integer, allocatable :: cand_ptr(:)      !< (nnode+1) CSR into cand
       integer, allocatable :: cand(:)          !< candidate segments of each slave node
       integer :: ncell(3) = 0                  !< bucket grid
@@ -71,6 +72,7 @@ module dx_contact_types
       type(contact_iface_t), allocatable :: iface(:)
       integer, allocatable :: node(:)          !< every node any interface touches
       real(wp), allocatable :: fc(:, :)        !< (3, nn) contact force of this cycle
+      real(wp), allocatable :: krow(:)         !< (nn) contact stiffness row sums, this cycle
       real(wp) :: work = 0.0_wp                !< work of the contact forces (centred)
       real(wp) :: rcforc_dt = 0.0_wp
       real(wp) :: next_rcforc = 0.0_wp
