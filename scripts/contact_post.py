@@ -127,6 +127,37 @@ def hertz(a):
     return ok
 
 
+def slide(a):
+    """Block on a plate (gen_contact_decks.py slide): with friction, the block's centre node
+    decelerates at mu F/m (least-squares slope of vx over the sliding phase) and the
+    tangential/normal force ratio is mu; frictionless, vx stays v0, the tangential force is
+    zero and the normal force has no spikes while the nodes cross the plate's segment edges."""
+    names, rows = table(os.path.join(a.out, 'nodout'))
+    t, vx = names.index('time'), names.index('x_vel')
+    pts = [(r[t], r[vx]) for r in rows if r[t] >= 0.1 * a.tend and r[vx] > 0.05 * a.v]
+    n = len(pts)
+    mt = sum(p[0] for p in pts) / n
+    mv = sum(p[1] for p in pts) / n
+    slope = sum((p[0] - mt) * (p[1] - mv) for p in pts) / sum((p[0] - mt) ** 2 for p in pts)
+    names, rows = table(os.path.join(a.out, 'rcforc'))
+    fx, fz = names.index('slave_x'), names.index('slave_z')
+    late = [r for r in rows if r[0] >= 0.2 * a.tend]
+    mfz = sum(r[fz] for r in late) / len(late)
+    ok = report('mean normal force [kN] vs load F', mfz, a.F, 0.0, 0.02)
+    if a.mu > 0:
+        ok &= report('deceleration [m/s/ms] vs mu F/m', -slope, a.mu * a.F / a.m, 0.0, 0.03)
+        ratio = sorted(abs(r[fx] / r[fz]) for r in late if r[fz] > 0)
+        ok &= report('median |f_t|/f_n vs mu', ratio[len(ratio) // 2], a.mu, 0.0, 0.01)
+    else:
+        ok &= report('velocity change [m/s] (frictionless)', rows and pts[-1][1] - a.v, 0.0,
+                     1e-3 * a.v, 0.0)
+        ok &= report('largest |f_t| / F (frictionless)', max(abs(r[fx]) for r in rows) / a.F,
+                     0.0, 1e-3, 0.0)
+        ok &= report('largest f_n / F after settling (no spikes)',
+                     max(r[fz] for r in late) / a.F, 1.0, 0.5, 0.0)
+    return ok
+
+
 def main():
     ap = argparse.ArgumentParser()
     sub = ap.add_subparsers(dest='cmd', required=True)
@@ -149,8 +180,14 @@ def main():
     p.add_argument('--zone', type=float, default=1.0)
     p.add_argument('--tol', type=float, default=0.05)
     p.add_argument('--csv')
+    p = sub.add_parser('slide'); p.add_argument('out')
+    p.add_argument('--mu', type=float, default=0.2)
+    p.add_argument('--F', type=float, default=0.02)
+    p.add_argument('--m', type=float, default=8.0 * 7.85e-6)
+    p.add_argument('--v', type=float, default=20.0)
+    p.add_argument('--tend', type=float, default=0.2)
     a = ap.parse_args()
-    ok = {'rod': rod, 'hertz': hertz}[a.cmd](a)
+    ok = {'rod': rod, 'hertz': hertz, 'slide': slide}[a.cmd](a)
     sys.exit(0 if ok else 1)
 
 
