@@ -158,6 +158,19 @@ def slide(a):
     return ok
 
 
+def conserve(a):
+    """Energy ratio band and x momentum conservation over the run (glstat)."""
+    names, rows = table(os.path.join(a.out, 'glstat'))
+    r, px = names.index('energy_ratio'), names.index('xmom')
+    lo, hi = min(x[r] for x in rows), max(x[r] for x in rows)
+    print('energy ratio min %.6f max %.6f final %.6f' % (lo, hi, rows[-1][r]))
+    ok = report('largest energy ratio error', max(1 - lo, hi - 1), 0.0, a.tol_e, 0.0)
+    p0 = rows[0][px]
+    ok &= report('largest x momentum change / initial', max(abs(x[px] - p0) for x in rows) / abs(p0),
+                 0.0, a.tol_p, 0.0)
+    return ok
+
+
 def main():
     ap = argparse.ArgumentParser()
     sub = ap.add_subparsers(dest='cmd', required=True)
@@ -186,8 +199,11 @@ def main():
     p.add_argument('--m', type=float, default=8.0 * 7.85e-6)
     p.add_argument('--v', type=float, default=20.0)
     p.add_argument('--tend', type=float, default=0.2)
+    p = sub.add_parser('conserve'); p.add_argument('out')
+    p.add_argument('--tol-e', type=float, default=0.01)
+    p.add_argument('--tol-p', type=float, default=1e-9)
     a = ap.parse_args()
-    ok = {'rod': rod, 'hertz': hertz, 'slide': slide}[a.cmd](a)
+    ok = {'rod': rod, 'hertz': hertz, 'slide': slide, 'conserve': conserve}[a.cmd](a)
     sys.exit(0 if ok else 1)
 
 
