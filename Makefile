@@ -92,6 +92,7 @@ bench: deps
 studies: deps
 	@$(MAKE) --no-print-directory all
 	@sh scripts/studies.sh
+	@sh scripts/studies_contact.sh
 
 clean:
 	rm -rf build bin out
