@@ -32,7 +32,7 @@ contains
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: dtcrit
       real(wp) :: vmax, t, t0, t1, w2max, dt_est, fsum(3), margin
-      integer :: i, j, k, nd
+      integer :: i, j, nd
       t0 = wall_time()
       t = model%time
       associate (cs => model%contact)
@@ -99,7 +99,6 @@ contains
          end if
          cs%t_force = cs%t_force + (wall_time() - t0)
       end associate
-      if (.false.) k = 0
    end subroutine contact_forces
 
    !> mean largest extent of the pass's segments

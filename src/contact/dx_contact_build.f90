@@ -417,7 +417,7 @@ contains
       character(*), intent(in) :: fname
       type(surface_t), intent(out) :: s
       type(error_t), allocatable, intent(out) :: error
-      integer :: k, j, i, n, e, b, q, f, ns, sg(4), nsn, nd(4), key(4)
+      integer :: k, j, i, e, b, q, f, ns, sg(4), nsn, nd(4), key(4)
       integer, allocatable :: eptr(:), elist(:)
       character(:), allocatable :: at_set
       k = 0
@@ -473,8 +473,6 @@ contains
             return
          end if
       end do
-      n = 0
-      if (.false.) n = n + 1
    end subroutine segset_surface
 
    function node_text(model, nd) result(t)
