@@ -63,5 +63,12 @@ echo "|---|---|---|---|---|---|---|---|---|---|---|"
 grep -v '^#' $csv | awk '{printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %+.1f %% | %+.1f %% |\n", $1,$2,$3,$4,$5,$6,$7,$8,$9,100*$10,100*$11}'
 echo ""
 echo "![error against run time](hertz_error.png)"
+echo ""
+echo "Notes (2026-11-25 run): with SFS = 1 the penalty springs are softer than the local"
+echo "stiffness of the half-space and the error converges slowly with the mesh (p0 -37, -28,"
+echo "-21 %): the interface compliance, not the mesh, limits it. SFS = 10 gives a and p0 within"
+echo "a few percent at n = 4 and 6; at n = 8 the run turned dynamic at about 0.9 T (the contact"
+echo "did positive work: sliding energy went negative and the kinetic energy rose), so its row"
+echo "is wrong. That failure is open (docs/design.md, contact); the regression case uses n = 4."
 } > $D/hertz.md
 cat $D/hertz.md
