@@ -186,6 +186,19 @@ contains
                gbest = g; sb = s; nb = nsh; nrmb = nrm
             end if
          end do
+         ! a node in contact last cycle that now projects onto no segment (it sits over the
+         ! kink of a master surface that has become concave) stays on its segment, at the
+         ! clamped closest point: releasing and recapturing it would create energy
+         if (sb == 0 .and. p%iseg(i) > 0) then
+            s = p%iseg(i)
+            n = p%nsn(s)
+            xe(:, 1:n) = x(:, p%seg(1:n, s))
+            call project_point(n, xe, x(:, k), nsh, xc, nrm, xi, inside)
+            g = dot_product(x(:, k) - xc, nrm)
+            if (g < -1.0e-8_wp*p%depth(s) .and. -g <= p%depth(s) .and. norm2(nrm) > 0.0_wp) then
+               sb = s; gbest = g; nb = nsh; nrmb = nrm
+            end if
+         end if
          if (sb == 0) then
             p%iseg(i) = 0
             p%gap(i) = 0.0_wp
