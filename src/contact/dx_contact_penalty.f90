@@ -260,9 +260,11 @@ contains
             fc(:, p%seg(j, sb)) = fc(:, p%seg(j, sb)) - nb(j)*fsl
          end do
          fsum = fsum + fsl
-         krow(k) = krow(k) + 2.0_wp*kk
+         ! the time step sees the segment stiffness only: the SOFT = 1 stiffness is scaled
+         ! to the step itself (w dt fixed by SOFSCL), feeding it back would shrink the step
+         krow(k) = krow(k) + 2.0_wp*p%kseg(sb)
          do j = 1, n
-            krow(p%seg(j, sb)) = krow(p%seg(j, sb)) + 2.0_wp*kk*nb(j)
+            krow(p%seg(j, sb)) = krow(p%seg(j, sb)) + 2.0_wp*p%kseg(sb)*nb(j)
          end do
       end do
    end subroutine pass_forces
