@@ -286,7 +286,8 @@ contains
       call check(.not. allocated(err), 'glstat parses')
       if (allocated(err)) write(*, '(a)') err%message
       if (.not. allocated(err)) then
-         call check(size(names) == 13 .and. size(rows, 2) == 2, 'glstat: 13 columns, 2 rows')
+         call check(size(names) == 14 .and. size(rows, 2) == 2, 'glstat: 14 columns, 2 rows')
+         call check(names(14) == 'sliding_interface', 'glstat column 14 is sliding_interface')
          call check(names(4) == 'kinetic', 'glstat column 4 is kinetic')
          call check_close(rows(4, 2), 5.0_wp, 0.0_wp, 1.0e-10_wp, 'glstat kinetic')
          call check_close(rows(12, 2), -2.0_wp, 0.0_wp, 1.0e-10_wp, 'glstat ymom')
