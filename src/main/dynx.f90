@@ -13,7 +13,7 @@ program dynx
    use dx_explicit, only: run_options_t, run_explicit, init_state
    use dx_restart, only: restart_read
    use dx_restart_deck, only: apply_restart_deck
-   use dx_signals, only: signals_install
+   use dx_signals, only: signals_install, SIGTERM_NUM, SIGINT_NUM, SIGUSR1_NUM
    use dx_io_sys, only: sys_epoch_seconds
    implicit none
    character(:), allocatable :: deck, outdir, arg, val, rfile, rdeck
@@ -57,11 +57,9 @@ program dynx
          read(val, *, iostat=ios) opts%ck%walltime
          if (ios /= 0 .or. .not. (opts%ck%walltime > 0.0_wp)) &
             call die_usage('--walltime needs a positive number of seconds')
-      case ('--stop-at-cycle')
+      case ('--raise-at-cycle')
          i = i + 1; val = get_arg(i)
-         read(val, *, iostat=ios) opts%ck%stop_at_cycle
-         if (ios /= 0 .or. opts%ck%stop_at_cycle < 1) &
-            call die_usage('--stop-at-cycle needs a positive integer')
+         call parse_raise(val, opts%ck%raise_cycle, opts%ck%raise_sig)
       case ('--ignore-unknown')
          ignore_unknown = .true.
       case default
@@ -82,6 +80,7 @@ program dynx
    opts%ck%outdir = outdir
    opts%ck%deck = deck
    call slurm_limit(opts%ck%walltime)
+   if (.not. check_only) call signals_install()   ! polled once per cycle by the solver
 
    call read_deck(deck, model, error, ignore_unknown)
    if (allocated(error)) call die(error)
@@ -113,7 +112,6 @@ program dynx
       call out%open(model, outdir, error)
    end if
    if (allocated(error)) call die(error)
-   call signals_install()
    call run_explicit(model, opts, out, error)
    call log_summary()
    if (allocated(error)) then
@@ -156,7 +154,8 @@ contains
          '                       output intervals, curves; docs/keywords.md)', &
          '  --walltime S         write a restart dump and stop (exit 5) before S seconds of', &
          '                       wall time (SLURM_JOB_END_TIME is read when set)', &
-         '  --stop-at-cycle N    act as if SIGTERM arrived at cycle N (tests)', &
+         '  --raise-at-cycle N[:SIG]  send SIG (TERM, INT, USR1; default TERM) to dynx', &
+         '                       itself at cycle N (tests of the signal path)', &
          '  --ignore-unknown     unknown keywords are warnings, not errors', &
          '  -h, --help           this text', &
          '', &
@@ -185,6 +184,27 @@ contains
       if (walltime <= 0.0_wp .or. left < walltime) walltime = left
       call log_info('dynx: SLURM_JOB_END_TIME leaves '//rstr(left, 6)//' s')
    end subroutine slurm_limit
+
+   !> --raise-at-cycle N[:SIG]
+   subroutine parse_raise(v, n, sig)
+      character(*), intent(in) :: v
+      integer, intent(out) :: n, sig
+      integer :: k, ios
+      character(:), allocatable :: name
+      k = index(v, ':')
+      name = 'TERM'
+      if (k > 0) name = v(k + 1:)
+      if (k == 0) k = len(v) + 1
+      read(v(1:k - 1), *, iostat=ios) n
+      if (ios /= 0 .or. n < 1) call die_usage('--raise-at-cycle needs N[:SIG] with N > 0')
+      select case (name)
+      case ('TERM', 'SIGTERM'); sig = SIGTERM_NUM
+      case ('INT', 'SIGINT'); sig = SIGINT_NUM
+      case ('USR1', 'SIGUSR1'); sig = SIGUSR1_NUM
+      case default
+         call die_usage('--raise-at-cycle: signal '//name//' is not one of TERM, INT, USR1')
+      end select
+   end subroutine parse_raise
 
    subroutine die_usage(msg)
       character(*), intent(in) :: msg

@@ -20,7 +20,8 @@ module dx_checkpoint
    use dx_model, only: model_t
    use dx_output, only: output_t
    use dx_restart, only: restart_write
-   use dx_signals, only: signal_stop_requested, signal_dump_requested, signal_name
+   use dx_signals, only: signal_stop_requested, signal_dump_requested, signal_name, &
+                         signal_raise
    implicit none
    private
    public :: checkpoint_t, checkpoint_stage, checkpoint_failure_dump
@@ -33,7 +34,8 @@ module dx_checkpoint
       real(wp) :: last = -1.0_wp                !< wall_time() at the previous call
       real(wp) :: cycle_cost = 0.0_wp           !< smoothed seconds per cycle
       real(wp) :: dump_cost = -1.0_wp           !< seconds of the costliest dump (-1: none yet)
-      integer :: stop_at_cycle = 0              !< testing: act as if SIGTERM came at this cycle
+      integer :: raise_cycle = 0                !< testing: raise raise_sig at this cycle
+      integer :: raise_sig = 0                  !< (--raise-at-cycle N:SIG, real handler path)
       logical :: endeng_hit = .false.           !< set by the solver
    end type checkpoint_t
 
@@ -52,6 +54,7 @@ contains
       character(:), allocatable :: path, why
 
       stopped = .false.
+      if (ck%raise_cycle > 0 .and. model%cycle == ck%raise_cycle) call signal_raise(ck%raise_sig)
       now = wall_time()
       if (ck%last >= 0.0_wp) then
          if (ck%cycle_cost == 0.0_wp) then
@@ -101,8 +104,6 @@ contains
       why = ''
       if (sig /= 0) then
          why = signal_name(sig)
-      else if (ck%stop_at_cycle > 0 .and. model%cycle >= ck%stop_at_cycle) then
-         why = 'SIGTERM (simulated by --stop-at-cycle)'
       else if (ck%endeng_hit) then
          why = 'ENDENG'
       else if (ck%walltime > 0.0_wp) then
