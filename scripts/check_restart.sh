@@ -10,6 +10,7 @@
 #            real handler path, without timing luck)
 #   sigterm  a real SIGTERM after a random delay (0.2 .. 1.2 s; retried shorter if the run
 #            ended first), exit code 5 expected, then continue from the dump
+#   walltime --walltime 0.8: a dump and exit 5 before 0.8 s of wall time, then continue
 #   usr1     SIGUSR1 at a random cycle (--raise-at-cycle N:USR1: dump and go on); the run
 #            must end normally with
 #            the reference files, then a continue from that dump over the finished output
@@ -70,6 +71,13 @@ for m in $modes; do
         if [ $rc -ne 5 ]; then echo "  sigterm: exit $rc (expected 5) after ${ms} ms"; fail=1; continue; fi
         n=$(sed -n 's/.*stopped by SIGTERM at cycle \([0-9]*\).*/\1/p' "$d/run1.log")
         echo "  sigterm: stopped at cycle $n after ${ms} ms"
+        ;;
+    walltime)
+        "$DYNX" -i "$deck" -o "$d" --walltime 0.8 > "$d/run1.log" 2>&1
+        rc=$?
+        if [ $rc -ne 5 ]; then echo "  walltime: exit $rc (expected 5) with --walltime 0.8"; fail=1; continue; fi
+        grep -q 'stopped by the wall-clock limit' "$d/run1.log" || { echo "  walltime: no limit message"; fail=1; }
+        n=$(sed -n 's/.*stopped by the wall-clock limit.* at cycle \([0-9]*\),.*/\1/p' "$d/run1.log")
         ;;
     usr1)
         n=$(rnd 1 $((ncyc - 1)) 3)

@@ -15,6 +15,7 @@ program dynx
    use dx_restart_deck, only: apply_restart_deck
    use dx_signals, only: signals_install, SIGTERM_NUM, SIGINT_NUM, SIGUSR1_NUM
    use dx_io_sys, only: sys_epoch_seconds
+   use dx_timer, only: wall_time
    implicit none
    character(:), allocatable :: deck, outdir, arg, val, rfile, rdeck
    type(model_t) :: model
@@ -24,6 +25,7 @@ program dynx
    logical :: check_only, ignore_unknown
    integer :: i, n, ios
 
+   opts%ck%wall0 = wall_time()       ! the wall-clock limit counts from process start
    check_only = .false.
    ignore_unknown = .false.
    outdir = '.'

@@ -36,7 +36,10 @@ module dx_checkpoint
       real(wp) :: dump_cost = -1.0_wp           !< seconds of the costliest dump (-1: none yet)
       integer :: raise_cycle = 0                !< testing: raise raise_sig at this cycle
       integer :: raise_sig = 0                  !< (--raise-at-cycle N:SIG, real handler path)
-      logical :: endeng_hit = .false.           !< set by the solver
+      logical :: endeng_hit = .false.           !< set by the solver ...
+      real(wp) :: endeng_ratio = 1.0_wp         !< ... with the ratio, cycle and time
+      integer :: endeng_cycle = 0
+      real(wp) :: endeng_time = 0.0_wp
    end type checkpoint_t
 
 contains
@@ -123,11 +126,12 @@ contains
       call out%close(error)
       if (allocated(error)) return
       if (why == 'ENDENG') then
-         call set_error(error, 'energy ratio '//rstr(model%energy%ratio, 8)//' left the '// &
+         call set_error(error, 'energy ratio '//rstr(ck%endeng_ratio, 8)//' left the '// &
             'band 1 +- ENDENG/100 = '//rstr(model%ctrl%endeng/100.0_wp, 4)// &
-            ' (*CONTROL_TERMINATION ENDENG) at cycle '//str(model%cycle)//', time '// &
-            rstr(model%time)//new_line('a')//'dynx: restart dump '//path// &
-            ' and the last plot state written', EXIT_NUMERIC)
+            ' (*CONTROL_TERMINATION ENDENG) at cycle '//str(ck%endeng_cycle)//', time '// &
+            rstr(ck%endeng_time)//new_line('a')//'dynx: restart dump '//path// &
+            ' (cycle '//str(model%cycle)//', time '//rstr(model%time)// &
+            ') and the last plot state written', EXIT_NUMERIC)
       else
          call set_error(error, 'dynx: stopped by '//why//' at cycle '//str(model%cycle)// &
             ', time '//rstr(model%time)//'; restart dump '//path//' and the last plot '// &

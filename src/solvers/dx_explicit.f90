@@ -95,7 +95,7 @@ contains
                        rstr(model%time))
       end if
       t0wall = wall_time()
-      ck%wall0 = t0wall
+      if (ck%wall0 <= 0.0_wp) ck%wall0 = t0wall   ! main sets it at process start
       call log_info('      cycle        time          dt  dt-element   wall [s]   left [s]')
       done = .false.
       associate (dt_old => model%run%dt_old, dt_first => model%run%dt_first, &
@@ -186,8 +186,14 @@ contains
          end do
          model%dt = dt
          call set_energy(model, ke, eint, ehg, wext + wcon, -wrw)
-         if (model%ctrl%endeng > 0.0_wp) ck%endeng_hit = ck%endeng_hit .or. &
-            abs(model%energy%ratio - 1.0_wp)*100.0_wp > model%ctrl%endeng
+         if (model%ctrl%endeng > 0.0_wp .and. .not. ck%endeng_hit) then
+            if (abs(model%energy%ratio - 1.0_wp)*100.0_wp > model%ctrl%endeng) then
+               ck%endeng_hit = .true.      ! stop at the end of this cycle (a clean dump)
+               ck%endeng_ratio = model%energy%ratio
+               ck%endeng_cycle = model%cycle
+               ck%endeng_time = t
+            end if
+         end if
          ! ---- output at t(n)
          done = t >= tend .or. (model%ctrl%endcyc > 0 .and. model%cycle >= model%ctrl%endcyc)
          if (t >= next_plot .or. done) then
