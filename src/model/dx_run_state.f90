@@ -22,7 +22,6 @@ module dx_run_state
       real(wp) :: next_glstat = 0.0_wp   !< next glstat time
       real(wp) :: next_nodout = 0.0_wp   !< next nodout time
       real(wp) :: next_status = 0.0_wp   !< next status-line time
-      real(wp) :: etot0 = 0.0_wp         !< total energy at cycle 0 (ENDENG reference)
       logical :: started = .false.       !< true once the loop state is set (restart: restored)
       ! output bookkeeping at the dump point (a restart truncates the files to these)
       integer :: nplot = 0               !< plot states written
