@@ -14,7 +14,7 @@ module dx_restart_file
    use dx_error, only: error_t, set_error, EXIT_IO, EXIT_INPUT
    use dx_strings, only: str
    use dx_h5, only: h5_file_t, h5_create, h5_open_read, h5_close, h5_flush, h5_write, &
-                    h5_write_attr, h5_read, h5_read_attr, h5_exists
+                    h5_write_attr, h5_read, h5_read_attr, h5_exists, h5_dims
    use dx_io_sys, only: sys_rename, sys_fsync
    implicit none
    private
@@ -214,18 +214,28 @@ contains
       integer, intent(in) :: n
       real(wp), allocatable, intent(out) :: buf(:)
       real(wp) :: crc
+      integer(int64), allocatable :: dims(:)
+      logical :: there
       if (allocated(rs%err)) then
          allocate(buf(n)); buf = 0.0_wp; return
       end if
-      call h5_read(rs%h5, '/'//name, buf, rs%err)
-      if (allocated(rs%err)) then
-         rs%err%message = 'restart file '//rs%path//': no dataset '//name// &
-                          ' (a dump of another deck or version?)'
-         rs%err%code = EXIT_INPUT
-      else if (size(buf) /= n) then
-         call set_error(rs%err, 'restart file '//rs%path//': dataset '//name//' has '// &
-            str(size(buf))//' values, this deck needs '//str(n)// &
+      ! the size first (a damaged header could ask for any allocation), then the values
+      call h5_exists(rs%h5, '/'//name, there, rs%err)
+      if (.not. allocated(rs%err) .and. .not. there) then
+         call set_error(rs%err, 'restart file '//rs%path//': no dataset '//name// &
+                        ' (a dump of another deck or version?)', EXIT_INPUT)
+      end if
+      if (.not. allocated(rs%err)) call h5_dims(rs%h5, '/'//name, dims, rs%err)
+      if (.not. allocated(rs%err)) then
+         if (product(dims) /= int(n, int64)) call set_error(rs%err, 'restart file '// &
+            rs%path//': dataset '//name//' has '//str(int(min(product(dims), &
+            int(huge(n), int64))))//' values, this deck needs '//str(n)// &
             ' (is it a dump of this deck?)', EXIT_INPUT)
+      end if
+      if (.not. allocated(rs%err)) call h5_read(rs%h5, '/'//name, buf, rs%err)
+      if (allocated(rs%err)) then
+         if (rs%err%code == EXIT_IO) rs%err%message = 'restart file '//rs%path// &
+            ': cannot read dataset '//name//' (the file is damaged): '//rs%err%message
       else
          call h5_read_attr(rs%h5, '/'//name, 'crc32', crc, rs%err)
          if (.not. allocated(rs%err)) then
