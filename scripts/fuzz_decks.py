@@ -172,6 +172,8 @@ def classify(rc, err):
         return True, 'exit 0', '', ''
     if rc != 2:
         return False, 'exit %d' % rc, '', first
+    if 'cannot open the deck file' in err and 'deck.k:' not in err:
+        return False, 'driver error (deck not found)', '', first
     if not MSG_RE.search(err) and not WHOLE_RE.search(err):
         return False, 'exit 2 without file:line', '', first
     return True, 'exit 2', message_class(first), first
@@ -204,8 +206,7 @@ def run_one(args, idx, name, text, files, workdir, dynx, timeout):
     env['GFORTRAN_ERROR_BACKTRACE'] = '1'
     try:
         p = subprocess.run(['timeout', '-s', 'KILL', str(timeout), dynx, '--check', '-i',
-                            os.path.join(d, 'deck.k')], capture_output=True, env=env,
-                           cwd=d)
+                            'deck.k'], capture_output=True, env=env, cwd=d)
         rc = p.returncode
         if rc == 137 or rc == -9:
             rc = 124
@@ -235,10 +236,12 @@ def main():
     ap.add_argument('--report', default=None, help='write the message-class table (markdown)')
     args = ap.parse_args()
     dynx = args.dynx
+    args.workdir = os.path.abspath(args.workdir)
     if dynx is None:
         dynx = os.path.join(ROOT, 'bin', 'dynx-asan')
         if not os.access(dynx, os.X_OK):
             dynx = os.path.join(ROOT, 'bin', 'dynx-debug')
+    dynx = os.path.abspath(dynx)
     if not os.access(dynx, os.X_OK):
         print('fuzz_decks: %s not found (make debug or make bin/dynx-asan)' % dynx)
         return 2
