@@ -24,7 +24,7 @@ module dx_checkpoint
                          signal_raise
    implicit none
    private
-   public :: checkpoint_t, checkpoint_stage, checkpoint_failure_dump
+   public :: checkpoint_t, checkpoint_stage, checkpoint_failure_dump, checkpoint_energy_band
 
    type :: checkpoint_t
       character(:), allocatable :: outdir       !< where dumps go (the output directory)
@@ -139,6 +139,21 @@ contains
             'dynx -i '//ck%deck//' -o '//ck%outdir//' -r '//path, EXIT_CHECKPOINT)
       end if
    end subroutine checkpoint_stage
+
+   !> *CONTROL_TERMINATION ENDENG: note (once) that abs(energy ratio - 1)*100 > ENDENG at
+   !> time t of this cycle; checkpoint_stage stops the run at the end of the cycle.
+   subroutine checkpoint_energy_band(ck, model, t)
+      type(checkpoint_t), intent(inout) :: ck
+      type(model_t), intent(in) :: model
+      real(wp), intent(in) :: t
+      if (ck%endeng_hit) return
+      if (abs(model%energy%ratio - 1.0_wp)*100.0_wp > model%ctrl%endeng) then
+         ck%endeng_hit = .true.
+         ck%endeng_ratio = model%energy%ratio
+         ck%endeng_cycle = model%cycle
+         ck%endeng_time = t
+      end if
+   end subroutine checkpoint_energy_band
 
    !> After a numerical failure in the middle of a cycle: a dump for inspection (marked not
    !> restartable). Returns its path ('' when it could not be written).

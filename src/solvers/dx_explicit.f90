@@ -20,7 +20,8 @@ module dx_explicit
    use dx_loads, only: add_external_loads, has_external_loads
    use dx_constraints, only: apply_spc, apply_prescribed, apply_rigidwalls
    use dx_output, only: output_t
-   use dx_checkpoint, only: checkpoint_t, checkpoint_stage, checkpoint_failure_dump
+   use dx_checkpoint, only: checkpoint_t, checkpoint_stage, checkpoint_failure_dump, &
+                            checkpoint_energy_band
    implicit none
    private
    public :: run_options_t, init_state, run_explicit
@@ -186,14 +187,7 @@ contains
          end do
          model%dt = dt
          call set_energy(model, ke, eint, ehg, wext + wcon, -wrw)
-         if (model%ctrl%endeng > 0.0_wp .and. .not. ck%endeng_hit) then
-            if (abs(model%energy%ratio - 1.0_wp)*100.0_wp > model%ctrl%endeng) then
-               ck%endeng_hit = .true.      ! stop at the end of this cycle (a clean dump)
-               ck%endeng_ratio = model%energy%ratio
-               ck%endeng_cycle = model%cycle
-               ck%endeng_time = t
-            end if
-         end if
+         if (model%ctrl%endeng > 0.0_wp) call checkpoint_energy_band(ck, model, t)
          ! ---- output at t(n)
          done = t >= tend .or. (model%ctrl%endcyc > 0 .and. model%cycle >= model%ctrl%endcyc)
          if (t >= next_plot .or. done) then
