@@ -577,10 +577,11 @@ contains
    end subroutine get_real
 
    !> A valid number can still be the front of a value that ran over its columns
-   !> ('   123456789012' read as 1234567 and 89012). In fixed format a token that crosses
-   !> the boundary between fields j and j+1 is legal only when one of the two fields is
-   !> full (packed full-width values such as '1.0000E+001.0000E+00'); otherwise it is an
-   !> error, checked at both ends of field k.
+   !> ('   123456789012' read as 1234567 and 89012). In fixed format digits (or '.') on both
+   !> sides of the boundary between fields j and j+1 are one number running across it,
+   !> which is legal only when one of the two fields is full (packed full-width values
+   !> such as '1.0000E+001.0000E+00'); otherwise it is an error, checked at both ends of
+   !> field k. A letter or a sign at the boundary starts a new token ('0.004I', '1.0-3').
    subroutine check_boundaries(deck, blk, ic, k, w, fname, error)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
@@ -609,7 +610,8 @@ contains
          e = a + wa
          crosses = .false.
          associate (c => blk%cards(ic)%text)
-            if (c(e-1:e-1) == ' ' .or. c(e:e) == ' ') return
+            if (scan(c(e-1:e-1), '0123456789.') == 0 .or. scan(c(e:e), '0123456789.') == 0) &
+               return                                      ! not one number across the boundary
             if (index(c(a:e-1), ' ') == 0) return            ! field j full
             if (e + wb - 1 <= n) then
                if (index(c(e:e+wb-1), ' ') == 0) return      ! field j+1 full
