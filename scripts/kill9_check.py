@@ -3,7 +3,7 @@
 
 The deck is the Simo Taylor bar (tests/regression/taylor_simo) with frequent output
 (plot state every 0.5 us, glstat every 0.1 us, nodout of 3 nodes) and a d3dump every
-500 cycles, so kills land inside plot-state, time-history and dump writes. After each kill:
+100 cycles, so kills land inside plot-state, time-history and dump writes. After each kill:
   1. h5dump reads the whole d3plot.h5 (every byte of every dataset) with exit 0;
   2. every state the XDMF lists is a complete group in d3plot.h5 (all 8 datasets present,
      time attribute equal to the XDMF time) and nstates >= the XDMF count;
@@ -30,7 +30,7 @@ def make_deck(path, endtim):
     src = re.sub(r'\*DATABASE_GLSTAT\n\s*\S+', '*DATABASE_GLSTAT\n  0.000100', src)
     src = re.sub(r'\*DATABASE_BINARY_D3PLOT\n\s*\S+', '*DATABASE_BINARY_D3PLOT\n  0.000500', src)
     extra = ('*DATABASE_NODOUT\n  0.000100\n*DATABASE_HISTORY_NODE\n         1         5      2013\n'
-             '*DATABASE_BINARY_D3DUMP\n       200\n')
+             '*DATABASE_BINARY_D3DUMP\n       100\n')
     src = src.replace('*PART\n', extra + '*PART\n', 1)
     with open(path, 'w') as f:
         f.write(src)

@@ -5,7 +5,8 @@
 !>   /states/NNNNNN/ (attribute time): coordinates, displacement, velocity (3,nn),
 !>   stress (6,ne) averaged over the integration points, von_mises, pressure = -tr(sig)/3,
 !>   eff_plastic_strain, failed (ne) int; /states/times (extendible)
-!> Crash safety: a state's datasets first, then its time appended and nstates set, then a
+!> Crash safety: the file is created as d3plot.h5.tmp and renamed once the mesh is flushed;
+!> then per state its datasets first, then its time appended and nstates set, then a
 !> global flush, then the XDMF rewritten (tmp + rename) listing only complete states.
 !> All HDF5 calls go through dx_h5.
 module dx_plot_hdf5
@@ -16,6 +17,7 @@ module dx_plot_hdf5
                     h5_write_attr, h5_create_extendible, h5_append, h5_open_rw, h5_read, &
                     h5_read_attr, h5_exists, h5_delete, h5_set_extent
    use dx_error, only: set_error, EXIT_IO
+   use dx_io_sys, only: sys_rename
    use dx_strings, only: str
    use dx_xdmf, only: xdmf_write, state_group
    implicit none
@@ -58,7 +60,9 @@ contains
       self%title = ''
       if (allocated(model%title)) self%title = model%title
       self%xdmf_path = dir//'/'//XMFNAME
-      call h5_create(self%h5, dir//'/'//H5NAME, error)
+      ! created under a temporary name and renamed once the mesh is on disk, so a reader
+      ! (or a kill -9) never finds a d3plot.h5 without its superblock and mesh
+      call h5_create(self%h5, dir//'/'//H5NAME//'.tmp', error)
       if (allocated(error)) return
 
       allocate(hex(8, model%ne), ids(model%ne))
@@ -106,8 +110,11 @@ contains
          if (allocated(error)) exit work
          call h5_flush(self%h5, error)
          if (allocated(error)) exit work
+         ! an empty XDMF first: an older one must not list states the new file lacks
          call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, &
                          self%times(1:0), error)
+         if (allocated(error)) exit work
+         call sys_rename(dir//'/'//H5NAME//'.tmp', dir//'/'//H5NAME, error)
       end block work
       if (allocated(error)) call h5_close(self%h5, err2)   ! keep the first error
    end subroutine plot_open
