@@ -4,6 +4,7 @@
 #   make bench  benchmarks (recorded in docs/performance.md)
 #   make studies  error-against-run-time studies (docs/studies/)
 #   make fuzz   10000 mutated decks through bin/dynx-asan --check (docs/errors.md)
+#   make restart-long  interrupt-and-continue on every scene deck, 20 kill -9 on the full Taylor impact
 SHELL := /bin/sh
 FC := h5pfc
 SRC_DIRS := base parallel model materials deck elements rigid contact loads io solvers
@@ -25,7 +26,7 @@ OUT := out
 PROGS := bin/dynx $(patsubst src/tools/%.f90,bin/%,$(wildcard src/tools/*.f90))
 PROGS := $(subst _,-,$(PROGS))
 
-.PHONY: all deps run test unit regression bench studies clean debug fuzz
+.PHONY: all deps run test unit regression bench studies clean debug fuzz restart-long
 all: $(PROGS)
 
 deps:
@@ -96,6 +97,11 @@ test: deps
 	@sh scripts/run_regression.sh
 	@python3 scripts/fuzz_decks.py --count 300 --seed 7 --jobs 2
 	@python3 scripts/kill9_check.py --runs 20 --seed 7
+
+# long interrupt-and-continue and kill -9 checks: every scene deck in decks/, every mode
+restart-long: deps
+	@$(MAKE) --no-print-directory all
+	@sh scripts/restart_long.sh
 
 # the deck-reader fuzzer, >= 1e4 mutated decks through the sanitized debug build
 fuzz: deps

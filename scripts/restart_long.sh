@@ -1,0 +1,20 @@
+#!/bin/sh
+# Long restart checks (make restart-long): every scene deck in decks/ run to the end, then
+# stopped by SIGTERM (self-raised at a random cycle and a real one after a random delay), by
+# the wall-clock limit and by SIGUSR1, and continued (scripts/check_restart.sh); then 20
+# kill -9 runs on the whole Simo Taylor impact (scripts/kill9_check.py --endtim 0.08).
+set -u
+cd "$(dirname "$0")/.." || exit 2
+fail=0
+for deck in decks/*/deck.k; do
+    scene=$(basename "$(dirname "$deck")")
+    out=build/restart_long/$scene
+    rm -rf "$out"; mkdir -p "$out"
+    echo "== $scene"
+    if ! bin/dynx -i "$deck" -o "$out/ref" > "$out/ref.log" 2>&1; then
+        echo "   reference run failed"; fail=1; continue
+    fi
+    sh scripts/check_restart.sh "$deck" "$out/ref" "$out" cycle sigterm walltime usr1 || fail=1
+done
+python3 scripts/kill9_check.py --runs 20 --endtim 0.08 --workdir build/restart_long/kill9 || fail=1
+exit $fail
