@@ -6,6 +6,9 @@ Every run must end with exit 0, or exit 2 with a message that names the file and
 runtime error or backtrace, exit code 1 or any other, a hang (timeout), or an exit-2 message
 without file:line. Defective inputs are kept in build/fuzz/fail-*/ for replay.
 
+The restart decks of the regression cases (restart*.k) are mutated too and checked with
+`dynx --check -i <their deck> -R <mutant>`.
+
 Mutations (1 to 3 stacked per input): byte flips, truncation, swapped fields, huge / tiny /
 NaN / Inf / malformed numbers, deleted cards and keyword lines, duplicated and swapped
 lines, over-long lines, random keywords, *INCLUDE recursion (self-include, deep chains).
@@ -39,13 +42,21 @@ KEYWORDS = ['*NODE', '*ELEMENT_SOLID', '*PART', '*SECTION_SOLID', '*MAT_ELASTIC'
 
 
 def decks():
+    """(name, text, base): base is None for a full deck, else the full deck a restart deck
+    (restart*.k of a regression case) is checked against with -R."""
     out = []
     reg = os.path.join(ROOT, 'tests', 'regression')
     for c in sorted(os.listdir(reg)):
         p = os.path.join(reg, c, 'deck.k')
         if os.path.isfile(p):
             with open(p, 'rb') as f:
-                out.append((c, f.read()))
+                out.append((c, f.read(), None))
+            for r in sorted(os.listdir(os.path.join(reg, c))):
+                if r.startswith('restart') and r.endswith('.k'):
+                    with open(os.path.join(reg, c, r), 'rb') as f:
+                        text = f.read()
+                    for _ in range(4):      # restart decks are short: weight them up
+                        out.append((c + '/' + r, text, p))
     return out
 
 
@@ -192,7 +203,7 @@ def message_class(m):
     return m[:110]
 
 
-def run_one(args, idx, name, text, files, workdir, dynx, timeout):
+def run_one(args, idx, name, text, files, base, workdir, dynx, timeout):
     d = os.path.join(workdir, 'c%06d' % idx)
     os.makedirs(d, exist_ok=True)
     for fn, data in files.items():
@@ -205,8 +216,10 @@ def run_one(args, idx, name, text, files, workdir, dynx, timeout):
     env['UBSAN_OPTIONS'] = 'print_stacktrace=1:halt_on_error=1'
     env['GFORTRAN_ERROR_BACKTRACE'] = '1'
     try:
-        p = subprocess.run(['timeout', '-s', 'KILL', str(timeout), dynx, '--check', '-i',
-                            'deck.k'], capture_output=True, env=env, cwd=d)
+        cmd = [dynx, '--check', '-i', 'deck.k'] if base is None else \
+              [dynx, '--check', '-i', base, '-R', 'deck.k']
+        p = subprocess.run(['timeout', '-s', 'KILL', str(timeout)] + cmd, capture_output=True,
+                           env=env, cwd=d)
         rc = p.returncode
         if rc == 137 or rc == -9:
             rc = 124
@@ -253,18 +266,18 @@ def main():
     t0 = time.time()
     cases = []
     for i in range(args.count):
-        name, text = rng.choice(src)
+        name, text, base = rng.choice(src)
         files, tags = {}, []
         for _ in range(rng.choice([1, 1, 1, 2, 3])):
             text, tag = mutate(rng, text, files)
             tags.append(tag)
-        cases.append((i, name + ':' + '+'.join(tags), text, files))
+        cases.append((i, name + ':' + '+'.join(tags), text, files, base))
     outcomes = collections.Counter()
     classes = collections.OrderedDict()
     fails = []
     with cf.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as ex:
-        futs = [ex.submit(run_one, args, i, n, t, f, args.workdir, dynx, args.timeout)
-                for i, n, t, f in cases]
+        futs = [ex.submit(run_one, args, i, n, t, f, b, args.workdir, dynx, args.timeout)
+                for i, n, t, f, b in cases]
         for fu in cf.as_completed(futs):
             idx, name, ok, outcome, cls, first = fu.result()
             outcomes[outcome] += 1
@@ -278,6 +291,7 @@ def main():
     print('fuzz_decks: %d inputs (seed %d, %s, %d jobs) in %.1f s: %s' % (
         args.count, seed, os.path.basename(dynx), args.jobs, dt,
         ', '.join('%s %d' % kv for kv in sorted(outcomes.items()))))
+    print('fuzz_decks: %d of the inputs were restart decks (-R)' % sum(1 for c in cases if c[4]))
     print('fuzz_decks: %d distinct exit-2 message classes' % len(classes))
     for idx, name, outcome, first in sorted(fails):
         print('  FAIL %06d %s: %s: %s (kept in %s/fail-%06d)' % (idx, name, outcome, first[:160],

@@ -77,7 +77,8 @@ program dynx
       end select
    end do
    if (len(deck) == 0) call die_usage('no input deck: use -i deck.k (or i=deck.k)')
-   if (len(rdeck) > 0 .and. len(rfile) == 0) call die_usage('-R (restart deck) needs -r dump.h5')
+   if (len(rdeck) > 0 .and. len(rfile) == 0 .and. .not. check_only) &
+      call die_usage('-R (restart deck) needs -r dump.h5 (or --check)')
    opts%outdir = outdir
    opts%ck%outdir = outdir
    opts%ck%deck = deck
