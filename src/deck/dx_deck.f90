@@ -17,6 +17,7 @@ module dx_deck
    use dx_read_rigid, only: register_rigid
    use dx_read_contact, only: register_contact
    use dx_contact_build, only: build_contact
+   use dx_read_restart, only: register_restart
    use dx_model, only: model_t
    use dx_model_input, only: model_input_t, input_init
    use dx_model_build, only: build_model
@@ -37,6 +38,7 @@ contains
       call register_curves(reg)
       call register_rigid(reg)
       call register_contact(reg)
+      call register_restart(reg)
    end function new_registry
 
    !> Read the deck at path into model (x0, v0, blocks, parts, ...; the solver allocates
