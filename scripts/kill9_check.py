@@ -54,14 +54,18 @@ def h5_groups(path):
     return groups
 
 
-def check_table(path, ncol):
+def check_table(path, ncol=None):
+    """Whole, numeric lines only; ncol None: as many columns as the last header line names."""
     if not os.path.exists(path):
         return 'missing'
     data = open(path, 'rb').read()
     if data and not data.endswith(b'\n'):
         return 'does not end with a newline (partial line)'
+    ncol_header = ncol is None
     for i, l in enumerate(data.decode().splitlines()):
         if l.startswith('#'):
+            if ncol_header:
+                ncol = len(l[1:].split())
             continue
         f = l.split()
         if len(f) != ncol:
@@ -144,7 +148,7 @@ def main():
                         elif not set(DATASETS) <= groups[sid]:
                             problems.append('state %s lacks %s' % (sid, set(DATASETS) - groups[sid]))
         stats['states'] += nx
-        for f, n in (('glstat', 13), ('nodout', 14)):
+        for f, n in (('glstat', None), ('nodout', None)):
             if os.path.exists(os.path.join(d, f)):
                 msg = check_table(os.path.join(d, f), n)
                 if msg:
