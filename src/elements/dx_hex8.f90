@@ -31,6 +31,9 @@ module dx_hex8
       integer :: errcode = 0
       real(wp) :: deint = 0.0_wp      !< internal energy increment of the block
       real(wp) :: dehg = 0.0_wp       !< hourglass energy increment of the block
+      !> internal power sigma:D V - q B.v at t(n) with v(n-1/2): the caller adds
+      !> (dt(n+1/2) - dt(n-1/2))/4 times it to report the energy at t(n) (see centred_work)
+      real(wp) :: pend = 0.0_wp
    end type block_result_t
 
 contains
@@ -64,6 +67,8 @@ contains
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: f(:, :)
       type(block_result_t), intent(out) :: res
+      ! blocks built elsewhere than dx_model_build (tests, restart) may lack it
+      if (.not. allocated(blk%ework)) allocate(blk%ework(blk%nel, 4), source=0.0_wp)
       select case (blk%nip)
       case (1)
          call hex8_1pt(blk, mat, part, x, v, dt_old, f, res)
@@ -101,8 +106,9 @@ contains
       type(block_result_t), intent(out) :: res
       real(wp), dimension(blk%nel, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
       real(wp), dimension(blk%nel) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive, ah
+      real(wp), dimension(blk%nel) :: bv, relv_old
       real(wp) :: deps(blk%nel, 6), sold(blk%nel, 6), l(3, 3), hx(4), hy(4), hz(4), qx(4), qy(4), qz(4)
-      real(wp) :: g(4, 8), rho, dtl, rvm, a, kh, bb, hgsum, ein_sum, ehg_sum
+      real(wp) :: g(4, 8), rho, dtl, wo, wn, a, pend, kh, bb, hgsum, ein_sum, ehg_sum
       integer :: ierr(blk%nel)
       logical :: failed(blk%nel)
       integer :: i, k, n, nn, ihq
@@ -158,7 +164,9 @@ contains
       end do
       ! ---- geometry at t(n): forces, volume, time step
       call hex8_bvectors(n, n, xe, ye, ze, bx, by, bz, vol)
+      call bdotv(n, bx, by, bz, vx, vy, vz, bv)
       do i = 1, n
+         relv_old(i) = blk%relvol(i)
          if (.not. (vol(i) > 0.0_wp)) ierr(i) = HEX_ERR_NEGVOL
          if (.not. (vol(i) > 0.0_wp)) vol(i) = 1.0_wp
          rv(i) = vol(i)/blk%vol0(i)
@@ -173,19 +181,24 @@ contains
       call mat%wave_speed(n, rv, blk%hv(:, :, 1), c)
       ! ---- bulk viscosity and energies
       ein_sum = 0.0_wp
+      pend = 0.0_wp
       do i = 1, n
          rho = mat%ro/rv(i)
          q(i) = bulk_viscosity(part, rho, vol(i), trd(i), c(i))
-         rvm = 0.5_wp*volm(i)
-         a = rvm*((sold(i,1) + blk%sig(i,1,1))*deps(i,1) + (sold(i,2) + blk%sig(i,2,1))*deps(i,2) &
-             + (sold(i,3) + blk%sig(i,3,1))*deps(i,3) + 2.0_wp*((sold(i,4) + blk%sig(i,4,1)) &
-             *deps(i,4) + (sold(i,5) + blk%sig(i,5,1))*deps(i,5) + (sold(i,6) + blk%sig(i,6,1)) &
-             *deps(i,6))) - q(i)*trd(i)*dt_old*volm(i)
+         wo = volm(i)*(sold(i,1)*deps(i,1) + sold(i,2)*deps(i,2) + sold(i,3)*deps(i,3) &
+              + 2.0_wp*(sold(i,4)*deps(i,4) + sold(i,5)*deps(i,5) + sold(i,6)*deps(i,6)))
+         wn = volm(i)*(blk%sig(i,1,1)*deps(i,1) + blk%sig(i,2,1)*deps(i,2) &
+              + blk%sig(i,3,1)*deps(i,3) + 2.0_wp*(blk%sig(i,4,1)*deps(i,4) &
+              + blk%sig(i,5,1)*deps(i,5) + blk%sig(i,6,1)*deps(i,6)))
+         call centred_work(blk%ework(i, :), dt_old, wo, wn, q(i), vol(i), &
+                           blk%vol0(i)*relv_old(i), bv(i), trd(i)*volm(i), a)
          a = a*alive(i)
          blk%eint(i) = blk%eint(i) + a
          ein_sum = ein_sum + a
+         pend = pend + alive(i)*(blk%ework(i, 4) - blk%ework(i, 2))
       end do
       res%deint = ein_sum
+      res%pend = pend
       ! ---- erosion
       do i = 1, n
          if (failed(i) .and. .not. blk%failed(i)) then
@@ -285,6 +298,50 @@ contains
       end if
    end function bulk_viscosity
 
+   !> Sum over the nodes of B_I . v_I for each element (the volume rate V*tr(D) for B at x).
+   pure subroutine bdotv(n, bx, by, bz, vx, vy, vz, bv)
+      integer, intent(in) :: n
+      real(wp), intent(in), dimension(:, :) :: bx, by, bz, vx, vy, vz
+      real(wp), intent(out) :: bv(:)
+      integer :: i, k
+      bv(1:n) = 0.0_wp
+      do k = 1, 8
+         do i = 1, n
+            bv(i) = bv(i) + bx(i, k)*vx(i, k) + by(i, k)*vy(i, k) + bz(i, k)*vz(i, k)
+         end do
+      end do
+   end subroutine bdotv
+
+   !> Internal-energy increment de of one element at this pass: the work of its stress and
+   !> bulk-viscosity nodal forces f(n) in the central-difference balance, W(n) =
+   !> dtavg(n) f(n).(v(n-1/2) + v(n+1/2))/2, the exact partner of the centred kinetic energy
+   !> 1/2 m v(n-1/2).v(n+1/2) (dx_explicit) for any time-step sequence. W(n) is completed at
+   !> the next pass, when v(n+1/2) and dt(n+1/2) are known: the half with v(n-1/2) is booked
+   !> now with dt(n-1/2)/2 and corrected then to dtavg(n)/2. With a constant step this is the
+   !> trapezoid (sigma(n-1) + sigma(n)):D V dt. The stress power uses the mid-step D V
+   !> (wo, wn = dt sigma_old:D V, dt sigma_new:D V); the viscosity force q B(x(n)) uses
+   !> bvn = B(n).v(n-1/2) and B(n-1).v(n-1/2) from Simpson's rule, exact for the cubic V(x):
+   !> V(n) - V(n-1) = dt/6 (B(n-1) + 4 B(n-1/2) + B(n)).v(n-1/2), bvm = B(n-1/2).v(n-1/2).
+   !> st = (q, q bvn, dt, sigma:D V) of the last pass.
+   pure subroutine centred_work(st, dt, wo, wn, q, vol, vol_old, bvn, bvm, de)
+      real(wp), intent(inout) :: st(4)
+      real(wp), intent(in) :: dt, wo, wn, q, vol, vol_old, bvn, bvm
+      real(wp), intent(out) :: de
+      real(wp) :: bvp, pn
+      de = 0.0_wp
+      pn = 0.0_wp
+      if (dt > 0.0_wp) then
+         bvp = 6.0_wp*(vol - vol_old)/dt - 4.0_wp*bvm - bvn
+         pn = wn/dt
+         de = 0.5_wp*(wo + wn) + 0.25_wp*(dt - st(3))*(st(4) - wo/dt) &
+              - (0.25_wp*(st(3) + dt)*st(1)*bvp + 0.25_wp*(dt - st(3))*st(2) + 0.5_wp*dt*q*bvn)
+      end if
+      st(1) = q
+      st(2) = q*bvn
+      st(3) = dt
+      st(4) = pn
+   end subroutine centred_work
+
    !> Smallest element step L/(Q + sqrt(Q**2 + c**2)), L = V/A_max, Q = Q2*c + Q1*L*|e_kk|
    !> (compression only); eroded elements do not count.
    subroutine stable_time_step(blk, part, xe, ye, ze, vol, trd, c, res)
@@ -332,10 +389,11 @@ contains
       type(block_result_t), intent(out) :: res
       real(wp), dimension(blk%nel, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
       real(wp), dimension(blk%nel) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive, pbar
+      real(wp), dimension(blk%nel) :: bv, relv_old, wold, wnew
       real(wp) :: deps(blk%nel, 6), sold(blk%nel, 6), dn(3, 8, 8), dnx(3, 8), l(3, 3)
       real(wp) :: p8(8), q8(8), r8(8)
       real(wp), allocatable :: dng(:, :, :, :)
-      real(wp) :: jwg(8, blk%nel), wm(blk%nel), dtl, rho, a, trp, pm, ein_sum
+      real(wp) :: jwg(8, blk%nel), wm(blk%nel), dtl, rho, a, pend, trp, pm, ein_sum
       integer :: ierr(blk%nel)
       logical :: failed(blk%nel), fpt(blk%nel)
       integer :: i, k, n, nn, ip
@@ -355,7 +413,9 @@ contains
       ierr = 0
       call hex8_bvectors(n, n, xe, ye, ze, bx, by, bz, vol)
       call hex8_bvectors(n, n, xm, ym, zm, fx, fy, fz, volm)
+      call bdotv(n, bx, by, bz, vx, vy, vz, bv)
       do i = 1, n
+         relv_old(i) = blk%relvol(i)
          if (.not. (volm(i) > 0.0_wp .and. vol(i) > 0.0_wp)) then
             ierr(i) = HEX_ERR_NEGVOL; volm(i) = 1.0_wp; vol(i) = 1.0_wp
          end if
@@ -369,8 +429,10 @@ contains
          trd(i) = sum(vx(i, :)*fx(i, :) + vy(i, :)*fy(i, :) + vz(i, :)*fz(i, :))/volm(i)
       end do
       ein_sum = 0.0_wp
+      pend = 0.0_wp
       fx = 0.0_wp; fy = 0.0_wp; fz = 0.0_wp
       pbar = 0.0_wp
+      wold = 0.0_wp; wnew = 0.0_wp
       fpt = .false.
       ! geometry at t(n) per Gauss point for the forces
       do i = 1, n
@@ -405,13 +467,12 @@ contains
          call mat%fails(n, blk%hv(:, :, ip), failed)
          fpt = fpt .or. failed
          do i = 1, n
-            a = 0.5_wp*wm(i)*((sold(i,1) + blk%sig(i,1,ip))*deps(i,1) &
-                + (sold(i,2) + blk%sig(i,2,ip))*deps(i,2) + (sold(i,3) + blk%sig(i,3,ip))*deps(i,3) &
-                + 2.0_wp*((sold(i,4) + blk%sig(i,4,ip))*deps(i,4) &
-                + (sold(i,5) + blk%sig(i,5,ip))*deps(i,5) + (sold(i,6) + blk%sig(i,6,ip))*deps(i,6)))
-            a = a*alive(i)
-            blk%eint(i) = blk%eint(i) + a
-            ein_sum = ein_sum + a
+            wold(i) = wold(i) + wm(i)*(sold(i,1)*deps(i,1) + sold(i,2)*deps(i,2) &
+                      + sold(i,3)*deps(i,3) + 2.0_wp*(sold(i,4)*deps(i,4) &
+                      + sold(i,5)*deps(i,5) + sold(i,6)*deps(i,6)))
+            wnew(i) = wnew(i) + wm(i)*(blk%sig(i,1,ip)*deps(i,1) + blk%sig(i,2,ip)*deps(i,2) &
+                      + blk%sig(i,3,ip)*deps(i,3) + 2.0_wp*(blk%sig(i,4,ip)*deps(i,4) &
+                      + blk%sig(i,5,ip)*deps(i,5) + blk%sig(i,6,ip)*deps(i,6)))
             pm = (blk%sig(i,1,ip) + blk%sig(i,2,ip) + blk%sig(i,3,ip))/3.0_wp
             pbar(i) = pbar(i) + pm*jwg(ip, i)/vol(i)
             ! deviatoric part through the point gradients
@@ -430,9 +491,12 @@ contains
       do i = 1, n
          rho = mat%ro/rv(i)
          q(i) = bulk_viscosity(part, rho, vol(i), trd(i), c(i))
-         a = -q(i)*trd(i)*dt_old*vol(i)*alive(i)
+         call centred_work(blk%ework(i, :), dt_old, wold(i), wnew(i), q(i), vol(i), &
+                           blk%vol0(i)*relv_old(i), bv(i), trd(i)*volm(i), a)
+         a = alive(i)*a
          blk%eint(i) = blk%eint(i) + a
          ein_sum = ein_sum + a
+         pend = pend + alive(i)*(blk%ework(i, 4) - blk%ework(i, 2))
          if (fpt(i)) blk%failed(i) = .true.
          if (blk%failed(i)) then
             alive(i) = 0.0_wp
@@ -440,6 +504,7 @@ contains
          end if
       end do
       res%deint = ein_sum
+      res%pend = pend
       do k = 1, 8
          do i = 1, n
             fx(i, k) = alive(i)*(fx(i, k) + (pbar(i) - q(i))*bx(i, k))

@@ -65,7 +65,7 @@ contains
       real(wp), allocatable :: vold(:, :), fext(:, :), vfree(:, :)
       integer, allocatable :: cnodes(:)
       real(wp) :: dt, dt_old, dtavg, dtcrit, tsmin, t, wext, wrw, wcon, next_plot, next_glstat
-      real(wp) :: next_nodout, next_status, t0wall, ke, eint, ehg, du(3), tend, dt_first
+      real(wp) :: next_nodout, next_status, t0wall, ke, eint, ehg, du(3), tend, dt_first, epend
       integer :: b, i, ibmin, iemin, nd
       logical :: loads, done
       type(block_result_t) :: res
@@ -93,6 +93,7 @@ contains
          ! ---- internal forces (element pass) and the critical step
          model%f = 0.0_wp
          dtcrit = huge_wp; ibmin = 0; iemin = 0
+         epend = 0.0_wp
          do b = 1, size(model%blocks)
             associate (blk => model%blocks(b), part => model%parts(model%blocks(b)%ipart))
                call hex8_block(blk, model%mats(part%imat)%m, part, model%x, model%v, dt_old, &
@@ -102,6 +103,7 @@ contains
                   call finish(model, out, error)
                   return
                end if
+               epend = epend + res%pend
                if (res%dt < dtcrit) then
                   dtcrit = res%dt; ibmin = b; iemin = res%imin
                end if
@@ -169,6 +171,7 @@ contains
             eint = eint + sum(model%blocks(b)%eint)
             ehg = ehg + sum(model%blocks(b)%ehg)
          end do
+         eint = eint + 0.25_wp*(dt - dt_old)*epend   ! the part of W(n) booked next cycle
          model%dt = dt
          call set_energy(model, ke, eint, ehg, wext + wcon, -wrw)
          ! ---- output at t(n)
