@@ -11,7 +11,9 @@
 !> Bulk viscosity (DYNA form): q = rho*l*(Q1*l*e_kk**2 - Q2*c*e_kk) for e_kk < 0, l = V**(1/3);
 !> time step dt_e = L/(Q + sqrt(Q**2 + c**2)), Q = Q2*c + Q1*L*|e_kk| (LS-DYNA Theory Manual).
 !> Viscous hourglass coefficient a_h = QH*rho*c*V**(2/3)/4 (LS-DYNA Theory Manual, U);
-!> stiffness k_h = QH*(K + 4G/3)*sum(B_iI**2)/(8V) (dynx choice, see docs/theory/hex8.md).
+!> stiffness (IHQ 4,5): FB 1981's kappa = QH*(lambda + 2mu)*b_jJ*b_jJ/(3V) on the modal
+!> rates normalized by 1/sqrt(8), i.e. f_iI = k_h (gamma_aJ u_iJ) gamma_aI with
+!> k_h = QH*(K + 4G/3)*sum(B_jJ**2)/(24V) (docs/design.md, "Hourglass types").
 module dx_hex8
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_model, only: elem_block_t, part_t
@@ -190,8 +192,9 @@ contains
          wn = volm(i)*(blk%sig(i,1,1)*deps(i,1) + blk%sig(i,2,1)*deps(i,2) &
               + blk%sig(i,3,1)*deps(i,3) + 2.0_wp*(blk%sig(i,4,1)*deps(i,4) &
               + blk%sig(i,5,1)*deps(i,5) + blk%sig(i,6,1)*deps(i,6)))
-         call centred_work(blk%ework(i, :), dt_old, wo, wn, q(i), vol(i), &
-                           blk%vol0(i)*relv_old(i), bv(i), trd(i)*volm(i), a)
+         call centred_work(blk%ework(i, 1), blk%ework(i, 2), blk%ework(i, 3), blk%ework(i, 4), &
+                           dt_old, wo, wn, q(i), vol(i), blk%vol0(i)*relv_old(i), bv(i), &
+                           trd(i)*volm(i), a)
          a = a*alive(i)
          blk%eint(i) = blk%eint(i) + a
          ein_sum = ein_sum + a
@@ -246,7 +249,7 @@ contains
             end do
             if (ihq >= 4) then
                bb = sum(bx(i, :)**2 + by(i, :)**2 + bz(i, :)**2)
-               kh = part%qh*(mat%bulk + 4.0_wp*mat%shear/3.0_wp)*bb/(8.0_wp*vol(i))
+               kh = part%qh*(mat%bulk + 4.0_wp*mat%shear/3.0_wp)*bb/(24.0_wp*vol(i))
                do k = 1, 4
                   ! corotate the stored resisting forces, then add the stiffness increment
                   hx(k) = blk%hgs(i, 1, k) + w12(i)*blk%hgs(i, 2, k) - w31(i)*blk%hgs(i, 3, k)
@@ -256,12 +259,15 @@ contains
                   blk%hgs(i, 2, k) = hy(k) + kh*dt_old*qy(k)
                   blk%hgs(i, 3, k) = hz(k) + kh*dt_old*qz(k)
                end do
+               ! trapezoid of the old (corotated) and new force: the exact spring energy
+               hgsum = 0.5_wp*dt_old*sum(hx*qx + hy*qy + hz*qz)
                hx = blk%hgs(i, 1, :); hy = blk%hgs(i, 2, :); hz = blk%hgs(i, 3, :)
+               hgsum = alive(i)*(hgsum + 0.5_wp*dt_old*sum(hx*qx + hy*qy + hz*qz))
             else
                hx = ah(i)*qx; hy = ah(i)*qy; hz = ah(i)*qz
+               hgsum = alive(i)*dt_old*sum(hx*qx + hy*qy + hz*qz)
             end if
             hx = hx*alive(i); hy = hy*alive(i); hz = hz*alive(i)
-            hgsum = dt_old*sum(hx*qx + hy*qy + hz*qz)
             blk%ehg(i) = blk%ehg(i) + hgsum
             ehg_sum = ehg_sum + hgsum
             do k = 1, 8
@@ -322,9 +328,9 @@ contains
    !> (wo, wn = dt sigma_old:D V, dt sigma_new:D V); the viscosity force q B(x(n)) uses
    !> bvn = B(n).v(n-1/2) and B(n-1).v(n-1/2) from Simpson's rule, exact for the cubic V(x):
    !> V(n) - V(n-1) = dt/6 (B(n-1) + 4 B(n-1/2) + B(n)).v(n-1/2), bvm = B(n-1/2).v(n-1/2).
-   !> st = (q, q bvn, dt, sigma:D V) of the last pass.
-   pure subroutine centred_work(st, dt, wo, wn, q, vol, vol_old, bvn, bvm, de)
-      real(wp), intent(inout) :: st(4)
+   !> s1..s4 = q, q bvn, dt, sigma:D V of the last pass (the element's ework row).
+   pure subroutine centred_work(s1, s2, s3, s4, dt, wo, wn, q, vol, vol_old, bvn, bvm, de)
+      real(wp), intent(inout) :: s1, s2, s3, s4
       real(wp), intent(in) :: dt, wo, wn, q, vol, vol_old, bvn, bvm
       real(wp), intent(out) :: de
       real(wp) :: bvp, pn
@@ -333,13 +339,13 @@ contains
       if (dt > 0.0_wp) then
          bvp = 6.0_wp*(vol - vol_old)/dt - 4.0_wp*bvm - bvn
          pn = wn/dt
-         de = 0.5_wp*(wo + wn) + 0.25_wp*(dt - st(3))*(st(4) - wo/dt) &
-              - (0.25_wp*(st(3) + dt)*st(1)*bvp + 0.25_wp*(dt - st(3))*st(2) + 0.5_wp*dt*q*bvn)
+         de = 0.5_wp*(wo + wn) + 0.25_wp*(dt - s3)*(s4 - wo/dt) &
+              - (0.25_wp*(s3 + dt)*s1*bvp + 0.25_wp*(dt - s3)*s2 + 0.5_wp*dt*q*bvn)
       end if
-      st(1) = q
-      st(2) = q*bvn
-      st(3) = dt
-      st(4) = pn
+      s1 = q
+      s2 = q*bvn
+      s3 = dt
+      s4 = pn
    end subroutine centred_work
 
    !> Smallest element step L/(Q + sqrt(Q**2 + c**2)), L = V/A_max, Q = Q2*c + Q1*L*|e_kk|
@@ -491,8 +497,9 @@ contains
       do i = 1, n
          rho = mat%ro/rv(i)
          q(i) = bulk_viscosity(part, rho, vol(i), trd(i), c(i))
-         call centred_work(blk%ework(i, :), dt_old, wold(i), wnew(i), q(i), vol(i), &
-                           blk%vol0(i)*relv_old(i), bv(i), trd(i)*volm(i), a)
+         call centred_work(blk%ework(i, 1), blk%ework(i, 2), blk%ework(i, 3), blk%ework(i, 4), &
+                           dt_old, wold(i), wnew(i), q(i), vol(i), blk%vol0(i)*relv_old(i), &
+                           bv(i), trd(i)*volm(i), a)
          a = alive(i)*a
          blk%eint(i) = blk%eint(i) + a
          ein_sum = ein_sum + a
