@@ -107,10 +107,10 @@ contains
       real(wp), intent(inout) :: f(:, :)
       type(block_result_t), intent(out) :: res
       real(wp), dimension(blk%nel, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
-      real(wp), dimension(blk%nel) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive, ah
+      real(wp), dimension(blk%nel) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive
       real(wp), dimension(blk%nel) :: bv, relv_old
-      real(wp) :: deps(blk%nel, 6), sold(blk%nel, 6), l(3, 3), hx(4), hy(4), hz(4), qx(4), qy(4), qz(4)
-      real(wp) :: g(4, 8), rho, dtl, wo, wn, a, pend, kh, bb, hgsum, ein_sum, ehg_sum
+      real(wp) :: deps(blk%nel, 6), sold(blk%nel, 6), l(3, 3)
+      real(wp) :: rho, dtl, wo, wn, a, pend, ein_sum
       integer :: ierr(blk%nel)
       logical :: failed(blk%nel)
       integer :: i, k, n, nn, ihq
@@ -222,62 +222,10 @@ contains
          end do
       end do
       ! ---- hourglass control
-      ehg_sum = 0.0_wp
-      if (part%qh > 0.0_wp) then
-         do i = 1, n
-            rho = mat%ro/rv(i)
-            ah(i) = part%qh*rho*c(i)*vol(i)**(2.0_wp/3.0_wp)/4.0_wp
-         end do
-         do i = 1, n
-            ! hourglass shape vectors: Gamma (IHQ 1) or FB gamma (IHQ 2-5)
-            if (ihq == 1) then
-               g = GAMMA_HG
-            else
-               do k = 1, 4
-                  hx(k) = sum(GAMMA_HG(k, :)*xe(i, :))
-                  hy(k) = sum(GAMMA_HG(k, :)*ye(i, :))
-                  hz(k) = sum(GAMMA_HG(k, :)*ze(i, :))
-               end do
-               do k = 1, 8
-                  g(:, k) = GAMMA_HG(:, k) - (hx*bx(i, k) + hy*by(i, k) + hz*bz(i, k))/vol(i)
-               end do
-            end if
-            do k = 1, 4
-               qx(k) = sum(g(k, :)*vx(i, :))
-               qy(k) = sum(g(k, :)*vy(i, :))
-               qz(k) = sum(g(k, :)*vz(i, :))
-            end do
-            if (ihq >= 4) then
-               bb = sum(bx(i, :)**2 + by(i, :)**2 + bz(i, :)**2)
-               kh = part%qh*(mat%bulk + 4.0_wp*mat%shear/3.0_wp)*bb/(24.0_wp*vol(i))
-               do k = 1, 4
-                  ! corotate the stored resisting forces, then add the stiffness increment
-                  hx(k) = blk%hgs(i, 1, k) + w12(i)*blk%hgs(i, 2, k) - w31(i)*blk%hgs(i, 3, k)
-                  hy(k) = blk%hgs(i, 2, k) - w12(i)*blk%hgs(i, 1, k) + w23(i)*blk%hgs(i, 3, k)
-                  hz(k) = blk%hgs(i, 3, k) + w31(i)*blk%hgs(i, 1, k) - w23(i)*blk%hgs(i, 2, k)
-                  blk%hgs(i, 1, k) = hx(k) + kh*dt_old*qx(k)
-                  blk%hgs(i, 2, k) = hy(k) + kh*dt_old*qy(k)
-                  blk%hgs(i, 3, k) = hz(k) + kh*dt_old*qz(k)
-               end do
-               ! trapezoid of the old (corotated) and new force: the exact spring energy
-               hgsum = 0.5_wp*dt_old*sum(hx*qx + hy*qy + hz*qz)
-               hx = blk%hgs(i, 1, :); hy = blk%hgs(i, 2, :); hz = blk%hgs(i, 3, :)
-               hgsum = alive(i)*(hgsum + 0.5_wp*dt_old*sum(hx*qx + hy*qy + hz*qz))
-            else
-               hx = ah(i)*qx; hy = ah(i)*qy; hz = ah(i)*qz
-               hgsum = alive(i)*dt_old*sum(hx*qx + hy*qy + hz*qz)
-            end if
-            hx = hx*alive(i); hy = hy*alive(i); hz = hz*alive(i)
-            blk%ehg(i) = blk%ehg(i) + hgsum
-            ehg_sum = ehg_sum + hgsum
-            do k = 1, 8
-               fx(i, k) = fx(i, k) + sum(hx*g(:, k))
-               fy(i, k) = fy(i, k) + sum(hy*g(:, k))
-               fz(i, k) = fz(i, k) + sum(hz*g(:, k))
-            end do
-         end do
-      end if
-      res%dehg = ehg_sum
+      res%dehg = 0.0_wp
+      if (part%qh > 0.0_wp) call hourglass(blk, mat, part, n, dt_old, xe, ye, ze, vx, vy, vz, &
+                                           bx, by, bz, vol, rv, c, w12, w23, w31, alive, &
+                                           fx, fy, fz, res%dehg)
       ! ---- scatter (internal force is subtracted)
       do k = 1, 8
          do i = 1, n
@@ -291,6 +239,123 @@ contains
       call stable_time_step(blk, part, xe, ye, ze, vol, trd, c, res)
       call first_error(n, ierr, res)
    end subroutine hex8_1pt
+
+   !> Hourglass forces of a block, added to fx, fy, fz; dehg = hourglass energy increment.
+   !> Shape vectors: Gamma (IHQ 1) or FB's gamma = Gamma - (Gamma.x_i) B_i / V (IHQ 2-5); modal
+   !> rates qdot_ia = gamma_aI v_iI; viscous forces a_h qdot (IHQ 1-3) or corotated stiffness
+   !> forces Q += k_h dt qdot (IHQ 4,5); f_iI += Q_ia gamma_aI. Every loop runs over the
+   !> elements of the block (unit stride), so it vectorizes.
+   subroutine hourglass(blk, mat, part, n, dt, xe, ye, ze, vx, vy, vz, bx, by, bz, vol, rv, c, &
+                        w12, w23, w31, alive, fx, fy, fz, dehg)
+      type(elem_block_t), intent(inout) :: blk
+      class(material_t), intent(in) :: mat
+      type(part_t), intent(in) :: part
+      integer, intent(in) :: n
+      real(wp), intent(in) :: dt
+      real(wp), dimension(n, 8), intent(in) :: xe, ye, ze, vx, vy, vz, bx, by, bz
+      real(wp), dimension(n), intent(in) :: vol, rv, c, w12, w23, w31, alive
+      real(wp), dimension(n, 8), intent(inout) :: fx, fy, fz
+      real(wp), intent(out) :: dehg
+      real(wp) :: g(n, 4, 8), qx(n, 4), qy(n, 4), qz(n, 4), hx(n, 4), hy(n, 4), hz(n, 4)
+      real(wp) :: ax, ay, az, rvol, coef(n), e(n), m, kx, ky, kz
+      integer :: i, a, k
+      ! shape vectors
+      if (part%ihq == 1) then
+         do a = 1, 8
+            do k = 1, 4
+               g(1:n, k, a) = GAMMA_HG(k, a)
+            end do
+         end do
+      else
+         do k = 1, 4
+            do i = 1, n
+               ax = 0.0_wp; ay = 0.0_wp; az = 0.0_wp
+               do a = 1, 8
+                  ax = ax + GAMMA_HG(k, a)*xe(i, a)
+                  ay = ay + GAMMA_HG(k, a)*ye(i, a)
+                  az = az + GAMMA_HG(k, a)*ze(i, a)
+               end do
+               rvol = 1.0_wp/vol(i)
+               hx(i, k) = ax*rvol; hy(i, k) = ay*rvol; hz(i, k) = az*rvol
+            end do
+         end do
+         do a = 1, 8
+            do k = 1, 4
+               do i = 1, n
+                  g(i, k, a) = GAMMA_HG(k, a) - (hx(i, k)*bx(i, a) + hy(i, k)*by(i, a) &
+                               + hz(i, k)*bz(i, a))
+               end do
+            end do
+         end do
+      end if
+      ! modal rates
+      qx = 0.0_wp; qy = 0.0_wp; qz = 0.0_wp
+      do a = 1, 8
+         do k = 1, 4
+            do i = 1, n
+               qx(i, k) = qx(i, k) + g(i, k, a)*vx(i, a)
+               qy(i, k) = qy(i, k) + g(i, k, a)*vy(i, a)
+               qz(i, k) = qz(i, k) + g(i, k, a)*vz(i, a)
+            end do
+         end do
+      end do
+      if (part%ihq >= 4) then
+         m = part%qh*(mat%bulk + 4.0_wp*mat%shear/3.0_wp)/24.0_wp
+         do i = 1, n
+            coef(i) = 0.0_wp
+            do a = 1, 8
+               coef(i) = coef(i) + bx(i, a)**2 + by(i, a)**2 + bz(i, a)**2
+            end do
+            coef(i) = m*coef(i)/vol(i)*dt
+            e(i) = 0.0_wp
+         end do
+         do k = 1, 4
+            do i = 1, n
+               ! corotate the stored resisting forces, then add the stiffness increment; the
+               ! energy is the trapezoid of the old and new force (exact spring energy)
+               kx = blk%hgs(i, 1, k) + w12(i)*blk%hgs(i, 2, k) - w31(i)*blk%hgs(i, 3, k)
+               ky = blk%hgs(i, 2, k) - w12(i)*blk%hgs(i, 1, k) + w23(i)*blk%hgs(i, 3, k)
+               kz = blk%hgs(i, 3, k) + w31(i)*blk%hgs(i, 1, k) - w23(i)*blk%hgs(i, 2, k)
+               hx(i, k) = kx + coef(i)*qx(i, k)
+               hy(i, k) = ky + coef(i)*qy(i, k)
+               hz(i, k) = kz + coef(i)*qz(i, k)
+               blk%hgs(i, 1, k) = hx(i, k); blk%hgs(i, 2, k) = hy(i, k)
+               blk%hgs(i, 3, k) = hz(i, k)
+               e(i) = e(i) + 0.5_wp*dt*((kx + hx(i, k))*qx(i, k) + (ky + hy(i, k))*qy(i, k) &
+                      + (kz + hz(i, k))*qz(i, k))
+            end do
+         end do
+      else
+         do i = 1, n
+            ! a_h = QH rho c V**(2/3)/4
+            coef(i) = 0.25_wp*part%qh*(mat%ro/rv(i))*c(i)*vol(i)**(2.0_wp/3.0_wp)
+            e(i) = 0.0_wp
+         end do
+         do k = 1, 4
+            do i = 1, n
+               hx(i, k) = coef(i)*qx(i, k)
+               hy(i, k) = coef(i)*qy(i, k)
+               hz(i, k) = coef(i)*qz(i, k)
+               e(i) = e(i) + dt*(hx(i, k)*qx(i, k) + hy(i, k)*qy(i, k) + hz(i, k)*qz(i, k))
+            end do
+         end do
+      end if
+      dehg = 0.0_wp
+      do i = 1, n
+         e(i) = e(i)*alive(i)
+         blk%ehg(i) = blk%ehg(i) + e(i)
+         dehg = dehg + e(i)
+      end do
+      do a = 1, 8
+         do k = 1, 4
+            do i = 1, n
+               fx(i, a) = fx(i, a) + alive(i)*hx(i, k)*g(i, k, a)
+               fy(i, a) = fy(i, a) + alive(i)*hy(i, k)*g(i, k, a)
+               fz(i, a) = fz(i, a) + alive(i)*hz(i, k)*g(i, k, a)
+            end do
+         end do
+      end do
+   end subroutine hourglass
 
    !> DYNA bulk viscosity q = rho*l*(Q1*l*e_kk**2 - Q2*c*e_kk) for e_kk < 0, l = V**(1/3).
    pure real(wp) function bulk_viscosity(part, rho, vol, trd, c) result(q)
