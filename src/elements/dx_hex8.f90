@@ -106,126 +106,153 @@ contains
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: f(:, :)
       type(block_result_t), intent(out) :: res
-      real(wp), dimension(blk%nel, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
-      real(wp), dimension(blk%nel) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive
-      real(wp), dimension(blk%nel) :: bv, relv_old
-      real(wp) :: deps(blk%nel, 6), sold(blk%nel, 6), l(3, 3)
-      real(wp) :: rho, dtl, wo, wn, a, pend, ein_sum
-      integer :: ierr(blk%nel)
-      logical :: failed(blk%nel)
-      integer :: i, k, n, nn, ihq
+      ! work arrays have the compile-time leading dimension nv_chunk, so that loops that touch
+      ! several columns of one array vectorize; deps is (nel, 6) as the material expects
+      real(wp), dimension(nv_chunk, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
+      real(wp), dimension(nv_chunk) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive
+      real(wp), dimension(nv_chunk) :: bv, vold, lcb, wo, wn, de, e1, e2, e3, e4
+      real(wp) :: lg(nv_chunk, 9), de6(nv_chunk, 6), so(nv_chunk, 6), sn(nv_chunk, 6)
+      real(wp) :: deps(blk%nel, 6)
+      real(wp) :: dtl, hdt, d1, d2, d3, d4, d5, d6
+      integer :: ierr(nv_chunk)
+      logical :: failed(nv_chunk)
+      integer :: i, k, n, nn
       n = blk%nel
-      ihq = part%ihq
-      ! ---- gather
+      ! ---- gather, and the mid-step geometry x(n-1/2) = x(n) - dt/2 v(n-1/2) of the strain
+      ! increment and spin
+      hdt = 0.5_wp*dt_old
       do k = 1, 8
          do i = 1, n
             nn = blk%conn(k, i)
             xe(i, k) = x(1, nn); ye(i, k) = x(2, nn); ze(i, k) = x(3, nn)
             vx(i, k) = v(1, nn); vy(i, k) = v(2, nn); vz(i, k) = v(3, nn)
+            xm(i, k) = xe(i, k) - hdt*vx(i, k)
+            ym(i, k) = ye(i, k) - hdt*vy(i, k)
+            zm(i, k) = ze(i, k) - hdt*vz(i, k)
          end do
       end do
-      ! ---- mid-step geometry x(n-1/2) = x(n) - dt/2 v(n-1/2): strain increment and spin
+      call hex8_bvectors(n, nv_chunk, xm, ym, zm, bx, by, bz, volm)
+      ! velocity gradient times V, L_ij V = v_iI B_jI (mid-step B)
+      lg(1:n, :) = 0.0_wp
       do k = 1, 8
          do i = 1, n
-            xm(i, k) = xe(i, k) - 0.5_wp*dt_old*vx(i, k)
-            ym(i, k) = ye(i, k) - 0.5_wp*dt_old*vy(i, k)
-            zm(i, k) = ze(i, k) - 0.5_wp*dt_old*vz(i, k)
+            lg(i, 1) = lg(i, 1) + vx(i, k)*bx(i, k)
+            lg(i, 2) = lg(i, 2) + vy(i, k)*by(i, k)
+            lg(i, 3) = lg(i, 3) + vz(i, k)*bz(i, k)
+            lg(i, 4) = lg(i, 4) + vx(i, k)*by(i, k)
+            lg(i, 5) = lg(i, 5) + vy(i, k)*bx(i, k)
+            lg(i, 6) = lg(i, 6) + vy(i, k)*bz(i, k)
+            lg(i, 7) = lg(i, 7) + vz(i, k)*by(i, k)
+            lg(i, 8) = lg(i, 8) + vz(i, k)*bx(i, k)
+            lg(i, 9) = lg(i, 9) + vx(i, k)*bz(i, k)
          end do
       end do
-      call hex8_bvectors(n, n, xm, ym, zm, bx, by, bz, volm)
-      ierr = 0
       do i = 1, n
+         ierr(i) = 0
          if (.not. (volm(i) > 0.0_wp)) ierr(i) = HEX_ERR_NEGVOL
          if (.not. (volm(i) > 0.0_wp)) volm(i) = 1.0_wp
          alive(i) = merge(0.0_wp, 1.0_wp, blk%failed(i))
-      end do
-      do i = 1, n
-         l = 0.0_wp
-         do k = 1, 8
-            l(1, 1) = l(1, 1) + vx(i, k)*bx(i, k)
-            l(1, 2) = l(1, 2) + vx(i, k)*by(i, k)
-            l(1, 3) = l(1, 3) + vx(i, k)*bz(i, k)
-            l(2, 1) = l(2, 1) + vy(i, k)*bx(i, k)
-            l(2, 2) = l(2, 2) + vy(i, k)*by(i, k)
-            l(2, 3) = l(2, 3) + vy(i, k)*bz(i, k)
-            l(3, 1) = l(3, 1) + vz(i, k)*bx(i, k)
-            l(3, 2) = l(3, 2) + vz(i, k)*by(i, k)
-            l(3, 3) = l(3, 3) + vz(i, k)*bz(i, k)
-         end do
          dtl = dt_old/volm(i)
-         deps(i, 1) = l(1, 1)*dtl
-         deps(i, 2) = l(2, 2)*dtl
-         deps(i, 3) = l(3, 3)*dtl
-         deps(i, 4) = 0.5_wp*(l(1, 2) + l(2, 1))*dtl
-         deps(i, 5) = 0.5_wp*(l(2, 3) + l(3, 2))*dtl
-         deps(i, 6) = 0.5_wp*(l(3, 1) + l(1, 3))*dtl
-         w12(i) = 0.5_wp*(l(1, 2) - l(2, 1))*dtl
-         w23(i) = 0.5_wp*(l(2, 3) - l(3, 2))*dtl
-         w31(i) = 0.5_wp*(l(3, 1) - l(1, 3))*dtl
-         trd(i) = (l(1, 1) + l(2, 2) + l(3, 3))/volm(i)
+         de6(i, 1) = lg(i, 1)*dtl
+         de6(i, 2) = lg(i, 2)*dtl
+         de6(i, 3) = lg(i, 3)*dtl
+         de6(i, 4) = 0.5_wp*(lg(i, 4) + lg(i, 5))*dtl
+         de6(i, 5) = 0.5_wp*(lg(i, 6) + lg(i, 7))*dtl
+         de6(i, 6) = 0.5_wp*(lg(i, 8) + lg(i, 9))*dtl
+         w12(i) = 0.5_wp*(lg(i, 4) - lg(i, 5))*dtl
+         w23(i) = 0.5_wp*(lg(i, 6) - lg(i, 7))*dtl
+         w31(i) = 0.5_wp*(lg(i, 8) - lg(i, 9))*dtl
+         trd(i) = (lg(i, 1) + lg(i, 2) + lg(i, 3))/volm(i)
       end do
-      ! ---- geometry at t(n): forces, volume, time step
-      call hex8_bvectors(n, n, xe, ye, ze, bx, by, bz, vol)
-      call bdotv(n, bx, by, bz, vx, vy, vz, bv)
+      do k = 1, 6
+         deps(1:n, k) = de6(1:n, k)
+      end do
+      ! ---- geometry at t(n): forces, volume, time step; B(n).v(n-1/2) for the viscous work
+      call hex8_bvectors(n, nv_chunk, xe, ye, ze, bx, by, bz, vol)
+      bv(1:n) = 0.0_wp
+      do k = 1, 8
+         do i = 1, n
+            bv(i) = bv(i) + bx(i, k)*vx(i, k) + by(i, k)*vy(i, k) + bz(i, k)*vz(i, k)
+         end do
+      end do
       do i = 1, n
-         relv_old(i) = blk%relvol(i)
+         vold(i) = blk%vol0(i)*blk%relvol(i)
          if (.not. (vol(i) > 0.0_wp)) ierr(i) = HEX_ERR_NEGVOL
          if (.not. (vol(i) > 0.0_wp)) vol(i) = 1.0_wp
          rv(i) = vol(i)/blk%vol0(i)
          blk%relvol(i) = rv(i)
          ein(i) = blk%eint(i)/blk%vol0(i)
+         lcb(i) = vol(i)**(1.0_wp/3.0_wp)
       end do
-      ! ---- stress: rotate, update
-      call jaumann(n, n, w12, w23, w31, blk%sig(:, :, 1))
-      sold(1:n, :) = blk%sig(1:n, :, 1)
+      ! ---- stress: Jaumann rotation by the spin increment (first order), then the material
+      do k = 1, 6
+         so(1:n, k) = blk%sig(1:n, k, 1)
+      end do
+      do i = 1, n
+         d1 = 2.0_wp*(w12(i)*so(i,4) - w31(i)*so(i,6))
+         d2 = 2.0_wp*(w23(i)*so(i,5) - w12(i)*so(i,4))
+         d3 = 2.0_wp*(w31(i)*so(i,6) - w23(i)*so(i,5))
+         d4 = w12(i)*(so(i,2) - so(i,1)) + w23(i)*so(i,6) - w31(i)*so(i,5)
+         d5 = w23(i)*(so(i,3) - so(i,2)) + w31(i)*so(i,4) - w12(i)*so(i,6)
+         d6 = w31(i)*(so(i,1) - so(i,3)) + w12(i)*so(i,5) - w23(i)*so(i,4)
+         so(i,1) = so(i,1) + d1; so(i,2) = so(i,2) + d2; so(i,3) = so(i,3) + d3
+         so(i,4) = so(i,4) + d4; so(i,5) = so(i,5) + d5; so(i,6) = so(i,6) + d6
+      end do
+      do k = 1, 6
+         blk%sig(1:n, k, 1) = so(1:n, k)
+      end do
       call mat%update(n, dt_old, deps, rv, ein, blk%sig(:, :, 1), blk%hv(:, :, 1), ierr)
       call mat%fails(n, blk%hv(:, :, 1), failed)
       call mat%wave_speed(n, rv, blk%hv(:, :, 1), c)
-      ! ---- bulk viscosity and energies
-      ein_sum = 0.0_wp
-      pend = 0.0_wp
+      ! ---- erosion (an eroded element keeps zero stress and carries no force; the work of
+      ! its last step still counts)
       do i = 1, n
-         rho = mat%ro/rv(i)
-         q(i) = bulk_viscosity(part, rho, vol(i), trd(i), c(i))
-         wo = volm(i)*(sold(i,1)*deps(i,1) + sold(i,2)*deps(i,2) + sold(i,3)*deps(i,3) &
-              + 2.0_wp*(sold(i,4)*deps(i,4) + sold(i,5)*deps(i,5) + sold(i,6)*deps(i,6)))
-         wn = volm(i)*(blk%sig(i,1,1)*deps(i,1) + blk%sig(i,2,1)*deps(i,2) &
-              + blk%sig(i,3,1)*deps(i,3) + 2.0_wp*(blk%sig(i,4,1)*deps(i,4) &
-              + blk%sig(i,5,1)*deps(i,5) + blk%sig(i,6,1)*deps(i,6)))
-         call centred_work(blk%ework(i, 1), blk%ework(i, 2), blk%ework(i, 3), blk%ework(i, 4), &
-                           dt_old, wo, wn, q(i), vol(i), blk%vol0(i)*relv_old(i), bv(i), &
-                           trd(i)*volm(i), a)
-         a = a*alive(i)
-         blk%eint(i) = blk%eint(i) + a
-         ein_sum = ein_sum + a
-         pend = pend + alive(i)*(blk%ework(i, 4) - blk%ework(i, 2))
+         if (failed(i) .and. .not. blk%failed(i)) blk%failed(i) = .true.
       end do
-      res%deint = ein_sum
-      res%pend = pend
-      ! ---- erosion
+      do k = 1, 6
+         do i = 1, n
+            sn(i, k) = blk%sig(i, k, 1)
+            if (blk%failed(i)) blk%sig(i, k, 1) = 0.0_wp
+         end do
+      end do
+      ! ---- bulk viscosity and the centred work of stress and viscosity
       do i = 1, n
-         if (failed(i) .and. .not. blk%failed(i)) then
-            blk%failed(i) = .true.
-            alive(i) = 0.0_wp
-         end if
-         if (blk%failed(i)) blk%sig(i, :, 1) = 0.0_wp
+         q(i) = bulk_viscosity(part, mat%ro/rv(i), lcb(i), trd(i), c(i))
+         wo(i) = volm(i)*(so(i,1)*de6(i,1) + so(i,2)*de6(i,2) + so(i,3)*de6(i,3) &
+                 + 2.0_wp*(so(i,4)*de6(i,4) + so(i,5)*de6(i,5) + so(i,6)*de6(i,6)))
+         wn(i) = volm(i)*(sn(i,1)*de6(i,1) + sn(i,2)*de6(i,2) + sn(i,3)*de6(i,3) &
+                 + 2.0_wp*(sn(i,4)*de6(i,4) + sn(i,5)*de6(i,5) + sn(i,6)*de6(i,6)))
+      end do
+      e1(1:n) = blk%ework(1:n, 1); e2(1:n) = blk%ework(1:n, 2)
+      e3(1:n) = blk%ework(1:n, 3); e4(1:n) = blk%ework(1:n, 4)
+      do i = 1, n
+         call centred_work(e1(i), e2(i), e3(i), e4(i), dt_old, wo(i), wn(i), q(i), vol(i), &
+                           vold(i), bv(i), trd(i)*volm(i), de(i))
+      end do
+      blk%ework(1:n, 1) = e1(1:n); blk%ework(1:n, 2) = e2(1:n)
+      blk%ework(1:n, 3) = e3(1:n); blk%ework(1:n, 4) = e4(1:n)
+      res%deint = 0.0_wp
+      res%pend = 0.0_wp
+      do i = 1, n
+         de(i) = de(i)*alive(i)
+         blk%eint(i) = blk%eint(i) + de(i)
+         res%deint = res%deint + de(i)
+         res%pend = res%pend + alive(i)*(e4(i) - e2(i))
+         if (blk%failed(i)) alive(i) = 0.0_wp
       end do
       ! ---- internal force f_iI = (sig_ij - q delta_ij) B_jI
       do k = 1, 8
          do i = 1, n
-            fx(i, k) = alive(i)*((blk%sig(i,1,1) - q(i))*bx(i,k) + blk%sig(i,4,1)*by(i,k) &
-                       + blk%sig(i,6,1)*bz(i,k))
-            fy(i, k) = alive(i)*(blk%sig(i,4,1)*bx(i,k) + (blk%sig(i,2,1) - q(i))*by(i,k) &
-                       + blk%sig(i,5,1)*bz(i,k))
-            fz(i, k) = alive(i)*(blk%sig(i,6,1)*bx(i,k) + blk%sig(i,5,1)*by(i,k) &
-                       + (blk%sig(i,3,1) - q(i))*bz(i,k))
+            fx(i, k) = alive(i)*((sn(i,1) - q(i))*bx(i,k) + sn(i,4)*by(i,k) + sn(i,6)*bz(i,k))
+            fy(i, k) = alive(i)*(sn(i,4)*bx(i,k) + (sn(i,2) - q(i))*by(i,k) + sn(i,5)*bz(i,k))
+            fz(i, k) = alive(i)*(sn(i,6)*bx(i,k) + sn(i,5)*by(i,k) + (sn(i,3) - q(i))*bz(i,k))
          end do
       end do
       ! ---- hourglass control
       res%dehg = 0.0_wp
       if (part%qh > 0.0_wp) call hourglass(blk, mat, part, n, dt_old, xe, ye, ze, vx, vy, vz, &
-                                           bx, by, bz, vol, rv, c, w12, w23, w31, alive, &
-                                           fx, fy, fz, res%dehg)
+                                           bx, by, bz, vol, lcb, rv, c, w12, w23, w31, &
+                                           alive, fx, fy, fz, res%dehg)
       ! ---- scatter (internal force is subtracted)
       do k = 1, 8
          do i = 1, n
@@ -245,19 +272,19 @@ contains
    !> rates qdot_ia = gamma_aI v_iI; viscous forces a_h qdot (IHQ 1-3) or corotated stiffness
    !> forces Q += k_h dt qdot (IHQ 4,5); f_iI += Q_ia gamma_aI. Every loop runs over the
    !> elements of the block (unit stride), so it vectorizes.
-   subroutine hourglass(blk, mat, part, n, dt, xe, ye, ze, vx, vy, vz, bx, by, bz, vol, rv, c, &
-                        w12, w23, w31, alive, fx, fy, fz, dehg)
+   subroutine hourglass(blk, mat, part, n, dt, xe, ye, ze, vx, vy, vz, bx, by, bz, vol, lcb, rv, &
+                        c, w12, w23, w31, alive, fx, fy, fz, dehg)
       type(elem_block_t), intent(inout) :: blk
       class(material_t), intent(in) :: mat
       type(part_t), intent(in) :: part
       integer, intent(in) :: n
       real(wp), intent(in) :: dt
-      real(wp), dimension(n, 8), intent(in) :: xe, ye, ze, vx, vy, vz, bx, by, bz
-      real(wp), dimension(n), intent(in) :: vol, rv, c, w12, w23, w31, alive
-      real(wp), dimension(n, 8), intent(inout) :: fx, fy, fz
+      real(wp), dimension(nv_chunk, 8), intent(in) :: xe, ye, ze, vx, vy, vz, bx, by, bz
+      real(wp), dimension(nv_chunk), intent(in) :: vol, lcb, rv, c, w12, w23, w31, alive
+      real(wp), dimension(nv_chunk, 8), intent(inout) :: fx, fy, fz
       real(wp), intent(out) :: dehg
-      real(wp) :: g(n, 4, 8), qx(n, 4), qy(n, 4), qz(n, 4), hx(n, 4), hy(n, 4), hz(n, 4)
-      real(wp) :: ax, ay, az, rvol, coef(n), e(n), m, kx, ky, kz
+      real(wp), dimension(nv_chunk, 4) :: qx, qy, qz, hx, hy, hz
+      real(wp) :: g(nv_chunk, 4, 8), ax, ay, az, rvol, coef(nv_chunk), e(nv_chunk), m, kx, ky, kz
       integer :: i, a, k
       ! shape vectors
       if (part%ihq == 1) then
@@ -289,7 +316,7 @@ contains
          end do
       end if
       ! modal rates
-      qx = 0.0_wp; qy = 0.0_wp; qz = 0.0_wp
+      qx(1:n, :) = 0.0_wp; qy(1:n, :) = 0.0_wp; qz(1:n, :) = 0.0_wp
       do a = 1, 8
          do k = 1, 4
             do i = 1, n
@@ -327,8 +354,8 @@ contains
          end do
       else
          do i = 1, n
-            ! a_h = QH rho c V**(2/3)/4
-            coef(i) = 0.25_wp*part%qh*(mat%ro/rv(i))*c(i)*vol(i)**(2.0_wp/3.0_wp)
+            ! a_h = QH rho c V**(2/3)/4, lcb = V**(1/3)
+            coef(i) = 0.25_wp*part%qh*(mat%ro/rv(i))*c(i)*lcb(i)*lcb(i)
             e(i) = 0.0_wp
          end do
          do k = 1, 4
@@ -357,16 +384,13 @@ contains
       end do
    end subroutine hourglass
 
-   !> DYNA bulk viscosity q = rho*l*(Q1*l*e_kk**2 - Q2*c*e_kk) for e_kk < 0, l = V**(1/3).
-   pure real(wp) function bulk_viscosity(part, rho, vol, trd, c) result(q)
+   !> DYNA bulk viscosity q = rho*l*(Q1*l*e_kk**2 - Q2*c*e_kk) for e_kk < 0, l = V**(1/3)
+   !> (computed by the caller in a vector loop).
+   pure real(wp) function bulk_viscosity(part, rho, l, trd, c) result(q)
       type(part_t), intent(in) :: part
-      real(wp), intent(in) :: rho, vol, trd, c
-      real(wp) :: l
+      real(wp), intent(in) :: rho, l, trd, c
       q = 0.0_wp
-      if (trd < 0.0_wp) then
-         l = vol**(1.0_wp/3.0_wp)
-         q = rho*l*(part%q1*l*trd**2 - part%q2*c*trd)
-      end if
+      if (trd < 0.0_wp) q = rho*l*(part%q1*l*trd**2 - part%q2*c*trd)
    end function bulk_viscosity
 
    !> Sum over the nodes of B_I . v_I for each element (the volume rate V*tr(D) for B at x).
@@ -420,10 +444,10 @@ contains
       type(part_t), intent(in) :: part
       real(wp), intent(in) :: xe(:, :), ye(:, :), ze(:, :), vol(:), trd(:), c(:)
       type(block_result_t), intent(inout) :: res
-      real(wp) :: lc(blk%nel), qb, trde
+      real(wp) :: lc(size(xe, 1)), qb, trde
       integer :: i, n
       n = blk%nel
-      call hex8_char_length(n, n, xe, ye, ze, vol, lc)
+      call hex8_char_length(n, size(xe, 1), xe, ye, ze, vol, lc)
       do i = 1, n
          qb = 0.0_wp
          if (trd(i) < 0.0_wp) qb = part%q2*c(i) + part%q1*lc(i)*abs(trd(i))
@@ -460,7 +484,7 @@ contains
       type(block_result_t), intent(out) :: res
       real(wp), dimension(blk%nel, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
       real(wp), dimension(blk%nel) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive, pbar
-      real(wp), dimension(blk%nel) :: bv, relv_old, wold, wnew
+      real(wp), dimension(blk%nel) :: bv, relv_old, wold, wnew, lcb
       real(wp) :: deps(blk%nel, 6), sold(blk%nel, 6), dn(3, 8, 8), dnx(3, 8), l(3, 3)
       real(wp) :: p8(8), q8(8), r8(8)
       real(wp), allocatable :: dng(:, :, :, :)
@@ -560,8 +584,11 @@ contains
       call mat%wave_speed(n, rv, blk%hv(:, :, 1), c)
       ! bulk viscosity, mean pressure through the exact mean B, erosion
       do i = 1, n
+         lcb(i) = vol(i)**(1.0_wp/3.0_wp)
+      end do
+      do i = 1, n
          rho = mat%ro/rv(i)
-         q(i) = bulk_viscosity(part, rho, vol(i), trd(i), c(i))
+         q(i) = bulk_viscosity(part, rho, lcb(i), trd(i), c(i))
          call centred_work(blk%ework(i, 1), blk%ework(i, 2), blk%ework(i, 3), blk%ework(i, 4), &
                            dt_old, wold(i), wnew(i), q(i), vol(i), blk%vol0(i)*relv_old(i), &
                            bv(i), trd(i)*volm(i), a)
