@@ -286,13 +286,14 @@ contains
       real(wp), dimension(nv_chunk, 4) :: qx, qy, qz, hx, hy, hz
       real(wp) :: g(nv_chunk, 4, 8), ax, ay, az, rvol, coef(nv_chunk), e(nv_chunk), m, kx, ky, kz
       integer :: i, a, k
-      ! shape vectors
       if (part%ihq == 1) then
-         do a = 1, 8
-            do k = 1, 4
-               g(1:n, k, a) = GAMMA_HG(k, a)
-            end do
-         end do
+         ! DYNA's viscous form on the constant base vectors Gamma (unrolled: +-1 constants)
+         call hourglass_gamma_viscous(blk, mat, part, n, dt, vx, vy, vz, lcb, rv, c, alive, &
+                                      fx, fy, fz, dehg)
+         return
+      end if
+      ! shape vectors
+      if (.false.) then
       else
          do k = 1, 4
             do i = 1, n
@@ -383,6 +384,49 @@ contains
          end do
       end do
    end subroutine hourglass
+
+   !> IHQ 1: f_iI += a_h qdot_ia Gamma_aI with qdot_ia = Gamma_aJ v_iJ, Gamma the +-1 base
+   !> vectors (Kosloff & Frasier 1978; DYNA3D), a_h = QH rho c V**(2/3)/4.
+   subroutine hourglass_gamma_viscous(blk, mat, part, n, dt, vx, vy, vz, lcb, rv, c, alive, &
+                                      fx, fy, fz, dehg)
+      type(elem_block_t), intent(inout) :: blk
+      class(material_t), intent(in) :: mat
+      type(part_t), intent(in) :: part
+      integer, intent(in) :: n
+      real(wp), intent(in) :: dt
+      real(wp), dimension(nv_chunk, 8), intent(in) :: vx, vy, vz
+      real(wp), dimension(nv_chunk), intent(in) :: lcb, rv, c, alive
+      real(wp), dimension(nv_chunk, 8), intent(inout) :: fx, fy, fz
+      real(wp), intent(out) :: dehg
+      real(wp) :: ah, qx(4), qy(4), qz(4), e
+      integer :: i, a, k
+      dehg = 0.0_wp
+      do i = 1, n
+         ah = 0.25_wp*part%qh*(mat%ro/rv(i))*c(i)*lcb(i)*lcb(i)*alive(i)
+         !GCC$ unroll 4
+         do k = 1, 4
+            qx(k) = 0.0_wp; qy(k) = 0.0_wp; qz(k) = 0.0_wp
+            !GCC$ unroll 8
+            do a = 1, 8
+               qx(k) = qx(k) + GAMMA_HG(k, a)*vx(i, a)
+               qy(k) = qy(k) + GAMMA_HG(k, a)*vy(i, a)
+               qz(k) = qz(k) + GAMMA_HG(k, a)*vz(i, a)
+            end do
+         end do
+         e = ah*dt*sum(qx*qx + qy*qy + qz*qz)
+         blk%ehg(i) = blk%ehg(i) + e
+         dehg = dehg + e
+         !GCC$ unroll 8
+         do a = 1, 8
+            fx(i, a) = fx(i, a) + ah*(GAMMA_HG(1, a)*qx(1) + GAMMA_HG(2, a)*qx(2) &
+                       + GAMMA_HG(3, a)*qx(3) + GAMMA_HG(4, a)*qx(4))
+            fy(i, a) = fy(i, a) + ah*(GAMMA_HG(1, a)*qy(1) + GAMMA_HG(2, a)*qy(2) &
+                       + GAMMA_HG(3, a)*qy(3) + GAMMA_HG(4, a)*qy(4))
+            fz(i, a) = fz(i, a) + ah*(GAMMA_HG(1, a)*qz(1) + GAMMA_HG(2, a)*qz(2) &
+                       + GAMMA_HG(3, a)*qz(3) + GAMMA_HG(4, a)*qz(4))
+         end do
+      end do
+   end subroutine hourglass_gamma_viscous
 
    !> DYNA bulk viscosity q = rho*l*(Q1*l*e_kk**2 - Q2*c*e_kk) for e_kk < 0, l = V**(1/3)
    !> (computed by the caller in a vector loop).
