@@ -18,7 +18,8 @@ module dx_hex8
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_model, only: elem_block_t, part_t
    use dx_material, only: material_t
-   use dx_hex8_geometry, only: hex8_bvectors, hex8_char_length, inv3, GAMMA_HG, XI_NODE
+   use dx_hex8_geometry, only: hex8_bvectors, hex8_bvectors_chunk, hex8_char_length, inv3, &
+                               GAMMA_HG, XI_NODE
    implicit none
    private
    public :: hex8_block, HEX_ERR_NEGVOL, HEX_ERR_MATERIAL, hex8_volume
@@ -55,7 +56,7 @@ contains
             ze(i, a) = x(3, blk%conn(a, i))
          end do
       end do
-      call hex8_bvectors(n, nv_chunk, xe, ye, ze, bx, by, bz, v)
+      call hex8_bvectors_chunk(n, xe, ye, ze, bx, by, bz, v)
       vol(1:n) = v(1:n)
    end subroutine hex8_volume
 
@@ -131,7 +132,7 @@ contains
             zm(i, k) = ze(i, k) - hdt*vz(i, k)
          end do
       end do
-      call hex8_bvectors(n, nv_chunk, xm, ym, zm, bx, by, bz, volm)
+      call hex8_bvectors_chunk(n, xm, ym, zm, bx, by, bz, volm)
       ! velocity gradient times V, L_ij V = v_iI B_jI (mid-step B)
       lg(1:n, :) = 0.0_wp
       do k = 1, 8
@@ -168,7 +169,7 @@ contains
          deps(1:n, k) = de6(1:n, k)
       end do
       ! ---- geometry at t(n): forces, volume, time step; B(n).v(n-1/2) for the viscous work
-      call hex8_bvectors(n, nv_chunk, xe, ye, ze, bx, by, bz, vol)
+      call hex8_bvectors_chunk(n, xe, ye, ze, bx, by, bz, vol)
       bv(1:n) = 0.0_wp
       do k = 1, 8
          do i = 1, n
