@@ -6,8 +6,9 @@ r > 0 compresses, r < 0 expands, g adds shear and spin. A linear field excites n
 mode, so only the uniform-strain stress and the bulk viscosity (Q1 = 1.5, Q2 = 0.06, active
 in compression) act; with no external force the energy ratio must stay 1 while the viscosity
 turns the kinetic energy into internal energy.
+--nz N stacks N cubes along z (a one-element-wide bar of length N, xc its centre).
 Usage: gen_cube_energy_deck.py OUT.k [--elform 1|2] [--rate r] [--shear g] [--tssfac f]
-                               [--cycles N] [--ihq N] [--qh QH]"""
+                               [--cycles N] [--ihq N] [--qh QH] [--nz N]"""
 import argparse
 
 ap = argparse.ArgumentParser()
@@ -19,11 +20,13 @@ ap.add_argument('--tssfac', type=float, default=0.9)
 ap.add_argument('--cycles', type=int, default=2000)
 ap.add_argument('--ihq', type=int, default=1)
 ap.add_argument('--qh', type=float, default=0.1)
+ap.add_argument('--nz', type=int, default=1)
 a = ap.parse_args()
 
 r, g = a.rate, a.shear
 L = [[-r, g, 0.0], [0.0, -0.5 * r, 0.0], [0.0, 0.0, -0.8 * r]]
-X = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
+X = [(x, y, z) for z in range(a.nz + 1) for (x, y) in ((0, 0), (1, 0), (1, 1), (0, 1))]
+C = (0.5, 0.5, 0.5 * a.nz)
 with open(a.out, 'w') as f:
     w = f.write
     w('*KEYWORD\n*TITLE\none free cube, v = L (x - xc), r = %g, g = %g, ELFORM %d\n'
@@ -41,11 +44,12 @@ with open(a.out, 'w') as f:
     w('*NODE\n')
     for i, x in enumerate(X):
         w('%8d%16.9f%16.9f%16.9f\n' % ((i + 1,) + x))
-    w('*ELEMENT_SOLID\n       1       1\n       1       2       3       4       5       6'
-      '       7       8\n')
+    w('*ELEMENT_SOLID\n')
+    for e in range(a.nz):
+        w('%8d       1\n' % (e + 1) + ''.join('%8d' % (4 * e + k) for k in range(1, 9)) + '\n')
     w('*INITIAL_VELOCITY_NODE\n$      NID        VX        VY        VZ\n')
     for i, x in enumerate(X):
-        d = [x[k] - 0.5 for k in range(3)]
+        d = [x[k] - C[k] for k in range(3)]
         v = [sum(L[p][q] * d[q] for q in range(3)) for p in range(3)]
         w('%10d%10.5f%10.5f%10.5f\n' % (i + 1, v[0], v[1], v[2]))
     w('*END\n')

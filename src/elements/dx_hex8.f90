@@ -22,7 +22,7 @@ module dx_hex8
                                GAMMA_HG, XI_NODE
    implicit none
    private
-   public :: hex8_block, HEX_ERR_NEGVOL, HEX_ERR_MATERIAL, hex8_volume
+   public :: hex8_block, HEX_ERR_NEGVOL, HEX_ERR_MATERIAL, hex8_volume, hex8_mass_share
 
    integer, parameter :: HEX_ERR_NEGVOL = 1, HEX_ERR_MATERIAL = 2
 
@@ -264,7 +264,7 @@ contains
          end do
       end do
       ! ---- stable time step
-      call stable_time_step(blk, part, xe, ye, ze, vol, trd, c, res)
+      call stable_time_step(blk, part, xe, ye, ze, bx, by, bz, vol, trd, c, res)
       call first_error(n, ierr, res)
    end subroutine hex8_1pt
 
@@ -482,17 +482,57 @@ contains
       s4 = pn
    end subroutine centred_work
 
+   !> After the lumped masses are known: the element's own share of its nodes' mass,
+   !> phim = (1/8) sum_I (rho V0/8)/m_I (1 for a free element, 1/2 inside a one-element-wide
+   !> bar, 1/8 inside a mesh); a node with a constrained translation (SPC, prescribed motion:
+   !> the list cnodes) counts as restrained (share 0). Allocated only for a block that has an
+   !> element with phim >= 1/2, the only case stable_time_step uses it.
+   subroutine hex8_mass_share(blk, rho, mass, cnodes)
+      type(elem_block_t), intent(inout) :: blk
+      real(wp), intent(in) :: rho, mass(:)
+      integer, intent(in) :: cnodes(:)
+      real(wp) :: phi(blk%nel)
+      logical :: free(size(mass))
+      integer :: i, k, nd
+      free = .true.
+      free(cnodes) = .false.
+      do i = 1, blk%nel
+         phi(i) = 0.0_wp
+         do k = 1, 8
+            nd = blk%conn(k, i)
+            if (free(nd) .and. mass(nd) > 0.0_wp) &
+               phi(i) = phi(i) + rho*blk%vol0(i)/(64.0_wp*mass(nd))
+         end do
+      end do
+      if (allocated(blk%phim)) deallocate(blk%phim)
+      if (any(phi >= 0.5_wp)) blk%phim = phi
+   end subroutine hex8_mass_share
+
    !> Smallest element step L/(Q + sqrt(Q**2 + c**2)), L = V/A_max, Q = Q2*c + Q1*L*|e_kk|
-   !> (compression only); eroded elements do not count.
-   subroutine stable_time_step(blk, part, xe, ye, ze, vol, trd, c, res)
+   !> (compression only); eroded elements do not count. An element whose nodes carry mostly
+   !> its own mass (phim >= 1/2: a single element, a one-element-wide bar) has a dilatational
+   !> mode faster than c/L: a free unit cube's is sqrt(12 K/rho) (2.73 c for nu = 0.3, so
+   !> dt = 0.9 L/c is unstable). Its L is then also bounded by FB 1981's element bound
+   !> omega**2 <= 8 c**2 B_iI B_iI/V**2 with the nodal masses scaled by the element's own
+   !> share: L <= 2V/sqrt(8 phim B_iI B_iI) (0.577 for a free unit cube).
+   subroutine stable_time_step(blk, part, xe, ye, ze, bx, by, bz, vol, trd, c, res)
       type(elem_block_t), intent(in) :: blk
       type(part_t), intent(in) :: part
-      real(wp), intent(in) :: xe(:, :), ye(:, :), ze(:, :), vol(:), trd(:), c(:)
+      real(wp), intent(in) :: xe(:, :), ye(:, :), ze(:, :), bx(:, :), by(:, :), bz(:, :)
+      real(wp), intent(in) :: vol(:), trd(:), c(:)
       type(block_result_t), intent(inout) :: res
-      real(wp) :: lc(size(xe, 1)), qb, trde
+      real(wp) :: lc(size(xe, 1)), qb, trde, bb
       integer :: i, n
       n = blk%nel
       call hex8_char_length(n, size(xe, 1), xe, ye, ze, vol, lc)
+      if (allocated(blk%phim)) then
+         do i = 1, n
+            if (blk%phim(i) >= 0.5_wp) then
+               bb = sum(bx(i, 1:8)**2 + by(i, 1:8)**2 + bz(i, 1:8)**2)
+               lc(i) = min(lc(i), 2.0_wp*vol(i)/sqrt(8.0_wp*blk%phim(i)*bb))
+            end if
+         end do
+      end if
       do i = 1, n
          qb = 0.0_wp
          if (trd(i) < 0.0_wp) qb = part%q2*c(i) + part%q1*lc(i)*abs(trd(i))
@@ -661,7 +701,7 @@ contains
          end do
       end do
       res%dehg = 0.0_wp
-      call stable_time_step(blk, part, xe, ye, ze, vol, trd, c, res)
+      call stable_time_step(blk, part, xe, ye, ze, bx, by, bz, vol, trd, c, res)
       call first_error(n, ierr, res)
    end subroutine hex8_sri
 

@@ -15,7 +15,7 @@ module dx_explicit
    use dx_log, only: log_info, log_flush
    use dx_timer, only: wall_time, peak_memory_kb
    use dx_model, only: model_t, elem_block_t
-   use dx_hex8, only: hex8_block, hex8_volume, block_result_t, HEX_ERR_NEGVOL
+   use dx_hex8, only: hex8_block, hex8_volume, block_result_t, HEX_ERR_NEGVOL, hex8_mass_share
    use dx_loads, only: add_external_loads, has_external_loads
    use dx_constraints, only: apply_spc, apply_prescribed, apply_rigidwalls
    use dx_output, only: output_t
@@ -77,6 +77,10 @@ contains
       if (loads) allocate(fext(3, model%nn))
       call constrained_nodes(model, cnodes)
       allocate(vfree(3, size(cnodes)))
+      do b = 1, size(model%blocks)   ! one-element-wide blocks get the element dt bound
+         call hex8_mass_share(model%blocks(b), &
+            model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%ro, model%mass, cnodes)
+      end do
       tend = model%ctrl%endtim
       if (tend <= 0.0_wp) tend = huge_wp
       dt_old = 0.0_wp
