@@ -114,7 +114,7 @@ contains
       real(wp), dimension(nv_chunk) :: bv, vold, lcb, wo, wn, de, e1, e2, e3, e4
       real(wp) :: lg(nv_chunk, 9), de6(nv_chunk, 6), so(nv_chunk, 6), sn(nv_chunk, 6)
       real(wp) :: deps(blk%nel, 6)
-      real(wp) :: dtl, hdt, d1, d2, d3, d4, d5, d6
+      real(wp) :: dtl, hdt, d1, d2, d3, d4, d5, d6, l1, l2, l3, l4, l5, l6, l7, l8, l9
       integer :: ierr(nv_chunk)
       logical :: failed(nv_chunk)
       integer :: i, k, n, nn
@@ -134,19 +134,23 @@ contains
       end do
       call hex8_bvectors_chunk(n, xm, ym, zm, bx, by, bz, volm)
       ! velocity gradient times V, L_ij V = v_iI B_jI (mid-step B)
-      lg(1:n, :) = 0.0_wp
-      do k = 1, 8
-         do i = 1, n
-            lg(i, 1) = lg(i, 1) + vx(i, k)*bx(i, k)
-            lg(i, 2) = lg(i, 2) + vy(i, k)*by(i, k)
-            lg(i, 3) = lg(i, 3) + vz(i, k)*bz(i, k)
-            lg(i, 4) = lg(i, 4) + vx(i, k)*by(i, k)
-            lg(i, 5) = lg(i, 5) + vy(i, k)*bx(i, k)
-            lg(i, 6) = lg(i, 6) + vy(i, k)*bz(i, k)
-            lg(i, 7) = lg(i, 7) + vz(i, k)*by(i, k)
-            lg(i, 8) = lg(i, 8) + vz(i, k)*bx(i, k)
-            lg(i, 9) = lg(i, 9) + vx(i, k)*bz(i, k)
+      do i = 1, n
+         l1 = 0.0_wp; l2 = 0.0_wp; l3 = 0.0_wp; l4 = 0.0_wp; l5 = 0.0_wp
+         l6 = 0.0_wp; l7 = 0.0_wp; l8 = 0.0_wp; l9 = 0.0_wp
+         !GCC$ unroll 8
+         do k = 1, 8
+            l1 = l1 + vx(i, k)*bx(i, k)
+            l2 = l2 + vy(i, k)*by(i, k)
+            l3 = l3 + vz(i, k)*bz(i, k)
+            l4 = l4 + vx(i, k)*by(i, k)
+            l5 = l5 + vy(i, k)*bx(i, k)
+            l6 = l6 + vy(i, k)*bz(i, k)
+            l7 = l7 + vz(i, k)*by(i, k)
+            l8 = l8 + vz(i, k)*bx(i, k)
+            l9 = l9 + vx(i, k)*bz(i, k)
          end do
+         lg(i, 1) = l1; lg(i, 2) = l2; lg(i, 3) = l3; lg(i, 4) = l4; lg(i, 5) = l5
+         lg(i, 6) = l6; lg(i, 7) = l7; lg(i, 8) = l8; lg(i, 9) = l9
       end do
       do i = 1, n
          ierr(i) = 0
@@ -170,11 +174,13 @@ contains
       end do
       ! ---- geometry at t(n): forces, volume, time step; B(n).v(n-1/2) for the viscous work
       call hex8_bvectors_chunk(n, xe, ye, ze, bx, by, bz, vol)
-      bv(1:n) = 0.0_wp
-      do k = 1, 8
-         do i = 1, n
-            bv(i) = bv(i) + bx(i, k)*vx(i, k) + by(i, k)*vy(i, k) + bz(i, k)*vz(i, k)
+      do i = 1, n
+         l1 = 0.0_wp
+         !GCC$ unroll 8
+         do k = 1, 8
+            l1 = l1 + bx(i, k)*vx(i, k) + by(i, k)*vy(i, k) + bz(i, k)*vz(i, k)
          end do
+         bv(i) = l1
       end do
       do i = 1, n
          vold(i) = blk%vol0(i)*blk%relvol(i)
@@ -443,12 +449,15 @@ contains
       integer, intent(in) :: n
       real(wp), intent(in), dimension(:, :) :: bx, by, bz, vx, vy, vz
       real(wp), intent(out) :: bv(:)
+      real(wp) :: l1
       integer :: i, k
-      bv(1:n) = 0.0_wp
-      do k = 1, 8
-         do i = 1, n
-            bv(i) = bv(i) + bx(i, k)*vx(i, k) + by(i, k)*vy(i, k) + bz(i, k)*vz(i, k)
+      do i = 1, n
+         l1 = 0.0_wp
+         !GCC$ unroll 8
+         do k = 1, 8
+            l1 = l1 + bx(i, k)*vx(i, k) + by(i, k)*vy(i, k) + bz(i, k)*vz(i, k)
          end do
+         bv(i) = l1
       end do
    end subroutine bdotv
 
