@@ -9,7 +9,11 @@
 !> ELFORM 2: 2x2x2 selectively reduced (mean-dilatation) hex, no hourglass modes
 !> (Hughes 1980, IJNME 15:1413-1418; Nagtegaal, Parks & Rice 1974).
 !> Bulk viscosity (DYNA form): q = rho*l*(Q1*l*e_kk**2 - Q2*c*e_kk) for e_kk < 0, l = V**(1/3);
-!> time step dt_e = L/(Q + sqrt(Q**2 + c**2)), Q = Q2*c + Q1*L*|e_kk| (LS-DYNA Theory Manual).
+!> time step dt_e = L/(Q + sqrt(Q**2 + c**2)), Q = Q2*c + Q1*L*|e_kk| (LS-DYNA Theory Manual),
+!> L = V/A_max, and for elements whose nodes carry mostly their own mass (single elements,
+!> one-element-wide bars) also L <= 2V/sqrt(8 phim B_iI B_iI) (FB 1981's element bound).
+!> Internal energy: the centred work of the stress and viscosity forces, the exact partner of
+!> the centred kinetic energy of dx_explicit (centred_work).
 !> Viscous hourglass coefficient a_h = QH*rho*c*V**(2/3)/4 (LS-DYNA Theory Manual, U);
 !> stiffness (IHQ 4,5): FB 1981's kappa = QH*(lambda + 2mu)*b_jJ*b_jJ/(3V) on the modal
 !> rates normalized by 1/sqrt(8), i.e. f_iI = k_h (gamma_aJ u_iJ) gamma_aI with
