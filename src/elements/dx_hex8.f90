@@ -531,8 +531,8 @@ contains
    subroutine stable_time_step(blk, part, xe, ye, ze, bx, by, bz, vol, trd, c, res)
       type(elem_block_t), intent(in) :: blk
       type(part_t), intent(in) :: part
-      real(wp), intent(in) :: xe(:, :), ye(:, :), ze(:, :), bx(:, :), by(:, :), bz(:, :)
-      real(wp), intent(in) :: vol(:), trd(:), c(:)
+      real(wp), intent(in), contiguous :: xe(:, :), ye(:, :), ze(:, :), vol(:)
+      real(wp), intent(in) :: bx(:, :), by(:, :), bz(:, :), trd(:), c(:)
       type(block_result_t), intent(inout) :: res
       real(wp) :: lc(size(xe, 1)), qb, trde, bb
       integer :: i, n
