@@ -16,7 +16,7 @@ TEST_SRC := $(wildcard tests/unit/*.f90)
 # linked so libdynx.a can resolve METIS symbols from it
 LIBS := -Wl,--no-as-needed -lmetis -llapack -lblas -lfftw3
 COMMON := -I/usr/include -ffree-line-length-132
-REL_FLAGS := $(COMMON) -O3 -march=native -funroll-loops
+REL_FLAGS := $(COMMON) -O3 -march=native -funroll-loops -fstack-arrays
 DBG_FLAGS := $(COMMON) -O0 -g -std=f2008 -Wall -Wextra -Wimplicit-interface -fcheck=all \
              -ffpe-trap=invalid,zero,overflow -fbacktrace -Wno-unused-dummy-argument \
              -Wno-maybe-uninitialized -Wno-compare-reals -Wno-function-elimination

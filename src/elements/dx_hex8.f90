@@ -9,17 +9,24 @@
 !> ELFORM 2: 2x2x2 selectively reduced (mean-dilatation) hex, no hourglass modes
 !> (Hughes 1980, IJNME 15:1413-1418; Nagtegaal, Parks & Rice 1974).
 !> Bulk viscosity (DYNA form): q = rho*l*(Q1*l*e_kk**2 - Q2*c*e_kk) for e_kk < 0, l = V**(1/3);
-!> time step dt_e = L/(Q + sqrt(Q**2 + c**2)), Q = Q2*c + Q1*L*|e_kk| (LS-DYNA Theory Manual).
+!> time step dt_e = L/(Q + sqrt(Q**2 + c**2)), Q = Q2*c + Q1*L*|e_kk| (LS-DYNA Theory Manual),
+!> L = V/A_max, and for elements whose nodes carry mostly their own mass (single elements,
+!> one-element-wide bars) also L <= 2V/sqrt(8 phim B_iI B_iI) (FB 1981's element bound).
+!> Internal energy: the centred work of the stress and viscosity forces, the exact partner of
+!> the centred kinetic energy of dx_explicit (centred_work).
 !> Viscous hourglass coefficient a_h = QH*rho*c*V**(2/3)/4 (LS-DYNA Theory Manual, U);
-!> stiffness k_h = QH*(K + 4G/3)*sum(B_iI**2)/(8V) (dynx choice, see docs/theory/hex8.md).
+!> stiffness (IHQ 4,5): FB 1981's kappa = QH*(lambda + 2mu)*b_jJ*b_jJ/(3V) on the modal
+!> rates normalized by 1/sqrt(8), i.e. f_iI = k_h (gamma_aJ u_iJ) gamma_aI with
+!> k_h = QH*(K + 4G/3)*sum(B_jJ**2)/(24V) (docs/design.md, "Hourglass types").
 module dx_hex8
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_model, only: elem_block_t, part_t
    use dx_material, only: material_t
-   use dx_hex8_geometry, only: hex8_bvectors, hex8_char_length, inv3, GAMMA_HG, XI_NODE
+   use dx_hex8_geometry, only: hex8_bvectors, hex8_bvectors_chunk, hex8_char_length, inv3, &
+                               GAMMA_HG, XI_NODE
    implicit none
    private
-   public :: hex8_block, HEX_ERR_NEGVOL, HEX_ERR_MATERIAL, hex8_volume
+   public :: hex8_block, HEX_ERR_NEGVOL, HEX_ERR_MATERIAL, hex8_volume, hex8_mass_share
 
    integer, parameter :: HEX_ERR_NEGVOL = 1, HEX_ERR_MATERIAL = 2
 
@@ -31,6 +38,9 @@ module dx_hex8
       integer :: errcode = 0
       real(wp) :: deint = 0.0_wp      !< internal energy increment of the block
       real(wp) :: dehg = 0.0_wp       !< hourglass energy increment of the block
+      !> internal power sigma:D V - q B.v at t(n) with v(n-1/2): the caller adds
+      !> (dt(n+1/2) - dt(n-1/2))/4 times it to report the energy at t(n) (see centred_work)
+      real(wp) :: pend = 0.0_wp
    end type block_result_t
 
 contains
@@ -50,7 +60,7 @@ contains
             ze(i, a) = x(3, blk%conn(a, i))
          end do
       end do
-      call hex8_bvectors(n, nv_chunk, xe, ye, ze, bx, by, bz, v)
+      call hex8_bvectors_chunk(n, xe, ye, ze, bx, by, bz, v)
       vol(1:n) = v(1:n)
    end subroutine hex8_volume
 
@@ -64,6 +74,8 @@ contains
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: f(:, :)
       type(block_result_t), intent(out) :: res
+      ! blocks built elsewhere than dx_model_build (tests, restart) may lack it
+      if (.not. allocated(blk%ework)) allocate(blk%ework(blk%nel, 4), source=0.0_wp)
       select case (blk%nip)
       case (1)
          call hex8_1pt(blk, mat, part, x, v, dt_old, f, res)
@@ -99,166 +111,159 @@ contains
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: f(:, :)
       type(block_result_t), intent(out) :: res
-      real(wp), dimension(blk%nel, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
-      real(wp), dimension(blk%nel) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive, ah
-      real(wp) :: deps(blk%nel, 6), sold(blk%nel, 6), l(3, 3), hx(4), hy(4), hz(4), qx(4), qy(4), qz(4)
-      real(wp) :: g(4, 8), rho, dtl, rvm, a, kh, bb, hgsum, ein_sum, ehg_sum
-      integer :: ierr(blk%nel)
-      logical :: failed(blk%nel)
-      integer :: i, k, n, nn, ihq
+      ! work arrays have the compile-time leading dimension nv_chunk, so that loops that touch
+      ! several columns of one array vectorize; deps is (nel, 6) as the material expects
+      real(wp), dimension(nv_chunk, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
+      real(wp), dimension(nv_chunk) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive
+      real(wp), dimension(nv_chunk) :: bv, vold, lcb, wo, wn, de, e1, e2, e3, e4
+      real(wp) :: lg(nv_chunk, 9), de6(nv_chunk, 6), so(nv_chunk, 6), sn(nv_chunk, 6)
+      real(wp) :: deps(blk%nel, 6)
+      real(wp) :: dtl, hdt, d1, d2, d3, d4, d5, d6, l1, l2, l3, l4, l5, l6, l7, l8, l9
+      integer :: ierr(nv_chunk)
+      logical :: failed(nv_chunk)
+      integer :: i, k, n, nn
       n = blk%nel
-      ihq = part%ihq
-      ! ---- gather
+      ! ---- gather, and the mid-step geometry x(n-1/2) = x(n) - dt/2 v(n-1/2) of the strain
+      ! increment and spin
+      hdt = 0.5_wp*dt_old
       do k = 1, 8
          do i = 1, n
             nn = blk%conn(k, i)
             xe(i, k) = x(1, nn); ye(i, k) = x(2, nn); ze(i, k) = x(3, nn)
             vx(i, k) = v(1, nn); vy(i, k) = v(2, nn); vz(i, k) = v(3, nn)
+            xm(i, k) = xe(i, k) - hdt*vx(i, k)
+            ym(i, k) = ye(i, k) - hdt*vy(i, k)
+            zm(i, k) = ze(i, k) - hdt*vz(i, k)
          end do
       end do
-      ! ---- mid-step geometry x(n-1/2) = x(n) - dt/2 v(n-1/2): strain increment and spin
-      do k = 1, 8
-         do i = 1, n
-            xm(i, k) = xe(i, k) - 0.5_wp*dt_old*vx(i, k)
-            ym(i, k) = ye(i, k) - 0.5_wp*dt_old*vy(i, k)
-            zm(i, k) = ze(i, k) - 0.5_wp*dt_old*vz(i, k)
-         end do
-      end do
-      call hex8_bvectors(n, n, xm, ym, zm, bx, by, bz, volm)
-      ierr = 0
+      call hex8_bvectors_chunk(n, xm, ym, zm, bx, by, bz, volm)
+      ! velocity gradient times V, L_ij V = v_iI B_jI (mid-step B)
       do i = 1, n
+         l1 = 0.0_wp; l2 = 0.0_wp; l3 = 0.0_wp; l4 = 0.0_wp; l5 = 0.0_wp
+         l6 = 0.0_wp; l7 = 0.0_wp; l8 = 0.0_wp; l9 = 0.0_wp
+         !GCC$ unroll 8
+         do k = 1, 8
+            l1 = l1 + vx(i, k)*bx(i, k)
+            l2 = l2 + vy(i, k)*by(i, k)
+            l3 = l3 + vz(i, k)*bz(i, k)
+            l4 = l4 + vx(i, k)*by(i, k)
+            l5 = l5 + vy(i, k)*bx(i, k)
+            l6 = l6 + vy(i, k)*bz(i, k)
+            l7 = l7 + vz(i, k)*by(i, k)
+            l8 = l8 + vz(i, k)*bx(i, k)
+            l9 = l9 + vx(i, k)*bz(i, k)
+         end do
+         lg(i, 1) = l1; lg(i, 2) = l2; lg(i, 3) = l3; lg(i, 4) = l4; lg(i, 5) = l5
+         lg(i, 6) = l6; lg(i, 7) = l7; lg(i, 8) = l8; lg(i, 9) = l9
+      end do
+      do i = 1, n
+         ierr(i) = 0
          if (.not. (volm(i) > 0.0_wp)) ierr(i) = HEX_ERR_NEGVOL
          if (.not. (volm(i) > 0.0_wp)) volm(i) = 1.0_wp
          alive(i) = merge(0.0_wp, 1.0_wp, blk%failed(i))
-      end do
-      do i = 1, n
-         l = 0.0_wp
-         do k = 1, 8
-            l(1, 1) = l(1, 1) + vx(i, k)*bx(i, k)
-            l(1, 2) = l(1, 2) + vx(i, k)*by(i, k)
-            l(1, 3) = l(1, 3) + vx(i, k)*bz(i, k)
-            l(2, 1) = l(2, 1) + vy(i, k)*bx(i, k)
-            l(2, 2) = l(2, 2) + vy(i, k)*by(i, k)
-            l(2, 3) = l(2, 3) + vy(i, k)*bz(i, k)
-            l(3, 1) = l(3, 1) + vz(i, k)*bx(i, k)
-            l(3, 2) = l(3, 2) + vz(i, k)*by(i, k)
-            l(3, 3) = l(3, 3) + vz(i, k)*bz(i, k)
-         end do
          dtl = dt_old/volm(i)
-         deps(i, 1) = l(1, 1)*dtl
-         deps(i, 2) = l(2, 2)*dtl
-         deps(i, 3) = l(3, 3)*dtl
-         deps(i, 4) = 0.5_wp*(l(1, 2) + l(2, 1))*dtl
-         deps(i, 5) = 0.5_wp*(l(2, 3) + l(3, 2))*dtl
-         deps(i, 6) = 0.5_wp*(l(3, 1) + l(1, 3))*dtl
-         w12(i) = 0.5_wp*(l(1, 2) - l(2, 1))*dtl
-         w23(i) = 0.5_wp*(l(2, 3) - l(3, 2))*dtl
-         w31(i) = 0.5_wp*(l(3, 1) - l(1, 3))*dtl
-         trd(i) = (l(1, 1) + l(2, 2) + l(3, 3))/volm(i)
+         de6(i, 1) = lg(i, 1)*dtl
+         de6(i, 2) = lg(i, 2)*dtl
+         de6(i, 3) = lg(i, 3)*dtl
+         de6(i, 4) = 0.5_wp*(lg(i, 4) + lg(i, 5))*dtl
+         de6(i, 5) = 0.5_wp*(lg(i, 6) + lg(i, 7))*dtl
+         de6(i, 6) = 0.5_wp*(lg(i, 8) + lg(i, 9))*dtl
+         w12(i) = 0.5_wp*(lg(i, 4) - lg(i, 5))*dtl
+         w23(i) = 0.5_wp*(lg(i, 6) - lg(i, 7))*dtl
+         w31(i) = 0.5_wp*(lg(i, 8) - lg(i, 9))*dtl
+         trd(i) = (lg(i, 1) + lg(i, 2) + lg(i, 3))/volm(i)
       end do
-      ! ---- geometry at t(n): forces, volume, time step
-      call hex8_bvectors(n, n, xe, ye, ze, bx, by, bz, vol)
+      do k = 1, 6
+         deps(1:n, k) = de6(1:n, k)
+      end do
+      ! ---- geometry at t(n): forces, volume, time step; B(n).v(n-1/2) for the viscous work
+      call hex8_bvectors_chunk(n, xe, ye, ze, bx, by, bz, vol)
       do i = 1, n
+         l1 = 0.0_wp
+         !GCC$ unroll 8
+         do k = 1, 8
+            l1 = l1 + bx(i, k)*vx(i, k) + by(i, k)*vy(i, k) + bz(i, k)*vz(i, k)
+         end do
+         bv(i) = l1
+      end do
+      do i = 1, n
+         vold(i) = blk%vol0(i)*blk%relvol(i)
          if (.not. (vol(i) > 0.0_wp)) ierr(i) = HEX_ERR_NEGVOL
          if (.not. (vol(i) > 0.0_wp)) vol(i) = 1.0_wp
          rv(i) = vol(i)/blk%vol0(i)
          blk%relvol(i) = rv(i)
          ein(i) = blk%eint(i)/blk%vol0(i)
+         lcb(i) = vol(i)**(1.0_wp/3.0_wp)
       end do
-      ! ---- stress: rotate, update
-      call jaumann(n, n, w12, w23, w31, blk%sig(:, :, 1))
-      sold(1:n, :) = blk%sig(1:n, :, 1)
+      ! ---- stress: Jaumann rotation by the spin increment (first order), then the material
+      do k = 1, 6
+         so(1:n, k) = blk%sig(1:n, k, 1)
+      end do
+      do i = 1, n
+         d1 = 2.0_wp*(w12(i)*so(i,4) - w31(i)*so(i,6))
+         d2 = 2.0_wp*(w23(i)*so(i,5) - w12(i)*so(i,4))
+         d3 = 2.0_wp*(w31(i)*so(i,6) - w23(i)*so(i,5))
+         d4 = w12(i)*(so(i,2) - so(i,1)) + w23(i)*so(i,6) - w31(i)*so(i,5)
+         d5 = w23(i)*(so(i,3) - so(i,2)) + w31(i)*so(i,4) - w12(i)*so(i,6)
+         d6 = w31(i)*(so(i,1) - so(i,3)) + w12(i)*so(i,5) - w23(i)*so(i,4)
+         so(i,1) = so(i,1) + d1; so(i,2) = so(i,2) + d2; so(i,3) = so(i,3) + d3
+         so(i,4) = so(i,4) + d4; so(i,5) = so(i,5) + d5; so(i,6) = so(i,6) + d6
+      end do
+      do k = 1, 6
+         blk%sig(1:n, k, 1) = so(1:n, k)
+      end do
       call mat%update(n, dt_old, deps, rv, ein, blk%sig(:, :, 1), blk%hv(:, :, 1), ierr)
       call mat%fails(n, blk%hv(:, :, 1), failed)
       call mat%wave_speed(n, rv, blk%hv(:, :, 1), c)
-      ! ---- bulk viscosity and energies
-      ein_sum = 0.0_wp
+      ! ---- erosion (an eroded element keeps zero stress and carries no force; the work of
+      ! its last step still counts)
       do i = 1, n
-         rho = mat%ro/rv(i)
-         q(i) = bulk_viscosity(part, rho, vol(i), trd(i), c(i))
-         rvm = 0.5_wp*volm(i)
-         a = rvm*((sold(i,1) + blk%sig(i,1,1))*deps(i,1) + (sold(i,2) + blk%sig(i,2,1))*deps(i,2) &
-             + (sold(i,3) + blk%sig(i,3,1))*deps(i,3) + 2.0_wp*((sold(i,4) + blk%sig(i,4,1)) &
-             *deps(i,4) + (sold(i,5) + blk%sig(i,5,1))*deps(i,5) + (sold(i,6) + blk%sig(i,6,1)) &
-             *deps(i,6))) - q(i)*trd(i)*dt_old*volm(i)
-         a = a*alive(i)
-         blk%eint(i) = blk%eint(i) + a
-         ein_sum = ein_sum + a
+         if (failed(i) .and. .not. blk%failed(i)) blk%failed(i) = .true.
       end do
-      res%deint = ein_sum
-      ! ---- erosion
+      do k = 1, 6
+         do i = 1, n
+            sn(i, k) = blk%sig(i, k, 1)
+            if (blk%failed(i)) blk%sig(i, k, 1) = 0.0_wp
+         end do
+      end do
+      ! ---- bulk viscosity and the centred work of stress and viscosity
       do i = 1, n
-         if (failed(i) .and. .not. blk%failed(i)) then
-            blk%failed(i) = .true.
-            alive(i) = 0.0_wp
-         end if
-         if (blk%failed(i)) blk%sig(i, :, 1) = 0.0_wp
+         q(i) = bulk_viscosity(part, mat%ro/rv(i), lcb(i), trd(i), c(i))
+         wo(i) = volm(i)*(so(i,1)*de6(i,1) + so(i,2)*de6(i,2) + so(i,3)*de6(i,3) &
+                 + 2.0_wp*(so(i,4)*de6(i,4) + so(i,5)*de6(i,5) + so(i,6)*de6(i,6)))
+         wn(i) = volm(i)*(sn(i,1)*de6(i,1) + sn(i,2)*de6(i,2) + sn(i,3)*de6(i,3) &
+                 + 2.0_wp*(sn(i,4)*de6(i,4) + sn(i,5)*de6(i,5) + sn(i,6)*de6(i,6)))
+      end do
+      e1(1:n) = blk%ework(1:n, 1); e2(1:n) = blk%ework(1:n, 2)
+      e3(1:n) = blk%ework(1:n, 3); e4(1:n) = blk%ework(1:n, 4)
+      do i = 1, n
+         call centred_work(e1(i), e2(i), e3(i), e4(i), dt_old, wo(i), wn(i), q(i), vol(i), &
+                           vold(i), bv(i), trd(i)*volm(i), de(i))
+      end do
+      blk%ework(1:n, 1) = e1(1:n); blk%ework(1:n, 2) = e2(1:n)
+      blk%ework(1:n, 3) = e3(1:n); blk%ework(1:n, 4) = e4(1:n)
+      res%deint = 0.0_wp
+      res%pend = 0.0_wp
+      do i = 1, n
+         de(i) = de(i)*alive(i)
+         blk%eint(i) = blk%eint(i) + de(i)
+         res%deint = res%deint + de(i)
+         res%pend = res%pend + alive(i)*(e4(i) - e2(i))
+         if (blk%failed(i)) alive(i) = 0.0_wp
       end do
       ! ---- internal force f_iI = (sig_ij - q delta_ij) B_jI
       do k = 1, 8
          do i = 1, n
-            fx(i, k) = alive(i)*((blk%sig(i,1,1) - q(i))*bx(i,k) + blk%sig(i,4,1)*by(i,k) &
-                       + blk%sig(i,6,1)*bz(i,k))
-            fy(i, k) = alive(i)*(blk%sig(i,4,1)*bx(i,k) + (blk%sig(i,2,1) - q(i))*by(i,k) &
-                       + blk%sig(i,5,1)*bz(i,k))
-            fz(i, k) = alive(i)*(blk%sig(i,6,1)*bx(i,k) + blk%sig(i,5,1)*by(i,k) &
-                       + (blk%sig(i,3,1) - q(i))*bz(i,k))
+            fx(i, k) = alive(i)*((sn(i,1) - q(i))*bx(i,k) + sn(i,4)*by(i,k) + sn(i,6)*bz(i,k))
+            fy(i, k) = alive(i)*(sn(i,4)*bx(i,k) + (sn(i,2) - q(i))*by(i,k) + sn(i,5)*bz(i,k))
+            fz(i, k) = alive(i)*(sn(i,6)*bx(i,k) + sn(i,5)*by(i,k) + (sn(i,3) - q(i))*bz(i,k))
          end do
       end do
       ! ---- hourglass control
-      ehg_sum = 0.0_wp
-      if (part%qh > 0.0_wp) then
-         do i = 1, n
-            rho = mat%ro/rv(i)
-            ah(i) = part%qh*rho*c(i)*vol(i)**(2.0_wp/3.0_wp)/4.0_wp
-         end do
-         do i = 1, n
-            ! hourglass shape vectors: Gamma (IHQ 1) or FB gamma (IHQ 2-5)
-            if (ihq == 1) then
-               g = GAMMA_HG
-            else
-               do k = 1, 4
-                  hx(k) = sum(GAMMA_HG(k, :)*xe(i, :))
-                  hy(k) = sum(GAMMA_HG(k, :)*ye(i, :))
-                  hz(k) = sum(GAMMA_HG(k, :)*ze(i, :))
-               end do
-               do k = 1, 8
-                  g(:, k) = GAMMA_HG(:, k) - (hx*bx(i, k) + hy*by(i, k) + hz*bz(i, k))/vol(i)
-               end do
-            end if
-            do k = 1, 4
-               qx(k) = sum(g(k, :)*vx(i, :))
-               qy(k) = sum(g(k, :)*vy(i, :))
-               qz(k) = sum(g(k, :)*vz(i, :))
-            end do
-            if (ihq >= 4) then
-               bb = sum(bx(i, :)**2 + by(i, :)**2 + bz(i, :)**2)
-               kh = part%qh*(mat%bulk + 4.0_wp*mat%shear/3.0_wp)*bb/(8.0_wp*vol(i))
-               do k = 1, 4
-                  ! corotate the stored resisting forces, then add the stiffness increment
-                  hx(k) = blk%hgs(i, 1, k) + w12(i)*blk%hgs(i, 2, k) - w31(i)*blk%hgs(i, 3, k)
-                  hy(k) = blk%hgs(i, 2, k) - w12(i)*blk%hgs(i, 1, k) + w23(i)*blk%hgs(i, 3, k)
-                  hz(k) = blk%hgs(i, 3, k) + w31(i)*blk%hgs(i, 1, k) - w23(i)*blk%hgs(i, 2, k)
-                  blk%hgs(i, 1, k) = hx(k) + kh*dt_old*qx(k)
-                  blk%hgs(i, 2, k) = hy(k) + kh*dt_old*qy(k)
-                  blk%hgs(i, 3, k) = hz(k) + kh*dt_old*qz(k)
-               end do
-               hx = blk%hgs(i, 1, :); hy = blk%hgs(i, 2, :); hz = blk%hgs(i, 3, :)
-            else
-               hx = ah(i)*qx; hy = ah(i)*qy; hz = ah(i)*qz
-            end if
-            hx = hx*alive(i); hy = hy*alive(i); hz = hz*alive(i)
-            hgsum = dt_old*sum(hx*qx + hy*qy + hz*qz)
-            blk%ehg(i) = blk%ehg(i) + hgsum
-            ehg_sum = ehg_sum + hgsum
-            do k = 1, 8
-               fx(i, k) = fx(i, k) + sum(hx*g(:, k))
-               fy(i, k) = fy(i, k) + sum(hy*g(:, k))
-               fz(i, k) = fz(i, k) + sum(hz*g(:, k))
-            end do
-         end do
-      end if
-      res%dehg = ehg_sum
+      res%dehg = 0.0_wp
+      if (part%qh > 0.0_wp) call hourglass(blk, mat, part, n, dt_old, xe, ye, ze, vx, vy, vz, &
+                                           bx, by, bz, vol, lcb, rv, c, w12, w23, w31, &
+                                           alive, fx, fy, fz, res%dehg)
       ! ---- scatter (internal force is subtracted)
       do k = 1, 8
          do i = 1, n
@@ -269,33 +274,278 @@ contains
          end do
       end do
       ! ---- stable time step
-      call stable_time_step(blk, part, xe, ye, ze, vol, trd, c, res)
+      call stable_time_step(blk, part, xe, ye, ze, bx, by, bz, vol, trd, c, res)
       call first_error(n, ierr, res)
    end subroutine hex8_1pt
 
-   !> DYNA bulk viscosity q = rho*l*(Q1*l*e_kk**2 - Q2*c*e_kk) for e_kk < 0, l = V**(1/3).
-   pure real(wp) function bulk_viscosity(part, rho, vol, trd, c) result(q)
+   !> Hourglass forces of a block, added to fx, fy, fz; dehg = hourglass energy increment.
+   !> Shape vectors: Gamma (IHQ 1) or FB's gamma = Gamma - (Gamma.x_i) B_i / V (IHQ 2-5); modal
+   !> rates qdot_ia = gamma_aI v_iI; viscous forces a_h qdot (IHQ 1-3) or corotated stiffness
+   !> forces Q += k_h dt qdot (IHQ 4,5); f_iI += Q_ia gamma_aI. Every loop runs over the
+   !> elements of the block (unit stride), so it vectorizes.
+   subroutine hourglass(blk, mat, part, n, dt, xe, ye, ze, vx, vy, vz, bx, by, bz, vol, lcb, rv, &
+                        c, w12, w23, w31, alive, fx, fy, fz, dehg)
+      type(elem_block_t), intent(inout) :: blk
+      class(material_t), intent(in) :: mat
       type(part_t), intent(in) :: part
-      real(wp), intent(in) :: rho, vol, trd, c
-      real(wp) :: l
-      q = 0.0_wp
-      if (trd < 0.0_wp) then
-         l = vol**(1.0_wp/3.0_wp)
-         q = rho*l*(part%q1*l*trd**2 - part%q2*c*trd)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: dt
+      real(wp), dimension(nv_chunk, 8), intent(in) :: xe, ye, ze, vx, vy, vz, bx, by, bz
+      real(wp), dimension(nv_chunk), intent(in) :: vol, lcb, rv, c, w12, w23, w31, alive
+      real(wp), dimension(nv_chunk, 8), intent(inout) :: fx, fy, fz
+      real(wp), intent(out) :: dehg
+      real(wp), dimension(nv_chunk, 4) :: qx, qy, qz, hx, hy, hz
+      real(wp) :: g(nv_chunk, 4, 8), ax, ay, az, rvol, coef(nv_chunk), e(nv_chunk), m, kx, ky, kz
+      integer :: i, a, k
+      if (part%ihq == 1) then
+         ! DYNA's viscous form on the constant base vectors Gamma (unrolled: +-1 constants)
+         call hourglass_gamma_viscous(blk, mat, part, n, dt, vx, vy, vz, lcb, rv, c, alive, &
+                                      fx, fy, fz, dehg)
+         return
       end if
+      ! shape vectors
+      if (.false.) then
+      else
+         do k = 1, 4
+            do i = 1, n
+               ax = 0.0_wp; ay = 0.0_wp; az = 0.0_wp
+               do a = 1, 8
+                  ax = ax + GAMMA_HG(k, a)*xe(i, a)
+                  ay = ay + GAMMA_HG(k, a)*ye(i, a)
+                  az = az + GAMMA_HG(k, a)*ze(i, a)
+               end do
+               rvol = 1.0_wp/vol(i)
+               hx(i, k) = ax*rvol; hy(i, k) = ay*rvol; hz(i, k) = az*rvol
+            end do
+         end do
+         do a = 1, 8
+            do k = 1, 4
+               do i = 1, n
+                  g(i, k, a) = GAMMA_HG(k, a) - (hx(i, k)*bx(i, a) + hy(i, k)*by(i, a) &
+                               + hz(i, k)*bz(i, a))
+               end do
+            end do
+         end do
+      end if
+      ! modal rates
+      qx(1:n, :) = 0.0_wp; qy(1:n, :) = 0.0_wp; qz(1:n, :) = 0.0_wp
+      do a = 1, 8
+         do k = 1, 4
+            do i = 1, n
+               qx(i, k) = qx(i, k) + g(i, k, a)*vx(i, a)
+               qy(i, k) = qy(i, k) + g(i, k, a)*vy(i, a)
+               qz(i, k) = qz(i, k) + g(i, k, a)*vz(i, a)
+            end do
+         end do
+      end do
+      if (part%ihq >= 4) then
+         m = part%qh*(mat%bulk + 4.0_wp*mat%shear/3.0_wp)/24.0_wp
+         do i = 1, n
+            coef(i) = 0.0_wp
+            do a = 1, 8
+               coef(i) = coef(i) + bx(i, a)**2 + by(i, a)**2 + bz(i, a)**2
+            end do
+            coef(i) = m*coef(i)/vol(i)*dt
+            e(i) = 0.0_wp
+         end do
+         do k = 1, 4
+            do i = 1, n
+               ! corotate the stored resisting forces, then add the stiffness increment; the
+               ! energy is the trapezoid of the old and new force (exact spring energy)
+               kx = blk%hgs(i, 1, k) + w12(i)*blk%hgs(i, 2, k) - w31(i)*blk%hgs(i, 3, k)
+               ky = blk%hgs(i, 2, k) - w12(i)*blk%hgs(i, 1, k) + w23(i)*blk%hgs(i, 3, k)
+               kz = blk%hgs(i, 3, k) + w31(i)*blk%hgs(i, 1, k) - w23(i)*blk%hgs(i, 2, k)
+               hx(i, k) = kx + coef(i)*qx(i, k)
+               hy(i, k) = ky + coef(i)*qy(i, k)
+               hz(i, k) = kz + coef(i)*qz(i, k)
+               blk%hgs(i, 1, k) = hx(i, k); blk%hgs(i, 2, k) = hy(i, k)
+               blk%hgs(i, 3, k) = hz(i, k)
+               e(i) = e(i) + 0.5_wp*dt*((kx + hx(i, k))*qx(i, k) + (ky + hy(i, k))*qy(i, k) &
+                      + (kz + hz(i, k))*qz(i, k))
+            end do
+         end do
+      else
+         do i = 1, n
+            ! a_h = QH rho c V**(2/3)/4, lcb = V**(1/3)
+            coef(i) = 0.25_wp*part%qh*(mat%ro/rv(i))*c(i)*lcb(i)*lcb(i)
+            e(i) = 0.0_wp
+         end do
+         do k = 1, 4
+            do i = 1, n
+               hx(i, k) = coef(i)*qx(i, k)
+               hy(i, k) = coef(i)*qy(i, k)
+               hz(i, k) = coef(i)*qz(i, k)
+               e(i) = e(i) + dt*(hx(i, k)*qx(i, k) + hy(i, k)*qy(i, k) + hz(i, k)*qz(i, k))
+            end do
+         end do
+      end if
+      dehg = 0.0_wp
+      do i = 1, n
+         e(i) = e(i)*alive(i)
+         blk%ehg(i) = blk%ehg(i) + e(i)
+         dehg = dehg + e(i)
+      end do
+      do a = 1, 8
+         do k = 1, 4
+            do i = 1, n
+               fx(i, a) = fx(i, a) + alive(i)*hx(i, k)*g(i, k, a)
+               fy(i, a) = fy(i, a) + alive(i)*hy(i, k)*g(i, k, a)
+               fz(i, a) = fz(i, a) + alive(i)*hz(i, k)*g(i, k, a)
+            end do
+         end do
+      end do
+   end subroutine hourglass
+
+   !> IHQ 1: f_iI += a_h qdot_ia Gamma_aI with qdot_ia = Gamma_aJ v_iJ, Gamma the +-1 base
+   !> vectors (Kosloff & Frasier 1978; DYNA3D), a_h = QH rho c V**(2/3)/4.
+   subroutine hourglass_gamma_viscous(blk, mat, part, n, dt, vx, vy, vz, lcb, rv, c, alive, &
+                                      fx, fy, fz, dehg)
+      type(elem_block_t), intent(inout) :: blk
+      class(material_t), intent(in) :: mat
+      type(part_t), intent(in) :: part
+      integer, intent(in) :: n
+      real(wp), intent(in) :: dt
+      real(wp), dimension(nv_chunk, 8), intent(in) :: vx, vy, vz
+      real(wp), dimension(nv_chunk), intent(in) :: lcb, rv, c, alive
+      real(wp), dimension(nv_chunk, 8), intent(inout) :: fx, fy, fz
+      real(wp), intent(out) :: dehg
+      real(wp) :: ah, qx(4), qy(4), qz(4), e
+      integer :: i, a, k
+      dehg = 0.0_wp
+      do i = 1, n
+         ah = 0.25_wp*part%qh*(mat%ro/rv(i))*c(i)*lcb(i)*lcb(i)*alive(i)
+         !GCC$ unroll 4
+         do k = 1, 4
+            qx(k) = 0.0_wp; qy(k) = 0.0_wp; qz(k) = 0.0_wp
+            !GCC$ unroll 8
+            do a = 1, 8
+               qx(k) = qx(k) + GAMMA_HG(k, a)*vx(i, a)
+               qy(k) = qy(k) + GAMMA_HG(k, a)*vy(i, a)
+               qz(k) = qz(k) + GAMMA_HG(k, a)*vz(i, a)
+            end do
+         end do
+         e = ah*dt*sum(qx*qx + qy*qy + qz*qz)
+         blk%ehg(i) = blk%ehg(i) + e
+         dehg = dehg + e
+         !GCC$ unroll 8
+         do a = 1, 8
+            fx(i, a) = fx(i, a) + ah*(GAMMA_HG(1, a)*qx(1) + GAMMA_HG(2, a)*qx(2) &
+                       + GAMMA_HG(3, a)*qx(3) + GAMMA_HG(4, a)*qx(4))
+            fy(i, a) = fy(i, a) + ah*(GAMMA_HG(1, a)*qy(1) + GAMMA_HG(2, a)*qy(2) &
+                       + GAMMA_HG(3, a)*qy(3) + GAMMA_HG(4, a)*qy(4))
+            fz(i, a) = fz(i, a) + ah*(GAMMA_HG(1, a)*qz(1) + GAMMA_HG(2, a)*qz(2) &
+                       + GAMMA_HG(3, a)*qz(3) + GAMMA_HG(4, a)*qz(4))
+         end do
+      end do
+   end subroutine hourglass_gamma_viscous
+
+   !> DYNA bulk viscosity q = rho*l*(Q1*l*e_kk**2 - Q2*c*e_kk) for e_kk < 0, l = V**(1/3)
+   !> (computed by the caller in a vector loop).
+   pure real(wp) function bulk_viscosity(part, rho, l, trd, c) result(q)
+      type(part_t), intent(in) :: part
+      real(wp), intent(in) :: rho, l, trd, c
+      q = 0.0_wp
+      if (trd < 0.0_wp) q = rho*l*(part%q1*l*trd**2 - part%q2*c*trd)
    end function bulk_viscosity
 
+   !> Sum over the nodes of B_I . v_I for each element (the volume rate V*tr(D) for B at x).
+   pure subroutine bdotv(n, bx, by, bz, vx, vy, vz, bv)
+      integer, intent(in) :: n
+      real(wp), intent(in), dimension(:, :) :: bx, by, bz, vx, vy, vz
+      real(wp), intent(out) :: bv(:)
+      real(wp) :: l1
+      integer :: i, k
+      do i = 1, n
+         l1 = 0.0_wp
+         !GCC$ unroll 8
+         do k = 1, 8
+            l1 = l1 + bx(i, k)*vx(i, k) + by(i, k)*vy(i, k) + bz(i, k)*vz(i, k)
+         end do
+         bv(i) = l1
+      end do
+   end subroutine bdotv
+
+   !> Internal-energy increment de of one element at this pass: the work of its stress and
+   !> bulk-viscosity nodal forces f(n) in the central-difference balance, W(n) =
+   !> dtavg(n) f(n).(v(n-1/2) + v(n+1/2))/2, the exact partner of the centred kinetic energy
+   !> 1/2 m v(n-1/2).v(n+1/2) (dx_explicit) for any time-step sequence. W(n) is completed at
+   !> the next pass, when v(n+1/2) and dt(n+1/2) are known: the half with v(n-1/2) is booked
+   !> now with dt(n-1/2)/2 and corrected then to dtavg(n)/2. With a constant step this is the
+   !> trapezoid (sigma(n-1) + sigma(n)):D V dt. The stress power uses the mid-step D V
+   !> (wo, wn = dt sigma_old:D V, dt sigma_new:D V); the viscosity force q B(x(n)) uses
+   !> bvn = B(n).v(n-1/2) and B(n-1).v(n-1/2) from Simpson's rule, exact for the cubic V(x):
+   !> V(n) - V(n-1) = dt/6 (B(n-1) + 4 B(n-1/2) + B(n)).v(n-1/2), bvm = B(n-1/2).v(n-1/2).
+   !> s1..s4 = q, q bvn, dt, sigma:D V of the last pass (the element's ework row).
+   pure subroutine centred_work(s1, s2, s3, s4, dt, wo, wn, q, vol, vol_old, bvn, bvm, de)
+      real(wp), intent(inout) :: s1, s2, s3, s4
+      real(wp), intent(in) :: dt, wo, wn, q, vol, vol_old, bvn, bvm
+      real(wp), intent(out) :: de
+      real(wp) :: bvp, pn
+      de = 0.0_wp
+      pn = 0.0_wp
+      if (dt > 0.0_wp) then
+         bvp = 6.0_wp*(vol - vol_old)/dt - 4.0_wp*bvm - bvn
+         pn = wn/dt
+         de = 0.5_wp*(wo + wn) + 0.25_wp*(dt - s3)*(s4 - wo/dt) &
+              - (0.25_wp*(s3 + dt)*s1*bvp + 0.25_wp*(dt - s3)*s2 + 0.5_wp*dt*q*bvn)
+      end if
+      s1 = q
+      s2 = q*bvn
+      s3 = dt
+      s4 = pn
+   end subroutine centred_work
+
+   !> After the lumped masses are known: the element's own share of its nodes' mass,
+   !> phim = (1/8) sum_I (rho V0/8)/m_I (1 for a free element, 1/2 inside a one-element-wide
+   !> bar, 1/8 inside a mesh); a node with a constrained translation (SPC, prescribed motion:
+   !> the list cnodes) counts as restrained (share 0). Allocated only for a block that has an
+   !> element with phim >= 1/2, the only case stable_time_step uses it.
+   subroutine hex8_mass_share(blk, rho, mass, cnodes)
+      type(elem_block_t), intent(inout) :: blk
+      real(wp), intent(in) :: rho, mass(:)
+      integer, intent(in) :: cnodes(:)
+      real(wp) :: phi(blk%nel)
+      logical :: free(size(mass))
+      integer :: i, k, nd
+      free = .true.
+      free(cnodes) = .false.
+      do i = 1, blk%nel
+         phi(i) = 0.0_wp
+         do k = 1, 8
+            nd = blk%conn(k, i)
+            if (free(nd) .and. mass(nd) > 0.0_wp) &
+               phi(i) = phi(i) + rho*blk%vol0(i)/(64.0_wp*mass(nd))
+         end do
+      end do
+      if (allocated(blk%phim)) deallocate(blk%phim)
+      if (any(phi >= 0.5_wp)) blk%phim = phi
+   end subroutine hex8_mass_share
+
    !> Smallest element step L/(Q + sqrt(Q**2 + c**2)), L = V/A_max, Q = Q2*c + Q1*L*|e_kk|
-   !> (compression only); eroded elements do not count.
-   subroutine stable_time_step(blk, part, xe, ye, ze, vol, trd, c, res)
+   !> (compression only); eroded elements do not count. An element whose nodes carry mostly
+   !> its own mass (phim >= 1/2: a single element, a one-element-wide bar) has a dilatational
+   !> mode faster than c/L: a free unit cube's is sqrt(12 K/rho) (2.73 c for nu = 0.3, so
+   !> dt = 0.9 L/c is unstable). Its L is then also bounded by FB 1981's element bound
+   !> omega**2 <= 8 c**2 B_iI B_iI/V**2 with the nodal masses scaled by the element's own
+   !> share: L <= 2V/sqrt(8 phim B_iI B_iI) (0.577 for a free unit cube).
+   subroutine stable_time_step(blk, part, xe, ye, ze, bx, by, bz, vol, trd, c, res)
       type(elem_block_t), intent(in) :: blk
       type(part_t), intent(in) :: part
-      real(wp), intent(in) :: xe(:, :), ye(:, :), ze(:, :), vol(:), trd(:), c(:)
+      real(wp), intent(in), contiguous :: xe(:, :), ye(:, :), ze(:, :), vol(:)
+      real(wp), intent(in) :: bx(:, :), by(:, :), bz(:, :), trd(:), c(:)
       type(block_result_t), intent(inout) :: res
-      real(wp) :: lc(blk%nel), qb, trde
+      real(wp) :: lc(size(xe, 1)), qb, trde, bb
       integer :: i, n
       n = blk%nel
-      call hex8_char_length(n, n, xe, ye, ze, vol, lc)
+      call hex8_char_length(n, size(xe, 1), xe, ye, ze, vol, lc)
+      if (allocated(blk%phim)) then
+         do i = 1, n
+            if (blk%phim(i) >= 0.5_wp) then
+               bb = sum(bx(i, 1:8)**2 + by(i, 1:8)**2 + bz(i, 1:8)**2)
+               lc(i) = min(lc(i), 2.0_wp*vol(i)/sqrt(8.0_wp*blk%phim(i)*bb))
+            end if
+         end do
+      end if
       do i = 1, n
          qb = 0.0_wp
          if (trd(i) < 0.0_wp) qb = part%q2*c(i) + part%q1*lc(i)*abs(trd(i))
@@ -332,10 +582,11 @@ contains
       type(block_result_t), intent(out) :: res
       real(wp), dimension(blk%nel, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
       real(wp), dimension(blk%nel) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive, pbar
+      real(wp), dimension(blk%nel) :: bv, relv_old, wold, wnew, lcb
       real(wp) :: deps(blk%nel, 6), sold(blk%nel, 6), dn(3, 8, 8), dnx(3, 8), l(3, 3)
       real(wp) :: p8(8), q8(8), r8(8)
       real(wp), allocatable :: dng(:, :, :, :)
-      real(wp) :: jwg(8, blk%nel), wm(blk%nel), dtl, rho, a, trp, pm, ein_sum
+      real(wp) :: jwg(8, blk%nel), wm(blk%nel), dtl, rho, a, pend, trp, pm, ein_sum
       integer :: ierr(blk%nel)
       logical :: failed(blk%nel), fpt(blk%nel)
       integer :: i, k, n, nn, ip
@@ -355,7 +606,9 @@ contains
       ierr = 0
       call hex8_bvectors(n, n, xe, ye, ze, bx, by, bz, vol)
       call hex8_bvectors(n, n, xm, ym, zm, fx, fy, fz, volm)
+      call bdotv(n, bx, by, bz, vx, vy, vz, bv)
       do i = 1, n
+         relv_old(i) = blk%relvol(i)
          if (.not. (volm(i) > 0.0_wp .and. vol(i) > 0.0_wp)) then
             ierr(i) = HEX_ERR_NEGVOL; volm(i) = 1.0_wp; vol(i) = 1.0_wp
          end if
@@ -369,8 +622,10 @@ contains
          trd(i) = sum(vx(i, :)*fx(i, :) + vy(i, :)*fy(i, :) + vz(i, :)*fz(i, :))/volm(i)
       end do
       ein_sum = 0.0_wp
+      pend = 0.0_wp
       fx = 0.0_wp; fy = 0.0_wp; fz = 0.0_wp
       pbar = 0.0_wp
+      wold = 0.0_wp; wnew = 0.0_wp
       fpt = .false.
       ! geometry at t(n) per Gauss point for the forces
       do i = 1, n
@@ -405,13 +660,12 @@ contains
          call mat%fails(n, blk%hv(:, :, ip), failed)
          fpt = fpt .or. failed
          do i = 1, n
-            a = 0.5_wp*wm(i)*((sold(i,1) + blk%sig(i,1,ip))*deps(i,1) &
-                + (sold(i,2) + blk%sig(i,2,ip))*deps(i,2) + (sold(i,3) + blk%sig(i,3,ip))*deps(i,3) &
-                + 2.0_wp*((sold(i,4) + blk%sig(i,4,ip))*deps(i,4) &
-                + (sold(i,5) + blk%sig(i,5,ip))*deps(i,5) + (sold(i,6) + blk%sig(i,6,ip))*deps(i,6)))
-            a = a*alive(i)
-            blk%eint(i) = blk%eint(i) + a
-            ein_sum = ein_sum + a
+            wold(i) = wold(i) + wm(i)*(sold(i,1)*deps(i,1) + sold(i,2)*deps(i,2) &
+                      + sold(i,3)*deps(i,3) + 2.0_wp*(sold(i,4)*deps(i,4) &
+                      + sold(i,5)*deps(i,5) + sold(i,6)*deps(i,6)))
+            wnew(i) = wnew(i) + wm(i)*(blk%sig(i,1,ip)*deps(i,1) + blk%sig(i,2,ip)*deps(i,2) &
+                      + blk%sig(i,3,ip)*deps(i,3) + 2.0_wp*(blk%sig(i,4,ip)*deps(i,4) &
+                      + blk%sig(i,5,ip)*deps(i,5) + blk%sig(i,6,ip)*deps(i,6)))
             pm = (blk%sig(i,1,ip) + blk%sig(i,2,ip) + blk%sig(i,3,ip))/3.0_wp
             pbar(i) = pbar(i) + pm*jwg(ip, i)/vol(i)
             ! deviatoric part through the point gradients
@@ -428,11 +682,18 @@ contains
       call mat%wave_speed(n, rv, blk%hv(:, :, 1), c)
       ! bulk viscosity, mean pressure through the exact mean B, erosion
       do i = 1, n
+         lcb(i) = vol(i)**(1.0_wp/3.0_wp)
+      end do
+      do i = 1, n
          rho = mat%ro/rv(i)
-         q(i) = bulk_viscosity(part, rho, vol(i), trd(i), c(i))
-         a = -q(i)*trd(i)*dt_old*vol(i)*alive(i)
+         q(i) = bulk_viscosity(part, rho, lcb(i), trd(i), c(i))
+         call centred_work(blk%ework(i, 1), blk%ework(i, 2), blk%ework(i, 3), blk%ework(i, 4), &
+                           dt_old, wold(i), wnew(i), q(i), vol(i), blk%vol0(i)*relv_old(i), &
+                           bv(i), trd(i)*volm(i), a)
+         a = alive(i)*a
          blk%eint(i) = blk%eint(i) + a
          ein_sum = ein_sum + a
+         pend = pend + alive(i)*(blk%ework(i, 4) - blk%ework(i, 2))
          if (fpt(i)) blk%failed(i) = .true.
          if (blk%failed(i)) then
             alive(i) = 0.0_wp
@@ -440,6 +701,7 @@ contains
          end if
       end do
       res%deint = ein_sum
+      res%pend = pend
       do k = 1, 8
          do i = 1, n
             fx(i, k) = alive(i)*(fx(i, k) + (pbar(i) - q(i))*bx(i, k))
@@ -452,7 +714,7 @@ contains
          end do
       end do
       res%dehg = 0.0_wp
-      call stable_time_step(blk, part, xe, ye, ze, vol, trd, c, res)
+      call stable_time_step(blk, part, xe, ye, ze, bx, by, bz, vol, trd, c, res)
       call first_error(n, ierr, res)
    end subroutine hex8_sri
 

@@ -4,7 +4,7 @@
 !> next, taken at the top of a cycle, so a continued run repeats the uninterrupted run
 !> bit for bit: x, v, time, cycle, the loop state model%run (dt(n-1/2), the work sums, the
 !> next output times, the output-file sizes), the energies, every element block's state
-!> (sig, hv, relvol, eint, ehg, hgs, failed) and the rigid-wall forces. What the deck
+!> (sig, hv, relvol, eint, ehg, hgs, ework, failed) and the rigid-wall forces. What the deck
 !> defines (mesh, mass, materials, curves, loads) is rebuilt from the deck, as LS-DYNA's
 !> full-deck restart does (Keyword User's Manual Vol. I, "Restart Input Data").
 !> File layout and checksums: dx_restart_file. The list of datasets: docs/output-format.md.
@@ -194,6 +194,7 @@ contains
             call rs%put(p//'eint', blk%eint)
             call rs%put(p//'ehg', blk%ehg)
             if (allocated(blk%hgs)) call rs%put(p//'hgs', blk%hgs)
+            if (allocated(blk%ework)) call rs%put(p//'ework', blk%ework)
             call rs%put(p//'failed', blk%failed)
          end associate
       end do
@@ -221,6 +222,7 @@ contains
             call rs%get(p//'eint', blk%eint)
             call rs%get(p//'ehg', blk%ehg)
             if (allocated(blk%hgs)) call rs%get(p//'hgs', blk%hgs)
+            if (allocated(blk%ework)) call rs%get(p//'ework', blk%ework)
             call rs%get(p//'failed', blk%failed)
          end associate
       end do

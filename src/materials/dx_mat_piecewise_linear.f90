@@ -8,7 +8,9 @@
 !> VP = 0 scales the yield stress with the effective total (deviatoric) strain rate,
 !> R = 1 + (rate/C)**(1/P); VP = 1 is viscoplastic: sigma_y = h(eps_p) + SIGY*(rate_p/C)**(1/P)
 !> with the plastic strain rate of the step, solved in the same return.
-!> FAIL: effective plastic strain at which the element erodes. History: 1 = eff. plastic strain.
+!> FAIL: effective plastic strain at which the element erodes. History: 1 = eff. plastic strain,
+!> 2 = static yield stress h(eps_p) at that strain (a cache: 0 = not yet evaluated), so an
+!> elastic step costs no curve lookup and no square root.
 module dx_mat_piecewise_linear
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error
@@ -130,7 +132,7 @@ contains
 
    pure integer function pl_nhist(self)
       class(mat_piecewise_linear_t), intent(in) :: self
-      pl_nhist = 1
+      pl_nhist = 2
    end function pl_nhist
 
    !> Static yield stress h(eps_p) and its slope.
@@ -173,8 +175,11 @@ contains
          s(6) = sig(i, 6) + g2*deps(i, 6)
          p = p + 3.0_wp*k*dv
          s2 = s(1)**2 + s(2)**2 + s(3)**2 + 2.0_wp*(s(4)**2 + s(5)**2 + s(6)**2)
-         seff = sqrt(1.5_wp*s2)
-         call self%yield_static(hv(i, 1), h, dh)
+         h = hv(i, 2)
+         if (h <= 0.0_wp) then
+            call self%yield_static(hv(i, 1), h, dh)
+            hv(i, 2) = h
+         end if
          r = 1.0_wp
          if (self%vp == 0.0_wp .and. (self%c > 0.0_wp .or. self%has_rate_curve) .and. &
              dt > 0.0_wp) then
@@ -187,20 +192,74 @@ contains
                r = 1.0_wp + (rate/self%c)**(1.0_wp/self%p)
             end if
          end if
-         if (seff > r*h .or. (self%vp == 1.0_wp .and. seff > h)) then
-            dep = return_map(self, seff, hv(i, 1), r, dt)
+         ! elastic unless sqrt(3/2 s:s) exceeds the yield stress (compared squared)
+         if (1.5_wp*s2 > (r*h)**2 .or. (self%vp == 1.0_wp .and. 1.5_wp*s2 > h**2)) then
+            seff = sqrt(1.5_wp*s2)
+            if (self%vp == 1.0_wp .and. self%c > 0.0_wp .and. dt > 0.0_wp) then
+               dep = -1.0_wp
+            else
+               call return_map_linear(self, seff, hv(i, 1), r, dep, h)
+            end if
             if (dep < 0.0_wp) then
-               ierr(i) = 1
-               dep = 0.0_wp
+               dep = return_map(self, seff, hv(i, 1), r, dt)
+               if (dep < 0.0_wp) then
+                  ierr(i) = 1
+                  dep = 0.0_wp
+               end if
+               call self%yield_static(hv(i, 1) + dep, h, dh)
             end if
             scale = 1.0_wp - 3.0_wp*g*dep/seff
             s = s*scale
             hv(i, 1) = hv(i, 1) + dep
+            hv(i, 2) = h
          end if
          sig(i, 1:3) = s(1:3) + p
          sig(i, 4:6) = s(4:6)
       end do
    end subroutine pl_update
+
+   !> Rate-independent radial return on the piecewise-linear hardening curve, solved exactly:
+   !> on the segment k holding eps_p + dep, h(e) = y_k + s_k (e - x_k) and
+   !> seff - 3G dep = r h(eps_p + dep) is linear in dep; walk forward over the segment ends.
+   !> Returns dep and the new static yield stress h; dep = -1 when a segment softens faster
+   !> than 3G/r (the caller then uses the safeguarded Newton of return_map).
+   pure subroutine return_map_linear(self, seff, epsp, r, dep, h)
+      class(mat_piecewise_linear_t), intent(in) :: self
+      real(wp), intent(in) :: seff, epsp, r
+      real(wp), intent(out) :: dep, h
+      real(wp) :: sk, den
+      integer :: k, n
+      if (self%bilinear) then
+         den = 3.0_wp*self%shear + r*self%ep
+         dep = max(0.0_wp, (seff - r*(self%sigy + self%ep*epsp))/den)
+         h = self%sigy + self%ep*(epsp + dep)
+         return
+      end if
+      n = size(self%hard%x)
+      if (n == 1) then
+         dep = max(0.0_wp, (seff - r*self%hard%y(1))/(3.0_wp*self%shear))
+         h = self%hard%y(1)
+         return
+      end if
+      k = 1
+      do while (k < n - 1)
+         if (self%hard%x(k + 1) > epsp) exit
+         k = k + 1
+      end do
+      do
+         sk = (self%hard%y(k + 1) - self%hard%y(k))/(self%hard%x(k + 1) - self%hard%x(k))
+         den = 3.0_wp*self%shear + r*sk
+         if (.not. (den > 0.0_wp)) then
+            dep = -1.0_wp; h = 0.0_wp
+            return
+         end if
+         dep = max(0.0_wp, (seff - r*(self%hard%y(k) + sk*(epsp - self%hard%x(k))))/den)
+         if (k == n - 1) exit
+         if (epsp + dep <= self%hard%x(k + 1)) exit
+         k = k + 1
+      end do
+      h = self%hard%y(k) + sk*(epsp + dep - self%hard%x(k))
+   end subroutine return_map_linear
 
    !> Solve seff - 3G*dep = yield(eps_p + dep) for dep >= 0: safeguarded Newton on the
    !> piecewise-linear (or viscoplastic) yield function. Returns -1 if it fails.

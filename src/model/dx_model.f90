@@ -66,6 +66,8 @@ module dx_model
       real(wp), allocatable :: relvol(:)     !< (nel) current V/V0
       real(wp), allocatable :: eint(:)       !< (nel) internal energy (work of stress)
       real(wp), allocatable :: ehg(:)        !< (nel) hourglass energy
+      real(wp), allocatable :: ework(:, :)   !< (nel, 4) pending terms of the centred work (dx_hex8)
+      real(wp), allocatable :: phim(:)       !< (nel) own-mass share of one-element-wide blocks
       real(wp), allocatable :: hgs(:, :, :)  !< (nel, 3, 4) hourglass resisting forces (IHQ 4,5)
       logical, allocatable :: failed(:)      !< (nel) eroded elements carry no force
    end type elem_block_t

@@ -365,6 +365,7 @@ contains
                   b%relvol = 1.0_wp
                   b%eint = 0.0_wp
                   b%ehg = 0.0_wp
+                  allocate(b%ework(nel, 4), source=0.0_wp)
                   b%failed = .false.
                   if (p%ihq == 4 .or. p%ihq == 5) then
                      allocate(b%hgs(nel, 3, 4))

@@ -16,7 +16,7 @@ module dx_explicit
    use dx_timer, only: wall_time, peak_memory_kb
    use dx_model, only: model_t, elem_block_t
    use dx_run_state, only: run_state_t
-   use dx_hex8, only: hex8_block, hex8_volume, block_result_t, HEX_ERR_NEGVOL
+   use dx_hex8, only: hex8_block, hex8_volume, block_result_t, HEX_ERR_NEGVOL, hex8_mass_share
    use dx_loads, only: add_external_loads, has_external_loads
    use dx_constraints, only: apply_spc, apply_prescribed, apply_rigidwalls
    use dx_output, only: output_t
@@ -74,7 +74,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: vold(:, :), fext(:, :), vfree(:, :)
       integer, allocatable :: cnodes(:)
-      real(wp) :: dt, dtavg, dtcrit, t, t0wall, ke, eint, ehg, du(3), tend, wrig
+      real(wp) :: dt, dtavg, dtcrit, t, t0wall, ke, eint, ehg, du(3), tend, wrig, epend
       integer :: b, i, ibmin, iemin, nd
       logical :: loads, done, stopped
       type(block_result_t) :: res
@@ -88,6 +88,10 @@ contains
       if (loads) allocate(fext(3, model%nn))
       call constrained_nodes(model, cnodes)
       allocate(vfree(3, size(cnodes)))
+      do b = 1, size(model%blocks)   ! one-element-wide blocks get the element dt bound
+         call hex8_mass_share(model%blocks(b), &
+            model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%ro, model%mass, cnodes)
+      end do
       tend = model%ctrl%endtim
       if (tend <= 0.0_wp) tend = huge_wp
       if (.not. model%run%started) then
@@ -114,6 +118,7 @@ contains
          ! ---- internal forces (element pass) and the critical step
          model%f = 0.0_wp
          dtcrit = huge_wp; ibmin = 0; iemin = 0
+         epend = 0.0_wp
          do b = 1, size(model%blocks)
             if (model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%is_rigid) cycle
             associate (blk => model%blocks(b), part => model%parts(model%blocks(b)%ipart))
@@ -124,6 +129,7 @@ contains
                   call finish(model, out, ck, error)
                   return
                end if
+               epend = epend + res%pend
                if (res%dt < dtcrit) then
                   dtcrit = res%dt; ibmin = b; iemin = res%imin
                end if
@@ -207,6 +213,7 @@ contains
             eint = eint + sum(model%blocks(b)%eint)
             ehg = ehg + sum(model%blocks(b)%ehg)
          end do
+         eint = eint + 0.25_wp*(dt - dt_old)*epend   ! the part of W(n) booked next cycle
          model%dt = dt
          call set_energy(model, ke, eint, ehg, wext + wcon + wrig, -wrw)
          if (model%ctrl%endeng > 0.0_wp) call checkpoint_energy_band(ck, model, t)

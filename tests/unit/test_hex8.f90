@@ -123,6 +123,24 @@ program test_hex8
       call check_close(maxval(abs(blk%sig(1, :, 1))), 0.0_wp, 1.0e-12_wp, 0.0_wp, &
                        'hourglass mode carries no strain, ihq '//achar(48 + ihq))
    end do
+
+   ! ---- IHQ 4 stiffness on a unit cube, Flanagan & Belytschko (1981): after one step with
+   ! v = Gamma_1 in x, u = dt Gamma_1 and gamma.u = 8 dt; f = k (gamma.u) gamma with
+   ! k = QH (K + 4G/3) sum(B**2)/(24 V), sum(B**2) = 24/16 = 1.5; the stored energy is the
+   ! spring's k (gamma.u)**2/2 exactly (trapezoid of old and new force)
+   call make_cube()
+   part%ihq = 4
+   allocate(blk%hgs(1, 3, 4)); blk%hgs = 0.0_wp
+   do i = 1, 8
+      v(:, i) = [GAMMA_HG(1, i), 0.0_wp, 0.0_wp]
+   end do
+   f = 0.0_wp
+   w = part%qh*(mat%bulk + 4.0_wp*mat%shear/3.0_wp)*1.5_wp/24.0_wp
+   call hex8_block(blk, mat, part, x, v, 1.0e-7_wp, f, res)
+   call check_close(f(1, 1), -8.0_wp*w*1.0e-7_wp, 0.0_wp, 1.0e-12_wp, &
+                    'IHQ 4 force = FB stiffness QH (K+4G/3) sum(B^2)/(24V) (gamma.u) gamma')
+   call check_close(blk%ehg(1), 32.0_wp*w*1.0e-14_wp, 0.0_wp, 1.0e-12_wp, &
+                    'IHQ 4 energy = k (gamma.u)^2/2')
    call assert_summary()
 
 contains
