@@ -97,10 +97,12 @@ bench: deps
 	@$(MAKE) --no-print-directory all $(MPI_BENCH)
 	@sh scripts/bench.sh
 	@sh scripts/bench_shared_sum.sh
+	@sh scripts/bench_contact.sh
 
 studies: deps
 	@$(MAKE) --no-print-directory all
 	@sh scripts/studies.sh
+	@sh scripts/studies_contact.sh
 
 clean:
 	rm -rf build bin out

@@ -15,6 +15,8 @@ module dx_deck
    use dx_read_loads, only: register_loads
    use dx_read_curves, only: register_curves
    use dx_read_rigid, only: register_rigid
+   use dx_read_contact, only: register_contact
+   use dx_contact_build, only: build_contact
    use dx_model, only: model_t
    use dx_model_input, only: model_input_t, input_init
    use dx_model_build, only: build_model
@@ -34,6 +36,7 @@ contains
       call register_loads(reg)
       call register_curves(reg)
       call register_rigid(reg)
+      call register_contact(reg)
    end function new_registry
 
    !> Read the deck at path into model (x0, v0, blocks, parts, ...; the solver allocates
@@ -48,6 +51,7 @@ contains
       if (allocated(error)) return
       model%deck_file = path
       call build_model(inp, model, error)
+      if (.not. allocated(error)) call build_contact(inp, model, error)
    end subroutine read_deck
 
    !> Read the deck at path into the unresolved model input (no build).

@@ -14,10 +14,10 @@ module dx_thist
    public :: thist_file_t, GLSTAT_COLUMNS, NODOUT_COLUMNS
 
    character(*), parameter :: GLSTAT_COLUMNS = 'time cycle dt kinetic internal hourglass ' // &
-      'external_work rigidwall total energy_ratio xmom ymom zmom'
+      'external_work rigidwall total energy_ratio xmom ymom zmom sliding_interface'
    character(*), parameter :: NODOUT_COLUMNS = 'time node_id x_disp y_disp z_disp ' // &
       'x_vel y_vel z_vel x_acc y_acc z_acc x_coor y_coor z_coor'
-   character(*), parameter :: GLSTAT_FMT = '(es18.10e3, 1x, i10, 11(1x, es18.10e3))'
+   character(*), parameter :: GLSTAT_FMT = '(es18.10e3, 1x, i10, 12(1x, es18.10e3))'
    character(*), parameter :: NODOUT_FMT = '(es18.10e3, 1x, i10, 12(1x, es18.10e3))'
 
    !> One ASCII history file (newunit numbers are negative: a flag tells whether it is open).
@@ -73,13 +73,13 @@ contains
       class(thist_file_t), intent(inout) :: self
       type(model_t), intent(in) :: model
       type(error_t), allocatable, intent(out) :: error
-      character(260) :: line
+      character(280) :: line
       integer :: ios
       character(256) :: msg
       associate (en => model%energy)
          write(line, GLSTAT_FMT, iostat=ios, iomsg=msg) model%time, model%cycle, model%dt, &
             en%kinetic, en%internal, en%hourglass, en%external_work, en%rigidwall, &
-            en%total, en%ratio, en%momentum
+            en%total, en%ratio, en%momentum, en%sliding
       end associate
       if (ios /= 0) then
          call set_error(error, 'cannot format a glstat line: '//trim(msg), EXIT_IO)

@@ -8,6 +8,7 @@ module dx_model
    use dx_curve, only: curve_t
    use dx_rigid_types, only: rigid_system_t
    use dx_load_body, only: body_load_t
+   use dx_contact_types, only: contact_set_t
    implicit none
    private
    public :: model_t, elem_block_t, part_t, section_t, hourglass_t, node_set_t, part_set_t, &
@@ -162,9 +163,10 @@ module dx_model
       real(wp) :: hourglass = 0.0_wp
       real(wp) :: external_work = 0.0_wp
       real(wp) :: rigidwall = 0.0_wp    !< energy taken by rigid walls (positive = absorbed)
+      real(wp) :: sliding = 0.0_wp      !< sliding interface energy: -(work of contact forces)
       real(wp) :: total = 0.0_wp        !< kinetic + internal + hourglass
       real(wp) :: initial = 0.0_wp      !< total at t = 0
-      real(wp) :: ratio = 1.0_wp        !< (total + rigidwall) / (initial + external work)
+      real(wp) :: ratio = 1.0_wp        !< (total + rigidwall + sliding) / (initial + ext. work)
       real(wp) :: momentum(3) = 0.0_wp
       real(wp) :: mass = 0.0_wp
    end type energy_t
@@ -201,6 +203,7 @@ module dx_model
       type(rigidwall_t), allocatable :: walls(:)
       type(body_load_t), allocatable :: body_loads(:)   !< *LOAD_BODY_X/Y/Z (dx_load_body)
       type(rigid_system_t), allocatable :: rigid        !< rigid bodies (dx_rigid_types)
+      type(contact_set_t), allocatable :: contact   !< *CONTACT_* state (none: not allocated)
       ! --- controls and output
       type(control_t) :: ctrl
       type(database_t) :: db

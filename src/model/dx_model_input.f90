@@ -9,6 +9,7 @@ module dx_model_input
    use dx_curve, only: curve_t
    use dx_rigid_types, only: rigid_input_t
    use dx_load_body, only: body_load_in_t
+   use dx_contact_input, only: contact_input_t
    implicit none
    private
    public :: model_input_t, string_t, origin_t, label_list_t, segment_list_t, spc_in_t, &
@@ -146,6 +147,7 @@ module dx_model_input
       real(wp) :: glstat_dt = 0.0_wp, nodout_dt = 0.0_wp
       type(label_list_t), allocatable :: hist_nodes(:)      !< *DATABASE_HISTORY_NODE cards
       type(label_list_t), allocatable :: hist_node_sets(:)  !< *DATABASE_HISTORY_NODE_SET cards
+      type(contact_input_t) :: contact     !< *CONTACT_*, *CONTROL_CONTACT, *DATABASE_RCFORC
    end type model_input_t
 
 contains

@@ -20,6 +20,7 @@ module dx_explicit
    use dx_constraints, only: apply_spc, apply_prescribed, apply_rigidwalls
    use dx_output, only: output_t
    use dx_rigid_solver, only: rigid_step, rigid_write_rbdout, rigid_close
+   use dx_contact, only: contact_forces, contact_work
    implicit none
    private
    public :: run_options_t, init_state, run_explicit
@@ -114,6 +115,8 @@ contains
          end do
          if (ibmin > 0) model%dt_elem = model%blocks(ibmin)%elem(iemin)
          if (allocated(model%rigid) .and. ibmin == 0) dtcrit = model%rigid%dtcrit
+         ! ---- contact forces (only when the deck has *CONTACT)
+         if (allocated(model%contact)) call contact_forces(model, dt_old, dtcrit)
          ! ---- external forces
          if (loads) then
             fext = 0.0_wp
@@ -160,6 +163,12 @@ contains
             do i = 1, model%nn
                wext = wext + dot_product(fext(:, i), 0.5_wp*dtavg*(vold(:, i) + model%v(:, i)))
             end do
+         end if
+         if (allocated(model%contact)) then
+            call contact_work(model, vold, dtavg, opts%outdir, ioerr)
+            if (allocated(ioerr)) then
+               call move_alloc(ioerr, error); call finish(model, out, error); return
+            end if
          end if
          ! ---- energies at t(n)
          ke = 0.0_wp
@@ -267,7 +276,7 @@ contains
       model%energy%total = ke + eint + ehg
       den = model%energy%initial + wext
       if (abs(den) > 0.0_wp) then
-         model%energy%ratio = (model%energy%total + erw)/den
+         model%energy%ratio = (model%energy%total + erw + model%energy%sliding)/den
       else
          model%energy%ratio = 1.0_wp
       end if

@@ -1,0 +1,199 @@
+!> The contact stage of the explicit cycle (called only when the deck has *CONTACT):
+!>  contact_forces: after the element pass, before the velocity update: bucket sort when due
+!>    (every BSORT cycles, and whenever twice the largest nodal travel since the last sort
+!>    reaches the search margin), local search and penalty forces for every active interface
+!>    (BT <= t <= DT), added into model%f; the contact springs enter the critical step as
+!>    dt <= 1/sqrt(1/dt_e^2 + w_c^2/4), w_c^2 = max over nodes of the Gershgorin row sum of
+!>    the contact stiffness over the nodal mass (2k on a slave node, 2k N_i on a master node,
+!>    summed over its springs): an upper bound of the contact frequencies.
+!>  contact_work: after the velocity update: work of the contact forces with the centred
+!>    weighting of docs/design.md, W += f_c(n).dtavg(n)(v(n-1/2) + v(n+1/2))/2; the sliding
+!>    interface energy is -W (stored penalty energy plus friction dissipation); writes rcforc.
+!> Algorithms: dx_contact_search (bucket sort), dx_contact_penalty (forces).
+module dx_contact
+   use dx_kinds, only: wp
+   use dx_error, only: error_t, set_error, EXIT_IO
+   use dx_strings, only: str, rstr
+   use dx_log, only: log_info
+   use dx_timer, only: wall_time
+   use dx_model, only: model_t
+   use dx_contact_types, only: contact_set_t
+   use dx_contact_search, only: bucket_sort
+   use dx_contact_penalty, only: pass_forces
+   implicit none
+   private
+   public :: contact_forces, contact_work
+
+contains
+
+   !> Contact forces at x(n) into model%f; lowers dtcrit (element step) for stiff contact.
+   subroutine contact_forces(model, dt_old, dtcrit)
+      type(model_t), intent(inout) :: model
+      real(wp), intent(in) :: dt_old
+      real(wp), intent(inout) :: dtcrit
+      real(wp) :: vmax, t, t0, t1, w2max, dt_est, fsum(3), margin
+      integer :: i, j, k, nd
+      t0 = wall_time()
+      t = model%time
+      associate (cs => model%contact)
+         do i = 1, size(cs%node)
+            cs%fc(:, cs%node(i)) = 0.0_wp
+            cs%krow(cs%node(i)) = 0.0_wp
+         end do
+         vmax = 0.0_wp
+         do i = 1, size(cs%node)
+            vmax = max(vmax, norm2(model%v(:, cs%node(i))))
+         end do
+         dt_est = dt_old
+         if (dt_est <= 0.0_wp) dt_est = model%ctrl%tssfac*dtcrit
+         w2max = 0.0_wp
+         do i = 1, size(cs%iface)
+            associate (f => cs%iface(i))
+               f%fslave = 0.0_wp
+               f%fmaster = 0.0_wp
+               f%nactive = 0
+               if (t < f%bt .or. t > f%dt) then
+                  do j = 1, size(f%pass)
+                     f%pass(j)%iseg = 0
+                     f%pass(j)%ft = 0.0_wp
+                     f%pass(j)%gap = 0.0_wp
+                  end do
+                  cycle
+               end if
+               do j = 1, size(f%pass)
+                  associate (p => f%pass(j))
+                     p%moved = p%moved + vmax*dt_old
+                     if (model%cycle - p%last_sort >= f%bsort .or. &
+                         2.0_wp*p%moved >= p%margin) then
+                        t1 = wall_time()
+                        margin = 0.25_wp*mean_extent(p, model%x)
+                        margin = max(margin, 4.0_wp*vmax*dt_est)
+                        call bucket_sort(p, model%x, margin, model%mass)
+                        p%last_sort = model%cycle
+                        cs%t_search = cs%t_search + (wall_time() - t1)
+                     end if
+                     w2max = max(w2max, p%w2pot)
+                     fsum = 0.0_wp
+                     call pass_forces(f, p, model%x, model%v, model%mass, dt_old, dt_est, &
+                                      2.0_wp*vmax*dt_est, cs%fc, fsum, cs%krow, f%nactive)
+                     if (j == 1) then
+                        f%fslave = f%fslave + fsum
+                        f%fmaster = f%fmaster - fsum
+                     else
+                        f%fmaster = f%fmaster + fsum
+                        f%fslave = f%fslave - fsum
+                     end if
+                  end associate
+               end do
+            end associate
+         end do
+         do i = 1, size(cs%node)
+            nd = cs%node(i)
+            model%f(:, nd) = model%f(:, nd) + cs%fc(:, nd)
+            if (model%mass(nd) > 0.0_wp) w2max = max(w2max, cs%krow(nd)/model%mass(nd))
+         end do
+         cs%dt_limit = huge(1.0_wp)
+         if (w2max > 0.0_wp) then
+            cs%dt_limit = 1.0_wp/sqrt(1.0_wp/dtcrit**2 + w2max)
+            dtcrit = min(dtcrit, cs%dt_limit)
+         end if
+         cs%t_force = cs%t_force + (wall_time() - t0)
+      end associate
+      if (.false.) k = 0
+   end subroutine contact_forces
+
+   !> mean largest extent of the pass's segments
+   real(wp) function mean_extent(p, x) result(ext)
+      use dx_contact_types, only: contact_pass_t
+      type(contact_pass_t), intent(in) :: p
+      real(wp), intent(in) :: x(:, :)
+      integer :: s, n
+      ext = 0.0_wp
+      do s = 1, p%nseg
+         n = p%nsn(s)
+         ext = ext + maxval(maxval(x(:, p%seg(1:n, s)), dim=2) - minval(x(:, p%seg(1:n, s)), dim=2))
+      end do
+      ext = ext/real(max(1, p%nseg), wp)
+   end function mean_extent
+
+   !> Work of this cycle's contact forces (centred), sliding energy, rcforc output.
+   subroutine contact_work(model, vold, dtavg, outdir, error)
+      type(model_t), intent(inout) :: model
+      real(wp), intent(in) :: vold(:, :), dtavg
+      character(*), intent(in) :: outdir
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i, j, nd, ncand, nslave
+      real(wp) :: w, t
+      logical :: done
+      associate (cs => model%contact)
+         w = 0.0_wp
+         do i = 1, size(cs%node)
+            nd = cs%node(i)
+            w = w + dot_product(cs%fc(:, nd), vold(:, nd) + model%v(:, nd))
+         end do
+         cs%work = cs%work + 0.5_wp*dtavg*w
+         model%energy%sliding = -cs%work
+         t = model%time
+         done = (model%ctrl%endtim > 0.0_wp .and. t >= model%ctrl%endtim) .or. &
+                (model%ctrl%endcyc > 0 .and. model%cycle >= model%ctrl%endcyc)
+         if (cs%rcforc_dt > 0.0_wp .and. (t >= cs%next_rcforc .or. done)) then
+            call write_rcforc(cs, t, outdir, error)
+            if (allocated(error)) return
+            cs%next_rcforc = cs%next_rcforc + cs%rcforc_dt* &
+               real(max(1, ceiling((t - cs%next_rcforc)/cs%rcforc_dt + 1.0e-9_wp)), wp)
+         end if
+         if (done .and. .not. cs%finished) then
+            cs%finished = .true.
+            ncand = 0; nslave = 0
+            do i = 1, size(cs%iface)
+               do j = 1, size(cs%iface(i)%pass)
+                  ncand = ncand + size(cs%iface(i)%pass(j)%cand)
+                  nslave = nslave + cs%iface(i)%pass(j)%nnode
+               end do
+            end do
+            call log_info('dynx: contact: '//str(size(cs%iface))//' interface(s), '// &
+               str(size(cs%node))//' contact nodes, '//str(sum([(sum(cs%iface(i)%pass(:)%nsort), &
+               i = 1, size(cs%iface))]))//' bucket sorts, wall time search '// &
+               rstr(cs%t_search, 4)//' s, local search + forces '// &
+               rstr(cs%t_force - cs%t_search, 4)//' s, candidates per slave node '// &
+               rstr(real(ncand, wp)/real(max(1, nslave), wp), 4)//', sliding energy '// &
+               rstr(model%energy%sliding, 6))
+            if (cs%rcforc_open) close(cs%rcforc_unit)
+            cs%rcforc_open = .false.
+         end if
+      end associate
+   end subroutine contact_work
+
+   !> rcforc: one line per interface: time, id, resultant force on the slave side and on
+   !> the master side (x y z), slave nodes in contact.
+   subroutine write_rcforc(cs, t, outdir, error)
+      type(contact_set_t), intent(inout) :: cs
+      real(wp), intent(in) :: t
+      character(*), intent(in) :: outdir
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ios, i
+      character(256) :: msg
+      if (.not. cs%rcforc_open) then
+         open(newunit=cs%rcforc_unit, file=outdir//'/rcforc', status='replace', &
+              action='write', form='formatted', iostat=ios, iomsg=msg)
+         if (ios /= 0) then
+            call set_error(error, 'cannot open '//outdir//'/rcforc for writing: '//trim(msg), &
+                           EXIT_IO)
+            return
+         end if
+         cs%rcforc_open = .true.
+         write(cs%rcforc_unit, '(a)', iostat=ios) '# dynx rcforc', &
+            '# resultant contact forces per interface (slave side, master side)', &
+            '# time contact_id slave_x slave_y slave_z master_x master_y master_z nactive'
+      end if
+      do i = 1, size(cs%iface)
+         write(cs%rcforc_unit, '(es18.10e3, 1x, i10, 6(1x, es18.10e3), 1x, i10)', &
+               iostat=ios, iomsg=msg) t, cs%iface(i)%label, cs%iface(i)%fslave, &
+               cs%iface(i)%fmaster, cs%iface(i)%nactive
+         if (ios /= 0) exit
+      end do
+      if (ios == 0) flush(cs%rcforc_unit, iostat=ios, iomsg=msg)
+      if (ios /= 0) call set_error(error, 'cannot write '//outdir//'/rcforc: '//trim(msg), &
+                                   EXIT_IO)
+   end subroutine write_rcforc
+end module dx_contact

@@ -1,0 +1,615 @@
+!> Contact build: resolves the *CONTACT_... records (dx_contact_input) against the built model
+!> into contact_set_t (dx_contact_types): slave and master surfaces from segment sets, parts,
+!> part sets, node sets or all parts; exterior faces of solid parts (faces used by exactly one
+!> element of the surface's parts, outward by the hex node order); segment-set segments
+!> oriented outward by the element face they match; *DEFINE_BOX filters; the penalty stiffness
+!> of each segment k = SLSFAC*SF*K*A^2/V (LS-DYNA Theory Manual, "Standard penalty
+!> formulation"; Hallquist, Goudreau & Benson 1985, CMAME 51:107), K the bulk modulus and V the
+!> volume of the element owning the segment, A its area, SF = SFM for master segments and SFS
+!> for slave segments (second pass of a two-way contact, and single surface).
+!> Errors name the deck file, line, keyword and field (exit code 2).
+module dx_contact_build
+   use dx_kinds, only: wp
+   use dx_vec3, only: cross
+   use dx_error, only: error_t, set_error
+   use dx_strings, only: str
+   use dx_model, only: model_t
+   use dx_model_input, only: model_input_t
+   use dx_label_map, only: label_map_t
+   use dx_contact_input, only: contact_in_t, CT_NODES_TO_SURFACE, CT_SURFACE_TO_SURFACE, &
+                               CT_ONE_WAY, CT_SINGLE_SURFACE
+   use dx_contact_types, only: contact_set_t, contact_iface_t, contact_pass_t
+   implicit none
+   private
+   public :: build_contact, hex_faces
+
+   !> the six faces of a hex8 in LS-DYNA node order, each numbered so that the right-hand
+   !> rule gives the outward normal of a positive-volume element
+   integer, parameter :: hex_faces(4, 6) = reshape([1, 4, 3, 2,  5, 6, 7, 8,  1, 2, 6, 5, &
+                                                    2, 3, 7, 6,  3, 4, 8, 7,  4, 1, 5, 8], [4, 6])
+
+   !> a surface: segments with their owning elements
+   type :: surface_t
+      integer :: nseg = 0
+      integer, allocatable :: seg(:, :)     !< (4, nseg), a triangle repeats node 3
+      integer, allocatable :: nsn(:)
+      integer, allocatable :: elem(:)       !< owning element (dense)
+   end type surface_t
+
+contains
+
+   !> Build model%contact from inp%contact (nothing when the deck has no *CONTACT).
+   subroutine build_contact(inp, model, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(inout) :: model
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i, n
+      logical, allocatable :: used(:)
+      if (.not. allocated(inp%contact%contacts)) return
+      n = size(inp%contact%contacts)
+      if (n == 0) return
+      allocate(model%contact)
+      allocate(model%contact%iface(n))
+      do i = 1, n
+         call build_iface(inp, model, inp%contact%contacts(i), i, model%contact%iface(i), error)
+         if (allocated(error)) return
+      end do
+      allocate(used(model%nn))
+      used = .false.
+      do i = 1, n
+         associate (f => model%contact%iface(i))
+            do n = 1, size(f%pass)
+               used(f%pass(n)%node) = .true.
+               used(pack(f%pass(n)%seg, .true.)) = .true.
+            end do
+         end associate
+      end do
+      model%contact%node = pack([(i, i = 1, model%nn)], used)
+      allocate(model%contact%fc(3, model%nn), model%contact%krow(model%nn))
+      model%contact%fc = 0.0_wp
+      model%contact%krow = 0.0_wp
+      model%contact%rcforc_dt = inp%contact%rcforc_dt
+   end subroutine build_contact
+
+   function where(inp, c) result(s)
+      type(model_input_t), intent(in) :: inp
+      type(contact_in_t), intent(in) :: c
+      character(:), allocatable :: s
+      s = inp%files(c%ifile)%s//':'//str(c%line)//': *'//c%key//': '
+   end function where
+
+   subroutine build_iface(inp, model, c, idx, f, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(in) :: model
+      type(contact_in_t), intent(in) :: c
+      integer, intent(in) :: idx
+      type(contact_iface_t), intent(out) :: f
+      type(error_t), allocatable, intent(out) :: error
+      type(surface_t) :: ss, ms
+      integer, allocatable :: snodes(:), mnodes(:)
+      real(wp) :: slsfac
+      slsfac = inp%contact%slsfac
+      f%label = c%label
+      if (f%label == 0) f%label = idx
+      f%name = c%key
+      f%kind = c%kind
+      f%fs = c%fs; f%fd = c%fd; f%dc = c%dc; f%vc = c%vc; f%vdc = c%vdc
+      f%bt = c%bt; f%dt = c%dt; f%fsf = c%fsf; f%vsf = c%vsf
+      f%soft = c%soft; f%sofscl = c%sofscl; f%bsort = c%bsort
+      ! ---- slave side
+      if (c%sstyp == 4) then
+         call node_set_nodes(inp, model, c, c%ssid, 'SSID', snodes, error)
+         if (allocated(error)) return
+         call box_nodes(inp, model, c, c%sboxid, 'SBOXID', snodes, error)
+         if (allocated(error)) return
+      else
+         call side_surface(inp, model, c, c%ssid, c%sstyp, 'SSID', ss, error)
+         if (allocated(error)) return
+         call box_segments(inp, model, c, c%sboxid, 'SBOXID', ss, error)
+         if (allocated(error)) return
+         snodes = surface_nodes(model%nn, ss)
+      end if
+      if (size(snodes) == 0) then
+         call set_error(error, where(inp, c)//'field SSID: the slave side (set '// &
+                        str(c%ssid)//', type '//str(c%sstyp)//') has no nodes')
+         return
+      end if
+      if (c%kind == CT_SINGLE_SURFACE) then
+         allocate(f%pass(1))
+         call make_pass(model, snodes, ss, slsfac*c%sfs, .true., f%pass(1), ss)
+         return
+      end if
+      ! ---- master side
+      call side_surface(inp, model, c, c%msid, c%mstyp, 'MSID', ms, error)
+      if (allocated(error)) return
+      call box_segments(inp, model, c, c%mboxid, 'MBOXID', ms, error)
+      if (allocated(error)) return
+      if (ms%nseg == 0) then
+         call set_error(error, where(inp, c)//'field MSID: the master side (set '// &
+                        str(c%msid)//', type '//str(c%mstyp)//') has no segments')
+         return
+      end if
+      select case (c%kind)
+      case (CT_SURFACE_TO_SURFACE)
+         allocate(f%pass(2))
+         call make_pass(model, snodes, ms, slsfac*c%sfm, .false., f%pass(1), ss)
+         mnodes = surface_nodes(model%nn, ms)
+         call make_pass(model, mnodes, ss, slsfac*c%sfs, .false., f%pass(2), ms)
+      case (CT_NODES_TO_SURFACE, CT_ONE_WAY)
+         allocate(f%pass(1))
+         if (c%sstyp == 4) then
+            call make_pass(model, snodes, ms, slsfac*c%sfm, .false., f%pass(1))
+         else
+            call make_pass(model, snodes, ms, slsfac*c%sfm, .false., f%pass(1), ss)
+         end if
+      end select
+   end subroutine build_iface
+
+   !> the nodes of a surface, each once, in increasing order
+   function surface_nodes(nn, s) result(nodes)
+      integer, intent(in) :: nn
+      type(surface_t), intent(in) :: s
+      integer, allocatable :: nodes(:)
+      logical, allocatable :: used(:)
+      integer :: i, k
+      allocate(used(nn))
+      used = .false.
+      do i = 1, s%nseg
+         do k = 1, s%nsn(i)
+            used(s%seg(k, i)) = .true.
+         end do
+      end do
+      nodes = pack([(i, i = 1, nn)], used)
+   end function surface_nodes
+
+   !> One pass: slave nodes against the segments of s, stiffness scale sf (SLSFAC*SFx).
+   subroutine make_pass(model, nodes, s, sf, single, p, own)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: nodes(:)
+      type(surface_t), intent(in) :: s
+      real(wp), intent(in) :: sf
+      logical, intent(in) :: single
+      type(contact_pass_t), intent(out) :: p
+      type(surface_t), intent(in), optional :: own   !< the slave nodes' surface
+      integer :: i, e, b, q
+      real(wp) :: a, v, kb
+      p%nnode = size(nodes)
+      p%nseg = s%nseg
+      p%node = nodes
+      p%seg = s%seg(:, 1:s%nseg)
+      p%nsn = s%nsn(1:s%nseg)
+      p%exclude_owner = single
+      allocate(p%kseg(s%nseg), p%depth(s%nseg), p%area(s%nseg), p%owner(8, s%nseg))
+      do i = 1, s%nseg
+         e = s%elem(i)
+         b = model%elem_block(e)
+         q = model%elem_pos(e)
+         p%owner(:, i) = model%blocks(b)%conn(:, q)
+         v = model%blocks(b)%vol0(q)
+         kb = model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%bulk
+         a = seg_area(model%x0, s%seg(:, i), s%nsn(i))
+         p%area(i) = a
+         p%kseg(i) = sf*kb*a*a/v
+         p%depth(i) = 0.5_wp*v/a
+      end do
+      if (present(own)) then
+         p%nsseg = own%nseg
+         p%sseg = own%seg(:, 1:own%nseg)
+         p%ssn = own%nsn(1:own%nseg)
+         allocate(p%nloc(model%nn), p%nnrm(3, p%nnode))
+         p%nloc = 0
+         p%nloc(p%node) = [(i, i = 1, p%nnode)]
+         p%nnrm = 0.0_wp
+      end if
+      allocate(p%ft(3, p%nnode), p%iseg(p%nnode), p%gap(p%nnode))
+      p%ft = 0.0_wp
+      p%iseg = 0
+      p%gap = 0.0_wp
+      allocate(p%cand_ptr(p%nnode + 1), p%cand(0))
+      p%cand_ptr = 1
+   end subroutine make_pass
+
+   !> area of a 3- or 4-node segment (a quad: half the cross product of its diagonals)
+   pure real(wp) function seg_area(x, sg, nsn) result(a)
+      real(wp), intent(in) :: x(:, :)
+      integer, intent(in) :: sg(4), nsn
+      if (nsn == 4) then
+         a = 0.5_wp*norm2(cross(x(:, sg(3)) - x(:, sg(1)), x(:, sg(4)) - x(:, sg(2))))
+      else
+         a = 0.5_wp*norm2(cross(x(:, sg(2)) - x(:, sg(1)), x(:, sg(3)) - x(:, sg(1))))
+      end if
+   end function seg_area
+
+   !> The surface of one side: segment set (0), part set (2), part (3) or all parts (5).
+   subroutine side_surface(inp, model, c, id, typ, fname, s, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(in) :: model
+      type(contact_in_t), intent(in) :: c
+      integer, intent(in) :: id, typ
+      character(*), intent(in) :: fname
+      type(surface_t), intent(out) :: s
+      type(error_t), allocatable, intent(out) :: error
+      logical, allocatable :: inpart(:)
+      integer :: k, j
+      allocate(inpart(size(model%parts)))
+      inpart = .false.
+      select case (typ)
+      case (0)
+         call segset_surface(inp, model, c, id, fname, s, error)
+         return
+      case (2)
+         k = 0
+         do j = 1, size(model%part_sets)
+            if (model%part_sets(j)%label == id) k = j
+         end do
+         if (k == 0) then
+            call set_error(error, where(inp, c)//'field '//fname//': part set '//str(id)// &
+                           ' is not defined (*SET_PART_LIST)')
+            return
+         end if
+         inpart(model%part_sets(k)%parts) = .true.
+      case (3)
+         k = 0
+         do j = 1, size(model%parts)
+            if (model%parts(j)%label == id) k = j
+         end do
+         if (k == 0) then
+            call set_error(error, where(inp, c)//'field '//fname//': part '//str(id)// &
+                           ' is not defined (*PART)')
+            return
+         end if
+         inpart(k) = .true.
+      case (5)
+         inpart = .true.
+      end select
+      call part_surface(model, inpart, s)
+      if (s%nseg == 0) then
+         call set_error(error, where(inp, c)//'field '//fname//': '// &
+            trim(merge('part set', 'part    ', typ == 2))//' '//str(id)// &
+            ' has no solid elements (empty contact surface)')
+      end if
+   end subroutine side_surface
+
+   !> Exterior faces of the elements of the marked parts: faces used by exactly one of them.
+   subroutine part_surface(model, inpart, s)
+      type(model_t), intent(in) :: model
+      logical, intent(in) :: inpart(:)
+      type(surface_t), intent(out) :: s
+      integer, allocatable :: key(:, :), fel(:), ffc(:), idx(:)
+      integer :: e, nf, k, i, j, b, q, nd(4)
+      nf = 6*count(inpart(model%elem_part))
+      allocate(key(4, nf), fel(nf), ffc(nf))
+      nf = 0
+      do e = 1, model%ne
+         if (.not. inpart(model%elem_part(e))) cycle
+         b = model%elem_block(e)
+         q = model%elem_pos(e)
+         do k = 1, 6
+            nd = model%blocks(b)%conn(hex_faces(:, k), q)
+            if (count_unique(nd) < 3) cycle
+            nf = nf + 1
+            key(:, nf) = sort4(nd)
+            fel(nf) = e
+            ffc(nf) = k
+         end do
+      end do
+      idx = [(i, i = 1, nf)]
+      call merge_sort(key, idx)
+      allocate(s%seg(4, nf), s%nsn(nf), s%elem(nf))
+      s%nseg = 0
+      i = 1
+      do while (i <= nf)
+         j = i
+         do while (j < nf)
+            if (any(key(:, idx(j + 1)) /= key(:, idx(i)))) exit
+            j = j + 1
+         end do
+         if (j == i) then
+            e = fel(idx(i))
+            b = model%elem_block(e)
+            q = model%elem_pos(e)
+            s%nseg = s%nseg + 1
+            call face_segment(model%blocks(b)%conn(hex_faces(:, ffc(idx(i))), q), &
+                              s%seg(:, s%nseg), s%nsn(s%nseg))
+            s%elem(s%nseg) = e
+         end if
+         i = j + 1
+      end do
+   end subroutine part_surface
+
+   !> A face's node list as a segment: drop repeated nodes (cyclically); 3 left = triangle.
+   pure subroutine face_segment(nd, sg, nsn)
+      integer, intent(in) :: nd(4)
+      integer, intent(out) :: sg(4), nsn
+      integer :: k
+      nsn = 0
+      do k = 1, 4
+         if (nd(k) == nd(mod(k, 4) + 1)) cycle
+         if (nsn > 0) then
+            if (any(sg(1:nsn) == nd(k))) cycle
+         end if
+         nsn = nsn + 1
+         sg(nsn) = nd(k)
+      end do
+      if (nsn == 3) sg(4) = sg(3)
+   end subroutine face_segment
+
+   pure integer function count_unique(nd) result(n)
+      integer, intent(in) :: nd(4)
+      integer :: k
+      n = 1
+      do k = 2, 4
+         if (all(nd(1:k-1) /= nd(k))) n = n + 1
+      end do
+   end function count_unique
+
+   pure function sort4(nd) result(s)
+      integer, intent(in) :: nd(4)
+      integer :: s(4), i, j, t
+      s = nd
+      do i = 2, 4
+         t = s(i)
+         j = i - 1
+         do while (j >= 1)
+            if (s(j) <= t) exit
+            s(j + 1) = s(j)
+            j = j - 1
+         end do
+         s(j + 1) = t
+      end do
+   end function sort4
+
+   !> Sort idx so that key(:, idx) is in lexicographic order (bottom-up merge sort).
+   subroutine merge_sort(key, idx)
+      integer, intent(in) :: key(:, :)
+      integer, intent(inout) :: idx(:)
+      integer, allocatable :: tmp(:)
+      integer :: n, width, lo, mid, hi, i, j, k
+      n = size(idx)
+      allocate(tmp(n))
+      width = 1
+      do while (width < n)
+         lo = 1
+         do while (lo <= n)
+            mid = min(lo + width - 1, n)
+            hi = min(lo + 2*width - 1, n)
+            i = lo; j = mid + 1; k = lo
+            do while (i <= mid .and. j <= hi)
+               if (key_le(key(:, idx(i)), key(:, idx(j)))) then
+                  tmp(k) = idx(i); i = i + 1
+               else
+                  tmp(k) = idx(j); j = j + 1
+               end if
+               k = k + 1
+            end do
+            do while (i <= mid)
+               tmp(k) = idx(i); i = i + 1; k = k + 1
+            end do
+            do while (j <= hi)
+               tmp(k) = idx(j); j = j + 1; k = k + 1
+            end do
+            lo = lo + 2*width
+         end do
+         idx = tmp
+         width = 2*width
+      end do
+   end subroutine merge_sort
+
+   pure logical function key_le(a, b)
+      integer, intent(in) :: a(4), b(4)
+      integer :: k
+      key_le = .true.
+      do k = 1, 4
+         if (a(k) < b(k)) return
+         if (a(k) > b(k)) then
+            key_le = .false.; return
+         end if
+      end do
+   end function key_le
+
+   !> Segments of *SET_SEGMENT id, each matched to the element face it lies on and
+   !> numbered like that face (outward normal).
+   subroutine segset_surface(inp, model, c, id, fname, s, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(in) :: model
+      type(contact_in_t), intent(in) :: c
+      integer, intent(in) :: id
+      character(*), intent(in) :: fname
+      type(surface_t), intent(out) :: s
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k, j, i, n, e, b, q, f, ns, sg(4), nsn, nd(4), key(4)
+      integer, allocatable :: eptr(:), elist(:)
+      character(:), allocatable :: at_set
+      k = 0
+      do j = 1, size(model%segment_sets)
+         if (model%segment_sets(j)%label == id) k = j
+      end do
+      if (k == 0) then
+         call set_error(error, where(inp, c)//'field '//fname//': segment set '//str(id)// &
+                        ' is not defined (*SET_SEGMENT)')
+         return
+      end if
+      associate (src => inp%segment_sets(k)%src)
+         at_set = inp%files(src%ifile)%s//':'//str(src%line)//': *'//src%key//': set '// &
+                  str(id)//', '
+      end associate
+      ns = size(model%segment_sets(k)%seg, 2)
+      if (ns == 0) then
+         call set_error(error, where(inp, c)//'field '//fname//': segment set '//str(id)// &
+                        ' is empty')
+         return
+      end if
+      call node_elements(model, eptr, elist)
+      allocate(s%seg(4, ns), s%nsn(ns), s%elem(ns))
+      s%nseg = ns
+      do i = 1, ns
+         nd = model%segment_sets(k)%seg(:, i)
+         if (nd(1) == nd(2) .or. nd(1) == nd(3) .or. nd(2) == nd(3) .or. nd(4) == nd(1) .or. &
+             nd(4) == nd(2)) then
+            call set_error(error, at_set//'segment '//str(i)//' ('//node_text(model, nd)// &
+               ') repeats a node (used by *'//c%key//' at line '//str(c%line)//')')
+            return
+         end if
+         key = sort4(nd)
+         s%elem(i) = 0
+         do j = eptr(nd(1)), eptr(nd(1) + 1) - 1
+            e = elist(j)
+            b = model%elem_block(e)
+            q = model%elem_pos(e)
+            do f = 1, 6
+               call face_segment(model%blocks(b)%conn(hex_faces(:, f), q), sg, nsn)
+               if (all(sort4(sg) == key)) then
+                  s%elem(i) = e
+                  s%seg(:, i) = sg
+                  s%nsn(i) = nsn
+               end if
+            end do
+            if (s%elem(i) > 0) exit
+         end do
+         if (s%elem(i) == 0) then
+            call set_error(error, at_set//'segment '//str(i)//' ('//node_text(model, nd)// &
+               ') is not a face of a solid element (used by *'//c%key//' at line '// &
+               str(c%line)//')')
+            return
+         end if
+      end do
+      n = 0
+      if (.false.) n = n + 1
+   end subroutine segset_surface
+
+   function node_text(model, nd) result(t)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: nd(4)
+      character(:), allocatable :: t
+      t = str(model%node_label(nd(1)))//' '//str(model%node_label(nd(2)))//' '// &
+          str(model%node_label(nd(3)))//' '//str(model%node_label(nd(4)))
+   end function node_text
+
+   !> node -> element incidence (CSR)
+   subroutine node_elements(model, eptr, elist)
+      type(model_t), intent(in) :: model
+      integer, allocatable, intent(out) :: eptr(:), elist(:)
+      integer :: e, k, b, q, nd
+      integer, allocatable :: fill(:)
+      allocate(eptr(model%nn + 1))
+      eptr = 0
+      do e = 1, model%ne
+         b = model%elem_block(e)
+         q = model%elem_pos(e)
+         do k = 1, 8
+            nd = model%blocks(b)%conn(k, q)
+            if (any(model%blocks(b)%conn(1:k-1, q) == nd)) cycle
+            eptr(nd + 1) = eptr(nd + 1) + 1
+         end do
+      end do
+      eptr(1) = 1
+      do k = 1, model%nn
+         eptr(k + 1) = eptr(k + 1) + eptr(k)
+      end do
+      allocate(elist(eptr(model%nn + 1) - 1), fill(model%nn))
+      fill = eptr(1:model%nn)
+      do e = 1, model%ne
+         b = model%elem_block(e)
+         q = model%elem_pos(e)
+         do k = 1, 8
+            nd = model%blocks(b)%conn(k, q)
+            if (any(model%blocks(b)%conn(1:k-1, q) == nd)) cycle
+            elist(fill(nd)) = e
+            fill(nd) = fill(nd) + 1
+         end do
+      end do
+   end subroutine node_elements
+
+   subroutine node_set_nodes(inp, model, c, id, fname, nodes, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(in) :: model
+      type(contact_in_t), intent(in) :: c
+      integer, intent(in) :: id
+      character(*), intent(in) :: fname
+      integer, allocatable, intent(out) :: nodes(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: j, k
+      k = 0
+      do j = 1, size(model%node_sets)
+         if (model%node_sets(j)%label == id) k = j
+      end do
+      if (k == 0) then
+         call set_error(error, where(inp, c)//'field '//fname//': node set '//str(id)// &
+                        ' is not defined (*SET_NODE_LIST)')
+         return
+      end if
+      nodes = model%node_sets(k)%nodes
+      if (size(nodes) == 0) call set_error(error, where(inp, c)//'field '//fname// &
+                                           ': node set '//str(id)//' is empty')
+   end subroutine node_set_nodes
+
+   !> index of *DEFINE_BOX id (0 and error when missing)
+   integer function find_box(inp, c, id, fname, error) result(k)
+      type(model_input_t), intent(in) :: inp
+      type(contact_in_t), intent(in) :: c
+      integer, intent(in) :: id
+      character(*), intent(in) :: fname
+      type(error_t), allocatable, intent(inout) :: error
+      integer :: j
+      k = 0
+      if (allocated(inp%contact%boxes)) then
+         do j = 1, size(inp%contact%boxes)
+            if (inp%contact%boxes(j)%label == id) k = j
+         end do
+      end if
+      if (k == 0) call set_error(error, where(inp, c)//'field '//fname//': box '//str(id)// &
+                                 ' is not defined (*DEFINE_BOX)')
+   end function find_box
+
+   !> keep the nodes inside box id (initial coordinates); id 0: keep all
+   subroutine box_nodes(inp, model, c, id, fname, nodes, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(in) :: model
+      type(contact_in_t), intent(in) :: c
+      integer, intent(in) :: id
+      character(*), intent(in) :: fname
+      integer, allocatable, intent(inout) :: nodes(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k, i
+      logical, allocatable :: keep(:)
+      if (id == 0) return
+      k = find_box(inp, c, id, fname, error)
+      if (k == 0) return
+      associate (bx => inp%contact%boxes(k))
+         allocate(keep(size(nodes)))
+         do i = 1, size(nodes)
+            keep(i) = all(model%x0(:, nodes(i)) >= bx%lo) .and. all(model%x0(:, nodes(i)) <= bx%hi)
+         end do
+      end associate
+      nodes = pack(nodes, keep)
+   end subroutine box_nodes
+
+   !> keep the segments whose centroid lies inside box id (initial coordinates)
+   subroutine box_segments(inp, model, c, id, fname, s, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(in) :: model
+      type(contact_in_t), intent(in) :: c
+      integer, intent(in) :: id
+      character(*), intent(in) :: fname
+      type(surface_t), intent(inout) :: s
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k, i, n
+      real(wp) :: xc(3)
+      if (id == 0) return
+      k = find_box(inp, c, id, fname, error)
+      if (k == 0) return
+      n = 0
+      associate (bx => inp%contact%boxes(k))
+         do i = 1, s%nseg
+            xc = sum(model%x0(:, s%seg(1:s%nsn(i), i)), dim=2)/real(s%nsn(i), wp)
+            if (all(xc >= bx%lo) .and. all(xc <= bx%hi)) then
+               n = n + 1
+               s%seg(:, n) = s%seg(:, i)
+               s%nsn(n) = s%nsn(i)
+               s%elem(n) = s%elem(i)
+            end if
+         end do
+      end associate
+      s%nseg = n
+   end subroutine box_segments
+end module dx_contact_build

@@ -1,0 +1,205 @@
+!> Bucket sort for node-to-segment contact (Benson & Hallquist 1990, CMAME 78:141-163; the
+!> LS-DYNA Theory Manual, "bucket sort"): an Eulerian grid of cubic cells (cell size from the
+!> mean segment size, capped so the grid has O(nseg) cells) over the pass's nodes and
+!> segments. Each segment is entered into every cell its box, grown by the search reach
+!> (margin + largest penetration taken as contact), overlaps; each slave node then keeps as
+!> candidates the segments of its cell whose grown box contains it. The local search in
+!> dx_contact_penalty only looks at these candidates until the next sort.
+!> The sort is valid while no two points have closed more than the margin, i.e. while twice
+!> the largest nodal travel since the sort stays below the margin (dx_contact re-sorts then,
+!> and every BSORT cycles).
+!> Cost: O(nseg + nnode) per sort for a surface of evenly sized segments.
+module dx_contact_search
+   use dx_kinds, only: wp
+   use dx_contact_types, only: contact_pass_t
+   implicit none
+   private
+   public :: bucket_sort
+
+contains
+
+   !> Rebuild the candidate lists of pass p from coordinates x; margin: search distance.
+   !> mass (optional): nodal masses, for the frequency bound w2pot of the candidate pairs,
+   !> max over slave nodes with candidates of 4 k_max/min(m_slave, m_master nodes): a pair
+   !> that may touch before the next sort keeps the step small even while it is apart.
+   subroutine bucket_sort(p, x, margin, mass)
+      type(contact_pass_t), intent(inout) :: p
+      real(wp), intent(in) :: x(:, :)
+      real(wp), intent(in) :: margin
+      real(wp), intent(in), optional :: mass(:)
+      real(wp), allocatable :: blo(:, :), bhi(:, :), snrm(:, :)
+      real(wp) :: d1(3), d2(3)
+      real(wp) :: lo(3), hi(3), ext, h, vol
+      integer :: i, s, k, n, c, ic(3), jlo(3), jhi(3), i1, i2, i3, ncap, ncells, nc
+      integer, allocatable :: fill(:), cand(:), tmp(:)
+      logical :: ok
+      p%margin = margin
+      p%moved = 0.0_wp
+      p%nsort = p%nsort + 1
+      if (p%nsseg > 0) call node_normals(p, x)
+      if (p%nseg == 0 .or. p%nnode == 0) then
+         p%cand_ptr = 1
+         return
+      end if
+      ! ---- grown segment boxes and the grid box
+      allocate(blo(3, p%nseg), bhi(3, p%nseg))
+      ext = 0.0_wp
+      do s = 1, p%nseg
+         n = p%nsn(s)
+         blo(:, s) = minval(x(:, p%seg(1:n, s)), dim=2)
+         bhi(:, s) = maxval(x(:, p%seg(1:n, s)), dim=2)
+         ext = ext + maxval(bhi(:, s) - blo(:, s))
+         blo(:, s) = blo(:, s) - (margin + p%depth(s))
+         bhi(:, s) = bhi(:, s) + (margin + p%depth(s))
+      end do
+      ext = ext/real(p%nseg, wp)
+      lo = minval(blo, dim=2)
+      hi = maxval(bhi, dim=2)
+      do i = 1, p%nnode
+         lo = min(lo, x(:, p%node(i)))
+         hi = max(hi, x(:, p%node(i)))
+      end do
+      h = max(ext, 1.0e-12_wp*maxval(hi - lo), tiny(1.0_wp))
+      vol = product(max(hi - lo, h))
+      ncap = 4*p%nseg + 64
+      if (vol/h**3 > real(ncap, wp)) h = (vol/real(ncap, wp))**(1.0_wp/3.0_wp)
+      p%cell_h = h
+      p%cell_lo = lo
+      p%ncell = max(1, min(ncap, int((hi - lo)/h) + 1))
+      ncells = product(p%ncell)
+      ! ---- segments into cells (CSR: count, prefix sum, fill)
+      if (allocated(p%cell_ptr)) deallocate(p%cell_ptr)
+      allocate(p%cell_ptr(ncells + 1))
+      p%cell_ptr = 0
+      do s = 1, p%nseg
+         call cell_range(p, blo(:, s), bhi(:, s), jlo, jhi)
+         do i3 = jlo(3), jhi(3)
+            do i2 = jlo(2), jhi(2)
+               do i1 = jlo(1), jhi(1)
+                  c = cell_id(p, [i1, i2, i3])
+                  p%cell_ptr(c + 1) = p%cell_ptr(c + 1) + 1
+               end do
+            end do
+         end do
+      end do
+      p%cell_ptr(1) = 1
+      do c = 1, ncells
+         p%cell_ptr(c + 1) = p%cell_ptr(c + 1) + p%cell_ptr(c)
+      end do
+      if (allocated(p%cell_seg)) deallocate(p%cell_seg)
+      allocate(p%cell_seg(p%cell_ptr(ncells + 1) - 1), fill(ncells))
+      fill = p%cell_ptr(1:ncells)
+      do s = 1, p%nseg
+         call cell_range(p, blo(:, s), bhi(:, s), jlo, jhi)
+         do i3 = jlo(3), jhi(3)
+            do i2 = jlo(2), jhi(2)
+               do i1 = jlo(1), jhi(1)
+                  c = cell_id(p, [i1, i2, i3])
+                  p%cell_seg(fill(c)) = s
+                  fill(c) = fill(c) + 1
+               end do
+            end do
+         end do
+      end do
+      ! ---- unit normals of the segments (diagonal cross product)
+      allocate(snrm(3, p%nseg))
+      do s = 1, p%nseg
+         associate (sg => p%seg(:, s))
+            if (p%nsn(s) == 4) then
+               d1 = x(:, sg(3)) - x(:, sg(1)); d2 = x(:, sg(4)) - x(:, sg(2))
+            else
+               d1 = x(:, sg(2)) - x(:, sg(1)); d2 = x(:, sg(3)) - x(:, sg(1))
+            end if
+         end associate
+         snrm(:, s) = [d1(2)*d2(3) - d1(3)*d2(2), d1(3)*d2(1) - d1(1)*d2(3), &
+                       d1(1)*d2(2) - d1(2)*d2(1)]
+         snrm(:, s) = snrm(:, s)/max(norm2(snrm(:, s)), tiny(1.0_wp))
+      end do
+      ! ---- candidates of each slave node
+      allocate(cand(max(16, 2*p%nnode)))
+      nc = 0
+      do i = 1, p%nnode
+         p%cand_ptr(i) = nc + 1
+         k = p%node(i)
+         ic = min(p%ncell, max(1, int((x(:, k) - p%cell_lo)/h) + 1))
+         c = cell_id(p, ic)
+         do n = p%cell_ptr(c), p%cell_ptr(c + 1) - 1
+            s = p%cell_seg(n)
+            if (any(x(:, k) < blo(:, s)) .or. any(x(:, k) > bhi(:, s))) cycle
+            if (any(p%seg(1:p%nsn(s), s) == k)) cycle
+            if (p%exclude_owner) then
+               if (any(p%owner(:, s) == k)) cycle
+            end if
+            ! segments clearly facing the same way as the node's surface (its own face and
+            ! its neighbours on a single surface) cannot be hit before the next sort
+            if (p%nsseg > 0) then
+               if (dot_product(p%nnrm(:, i), snrm(:, s)) > 0.3_wp) cycle
+            end if
+            if (nc == size(cand)) then
+               allocate(tmp(2*nc))
+               tmp(1:nc) = cand
+               call move_alloc(tmp, cand)
+            end if
+            nc = nc + 1
+            cand(nc) = s
+         end do
+      end do
+      p%cand_ptr(p%nnode + 1) = nc + 1
+      p%w2pot = 0.0_wp
+      if (present(mass)) then
+         do i = 1, p%nnode
+            do n = p%cand_ptr(i), nc
+               if (n >= p%cand_ptr(i + 1)) exit
+               s = cand(n)
+               vol = min(mass(p%node(i)), minval(mass(p%seg(1:p%nsn(s), s))))
+               if (vol > 0.0_wp) p%w2pot = max(p%w2pot, 4.0_wp*p%kseg(s)/vol)
+            end do
+         end do
+      end if
+      ok = .true.
+      if (allocated(p%cand)) deallocate(p%cand)
+      p%cand = cand(1:nc)
+      if (.not. ok) p%cand_ptr = 1
+   end subroutine bucket_sort
+
+   !> Unit normals of the slave nodes: the area-weighted mean of their segments' normals.
+   subroutine node_normals(p, x)
+      type(contact_pass_t), intent(inout) :: p
+      real(wp), intent(in) :: x(:, :)
+      real(wp) :: a(3), d1(3), d2(3), r
+      integer :: s, k, i
+      p%nnrm = 0.0_wp
+      do s = 1, p%nsseg
+         associate (sg => p%sseg(:, s))
+            if (p%ssn(s) == 4) then
+               d1 = x(:, sg(3)) - x(:, sg(1)); d2 = x(:, sg(4)) - x(:, sg(2))
+            else
+               d1 = x(:, sg(2)) - x(:, sg(1)); d2 = x(:, sg(3)) - x(:, sg(1))
+            end if
+            a = [d1(2)*d2(3) - d1(3)*d2(2), d1(3)*d2(1) - d1(1)*d2(3), d1(1)*d2(2) - d1(2)*d2(1)]
+            do k = 1, p%ssn(s)
+               i = p%nloc(sg(k))
+               if (i > 0) p%nnrm(:, i) = p%nnrm(:, i) + a
+            end do
+         end associate
+      end do
+      do i = 1, p%nnode
+         r = norm2(p%nnrm(:, i))
+         if (r > 0.0_wp) p%nnrm(:, i) = p%nnrm(:, i)/r
+      end do
+   end subroutine node_normals
+
+   pure subroutine cell_range(p, blo, bhi, jlo, jhi)
+      type(contact_pass_t), intent(in) :: p
+      real(wp), intent(in) :: blo(3), bhi(3)
+      integer, intent(out) :: jlo(3), jhi(3)
+      jlo = min(p%ncell, max(1, int((blo - p%cell_lo)/p%cell_h) + 1))
+      jhi = min(p%ncell, max(1, int((bhi - p%cell_lo)/p%cell_h) + 1))
+   end subroutine cell_range
+
+   pure integer function cell_id(p, ic) result(c)
+      type(contact_pass_t), intent(in) :: p
+      integer, intent(in) :: ic(3)
+      c = ic(1) + p%ncell(1)*((ic(2) - 1) + p%ncell(2)*(ic(3) - 1))
+   end function cell_id
+end module dx_contact_search

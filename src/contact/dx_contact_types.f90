@@ -1,0 +1,86 @@
+!> Persistent contact state: every array a contact interface needs from one cycle to the next
+!> (segments, penalty stiffnesses, candidate lists from the bucket sort, tangential trial
+!> forces, last sort cycle, resultant forces, sliding-interface work). model_t holds one
+!> allocatable contact_set_t; a deck without *CONTACT allocates nothing, so a later restart
+!> feature dumps this one component.
+!> Penalty node-to-segment contact after Hallquist, Goudreau & Benson 1985 (CMAME 51:107-137)
+!> and the DYNA3D User's Manual (Hallquist 1982, UCRL-MA-107254 rev. 1 1991, sliding
+!> interfaces); bucket sort after Benson & Hallquist 1990 ("A single surface contact
+!> algorithm for the post-buckling analysis of shell structures", CMAME 78:141-163).
+module dx_contact_types
+   use dx_kinds, only: wp
+   implicit none
+   private
+   public :: contact_set_t, contact_iface_t, contact_pass_t
+
+   !> One pass of the node-to-segment algorithm: slave nodes against master segments.
+   !> Segments are stored with 4 node slots; a triangle repeats its third node (nsn = 3).
+   !> nsn = 2 (lines, for 2D later) keeps the same layout.
+   type :: contact_pass_t
+      integer :: nnode = 0, nseg = 0
+      integer, allocatable :: node(:)          !< (nnode) slave nodes (dense)
+      integer, allocatable :: seg(:, :)        !< (4, nseg) master segment nodes
+      integer, allocatable :: nsn(:)           !< (nseg) nodes per segment: 3 or 4 (2: line)
+      real(wp), allocatable :: kseg(:)         !< (nseg) penalty stiffness f*K*A^2/V
+      real(wp), allocatable :: depth(:)        !< (nseg) largest penetration taken as contact
+      real(wp), allocatable :: area(:)         !< (nseg) initial area (VC friction limit)
+      integer, allocatable :: owner(:, :)      !< (8, nseg) nodes of the owning element
+      logical :: exclude_owner = .false.       !< single surface: skip the node's own elements
+      ! --- the slave nodes' own surface: a node only contacts segments facing it
+      !     (n_node . n_seg < 0); none for node-set slaves
+      integer :: nsseg = 0
+      integer, allocatable :: sseg(:, :)       !< (4, nsseg) segments of the slave surface
+      integer, allocatable :: ssn(:)           !< (nsseg) their node counts
+      integer, allocatable :: nloc(:)          !< (nn) local slave index of a node (0: none)
+      real(wp), allocatable :: nnrm(:, :)      !< (3, nnode) slave node normals at the sort
+      ! --- bucket sort and candidate lists (rebuilt every BSORT cycles or on motion)
+      real(wp) :: margin = 0.0_wp              !< search distance beyond the depth
+      real(wp) :: moved = 0.0_wp               !< max nodal travel since the last sort
+      integer :: last_sort = -1000000          !< cycle of the last sort
+      integer :: nsort = 0
+      real(wp) :: w2pot = 0.0_wp               !< contact frequency^2 bound of the candidates
+      integer, allocatable :: cand_ptr(:)      !< (nnode+1) CSR into cand
+      integer, allocatable :: cand(:)          !< candidate segments of each slave node
+      integer :: ncell(3) = 0                  !< bucket grid
+      real(wp) :: cell_lo(3) = 0.0_wp, cell_h = 0.0_wp
+      integer, allocatable :: cell_ptr(:), cell_seg(:)
+      ! --- per-node state
+      real(wp), allocatable :: ft(:, :)        !< (3, nnode) tangential (trial) force
+      integer, allocatable :: iseg(:)          !< (nnode) segment in contact (0: none)
+      real(wp), allocatable :: gap(:)          !< (nnode) its normal gap (< 0), 0: none
+   end type contact_pass_t
+
+   !> One *CONTACT_... interface: parameters, one or two passes, resultant forces.
+   type :: contact_iface_t
+      integer :: label = 0
+      character(:), allocatable :: name        !< keyword (for messages)
+      integer :: kind = 0
+      real(wp) :: fs = 0.0_wp, fd = 0.0_wp, dc = 0.0_wp, vc = 0.0_wp, vdc = 0.0_wp
+      real(wp) :: bt = 0.0_wp, dt = 1.0e20_wp
+      real(wp) :: fsf = 1.0_wp, vsf = 1.0_wp
+      integer :: soft = 0
+      real(wp) :: sofscl = 0.1_wp
+      integer :: bsort = 10
+      type(contact_pass_t), allocatable :: pass(:)
+      real(wp) :: fslave(3) = 0.0_wp           !< resultant force on the slave side
+      real(wp) :: fmaster(3) = 0.0_wp          !< resultant force on the master side
+      integer :: nactive = 0                   !< slave nodes in contact, last cycle
+   end type contact_iface_t
+
+   !> All interfaces of the model and their shared state.
+   type :: contact_set_t
+      type(contact_iface_t), allocatable :: iface(:)
+      integer, allocatable :: node(:)          !< every node any interface touches
+      real(wp), allocatable :: fc(:, :)        !< (3, nn) contact force of this cycle
+      real(wp), allocatable :: krow(:)         !< (nn) contact stiffness row sums, this cycle
+      real(wp) :: work = 0.0_wp                !< work of the contact forces (centred)
+      real(wp) :: rcforc_dt = 0.0_wp
+      real(wp) :: next_rcforc = 0.0_wp
+      integer :: rcforc_unit = 0
+      logical :: rcforc_open = .false.
+      real(wp) :: t_search = 0.0_wp            !< wall time in bucket sorts [s]
+      real(wp) :: t_force = 0.0_wp             !< wall time in local search + forces [s]
+      real(wp) :: dt_limit = huge(1.0_wp)      !< contact bound on the critical step, last cycle
+      logical :: finished = .false.
+   end type contact_set_t
+end module dx_contact_types
