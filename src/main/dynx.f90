@@ -9,7 +9,8 @@ program dynx
    use dx_model, only: model_t
    use dx_deck, only: read_deck
    use dx_output, only: output_t
-   use dx_explicit, only: run_options_t, run_explicit
+   use dx_explicit, only: run_options_t, run_explicit, init_state
+   use dx_emc_solver, only: run_emc
    implicit none
    character(:), allocatable :: deck, outdir, arg, val
    type(model_t) :: model
@@ -67,7 +68,12 @@ program dynx
    end if
    call out%open(model, outdir, error)
    if (allocated(error)) call die(error)
-   call run_explicit(model, opts, out, error)
+   if (allocated(model%emc)) then
+      call init_state(model)
+      call run_emc(model, outdir, out, error)
+   else
+      call run_explicit(model, opts, out, error)
+   end if
    call log_summary()
    if (allocated(error)) call die(error)
    call log_info('dynx: results in '//outdir//'/ (d3plot.h5, d3plot.xdmf'// &
