@@ -41,6 +41,9 @@ module dx_emc_contact
       real(wp) :: s(3) = 0.0_wp     !< slave material point, body frame
       real(wp) :: rs = 0.0_wp       !< slave radius (0: a node)
       real(wp) :: g0 = 0.0_wp, g1 = 0.0_wp, ubar = 0.0_wp
+      logical :: carried = .false.  !< g(n) is the algorithmic gap carried from the last step
+      real(wp) :: g0c = 0.0_wp      !< that gap
+      real(wp) :: n1(3) = 0.0_wp    !< master normal at n+1 (spatial), to match the next step
    end type emc_pair_t
 
 contains
@@ -105,6 +108,7 @@ contains
                pn1 = km%xc1 + matmul(km%r1, xp)
                rmm = 0.5_wp*(pn0 + pn1) - km%xm
                g0 = dot_product(n0, xs0 - pn0) - p%rs
+               if (p%carried) g0 = p%g0c
                g1 = g0 + dot_product(nu, (xs1 - xs0) - (pn1 - pn0))
                np = f%np
                do j = 1, np
@@ -135,6 +139,7 @@ contains
                else
                   g0 = norm2(d0) - p%rs - sm%r
                end if
+               if (p%carried) g0 = p%g0c
                g1 = g0 + dot_product(nu, (xs1 - xs0) - (pn1 - pn0))
             end associate
          end select
@@ -150,7 +155,7 @@ contains
       type(emc_pair_t), allocatable, intent(inout) :: pairs(:)
       integer, intent(out) :: npair
       integer :: id, sb, mb, i, i1, i2, f, q, nsp
-      real(wp) :: g0, g1, nu(3), xp(3), rsm(3), rmm(3), dpen
+      real(wp) :: g0, g1, nu(3), xp(3), rsm(3), rmm(3), dpen, xb(3), xb1(3), trav
       logical :: inside, dup
       type(emc_pair_t) :: p
       if (.not. allocated(pairs)) allocate(pairs(16))
@@ -180,13 +185,23 @@ contains
                cycle
             end if
             nsp = npair
+            ! cheap filter in the master's frame at t(n): distance to the facet plane and to
+            ! its centroid, against the travel over the step
+            xb = matmul(transpose(k(mb)%r0), k(sb)%xc0 + matmul(k(sb)%r0, p%s) - k(mb)%xc0)
+            xb1 = matmul(transpose(k(mb)%r1), k(sb)%xc1 + matmul(k(sb)%r1, p%s) - k(mb)%xc1)
+            trav = norm2(xb1 - xb)
             do f = es%fac_ptr(mb), es%fac_ptr(mb + 1) - 1
+               associate (fc => es%facets(f))
+                  if (dot_product(fc%n, xb - fc%c) - p%rs > trav + 1.0e-9_wp*fc%rad) cycle
+                  if (norm2(xb - fc%c) > 2.0_wp*fc%rad + p%rs + trav) cycle
+               end associate
                p%kind = PAIR_FACET
                p%facet = f
                call pair_geometry(es, k, p, g0, g1, nu, xp, rsm, rmm, inside)
                if (.not. inside) cycle
                dpen = facet_depth(es, f)
                if (.not. (min(g0, g1) < 0.0_wp .and. g0 > -dpen)) cycle
+               p%g0 = g0
                dup = .false.
                do q = nsp + 1, npair
                   if (same_plane(es, pairs(q)%facet, f)) dup = .true.
@@ -263,6 +278,8 @@ contains
                ub = eps*min(0.5_wp*(g0 + g1), 0.0_wp)
             end if
             p%g0 = g0; p%g1 = g1; p%ubar = ub
+            p%n1 = 0.0_wp
+            if (p%kind == PAIR_FACET) p%n1 = matmul(k(p%mb)%r1, es%facets(p%facet)%n)
             upen0 = upen0 + u0
             upen1 = upen1 + u1
             f = -ub*nu

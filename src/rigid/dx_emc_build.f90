@@ -239,6 +239,10 @@ contains
                   f%np = np
                   f%p(:, 1:np) = xs(:, 1:np)
                   f%c = sum(xs(:, 1:np), dim=2)/np
+                  f%rad = 0.0_wp
+                  do m = 1, np
+                     f%rad = max(f%rad, norm2(xs(:, m) - f%c))
+                  end do
                   if (np == 4) then
                      nrm = cross(xs(:, 3) - xs(:, 1), xs(:, 4) - xs(:, 2))
                   else

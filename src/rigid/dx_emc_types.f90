@@ -47,6 +47,7 @@ module dx_emc_types
       real(wp) :: c(3) = 0.0_wp, n(3) = 0.0_wp
       real(wp) :: p(3, 4) = 0.0_wp
       integer :: np = 4
+      real(wp) :: rad = 0.0_wp       !< largest distance of a corner from c
    end type emc_facet_t
 
    !> a spherically smoothed body: centre in the body frame, radius, outer (0) or inner (1)

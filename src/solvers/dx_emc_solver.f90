@@ -26,13 +26,14 @@ module dx_emc_solver
    implicit none
    private
    public :: run_emc, emc_state_t, emc_init_state, emc_try_step, emc_energy, emc_momenta, &
-             cayley
+             cayley, newton_report_t
 
    !> the bodies' state at t(n)
    type :: emc_state_t
       integer :: nb = 0
       real(wp), allocatable :: m(:), j(:, :), xc(:, :), v(:, :), r(:, :, :), w(:, :)
       real(wp) :: upen = 0.0_wp      !< penalty energy stored at t(n)
+      type(emc_pair_t), allocatable :: act(:)   !< pairs in penetration at t(n), with g(n)
    end type emc_state_t
 
    !> what the last step's Newton did
@@ -157,6 +158,61 @@ contains
       end do
    end subroutine residual
 
+   !> Pairs that continue a pair in penetration at t(n) take its algorithmic gap as g(n): the
+   !> same facet, or (a node sliding onto the next facet) the facet whose normal is closest
+   !> to the old one (cosine >= 0.9). So the stored penalty energy carries over exactly.
+   subroutine carry_gaps(es, st, k, list, n, used)
+      type(emc_system_t), intent(in) :: es
+      type(emc_state_t), intent(in) :: st
+      type(emc_kin_t), intent(in) :: k(:)
+      type(emc_pair_t), intent(inout) :: list(:)
+      integer, intent(in) :: n
+      logical, intent(inout) :: used(:)
+      integer :: i, q, best
+      real(wp) :: c, cbest, nn(3)
+      if (.not. allocated(st%act)) return
+      do i = 1, n
+         associate (p => list(i))
+            best = 0
+            cbest = 0.9_wp
+            do q = 1, size(st%act)
+               if (used(q)) cycle
+               if (st%act(q)%def /= p%def .or. st%act(q)%src /= p%src .or. &
+                   st%act(q)%kind /= p%kind) cycle
+               if (p%kind /= 1 .or. st%act(q)%facet == p%facet) then
+                  best = q; exit
+               end if
+               nn = matmul(k(p%mb)%r0, es%facets(p%facet)%n)
+               c = dot_product(nn, st%act(q)%n1)
+               if (c > cbest) then
+                  cbest = c; best = q
+               end if
+            end do
+            if (best > 0) then
+               used(best) = .true.
+               p%carried = .true.
+               p%g0c = st%act(best)%g1
+            end if
+         end associate
+      end do
+   end subroutine carry_gaps
+
+   !> A facet pair that does not continue a penetration must start outside (g(n) >= 0): a
+   !> node already behind a facet plane at t(n) is behind the body's far side or was
+   !> penetrating at t = 0 (initial penetrations are ignored until they open).
+   subroutine drop_new_penetrated(list, n)
+      type(emc_pair_t), intent(inout) :: list(:)
+      integer, intent(inout) :: n
+      integer :: i, m
+      m = 0
+      do i = 1, n
+         if (list(i)%kind == 1 .and. .not. list(i)%carried .and. list(i)%g0 < 0.0_wp) cycle
+         m = m + 1
+         if (m /= i) list(m) = list(i)
+      end do
+      n = m
+   end subroutine drop_new_penetrated
+
    !> Newton iterations for one step of size dt from st; on success st advances to t + dt.
    subroutine emc_try_step(es, st, dt, rep, ok)
       type(emc_system_t), intent(in) :: es
@@ -168,8 +224,9 @@ contains
                   scale, sp, rn, rn_old, h, upen1, ymag, rc(3, 3, st%nb)
       type(emc_pair_t), allocatable :: pairs(:), cand(:)
       type(emc_kin_t) :: k(st%nb)
-      integer :: n, it, jc, b, npair, ncand, pass, i, q
+      integer :: n, it, jc, b, npair, ncand, pass, i, q, nact
       logical :: found, added
+      logical, allocatable :: used(:)
       character(:), allocatable :: msg
       n = 6*st%nb
       do b = 1, st%nb
@@ -178,6 +235,12 @@ contains
       end do
       call kinematics(st, dt, y, k, rc)
       call emc_select_pairs(es, k, pairs, npair)
+      nact = 0
+      if (allocated(st%act)) nact = size(st%act)
+      allocate(used(nact))
+      used = .false.
+      call carry_gaps(es, st, k, pairs, npair, used)
+      call drop_new_penetrated(pairs, npair)
       ok = .false.
       rep%iters = 0
       do pass = 1, 6
@@ -218,6 +281,8 @@ contains
          ! contacts the converged step reaches that the predictor did not see
          call kinematics(st, dt, y, k, rc)
          call emc_select_pairs(es, k, cand, ncand)
+         call carry_gaps(es, st, k, cand, ncand, used)
+         call drop_new_penetrated(cand, ncand)
          added = .false.
          do i = 1, ncand
             found = .false.
@@ -252,6 +317,7 @@ contains
       end do
       st%upen = upen1
       rep%npair = npair
+      st%act = pack(pairs(1:npair), pairs(1:npair)%g1 < 0.0_wp)
    end subroutine emc_try_step
 
    !> One step of size dt, halved up to es%nfail times when Newton fails.
