@@ -24,6 +24,8 @@ def main():
     ap.add_argument('--ltol', type=float, default=1e-12)
     ap.add_argument('--min-contact', type=int, default=1)
     ap.add_argument('--lx-exchange', type=float, default=0.0)
+    ap.add_argument('--lfloor', type=float, default=0.0,
+                    help='floor of the angular momentum scale (absolute), for L0 = 0')
     a = ap.parse_args()
     rows = []
     with open(a.outdir + '/emcstat') as f:
@@ -42,7 +44,7 @@ def main():
     # momentum scale: |p| of the bodies is not in emcstat; use |p0| and |L0| floored by the
     # largest |p|, |L| seen (a free system has p, L constant, so these are the same unless broken)
     pscale = max(max(math.sqrt(sum(x * x for x in r[5:8])) for r in rows), 1e-300)
-    lscale = max(max(math.sqrt(sum(x * x for x in r[8:11])) for r in rows), 1e-300)
+    lscale = max(max(math.sqrt(sum(x * x for x in r[8:11])) for r in rows), a.lfloor, 1e-300)
     de = max(abs(r[4] - e0) / e0 for r in rows)
     dp = max(math.sqrt(sum((r[5 + i] - p0[i]) ** 2 for i in range(3))) for r in rows) / pscale
     dl = max(math.sqrt(sum((r[8 + i] - l0[i]) ** 2 for i in range(3))) for r in rows) / lscale

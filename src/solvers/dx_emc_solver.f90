@@ -430,7 +430,7 @@ contains
             call emc_momenta(st, p, lb, lt, ps, ls)
             de = max(de, abs(ke + st%upen - e0)/max(e0, tiny(1.0_wp)))
             dp = max(dp, norm2(p - p0)/max(ps0, tiny(1.0_wp)))
-            dl = max(dl, norm2(lt - l0)/max(ls0, tiny(1.0_wp)))
+            dl = max(dl, norm2(lt - l0)/max(ls0, ps0*1.0_wp, tiny(1.0_wp)))   ! floor: |p| x 1 m
             if (t >= next_out*(1.0_wp - 1.0e-9_wp) .or. t >= tend*(1.0_wp - 1.0e-12_wp)) then
                call write_line()
                next_out = next_out + es%out_dt
