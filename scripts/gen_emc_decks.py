@@ -234,12 +234,12 @@ def bars(a):
     tend = a.dt * a.steps
     out += ['*CONTROL_TERMINATION', fmt(tend)]
     out += ['*CONTROL_IMPLICIT_GENERAL', '%10d%10s' % (1, fmt(a.dt))]
-    out += ['*DYNX_CONSERVING_CONTROL', '%10d%10s%10d%10s' % (20, '0', 0, fmt(a.outdt))]
+    out += ['*DYNX_CONSERVING_CONTROL', '%10d%10s%10d%10s' % (20, '0', a.nfail, fmt(a.outdt))]
     out += ['*DATABASE_BINARY_D3PLOT', fmt(tend / 20.0)]
     out += ['*SECTION_SOLID', '%10d%10d' % (1, 1)]
     part(out, 1, 'left bar', 1.0)
     part(out, 2, 'right bar', 1.0)
-    ivel(out, 1, 0.0, (1.0, 0.0, 0.0), (0.0, 0.0, 0.0), (1.0, 0.0, 0.0))
+    ivel(out, 1, 0.0, (a.v0, 0.0, 0.0), (0.0, 0.0, 0.0), (1.0, 0.0, 0.0))
     out += ['*DYNX_CONSERVING_CONTACT', '%10d%10d%10d%10d%10s' % (1, 1, 2, 1, fmt(a.eps))]
     ln, le = bar(-50.0, 10, 50.0, 0, 0, 1)
     rn, re = bar(0.01, 10, 50.0, len(ln), len(le), 2)
@@ -261,6 +261,8 @@ def main():
     ap.add_argument('--tssfac', type=float, default=0.9)
     ap.add_argument('--sfs', type=float, default=1.0)
     ap.add_argument('--faceted', action='store_true')
+    ap.add_argument('--v0', type=float, default=1.0, help='bars: impact speed')
+    ap.add_argument('--nfail', type=int, default=0, help='bars: NFAIL (step halvings)')
     a = ap.parse_args()
     out = {'ballbox': ballbox, 'ballshell': ballshell, 'bars': bars}[a.scene](a)
     print('\n'.join(out))
