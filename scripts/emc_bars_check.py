@@ -2,7 +2,7 @@
 """Check the two-bar impact (decks/emc_bars) from emcstat: exchange of velocities and the
 largest penetration against the analytic penalty value.
 
-  emc_bars_check.py OUTDIR --eps EPS --nodes N --mass M --v0 V --vtol T --ptol R
+  emc_bars_check.py OUTDIR --eps EPS --nodes N --mass M --v0 V --vtol T --ptol R [--lagrange]
 
 Bars of mass M each, left at V, right at rest, N slave nodes with penalty EPS each: the
 contact is a spring N*EPS on the reduced mass M/2, so the largest penetration is
@@ -18,13 +18,15 @@ import sys
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('outdir')
-    ap.add_argument('--eps', type=float, required=True)
+    ap.add_argument('--eps', type=float, default=1e4)
     ap.add_argument('--nodes', type=int, default=4)
     ap.add_argument('--mass', type=float, default=50.0)
     ap.add_argument('--v0', type=float, default=1.0)
     ap.add_argument('--gap0', type=float, default=0.01)
     ap.add_argument('--vtol', type=float, default=1e-12)
     ap.add_argument('--ptol', type=float, default=1e-3)
+    ap.add_argument('--lagrange', action='store_true',
+                    help='Lagrange multipliers: assert no penetration (gap >= 0 at every line)')
     a = ap.parse_args()
     rows = []
     with open(a.outdir + '/emcstat') as f:
@@ -47,7 +49,13 @@ def main():
     ok = abs(v1) <= a.vtol * a.v0 and abs(v2 - a.v0) <= a.vtol * a.v0
     if not ok:
         print('FAIL velocities not exchanged to %.1e' % a.vtol)
-    if not abs(pen - pen_exact) <= a.ptol * pen_exact:
+    if a.lagrange:
+        gmin = min((x2[i] - x1[i]) - 50.0 for i in range(len(rows)))
+        print('emc_bars_check: Lagrange: smallest gap %.6e' % gmin)
+        if gmin < 0.0:
+            print('FAIL penetration with Lagrange multipliers')
+            ok = False
+    elif not abs(pen - pen_exact) <= a.ptol * pen_exact:
         print('FAIL penetration off by more than %.1e relative' % a.ptol)
         ok = False
     return 0 if ok else 1

@@ -17,6 +17,10 @@
 !> does exactly the work f . (s(n+1) - s(n)), so the contact work is -(U(g1) - U(g0)): kinetic
 !> plus penalty energy is conserved; f parallel to x_S(n+1/2) - x_P(n+1/2) conserves angular
 !> momentum, and +-f conserves linear momentum.
+!> Lagrange multiplier pairs (FORM 2; DYNA3D style, report art. 1 eq. 7-9; Laursen & Chawla
+!> 1997): f = lam nu with lam >= 0 found by the solver so that the algorithmic gap does not
+!> change over the step, g(n+1) = g(n) (the discrete gap rate is zero): the contact does no
+!> work (energy conserved, no stored energy) and, with g(n) >= 0, nothing penetrates.
 module dx_emc_contact
    use dx_kinds, only: wp
    use dx_emc_types, only: emc_system_t
@@ -41,6 +45,8 @@ module dx_emc_contact
       real(wp) :: s(3) = 0.0_wp     !< slave material point, body frame
       real(wp) :: rs = 0.0_wp       !< slave radius (0: a node)
       real(wp) :: g0 = 0.0_wp, g1 = 0.0_wp, ubar = 0.0_wp
+      integer :: il = 0             !< index of its Lagrange multiplier (0: penalty pair)
+      real(wp) :: lam = 0.0_wp      !< Lagrange multiplier (force along nu, >= 0)
       logical :: carried = .false.  !< g(n) is the algorithmic gap carried from the last step
       real(wp) :: g0c = 0.0_wp      !< that gap
       real(wp) :: n1(3) = 0.0_wp    !< master normal at n+1 (spatial), to match the next step
@@ -272,7 +278,11 @@ contains
             eps = es%defs(p%def)%eps
             u0 = upen(eps, g0)
             u1 = upen(eps, g1)
-            if (abs(g1 - g0) > 1.0e-10_wp*max(abs(g0), abs(g1))) then
+            if (p%il > 0) then
+               ! Lagrange multiplier: f = lam nu, no stored energy (constraint g1 = g0)
+               u0 = 0.0_wp; u1 = 0.0_wp
+               ub = -p%lam
+            else if (abs(g1 - g0) > 1.0e-10_wp*max(abs(g0), abs(g1))) then
                ub = (u1 - u0)/(g1 - g0)
             else
                ub = eps*min(0.5_wp*(g0 + g1), 0.0_wp)

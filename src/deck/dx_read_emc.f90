@@ -13,7 +13,7 @@ module dx_read_emc
                             std_widths, data_start
    use dx_deck_registry, only: registry_t
    use dx_model_input, only: model_input_t
-   use dx_emc_types, only: emc_contact_in_t, emc_sphere_in_t, EMC_PENALTY
+   use dx_emc_types, only: emc_contact_in_t, emc_sphere_in_t, EMC_PENALTY, EMC_LAGRANGE
    implicit none
    private
    public :: register_emc
@@ -98,14 +98,13 @@ contains
          call get_int(deck, blk, ic, 4, w, 'FORM', EMC_PENALTY, c%form, error)
          if (allocated(error)) return
          if (c%form == 0) c%form = EMC_PENALTY
-         if (c%form /= EMC_PENALTY) then
-            call field_error(deck, blk, ic, 4, w, 'FORM', 'only FORM = 1 (penalty with the '// &
-               'algorithmic gap) is implemented; FORM = 2 (Lagrange multipliers) is not yet, '// &
-               'got '//str(c%form), error); return
+         if (c%form /= EMC_PENALTY .and. c%form /= EMC_LAGRANGE) then
+            call field_error(deck, blk, ic, 4, w, 'FORM', '1 (penalty with the algorithmic '// &
+               'gap) or 2 (Lagrange multipliers), got '//str(c%form), error); return
          end if
          call get_real(deck, blk, ic, 5, w, 'EPS', 0.0_wp, c%eps, error)
          if (allocated(error)) return
-         if (.not. (c%eps > 0.0_wp)) then
+         if (c%form == EMC_PENALTY .and. .not. (c%eps > 0.0_wp)) then
             call field_error(deck, blk, ic, 5, w, 'EPS', 'the penalty stiffness [force/length]'// &
                              ' must be > 0', error); return
          end if

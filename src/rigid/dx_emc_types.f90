@@ -11,9 +11,9 @@ module dx_emc_types
    implicit none
    private
    public :: emc_input_t, emc_contact_in_t, emc_sphere_in_t, emc_system_t, emc_pair_def_t, &
-             emc_facet_t, emc_sphere_t, EMC_PENALTY
+             emc_facet_t, emc_sphere_t, EMC_PENALTY, EMC_LAGRANGE
 
-   integer, parameter :: EMC_PENALTY = 1
+   integer, parameter :: EMC_PENALTY = 1, EMC_LAGRANGE = 2
 
    !> *DYNX_CONSERVING_CONTACT as read
    type :: emc_contact_in_t

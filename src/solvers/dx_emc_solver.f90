@@ -20,7 +20,7 @@ module dx_emc_solver
    use dx_model, only: model_t
    use dx_output, only: output_t
    use dx_dense_solve, only: dense_solve
-   use dx_emc_types, only: emc_system_t
+   use dx_emc_types, only: emc_system_t, EMC_LAGRANGE
    use dx_emc_contact, only: emc_kin_t, emc_pair_t, emc_select_pairs, emc_contact_forces, &
                              emc_inv3
    implicit none
@@ -143,7 +143,11 @@ contains
       real(wp), intent(out) :: res(:), scale, upen1
       type(emc_kin_t) :: k(st%nb)
       real(wp) :: rc(3, 3, st%nb), fo(3, st%nb), to(3, st%nb), upen0
-      integer :: b, o
+      integer :: b, o, i, nb6
+      nb6 = 6*st%nb
+      do i = 1, npair
+         if (pairs(i)%il > 0) pairs(i)%lam = y(nb6 + pairs(i)%il)/dt
+      end do
       call kinematics(st, dt, y, k, rc)
       call emc_contact_forces(es, k, pairs, npair, fo, to, upen0, upen1)
       scale = tiny(1.0_wp)
@@ -155,6 +159,11 @@ contains
                             dt*matmul(transpose(k(b)%r1), to(:, b))
          scale = max(scale, st%m(b)*norm2(st%v(:, b)), st%m(b)*norm2(y(o + 1:o + 3)), &
                      norm2(st%j(:, b)*st%w(:, b)), dt*norm2(fo(:, b)), dt*norm2(to(:, b)))
+      end do
+      ! Lagrange pairs: g(n+1) - g(n) = 0, scaled to momentum by the smaller mass over dt
+      do i = 1, npair
+         if (pairs(i)%il > 0) res(nb6 + pairs(i)%il) = &
+            min(st%m(pairs(i)%sb), st%m(pairs(i)%mb))*(pairs(i)%g1 - pairs(i)%g0)/dt
       end do
    end subroutine residual
 
@@ -214,26 +223,28 @@ contains
    end subroutine drop_new_penetrated
 
    !> Newton iterations for one step of size dt from st; on success st advances to t + dt.
+   !> Unknowns: (v1, W1) per body, then one impulse dt*lam per Lagrange pair.
    subroutine emc_try_step(es, st, dt, rep, ok)
       type(emc_system_t), intent(in) :: es
       type(emc_state_t), intent(inout) :: st
       real(wp), intent(in) :: dt
       type(newton_report_t), intent(out) :: rep
       logical, intent(out) :: ok
-      real(wp) :: y(6*st%nb), yp(6*st%nb), r(6*st%nb), rp(6*st%nb), jac(6*st%nb, 6*st%nb), &
-                  scale, sp, rn, rn_old, h, upen1, ymag, rc(3, 3, st%nb)
+      real(wp), allocatable :: y(:), yp(:), r(:), rp(:), jac(:, :), ysave(:)
+      real(wp) :: scale, sp, rn, rn_old, h, upen1, ymag, rc(3, 3, st%nb)
       type(emc_pair_t), allocatable :: pairs(:), cand(:)
       type(emc_kin_t) :: k(st%nb)
-      integer :: n, it, jc, b, npair, ncand, pass, i, q, nact
-      logical :: found, added
+      integer :: nb6, n, it, jc, b, npair, ncand, pass, i, q, nact, nl
+      logical :: found, changed
       logical, allocatable :: used(:)
       character(:), allocatable :: msg
-      n = 6*st%nb
+      nb6 = 6*st%nb
+      allocate(ysave(nb6))
       do b = 1, st%nb
-         y(6*b - 5:6*b - 3) = st%v(:, b)
-         y(6*b - 2:6*b) = st%w(:, b)
+         ysave(6*b - 5:6*b - 3) = st%v(:, b)
+         ysave(6*b - 2:6*b) = st%w(:, b)
       end do
-      call kinematics(st, dt, y, k, rc)
+      call kinematics(st, dt, ysave, k, rc)
       call emc_select_pairs(es, k, pairs, npair)
       nact = 0
       if (allocated(st%act)) nact = size(st%act)
@@ -243,8 +254,17 @@ contains
       call drop_new_penetrated(pairs, npair)
       ok = .false.
       rep%iters = 0
-      do pass = 1, 6
+      do pass = 1, 8
+         call number_multipliers(pairs, npair, nl)
+         n = nb6 + nl
+         if (allocated(y)) deallocate(y, yp, r, rp, jac)
+         allocate(y(n), yp(n), r(n), rp(n), jac(n, n))
+         y(1:nb6) = ysave
+         do i = 1, npair
+            if (pairs(i)%il > 0) y(nb6 + pairs(i)%il) = dt*pairs(i)%lam
+         end do
          rn_old = huge(1.0_wp)
+         ok = .false.
          do it = 1, es%maxit + 1
             call residual(es, st, dt, y, pairs, npair, r, scale, upen1)
             rn = maxval(abs(r))/scale
@@ -278,12 +298,26 @@ contains
                str(es%maxit)//' iterations'
             return
          end if
+         ysave = y(1:nb6)
+         changed = .false.
+         ! Lagrange pairs pulling (lam < 0) are released
+         q = 0
+         do i = 1, npair
+            if (pairs(i)%il > 0) then
+               pairs(i)%lam = y(nb6 + pairs(i)%il)/dt
+               if (pairs(i)%lam < 0.0_wp) then
+                  changed = .true.; cycle
+               end if
+            end if
+            q = q + 1
+            if (q /= i) pairs(q) = pairs(i)
+         end do
+         npair = q
          ! contacts the converged step reaches that the predictor did not see
-         call kinematics(st, dt, y, k, rc)
+         call kinematics(st, dt, ysave, k, rc)
          call emc_select_pairs(es, k, cand, ncand)
          call carry_gaps(es, st, k, cand, ncand, used)
          call drop_new_penetrated(cand, ncand)
-         added = .false.
          do i = 1, ncand
             found = .false.
             do q = 1, npair
@@ -293,31 +327,57 @@ contains
                    pairs(q)%kind /= 1) found = .true.
             end do
             if (found) cycle
-            call residual(es, st, dt, y, cand(i:i), 1, rp, sp, upen1)
+            cand(i)%il = 0
+            call residual(es, st, dt, ysave, cand(i:i), 1, rp, sp, upen1)
             if (cand(i)%g1 >= 0.0_wp) cycle
             if (npair == size(pairs)) pairs = [pairs, pairs]
             npair = npair + 1
             pairs(npair) = cand(i)
-            added = .true.
+            pairs(npair)%lam = 0.0_wp
+            changed = .true.
          end do
-         if (.not. added) exit
+         if (.not. changed) exit
          ok = .false.
       end do
       if (.not. ok) then
-         rep%msg = 'the contact set did not settle in 6 passes'
+         rep%msg = 'the contact set did not settle in 8 passes'
          return
       end if
+      call number_multipliers(pairs, npair, nl)
+      deallocate(y)
+      allocate(y(nb6 + nl))
+      y(1:nb6) = ysave
+      do i = 1, npair
+         if (pairs(i)%il > 0) y(nb6 + pairs(i)%il) = dt*pairs(i)%lam
+      end do
+      if (allocated(r)) deallocate(r)
+      allocate(r(nb6 + nl))
       call residual(es, st, dt, y, pairs, npair, r, scale, upen1)
-      call kinematics(st, dt, y, k, rc)
+      call kinematics(st, dt, ysave, k, rc)
       do b = 1, st%nb
          st%xc(:, b) = k(b)%xc1
          st%r(:, :, b) = k(b)%r1
-         st%v(:, b) = y(6*b - 5:6*b - 3)
-         st%w(:, b) = y(6*b - 2:6*b)
+         st%v(:, b) = ysave(6*b - 5:6*b - 3)
+         st%w(:, b) = ysave(6*b - 2:6*b)
       end do
       st%upen = upen1
       rep%npair = npair
-      st%act = pack(pairs(1:npair), pairs(1:npair)%g1 < 0.0_wp)
+      st%act = pack(pairs(1:npair), pairs(1:npair)%g1 < 0.0_wp .and. pairs(1:npair)%il == 0)
+   contains
+      subroutine number_multipliers(list, m, cnt)
+         type(emc_pair_t), intent(inout) :: list(:)
+         integer, intent(in) :: m
+         integer, intent(out) :: cnt
+         integer :: j
+         cnt = 0
+         do j = 1, m
+            list(j)%il = 0
+            if (es%defs(list(j)%def)%form == EMC_LAGRANGE) then
+               cnt = cnt + 1
+               list(j)%il = cnt
+            end if
+         end do
+      end subroutine number_multipliers
    end subroutine emc_try_step
 
    !> One step of size dt, halved up to es%nfail times when Newton fails.
