@@ -171,15 +171,16 @@ def ballbox(a):
     out += ['*SECTION_SOLID', '%10d%10d' % (1, 1)]
     part(out, 1, 'ball', 1000.0)
     part(out, 2, 'box', 200.0)
-    ivel(out, 1, 2.0, (3.0, 2.0, 1.0), (0.0, 0.0, 0.0), (0.0, 0.6, 0.8))
-    ivel(out, 2, 0.2, (-0.1, 0.05, 0.0), (0.0, 0.0, 0.0), (1.0, 0.0, 0.0))
+    ivel(out, 1, a.spin, tuple(a.ball_v), tuple(a.ball_x), (0.0, 0.6, 0.8))
+    if not a.box_still:
+        ivel(out, 2, 0.2, (-0.1, 0.05, 0.0), (0.0, 0.0, 0.0), (1.0, 0.0, 0.0))
     if a.explicit:
         out += ['*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE', '%10d%10d%10d%10d' % (1, 2, 3, 3),
                 '%10s' % '0', '%10s%10s' % (fmt(a.sfs), fmt(a.sfs))]
     else:
         out += ['*DYNX_CONSERVING_CONTACT', '%10d%10d%10d%10d%10s' % (1, 1, 2, 1, fmt(a.eps))]
         out += ['*DYNX_RIGID_SPHERE', '%10d%10d%10s' % (1, 0, '1e-6')]
-    bn, be = cube_ball(a.n, 0.3, (0.0, 0.0, 0.0), 0, 0, 1)
+    bn, be = cube_ball(a.n, 0.3, tuple(a.ball_x), 0, 0, 1)
     xn, xe = hollow_box(1.0, 0.5, 4, len(bn), len(be), 2)
     write_mesh(out, bn + xn, be + xe)
     out.append('*END')
@@ -268,6 +269,12 @@ def main():
     ap.add_argument('--v0', type=float, default=1.0, help='bars: impact speed')
     ap.add_argument('--nfail', type=int, default=0, help='bars: NFAIL (step halvings)')
     ap.add_argument('--lagrange', action='store_true', help='bars: FORM 2')
+    ap.add_argument('--ball-x', type=float, nargs=3, default=[0.0, 0.0, 0.0],
+                    help='ballbox: ball centre')
+    ap.add_argument('--ball-v', type=float, nargs=3, default=[3.0, 2.0, 1.0],
+                    help='ballbox: ball velocity')
+    ap.add_argument('--spin', type=float, default=2.0, help='ballbox: ball spin [rad/s]')
+    ap.add_argument('--box-still', action='store_true', help='ballbox: box at rest')
     a = ap.parse_args()
     out = {'ballbox': ballbox, 'ballshell': ballshell, 'bars': bars}[a.scene](a)
     print('\n'.join(out))
