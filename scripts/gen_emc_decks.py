@@ -200,7 +200,8 @@ def ballshell(a):
     part(out, 1, 'ball', 0.274)
     part(out, 2, 'shell', 0.743)
     ivel(out, 1, 0.0, (0.0, 1.0, 0.0), (0.0, 0.0, 0.0), (1.0, 0.0, 0.0))
-    out += ['*DYNX_CONSERVING_CONTACT', '%10d%10d%10d%10d%10s' % (1, 1, 2, 1, fmt(a.eps))]
+    out += ['*DYNX_CONSERVING_CONTACT', '%10d%10d%10d%10d%10s%10s%10s' % (
+        1, 1, 2, 1, fmt(a.eps), fmt(a.fs), fmt(a.dfric))]
     if not a.faceted:
         out += ['*DYNX_RIGID_SPHERE', '%10d%10d%10s' % (1, 0, '1e-6'),
                 '%10d%10d%10s' % (2, 1, '1e-6')]
@@ -275,6 +276,8 @@ def main():
                     help='ballbox: ball velocity')
     ap.add_argument('--spin', type=float, default=2.0, help='ballbox: ball spin [rad/s]')
     ap.add_argument('--box-still', action='store_true', help='ballbox: box at rest')
+    ap.add_argument('--fs', type=float, default=0.0, help='ballshell: Coulomb coefficient')
+    ap.add_argument('--dfric', type=float, default=0.0, help='ballshell: regularization slip')
     a = ap.parse_args()
     out = {'ballbox': ballbox, 'ballshell': ballshell, 'bars': bars}[a.scene](a)
     print('\n'.join(out))

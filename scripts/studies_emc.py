@@ -206,7 +206,7 @@ plot "%s/emc_ball_shell_smooth.dat" u 1:3 w l t "ball", "" u 1:4 w l t "shell", 
            '![Lx](emc_ball_shell_lx.png)', '']
 
     # ---- scene 3: bars, penetration against stiffness and dt; extreme speeds
-    md += ['## Scene 3: two rigid bars, penalty (seed Fig. 4)', '',
+    md += ['## Scene 3: two rigid bars (seed Fig. 4)', '',
            'Analytic largest penetration v0 sqrt(M/(2 N EPS)), M = 50 kg, N = 4 nodes. '
            'NFAIL = 12 (step halving).', '',
            '| EPS [N/m] | v0 [m/s] | dt [s] | contact time [s] | max penetration | analytic | '
@@ -215,7 +215,7 @@ plot "%s/emc_ball_shell_smooth.dat" u 1:3 w l t "ball", "" u 1:4 w l t "shell", 
     for eps in (1e3, 1e6, 1e9, 1e12):
         for v0 in (1.0, 1e3):
             for dt in (1e-3, 1e-1):
-                tend = 2.0 if v0 == 1.0 else 0.01
+                tend = 2.0 if v0 == 1.0 else 0.05
                 steps = max(int(round(tend / dt)), 2)
                 dtx = tend / steps if dt * 2 > tend else dt
                 r = run('bars', 'bars_%g_%g_%g' % (eps, v0, dt), '--dt', dtx, '--steps',
@@ -234,18 +234,44 @@ plot "%s/emc_ball_shell_smooth.dat" u 1:3 w l t "ball", "" u 1:4 w l t "shell", 
                 md.append('| %.0e | %g | %.1e | %.1e | %.3e | %.3e | %.2e | %.6f | %.1e | %d | '
                           '%.2f |' % (eps, v0, dtx, tc, pen, pen_a, v1, v2, r.get('de', 0),
                                       r.get('cuts', 0), r['wall']))
-    r = run('bars', 'bars_fig4', '--dt', 1e-3, '--steps', 2000, '--eps', 1e4, '--outdt', 0)
-    with open(os.path.join(DATA, 'emc_bars_fig4.dat'), 'w') as f:
-        f.write('# time u_left u_right\n')
-        rows = emcstat(r['dir'])
-        for q in rows:
-            f.write('%g %g %g\n' % (q[1], q[14] - rows[0][14], q[20] - rows[0][20]))
+    md += ['', 'Lagrange multipliers (FORM 2): smallest gap over the run (no penetration when '
+           '>= 0) and velocities after the impact.', '',
+           '| v0 [m/s] | dt [s] | smallest gap [m] | v_left after | v_right after | energy | '
+           'wall [s] |', '|---|---|---|---|---|---|---|']
+    for v0 in (1.0, 1e3):
+        for dt in (1e-3, 1e-2, 1e-1):
+            tend = 2.0 if v0 == 1.0 else 0.05
+            steps = max(int(round(tend / dt)), 2)
+            dtx = tend / steps if dt * 2 > tend else dt
+            r = run('bars', 'barsL_%g_%g' % (v0, dt), '--lagrange', '--dt', dtx, '--steps',
+                    steps, '--v0', v0, '--outdt', 0)
+            if r['rc'] != 0:
+                md.append('| %g | %.1e | failed | | | | |' % (v0, dtx))
+                continue
+            rows = emcstat(r['dir'])
+            gmin = min(q[20] - q[14] - 50.0 for q in rows)
+            h = rows[-1][1] - rows[-2][1]
+            md.append('| %g | %.1e | %.3e | %.2e | %.6f | %.1e | %.2f |' % (
+                v0, dtx, gmin, (rows[-1][14] - rows[-2][14]) / h,
+                (rows[-1][20] - rows[-2][20]) / h, r.get('de', 0), r['wall']))
+    for tag, extra in (('penalty', ['--eps', 1e4]), ('lagrange', ['--lagrange'])):
+        r = run('bars', 'bars_fig4_' + tag, '--dt', 1e-3, '--steps', 2000, '--outdt', 0,
+                *extra)
+        with open(os.path.join(DATA, 'emc_bars_fig4_%s.dat' % tag), 'w') as f:
+            f.write('# time u_left u_right\n')
+            rows = emcstat(r['dir'])
+            for q in rows:
+                f.write('%g %g %g\n' % (q[1], q[14] - rows[0][14], q[20] - rows[0][20]))
     gnuplot('''set terminal pngcairo size 800,500
 set output "%s/emc_bars_fig4.png"
 set xlabel "time [s]"; set ylabel "displacement [m]"
-set title "two rigid bars, penalty 1e4 N/m per node, dt 1e-3 s"
-plot "%s/emc_bars_fig4.dat" u 1:2 w l t "left bar", "" u 1:3 w l t "right bar"
-''' % (DOC, DATA))
+set key left
+set title "two rigid bars (seed Fig. 4): penalty 1e4 N/m per node and Lagrange, dt 1e-3 s"
+plot "%s/emc_bars_fig4_lagrange.dat" u 1:2 w l lw 2 t "left bar, Lagrange", \\
+     "" u 1:3 w l lw 2 t "right bar, Lagrange", \\
+     "%s/emc_bars_fig4_penalty.dat" u 1:2 w l dt 2 t "left bar, penalty", \\
+     "" u 1:3 w l dt 2 t "right bar, penalty"
+''' % (DOC, DATA, DATA))
     md += ['', '![bars](emc_bars_fig4.png)', '']
     with open(os.path.join(DOC, 'emc.md'), 'w') as f:
         f.write('\n'.join(md) + '\n')

@@ -50,6 +50,7 @@ module dx_emc_contact
       logical :: carried = .false.  !< g(n) is the algorithmic gap carried from the last step
       real(wp) :: g0c = 0.0_wp      !< that gap
       real(wp) :: n1(3) = 0.0_wp    !< master normal at n+1 (spatial), to match the next step
+      real(wp) :: dfr = 0.0_wp      !< work of the friction force over the step (<= 0)
    end type emc_pair_t
 
 contains
@@ -76,6 +77,37 @@ contains
       real(wp) :: c(3)
       c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
    end function cross
+
+   !> Regularized Coulomb friction at the contact point c (mid configuration; arm rc from the
+   !> slave's mid centre): the slave and master material points whose mid positions are both c
+   !> (X = A^-1 (c - xm) on each body) slip by d = dx_S - dx_M over the step; with the
+   !> tangential part dt = d - (d.n)n, f = -mu N dt/sqrt(|dt|^2 + delta^2) on the slave and -f
+   !> on the master. Both act at the same point, so linear and angular momentum are conserved;
+   !> the work f.d = -mu N |dt|^2/sqrt(|dt|^2 + delta^2) <= 0 (Cayley arms make it exact), so
+   !> friction only dissipates. (Regularized Coulomb law: Wriggers 2006, Computational Contact
+   !> Mechanics, sec. 5.2.)
+   subroutine friction(mu, delta, fn, nu, ks, km, rc, fs, ts, fm, tm, work)
+      real(wp), intent(in) :: mu, delta, fn, nu(3), rc(3)
+      type(emc_kin_t), intent(in) :: ks, km
+      real(wp), intent(inout) :: fs(3), ts(3), fm(3), tm(3)
+      real(wp), intent(out) :: work
+      real(wp) :: c(3), xs(3), xm(3), d(3), dtan(3), nh(3), f(3), rm(3), del
+      c = ks%xm + rc
+      xs = matmul(ks%ainv, c - ks%xm)
+      xm = matmul(km%ainv, c - km%xm)
+      d = (ks%xc1 + matmul(ks%r1, xs) - ks%xc0 - matmul(ks%r0, xs)) - &
+          (km%xc1 + matmul(km%r1, xm) - km%xc0 - matmul(km%r0, xm))
+      nh = nu/max(norm2(nu), tiny(1.0_wp))
+      dtan = d - dot_product(d, nh)*nh
+      del = max(delta, 1.0e-12_wp)
+      f = -mu*fn*dtan/sqrt(dot_product(dtan, dtan) + del*del)
+      rm = c - km%xm
+      fs = fs + f
+      ts = ts + cross(rc, f)
+      fm = fm - f
+      tm = tm - cross(rm, f)
+      work = dot_product(f, d)
+   end subroutine friction
 
    !> U(g) = eps/2 <-g>^2
    pure real(wp) function upen(eps, g)
@@ -297,6 +329,10 @@ contains
             to(:, p%sb) = to(:, p%sb) + cross(rsm, f)
             fo(:, p%mb) = fo(:, p%mb) - f
             to(:, p%mb) = to(:, p%mb) - cross(rmm, f)
+            if (es%defs(p%def)%fs > 0.0_wp .and. ub < 0.0_wp) &
+               call friction(es%defs(p%def)%fs, es%defs(p%def)%dfric, -ub*norm2(nu), nu, &
+                             k(p%sb), k(p%mb), rsm - p%rs*nu/max(norm2(nu), tiny(1.0_wp)), &
+                             fo(:, p%sb), to(:, p%sb), fo(:, p%mb), to(:, p%mb), p%dfr)
          end associate
       end do
    end subroutine emc_contact_forces

@@ -1,6 +1,6 @@
 !> Readers for the energy-momentum conserving rigid-body contact keywords:
 !>   *CONTROL_IMPLICIT_GENERAL  IMFLAG DT0 (IMFORM NSBS IGS CNSTN FORM ZERO_V read past)
-!>   *DYNX_CONSERVING_CONTACT   CID SPID MPID FORM EPS
+!>   *DYNX_CONSERVING_CONTACT   CID SPID MPID FORM EPS FS DFRIC
 !>   *DYNX_RIGID_SPHERE         PID SIDE TOL
 !>   *DYNX_CONSERVING_CONTROL   MAXIT RTOL NFAIL OUTDT
 !> Field meanings: docs/keywords.md, section "Conserving rigid-body contact";
@@ -77,7 +77,7 @@ contains
       integer :: w(8), i0, ic
       w = std_widths(blk, 8)
       i0 = data_start(blk)
-      call need_card(deck, blk, i0, 'CID SPID MPID FORM EPS', error)
+      call need_card(deck, blk, i0, 'CID SPID MPID FORM EPS FS DFRIC', error)
       if (allocated(error)) return
       do ic = i0, blk%n
          c%ifile = blk%ifile
@@ -107,6 +107,18 @@ contains
          if (c%form == EMC_PENALTY .and. .not. (c%eps > 0.0_wp)) then
             call field_error(deck, blk, ic, 5, w, 'EPS', 'the penalty stiffness [force/length]'// &
                              ' must be > 0', error); return
+         end if
+         call get_real(deck, blk, ic, 6, w, 'FS', 0.0_wp, c%fs, error)
+         if (allocated(error)) return
+         if (c%fs < 0.0_wp) then
+            call field_error(deck, blk, ic, 6, w, 'FS', 'the Coulomb friction coefficient '// &
+                             'must be >= 0', error); return
+         end if
+         call get_real(deck, blk, ic, 7, w, 'DFRIC', 0.0_wp, c%dfric, error)
+         if (allocated(error)) return
+         if (c%dfric < 0.0_wp) then
+            call field_error(deck, blk, ic, 7, w, 'DFRIC', 'the friction regularization '// &
+                             'slip must be >= 0', error); return
          end if
          if (.not. allocated(inp%emc%contacts)) allocate(inp%emc%contacts(0))
          inp%emc%contacts = [inp%emc%contacts, c]

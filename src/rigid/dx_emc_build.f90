@@ -111,6 +111,8 @@ contains
                es%defs(i)%cid = c%cid
                es%defs(i)%eps = c%eps
                es%defs(i)%form = c%form
+               es%defs(i)%fs = c%fs
+               es%defs(i)%dfric = c%dfric
             end associate
          end do
          ! the conserving solver advances free rigid bodies only

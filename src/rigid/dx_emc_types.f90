@@ -19,6 +19,7 @@ module dx_emc_types
    type :: emc_contact_in_t
       integer :: cid = 0, spid = 0, mpid = 0, form = EMC_PENALTY
       real(wp) :: eps = 0.0_wp
+      real(wp) :: fs = 0.0_wp, dfric = 0.0_wp   !< Coulomb coefficient, regularization slip
       integer :: ifile = 0, line = 0
    end type emc_contact_in_t
 
@@ -63,6 +64,7 @@ module dx_emc_types
       integer :: sb = 0, mb = 0            !< slave and master body (dense)
       real(wp) :: eps = 0.0_wp
       integer :: form = EMC_PENALTY
+      real(wp) :: fs = 0.0_wp, dfric = 0.0_wp
    end type emc_pair_def_t
 
    type :: emc_system_t
