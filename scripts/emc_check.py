@@ -24,6 +24,11 @@ def main():
     ap.add_argument('--ltol', type=float, default=1e-12)
     ap.add_argument('--min-contact', type=int, default=1)
     ap.add_argument('--lx-exchange', type=float, default=0.0)
+    ap.add_argument('--dissipative', type=float, default=None, metavar='LOSS',
+                    help='friction: instead of --etol, energy non-increasing at every line '
+                         '(to 1e-13 E0) and E_end <= (1 - LOSS) E0')
+    ap.add_argument('--plateau', type=float, default=None, metavar='TOL',
+                    help='with --dissipative: |E_end - E_mid|/E0 <= TOL (rolling reached)')
     ap.add_argument('--lfloor', type=float, default=0.0,
                     help='floor of the angular momentum scale (absolute), for L0 = 0')
     a = ap.parse_args()
@@ -55,6 +60,21 @@ def main():
           'linear momentum %.3e, angular momentum %.3e; body 1 Lx range %.4e'
           % (len(rows), nb, ncont, de, dp, dl, exch))
     ok = True
+    if a.dissipative is not None:
+        rise = max((rows[i + 1][4] - rows[i][4]) / e0 for i in range(len(rows) - 1))
+        loss = 1.0 - rows[-1][4] / e0
+        print('emc_check: dissipative: largest energy rise per line %.3e, loss %.4f'
+              % (rise, loss))
+        if rise > 1e-13:
+            print('FAIL energy rises by %.3e' % rise); ok = False
+        if loss < a.dissipative:
+            print('FAIL energy loss %.4f < %.4f' % (loss, a.dissipative)); ok = False
+        if a.plateau is not None:
+            pl = abs(rows[-1][4] - rows[len(rows) // 2][4]) / e0
+            print('emc_check: energy change over the second half %.3e' % pl)
+            if pl > a.plateau:
+                print('FAIL no plateau: %.3e > %.1e' % (pl, a.plateau)); ok = False
+        de = 0.0
     if not de <= a.etol:
         print('FAIL energy drift %.3e > %.1e' % (de, a.etol)); ok = False
     if not dp <= a.ptol:
