@@ -160,10 +160,14 @@ contains
          scale = max(scale, st%m(b)*norm2(st%v(:, b)), st%m(b)*norm2(y(o + 1:o + 3)), &
                      norm2(st%j(:, b)*st%w(:, b)), dt*norm2(fo(:, b)), dt*norm2(to(:, b)))
       end do
-      ! Lagrange pairs: g(n+1) - g(n) = 0, scaled to momentum by the smaller mass over dt
+      ! Lagrange pairs: g(n+1) - g(n) = 0, scaled to momentum by the smaller mass over dt.
+      ! Redundant constraints (4 corners of a flat face on a facet have rank 3) make the
+      ! Newton matrix singular; a compliance of 1e-12 on the impulse (g1 - g0 = -1e-12
+      ! dt*lam dt/m) picks the distribution and costs at most 1e-12 of the impulse's energy.
       do i = 1, npair
          if (pairs(i)%il > 0) res(nb6 + pairs(i)%il) = &
-            min(st%m(pairs(i)%sb), st%m(pairs(i)%mb))*(pairs(i)%g1 - pairs(i)%g0)/dt
+            min(st%m(pairs(i)%sb), st%m(pairs(i)%mb))*(pairs(i)%g1 - pairs(i)%g0)/dt + &
+            1.0e-12_wp*y(nb6 + pairs(i)%il)
       end do
    end subroutine residual
 
