@@ -213,13 +213,17 @@ contains
    !> A facet pair that does not continue a penetration must start outside (g(n) >= 0): a
    !> node already behind a facet plane at t(n) is behind the body's far side or was
    !> penetrating at t = 0 (initial penetrations are ignored until they open).
-   subroutine drop_new_penetrated(list, n)
+   subroutine drop_new_penetrated(es, list, n)
+      type(emc_system_t), intent(in) :: es
       type(emc_pair_t), intent(inout) :: list(:)
       integer, intent(inout) :: n
       integer :: i, m
       m = 0
       do i = 1, n
-         if (list(i)%kind == 1 .and. .not. list(i)%carried .and. list(i)%g0 < 0.0_wp) cycle
+         ! (a touching point, g(n) = 0 to round-off of the facet size, counts as outside)
+         if (list(i)%kind == 1 .and. .not. list(i)%carried) then
+            if (list(i)%g0 < -1.0e-12_wp*es%facets(list(i)%facet)%rad) cycle
+         end if
          m = m + 1
          if (m /= i) list(m) = list(i)
       end do
@@ -238,7 +242,8 @@ contains
       real(wp) :: scale, sp, rn, rn_old, h, upen1, ymag, rc(3, 3, st%nb)
       type(emc_pair_t), allocatable :: pairs(:), cand(:)
       type(emc_kin_t) :: k(st%nb)
-      integer :: nb6, n, it, jc, b, npair, ncand, pass, i, q, nact, nl
+      integer :: nb6, n, it, jc, b, npair, ncand, pass, i, q, nact, nl, nrel
+      type(emc_pair_t), allocatable :: rel(:)
       logical :: found, changed
       logical, allocatable :: used(:)
       character(:), allocatable :: msg
@@ -255,9 +260,11 @@ contains
       allocate(used(nact))
       used = .false.
       call carry_gaps(es, st, k, pairs, npair, used)
-      call drop_new_penetrated(pairs, npair)
+      call drop_new_penetrated(es, pairs, npair)
       ok = .false.
       rep%iters = 0
+      allocate(rel(4))
+      nrel = 0
       do pass = 1, 8
          call number_multipliers(pairs, npair, nl)
          n = nb6 + nl
@@ -304,13 +311,17 @@ contains
          end if
          ysave = y(1:nb6)
          changed = .false.
-         ! Lagrange pairs pulling (lam < 0) are released
+         ! Lagrange pairs pulling (lam < 0) are released (and not taken again in this step)
          q = 0
          do i = 1, npair
             if (pairs(i)%il > 0) then
                pairs(i)%lam = y(nb6 + pairs(i)%il)/dt
                if (pairs(i)%lam < 0.0_wp) then
-                  changed = .true.; cycle
+                  changed = .true.
+                  nrel = nrel + 1
+                  if (nrel > size(rel)) rel = [rel, rel]
+                  rel(nrel) = pairs(i)
+                  cycle
                end if
             end if
             q = q + 1
@@ -321,7 +332,7 @@ contains
          call kinematics(st, dt, ysave, k, rc)
          call emc_select_pairs(es, k, cand, ncand)
          call carry_gaps(es, st, k, cand, ncand, used)
-         call drop_new_penetrated(cand, ncand)
+         call drop_new_penetrated(es, cand, ncand)
          do i = 1, ncand
             found = .false.
             do q = 1, npair
@@ -329,6 +340,10 @@ contains
                    pairs(q)%facet == cand(i)%facet) found = .true.
                if (pairs(q)%def == cand(i)%def .and. pairs(q)%src == cand(i)%src .and. &
                    pairs(q)%kind /= 1) found = .true.
+            end do
+            do q = 1, nrel
+               if (rel(q)%def == cand(i)%def .and. rel(q)%src == cand(i)%src .and. &
+                   rel(q)%facet == cand(i)%facet) found = .true.
             end do
             if (found) cycle
             cand(i)%il = 0
