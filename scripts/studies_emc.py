@@ -246,7 +246,8 @@ plot "%s/emc_ball_shell_smooth.dat" u 1:3 w l t "ball", "" u 1:4 w l t "shell", 
             r = run('bars', 'barsL_%g_%g' % (v0, dt), '--lagrange', '--dt', dtx, '--steps',
                     steps, '--v0', v0, '--outdt', 0)
             if r['rc'] != 0:
-                md.append('| %g | %.1e | failed | | | | |' % (v0, dtx))
+                md.append('| %g | %.1e | failed: %s | | | | |' % (
+                    v0, dtx, r['log'].strip().splitlines()[-1][13:130]))
                 continue
             rows = emcstat(r['dir'])
             gmin = min(q[20] - q[14] - 50.0 for q in rows)
