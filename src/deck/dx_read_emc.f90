@@ -1,5 +1,6 @@
 !> Readers for the energy-momentum conserving rigid-body contact keywords:
 !>   *CONTROL_IMPLICIT_GENERAL  IMFLAG DT0 (IMFORM NSBS IGS CNSTN FORM ZERO_V read past)
+!>   *CONTROL_IMPLICIT_DYNAMICS IMASS GAMMA BETA (TDYBIR TDYDTH TDYBUR IRATE) ALPHA
 !>   *DYNX_CONSERVING_CONTACT   CID SPID MPID FORM EPS FS DFRIC
 !>   *DYNX_RIGID_SPHERE         PID SIDE TOL
 !>   *DYNX_CONSERVING_CONTROL   MAXIT RTOL NFAIL OUTDT
@@ -24,6 +25,7 @@ contains
    subroutine register_emc(reg)
       type(registry_t), intent(inout) :: reg
       call reg%add('CONTROL_IMPLICIT_GENERAL', read_implicit_general)
+      call reg%add('CONTROL_IMPLICIT_DYNAMICS', read_implicit_dynamics)
       call reg%add('DYNX_CONSERVING_CONTACT', read_emc_contact)
       call reg%add('DYNX_RIGID_SPHERE', read_emc_sphere)
       call reg%add('DYNX_CONSERVING_CONTROL', read_emc_control)
@@ -66,6 +68,51 @@ contains
       inp%emc%imp_ifile = blk%ifile
       inp%emc%imp_line = blk%cards(i0)%line
    end subroutine read_implicit_general
+
+   !> IMASS GAMMA BETA TDYBIR TDYDTH TDYBUR IRATE ALPHA: the conserving solver is the
+   !> energy-momentum midpoint rule, the conserving member of the Newmark family
+   !> (GAMMA = 1/2, BETA = 1/4, ALPHA = 0); the dissipative HHT/generalized-alpha variants are
+   !> not implemented, so other values are rejected rather than silently ignored.
+   subroutine read_implicit_dynamics(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: w(8), i0, imass
+      real(wp) :: gamma, beta, alpha
+      w = std_widths(blk, 8)
+      i0 = data_start(blk)
+      call need_card(deck, blk, i0, 'IMASS GAMMA BETA ...', error)
+      if (allocated(error)) return
+      call get_int(deck, blk, i0, 1, w, 'IMASS', 1, imass, error)
+      if (allocated(error)) return
+      if (imass /= 1) then
+         call field_error(deck, blk, i0, 1, w, 'IMASS', 'only 1 (dynamic analysis) is '// &
+                          'supported, got '//str(imass), error); return
+      end if
+      call get_real(deck, blk, i0, 2, w, 'GAMMA', 0.5_wp, gamma, error)
+      if (allocated(error)) return
+      if (gamma == 0.0_wp) gamma = 0.5_wp
+      if (gamma /= 0.5_wp) then
+         call field_error(deck, blk, i0, 2, w, 'GAMMA', 'the conserving solver is the '// &
+            'midpoint rule (GAMMA = 0.5); numerical damping (GAMMA > 0.5) is not implemented', &
+            error); return
+      end if
+      call get_real(deck, blk, i0, 3, w, 'BETA', 0.25_wp, beta, error)
+      if (allocated(error)) return
+      if (beta == 0.0_wp) beta = 0.25_wp
+      if (beta /= 0.25_wp) then
+         call field_error(deck, blk, i0, 3, w, 'BETA', 'the conserving solver is the '// &
+            'midpoint rule (BETA = 0.25); other values are not implemented', error); return
+      end if
+      call get_real(deck, blk, i0, 8, w, 'ALPHA', 0.0_wp, alpha, error)
+      if (allocated(error)) return
+      if (alpha /= 0.0_wp) then
+         call field_error(deck, blk, i0, 8, w, 'ALPHA', 'the HHT/generalized-alpha '// &
+            'dissipative variant is not implemented (ALPHA = 0: exact conservation)', error)
+         return
+      end if
+   end subroutine read_implicit_dynamics
 
    !> CID SPID MPID FORM EPS: a conserving contact between two rigid parts.
    subroutine read_emc_contact(deck, blk, inp, error)
