@@ -133,6 +133,7 @@ studies: deps
 	@$(MAKE) --no-print-directory all
 	@sh scripts/studies.sh
 	@sh scripts/studies_contact.sh
+	@/usr/bin/python3 scripts/studies_emc.py
 
 clean:
 	rm -rf build bin out

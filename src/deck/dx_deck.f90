@@ -18,6 +18,8 @@ module dx_deck
    use dx_read_contact, only: register_contact
    use dx_contact_build, only: build_contact
    use dx_read_restart, only: register_restart
+   use dx_read_emc, only: register_emc
+   use dx_emc_build, only: build_emc
    use dx_model, only: model_t
    use dx_model_input, only: model_input_t, input_init
    use dx_model_build, only: build_model
@@ -39,6 +41,7 @@ contains
       call register_rigid(reg)
       call register_contact(reg)
       call register_restart(reg)
+      call register_emc(reg)
    end function new_registry
 
    !> Read the deck at path into model (x0, v0, blocks, parts, ...; the solver allocates
@@ -54,6 +57,7 @@ contains
       model%deck_file = path
       call build_model(inp, model, error)
       if (.not. allocated(error)) call build_contact(inp, model, error)
+      if (.not. allocated(error)) call build_emc(inp, model, error)
    end subroutine read_deck
 
    !> Read the deck at path into the unresolved model input (no build).

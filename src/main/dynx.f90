@@ -4,7 +4,7 @@
 program dynx
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use dx_kinds, only: wp
-   use dx_error, only: error_t, EXIT_INPUT, EXIT_CHECKPOINT, exit_process
+   use dx_error, only: error_t, set_error, EXIT_INPUT, EXIT_CHECKPOINT, exit_process
    use dx_strings, only: str, rstr
    use dx_log, only: log_info, log_error, log_summary
    use dx_model, only: model_t
@@ -16,6 +16,7 @@ program dynx
    use dx_signals, only: signals_install, SIGTERM_NUM, SIGINT_NUM, SIGUSR1_NUM
    use dx_io_sys, only: sys_epoch_seconds
    use dx_timer, only: wall_time
+   use dx_emc_solver, only: run_emc
    implicit none
    character(:), allocatable :: deck, outdir, arg, val, rfile, rdeck
    type(model_t) :: model
@@ -99,6 +100,11 @@ program dynx
       call log_summary()
       stop
    end if
+   if (len(rfile) > 0 .and. allocated(model%emc)) then
+      call set_error(error, 'restart (-r) is not available for decks that use the conserving '// &
+         'rigid-body solver (*DYNX_CONSERVING_CONTACT): its dumps are not written yet', EXIT_INPUT)
+      call die(error)
+   end if
    call init_state(model)
    if (len(rfile) > 0) then
       call restart_read(model, rfile, error)
@@ -115,7 +121,11 @@ program dynx
       call out%open(model, outdir, error)
    end if
    if (allocated(error)) call die(error)
-   call run_explicit(model, opts, out, error)
+   if (allocated(model%emc)) then
+      call run_emc(model, outdir, out, error)
+   else
+      call run_explicit(model, opts, out, error)
+   end if
    call log_summary()
    if (allocated(error)) then
       if (error%code == EXIT_CHECKPOINT) then

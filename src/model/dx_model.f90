@@ -10,6 +10,7 @@ module dx_model
    use dx_load_body, only: body_load_t
    use dx_contact_types, only: contact_set_t
    use dx_run_state, only: run_state_t, restart_ctrl_t
+   use dx_emc_types, only: emc_system_t
    implicit none
    private
    public :: model_t, elem_block_t, part_t, section_t, hourglass_t, node_set_t, part_set_t, &
@@ -207,6 +208,7 @@ module dx_model
       type(body_load_t), allocatable :: body_loads(:)   !< *LOAD_BODY_X/Y/Z (dx_load_body)
       type(rigid_system_t), allocatable :: rigid        !< rigid bodies (dx_rigid_types)
       type(contact_set_t), allocatable :: contact   !< *CONTACT_* state (none: not allocated)
+      type(emc_system_t), allocatable :: emc        !< conserving rigid contact (dx_emc_types)
       ! --- controls and output
       type(control_t) :: ctrl
       type(database_t) :: db

@@ -11,6 +11,7 @@ module dx_model_input
    use dx_load_body, only: body_load_in_t
    use dx_contact_input, only: contact_input_t
    use dx_run_state, only: restart_ctrl_t
+   use dx_emc_types, only: emc_input_t
    implicit none
    private
    public :: model_input_t, string_t, origin_t, label_list_t, segment_list_t, spc_in_t, &
@@ -150,6 +151,7 @@ module dx_model_input
       type(label_list_t), allocatable :: hist_node_sets(:)  !< *DATABASE_HISTORY_NODE_SET cards
       type(contact_input_t) :: contact     !< *CONTACT_*, *CONTROL_CONTACT, *DATABASE_RCFORC
       type(restart_ctrl_t) :: rst          !< *DATABASE_BINARY_D3DUMP/RUNRSF
+      type(emc_input_t) :: emc             !< conserving rigid-body contact (dx_emc_types)
    end type model_input_t
 
 contains

@@ -1,0 +1,339 @@
+!> Energy- and momentum-conserving penalty contact between rigid bodies over one time step
+!> t(n) -> t(n+1) of the Simo-Wong midpoint rule (dx_emc_solver).
+!>
+!> Penalty potential U(g) = eps/2 <-g>^2. Each contact pair has a slave material point S (a
+!> surface node, or the centre of a spherically smoothed body with radius r) and a master
+!> material point P found at the mid configuration x(n+1/2) = (x(n) + x(n+1))/2:
+!>   facet:  nu = (n(n) + n(n+1))/2 (the master facet normal at n and n+1), P the point of the
+!>           facet plane with x_S(n+1/2) - x_P(n+1/2) parallel to nu;
+!>   sphere: nu = +-(d(n) + d(n+1))/(|d(n)| + |d(n+1)|), d = x_S - x_C (centres), P = C.
+!> Algorithmic gap (Laursen & Chawla 1997, IJNME 40:863-886; LLNL FY97 Thrust Area Report,
+!> art. 1, eq. 4): g(n+1) = g(n) + nu . ((x_S(n+1) - x_S(n)) - (x_P(n+1) - x_P(n))); with these
+!> nu it equals the exact gap of the plane or sphere (the identity (n1 - n0).(n1 + n0) = 0 and
+!> |d1| - |d0| = (d1 + d0).(d1 - d0)/(|d1| + |d0|)).
+!> Force on the slave f = -Ubar nu, Ubar = (U(g1) - U(g0))/(g1 - g0) (discrete gradient;
+!> Armero & Petocz 1998, CMAME 158:269-300), -f on the master, applied at the mid arms
+!> r = (s(n) + s(n+1))/2 of S and P. With the Cayley update of dx_emc_solver the torque r x f
+!> does exactly the work f . (s(n+1) - s(n)), so the contact work is -(U(g1) - U(g0)): kinetic
+!> plus penalty energy is conserved; f parallel to x_S(n+1/2) - x_P(n+1/2) conserves angular
+!> momentum, and +-f conserves linear momentum.
+!> Lagrange multiplier pairs (FORM 2; DYNA3D style, report art. 1 eq. 7-9; Laursen & Chawla
+!> 1997): f = lam nu with lam >= 0 found by the solver so that the algorithmic gap does not
+!> change over the step, g(n+1) = g(n) (the discrete gap rate is zero): the contact does no
+!> work (energy conserved, no stored energy) and, with g(n) >= 0, nothing penetrates.
+module dx_emc_contact
+   use dx_kinds, only: wp
+   use dx_emc_types, only: emc_system_t
+   implicit none
+   private
+   public :: emc_kin_t, emc_pair_t, emc_select_pairs, emc_contact_forces, emc_inv3, &
+             PAIR_FACET, PAIR_SPHERE_OUT, PAIR_SPHERE_IN
+
+   integer, parameter :: PAIR_FACET = 1, PAIR_SPHERE_OUT = 2, PAIR_SPHERE_IN = 3
+
+   !> kinematics of one body over the step
+   type :: emc_kin_t
+      real(wp) :: xc0(3), xc1(3), xm(3)
+      real(wp) :: r0(3, 3), r1(3, 3), a(3, 3), ainv(3, 3)   !< A = (R0 + R1)/2
+   end type emc_kin_t
+
+   type :: emc_pair_t
+      integer :: kind = PAIR_FACET
+      integer :: def = 0, sb = 0, mb = 0
+      integer :: src = 0            !< slave node index in snodes (0: sphere centre)
+      integer :: facet = 0          !< master facet (PAIR_FACET)
+      real(wp) :: s(3) = 0.0_wp     !< slave material point, body frame
+      real(wp) :: rs = 0.0_wp       !< slave radius (0: a node)
+      real(wp) :: g0 = 0.0_wp, g1 = 0.0_wp, ubar = 0.0_wp
+      integer :: il = 0             !< index of its Lagrange multiplier (0: penalty pair)
+      real(wp) :: lam = 0.0_wp      !< Lagrange multiplier (force along nu, >= 0)
+      logical :: carried = .false.  !< g(n) is the algorithmic gap carried from the last step
+      real(wp) :: g0c = 0.0_wp      !< that gap
+      real(wp) :: n1(3) = 0.0_wp    !< master normal at n+1 (spatial), to match the next step
+      real(wp) :: dfr = 0.0_wp      !< work of the friction force over the step (<= 0)
+   end type emc_pair_t
+
+contains
+
+   !> Inverse of a 3x3 matrix (A = (R0 + R1)/2 is well conditioned for |Theta| < 2).
+   pure function emc_inv3(a) result(b)
+      real(wp), intent(in) :: a(3, 3)
+      real(wp) :: b(3, 3), det
+      b(1, 1) = a(2, 2)*a(3, 3) - a(2, 3)*a(3, 2)
+      b(1, 2) = a(1, 3)*a(3, 2) - a(1, 2)*a(3, 3)
+      b(1, 3) = a(1, 2)*a(2, 3) - a(1, 3)*a(2, 2)
+      b(2, 1) = a(2, 3)*a(3, 1) - a(2, 1)*a(3, 3)
+      b(2, 2) = a(1, 1)*a(3, 3) - a(1, 3)*a(3, 1)
+      b(2, 3) = a(1, 3)*a(2, 1) - a(1, 1)*a(2, 3)
+      b(3, 1) = a(2, 1)*a(3, 2) - a(2, 2)*a(3, 1)
+      b(3, 2) = a(1, 2)*a(3, 1) - a(1, 1)*a(3, 2)
+      b(3, 3) = a(1, 1)*a(2, 2) - a(1, 2)*a(2, 1)
+      det = a(1, 1)*b(1, 1) + a(1, 2)*b(2, 1) + a(1, 3)*b(3, 1)
+      b = b/det
+   end function emc_inv3
+
+   pure function cross(a, b) result(c)
+      real(wp), intent(in) :: a(3), b(3)
+      real(wp) :: c(3)
+      c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
+   end function cross
+
+   !> Regularized Coulomb friction at the contact point c (mid configuration; arm rc from the
+   !> slave's mid centre): the slave and master material points whose mid positions are both c
+   !> (X = A^-1 (c - xm) on each body) slip by d = dx_S - dx_M over the step; with the
+   !> tangential part dt = d - (d.n)n, f = -mu N dt/sqrt(|dt|^2 + delta^2) on the slave and -f
+   !> on the master. Both act at the same point, so linear and angular momentum are conserved;
+   !> the work f.d = -mu N |dt|^2/sqrt(|dt|^2 + delta^2) <= 0 (Cayley arms make it exact), so
+   !> friction only dissipates. (Regularized Coulomb law: Wriggers 2006, Computational Contact
+   !> Mechanics, sec. 5.2.)
+   subroutine friction(mu, delta, fn, nu, ks, km, rc, fs, ts, fm, tm, work)
+      real(wp), intent(in) :: mu, delta, fn, nu(3), rc(3)
+      type(emc_kin_t), intent(in) :: ks, km
+      real(wp), intent(inout) :: fs(3), ts(3), fm(3), tm(3)
+      real(wp), intent(out) :: work
+      real(wp) :: c(3), xs(3), xm(3), d(3), dtan(3), nh(3), f(3), rm(3), del
+      c = ks%xm + rc
+      xs = matmul(ks%ainv, c - ks%xm)
+      xm = matmul(km%ainv, c - km%xm)
+      d = (ks%xc1 + matmul(ks%r1, xs) - ks%xc0 - matmul(ks%r0, xs)) - &
+          (km%xc1 + matmul(km%r1, xm) - km%xc0 - matmul(km%r0, xm))
+      nh = nu/max(norm2(nu), tiny(1.0_wp))
+      dtan = d - dot_product(d, nh)*nh
+      del = max(delta, 1.0e-12_wp)
+      f = -mu*fn*dtan/sqrt(dot_product(dtan, dtan) + del*del)
+      rm = c - km%xm
+      fs = fs + f
+      ts = ts + cross(rc, f)
+      fm = fm - f
+      tm = tm - cross(rm, f)
+      work = dot_product(f, d)
+   end subroutine friction
+
+   !> U(g) = eps/2 <-g>^2
+   pure real(wp) function upen(eps, g)
+      real(wp), intent(in) :: eps, g
+      upen = 0.5_wp*eps*min(g, 0.0_wp)**2
+   end function upen
+
+   !> Gap at n and n+1, normal nu and master point P (body frame of mb) of a pair, for the
+   !> kinematics k. inside: P lies inside the facet polygon (facet pairs).
+   subroutine pair_geometry(es, k, p, g0, g1, nu, xp, rsm, rmm, inside)
+      type(emc_system_t), intent(in) :: es
+      type(emc_kin_t), intent(in) :: k(:)
+      type(emc_pair_t), intent(in) :: p
+      real(wp), intent(out) :: g0, g1, nu(3), xp(3), rsm(3), rmm(3)
+      logical, intent(out) :: inside
+      real(wp) :: xs0(3), xs1(3), xsm(3), n0(3), n1(3), u(3), q(3), alpha, pn0(3), pn1(3), &
+                  d0(3), d1(3), den, e(3), c(3), sgn
+      integer :: j, jn, np
+      associate (ks => k(p%sb), km => k(p%mb))
+         xs0 = ks%xc0 + matmul(ks%r0, p%s)
+         xs1 = ks%xc1 + matmul(ks%r1, p%s)
+         xsm = 0.5_wp*(xs0 + xs1)
+         rsm = xsm - ks%xm
+         inside = .true.
+         select case (p%kind)
+         case (PAIR_FACET)
+            associate (f => es%facets(p%facet))
+               n0 = matmul(km%r0, f%n)
+               n1 = matmul(km%r1, f%n)
+               nu = 0.5_wp*(n0 + n1)
+               u = matmul(km%ainv, xsm - km%xm)
+               q = matmul(km%ainv, nu)
+               alpha = (dot_product(f%n, u) - dot_product(f%n, f%c))/dot_product(f%n, q)
+               xp = u - alpha*q
+               pn0 = km%xc0 + matmul(km%r0, xp)
+               pn1 = km%xc1 + matmul(km%r1, xp)
+               rmm = 0.5_wp*(pn0 + pn1) - km%xm
+               g0 = dot_product(n0, xs0 - pn0) - p%rs
+               if (p%carried) g0 = p%g0c
+               g1 = g0 + dot_product(nu, (xs1 - xs0) - (pn1 - pn0))
+               np = f%np
+               do j = 1, np
+                  jn = mod(j, np) + 1
+                  e = f%p(:, jn) - f%p(:, j)
+                  c = cross(e, xp - f%p(:, j))
+                  if (dot_product(c, f%n) < -1.0e-12_wp*dot_product(e, e)) inside = .false.
+               end do
+            end associate
+         case default
+            associate (sm => es%sphere(p%mb))
+               xp = sm%c
+               pn0 = km%xc0 + matmul(km%r0, xp)
+               pn1 = km%xc1 + matmul(km%r1, xp)
+               rmm = 0.5_wp*(pn0 + pn1) - km%xm
+               d0 = xs0 - pn0
+               d1 = xs1 - pn1
+               den = norm2(d0) + norm2(d1)
+               sgn = 1.0_wp
+               if (p%kind == PAIR_SPHERE_IN) sgn = -1.0_wp
+               if (den > 0.0_wp) then
+                  nu = sgn*(d0 + d1)/den
+               else
+                  nu = 0.0_wp
+               end if
+               if (p%kind == PAIR_SPHERE_IN) then
+                  g0 = sm%r - p%rs - norm2(d0)
+               else
+                  g0 = norm2(d0) - p%rs - sm%r
+               end if
+               if (p%carried) g0 = p%g0c
+               g1 = g0 + dot_product(nu, (xs1 - xs0) - (pn1 - pn0))
+            end associate
+         end select
+      end associate
+   end subroutine pair_geometry
+
+   !> The candidate pairs of the step for the kinematics k: every slave point of every
+   !> definition against the master facets it projects into (one facet per plane) or the
+   !> master sphere, kept when g(n) or g(n+1) < 0 and g(n) > -dpen (not through the body).
+   subroutine emc_select_pairs(es, k, pairs, npair)
+      type(emc_system_t), intent(in) :: es
+      type(emc_kin_t), intent(in) :: k(:)
+      type(emc_pair_t), allocatable, intent(inout) :: pairs(:)
+      integer, intent(out) :: npair
+      integer :: id, sb, mb, i, i1, i2, f, q, nsp
+      real(wp) :: g0, g1, nu(3), xp(3), rsm(3), rmm(3), dpen, xb(3), xb1(3), trav
+      logical :: inside, dup
+      type(emc_pair_t) :: p
+      if (.not. allocated(pairs)) allocate(pairs(16))
+      npair = 0
+      do id = 1, size(es%defs)
+         sb = es%defs(id)%sb
+         mb = es%defs(id)%mb
+         if (es%sphere(sb)%r > 0.0_wp .and. es%sphere(sb)%side == 0) then
+            i1 = 0; i2 = 0       ! the slave's sphere centre only
+         else
+            i1 = es%sn_ptr(sb); i2 = es%sn_ptr(sb + 1) - 1
+         end if
+         do i = i1, i2
+            p%def = id; p%sb = sb; p%mb = mb; p%src = i
+            if (i == 0) then
+               p%s = es%sphere(sb)%c; p%rs = es%sphere(sb)%r
+            else
+               p%s = es%snodes(:, i); p%rs = 0.0_wp
+            end if
+            if (es%sphere(mb)%r > 0.0_wp) then
+               p%kind = PAIR_SPHERE_OUT
+               if (es%sphere(mb)%side == 1) p%kind = PAIR_SPHERE_IN
+               p%facet = 0
+               call pair_geometry(es, k, p, g0, g1, nu, xp, rsm, rmm, inside)
+               dpen = 0.5_wp*es%sphere(mb)%r
+               if (min(g0, g1) < 0.0_wp .and. g0 > -dpen) call push(p)
+               cycle
+            end if
+            nsp = npair
+            ! cheap filter in the master's frame at t(n): distance to the facet plane and to
+            ! its centroid, against the travel over the step
+            xb = matmul(transpose(k(mb)%r0), k(sb)%xc0 + matmul(k(sb)%r0, p%s) - k(mb)%xc0)
+            xb1 = matmul(transpose(k(mb)%r1), k(sb)%xc1 + matmul(k(sb)%r1, p%s) - k(mb)%xc1)
+            trav = norm2(xb1 - xb)
+            do f = es%fac_ptr(mb), es%fac_ptr(mb + 1) - 1
+               associate (fc => es%facets(f))
+                  if (dot_product(fc%n, xb - fc%c) - p%rs > trav + 1.0e-9_wp*fc%rad) cycle
+                  if (norm2(xb - fc%c) > 2.0_wp*fc%rad + p%rs + trav) cycle
+               end associate
+               p%kind = PAIR_FACET
+               p%facet = f
+               call pair_geometry(es, k, p, g0, g1, nu, xp, rsm, rmm, inside)
+               if (.not. inside) cycle
+               dpen = facet_depth(es, f)
+               if (.not. (min(g0, g1) < 0.0_wp .and. g0 > -dpen)) cycle
+               p%g0 = g0
+               dup = .false.
+               do q = nsp + 1, npair
+                  if (same_plane(es, pairs(q)%facet, f)) dup = .true.
+               end do
+               if (.not. dup) call push(p)
+            end do
+         end do
+      end do
+   contains
+      subroutine push(pp)
+         type(emc_pair_t), intent(in) :: pp
+         type(emc_pair_t), allocatable :: t(:)
+         if (npair == size(pairs)) then
+            allocate(t(2*npair))
+            t(1:npair) = pairs(1:npair)
+            call move_alloc(t, pairs)
+         end if
+         npair = npair + 1
+         pairs(npair) = pp
+      end subroutine push
+   end subroutine emc_select_pairs
+
+   !> how deep a slave point may be behind a facet and still count as penetrating it:
+   !> half the facet's smallest edge
+   pure real(wp) function facet_depth(es, f) result(d)
+      type(emc_system_t), intent(in) :: es
+      integer, intent(in) :: f
+      integer :: j
+      d = huge(1.0_wp)
+      associate (fc => es%facets(f))
+         do j = 1, fc%np
+            d = min(d, norm2(fc%p(:, mod(j, fc%np) + 1) - fc%p(:, j)))
+         end do
+      end associate
+      d = 0.5_wp*d
+   end function facet_depth
+
+   pure logical function same_plane(es, f1, f2)
+      type(emc_system_t), intent(in) :: es
+      integer, intent(in) :: f1, f2
+      real(wp) :: l
+      associate (a => es%facets(f1), b => es%facets(f2))
+         l = norm2(a%p(:, 1) - a%p(:, 2))
+         same_plane = dot_product(a%n, b%n) > 1.0_wp - 1.0e-10_wp .and. &
+                      abs(dot_product(a%n, a%c) - dot_product(b%n, b%c)) < 1.0e-9_wp*l
+      end associate
+   end function same_plane
+
+   !> Resultant force F and spatial torque T about each body's mid centre from the pairs
+   !> (kinematics k); stores g0, g1 and the discrete derivative in the pairs; upen1 = sum
+   !> U(g(n+1)), upen0 = sum U(g(n)).
+   subroutine emc_contact_forces(es, k, pairs, npair, fo, to, upen0, upen1)
+      type(emc_system_t), intent(in) :: es
+      type(emc_kin_t), intent(in) :: k(:)
+      type(emc_pair_t), intent(inout) :: pairs(:)
+      integer, intent(in) :: npair
+      real(wp), intent(out) :: fo(:, :), to(:, :), upen0, upen1
+      integer :: ip
+      real(wp) :: g0, g1, nu(3), xp(3), rsm(3), rmm(3), eps, ub, f(3), u0, u1
+      logical :: inside
+      fo = 0.0_wp
+      to = 0.0_wp
+      upen0 = 0.0_wp
+      upen1 = 0.0_wp
+      do ip = 1, npair
+         associate (p => pairs(ip))
+            call pair_geometry(es, k, p, g0, g1, nu, xp, rsm, rmm, inside)
+            eps = es%defs(p%def)%eps
+            u0 = upen(eps, g0)
+            u1 = upen(eps, g1)
+            if (p%il > 0) then
+               ! Lagrange multiplier: f = lam nu, no stored energy (constraint g1 = g0)
+               u0 = 0.0_wp; u1 = 0.0_wp
+               ub = -p%lam
+            else if (abs(g1 - g0) > 1.0e-10_wp*max(abs(g0), abs(g1))) then
+               ub = (u1 - u0)/(g1 - g0)
+            else
+               ub = eps*min(0.5_wp*(g0 + g1), 0.0_wp)
+            end if
+            p%g0 = g0; p%g1 = g1; p%ubar = ub
+            p%n1 = 0.0_wp
+            if (p%kind == PAIR_FACET) p%n1 = matmul(k(p%mb)%r1, es%facets(p%facet)%n)
+            upen0 = upen0 + u0
+            upen1 = upen1 + u1
+            f = -ub*nu
+            fo(:, p%sb) = fo(:, p%sb) + f
+            to(:, p%sb) = to(:, p%sb) + cross(rsm, f)
+            fo(:, p%mb) = fo(:, p%mb) - f
+            to(:, p%mb) = to(:, p%mb) - cross(rmm, f)
+            if (es%defs(p%def)%fs > 0.0_wp .and. ub < 0.0_wp) &
+               call friction(es%defs(p%def)%fs, es%defs(p%def)%dfric, -ub*norm2(nu), nu, &
+                             k(p%sb), k(p%mb), rsm - p%rs*nu/max(norm2(nu), tiny(1.0_wp)), &
+                             fo(:, p%sb), to(:, p%sb), fo(:, p%mb), to(:, p%mb), p%dfr)
+         end associate
+      end do
+   end subroutine emc_contact_forces
+end module dx_emc_contact

@@ -1,0 +1,246 @@
+!> Readers for the energy-momentum conserving rigid-body contact keywords:
+!>   *CONTROL_IMPLICIT_GENERAL  IMFLAG DT0 (IMFORM NSBS IGS CNSTN FORM ZERO_V read past)
+!>   *CONTROL_IMPLICIT_DYNAMICS IMASS GAMMA BETA (TDYBIR TDYDTH TDYBUR IRATE) ALPHA
+!>   *DYNX_CONSERVING_CONTACT   CID SPID MPID FORM EPS FS DFRIC
+!>   *DYNX_RIGID_SPHERE         PID SIDE TOL
+!>   *DYNX_CONSERVING_CONTROL   MAXIT RTOL NFAIL OUTDT
+!> Field meanings: docs/keywords.md, section "Conserving rigid-body contact";
+!> formulation: docs/conserving-contact.md (Simo & Wong 1991; Laursen & Chawla 1997).
+module dx_read_emc
+   use dx_kinds, only: wp
+   use dx_error, only: error_t
+   use dx_strings, only: str
+   use dx_deck_cards, only: deck_t, block_t, get_int, get_real, field_error, block_error, &
+                            std_widths, data_start
+   use dx_deck_registry, only: registry_t
+   use dx_model_input, only: model_input_t
+   use dx_emc_types, only: emc_contact_in_t, emc_sphere_in_t, EMC_PENALTY, EMC_LAGRANGE
+   implicit none
+   private
+   public :: register_emc
+
+contains
+
+   !> Add the conserving-contact keywords to the registry.
+   subroutine register_emc(reg)
+      type(registry_t), intent(inout) :: reg
+      call reg%add('CONTROL_IMPLICIT_GENERAL', read_implicit_general)
+      call reg%add('CONTROL_IMPLICIT_DYNAMICS', read_implicit_dynamics)
+      call reg%add('DYNX_CONSERVING_CONTACT', read_emc_contact)
+      call reg%add('DYNX_RIGID_SPHERE', read_emc_sphere)
+      call reg%add('DYNX_CONSERVING_CONTROL', read_emc_control)
+   end subroutine register_emc
+
+   subroutine need_card(deck, blk, i0, what, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      integer, intent(in) :: i0
+      character(*), intent(in) :: what
+      type(error_t), allocatable, intent(out) :: error
+      if (blk%n < i0) call block_error(deck, blk, 0, 'missing card 1 ('//what//')', error)
+   end subroutine need_card
+
+   !> IMFLAG (0 explicit, 1 implicit: the conserving rigid-body solver), DT0 (step size).
+   subroutine read_implicit_general(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: w(8), i0
+      w = std_widths(blk, 8)
+      i0 = data_start(blk)
+      call need_card(deck, blk, i0, 'IMFLAG DT0 ...', error); if (allocated(error)) return
+      call get_int(deck, blk, i0, 1, w, 'IMFLAG', 0, inp%emc%imflag, error)
+      if (allocated(error)) return
+      if (inp%emc%imflag /= 0 .and. inp%emc%imflag /= 1) then
+         call field_error(deck, blk, i0, 1, w, 'IMFLAG', 'only 0 (explicit) and 1 '// &
+            '(implicit, conserving rigid-body solver) are supported, got '// &
+            str(inp%emc%imflag), error)
+         return
+      end if
+      call get_real(deck, blk, i0, 2, w, 'DT0', 0.0_wp, inp%emc%dt0, error)
+      if (allocated(error)) return
+      if (inp%emc%imflag == 1 .and. .not. (inp%emc%dt0 > 0.0_wp)) then
+         call field_error(deck, blk, i0, 2, w, 'DT0', 'the implicit step size must be > 0', &
+                          error)
+         return
+      end if
+      inp%emc%imp_ifile = blk%ifile
+      inp%emc%imp_line = blk%cards(i0)%line
+   end subroutine read_implicit_general
+
+   !> IMASS GAMMA BETA TDYBIR TDYDTH TDYBUR IRATE ALPHA: the conserving solver is the
+   !> energy-momentum midpoint rule, the conserving member of the Newmark family
+   !> (GAMMA = 1/2, BETA = 1/4, ALPHA = 0); the dissipative HHT/generalized-alpha variants are
+   !> not implemented, so other values are rejected rather than silently ignored.
+   subroutine read_implicit_dynamics(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: w(8), i0, imass
+      real(wp) :: gamma, beta, alpha
+      w = std_widths(blk, 8)
+      i0 = data_start(blk)
+      call need_card(deck, blk, i0, 'IMASS GAMMA BETA ...', error)
+      if (allocated(error)) return
+      call get_int(deck, blk, i0, 1, w, 'IMASS', 1, imass, error)
+      if (allocated(error)) return
+      if (imass /= 1) then
+         call field_error(deck, blk, i0, 1, w, 'IMASS', 'only 1 (dynamic analysis) is '// &
+                          'supported, got '//str(imass), error); return
+      end if
+      call get_real(deck, blk, i0, 2, w, 'GAMMA', 0.5_wp, gamma, error)
+      if (allocated(error)) return
+      if (gamma == 0.0_wp) gamma = 0.5_wp
+      if (gamma /= 0.5_wp) then
+         call field_error(deck, blk, i0, 2, w, 'GAMMA', 'the conserving solver is the '// &
+            'midpoint rule (GAMMA = 0.5); numerical damping (GAMMA > 0.5) is not implemented', &
+            error); return
+      end if
+      call get_real(deck, blk, i0, 3, w, 'BETA', 0.25_wp, beta, error)
+      if (allocated(error)) return
+      if (beta == 0.0_wp) beta = 0.25_wp
+      if (beta /= 0.25_wp) then
+         call field_error(deck, blk, i0, 3, w, 'BETA', 'the conserving solver is the '// &
+            'midpoint rule (BETA = 0.25); other values are not implemented', error); return
+      end if
+      call get_real(deck, blk, i0, 8, w, 'ALPHA', 0.0_wp, alpha, error)
+      if (allocated(error)) return
+      if (alpha /= 0.0_wp) then
+         call field_error(deck, blk, i0, 8, w, 'ALPHA', 'the HHT/generalized-alpha '// &
+            'dissipative variant is not implemented (ALPHA = 0: exact conservation)', error)
+         return
+      end if
+   end subroutine read_implicit_dynamics
+
+   !> CID SPID MPID FORM EPS: a conserving contact between two rigid parts.
+   subroutine read_emc_contact(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      type(emc_contact_in_t) :: c
+      integer :: w(8), i0, ic
+      w = std_widths(blk, 8)
+      i0 = data_start(blk)
+      call need_card(deck, blk, i0, 'CID SPID MPID FORM EPS FS DFRIC', error)
+      if (allocated(error)) return
+      do ic = i0, blk%n
+         c%ifile = blk%ifile
+         c%line = blk%cards(ic)%line
+         call get_int(deck, blk, ic, 1, w, 'CID', 0, c%cid, error); if (allocated(error)) return
+         call get_int(deck, blk, ic, 2, w, 'SPID', 0, c%spid, error)
+         if (allocated(error)) return
+         if (c%spid <= 0) then
+            call field_error(deck, blk, ic, 2, w, 'SPID', 'a slave part id > 0 is required', &
+                             error); return
+         end if
+         call get_int(deck, blk, ic, 3, w, 'MPID', 0, c%mpid, error)
+         if (allocated(error)) return
+         if (c%mpid <= 0 .or. c%mpid == c%spid) then
+            call field_error(deck, blk, ic, 3, w, 'MPID', 'a master part id > 0, other than '// &
+                             'SPID, is required', error); return
+         end if
+         call get_int(deck, blk, ic, 4, w, 'FORM', EMC_PENALTY, c%form, error)
+         if (allocated(error)) return
+         if (c%form == 0) c%form = EMC_PENALTY
+         if (c%form /= EMC_PENALTY .and. c%form /= EMC_LAGRANGE) then
+            call field_error(deck, blk, ic, 4, w, 'FORM', '1 (penalty with the algorithmic '// &
+               'gap) or 2 (Lagrange multipliers), got '//str(c%form), error); return
+         end if
+         call get_real(deck, blk, ic, 5, w, 'EPS', 0.0_wp, c%eps, error)
+         if (allocated(error)) return
+         if (c%form == EMC_PENALTY .and. .not. (c%eps > 0.0_wp)) then
+            call field_error(deck, blk, ic, 5, w, 'EPS', 'the penalty stiffness [force/length]'// &
+                             ' must be > 0', error); return
+         end if
+         call get_real(deck, blk, ic, 6, w, 'FS', 0.0_wp, c%fs, error)
+         if (allocated(error)) return
+         if (c%fs < 0.0_wp) then
+            call field_error(deck, blk, ic, 6, w, 'FS', 'the Coulomb friction coefficient '// &
+                             'must be >= 0', error); return
+         end if
+         call get_real(deck, blk, ic, 7, w, 'DFRIC', 0.0_wp, c%dfric, error)
+         if (allocated(error)) return
+         if (c%dfric < 0.0_wp) then
+            call field_error(deck, blk, ic, 7, w, 'DFRIC', 'the friction regularization '// &
+                             'slip must be >= 0', error); return
+         end if
+         if (.not. allocated(inp%emc%contacts)) allocate(inp%emc%contacts(0))
+         inp%emc%contacts = [inp%emc%contacts, c]
+      end do
+   end subroutine read_emc_contact
+
+   !> PID SIDE TOL: smooth this rigid part as an exact sphere (outer 0 / inner 1 surface).
+   subroutine read_emc_sphere(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      type(emc_sphere_in_t) :: s
+      integer :: w(8), i0, ic
+      w = std_widths(blk, 8)
+      i0 = data_start(blk)
+      call need_card(deck, blk, i0, 'PID SIDE TOL', error); if (allocated(error)) return
+      do ic = i0, blk%n
+         s%ifile = blk%ifile
+         s%line = blk%cards(ic)%line
+         call get_int(deck, blk, ic, 1, w, 'PID', 0, s%pid, error); if (allocated(error)) return
+         if (s%pid <= 0) then
+            call field_error(deck, blk, ic, 1, w, 'PID', 'a part id > 0 is required', error)
+            return
+         end if
+         call get_int(deck, blk, ic, 2, w, 'SIDE', 0, s%side, error)
+         if (allocated(error)) return
+         if (s%side /= 0 .and. s%side /= 1) then
+            call field_error(deck, blk, ic, 2, w, 'SIDE', '0 (outer surface: ball) or 1 '// &
+                             '(inner surface: shell), got '//str(s%side), error); return
+         end if
+         call get_real(deck, blk, ic, 3, w, 'TOL', 1.0e-3_wp, s%tol, error)
+         if (allocated(error)) return
+         if (s%tol == 0.0_wp) s%tol = 1.0e-3_wp
+         if (s%tol < 0.0_wp) then
+            call field_error(deck, blk, ic, 3, w, 'TOL', 'must be > 0', error); return
+         end if
+         if (.not. allocated(inp%emc%spheres)) allocate(inp%emc%spheres(0))
+         inp%emc%spheres = [inp%emc%spheres, s]
+      end do
+   end subroutine read_emc_sphere
+
+   !> MAXIT RTOL NFAIL OUTDT: Newton limits, failure action and emcstat interval.
+   subroutine read_emc_control(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: w(8), i0
+      w = std_widths(blk, 8)
+      i0 = data_start(blk)
+      call need_card(deck, blk, i0, 'MAXIT RTOL NFAIL OUTDT', error)
+      if (allocated(error)) return
+      call get_int(deck, blk, i0, 1, w, 'MAXIT', 20, inp%emc%maxit, error)
+      if (allocated(error)) return
+      if (inp%emc%maxit == 0) inp%emc%maxit = 20
+      if (inp%emc%maxit < 0) then
+         call field_error(deck, blk, i0, 1, w, 'MAXIT', 'must be > 0', error); return
+      end if
+      call get_real(deck, blk, i0, 2, w, 'RTOL', 1.0e-15_wp, inp%emc%rtol, error)
+      if (allocated(error)) return
+      if (inp%emc%rtol == 0.0_wp) inp%emc%rtol = 1.0e-15_wp
+      if (inp%emc%rtol < 0.0_wp) then
+         call field_error(deck, blk, i0, 2, w, 'RTOL', 'must be > 0', error); return
+      end if
+      call get_int(deck, blk, i0, 3, w, 'NFAIL', 0, inp%emc%nfail, error)
+      if (allocated(error)) return
+      if (inp%emc%nfail < 0) then
+         call field_error(deck, blk, i0, 3, w, 'NFAIL', 'must be >= 0 (0: stop at the '// &
+                          'first Newton failure; N: up to N step halvings)', error); return
+      end if
+      call get_real(deck, blk, i0, 4, w, 'OUTDT', 0.0_wp, inp%emc%out_dt, error)
+      if (allocated(error)) return
+      if (inp%emc%out_dt < 0.0_wp) then
+         call field_error(deck, blk, i0, 4, w, 'OUTDT', 'must be >= 0', error); return
+      end if
+   end subroutine read_emc_control
+end module dx_read_emc

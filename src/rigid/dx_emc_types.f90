@@ -1,0 +1,86 @@
+!> Energy-momentum conserving (EMC) rigid-body contact: the input records the deck readers fill
+!> and the state the EMC solver advances. model%emc is allocated only when the deck has
+!> *DYNX_CONSERVING_CONTACT; otherwise nothing here is allocated or called.
+!> Keywords: *CONTROL_IMPLICIT_GENERAL (IMFLAG, DT0), *DYNX_CONSERVING_CONTACT,
+!> *DYNX_RIGID_SPHERE, *DYNX_CONSERVING_CONTROL (docs/conserving-contact.md).
+!> Formulation: Simo & Wong 1991 (IJNME 31:19-52) energy-momentum midpoint rule for the bodies;
+!> penalty contact with the algorithmic gap (Laursen & Chawla 1997, IJNME 40:863-886; Armero &
+!> Petocz 1998, CMAME 158:269-300); LLNL FY97 Engineering Thrust Area Report, article 1.
+module dx_emc_types
+   use dx_kinds, only: wp
+   implicit none
+   private
+   public :: emc_input_t, emc_contact_in_t, emc_sphere_in_t, emc_system_t, emc_pair_def_t, &
+             emc_facet_t, emc_sphere_t, EMC_PENALTY, EMC_LAGRANGE
+
+   integer, parameter :: EMC_PENALTY = 1, EMC_LAGRANGE = 2
+
+   !> *DYNX_CONSERVING_CONTACT as read
+   type :: emc_contact_in_t
+      integer :: cid = 0, spid = 0, mpid = 0, form = EMC_PENALTY
+      real(wp) :: eps = 0.0_wp
+      real(wp) :: fs = 0.0_wp, dfric = 0.0_wp   !< Coulomb coefficient, regularization slip
+      integer :: ifile = 0, line = 0
+   end type emc_contact_in_t
+
+   !> *DYNX_RIGID_SPHERE as read
+   type :: emc_sphere_in_t
+      integer :: pid = 0, side = 0
+      real(wp) :: tol = 1.0e-3_wp
+      integer :: ifile = 0, line = 0
+   end type emc_sphere_in_t
+
+   type :: emc_input_t
+      type(emc_contact_in_t), allocatable :: contacts(:)
+      type(emc_sphere_in_t), allocatable :: spheres(:)
+      integer :: imflag = 0
+      real(wp) :: dt0 = 0.0_wp
+      integer :: imp_ifile = 0, imp_line = 0
+      integer :: maxit = 20            !< Newton iterations per attempt
+      real(wp) :: rtol = 1.0e-15_wp    !< residual tolerance relative to the momentum scale
+      integer :: nfail = 0             !< 0: stop at a Newton failure; > 0: step cuts allowed
+      real(wp) :: out_dt = 0.0_wp      !< emcstat interval (0: every step)
+   end type emc_input_t
+
+   !> a planar facet of a rigid body, in the body (principal) frame: centroid, unit normal
+   !> (outward from the body material) and the corner points for the inside test
+   type :: emc_facet_t
+      real(wp) :: c(3) = 0.0_wp, n(3) = 0.0_wp
+      real(wp) :: p(3, 4) = 0.0_wp
+      integer :: np = 4
+      real(wp) :: rad = 0.0_wp       !< largest distance of a corner from c
+   end type emc_facet_t
+
+   !> a spherically smoothed body: centre in the body frame, radius, outer (0) or inner (1)
+   type :: emc_sphere_t
+      real(wp) :: c(3) = 0.0_wp, r = 0.0_wp
+      integer :: side = 0
+      real(wp) :: fit_err = 0.0_wp
+   end type emc_sphere_t
+
+   !> one conserving contact definition between two rigid bodies
+   type :: emc_pair_def_t
+      integer :: cid = 0
+      integer :: sb = 0, mb = 0            !< slave and master body (dense)
+      real(wp) :: eps = 0.0_wp
+      integer :: form = EMC_PENALTY
+      real(wp) :: fs = 0.0_wp, dfric = 0.0_wp
+   end type emc_pair_def_t
+
+   type :: emc_system_t
+      integer :: nb = 0
+      type(emc_pair_def_t), allocatable :: defs(:)
+      type(emc_facet_t), allocatable :: facets(:)       !< all facets of all bodies
+      integer, allocatable :: fac_ptr(:)                !< (nb+1) facets of body b
+      real(wp), allocatable :: snodes(:, :)             !< surface nodes, body frame
+      integer, allocatable :: sn_ptr(:)                 !< (nb+1) surface nodes of body b
+      type(emc_sphere_t), allocatable :: sphere(:)      !< (nb) r = 0: not spherical
+      real(wp), allocatable :: w(:, :)                  !< (3, nb) body-frame angular velocity
+      real(wp) :: dt = 0.0_wp
+      integer :: maxit = 20, nfail = 0
+      real(wp) :: rtol = 1.0e-15_wp, out_dt = 0.0_wp
+      real(wp) :: upen = 0.0_wp                         !< stored penalty energy at t(n)
+      integer :: newton_total = 0, newton_max = 0, npairs = 0, ncuts = 0
+      real(wp) :: resid_max = 0.0_wp
+   end type emc_system_t
+end module dx_emc_types
