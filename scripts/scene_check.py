@@ -16,6 +16,13 @@ Each prints what it measured and exits 1 when a check fails.
       glstat total energy (kinetic + internal + hourglass + rigid wall + sliding interface,
       i.e. ratio * (E0 + W_ext)) within 1 +- B of its first value after T; with --drift also
       |mean of the last quarter - mean of the first quarter| / E <= D.
+  scene_check.py box OUTDIR [--body 2] [--band B] [--drift D] [--min-bounces N] [--dat FILE]
+      ball in a box (frictionless, no gravity): the mechanical energy is the ball's kinetic
+      energy (rbdout ke) at the output times when no node is in contact (rcforc nactive = 0;
+      in contact the stored penalty energy is not separable). Reports the number of bounces
+      (contact episodes), max |KE/KE0 - 1| over the contact-free samples (<= B), the final
+      drift KE_end/KE0 - 1 (|.| <= D), and the energy ratio band of glstat; --dat writes
+      "time KE/KE0-1 in_contact" rows for plotting.
 """
 import argparse
 import math
@@ -95,6 +102,45 @@ def energy(a):
     return ok
 
 
+def box(a):
+    r = read_rbdout(a.outdir)
+    r = r[r[:, 1] == a.body]
+    rc = np.array([[float(v) for v in l.split()] for l in open(a.outdir + '/rcforc')
+                   if not l.startswith('#')])
+    t, ke = r[:, 0], r[:, 17]
+    # contact state at the rbdout times: the rcforc row at the same output time
+    # (nearest rcforc row; a contact between two output times is caught by either
+    # neighbour being active, so the contact-free samples are free on both sides)
+    i1 = np.clip(np.searchsorted(rc[:, 0], t), 0, len(rc) - 1)
+    i0 = np.clip(i1 - 1, 0, len(rc) - 1)
+    act = (rc[i0, 8] > 0) | (rc[i1, 8] > 0)
+    free = ~act
+    bounces = int(np.sum(act[1:] & ~act[:-1]))
+    dev = ke[free] / ke[0] - 1.0
+    gl = read_glstat(a.outdir)
+    ratio = np.abs(gl[:, 9] - 1.0).max()
+    print('  bounces %d, contact-free samples %d of %d, KE0 %.10g, KE_end %.10g'
+          % (bounces, free.sum(), len(t), ke[0], ke[free][-1]))
+    print('  max |KE/KE0 - 1| %.4e, final KE/KE0 - 1 %+.4e, max |energy ratio - 1| %.4e'
+          % (np.abs(dev).max(), dev[-1], ratio))
+    if a.dat:
+        with open(a.dat, 'w') as f:
+            f.write('# time KE/KE0-1 in_contact\n')
+            for ti, ki, ci in zip(t, ke / ke[0] - 1.0, act):
+                f.write('%.6e %.6e %d\n' % (ti, ki, ci))
+    ok = True
+    if a.min_bounces:
+        ok &= result('box: bounces (at least)', bounces, a.min_bounces, bounces >= a.min_bounces)
+    if a.band is not None:
+        ok &= result('box: max |KE/KE0 - 1| out of contact', np.abs(dev).max(), a.band,
+                     np.abs(dev).max() <= a.band)
+    if a.drift is not None:
+        ok &= result('box: |KE_end/KE0 - 1|', abs(dev[-1]), a.drift, abs(dev[-1]) <= a.drift)
+    if a.ratio is not None:
+        ok &= result('box: max |energy ratio - 1|', ratio, a.ratio, ratio <= a.ratio)
+    return ok
+
+
 def main():
     ap = argparse.ArgumentParser()
     sub = ap.add_subparsers(dest='cmd', required=True)
@@ -115,8 +161,16 @@ def main():
     p.add_argument('--band', type=float, required=True)
     p.add_argument('--after', type=float, default=0.0)
     p.add_argument('--drift', type=float)
+    p = sub.add_parser('box')
+    p.add_argument('outdir')
+    p.add_argument('--body', type=int, default=2)
+    p.add_argument('--band', type=float)
+    p.add_argument('--drift', type=float)
+    p.add_argument('--ratio', type=float)
+    p.add_argument('--min-bounces', type=int, default=0)
+    p.add_argument('--dat')
     a = ap.parse_args()
-    ok = {'incline': incline, 'energy': energy}[a.cmd](a)
+    ok = {'incline': incline, 'energy': energy, 'box': box}[a.cmd](a)
     sys.exit(0 if ok else 1)
 
 
