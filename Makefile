@@ -103,6 +103,7 @@ studies: deps
 	@$(MAKE) --no-print-directory all
 	@sh scripts/studies.sh
 	@sh scripts/studies_contact.sh
+	@sh scripts/studies_scenes.sh
 
 clean:
 	rm -rf build bin out
