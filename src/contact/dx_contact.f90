@@ -36,7 +36,12 @@ contains
       real(wp) :: vmax, t, t0, t1, w2max, dt_est, fsum(3), margin
       integer :: i, j, nd
       real(wp), allocatable :: meff(:)
+      logical :: has_rigid
       t0 = wall_time()
+      ! (model%rigid is unallocated in a deck without rigid bodies; nested tests, no
+      ! short-circuit in Fortran)
+      has_rigid = allocated(model%rigid)
+      if (has_rigid) has_rigid = allocated(model%rigid%node_body)
       t = model%time
       associate (cs => model%contact)
          do i = 1, size(cs%node)
@@ -71,7 +76,7 @@ contains
                         t1 = wall_time()
                         margin = 0.25_wp*mean_extent(p, model%x)
                         margin = max(margin, 4.0_wp*vmax*dt_est)
-                        if (allocated(model%rigid%node_body)) then
+                        if (has_rigid) then
                            ! rigid nodes: the body's inertia (dx_rigid_contact)
                            meff = model%mass
                            call rigid_effective_mass(model%rigid, cs%node, model%x, meff)
@@ -100,12 +105,12 @@ contains
          do i = 1, size(cs%node)
             nd = cs%node(i)
             model%f(:, nd) = model%f(:, nd) + cs%fc(:, nd)
-            if (allocated(model%rigid%node_body)) then
+            if (has_rigid) then
                if (model%rigid%node_body(nd) > 0) cycle   ! rigid nodes: body inertia below
             end if
             if (model%mass(nd) > 0.0_wp) w2max = max(w2max, cs%krow(nd)/model%mass(nd))
          end do
-         if (allocated(model%rigid%node_body)) &
+         if (has_rigid) &
             w2max = max(w2max, rigid_contact_w2(model%rigid, cs%node, cs%krow, model%x))
          cs%dt_limit = huge(1.0_wp)
          if (w2max > 0.0_wp) then
