@@ -20,9 +20,14 @@ echo "# sfs tssfac cycles wall_s bounces max_dev final_dev ratio_band" > $tab
 run() {
     s=$1; f=$2; k=$B/box_s${s}_f$f
     python3 scripts/gen_scene_decks.py box --sfs $s --tssfac $f --tend $TEND --nout $NOUT $k.k > $k.gen
-    t0=$(date +%s.%N)
-    bin/dynx -i $k.k -o $k --status 2 > $k.log 2>&1 || { echo "box sfs=$s tssfac=$f failed"; tail -2 $k.log; return 0; }
-    t1=$(date +%s.%N)
+    if [ -n "${BOX_POST_ONLY:-}" ] && [ -f $k.wall ]; then
+        read t0 t1 < $k.wall          # re-post an earlier run (BOX_POST_ONLY=1)
+    else
+        t0=$(date +%s.%N)
+        bin/dynx -i $k.k -o $k --status 2 > $k.log 2>&1 || { echo "box sfs=$s tssfac=$f failed"; tail -2 $k.log; return 0; }
+        t1=$(date +%s.%N)
+        echo "$t0 $t1" > $k.wall
+    fi
     /usr/bin/python3 scripts/scene_check.py box $k --dat $D/data/ball_in_box_s${s}_f$f.dat > $k.post
     cyc=$(sed -n 's/.*normal termination at cycle \([0-9]*\).*/\1/p' $k.log)
     python3 - "$k.post" "$s" "$f" "$cyc" "$t0" "$t1" >> $tab <<'PY'
@@ -38,7 +43,7 @@ PY
 for f in 0.9 0.6 0.3; do run 1 $f; done
 for s in 0.1 10 100; do run $s 0.9; done
 cat > $D/data/ball_in_box.gp <<'GP'
-set terminal pngcairo size 1000,520
+set terminal pngcairo size 1000,520 noenhanced
 set output 'ball_in_box_energy.png'
 set xlabel 'time [s]'
 set ylabel 'KE/KE0 - 1 (ball, out of contact)'
@@ -65,7 +70,7 @@ echo "max |KE/KE0 - 1| over those samples, final = the last one. The energy rati
 echo "near 1 by construction: the sliding-interface energy (the work of the contact forces) takes"
 echo "up whatever the impacts gain or lose; its band (during impacts) is listed too."
 echo ""
-echo "| SFS | TSSFAC | cycles | wall [s] | bounces | max dev | final dev | max abs(ratio - 1) |"
+echo "| SFS | TSSFAC | cycles | wall [s] | wall impacts | max dev | final dev | max abs(ratio - 1) |"
 echo "|---|---|---|---|---|---|---|---|"
 awk '!/^#/{printf "| %s | %s | %s | %s | %s | %.3e | %+.3e | %.3e |\n", $1, $2, $3, $4, $5, $6, $7, $8}' $tab
 echo ""
