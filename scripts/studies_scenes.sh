@@ -6,7 +6,8 @@
 # run: bounces, the ball's kinetic energy out of contact against KE0 (max deviation, final
 # drift), the energy-ratio band and the wall time. Writes docs/studies/ball_in_box.md,
 # docs/studies/data/ball_in_box_*.dat and docs/studies/ball_in_box_energy.png.
-# This is the baseline for the energy-conserving contact of issue 5.
+# This is the baseline for the energy-conserving contact of issue 5. BOX_POST_ONLY=1 re-posts
+# the runs already in build/studies/ball_in_box (no new runs).
 set -e
 cd "$(dirname "$0")/.."
 [ -x bin/dynx ] || make all
