@@ -134,6 +134,7 @@ studies: deps
 	@sh scripts/studies.sh
 	@sh scripts/studies_contact.sh
 	@/usr/bin/python3 scripts/studies_emc.py
+	@sh scripts/studies_scenes.sh
 
 clean:
 	rm -rf build bin out

@@ -5,7 +5,8 @@
 !>    (BT <= t <= DT), added into model%f; the contact springs enter the critical step as
 !>    dt <= 1/sqrt(1/dt_e^2 + w_c^2/4), w_c^2 = max over nodes of the Gershgorin row sum of
 !>    the contact stiffness over the nodal mass (2k on a slave node, 2k N_i on a master node,
-!>    summed over its springs): an upper bound of the contact frequencies.
+!>    summed over its springs): an upper bound of the contact frequencies. Nodes of rigid
+!>    bodies use the body's mass and inertia instead (dx_rigid_contact).
 !>  contact_work: after the velocity update: work of the contact forces with the centred
 !>    weighting of docs/design.md, W += f_c(n).dtavg(n)(v(n-1/2) + v(n+1/2))/2; the sliding
 !>    interface energy is -W (stored penalty energy plus friction dissipation); writes rcforc.
@@ -20,6 +21,7 @@ module dx_contact
    use dx_contact_types, only: contact_set_t
    use dx_contact_search, only: bucket_sort
    use dx_contact_penalty, only: pass_forces
+   use dx_rigid_contact, only: rigid_contact_w2, rigid_effective_mass
    implicit none
    private
    public :: contact_forces, contact_work
@@ -33,7 +35,13 @@ contains
       real(wp), intent(inout) :: dtcrit
       real(wp) :: vmax, t, t0, t1, w2max, dt_est, fsum(3), margin
       integer :: i, j, nd
+      real(wp), allocatable :: meff(:)
+      logical :: has_rigid
       t0 = wall_time()
+      ! (model%rigid is unallocated in a deck without rigid bodies; nested tests, no
+      ! short-circuit in Fortran)
+      has_rigid = allocated(model%rigid)
+      if (has_rigid) has_rigid = allocated(model%rigid%node_body)
       t = model%time
       associate (cs => model%contact)
          do i = 1, size(cs%node)
@@ -68,7 +76,14 @@ contains
                         t1 = wall_time()
                         margin = 0.25_wp*mean_extent(p, model%x)
                         margin = max(margin, 4.0_wp*vmax*dt_est)
-                        call bucket_sort(p, model%x, margin, model%mass)
+                        if (has_rigid) then
+                           ! rigid nodes: the body's inertia (dx_rigid_contact)
+                           meff = model%mass
+                           call rigid_effective_mass(model%rigid, cs%node, model%x, meff)
+                           call bucket_sort(p, model%x, margin, meff)
+                        else
+                           call bucket_sort(p, model%x, margin, model%mass)
+                        end if
                         p%last_sort = model%cycle
                         cs%t_search = cs%t_search + (wall_time() - t1)
                      end if
@@ -90,8 +105,13 @@ contains
          do i = 1, size(cs%node)
             nd = cs%node(i)
             model%f(:, nd) = model%f(:, nd) + cs%fc(:, nd)
+            if (has_rigid) then
+               if (model%rigid%node_body(nd) > 0) cycle   ! rigid nodes: body inertia below
+            end if
             if (model%mass(nd) > 0.0_wp) w2max = max(w2max, cs%krow(nd)/model%mass(nd))
          end do
+         if (has_rigid) &
+            w2max = max(w2max, rigid_contact_w2(model%rigid, cs%node, cs%krow, model%x))
          cs%dt_limit = huge(1.0_wp)
          if (w2max > 0.0_wp) then
             cs%dt_limit = 1.0_wp/sqrt(1.0_wp/dtcrit**2 + w2max)
