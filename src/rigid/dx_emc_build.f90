@@ -59,7 +59,7 @@ contains
       type(model_input_t), intent(in) :: inp
       type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
-      integer :: nc, i, b, e, k, nd
+      integer :: nc, i, b, e, k, nd, ibad
       character(:), allocatable :: msg, key
       nc = 0
       if (allocated(inp%emc%contacts)) nc = size(inp%emc%contacts)
@@ -151,7 +151,14 @@ contains
                'by the conserving solver (it conserves the energy of free systems)')
             return
          end if
-         call build_surfaces(model, es)
+         call build_surfaces(model, es, ibad)
+         if (ibad > 0) then
+            call set_error(error, at(inp, inp%emc%contacts(1)%ifile, &
+               inp%emc%contacts(1)%line, key)//'a rigid body has a degenerate (zero-area) '// &
+               'exterior face with node '//str(model%node_label(ibad))//': check the *NODE '// &
+               'coordinates of its elements')
+            return
+         end if
          allocate(es%sphere(size(model%rigid%bodies)))
          if (allocated(inp%emc%spheres)) then
             do i = 1, size(inp%emc%spheres)
@@ -186,15 +193,17 @@ contains
    end subroutine build_emc
 
    !> Exterior faces (used by one element of the body's part) and their nodes, body frame.
-   subroutine build_surfaces(model, es)
+   subroutine build_surfaces(model, es, ibad)
       type(model_t), intent(in) :: model
       type(emc_system_t), intent(inout) :: es
       integer :: nb, b, e, k, nf, i, j, m, np, nd(4), key(4), cnt
       integer, allocatable :: fk(:, :), fn(:, :), fe(:), mark(:)
       type(emc_facet_t), allocatable :: fac(:)
       real(wp), allocatable :: sn(:, :)
+      integer, intent(out) :: ibad   !< a node of a zero-area face (0: none)
       real(wp) :: xe(3), nrm(3)
       logical :: shared
+      ibad = 0
       nb = size(model%rigid%bodies)
       allocate(es%fac_ptr(nb + 1), es%sn_ptr(nb + 1), fac(0), sn(3, 0))
       allocate(mark(model%nn))
@@ -249,6 +258,10 @@ contains
                      nrm = cross(xs(:, 3) - xs(:, 1), xs(:, 4) - xs(:, 2))
                   else
                      nrm = cross(xs(:, 2) - xs(:, 1), xs(:, 3) - xs(:, 1))
+                  end if
+                  if (.not. (norm2(nrm) > 0.0_wp)) then
+                     if (ibad == 0) ibad = nd(1)
+                     cycle
                   end if
                   nrm = nrm/norm2(nrm)
                   xe = 0.0_wp
