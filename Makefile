@@ -3,6 +3,7 @@
 #   make test   unit tests (debug build) and regression tests (release build)
 #   make bench  benchmarks (recorded in docs/performance.md)
 #   make studies  error-against-run-time studies (docs/studies/)
+#   make fuzz   10000 mutated decks through bin/dynx-asan --check (docs/errors.md)
 SHELL := /bin/sh
 FC := h5pfc
 SRC_DIRS := base parallel model materials deck elements rigid contact loads io solvers
@@ -18,13 +19,15 @@ REL_FLAGS := $(COMMON) -O3 -march=native -funroll-loops
 DBG_FLAGS := $(COMMON) -O0 -g -std=f2008 -Wall -Wextra -Wimplicit-interface -fcheck=all \
              -ffpe-trap=invalid,zero,overflow -fbacktrace -Wno-unused-dummy-argument \
              -Wno-maybe-uninitialized -Wno-compare-reals -Wno-function-elimination
+# the fuzz build: debug flags plus AddressSanitizer and UBSan (gfortran 12 supports both)
+ASAN_FLAGS := $(DBG_FLAGS) -fsanitize=address,undefined -fno-omit-frame-pointer
 DEFAULT_DECK := decks/taylor_bar/deck.k
 OUT := out
 
 PROGS := bin/dynx $(patsubst src/tools/%.f90,bin/%,$(wildcard src/tools/*.f90))
 PROGS := $(subst _,-,$(PROGS))
 
-.PHONY: all deps run test unit regression bench studies clean debug
+.PHONY: all deps run test unit regression bench studies clean debug fuzz
 all: $(PROGS)
 
 deps:
@@ -39,6 +42,8 @@ OBJ := build/release
 include build/deps.mk
 OBJ := build/debug
 include build/deps.mk
+OBJ := build/asan
+include build/deps.mk
 
 REL_LIB_OBJ := $(patsubst %.f90,build/release/%.o,$(notdir $(LIB_SRC)))
 DBG_LIB_OBJ := $(patsubst %.f90,build/debug/%.o,$(notdir $(LIB_SRC)))
@@ -48,7 +53,9 @@ build/release/%.o: %.f90 | build/release
 	$(FC) $(REL_FLAGS) -Jbuild/release -c $< -o $@
 build/debug/%.o: %.f90 | build/debug
 	$(FC) $(DBG_FLAGS) -Jbuild/debug -c $< -o $@
-build/release build/debug bin:
+build/asan/%.o: %.f90 | build/asan
+	$(FC) $(ASAN_FLAGS) -Jbuild/asan -c $< -o $@
+build/release build/debug build/asan bin:
 	@mkdir -p $@
 
 build/release/libdynx.a: $(REL_LIB_OBJ)
@@ -60,6 +67,10 @@ bin/dynx: build/release/dynx.o build/release/libdynx.a | bin
 	$(FC) $(REL_FLAGS) -o $@ $^ $(LIBS)
 bin/dynx-debug: build/debug/dynx.o build/debug/libdynx.a | bin
 	$(FC) $(DBG_FLAGS) -o $@ $^ $(LIBS)
+build/asan/libdynx.a: $(patsubst %.f90,build/asan/%.o,$(notdir $(LIB_SRC)))
+	ar rcs $@ $^
+bin/dynx-asan: build/asan/dynx.o build/asan/libdynx.a | bin
+	$(FC) $(ASAN_FLAGS) -o $@ $^ $(LIBS)
 bin/dynx-%: build/release/dynx_%.o build/release/libdynx.a | bin
 	$(FC) $(REL_FLAGS) -o $@ $^ $(LIBS)
 
@@ -87,11 +98,18 @@ regression: all bin/dynx-debug
 	@sh scripts/run_regression.sh
 
 test: deps
-	@$(MAKE) --no-print-directory all debug $(UNIT_TESTS) $(MPI_TESTS)
+	@$(MAKE) --no-print-directory all debug bin/dynx-asan $(UNIT_TESTS) $(MPI_TESTS)
 	@sh scripts/run_unit_tests.sh $(UNIT_TESTS)
 	@sh scripts/run_mpi_tests.sh $(MPI_TESTS)
 	@sh scripts/run_partition_tests.sh
 	@sh scripts/run_regression.sh
+	@python3 scripts/fuzz_decks.py --count 300 --seed 7 --jobs 2
+	@python3 scripts/kill9_check.py --runs 20 --seed 7
+
+# the deck-reader fuzzer, >= 1e4 mutated decks through the sanitized debug build
+fuzz: deps
+	@$(MAKE) --no-print-directory bin/dynx-asan
+	@python3 scripts/fuzz_decks.py --count 10000 --jobs 2
 
 bench: deps
 	@$(MAKE) --no-print-directory all $(MPI_BENCH)

@@ -1,13 +1,16 @@
 !> Error reporting in the fpm pattern: library code returns type(error_t), allocatable;
 !> only the main program turns an error into an exit code.
-!> Exit codes: 2 input error, 3 numerical failure in the run, 4 I/O failure.
+!> Exit codes: 2 input error, 3 numerical failure in the run, 4 I/O failure,
+!> 5 stopped at a checkpoint (signal or wall-clock limit; continue with -r).
 module dx_error
    use, intrinsic :: iso_c_binding, only: c_int
    implicit none
    private
-   public :: error_t, set_error, EXIT_INPUT, EXIT_NUMERIC, EXIT_IO, EXIT_OK, exit_process
+   public :: error_t, set_error, EXIT_INPUT, EXIT_NUMERIC, EXIT_IO, EXIT_OK, exit_process, &
+             EXIT_CHECKPOINT
 
    integer, parameter :: EXIT_OK = 0, EXIT_INPUT = 2, EXIT_NUMERIC = 3, EXIT_IO = 4
+   integer, parameter :: EXIT_CHECKPOINT = 5   !< clean stop with a restart dump
 
    type :: error_t
       character(:), allocatable :: message   !< full message, may span lines

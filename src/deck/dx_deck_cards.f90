@@ -12,6 +12,8 @@ module dx_deck_cards
    use dx_strings, only: upper, str, rstr
    use dx_model_input, only: string_t
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use, intrinsic :: ieee_exceptions, only: ieee_overflow, ieee_get_halting_mode, &
+                                            ieee_set_halting_mode, ieee_set_flag
    implicit none
    private
    public :: card_t, block_t, deck_t, param_t, read_cards, get_int, get_real, get_text, &
@@ -527,11 +529,15 @@ contains
          return
       end if
       call parse_int(t, val, ok)
-      if (ok) return
+      if (ok) then
+         call check_boundaries(deck, blk, ic, k, w, fname, error)
+         return
+      end if
       call parse_real(t, r, ok)
       if (ok) then
          if (r == anint(r) .and. abs(r) <= 2147483647.0_wp) then
             val = nint(r)
+            call check_boundaries(deck, blk, ic, k, w, fname, error)
             return
          end if
          call field_error(deck, blk, ic, k, w, fname, 'expected an integer, got '''//t//'''', &
@@ -563,9 +569,55 @@ contains
          return
       end if
       call parse_real(t, val, ok)
-      if (.not. ok) call field_error(deck, blk, ic, k, w, fname, &
-                                     bad_number_msg(blk, ic, k, w, t), error)
+      if (.not. ok) then
+         call field_error(deck, blk, ic, k, w, fname, bad_number_msg(blk, ic, k, w, t), error)
+      else
+         call check_boundaries(deck, blk, ic, k, w, fname, error)
+      end if
    end subroutine get_real
+
+   !> A valid number can still be the front of a value that ran over its columns
+   !> ('   123456789012' read as 1234567 and 89012). In fixed format a token that crosses
+   !> the boundary between fields j and j+1 is legal only when one of the two fields is
+   !> full (packed full-width values such as '1.0000E+001.0000E+00'); otherwise it is an
+   !> error, checked at both ends of field k.
+   subroutine check_boundaries(deck, blk, ic, k, w, fname, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      integer, intent(in) :: ic, k, w(:)
+      character(*), intent(in) :: fname
+      type(error_t), allocatable, intent(out) :: error
+      integer :: col, n
+      logical :: bad
+      if (ic < 1 .or. ic > blk%n) return
+      associate (c => blk%cards(ic)%text)
+         if (index(c, ',') > 0) return
+         n = len(c)
+         col = 1 + sum(w(1:k-1))
+         bad = .false.
+         if (k > 1 .and. col <= n) bad = crosses(col - w(k-1), w(k-1), w(k))
+         if (k < size(w) .and. col + w(k) <= n) bad = bad .or. crosses(col, w(k), w(k+1))
+      end associate
+      if (bad) call field_error(deck, blk, ic, k, w, fname, 'a value runs across the '// &
+         'boundary of this '//str(w(k))//'-column field (fixed format: each value must fit '// &
+         'its columns; or separate values with commas)', error)
+   contains
+      !> whether a token crosses from field [a, a+wa) into [a+wa, a+wa+wb) with neither full
+      logical function crosses(a, wa, wb)
+         integer, intent(in) :: a, wa, wb
+         integer :: e
+         e = a + wa
+         crosses = .false.
+         associate (c => blk%cards(ic)%text)
+            if (c(e-1:e-1) == ' ' .or. c(e:e) == ' ') return
+            if (index(c(a:e-1), ' ') == 0) return            ! field j full
+            if (e + wb - 1 <= n) then
+               if (index(c(e:e+wb-1), ' ') == 0) return      ! field j+1 full
+            end if
+            crosses = .true.
+         end associate
+      end function crosses
+   end subroutine check_boundaries
 
    !> Text field k (widths w) of card ic, trimmed ('' when blank or missing); C parameters
    !> are substituted.
@@ -678,6 +730,7 @@ contains
       logical, intent(out) :: ok
       character(len=len(t)+2) :: buf
       integer :: i, n, nd, ios, nb
+      logical :: halt
       character :: ch
       val = 0.0_wp
       ok = .false.
@@ -727,7 +780,14 @@ contains
          if (nd == 0) return
       end if
       if (i <= n) return
+      ! 1e309 overflows inside the library's strtod: with overflow trapping on (the debug
+      ! build's -ffpe-trap) that is a SIGFPE, so trapping is off for this read; the
+      ! infinite result is then rejected below
+      call ieee_get_halting_mode(ieee_overflow, halt)
+      if (halt) call ieee_set_halting_mode(ieee_overflow, .false.)
       read(buf(1:nb), *, iostat=ios) val
+      call ieee_set_flag(ieee_overflow, .false.)
+      if (halt) call ieee_set_halting_mode(ieee_overflow, .true.)
       ok = ios == 0
       if (ok) ok = ieee_is_finite(val)
    end subroutine parse_real

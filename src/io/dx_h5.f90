@@ -14,7 +14,8 @@ module dx_h5
    private
    public :: h5_file_t, h5_create, h5_open_read, h5_close, h5_flush, h5_create_group, &
              h5_write, h5_write_attr, h5_create_extendible, h5_append, h5_exists, h5_dims, &
-             h5_read, h5_read_attr, h5_list, H5_GROUP, H5_DATASET, H5_OTHER
+             h5_read, h5_read_attr, h5_list, H5_GROUP, H5_DATASET, H5_OTHER, &
+             h5_open_rw, h5_delete, h5_set_extent
 
    integer, parameter :: H5_GROUP = 1, H5_DATASET = 2, H5_OTHER = 3
    integer, parameter :: NAME_LEN = 256
@@ -110,6 +111,58 @@ contains
          call fail(f, error, 'open file (not an HDF5 file?)', path)
       end if
    end subroutine h5_open_read
+
+   !> Open an existing file for reading and writing (a restart appends to the plot file).
+   subroutine h5_open_rw(f, path, error)
+      type(h5_file_t), intent(inout) :: f
+      character(*), intent(in) :: path
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ierr
+      logical :: there
+      call lib_init(error)
+      if (allocated(error)) return
+      f%name = path
+      inquire(file=path, exist=there)
+      if (.not. there) then
+         call set_error(error, 'cannot open '//path//': no such file', EXIT_IO)
+         return
+      end if
+      call h5fopen_f(path, H5F_ACC_RDWR_F, f%id, ierr)
+      if (ierr < 0) then
+         f%id = -1
+         call fail(f, error, 'open file for writing (not an HDF5 file, or damaged?)', path)
+      end if
+   end subroutine h5_open_rw
+
+   !> Remove the link path (a group or dataset) from the file.
+   subroutine h5_delete(f, path, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ierr
+      call h5ldelete_f(f%id, path, ierr)
+      if (ierr < 0) call fail(f, error, 'delete', path)
+   end subroutine h5_delete
+
+   !> Set the length of an extendible 1-D dataset (shrink or grow).
+   subroutine h5_set_extent(f, path, n, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      integer, intent(in) :: n
+      type(error_t), allocatable, intent(out) :: error
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(1)
+      integer :: ierr
+      call h5dopen_f(f%id, path, dset, ierr)
+      if (ierr < 0) then
+         call fail(f, error, 'open dataset', path)
+         return
+      end if
+      dims(1) = int(n, hsize_t)
+      call h5dset_extent_f(dset, dims, ierr)
+      if (ierr < 0) call fail(f, error, 'set the extent of', path)
+      call close_dataset(f, path, dset, error)
+   end subroutine h5_set_extent
 
    !> Close the file if open (safe to call twice).
    subroutine h5_close(f, error)

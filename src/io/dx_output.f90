@@ -27,6 +27,8 @@ module dx_output
       procedure :: write_glstat => output_write_glstat
       procedure :: write_nodout => output_write_nodout
       procedure :: close => output_close
+      procedure :: resume => output_resume
+      procedure :: sizes => output_sizes
       procedure :: has_glstat => output_has_glstat
       procedure :: has_nodout => output_has_nodout
    end type output_t
@@ -65,6 +67,46 @@ contains
       end if
       if (allocated(error)) call self%close(err2)   ! keep the first error
    end subroutine output_open
+
+   !> Reopen the files of an interrupted run in dir at the restart point recorded in
+   !> model%run (plot states, glstat and nodout bytes): what was written after the dump is
+   !> dropped, and output continues exactly as the uninterrupted run would have written it.
+   subroutine output_resume(self, model, dir, error)
+      class(output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      character(*), intent(in) :: dir
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: err2
+      character(:), allocatable :: title
+      logical :: nodes
+      self%dir = trim(dir)
+      title = ''
+      if (allocated(model%title)) title = model%title
+      call sys_mkdir_p(self%dir, error)
+      if (allocated(error)) return
+      call self%plot%resume(model, self%dir, model%run%nplot, error)
+      if (allocated(error)) return
+      self%nplot = self%plot%nstates
+      self%glstat_on = model%db%glstat_dt > 0
+      if (self%glstat_on) call self%glstat%resume(self%dir//'/glstat', 'glstat', title, &
+                                                  GLSTAT_COLUMNS, model%run%glstat_bytes, error)
+      nodes = .false.
+      if (allocated(model%db%hist_nodes)) nodes = size(model%db%hist_nodes) > 0
+      self%nodout_on = model%db%nodout_dt > 0 .and. nodes
+      if (self%nodout_on .and. .not. allocated(error)) call self%nodout%resume( &
+         self%dir//'/nodout', 'nodout', title, NODOUT_COLUMNS, model%run%nodout_bytes, error)
+      if (allocated(error)) call self%close(err2)
+   end subroutine output_resume
+
+   !> What a restart dump records about the output: plot states, glstat and nodout bytes.
+   subroutine output_sizes(self, nplot, glstat_bytes, nodout_bytes)
+      class(output_t), intent(in) :: self
+      integer, intent(out) :: nplot
+      integer(8), intent(out) :: glstat_bytes, nodout_bytes
+      nplot = self%plot%nstates
+      glstat_bytes = self%glstat%bytes
+      nodout_bytes = self%nodout%bytes
+   end subroutine output_sizes
 
    !> Write one plot state at model%time.
    subroutine output_write_plot(self, model, error)

@@ -13,7 +13,10 @@ module dx_plot_hdf5
    use dx_error, only: error_t
    use dx_model, only: model_t
    use dx_h5, only: h5_file_t, h5_create, h5_close, h5_flush, h5_create_group, h5_write, &
-                    h5_write_attr, h5_create_extendible, h5_append
+                    h5_write_attr, h5_create_extendible, h5_append, h5_open_rw, h5_read, &
+                    h5_read_attr, h5_exists, h5_delete, h5_set_extent
+   use dx_error, only: set_error, EXIT_IO
+   use dx_strings, only: str
    use dx_xdmf, only: xdmf_write, state_group
    implicit none
    private
@@ -30,6 +33,7 @@ module dx_plot_hdf5
       character(:), allocatable :: xdmf_path, title
    contains
       procedure :: open => plot_open
+      procedure :: resume => plot_resume
       procedure :: write_state => plot_write_state
       procedure :: close => plot_close
    end type plot_file_t
@@ -107,6 +111,64 @@ contains
       end block work
       if (allocated(error)) call h5_close(self%h5, err2)   ! keep the first error
    end subroutine plot_open
+
+   !> Continue dir/d3plot.h5 from a restart point that had written nkeep states: states
+   !> after it (written by the interrupted run after its dump, complete or not) are
+   !> removed, /states/times and nstates are cut back, and the XDMF is rewritten.
+   !> A missing plot file is started anew.
+   subroutine plot_resume(self, model, dir, nkeep, error)
+      class(plot_file_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      character(*), intent(in) :: dir
+      integer, intent(in) :: nkeep
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: err2
+      real(wp), allocatable :: t(:)
+      integer :: ndisk, k
+      logical :: there
+      inquire(file=dir//'/'//H5NAME, exist=there)
+      if (.not. there) then
+         call self%open(model, dir, error)
+         return
+      end if
+      self%nn = model%nn
+      self%ne = model%ne
+      self%title = ''
+      if (allocated(model%title)) self%title = model%title
+      self%xdmf_path = dir//'/'//XMFNAME
+      call h5_open_rw(self%h5, dir//'/'//H5NAME, error)
+      if (allocated(error)) return
+      work: block
+         call h5_read_attr(self%h5, '/', 'nstates', ndisk, error)
+         if (allocated(error)) exit work
+         call h5_read(self%h5, '/states/times', t, error)
+         if (allocated(error)) exit work
+         if (ndisk < nkeep .or. size(t) < nkeep) then
+            call set_error(error, 'cannot continue '//dir//'/'//H5NAME//': it has '// &
+               str(ndisk)//' plot states, the restart dump expects '//str(nkeep)// &
+               ' (another run''s file?)', EXIT_IO)
+            exit work
+         end if
+         do k = nkeep + 1, max(ndisk, size(t)) + 1
+            call h5_exists(self%h5, state_group(k), there, error)
+            if (allocated(error)) exit work
+            if (there) call h5_delete(self%h5, state_group(k), error)
+            if (allocated(error)) exit work
+         end do
+         call h5_set_extent(self%h5, '/states/times', nkeep, error)
+         if (allocated(error)) exit work
+         call h5_write_attr(self%h5, '/', 'nstates', nkeep, error)
+         if (allocated(error)) exit work
+         call h5_flush(self%h5, error)
+         if (allocated(error)) exit work
+         self%nstates = nkeep
+         allocate(self%times(max(16, 2*nkeep)))
+         self%times(1:nkeep) = t(1:nkeep)
+         call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, &
+                         self%times(1:nkeep), error)
+      end block work
+      if (allocated(error)) call h5_close(self%h5, err2)
+   end subroutine plot_resume
 
    !> Element results: stress averaged over integration points, von Mises, pressure,
    !> effective plastic strain (0 where the material has none) and the failed flag.

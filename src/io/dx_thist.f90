@@ -9,6 +9,7 @@ module dx_thist
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_IO
    use dx_model, only: model_t
+   use dx_io_sys, only: sys_truncate
    implicit none
    private
    public :: thist_file_t, GLSTAT_COLUMNS, NODOUT_COLUMNS
@@ -25,8 +26,10 @@ module dx_thist
       integer :: unit = 0
       logical :: opened = .false.
       character(:), allocatable :: path
+      integer(8) :: bytes = 0          !< bytes written (a restart dump records it)
    contains
       procedure :: open => thist_open
+      procedure :: resume => thist_resume
       procedure :: write_glstat
       procedure :: write_nodout
       procedure :: close => thist_close
@@ -49,6 +52,7 @@ contains
          return
       end if
       self%opened = .true.
+      self%bytes = 0
       call put_line(self, '# dynx '//what, error)
       if (allocated(error)) return
       call put_line(self, '# title: '//trim(title), error)
@@ -56,15 +60,60 @@ contains
       call put_line(self, '# '//columns, error)
    end subroutine thist_open
 
+   !> Continue a file from a restart point: cut it back to its first nbytes bytes (the
+   !> lines the killed run wrote after the dump go) and append. A missing file is started
+   !> anew with its header; a file shorter than nbytes is an error (it is not this run's).
+   subroutine thist_resume(self, path, what, title, columns, nbytes, error)
+      class(thist_file_t), intent(inout) :: self
+      character(*), intent(in) :: path, what, title, columns
+      integer(8), intent(in) :: nbytes
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ios
+      integer(8) :: sz
+      logical :: there
+      character(256) :: msg
+      inquire(file=path, exist=there, size=sz)
+      if (.not. there) then
+         call self%open(path, what, title, columns, error)
+         return
+      end if
+      if (sz < nbytes) then
+         call set_error(error, 'cannot continue '//path//': it has '//itoa(sz)// &
+            ' bytes, the restart dump expects at least '//itoa(nbytes)// &
+            ' (another run''s file?)', EXIT_IO)
+         return
+      end if
+      if (sz > nbytes) call sys_truncate(path, nbytes, error)
+      if (allocated(error)) return
+      self%path = path
+      open(newunit=self%unit, file=path, status='old', action='write', position='append', &
+           form='formatted', iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         call set_error(error, 'cannot open '//path//' for appending: '//trim(msg), EXIT_IO)
+         return
+      end if
+      self%opened = .true.
+      self%bytes = nbytes
+   end subroutine thist_resume
+
+   pure function itoa(i) result(s)
+      integer(8), intent(in) :: i
+      character(:), allocatable :: s
+      character(24) :: buf
+      write(buf, '(i0)') i
+      s = trim(buf)
+   end function itoa
+
    !> Write one whole line and flush it.
    subroutine put_line(self, line, error)
-      class(thist_file_t), intent(in) :: self
+      class(thist_file_t), intent(inout) :: self
       character(*), intent(in) :: line
       type(error_t), allocatable, intent(out) :: error
       integer :: ios
       character(256) :: msg
       write(self%unit, '(a)', iostat=ios, iomsg=msg) line
       if (ios == 0) flush(self%unit, iostat=ios, iomsg=msg)
+      if (ios == 0) self%bytes = self%bytes + len(line) + 1
       if (ios /= 0) call set_error(error, 'cannot write '//self%path//': '//trim(msg), EXIT_IO)
    end subroutine put_line
 

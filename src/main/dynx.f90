@@ -1,17 +1,22 @@
 !> dynx: arguments -> deck -> model -> explicit solver -> finish.
-!> Exit codes: 0 normal, 2 input error, 3 numerical failure in the run, 4 I/O failure.
+!> Exit codes: 0 normal, 2 input error, 3 numerical failure in the run, 4 I/O failure,
+!> 5 stopped at a checkpoint (SIGTERM/SIGINT or wall-clock limit; a restart dump was written).
 program dynx
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use dx_kinds, only: wp
-   use dx_error, only: error_t, EXIT_INPUT, exit_process
+   use dx_error, only: error_t, EXIT_INPUT, EXIT_CHECKPOINT, exit_process
    use dx_strings, only: str, rstr
    use dx_log, only: log_info, log_error, log_summary
    use dx_model, only: model_t
    use dx_deck, only: read_deck
    use dx_output, only: output_t
-   use dx_explicit, only: run_options_t, run_explicit
+   use dx_explicit, only: run_options_t, run_explicit, init_state
+   use dx_restart, only: restart_read
+   use dx_restart_deck, only: apply_restart_deck
+   use dx_signals, only: signals_install, SIGTERM_NUM, SIGINT_NUM, SIGUSR1_NUM
+   use dx_io_sys, only: sys_epoch_seconds
    implicit none
-   character(:), allocatable :: deck, outdir, arg, val
+   character(:), allocatable :: deck, outdir, arg, val, rfile, rdeck
    type(model_t) :: model
    type(output_t) :: out
    type(run_options_t) :: opts
@@ -23,6 +28,8 @@ program dynx
    ignore_unknown = .false.
    outdir = '.'
    deck = ''
+   rfile = ''
+   rdeck = ''
    n = command_argument_count()
    i = 0
    do while (i < n)
@@ -41,6 +48,18 @@ program dynx
          if (ios /= 0 .or. opts%nstatus < 1) call die_usage('--status needs a positive integer')
       case ('--check')
          check_only = .true.
+      case ('-r', '--restart')
+         i = i + 1; rfile = get_arg(i)
+      case ('-R', '--restart-deck')
+         i = i + 1; rdeck = get_arg(i)
+      case ('--walltime')
+         i = i + 1; val = get_arg(i)
+         read(val, *, iostat=ios) opts%ck%walltime
+         if (ios /= 0 .or. .not. (opts%ck%walltime > 0.0_wp)) &
+            call die_usage('--walltime needs a positive number of seconds')
+      case ('--raise-at-cycle')
+         i = i + 1; val = get_arg(i)
+         call parse_raise(val, opts%ck%raise_cycle, opts%ck%raise_sig)
       case ('--ignore-unknown')
          ignore_unknown = .true.
       case default
@@ -48,12 +67,20 @@ program dynx
             if (arg(1:2) == 'i=' .or. arg(1:2) == 'I=') then
                deck = arg(3:); cycle
             end if
+            if (arg(1:2) == 'r=' .or. arg(1:2) == 'R=') then
+               rfile = arg(3:); cycle
+            end if
          end if
          call die_usage('unknown argument '//arg)
       end select
    end do
    if (len(deck) == 0) call die_usage('no input deck: use -i deck.k (or i=deck.k)')
+   if (len(rdeck) > 0 .and. len(rfile) == 0) call die_usage('-R (restart deck) needs -r dump.h5')
    opts%outdir = outdir
+   opts%ck%outdir = outdir
+   opts%ck%deck = deck
+   call slurm_limit(opts%ck%walltime)
+   if (.not. check_only) call signals_install()   ! polled once per cycle by the solver
 
    call read_deck(deck, model, error, ignore_unknown)
    if (allocated(error)) call die(error)
@@ -61,15 +88,39 @@ program dynx
                  ' elements, '//str(size(model%parts))//' parts, '//str(size(model%blocks))// &
                  ' element blocks, end time '//rstr(model%ctrl%endtim))
    if (check_only) then
+      if (len(rdeck) > 0) then
+         call apply_restart_deck(rdeck, model, error)
+         if (allocated(error)) call die(error)
+      end if
       call log_info('dynx: deck check passed')
       call log_summary()
       stop
    end if
-   call out%open(model, outdir, error)
+   call init_state(model)
+   if (len(rfile) > 0) then
+      call restart_read(model, rfile, error)
+      if (allocated(error)) call die(error)
+      call log_info('dynx: restart from '//rfile//' at cycle '//str(model%cycle)//', time '// &
+                    rstr(model%time))
+      if (len(rdeck) > 0) then
+         call apply_restart_deck(rdeck, model, error)
+         if (allocated(error)) call die(error)
+         call log_info('dynx: restart deck '//rdeck//' applied')
+      end if
+      call out%resume(model, outdir, error)
+   else
+      call out%open(model, outdir, error)
+   end if
    if (allocated(error)) call die(error)
    call run_explicit(model, opts, out, error)
    call log_summary()
-   if (allocated(error)) call die(error)
+   if (allocated(error)) then
+      if (error%code == EXIT_CHECKPOINT) then
+         call log_info(error%message)
+         call exit_process(EXIT_CHECKPOINT)
+      end if
+      call die(error)
+   end if
    call log_info('dynx: results in '//outdir//'/ (d3plot.h5, d3plot.xdmf'// &
       trim(merge(', glstat', '        ', model%db%glstat_dt > 0.0_wp))//')')
 
@@ -97,12 +148,63 @@ contains
          '                       d3plot.h5 + d3plot.xdmf (open in ParaView), glstat, nodout', &
          '  --status N           number of status lines over the run (default 10)', &
          '  --check              read and check the deck, print a summary, do not run', &
+         '  -r, --restart FILE   continue the run from restart dump FILE (d3dumpNN.h5,', &
+         '                       runrsf.h5); give the same deck and -o as the first run', &
+         '  -R, --restart-deck F a small restart deck applied after the deck (new end time,', &
+         '                       output intervals, curves; docs/keywords.md)', &
+         '  --walltime S         write a restart dump and stop (exit 5) before S seconds of', &
+         '                       wall time (SLURM_JOB_END_TIME is read when set)', &
+         '  --raise-at-cycle N[:SIG]  send SIG (TERM, INT, USR1; default TERM) to dynx', &
+         '                       itself at cycle N (tests of the signal path)', &
          '  --ignore-unknown     unknown keywords are warnings, not errors', &
          '  -h, --help           this text', &
          '', &
          'exit codes: 0 normal termination, 2 input error, 3 numerical failure in the run,', &
-         '            4 I/O failure'
+         '            4 I/O failure, 5 stopped with a restart dump (SIGTERM, SIGINT, walltime)', &
+         'signals: SIGTERM/SIGINT dump and stop (exit 5); SIGUSR1 dumps and goes on'
    end subroutine usage
+
+   !> The wall-clock limit: the smaller of --walltime and what SLURM_JOB_END_TIME (Unix
+   !> seconds) leaves from now; 0 when neither is set.
+   subroutine slurm_limit(walltime)
+      real(wp), intent(inout) :: walltime
+      character(64) :: env
+      integer :: st, l
+      integer(8) :: tend
+      real(wp) :: left
+      call get_environment_variable('SLURM_JOB_END_TIME', env, length=l, status=st)
+      if (st /= 0 .or. l == 0) return
+      read(env, *, iostat=st) tend
+      if (st /= 0) then
+         call log_info('dynx: SLURM_JOB_END_TIME='//trim(env)//' is not a number; ignored')
+         return
+      end if
+      left = real(tend - sys_epoch_seconds(), wp)
+      if (left <= 0.0_wp) left = 1.0_wp
+      if (walltime <= 0.0_wp .or. left < walltime) walltime = left
+      call log_info('dynx: SLURM_JOB_END_TIME leaves '//rstr(left, 6)//' s')
+   end subroutine slurm_limit
+
+   !> --raise-at-cycle N[:SIG]
+   subroutine parse_raise(v, n, sig)
+      character(*), intent(in) :: v
+      integer, intent(out) :: n, sig
+      integer :: k, ios
+      character(:), allocatable :: name
+      k = index(v, ':')
+      name = 'TERM'
+      if (k > 0) name = v(k + 1:)
+      if (k == 0) k = len(v) + 1
+      read(v(1:k - 1), *, iostat=ios) n
+      if (ios /= 0 .or. n < 1) call die_usage('--raise-at-cycle needs N[:SIG] with N > 0')
+      select case (name)
+      case ('TERM', 'SIGTERM'); sig = SIGTERM_NUM
+      case ('INT', 'SIGINT'); sig = SIGINT_NUM
+      case ('USR1', 'SIGUSR1'); sig = SIGUSR1_NUM
+      case default
+         call die_usage('--raise-at-cycle: signal '//name//' is not one of TERM, INT, USR1')
+      end select
+   end subroutine parse_raise
 
    subroutine die_usage(msg)
       character(*), intent(in) :: msg

@@ -6,6 +6,7 @@ module dx_model
    use dx_kinds, only: wp, nv_chunk
    use dx_material, only: mat_holder_t
    use dx_curve, only: curve_t
+   use dx_run_state, only: run_state_t, restart_ctrl_t
    implicit none
    private
    public :: model_t, elem_block_t, part_t, section_t, hourglass_t, node_set_t, part_set_t, &
@@ -210,6 +211,8 @@ module dx_model
       integer :: cycle = 0
       integer :: dt_elem = 0                   !< dense element controlling dt
       type(energy_t) :: energy
+      type(run_state_t) :: run                 !< explicit loop state (restart dumps it)
+      type(restart_ctrl_t) :: rst              !< *DATABASE_BINARY_D3DUMP/RUNRSF
    end type model_t
 
    ! keep nv_chunk visible to users of the model (block sizes)

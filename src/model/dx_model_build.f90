@@ -773,6 +773,7 @@ contains
       end if
       model%db%glstat_dt = inp%glstat_dt
       model%db%nodout_dt = inp%nodout_dt
+      model%rst = inp%rst
       allocate(h(0), seen(model%nn))
       seen = .false.
       do i = 1, size(inp%hist_nodes)

@@ -7,6 +7,7 @@ module dx_model_input
    use dx_model, only: part_t, section_t, hourglass_t, control_t
    use dx_material, only: mat_holder_t
    use dx_curve, only: curve_t
+   use dx_run_state, only: restart_ctrl_t
    implicit none
    private
    public :: model_input_t, string_t, origin_t, label_list_t, segment_list_t, spc_in_t, &
@@ -142,6 +143,7 @@ module dx_model_input
       real(wp) :: glstat_dt = 0.0_wp, nodout_dt = 0.0_wp
       type(label_list_t), allocatable :: hist_nodes(:)      !< *DATABASE_HISTORY_NODE cards
       type(label_list_t), allocatable :: hist_node_sets(:)  !< *DATABASE_HISTORY_NODE_SET cards
+      type(restart_ctrl_t) :: rst          !< *DATABASE_BINARY_D3DUMP/RUNRSF
    end type model_input_t
 
 contains

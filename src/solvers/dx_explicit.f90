@@ -15,10 +15,12 @@ module dx_explicit
    use dx_log, only: log_info, log_flush
    use dx_timer, only: wall_time, peak_memory_kb
    use dx_model, only: model_t, elem_block_t
+   use dx_run_state, only: run_state_t
    use dx_hex8, only: hex8_block, hex8_volume, block_result_t, HEX_ERR_NEGVOL
    use dx_loads, only: add_external_loads, has_external_loads
    use dx_constraints, only: apply_spc, apply_prescribed, apply_rigidwalls
    use dx_output, only: output_t
+   use dx_checkpoint, only: checkpoint_t, checkpoint_stage, checkpoint_failure_dump
    implicit none
    private
    public :: run_options_t, init_state, run_explicit
@@ -26,6 +28,7 @@ module dx_explicit
    type :: run_options_t
       character(:), allocatable :: outdir
       integer :: nstatus = 10          !< status lines over the run
+      type(checkpoint_t) :: ck         !< restart dumps, signals, wall-clock limit
    end type run_options_t
 
 contains
@@ -57,6 +60,9 @@ contains
    end subroutine init_state
 
    !> Run the explicit time loop to ENDTIM/ENDCYC, writing output as the deck asks.
+   !> Everything the loop carries from one cycle to the next is in model (x, v, time,
+   !> cycle, element blocks, walls) and model%run (dt_old, work sums, next output times),
+   !> so a restart dump restored into model (model%run%started) continues the run exactly.
    subroutine run_explicit(model, opts, out, error)
       type(model_t), intent(inout) :: model
       type(run_options_t), intent(in) :: opts
@@ -64,14 +70,15 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: vold(:, :), fext(:, :), vfree(:, :)
       integer, allocatable :: cnodes(:)
-      real(wp) :: dt, dt_old, dtavg, dtcrit, tsmin, t, wext, wrw, wcon, next_plot, next_glstat
-      real(wp) :: next_nodout, next_status, t0wall, ke, eint, ehg, du(3), tend, dt_first
+      real(wp) :: dt, dtavg, dtcrit, t, t0wall, ke, eint, ehg, du(3), tend
       integer :: b, i, ibmin, iemin, nd
-      logical :: loads, done
+      logical :: loads, done, stopped
       type(block_result_t) :: res
       type(error_t), allocatable :: ioerr
+      type(checkpoint_t) :: ck
 
-      call init_state(model)
+      if (.not. allocated(model%x)) call init_state(model)
+      ck = opts%ck
       allocate(vold(3, model%nn))
       loads = has_external_loads(model)
       if (loads) allocate(fext(3, model%nn))
@@ -79,15 +86,23 @@ contains
       allocate(vfree(3, size(cnodes)))
       tend = model%ctrl%endtim
       if (tend <= 0.0_wp) tend = huge_wp
-      dt_old = 0.0_wp
-      dt_first = 0.0_wp
-      tsmin = 0.0_wp
-      wext = 0.0_wp; wrw = 0.0_wp; wcon = 0.0_wp
-      next_plot = 0.0_wp; next_glstat = 0.0_wp; next_nodout = 0.0_wp; next_status = 0.0_wp
-      model%energy%initial = 0.5_wp*sum(model%mass*sum(model%v**2, dim=1))
+      if (.not. model%run%started) then
+         model%run = run_state_t()
+         model%run%started = .true.
+         model%energy%initial = 0.5_wp*sum(model%mass*sum(model%v**2, dim=1))
+      else
+         call log_info('dynx: continuing from cycle '//str(model%cycle)//', time '// &
+                       rstr(model%time))
+      end if
       t0wall = wall_time()
+      ck%wall0 = t0wall
       call log_info('      cycle        time          dt  dt-element   wall [s]   left [s]')
       done = .false.
+      associate (dt_old => model%run%dt_old, dt_first => model%run%dt_first, &
+                 tsmin => model%run%tsmin, wext => model%run%wext, wrw => model%run%wrw, &
+                 wcon => model%run%wcon, next_plot => model%run%next_plot, &
+                 next_glstat => model%run%next_glstat, next_nodout => model%run%next_nodout, &
+                 next_status => model%run%next_status)
       do
          t = model%time
          ! ---- internal forces (element pass) and the critical step
@@ -99,7 +114,7 @@ contains
                                model%f, res)
                if (res%ibad /= 0) then
                   call element_failure(model, b, res, error)
-                  call finish(model, out, error)
+                  call finish(model, out, ck, error)
                   return
                end if
                if (res%dt < dtcrit) then
@@ -126,7 +141,7 @@ contains
             call set_error(error, 'time step '//rstr(dt)//' at cycle '//str(model%cycle)// &
                ', time '//rstr(t)//' is below the floor '//rstr(tsmin)//' (DTMIN*first step '// &
                rstr(dt_first)//'); controlling element '//str(elem_label(model)), EXIT_NUMERIC)
-            call finish(model, out, error)
+            call finish(model, out, ck, error)
             return
          end if
          dtavg = 0.5_wp*(dt_old + dt)
@@ -161,7 +176,7 @@ contains
          ke = 0.5_wp*ke
          if (.not. ieee_is_finite(ke)) then
             call nan_failure(model, error)
-            call finish(model, out, error)
+            call finish(model, out, ck, error)
             return
          end if
          eint = 0.0_wp; ehg = 0.0_wp
@@ -171,12 +186,14 @@ contains
          end do
          model%dt = dt
          call set_energy(model, ke, eint, ehg, wext + wcon, -wrw)
+         if (model%ctrl%endeng > 0.0_wp) ck%endeng_hit = ck%endeng_hit .or. &
+            abs(model%energy%ratio - 1.0_wp)*100.0_wp > model%ctrl%endeng
          ! ---- output at t(n)
          done = t >= tend .or. (model%ctrl%endcyc > 0 .and. model%cycle >= model%ctrl%endcyc)
          if (t >= next_plot .or. done) then
             call out%write_plot(model, ioerr)
             if (allocated(ioerr)) then
-               call move_alloc(ioerr, error); call finish(model, out, error); return
+               call move_alloc(ioerr, error); call finish(model, out, ck, error); return
             end if
             if (model%db%d3plot_dt > 0.0_wp) then
                next_plot = next_output_time(next_plot, model%db%d3plot_dt, t)
@@ -187,14 +204,14 @@ contains
          if (model%db%glstat_dt > 0.0_wp .and. (t >= next_glstat .or. done)) then
             call out%write_glstat(model, ioerr)
             if (allocated(ioerr)) then
-               call move_alloc(ioerr, error); call finish(model, out, error); return
+               call move_alloc(ioerr, error); call finish(model, out, ck, error); return
             end if
             next_glstat = next_output_time(next_glstat, model%db%glstat_dt, t)
          end if
          if (model%db%nodout_dt > 0.0_wp .and. (t >= next_nodout .or. done)) then
             call out%write_nodout(model, ioerr)
             if (allocated(ioerr)) then
-               call move_alloc(ioerr, error); call finish(model, out, error); return
+               call move_alloc(ioerr, error); call finish(model, out, ck, error); return
             end if
             next_nodout = next_output_time(next_nodout, model%db%nodout_dt, t)
          end if
@@ -212,7 +229,11 @@ contains
          model%time = t + dt
          model%cycle = model%cycle + 1
          dt_old = dt
+         ! ---- cycle boundary: restart dumps, signals, wall-clock limit, ENDENG
+         call checkpoint_stage(ck, model, out, stopped, error)
+         if (stopped) return
       end do
+      end associate
       call log_info('dynx: normal termination at cycle '//str(model%cycle)//', time '// &
                     rstr(model%time)//', energy ratio '//rstr(model%energy%ratio, 8))
       call log_info('dynx: wall time '//rstr(wall_time() - t0wall, 4)//' s, '// &
@@ -324,15 +345,20 @@ contains
    end subroutine nan_failure
 
    !> After a failure: write the last state and close the files so the output stays readable.
-   subroutine finish(model, out, error)
+   subroutine finish(model, out, ck, error)
       type(model_t), intent(inout) :: model
       type(output_t), intent(inout) :: out
+      type(checkpoint_t), intent(inout) :: ck
       type(error_t), allocatable, intent(inout) :: error
       type(error_t), allocatable :: ioerr
+      character(:), allocatable :: dump
+      call checkpoint_failure_dump(ck, model, out, dump)
       call out%write_plot(model, ioerr)
       if (allocated(ioerr)) deallocate(ioerr)
       call out%close(ioerr)
       if (allocated(error)) error%message = error%message//new_line('a')// &
          'dynx: the last state (time '//rstr(model%time)//') was written to the plot file'
+      if (allocated(error) .and. len(dump) > 0) error%message = error%message// &
+         new_line('a')//'dynx: state at the failure (for inspection, not restartable) in '//dump
    end subroutine finish
 end module dx_explicit

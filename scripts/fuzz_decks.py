@@ -1,0 +1,295 @@
+#!/usr/bin/env python3
+"""Deck-reader fuzzer (issue 7): mutate the regression decks and run `dynx --check` on each.
+
+Every run must end with exit 0, or exit 2 with a message that names the file and the line
+(`path:line`). Anything else is a defect: a signal, a sanitizer or -fcheck report, a Fortran
+runtime error or backtrace, exit code 1 or any other, a hang (timeout), or an exit-2 message
+without file:line. Defective inputs are kept in build/fuzz/fail-*/ for replay.
+
+Mutations (1 to 3 stacked per input): byte flips, truncation, swapped fields, huge / tiny /
+NaN / Inf / malformed numbers, deleted cards and keyword lines, duplicated and swapped
+lines, over-long lines, random keywords, *INCLUDE recursion (self-include, deep chains).
+
+    python3 scripts/fuzz_decks.py --count 300 --seed 7 --jobs 2     (make test)
+    python3 scripts/fuzz_decks.py --count 10000 --jobs 2            (make fuzz)
+    python3 scripts/fuzz_decks.py --report docs/fuzz-report.md ...  (message classes table)
+
+The binary is bin/dynx-asan (debug + AddressSanitizer + UBSan) when present, else
+bin/dynx-debug; override with --dynx. Standard library only.
+"""
+import argparse, collections, concurrent.futures as cf, os, random, re, shutil, subprocess, sys, time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+NUMS = ['1e308', '1e309', '-1e400', '1e-400', '9999999999', '99999999999999999999',
+        '2147483647', '2147483648', '-2147483649', 'NaN', 'nan', 'Inf', '-Infinity',
+        '0x10', '1.5.5', '+-1', 'd', '1d5', '1e', '.', '-', '+', 'e5', '1e+', '0', '-0',
+        '-1', '1.0e30', '-1.0e30', '3.4e38', '1,5', '1 2', '**', '&', '&x', "'"]
+KEYWORDS = ['*NODE', '*ELEMENT_SOLID', '*PART', '*SECTION_SOLID', '*MAT_ELASTIC',
+            '*MAT_PLASTIC_KINEMATIC', '*MAT_PIECEWISE_LINEAR_PLASTICITY', '*DEFINE_CURVE',
+            '*SET_NODE_LIST', '*SET_PART_LIST', '*SET_SEGMENT', '*BOUNDARY_SPC_NODE',
+            '*BOUNDARY_SPC_SET', '*BOUNDARY_PRESCRIBED_MOTION_NODE',
+            '*BOUNDARY_PRESCRIBED_MOTION_SET', '*LOAD_NODE_POINT', '*LOAD_SEGMENT',
+            '*LOAD_SEGMENT_SET', '*RIGIDWALL_PLANAR', '*INITIAL_VELOCITY',
+            '*INITIAL_VELOCITY_NODE', '*INITIAL_VELOCITY_GENERATION', '*CONTROL_TERMINATION',
+            '*CONTROL_TIMESTEP', '*CONTROL_HOURGLASS', '*CONTROL_BULK_VISCOSITY',
+            '*DATABASE_BINARY_D3PLOT', '*DATABASE_GLSTAT', '*DATABASE_NODOUT',
+            '*DATABASE_HISTORY_NODE', '*DATABASE_HISTORY_NODE_SET', '*DATABASE_BINARY_D3DUMP',
+            '*DATABASE_BINARY_RUNRSF', '*HOURGLASS', '*PARAMETER', '*INCLUDE', '*KEYWORD',
+            '*TITLE', '*END', '*PART_TITLE', '*DEFINE_CURVE_TITLE', '*KEYWORD LONG=Y']
+
+
+def decks():
+    out = []
+    reg = os.path.join(ROOT, 'tests', 'regression')
+    for c in sorted(os.listdir(reg)):
+        p = os.path.join(reg, c, 'deck.k')
+        if os.path.isfile(p):
+            with open(p, 'rb') as f:
+                out.append((c, f.read()))
+    return out
+
+
+def data_lines(lines):
+    return [i for i, l in enumerate(lines) if l and not l.startswith((b'*', b'$'))]
+
+
+def mutate(rng, text, files):
+    """One mutation of text (bytes); may add extra files (name -> bytes). Returns (text, tag)."""
+    lines = text.split(b'\n')
+    kind = rng.choice(['flip', 'flip', 'truncate', 'swap_fields', 'number', 'number', 'number',
+                       'delete_card', 'delete_keyword', 'duplicate', 'swap_lines', 'long_line',
+                       'keyword', 'include_self', 'include_chain', 'negate', 'blank_field',
+                       'shift'])
+    dl = data_lines(lines)
+    if kind == 'flip' and text:
+        b = bytearray(text)
+        for _ in range(rng.randint(1, 4)):
+            b[rng.randrange(len(b))] = rng.choice([0, 9, 10, 13, 32, 36, 42, 43, 44, 45, 46, 38,
+                                                    rng.randrange(256)])
+        return bytes(b), kind
+    if kind == 'truncate' and text:
+        return text[:rng.randrange(len(text))], kind
+    if kind == 'swap_fields' and dl:
+        i = rng.choice(dl)
+        l = lines[i]
+        f = [l[k:k + 10] for k in range(0, max(len(l), 10), 10)]
+        if len(f) >= 2:
+            a, b = rng.sample(range(len(f)), 2)
+            f[a], f[b] = f[b], f[a]
+            lines[i] = b''.join(f)
+        return b'\n'.join(lines), kind
+    if kind in ('number', 'negate', 'blank_field') and dl:
+        i = rng.choice(dl)
+        l = lines[i].decode('latin-1')
+        toks = list(re.finditer(r'\S+', l))
+        if toks:
+            t = rng.choice(toks)
+            if kind == 'number':
+                new = rng.choice(NUMS)
+                if rng.random() < 0.5:   # keep the field width (right-aligned in the token span)
+                    w = t.end() - t.start()
+                    new = new[-w:].rjust(w) if len(new) <= w or rng.random() < 0.5 else new
+            elif kind == 'negate':
+                new = '-' + t.group(0)
+            else:
+                new = ' ' * (t.end() - t.start())
+            l = l[:t.start()] + new + l[t.end():]
+            lines[i] = l.encode('latin-1')
+        return b'\n'.join(lines), kind
+    if kind == 'delete_card' and dl:
+        del lines[rng.choice(dl)]
+        return b'\n'.join(lines), kind
+    if kind == 'delete_keyword':
+        kl = [i for i, l in enumerate(lines) if l.startswith(b'*')]
+        if kl:
+            del lines[rng.choice(kl)]
+        return b'\n'.join(lines), kind
+    if kind == 'duplicate' and lines:
+        i = rng.randrange(len(lines))
+        lines.insert(i, lines[i])
+        return b'\n'.join(lines), kind
+    if kind == 'swap_lines' and len(lines) > 2:
+        a, b = rng.sample(range(len(lines)), 2)
+        lines[a], lines[b] = lines[b], lines[a]
+        return b'\n'.join(lines), kind
+    if kind == 'long_line' and lines:
+        i = rng.randrange(len(lines))
+        lines[i] = lines[i] + b'1' * rng.choice([70, 200, 1000, 100000])
+        return b'\n'.join(lines), kind
+    if kind == 'keyword' and lines:
+        i = rng.randrange(len(lines))
+        kw = rng.choice(KEYWORDS).encode()
+        cards = [b''.join(rng.choice(NUMS + ['1', '2', '0', '1.0']).rjust(10).encode()
+                          for _ in range(rng.randint(0, 8))) for _ in range(rng.randint(0, 3))]
+        lines[i:i] = [kw] + cards
+        return b'\n'.join(lines), kind
+    if kind == 'shift' and dl:
+        i = rng.choice(dl)
+        lines[i] = b' ' * rng.randint(1, 9) + lines[i]
+        return b'\n'.join(lines), kind
+    if kind == 'include_self':
+        lines.insert(min(1, len(lines)), b'*INCLUDE')
+        lines.insert(min(2, len(lines)), b'deck.k')
+        return b'\n'.join(lines), kind
+    if kind == 'include_chain':
+        depth = rng.choice([5, 19, 20, 21, 30, 60])
+        for d in range(depth):
+            nxt = b'inc%d.k' % (d + 1) if d + 1 < depth else b'missing_or_last.k'
+            files['inc%d.k' % d] = b'*KEYWORD\n*INCLUDE\n' + nxt + b'\n*END\n'
+        if rng.random() < 0.5:
+            files['missing_or_last.k'] = b'*KEYWORD\n*END\n'
+        lines.insert(min(1, len(lines)), b'*INCLUDE')
+        lines.insert(min(2, len(lines)), b'inc0.k')
+        return b'\n'.join(lines), kind
+    return text, 'none'
+
+
+MSG_RE = re.compile(r'[\w./+-]*\.k:\d+')
+# a whole-deck condition (no elements, no *CONTROL_TERMINATION) has no line: 'deck.k: ...'
+WHOLE_RE = re.compile(r'[\w./+-]*\.k: ')
+
+
+def classify(rc, err):
+    """(ok, outcome, message class, first message line)."""
+    # the card echo of an over-long line can be 100k characters: keep every line short so
+    # the regular expressions below stay linear
+    err = '\n'.join(l[:300] for l in err.splitlines())
+    first = ''
+    for l in err.splitlines():
+        if l.strip():
+            first = l.strip()
+            break
+    bad = ('AddressSanitizer', 'runtime error', 'Fortran runtime error', 'Backtrace',
+           'Error termination', 'LeakSanitizer', 'SUMMARY: ', 'Segmentation', 'Program received')
+    for b in bad:
+        if b in err:
+            return False, 'crash (%s)' % b.strip(), '', first
+    if rc == 124:
+        return False, 'hang (timeout)', '', first
+    if rc < 0 or rc >= 128:
+        return False, 'signal %d' % (-rc if rc < 0 else rc - 128), '', first
+    if rc == 0:
+        return True, 'exit 0', '', ''
+    if rc != 2:
+        return False, 'exit %d' % rc, '', first
+    if not MSG_RE.search(err) and not WHOLE_RE.search(err):
+        return False, 'exit 2 without file:line', '', first
+    return True, 'exit 2', message_class(first), first
+
+
+def message_class(m):
+    m = re.sub(r'^dynx: error: ', '', m)
+    m = MSG_RE.sub('FILE:LINE', m)
+    m = WHOLE_RE.sub('FILE: ', m)
+    m = re.sub(r'FILE:LINE:\d+', 'FILE:LINE', m)
+    m = re.sub(r"'[^']*'", "'...'", m)
+    m = re.sub(r'\*[A-Z][A-Z0-9_]*', '*KEYWORD', m)
+    m = re.sub(r'field [A-Z][A-Z0-9_]*', 'field F', m)
+    m = re.sub(r'[-+]?\d[\d.]*(?:[eE][-+]?\d+)?', 'N', m)
+    m = re.sub(r'\bN( N)+\b', 'N', m)
+    return m[:110]
+
+
+def run_one(args, idx, name, text, files, workdir, dynx, timeout):
+    d = os.path.join(workdir, 'c%06d' % idx)
+    os.makedirs(d, exist_ok=True)
+    for fn, data in files.items():
+        with open(os.path.join(d, fn), 'wb') as f:
+            f.write(data)
+    with open(os.path.join(d, 'deck.k'), 'wb') as f:
+        f.write(text)
+    env = dict(os.environ)
+    env['ASAN_OPTIONS'] = 'detect_leaks=0:halt_on_error=1:abort_on_error=0'
+    env['UBSAN_OPTIONS'] = 'print_stacktrace=1:halt_on_error=1'
+    env['GFORTRAN_ERROR_BACKTRACE'] = '1'
+    try:
+        p = subprocess.run(['timeout', '-s', 'KILL', str(timeout), dynx, '--check', '-i',
+                            os.path.join(d, 'deck.k')], capture_output=True, env=env,
+                           cwd=d)
+        rc = p.returncode
+        if rc == 137 or rc == -9:
+            rc = 124
+        err = p.stderr.decode('latin-1') + p.stdout.decode('latin-1')[-2000:]
+    except Exception as e:   # pragma: no cover
+        rc, err = 1, 'fuzz driver: %s' % e
+    ok, outcome, cls, first = classify(rc, err)
+    if ok:
+        shutil.rmtree(d, ignore_errors=True)
+    else:
+        keep = os.path.join(workdir, 'fail-%06d' % idx)
+        shutil.rmtree(keep, ignore_errors=True)
+        os.rename(d, keep)
+        with open(os.path.join(keep, 'why.txt'), 'w') as f:
+            f.write('source %s\noutcome %s\nexit %d\n\n%s\n' % (name, outcome, rc, err[-6000:]))
+    return idx, name, ok, outcome, cls, first
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument('--count', type=int, default=300)
+    ap.add_argument('--seed', type=int, default=None)
+    ap.add_argument('--jobs', type=int, default=2)
+    ap.add_argument('--timeout', type=int, default=30)
+    ap.add_argument('--dynx', default=None)
+    ap.add_argument('--workdir', default=os.path.join(ROOT, 'build', 'fuzz'))
+    ap.add_argument('--report', default=None, help='write the message-class table (markdown)')
+    args = ap.parse_args()
+    dynx = args.dynx
+    if dynx is None:
+        dynx = os.path.join(ROOT, 'bin', 'dynx-asan')
+        if not os.access(dynx, os.X_OK):
+            dynx = os.path.join(ROOT, 'bin', 'dynx-debug')
+    if not os.access(dynx, os.X_OK):
+        print('fuzz_decks: %s not found (make debug or make bin/dynx-asan)' % dynx)
+        return 2
+    seed = args.seed if args.seed is not None else random.randrange(1 << 30)
+    rng = random.Random(seed)
+    src = decks()
+    shutil.rmtree(args.workdir, ignore_errors=True)
+    os.makedirs(args.workdir)
+    t0 = time.time()
+    cases = []
+    for i in range(args.count):
+        name, text = rng.choice(src)
+        files, tags = {}, []
+        for _ in range(rng.choice([1, 1, 1, 2, 3])):
+            text, tag = mutate(rng, text, files)
+            tags.append(tag)
+        cases.append((i, name + ':' + '+'.join(tags), text, files))
+    outcomes = collections.Counter()
+    classes = collections.OrderedDict()
+    fails = []
+    with cf.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as ex:
+        futs = [ex.submit(run_one, args, i, n, t, f, args.workdir, dynx, args.timeout)
+                for i, n, t, f in cases]
+        for fu in cf.as_completed(futs):
+            idx, name, ok, outcome, cls, first = fu.result()
+            outcomes[outcome] += 1
+            if not ok:
+                fails.append((idx, name, outcome, first))
+            elif cls:
+                if cls not in classes:
+                    classes[cls] = [0, first, name]
+                classes[cls][0] += 1
+    dt = time.time() - t0
+    print('fuzz_decks: %d inputs (seed %d, %s, %d jobs) in %.1f s: %s' % (
+        args.count, seed, os.path.basename(dynx), args.jobs, dt,
+        ', '.join('%s %d' % kv for kv in sorted(outcomes.items()))))
+    print('fuzz_decks: %d distinct exit-2 message classes' % len(classes))
+    for idx, name, outcome, first in sorted(fails):
+        print('  FAIL %06d %s: %s: %s (kept in %s/fail-%06d)' % (idx, name, outcome, first[:160],
+                                                                  args.workdir, idx))
+    if args.report:
+        with open(args.report, 'w') as f:
+            f.write('| count | message class | example |\n|---:|---|---|\n')
+            for cls, (n, first, name) in sorted(classes.items(), key=lambda kv: -kv[1][0]):
+                ex = first.replace('|', '\\|')
+                ex = re.sub(r'\S*/build/fuzz/c\d+/', '', ex)
+                f.write('| %d | `%s` | `%s` |\n' % (n, cls.replace('|', '\\|').replace('`', "'"),
+                                                     ex[:160].replace('`', "'")))
+    print('fuzz_decks: %d failures' % len(fails))
+    return 1 if fails else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())

@@ -1,0 +1,344 @@
+!> One restart dump file in HDF5: a flat list of named float64 datasets, each with a CRC-32
+!> of its bytes (attribute crc32), a format version and a writer tag on the root group.
+!> Integers and logicals are stored as float64 (exact up to 2**53), so every dataset is one
+!> type and one checksum rule. Written atomically: the datasets go to <path>.tmp, the file
+!> is closed and fsync'ed, renamed onto <path> (rename(2) is atomic in POSIX) and the
+!> directory is fsync'ed, so a crash leaves either the old dump or the new one, never half.
+!> Errors are kept in the file object (the first one wins) so a component's dump routine is
+!> a plain list of put/get calls; rs_commit / rs_close return it.
+!> CRC-32: the IEEE 802.3 polynomial 0xEDB88320 (reflected), table-driven as in
+!> Sarwate, "Computation of cyclic redundancy checks via table look-up", CACM 31(8), 1988.
+module dx_restart_file
+   use, intrinsic :: iso_fortran_env, only: int8, int64
+   use dx_kinds, only: wp
+   use dx_error, only: error_t, set_error, EXIT_IO, EXIT_INPUT
+   use dx_strings, only: str
+   use dx_h5, only: h5_file_t, h5_create, h5_open_read, h5_close, h5_flush, h5_write, &
+                    h5_write_attr, h5_read, h5_read_attr, h5_exists
+   use dx_io_sys, only: sys_rename, sys_fsync
+   implicit none
+   private
+   public :: rs_file_t, rs_create, rs_commit, rs_open, rs_close, crc32, RESTART_FORMAT_VERSION
+
+   !> Bump when the meaning or the list of datasets changes; readers refuse other versions.
+   integer, parameter :: RESTART_FORMAT_VERSION = 1
+
+   type :: rs_file_t
+      type(h5_file_t) :: h5
+      character(:), allocatable :: path        !< final name
+      logical :: writing = .false.
+      type(error_t), allocatable :: err        !< first error
+   contains
+      procedure :: put_r0, put_r1, put_r2, put_r3, put_i0, put_i1, put_i8, put_l1
+      generic :: put => put_r0, put_r1, put_r2, put_r3, put_i0, put_i1, put_i8, put_l1
+      procedure :: get_r0, get_r1, get_r2, get_r3, get_i0, get_i1, get_i8, get_l1
+      generic :: get => get_r0, get_r1, get_r2, get_r3, get_i0, get_i1, get_i8, get_l1
+      procedure :: has => rs_has
+      procedure :: ok => rs_ok
+   end type rs_file_t
+
+   integer(int64), save :: table(0:255)
+   logical, save :: table_ready = .false.
+
+contains
+
+   !> Start a dump that will become path (written to path.tmp until rs_commit).
+   subroutine rs_create(rs, path, writer)
+      type(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: path, writer
+      type(error_t), allocatable :: e
+      rs%path = path
+      rs%writing = .true.
+      if (allocated(rs%err)) deallocate(rs%err)
+      call h5_create(rs%h5, path//'.tmp', e)
+      if (allocated(e)) then
+         call move_alloc(e, rs%err); return
+      end if
+      call h5_write_attr(rs%h5, '/', 'format', 'dynx restart dump', e)
+      if (.not. allocated(e)) call h5_write_attr(rs%h5, '/', 'format_version', &
+                                                 RESTART_FORMAT_VERSION, e)
+      if (.not. allocated(e)) call h5_write_attr(rs%h5, '/', 'writer', writer, e)
+      if (allocated(e)) call move_alloc(e, rs%err)
+   end subroutine rs_create
+
+   !> Close, fsync and rename the dump into place; on any error remove the temporary file.
+   subroutine rs_commit(rs, error)
+      type(rs_file_t), intent(inout) :: rs
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: e
+      integer :: u, ios, k
+      character(:), allocatable :: dir
+      if (.not. allocated(rs%err)) call h5_write_attr(rs%h5, '/', 'complete', 1, rs%err)
+      if (.not. allocated(rs%err)) call h5_flush(rs%h5, rs%err)
+      call h5_close(rs%h5, e)
+      if (allocated(e) .and. .not. allocated(rs%err)) call move_alloc(e, rs%err)
+      if (.not. allocated(rs%err)) call sys_fsync(rs%path//'.tmp', rs%err)
+      if (.not. allocated(rs%err)) call sys_rename(rs%path//'.tmp', rs%path, rs%err)
+      if (.not. allocated(rs%err)) then
+         k = index(rs%path, '/', back=.true.)
+         dir = '.'
+         if (k > 1) dir = rs%path(1:k - 1)
+         call sys_fsync(dir, e)      ! the rename itself on disk; not fatal if refused
+      end if
+      rs%writing = .false.
+      if (allocated(rs%err)) then
+         open(newunit=u, file=rs%path//'.tmp', status='old', iostat=ios)
+         if (ios == 0) close(u, status='delete', iostat=ios)
+         call move_alloc(rs%err, error)
+      end if
+   end subroutine rs_commit
+
+   !> Open a dump for reading and check its format and version.
+   subroutine rs_open(rs, path, error)
+      type(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: path
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: e
+      integer :: ver, complete
+      rs%path = path
+      rs%writing = .false.
+      if (allocated(rs%err)) deallocate(rs%err)
+      call h5_open_read(rs%h5, path, error)
+      if (allocated(error)) then
+         error%message = 'restart file '//path//': '//error%message
+         return
+      end if
+      call h5_read_attr(rs%h5, '/', 'format_version', ver, e)
+      if (allocated(e)) then
+         call set_error(error, 'restart file '//path//' is not a dynx restart dump '// &
+                        '(no format_version attribute)', EXIT_INPUT)
+      else if (ver /= RESTART_FORMAT_VERSION) then
+         call set_error(error, 'restart file '//path//' has format version '//str(ver)// &
+            '; this dynx reads version '//str(RESTART_FORMAT_VERSION), EXIT_INPUT)
+      else
+         call h5_read_attr(rs%h5, '/', 'complete', complete, e)
+         if (allocated(e) .or. complete /= 1) call set_error(error, 'restart file '//path// &
+            ' is incomplete (its writer stopped before the end)', EXIT_INPUT)
+      end if
+      if (allocated(error)) call h5_close(rs%h5, e)
+   end subroutine rs_open
+
+   !> Close a dump opened for reading; returns the first error of the gets.
+   subroutine rs_close(rs, error)
+      type(rs_file_t), intent(inout) :: rs
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: e
+      call h5_close(rs%h5, e)
+      if (allocated(rs%err)) then
+         call move_alloc(rs%err, error)
+      else if (allocated(e)) then
+         call move_alloc(e, error)
+      end if
+   end subroutine rs_close
+
+   logical function rs_ok(rs)
+      class(rs_file_t), intent(in) :: rs
+      rs_ok = .not. allocated(rs%err)
+   end function rs_ok
+
+   !> Whether the dump holds dataset name (optional components).
+   logical function rs_has(rs, name)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      type(error_t), allocatable :: e
+      call h5_exists(rs%h5, '/'//name, rs_has, e)
+      if (allocated(e)) rs_has = .false.
+   end function rs_has
+
+   ! ------------------------------------------------------------------ writing
+   !> The one writer: a flat float64 array plus its CRC-32.
+   subroutine put_flat(rs, name, a)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      real(wp), intent(in) :: a(:)
+      if (allocated(rs%err)) return
+      call h5_write(rs%h5, '/'//name, a, rs%err)
+      if (allocated(rs%err)) return
+      call h5_write_attr(rs%h5, '/'//name, 'crc32', real(crc32(a), wp), rs%err)
+   end subroutine put_flat
+
+   subroutine put_r0(rs, name, a)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      real(wp), intent(in) :: a
+      call put_flat(rs, name, [a])
+   end subroutine put_r0
+   subroutine put_r1(rs, name, a)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      real(wp), intent(in) :: a(:)
+      call put_flat(rs, name, a)
+   end subroutine put_r1
+   subroutine put_r2(rs, name, a)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      real(wp), intent(in) :: a(:, :)
+      call put_flat(rs, name, reshape(a, [size(a)]))
+   end subroutine put_r2
+   subroutine put_r3(rs, name, a)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      real(wp), intent(in) :: a(:, :, :)
+      call put_flat(rs, name, reshape(a, [size(a)]))
+   end subroutine put_r3
+   subroutine put_i0(rs, name, a)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      integer, intent(in) :: a
+      call put_flat(rs, name, [real(a, wp)])
+   end subroutine put_i0
+   subroutine put_i8(rs, name, a)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      integer(int64), intent(in) :: a
+      call put_flat(rs, name, [real(a, wp)])
+   end subroutine put_i8
+   subroutine put_i1(rs, name, a)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      integer, intent(in) :: a(:)
+      call put_flat(rs, name, real(a, wp))
+   end subroutine put_i1
+   subroutine put_l1(rs, name, a)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      logical, intent(in) :: a(:)
+      call put_flat(rs, name, merge(1.0_wp, 0.0_wp, a))
+   end subroutine put_l1
+
+   ! ------------------------------------------------------------------ reading
+   !> The one reader: dataset name as a flat array of exactly n values, CRC checked.
+   subroutine get_flat(rs, name, n, buf)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      integer, intent(in) :: n
+      real(wp), allocatable, intent(out) :: buf(:)
+      real(wp) :: crc
+      if (allocated(rs%err)) then
+         allocate(buf(n)); buf = 0.0_wp; return
+      end if
+      call h5_read(rs%h5, '/'//name, buf, rs%err)
+      if (allocated(rs%err)) then
+         rs%err%message = 'restart file '//rs%path//': no dataset '//name// &
+                          ' (a dump of another deck or version?)'
+         rs%err%code = EXIT_INPUT
+      else if (size(buf) /= n) then
+         call set_error(rs%err, 'restart file '//rs%path//': dataset '//name//' has '// &
+            str(size(buf))//' values, this deck needs '//str(n)// &
+            ' (is it a dump of this deck?)', EXIT_INPUT)
+      else
+         call h5_read_attr(rs%h5, '/'//name, 'crc32', crc, rs%err)
+         if (.not. allocated(rs%err)) then
+            if (crc /= real(crc32(buf), wp)) call set_error(rs%err, 'restart file '// &
+               rs%path//': checksum mismatch in dataset '//name//' (the file is damaged)', &
+               EXIT_IO)
+         end if
+      end if
+      if (allocated(rs%err)) then
+         if (allocated(buf)) deallocate(buf)
+         allocate(buf(n)); buf = 0.0_wp
+      end if
+   end subroutine get_flat
+
+   subroutine get_r0(rs, name, a)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      real(wp), intent(inout) :: a
+      real(wp), allocatable :: b(:)
+      call get_flat(rs, name, 1, b)
+      if (rs%ok()) a = b(1)
+   end subroutine get_r0
+   subroutine get_r1(rs, name, a)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      real(wp), intent(inout) :: a(:)
+      real(wp), allocatable :: b(:)
+      call get_flat(rs, name, size(a), b)
+      if (rs%ok()) a = b
+   end subroutine get_r1
+   subroutine get_r2(rs, name, a)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      real(wp), intent(inout) :: a(:, :)
+      real(wp), allocatable :: b(:)
+      call get_flat(rs, name, size(a), b)
+      if (rs%ok()) a = reshape(b, shape(a))
+   end subroutine get_r2
+   subroutine get_r3(rs, name, a)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      real(wp), intent(inout) :: a(:, :, :)
+      real(wp), allocatable :: b(:)
+      call get_flat(rs, name, size(a), b)
+      if (rs%ok()) a = reshape(b, shape(a))
+   end subroutine get_r3
+   subroutine get_i0(rs, name, a)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      integer, intent(inout) :: a
+      real(wp), allocatable :: b(:)
+      call get_flat(rs, name, 1, b)
+      if (rs%ok()) a = nint(b(1))
+   end subroutine get_i0
+   subroutine get_i8(rs, name, a)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      integer(int64), intent(inout) :: a
+      real(wp), allocatable :: b(:)
+      call get_flat(rs, name, 1, b)
+      if (rs%ok()) a = nint(b(1), int64)
+   end subroutine get_i8
+   subroutine get_i1(rs, name, a)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      integer, intent(inout) :: a(:)
+      real(wp), allocatable :: b(:)
+      call get_flat(rs, name, size(a), b)
+      if (rs%ok()) a = nint(b)
+   end subroutine get_i1
+   subroutine get_l1(rs, name, a)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      logical, intent(inout) :: a(:)
+      real(wp), allocatable :: b(:)
+      call get_flat(rs, name, size(a), b)
+      if (rs%ok()) a = b /= 0.0_wp
+   end subroutine get_l1
+
+   ! ------------------------------------------------------------------ CRC-32
+   !> CRC-32 (IEEE, reflected 0xEDB88320, init and final xor 0xFFFFFFFF) of the bytes of a.
+   !> Returned in 0 .. 2**32-1; all arithmetic stays below 2**32 in 64-bit integers.
+   integer(int64) function crc32(a) result(c)
+      real(wp), intent(in) :: a(:)
+      integer(int8), allocatable :: bytes(:)
+      integer(int64), parameter :: MASK32 = int(z'FFFFFFFF', int64)
+      integer :: i
+      if (.not. table_ready) call make_table()
+      c = MASK32
+      if (size(a) > 0) then
+         bytes = transfer(a, bytes)
+         do i = 1, size(bytes)
+            c = ieor(table(iand(ieor(c, int(bytes(i), int64)), 255_int64)), shiftr(c, 8))
+         end do
+      end if
+      c = ieor(c, MASK32)
+   end function crc32
+
+   subroutine make_table()
+      integer(int64), parameter :: POLY = int(z'EDB88320', int64)
+      integer(int64) :: c
+      integer :: n, k
+      do n = 0, 255
+         c = int(n, int64)
+         do k = 1, 8
+            if (iand(c, 1_int64) /= 0) then
+               c = ieor(POLY, shiftr(c, 1))
+            else
+               c = shiftr(c, 1)
+            end if
+         end do
+         table(n) = c
+      end do
+      table_ready = .true.
+   end subroutine make_table
+end module dx_restart_file

@@ -1,0 +1,200 @@
+!> When to write restart dumps and when to stop, called once per cycle at the cycle
+!> boundary (the state a dump holds, see dx_restart):
+!>  - *DATABASE_BINARY_RUNRSF every CYCL cycles: runrsf.h5 (NR > 1: runrsf01..NR.h5 in
+!>    rotation), *DATABASE_BINARY_D3DUMP every CYCL cycles: d3dump01.h5, d3dump02.h5, ...
+!>  - SIGUSR1: a d3dump now, and go on; SIGTERM/SIGINT: a d3dump, the last plot state,
+!>    stop (exit code 5, EXIT_CHECKPOINT) with the command that continues the run;
+!>  - the wall-clock limit (--walltime, or SLURM_JOB_END_TIME): stop like SIGTERM when the
+!>    time left is below the safety margin 3*(time per cycle) + 2*(dump + plot-state cost),
+!>    both measured as the run goes (the first dump cost is estimated from its size at
+!>    100 MB/s plus 50 ms);
+!>  - *CONTROL_TERMINATION ENDENG: the energy ratio left the band 1 +- ENDENG/100 (flagged
+!>    by the solver), stop like SIGTERM but with exit code 3 (numerical failure).
+!> A numerical failure in the middle of a cycle writes a d3dump marked as not restartable.
+module dx_checkpoint
+   use dx_kinds, only: wp
+   use dx_error, only: error_t, set_error, EXIT_CHECKPOINT, EXIT_NUMERIC
+   use dx_strings, only: str, rstr
+   use dx_log, only: log_info, log_flush
+   use dx_timer, only: wall_time
+   use dx_model, only: model_t
+   use dx_output, only: output_t
+   use dx_restart, only: restart_write
+   use dx_signals, only: signal_stop_requested, signal_dump_requested, signal_name, &
+                         signal_raise
+   implicit none
+   private
+   public :: checkpoint_t, checkpoint_stage, checkpoint_failure_dump
+
+   type :: checkpoint_t
+      character(:), allocatable :: outdir       !< where dumps go (the output directory)
+      character(:), allocatable :: deck         !< for the "continue with" message
+      real(wp) :: walltime = 0.0_wp             !< seconds allowed from wall0 (0: no limit)
+      real(wp) :: wall0 = 0.0_wp                !< wall_time() at the start of the run
+      real(wp) :: last = -1.0_wp                !< wall_time() at the previous call
+      real(wp) :: cycle_cost = 0.0_wp           !< smoothed seconds per cycle
+      real(wp) :: dump_cost = -1.0_wp           !< seconds of the costliest dump (-1: none yet)
+      integer :: raise_cycle = 0                !< testing: raise raise_sig at this cycle
+      integer :: raise_sig = 0                  !< (--raise-at-cycle N:SIG, real handler path)
+      logical :: endeng_hit = .false.           !< set by the solver
+   end type checkpoint_t
+
+contains
+
+   !> The per-cycle stage: periodic dumps, SIGUSR1, stop requests. stopped: the run must
+   !> end now; error then carries the exit code and the message (with how to continue).
+   subroutine checkpoint_stage(ck, model, out, stopped, error)
+      type(checkpoint_t), intent(inout) :: ck
+      type(model_t), intent(inout) :: model
+      type(output_t), intent(inout) :: out
+      logical, intent(out) :: stopped
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: now, margin, est
+      integer :: sig, nr
+      character(:), allocatable :: path, why
+
+      stopped = .false.
+      if (ck%raise_cycle > 0 .and. model%cycle == ck%raise_cycle) call signal_raise(ck%raise_sig)
+      now = wall_time()
+      if (ck%last >= 0.0_wp) then
+         if (ck%cycle_cost == 0.0_wp) then
+            ck%cycle_cost = now - ck%last
+         else
+            ck%cycle_cost = 0.9_wp*ck%cycle_cost + 0.1_wp*(now - ck%last)
+         end if
+      end if
+      ck%last = now
+      ! ---- periodic dumps
+      if (model%rst%runrsf_cycl > 0) then
+         if (mod(model%cycle, model%rst%runrsf_cycl) == 0) then
+            nr = max(1, model%rst%runrsf_nr)
+            model%run%nrunrsf = model%run%nrunrsf + 1
+            if (nr == 1) then
+               path = ck%outdir//'/runrsf.h5'
+            else
+               path = ck%outdir//'/runrsf'//two(mod(model%run%nrunrsf - 1, nr) + 1)//'.h5'
+            end if
+            call write_dump(ck, model, out, path, 'runrsf', error)
+            if (allocated(error)) then
+               stopped = .true.; return
+            end if
+         end if
+      end if
+      if (model%rst%d3dump_cycl > 0) then
+         if (mod(model%cycle, model%rst%d3dump_cycl) == 0) then
+            call next_d3dump(ck, model, path)
+            call write_dump(ck, model, out, path, 'd3dump', error)
+            if (allocated(error)) then
+               stopped = .true.; return
+            end if
+         end if
+      end if
+      if (signal_dump_requested()) then
+         call next_d3dump(ck, model, path)
+         call write_dump(ck, model, out, path, 'signal', error)
+         if (allocated(error)) then
+            stopped = .true.; return
+         end if
+         call log_info('dynx: SIGUSR1: restart dump '//path//' written at cycle '// &
+                       str(model%cycle)//', time '//rstr(model%time)//'; going on')
+         call log_flush()
+      end if
+      ! ---- stop requests
+      sig = signal_stop_requested()
+      why = ''
+      if (sig /= 0) then
+         why = signal_name(sig)
+      else if (ck%endeng_hit) then
+         why = 'ENDENG'
+      else if (ck%walltime > 0.0_wp) then
+         est = ck%dump_cost
+         if (est < 0.0_wp) est = estimated_dump_cost(model)
+         margin = 3.0_wp*ck%cycle_cost + 2.0_wp*est
+         if (now - ck%wall0 + margin >= ck%walltime) why = 'the wall-clock limit ('// &
+            rstr(ck%walltime, 4)//' s, safety margin '//rstr(margin, 3)//' s)'
+      end if
+      if (len(why) == 0) return
+      stopped = .true.
+      call next_d3dump(ck, model, path)
+      call write_dump(ck, model, out, path, 'signal', error)
+      if (allocated(error)) return
+      call out%write_plot(model, error)
+      if (allocated(error)) return
+      call out%close(error)
+      if (allocated(error)) return
+      if (why == 'ENDENG') then
+         call set_error(error, 'energy ratio '//rstr(model%energy%ratio, 8)//' left the '// &
+            'band 1 +- ENDENG/100 = '//rstr(model%ctrl%endeng/100.0_wp, 4)// &
+            ' (*CONTROL_TERMINATION ENDENG) at cycle '//str(model%cycle)//', time '// &
+            rstr(model%time)//new_line('a')//'dynx: restart dump '//path// &
+            ' and the last plot state written', EXIT_NUMERIC)
+      else
+         call set_error(error, 'dynx: stopped by '//why//' at cycle '//str(model%cycle)// &
+            ', time '//rstr(model%time)//'; restart dump '//path//' and the last plot '// &
+            'state written, all files closed.'//new_line('a')//'dynx: continue with: '// &
+            'dynx -i '//ck%deck//' -o '//ck%outdir//' -r '//path, EXIT_CHECKPOINT)
+      end if
+   end subroutine checkpoint_stage
+
+   !> After a numerical failure in the middle of a cycle: a dump for inspection (marked not
+   !> restartable). Returns its path ('' when it could not be written).
+   subroutine checkpoint_failure_dump(ck, model, out, path)
+      type(checkpoint_t), intent(inout) :: ck
+      type(model_t), intent(inout) :: model
+      type(output_t), intent(inout) :: out
+      character(:), allocatable, intent(out) :: path
+      type(error_t), allocatable :: e
+      if (.not. allocated(ck%outdir)) then
+         path = ''; return
+      end if
+      call next_d3dump(ck, model, path)
+      call write_dump(ck, model, out, path, 'failure', e)
+      if (allocated(e)) path = ''
+   end subroutine checkpoint_failure_dump
+
+   subroutine next_d3dump(ck, model, path)
+      type(checkpoint_t), intent(in) :: ck
+      type(model_t), intent(inout) :: model
+      character(:), allocatable, intent(out) :: path
+      model%run%ndump = model%run%ndump + 1
+      path = ck%outdir//'/d3dump'//two(model%run%ndump)//'.h5'
+   end subroutine next_d3dump
+
+   !> Record the output sizes in the loop state and write the dump, timing it.
+   subroutine write_dump(ck, model, out, path, kind, error)
+      type(checkpoint_t), intent(inout) :: ck
+      type(model_t), intent(inout) :: model
+      type(output_t), intent(in) :: out
+      character(*), intent(in) :: path, kind
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: t0
+      t0 = wall_time()
+      call out%sizes(model%run%nplot, model%run%glstat_bytes, model%run%nodout_bytes)
+      call restart_write(model, path, kind, error)
+      ck%dump_cost = max(ck%dump_cost, wall_time() - t0)
+   end subroutine write_dump
+
+   !> Before any dump was timed: its size (x, v and the element state) at 100 MB/s + 50 ms,
+   !> doubled for the plot state written with it.
+   real(wp) function estimated_dump_cost(model) result(c)
+      type(model_t), intent(in) :: model
+      real(wp) :: bytes
+      integer :: b
+      bytes = 8.0_wp*6.0_wp*real(model%nn, wp)
+      do b = 1, size(model%blocks)
+         bytes = bytes + 8.0_wp*real(size(model%blocks(b)%sig) + size(model%blocks(b)%hv) + &
+                                     6*model%blocks(b)%nel, wp)
+      end do
+      c = 2.0_wp*(bytes/1.0e8_wp + 0.05_wp)
+   end function estimated_dump_cost
+
+   !> Two-digit (or wider) file number: 01, 02, ..., 99, 100.
+   function two(k) result(s)
+      integer, intent(in) :: k
+      character(:), allocatable :: s
+      character(12) :: buf
+      write(buf, '(i2.2)') k
+      if (k > 99) write(buf, '(i0)') k
+      s = trim(buf)
+   end function two
+end module dx_checkpoint
