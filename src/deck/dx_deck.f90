@@ -15,6 +15,7 @@ module dx_deck
    use dx_read_loads, only: register_loads
    use dx_read_curves, only: register_curves
    use dx_read_restart, only: register_restart
+   use dx_read_rigid, only: register_rigid
    use dx_model, only: model_t
    use dx_model_input, only: model_input_t, input_init
    use dx_model_build, only: build_model
@@ -34,6 +35,7 @@ contains
       call register_loads(reg)
       call register_curves(reg)
       call register_restart(reg)
+      call register_rigid(reg)
    end function new_registry
 
    !> Read the deck at path into model (x0, v0, blocks, parts, ...; the solver allocates

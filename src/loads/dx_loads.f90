@@ -1,4 +1,5 @@
-!> External loads evaluated once per cycle: *LOAD_NODE_POINT (force along a global axis) and
+!> External loads evaluated once per cycle: *LOAD_NODE_POINT (force along a global axis),
+!> *LOAD_BODY_X/Y/Z (base acceleration, dx_load_body) and
 !> *LOAD_SEGMENT(_SET) pressure on 3/4-node segments of the current geometry. A positive
 !> pressure acts against the segment normal given by the right-hand rule on n1..n4
 !> (LS-DYNA convention). Nodal shares: area vector A = (d13 x d24)/2 split 1/4 per node for a
@@ -8,6 +9,7 @@ module dx_loads
    use dx_kinds, only: wp
    use dx_vec3, only: cross
    use dx_model, only: model_t
+   use dx_load_body, only: add_body_loads
    implicit none
    private
    public :: add_external_loads, has_external_loads
@@ -20,6 +22,8 @@ contains
       if (allocated(model%node_loads)) has_external_loads = size(model%node_loads) > 0
       if (allocated(model%seg_loads)) has_external_loads = has_external_loads .or. &
                                                             size(model%seg_loads) > 0
+      if (allocated(model%body_loads)) has_external_loads = has_external_loads .or. &
+                                                             size(model%body_loads) > 0
    end function has_external_loads
 
    !> Add the external forces at time t to fext(3,nn) (zeroed by the caller).
@@ -29,6 +33,8 @@ contains
       real(wp), intent(inout) :: fext(:, :)
       integer :: k, nd, n1, n2, n3, n4
       real(wp) :: val, p, d1(3), d2(3), area(3)
+      if (allocated(model%body_loads)) call add_body_loads(model%body_loads, model%curves, &
+                                                           model%mass, t, fext)
       if (allocated(model%node_loads)) then
          do k = 1, size(model%node_loads)
             associate (ld => model%node_loads(k))

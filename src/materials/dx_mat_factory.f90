@@ -7,12 +7,13 @@ module dx_mat_factory
    use dx_mat_elastic, only: mat_elastic_t
    use dx_mat_plastic_kinematic, only: mat_plastic_kinematic_t
    use dx_mat_piecewise_linear, only: mat_piecewise_linear_t
+   use dx_mat_rigid, only: mat_rigid_t
    implicit none
    private
    public :: new_material
 
 contains
-   !> Allocate the material of LS-DYNA type mtype (1, 3, 24).
+   !> Allocate the material of LS-DYNA type mtype (1, 3, 20, 24).
    subroutine new_material(mtype, mat, error)
       integer, intent(in) :: mtype
       class(material_t), allocatable, intent(out) :: mat
@@ -24,6 +25,8 @@ contains
          allocate(mat_plastic_kinematic_t :: mat)
       case (24)
          allocate(mat_piecewise_linear_t :: mat)
+      case (20)
+         allocate(mat_rigid_t :: mat)
       case default
          call set_error(error, 'material type '//str(mtype)//' is not supported'); return
       end select

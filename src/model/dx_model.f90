@@ -7,6 +7,8 @@ module dx_model
    use dx_material, only: mat_holder_t
    use dx_curve, only: curve_t
    use dx_run_state, only: run_state_t, restart_ctrl_t
+   use dx_rigid_types, only: rigid_system_t
+   use dx_load_body, only: body_load_t
    implicit none
    private
    public :: model_t, elem_block_t, part_t, section_t, hourglass_t, node_set_t, part_set_t, &
@@ -198,6 +200,8 @@ module dx_model
       type(load_node_t), allocatable :: node_loads(:)
       type(load_segment_t), allocatable :: seg_loads(:)
       type(rigidwall_t), allocatable :: walls(:)
+      type(body_load_t), allocatable :: body_loads(:)   !< *LOAD_BODY_X/Y/Z (dx_load_body)
+      type(rigid_system_t), allocatable :: rigid        !< rigid bodies (dx_rigid_types)
       ! --- controls and output
       type(control_t) :: ctrl
       type(database_t) :: db

@@ -3,6 +3,7 @@
 !> the card that made them, rejects degenerate and inverted hexahedra, groups elements by part
 !> into blocks of at most nv_chunk elements, resolves hourglass and bulk viscosity settings per
 !> part, and expands initial velocities, constraints, loads and rigid walls onto nodes.
+!> Rigid bodies and body loads are built last (dx_rigid_build).
 !> Initial volume: exact trilinear hexahedron volume (2x2x2 Gauss integration of det J, exact
 !> for the trilinear map; equal to the Flanagan-Belytschko 1981 B-vector volume).
 module dx_model_build
@@ -14,6 +15,7 @@ module dx_model_build
                        load_node_t, load_segment_t, rigidwall_t, ETYPE_HEX8_1PT, ETYPE_HEX8_SRI
    use dx_model_input, only: model_input_t, origin_t, IVEL_SET, IVEL_NODE, IVEL_GEN
    use dx_label_map, only: label_map_t
+   use dx_rigid_build, only: build_rigid, build_body_loads
    implicit none
    private
    public :: build_model, hex_volume
@@ -77,6 +79,10 @@ contains
       call build_loads(inp, model, mp, error)
       if (allocated(error)) return
       call build_controls(inp, model, mp, deck0, error)
+      if (allocated(error)) return
+      call build_body_loads(inp, model, mp%curve, error)
+      if (allocated(error)) return
+      call build_rigid(inp, model, mp%node, mp%part, mp%nset, mp%curve, deck0, error)
    end subroutine build_model
 
    subroutine build_nodes(inp, model, mp, error)

@@ -8,6 +8,8 @@ module dx_model_input
    use dx_material, only: mat_holder_t
    use dx_curve, only: curve_t
    use dx_run_state, only: restart_ctrl_t
+   use dx_rigid_types, only: rigid_input_t
+   use dx_load_body, only: body_load_in_t
    implicit none
    private
    public :: model_input_t, string_t, origin_t, label_list_t, segment_list_t, spc_in_t, &
@@ -131,6 +133,8 @@ module dx_model_input
       type(load_node_in_t), allocatable :: node_loads(:)
       type(load_seg_in_t), allocatable :: seg_loads(:)
       type(wall_in_t), allocatable :: walls(:)
+      type(body_load_in_t), allocatable :: body_loads(:)   !< *LOAD_BODY_X/Y/Z
+      type(rigid_input_t) :: rigid                         !< rigid-body keywords
       ! --- controls and output requests
       type(control_t) :: ctrl
       logical :: has_termination = .false.
@@ -157,6 +161,8 @@ contains
                inp%part_sets(0), inp%segment_sets(0), inp%spcs(0), inp%motions(0), &
                inp%ivels(0), inp%node_loads(0), inp%seg_loads(0), inp%walls(0), &
                inp%hist_nodes(0), inp%hist_node_sets(0))
+      allocate(inp%body_loads(0), inp%rigid%inertias(0), inp%rigid%nrbs(0), &
+               inp%rigid%extras(0), inp%rigid%motions(0))
       allocate(inp%node_label(0), inp%x(3, 0), inp%node_tc(0), inp%node_rc(0), &
                inp%node_src(2, 0))
       allocate(inp%elem_label(0), inp%elem_pid(0), inp%elem_conn(8, 0), inp%elem_src(2, 0))

@@ -21,6 +21,7 @@ module dx_explicit
    use dx_constraints, only: apply_spc, apply_prescribed, apply_rigidwalls
    use dx_output, only: output_t
    use dx_checkpoint, only: checkpoint_t, checkpoint_stage, checkpoint_failure_dump
+   use dx_rigid_solver, only: rigid_step, rigid_write_rbdout, rigid_close
    implicit none
    private
    public :: run_options_t, init_state, run_explicit
@@ -57,6 +58,7 @@ contains
       model%time = 0.0_wp
       model%cycle = 0
       model%energy%mass = sum(model%mass)
+      if (allocated(model%rigid)) model%energy%mass = model%energy%mass + model%rigid%mass_corr
    end subroutine init_state
 
    !> Run the explicit time loop to ENDTIM/ENDCYC, writing output as the deck asks.
@@ -70,7 +72,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: vold(:, :), fext(:, :), vfree(:, :)
       integer, allocatable :: cnodes(:)
-      real(wp) :: dt, dtavg, dtcrit, t, t0wall, ke, eint, ehg, du(3), tend
+      real(wp) :: dt, dtavg, dtcrit, t, t0wall, ke, eint, ehg, du(3), tend, wrig
       integer :: b, i, ibmin, iemin, nd
       logical :: loads, done, stopped
       type(block_result_t) :: res
@@ -90,6 +92,8 @@ contains
          model%run = run_state_t()
          model%run%started = .true.
          model%energy%initial = 0.5_wp*sum(model%mass*sum(model%v**2, dim=1))
+         if (allocated(model%rigid)) model%energy%initial = model%energy%initial + &
+                                                           model%rigid%ke0_corr
       else
          call log_info('dynx: continuing from cycle '//str(model%cycle)//', time '// &
                        rstr(model%time))
@@ -109,6 +113,7 @@ contains
          model%f = 0.0_wp
          dtcrit = huge_wp; ibmin = 0; iemin = 0
          do b = 1, size(model%blocks)
+            if (model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%is_rigid) cycle
             associate (blk => model%blocks(b), part => model%parts(model%blocks(b)%ipart))
                call hex8_block(blk, model%mats(part%imat)%m, part, model%x, model%v, dt_old, &
                                model%f, res)
@@ -123,6 +128,7 @@ contains
             end associate
          end do
          if (ibmin > 0) model%dt_elem = model%blocks(ibmin)%elem(iemin)
+         if (allocated(model%rigid) .and. ibmin == 0) dtcrit = model%rigid%dtcrit
          ! ---- external forces
          if (loads) then
             fext = 0.0_wp
@@ -150,6 +156,8 @@ contains
          do i = 1, model%nn
             if (model%mass(i) > 0.0_wp) model%v(:, i) = model%v(:, i) + dtavg*model%f(:, i)/model%mass(i)
          end do
+         ! rigid bodies take their nodes' summed forces and overwrite their velocities
+         if (allocated(model%rigid)) call rigid_step(model%rigid, model, t, dt, dtavg, vold)
          ! ---- constraints (work of the reaction forces enters the external work)
          do i = 1, size(cnodes)
             vfree(:, i) = model%v(:, cnodes(i))
@@ -174,6 +182,11 @@ contains
             ke = ke + model%mass(i)*dot_product(vold(:, i), model%v(:, i))
          end do
          ke = 0.5_wp*ke
+         wrig = 0.0_wp
+         if (allocated(model%rigid)) then
+            ke = ke + model%rigid%ke_corr
+            wrig = model%rigid%work
+         end if
          if (.not. ieee_is_finite(ke)) then
             call nan_failure(model, error)
             call finish(model, out, ck, error)
@@ -185,7 +198,7 @@ contains
             ehg = ehg + sum(model%blocks(b)%ehg)
          end do
          model%dt = dt
-         call set_energy(model, ke, eint, ehg, wext + wcon, -wrw)
+         call set_energy(model, ke, eint, ehg, wext + wcon + wrig, -wrw)
          if (model%ctrl%endeng > 0.0_wp) ck%endeng_hit = ck%endeng_hit .or. &
             abs(model%energy%ratio - 1.0_wp)*100.0_wp > model%ctrl%endeng
          ! ---- output at t(n)
@@ -215,6 +228,17 @@ contains
             end if
             next_nodout = next_output_time(next_nodout, model%db%nodout_dt, t)
          end if
+         if (allocated(model%rigid)) then
+            if (model%rigid%rbdout_dt > 0.0_wp .and. &
+                (t >= model%rigid%next_rbdout .or. done)) then
+               call rigid_write_rbdout(model%rigid, opts%outdir, t, ioerr)
+               if (allocated(ioerr)) then
+                  call move_alloc(ioerr, error); call finish(model, out, ck, error); return
+               end if
+               model%rigid%next_rbdout = next_output_time(model%rigid%next_rbdout, &
+                                                          model%rigid%rbdout_dt, t)
+            end if
+         end if
          if (t >= next_status .or. done) then
             call status_line(model, t, dt, t0wall, tend)
             if (tend < huge_wp) then
@@ -240,6 +264,7 @@ contains
          rstr(1.0e9_wp*(wall_time() - t0wall)/real(max(1, model%cycle), wp)/ &
          real(max(1, model%ne), wp), 4)//' ns per element-cycle, peak memory '// &
          str(peak_memory_kb())//' KiB')
+      if (allocated(model%rigid)) call rigid_close(model%rigid)
       call out%close(ioerr)
       if (allocated(ioerr)) call move_alloc(ioerr, error)
    end subroutine run_explicit
@@ -270,6 +295,8 @@ contains
       do d = 1, 3
          model%energy%momentum(d) = sum(model%mass*model%v(d, :))
       end do
+      if (allocated(model%rigid)) model%energy%momentum = model%energy%momentum + &
+                                                         model%rigid%p_corr
    end subroutine set_energy
 
    !> Nodes with an SPC or prescribed motion (their reaction forces do work).
@@ -355,6 +382,7 @@ contains
       call checkpoint_failure_dump(ck, model, out, dump)
       call out%write_plot(model, ioerr)
       if (allocated(ioerr)) deallocate(ioerr)
+      if (allocated(model%rigid)) call rigid_close(model%rigid)
       call out%close(ioerr)
       if (allocated(error)) error%message = error%message//new_line('a')// &
          'dynx: the last state (time '//rstr(model%time)//') was written to the plot file'
