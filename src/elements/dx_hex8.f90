@@ -16,6 +16,7 @@ module dx_hex8
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_model, only: elem_block_t, part_t
    use dx_material, only: material_t
+   use dx_scalar_math, only: scalar_pow
    use dx_hex8_geometry, only: hex8_bvectors, hex8_char_length, inv3, GAMMA_HG, XI_NODE
    implicit none
    private
@@ -210,7 +211,7 @@ contains
       if (part%qh > 0.0_wp) then
          do i = 1, n
             rho = mat%ro/rv(i)
-            ah(i) = part%qh*rho*c(i)*vol(i)**(2.0_wp/3.0_wp)/4.0_wp
+            ah(i) = part%qh*rho*c(i)*scalar_pow(vol(i), 2.0_wp/3.0_wp)/4.0_wp
          end do
          do i = 1, n
             ! hourglass shape vectors: Gamma (IHQ 1) or FB gamma (IHQ 2-5)
@@ -280,7 +281,7 @@ contains
       real(wp) :: l
       q = 0.0_wp
       if (trd < 0.0_wp) then
-         l = vol**(1.0_wp/3.0_wp)
+         l = scalar_pow(vol, 1.0_wp/3.0_wp)
          q = rho*l*(part%q1*l*trd**2 - part%q2*c*trd)
       end if
    end function bulk_viscosity

@@ -1,0 +1,470 @@
+!> The MPI engine (ParaDyn step 5; docs/design.md): what `mpirun -np NP bin/dynx` adds to the
+!> serial explicit loop. Every rank reads the deck and builds the serial model, reads its rank
+!> file (dynx-part; or rank 0 partitions when none exists) and turns the model into its
+!> sub-model (dx_par_model: the pieces of the serial element blocks, its nodes, one slot node
+!> per shared element corner, its SPCs and prescribed motions). The loop then makes, per cycle:
+!> one shared-node force exchange in fixed serial order (par_shared_sum), one MINLOC for the
+!> stable step, and - only when the deck has them - one ordered gather of the constrained
+!> and rigid-wall nodes' velocities. Energies, momentum and work terms are not formed from
+!> per-rank partial sums: the terms are gathered (par_gather_ordered) into a global copy of
+!> the model held here, and the serial procedures (dx_energy_sums, apply_rigidwalls) run on
+!> it, so they add the same numbers in the same order with the same code: the parallel run
+!> reproduces the serial one bit for bit (NP = 1..4 regression cases, zero tolerance).
+!> Output: at output times the nodal and element state is gathered into the global model and
+!> rank 0 writes glstat, nodout and d3plot.h5 + d3plot.xdmf exactly as a serial run does.
+!> Fixed-order sums: the idea of OpenRadioss /PARITH/ON; single exchange per cycle: ParaDyn
+!> (Hoover et al., LLNL Engineering Thrust Area Report FY97, article 4 of shared/seed).
+!> Module state (allowed in parallel/): the global model, the rank's plan and maps.
+module dx_par_engine
+   use dx_kinds, only: wp, nv_chunk, huge_wp
+   use dx_error, only: error_t, set_error, EXIT_INPUT
+   use dx_strings, only: str
+   use dx_log, only: log_info, log_set_quiet
+   use dx_model, only: model_t
+   use dx_model_input, only: model_input_t
+   use dx_deck, only: read_deck_input
+   use dx_par, only: par_rank, par_size, par_abort, par_minloc, par_gather_ordered, &
+                     par_allreduce, par_barrier, PAR_MAX
+   use dx_par_model, only: par_model_t, par_model_build, par_fill_slots, par_exchange_forces, &
+                           par_exchange_mass
+   use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report
+   use dx_rank_file, only: read_rank_file, write_rank_file, rank_file_name, deck_content_hash
+   use dx_io_sys, only: sys_mkdir_p
+   use dx_energy_sums, only: initial_kinetic, kinetic_energy, element_energies, &
+                             constraint_work, set_energy, constrained_nodes
+   use dx_constraints, only: apply_rigidwalls
+   implicit none
+   private
+   public :: par_engine_setup, par_engine_on, par_engine_mass, par_engine_initial, &
+             par_engine_fill, par_engine_dt, par_engine_exchange, par_engine_wcon, &
+             par_engine_walls, par_engine_energies, par_engine_output, par_engine_fail, &
+             par_engine_global
+
+   logical, save :: on = .false.
+   type(model_t), target, save :: g                  !< the global model (serial numbering)
+   type(par_model_t), save :: pm                      !< this rank's sub-model plan
+   integer, allocatable, save :: own(:)               !< owned local nodes
+   integer, allocatable, save :: key_elem(:)          !< serial order key -> global element
+   integer, allocatable, save :: gcnodes(:)           !< constrained nodes (global)
+   integer, allocatable, save :: gcpos(:)             !< global node -> position in gcnodes
+   integer, allocatable, save :: wall_loc(:)          !< local nodes on a rigid wall
+   logical, allocatable, save :: owned(:)             !< (nloc) this rank owns the node
+   real(wp), allocatable, save :: gvold(:, :), gvfree(:, :)
+
+contains
+
+   !> True in an MPI run on more than one rank (after par_engine_setup).
+   logical function par_engine_on()
+      par_engine_on = on
+   end function par_engine_on
+
+   !> Turn the serial model (read by every rank) into this rank's sub-model. The rank file is
+   !> partdir/rank_R.h5 when partdir is given, else outdir/rank_R.h5, else rank_R.h5 next
+   !> to the deck; when rank_00000.h5 is in none of them, rank 0 partitions the deck (as
+   !> dynx-part) into outdir first. Errors that concern one rank abort all ranks.
+   subroutine par_engine_setup(model, deck, outdir, partdir, error)
+      type(model_t), intent(inout) :: model
+      character(*), intent(in) :: deck, outdir, partdir
+      type(error_t), allocatable, intent(out) :: error
+      type(model_input_t) :: inp
+      type(rank_part_t) :: rp
+      character(16) :: hash
+      character(:), allocatable :: dir, deckdir
+      integer :: np, me, where, k, i
+      integer, allocatable :: loc(:)
+      logical :: ex
+      np = par_size()
+      me = par_rank()
+      if (np <= 1) return
+      call unsupported(model, error)
+      if (allocated(error)) return
+      if (me > 0) call log_set_quiet(.true.)
+      call read_deck_input(deck, inp, error)
+      if (allocated(error)) return
+      call deck_content_hash(inp%files, hash, error)
+      if (allocated(error)) return
+      k = index(deck, '/', back=.true.)
+      deckdir = '.'
+      if (k > 0) deckdir = deck(1:k - 1)
+      ! rank 0 decides where the files are; the others follow
+      where = 0
+      if (me == 0) then
+         if (len(partdir) > 0) then
+            where = 3
+         else
+            inquire(file=rank_file_name(outdir, 0), exist=ex)
+            if (ex) then
+               where = 1
+            else
+               inquire(file=rank_file_name(deckdir, 0), exist=ex)
+               if (ex) where = 2
+            end if
+         end if
+      end if
+      call par_allreduce(where, PAR_MAX)
+      select case (where)
+      case (0)
+         dir = outdir
+         if (me == 0) call partition_here(model, np, hash, deck, dir)
+         call par_barrier()
+      case (1)
+         dir = outdir
+      case (2)
+         dir = deckdir
+      case default
+         dir = partdir
+      end select
+      call log_info('dynx: MPI run on '//str(np)//' ranks, rank files '// &
+                    rank_file_name(dir, 0)//' ...')
+      call read_rank_file(rank_file_name(dir, me), hash, np, me, rp, error)
+      if (allocated(error)) call par_abort(error%message, error%code)
+      ! the global model keeps the serial numbering; the rank's model becomes local
+      g = model
+      allocate(g%x(3, g%nn), g%v(3, g%nn), g%f(3, g%nn), g%mass(g%nn))
+      g%x = g%x0
+      g%v = g%v0
+      g%f = 0.0_wp
+      g%mass = 0.0_wp
+      allocate(gvold(3, g%nn))
+      gvold = 0.0_wp
+      call par_model_build(model, rp, pm)
+      allocate(loc(g%nn))
+      loc = 0
+      loc(rp%nodes) = [(i, i = 1, pm%nloc)]
+      model%nn = pm%nloc + pm%nslot
+      model%node_label = [g%node_label(rp%nodes), g%node_label(rp%nodes(pm%slot_node))]
+      model%x0 = reshape([g%x0(:, rp%nodes), g%x0(:, rp%nodes(pm%slot_node))], [3, model%nn])
+      model%v0 = reshape([g%v0(:, rp%nodes), g%v0(:, rp%nodes(pm%slot_node))], [3, model%nn])
+      call move_alloc(pm%blocks, model%blocks)
+      if (allocated(model%spcs)) then
+         model%spcs = g%spcs(rp%spcs)
+         do k = 1, size(model%spcs)
+            model%spcs(k)%node = loc(model%spcs(k)%node)
+         end do
+      end if
+      if (allocated(model%prescribed)) then
+         model%prescribed = g%prescribed(rp%prescribed)
+         do k = 1, size(model%prescribed)
+            model%prescribed(k)%node = loc(model%prescribed(k)%node)
+         end do
+      end if
+      owned = rp%node_owner == me
+      own = pack([(i, i = 1, pm%nloc)], owned)
+      allocate(key_elem(size(g%blocks)*nv_chunk))
+      key_elem = 0
+      do k = 1, size(g%blocks)
+         key_elem((k - 1)*nv_chunk + 1:(k - 1)*nv_chunk + g%blocks(k)%nel) = g%blocks(k)%elem
+      end do
+      call constrained_nodes(g, gcnodes)
+      allocate(gcpos(g%nn), gvfree(3, size(gcnodes)))
+      gcpos = 0
+      gcpos(gcnodes) = [(i, i = 1, size(gcnodes))]
+      gvfree = 0.0_wp
+      if (allocated(g%walls)) then
+         block
+            logical, allocatable :: on_wall(:)
+            allocate(on_wall(g%nn))
+            on_wall = .false.
+            do k = 1, size(g%walls)
+               on_wall(g%walls(k)%nodes) = .true.
+            end do
+            wall_loc = pack([(i, i = 1, pm%nloc)], on_wall(rp%nodes))
+         end block
+      end if
+      on = .true.
+   contains
+      !> Rank 0 only: partition the deck into dir as `dynx-part deck -n np -o dir` would.
+      subroutine partition_here(model, np, hash, deck, dir)
+         type(model_t), intent(in) :: model
+         integer, intent(in) :: np
+         character(*), intent(in) :: hash, deck, dir
+         type(partition_t) :: part
+         type(rank_part_t) :: rpr
+         type(error_t), allocatable :: err
+         integer :: r, u, ios
+         call log_info('dynx: no rank files in '//dir//' or '//deckdir//': partitioning '// &
+                       deck//' into '//str(np)//' ranks (as dynx-part) in '//dir)
+         if (np > model%ne) call par_abort(deck//': cannot split '//str(model%ne)// &
+                                           ' elements into '//str(np)//' ranks', EXIT_INPUT)
+         call partition_model(model, np, [1], [integer ::], part, err)
+         if (allocated(err)) call par_abort(err%message, err%code)
+         call sys_mkdir_p(dir, err)
+         if (allocated(err)) call par_abort(err%message, err%code)
+         do r = 0, np - 1
+            call rank_part(model, part, r, rpr, err)
+            if (allocated(err)) call par_abort(err%message, err%code)
+            call write_rank_file(rank_file_name(dir, r), rpr, hash, err)
+            if (allocated(err)) call par_abort(err%message, err%code)
+         end do
+         open(newunit=u, file=dir//'/partition.txt', status='replace', action='write', &
+              iostat=ios)
+         if (ios == 0) then
+            call write_report(u, part, deck, hash)
+            close(u)
+         end if
+      end subroutine partition_here
+   end subroutine par_engine_setup
+
+   !> What the engine does not run across ranks yet: exit 2 naming the keyword.
+   subroutine unsupported(model, error)
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      character(:), allocatable :: what
+      what = ''
+      if (allocated(model%rigid)) then
+         what = '*MAT_RIGID / *CONSTRAINED_NODAL_RIGID_BODY (rigid bodies)'
+      else if (nonempty_loads()) then
+         what = '*LOAD_NODE / *LOAD_SEGMENT / *LOAD_BODY (external loads)'
+      else if (model%rst%d3dump_cycl > 0 .or. model%rst%runrsf_cycl > 0) then
+         what = '*DATABASE_BINARY_D3DUMP / *DATABASE_BINARY_RUNRSF (restart dumps)'
+      end if
+      if (len(what) > 0) call set_error(error, model%deck_file//': '//what// &
+         ' is not supported in an MPI run yet; run this deck serially (without mpirun)', &
+         EXIT_INPUT)
+   contains
+      logical function nonempty_loads()
+         nonempty_loads = .false.
+         if (allocated(model%node_loads)) nonempty_loads = size(model%node_loads) > 0
+         if (allocated(model%seg_loads)) nonempty_loads = nonempty_loads .or. &
+                                                          size(model%seg_loads) > 0
+         if (allocated(model%body_loads)) nonempty_loads = nonempty_loads .or. &
+                                                           size(model%body_loads) > 0
+      end function nonempty_loads
+   end subroutine unsupported
+
+   !> After init_state's element-major mass scatter: the mass exchange (serial order), slot
+   !> masses to zero, and the global mass and its sum as the serial run forms it.
+   subroutine par_engine_mass(model)
+      type(model_t), intent(inout) :: model
+      integer, allocatable :: keys(:)
+      real(wp), allocatable :: vals(:, :), gv(:, :)
+      call par_exchange_mass(pm, model%mass)
+      model%mass(pm%nloc + 1:) = 0.0_wp
+      call par_gather_ordered(pm%node_global(own), reshape(model%mass(own), [1, size(own)]), &
+                              keys, vals)
+      g%mass(keys) = vals(1, :)
+      model%energy%mass = sum(g%mass)
+      g%energy%mass = model%energy%mass
+   end subroutine par_engine_mass
+
+   !> The initial kinetic energy of the global model.
+   subroutine par_engine_initial(model)
+      type(model_t), intent(inout) :: model
+      integer, allocatable :: keys(:)
+      real(wp), allocatable :: gv(:, :)
+      call par_gather_ordered(pm%node_global(own), model%v(:, own), keys, gv)
+      g%v(:, keys) = gv
+      model%energy%initial = initial_kinetic(g%mass, g%v)
+   end subroutine par_engine_initial
+
+   !> Before the element pass: shared nodes' x and v into their slot nodes.
+   subroutine par_engine_fill(model)
+      type(model_t), intent(inout) :: model
+      call par_fill_slots(pm, model%x)
+      call par_fill_slots(pm, model%v)
+   end subroutine par_engine_fill
+
+   !> The global critical step and its element (the lowest serial order key among equal
+   !> minima, as the serial loop's first minimum).
+   subroutine par_engine_dt(dtcrit, dt_elem)
+      real(wp), intent(inout) :: dtcrit
+      integer, intent(inout) :: dt_elem
+      integer :: key
+      key = huge(key)
+      if (dt_elem > 0 .and. dtcrit < huge_wp) key = (g%elem_block(dt_elem) - 1)*nv_chunk + &
+                                                     g%elem_pos(dt_elem)
+      call par_minloc(dtcrit, key)
+      if (key > 0 .and. key <= size(key_elem)) dt_elem = key_elem(key)
+   end subroutine par_engine_dt
+
+   !> The one shared-node exchange of the cycle: f at shared nodes becomes the serial sum.
+   subroutine par_engine_exchange(f)
+      real(wp), intent(inout) :: f(:, :)
+      call par_exchange_forces(pm, f)
+   end subroutine par_engine_exchange
+
+   !> Work of the constraint reactions: the owned constrained nodes' velocities gathered,
+   !> then the serial sum (constraint_work) over all constrained nodes in global order.
+   subroutine par_engine_wcon(model, cnodes, vfree, vold, dtavg, wcon)
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: cnodes(:)
+      real(wp), intent(in) :: vfree(:, :), vold(:, :), dtavg
+      real(wp), intent(inout) :: wcon
+      integer, allocatable :: sel(:), keys(:)
+      real(wp), allocatable :: vals(:, :), gv(:, :)
+      integer :: i, n
+      if (size(gcnodes) == 0) return
+      sel = pack([(i, i = 1, size(cnodes))], owned(cnodes))
+      allocate(vals(9, size(sel)))
+      do i = 1, size(sel)
+         n = cnodes(sel(i))
+         vals(1:3, i) = model%v(:, n)
+         vals(4:6, i) = vold(:, n)
+         vals(7:9, i) = vfree(:, sel(i))
+      end do
+      call par_gather_ordered(pm%node_global(cnodes(sel)), vals, keys, gv)
+      g%v(:, keys) = gv(1:3, :)
+      gvold(:, keys) = gv(4:6, :)
+      gvfree(:, gcpos(keys)) = gv(7:9, :)
+      call constraint_work(gcnodes, g%mass, gvfree, gvold, g%v, dtavg, wcon)
+   end subroutine par_engine_wcon
+
+   !> Stonewalls: the wall nodes' state gathered into the global model, the serial
+   !> apply_rigidwalls run on it (same corrections, same work sum), velocities copied back.
+   subroutine par_engine_walls(model, dt, dtavg, vold, wrw)
+      type(model_t), intent(inout) :: model
+      real(wp), intent(in) :: dt, dtavg, vold(:, :)
+      real(wp), intent(inout) :: wrw
+      integer, allocatable :: sel(:), keys(:)
+      real(wp), allocatable :: vals(:, :), gv(:, :)
+      integer :: i, n
+      sel = pack(wall_loc, owned(wall_loc))
+      allocate(vals(9, size(sel)))
+      do i = 1, size(sel)
+         n = sel(i)
+         vals(1:3, i) = model%x(:, n)
+         vals(4:6, i) = model%v(:, n)
+         vals(7:9, i) = vold(:, n)
+      end do
+      call par_gather_ordered(pm%node_global(sel), vals, keys, gv)
+      g%x(:, keys) = gv(1:3, :)
+      g%v(:, keys) = gv(4:6, :)
+      gvold(:, keys) = gv(7:9, :)
+      call apply_rigidwalls(g, dt, dtavg, gvold, g%v, wrw)
+      model%v(:, wall_loc) = g%v(:, pm%node_global(wall_loc))
+   end subroutine par_engine_walls
+
+   !> Energies and momentum of the step (when needed): nodal velocities and element
+   !> energies gathered, then the serial sums on the global model.
+   subroutine par_engine_energies(model, vold, wsum, erw, needed)
+      type(model_t), intent(inout) :: model
+      real(wp), intent(in) :: vold(:, :), wsum, erw
+      logical, intent(in) :: needed
+      integer, allocatable :: keys(:), ekeys(:)
+      real(wp), allocatable :: vals(:, :), evals(:, :), gv(:, :)
+      real(wp) :: ke, eint, ehg
+      integer :: i, b, j, e, n
+      if (.not. needed) return
+      allocate(vals(6, size(own)))
+      do i = 1, size(own)
+         vals(1:3, i) = model%v(:, own(i))
+         vals(4:6, i) = vold(:, own(i))
+      end do
+      call par_gather_ordered(pm%node_global(own), vals, keys, gv)
+      g%v(:, keys) = gv(1:3, :)
+      gvold(:, keys) = gv(4:6, :)
+      n = 0
+      do b = 1, size(model%blocks)
+         n = n + model%blocks(b)%nel
+      end do
+      allocate(ekeys(n), evals(2, n))
+      n = 0
+      do b = 1, size(model%blocks)
+         do j = 1, model%blocks(b)%nel
+            n = n + 1
+            ekeys(n) = model%blocks(b)%elem(j)
+            evals(1, n) = model%blocks(b)%eint(j)
+            evals(2, n) = model%blocks(b)%ehg(j)
+         end do
+      end do
+      call par_gather_ordered(ekeys, evals, keys, gv)
+      do i = 1, size(keys)
+         e = keys(i)
+         g%blocks(g%elem_block(e))%eint(g%elem_pos(e)) = gv(1, i)
+         g%blocks(g%elem_block(e))%ehg(g%elem_pos(e)) = gv(2, i)
+      end do
+      ke = kinetic_energy(g%nn, g%mass, gvold, g%v)
+      call element_energies(g%blocks, eint, ehg)
+      g%energy%initial = model%energy%initial
+      call set_energy(g, ke, eint, ehg, wsum, erw)
+      model%energy = g%energy
+   end subroutine par_engine_energies
+
+   !> The global model for output at this step (nodal x, v, f and, for a plot state, the
+   !> element state gathered); writer is true on rank 0, which writes it.
+   subroutine par_engine_output(model, plot, om, writer)
+      type(model_t), intent(in) :: model
+      logical, intent(in) :: plot
+      type(model_t), pointer, intent(out) :: om
+      logical, intent(out) :: writer
+      integer, allocatable :: keys(:), ekeys(:)
+      real(wp), allocatable :: vals(:, :), gv(:, :)
+      integer :: i, b, j, n, nc, e, ip, nip, nhv
+      g%time = model%time
+      g%cycle = model%cycle
+      g%dt = model%dt
+      g%dt_elem = model%dt_elem
+      g%energy = model%energy
+      g%run = model%run
+      allocate(vals(9, size(own)))
+      do i = 1, size(own)
+         vals(1:3, i) = model%x(:, own(i))
+         vals(4:6, i) = model%v(:, own(i))
+         vals(7:9, i) = model%f(:, own(i))
+      end do
+      call par_gather_ordered(pm%node_global(own), vals, keys, gv)
+      g%x(:, keys) = gv(1:3, :)
+      g%v(:, keys) = gv(4:6, :)
+      g%f(:, keys) = gv(7:9, :)
+      if (plot) then
+         nc = 0
+         do b = 1, size(g%blocks)
+            nc = max(nc, 6*g%blocks(b)%nip + g%blocks(b)%nhv*g%blocks(b)%nip + 4)
+         end do
+         n = 0
+         do b = 1, size(model%blocks)
+            n = n + model%blocks(b)%nel
+         end do
+         deallocate(vals)
+         allocate(ekeys(n), vals(nc, n))
+         vals = 0.0_wp
+         n = 0
+         do b = 1, size(model%blocks)
+            associate (pb => model%blocks(b))
+               nip = pb%nip; nhv = pb%nhv
+               do j = 1, pb%nel
+                  n = n + 1
+                  ekeys(n) = pb%elem(j)
+                  vals(1:4, n) = [pb%relvol(j), pb%eint(j), pb%ehg(j), &
+                                  merge(1.0_wp, 0.0_wp, pb%failed(j))]
+                  do ip = 1, nip
+                     vals(4 + 6*(ip - 1) + 1:4 + 6*ip, n) = pb%sig(j, :, ip)
+                     if (nhv > 0) vals(4 + 6*nip + nhv*(ip - 1) + 1:4 + 6*nip + nhv*ip, n) = &
+                        pb%hv(j, :, ip)
+                  end do
+               end do
+            end associate
+         end do
+         call par_gather_ordered(ekeys, vals, keys, gv)
+         do i = 1, size(keys)
+            e = keys(i)
+            associate (gb => g%blocks(g%elem_block(e)), p => g%elem_pos(e))
+               nip = gb%nip; nhv = gb%nhv
+               gb%relvol(p) = gv(1, i)
+               gb%eint(p) = gv(2, i)
+               gb%ehg(p) = gv(3, i)
+               gb%failed(p) = gv(4, i) > 0.5_wp
+               do ip = 1, nip
+                  gb%sig(p, :, ip) = gv(4 + 6*(ip - 1) + 1:4 + 6*ip, i)
+                  if (nhv > 0) gb%hv(p, :, ip) = &
+                     gv(4 + 6*nip + nhv*(ip - 1) + 1:4 + 6*nip + nhv*ip, i)
+               end do
+            end associate
+         end do
+      end if
+      om => g
+      writer = par_rank() == 0
+   end subroutine par_engine_output
+
+   !> The global model (serial numbering) of an MPI run: what rank 0 opens the output with.
+   function par_engine_global() result(p)
+      type(model_t), pointer :: p
+      p => g
+   end function par_engine_global
+
+   !> A failure found on this rank alone (an element, a NaN): stop every rank, naming it.
+   subroutine par_engine_fail(error)
+      type(error_t), intent(in) :: error
+      call par_abort(error%message, error%code)
+   end subroutine par_engine_fail
+end module dx_par_engine
