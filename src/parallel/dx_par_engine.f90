@@ -24,7 +24,8 @@ module dx_par_engine
    use dx_model_input, only: model_input_t
    use dx_deck, only: read_deck_input
    use dx_par, only: par_rank, par_size, par_abort, par_minloc, par_gather_ordered, &
-                     par_allreduce, par_barrier, PAR_MAX
+                     par_allreduce, par_barrier, PAR_MAX, gather_plan_t, par_gather_setup, &
+                     par_gather_values
    use dx_par_model, only: par_model_t, par_model_build, par_fill_slots, par_exchange_forces, &
                            par_exchange_mass
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report
@@ -36,8 +37,8 @@ module dx_par_engine
    implicit none
    private
    public :: par_engine_setup, par_engine_on, par_engine_mass, par_engine_initial, &
-             par_engine_fill, par_engine_dt, par_engine_exchange, par_engine_wcon, &
-             par_engine_walls, par_engine_energies, par_engine_output, par_engine_fail, &
+             par_engine_fill, par_engine_dt, par_engine_exchange, par_engine_constraints, &
+             par_engine_energies, par_engine_output, par_engine_fail, &
              par_engine_global
 
    logical, save :: on = .false.
@@ -50,6 +51,14 @@ module dx_par_engine
    integer, allocatable, save :: wall_loc(:)          !< local nodes on a rigid wall
    logical, allocatable, save :: owned(:)             !< (nloc) this rank owns the node
    real(wp), allocatable, save :: gvold(:, :), gvfree(:, :)
+   integer, allocatable, save :: bc_loc(:)            !< owned constrained or wall nodes
+   integer, allocatable, save :: lcpos(:)             !< local node -> position in cnodes
+   integer, allocatable, save :: elem_loc(:, :)       !< (2, nel) piece and position
+   type(gather_plan_t), save :: plan_bc, plan_own, plan_elem
+   integer, parameter :: NBUF_MAX = 32                !< cycles of work terms kept at most
+   integer, save :: nbuf = 0
+   real(wp), allocatable, save :: buf(:, :, :)        !< (12, bc nodes, NBUF_MAX)
+   real(wp), save :: buf_dt(2, NBUF_MAX)              !< dt, dtavg of the kept cycles
 
 contains
 
@@ -160,17 +169,47 @@ contains
       gcpos = 0
       gcpos(gcnodes) = [(i, i = 1, size(gcnodes))]
       gvfree = 0.0_wp
-      if (allocated(g%walls)) then
-         block
-            logical, allocatable :: on_wall(:)
-            allocate(on_wall(g%nn))
-            on_wall = .false.
+      block
+         logical, allocatable :: on_wall(:), bc(:)
+         integer, allocatable :: lc(:)
+         allocate(on_wall(g%nn), bc(pm%nloc), lcpos(model%nn))
+         on_wall = .false.
+         if (allocated(g%walls)) then
             do k = 1, size(g%walls)
                on_wall(g%walls(k)%nodes) = .true.
             end do
-            wall_loc = pack([(i, i = 1, pm%nloc)], on_wall(rp%nodes))
-         end block
-      end if
+         end if
+         wall_loc = pack([(i, i = 1, pm%nloc)], on_wall(rp%nodes))
+         call constrained_nodes(model, lc)
+         lcpos = 0
+         lcpos(lc) = [(i, i = 1, size(lc))]
+         bc = on_wall(rp%nodes)
+         bc(lc) = .true.
+         bc_loc = pack([(i, i = 1, pm%nloc)], bc .and. owned)
+         allocate(buf(12, size(bc_loc), NBUF_MAX))
+         if (allocated(model%walls)) then     ! the rank's wall nodes, in wall order
+            do k = 1, size(model%walls)
+               model%walls(k)%nodes = pack(loc(g%walls(k)%nodes), loc(g%walls(k)%nodes) > 0)
+            end do
+         end if
+      end block
+      call par_gather_setup(plan_bc, pm%node_global(bc_loc))
+      call par_gather_setup(plan_own, pm%node_global(own))
+      block
+         integer :: b, j, n
+         integer, allocatable :: ek(:)
+         n = sum([(model%blocks(b)%nel, b = 1, size(model%blocks))])
+         allocate(elem_loc(2, n), ek(n))
+         n = 0
+         do b = 1, size(model%blocks)
+            do j = 1, model%blocks(b)%nel
+               n = n + 1
+               elem_loc(:, n) = [b, j]
+               ek(n) = model%blocks(b)%elem(j)
+            end do
+         end do
+         call par_gather_setup(plan_elem, ek)
+      end block
       on = .true.
    contains
       !> Rank 0 only: partition the deck into dir as `dynx-part deck -n np -o dir` would.
@@ -283,56 +322,66 @@ contains
       call par_exchange_forces(pm, f)
    end subroutine par_engine_exchange
 
-   !> Work of the constraint reactions: the owned constrained nodes' velocities gathered,
-   !> then the serial sum (constraint_work) over all constrained nodes in global order.
-   subroutine par_engine_wcon(model, cnodes, vfree, vold, dtavg, wcon)
-      type(model_t), intent(in) :: model
-      integer, intent(in) :: cnodes(:)
-      real(wp), intent(in) :: vfree(:, :), vold(:, :), dtavg
-      real(wp), intent(inout) :: wcon
-      integer, allocatable :: sel(:), keys(:)
-      real(wp), allocatable :: vals(:, :), gv(:, :)
-      integer :: i, n
-      if (size(gcnodes) == 0) return
-      sel = pack([(i, i = 1, size(cnodes))], owned(cnodes))
-      allocate(vals(9, size(sel)))
-      do i = 1, size(sel)
-         n = cnodes(sel(i))
-         vals(1:3, i) = model%v(:, n)
-         vals(4:6, i) = vold(:, n)
-         vals(7:9, i) = vfree(:, sel(i))
-      end do
-      call par_gather_ordered(pm%node_global(cnodes(sel)), vals, keys, gv)
-      g%v(:, keys) = gv(1:3, :)
-      gvold(:, keys) = gv(4:6, :)
-      gvfree(:, gcpos(keys)) = gv(7:9, :)
-      call constraint_work(gcnodes, g%mass, gvfree, gvold, g%v, dtavg, wcon)
-   end subroutine par_engine_wcon
-
-   !> Stonewalls: the wall nodes' state gathered into the global model, the serial
-   !> apply_rigidwalls run on it (same corrections, same work sum), velocities copied back.
-   subroutine par_engine_walls(model, dt, dtavg, vold, wrw)
+   !> Rigid walls and the work of constraint and wall forces. Each rank corrects its own
+   !> wall nodes (the correction of a node depends on that node alone, and every holder of
+   !> a shared node has the same x, v and mass). The work sums are order-dependent, so the
+   !> owned constrained and wall nodes' x, v(n+1/2), v(n-1/2) and free velocity are kept
+   !> for up to NBUF_MAX cycles and, when a sum is needed (or the buffer is full), gathered
+   !> in one call and replayed cycle by cycle through the serial procedures on the global
+   !> model (constraint_work, apply_rigidwalls): the serial sums, bit for bit.
+   subroutine par_engine_constraints(model, vfree, vold, dt, dtavg, wcon, wrw, needed)
       type(model_t), intent(inout) :: model
-      real(wp), intent(in) :: dt, dtavg, vold(:, :)
-      real(wp), intent(inout) :: wrw
-      integer, allocatable :: sel(:), keys(:)
-      real(wp), allocatable :: vals(:, :), gv(:, :)
+      real(wp), intent(in) :: vfree(:, :), vold(:, :), dt, dtavg
+      real(wp), intent(inout) :: wcon, wrw
+      logical, intent(in) :: needed
+      real(wp) :: dummy
       integer :: i, n
-      sel = pack(wall_loc, owned(wall_loc))
-      allocate(vals(9, size(sel)))
-      do i = 1, size(sel)
-         n = sel(i)
-         vals(1:3, i) = model%x(:, n)
-         vals(4:6, i) = model%v(:, n)
-         vals(7:9, i) = vold(:, n)
+      if (size(plan_bc%keys) == 0) return
+      nbuf = nbuf + 1
+      do i = 1, size(bc_loc)
+         n = bc_loc(i)
+         buf(1:3, i, nbuf) = model%x(:, n)
+         buf(4:6, i, nbuf) = model%v(:, n)
+         buf(7:9, i, nbuf) = vold(:, n)
+         buf(10:12, i, nbuf) = 0.0_wp
+         if (lcpos(n) > 0) buf(10:12, i, nbuf) = vfree(:, lcpos(n))
       end do
-      call par_gather_ordered(pm%node_global(sel), vals, keys, gv)
-      g%x(:, keys) = gv(1:3, :)
-      g%v(:, keys) = gv(4:6, :)
-      gvold(:, keys) = gv(7:9, :)
-      call apply_rigidwalls(g, dt, dtavg, gvold, g%v, wrw)
-      model%v(:, wall_loc) = g%v(:, pm%node_global(wall_loc))
-   end subroutine par_engine_walls
+      buf_dt(:, nbuf) = [dt, dtavg]
+      dummy = 0.0_wp
+      if (allocated(model%walls)) call apply_rigidwalls(model, dt, dtavg, vold, model%v, dummy)
+      if (needed .or. nbuf == NBUF_MAX) call flush_work(wcon, wrw)
+   end subroutine par_engine_constraints
+
+   !> Gather the kept cycles and add their work terms in serial order.
+   subroutine flush_work(wcon, wrw)
+      real(wp), intent(inout) :: wcon, wrw
+      real(wp), allocatable :: vals(:, :), gv(:, :)
+      integer :: c, i, nk
+      nk = size(plan_bc%keys)
+      allocate(vals(12*nbuf, size(bc_loc)), gv(12*nbuf, nk))
+      do i = 1, size(bc_loc)
+         do c = 1, nbuf
+            vals(12*(c - 1) + 1:12*c, i) = buf(:, i, c)
+         end do
+      end do
+      call par_gather_values(plan_bc, vals, gv)
+      associate (keys => plan_bc%keys)
+         do c = 1, nbuf
+            g%x(:, keys) = gv(12*(c - 1) + 1:12*(c - 1) + 3, :)
+            g%v(:, keys) = gv(12*(c - 1) + 4:12*(c - 1) + 6, :)
+            gvold(:, keys) = gv(12*(c - 1) + 7:12*(c - 1) + 9, :)
+            do i = 1, nk
+               if (gcpos(keys(i)) > 0) gvfree(:, gcpos(keys(i))) = &
+                  gv(12*(c - 1) + 10:12*c, i)
+            end do
+            if (size(gcnodes) > 0) call constraint_work(gcnodes, g%mass, gvfree, gvold, &
+                                                        g%v, buf_dt(2, c), wcon)
+            if (allocated(g%walls)) call apply_rigidwalls(g, buf_dt(1, c), buf_dt(2, c), &
+                                                          gvold, g%v, wrw)
+         end do
+      end associate
+      nbuf = 0
+   end subroutine flush_work
 
    !> Energies and momentum of the step (when needed): nodal velocities and element
    !> energies gathered, then the serial sums on the global model.
@@ -340,36 +389,27 @@ contains
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: vold(:, :), wsum, erw
       logical, intent(in) :: needed
-      integer, allocatable :: keys(:), ekeys(:)
-      real(wp), allocatable :: vals(:, :), evals(:, :), gv(:, :)
+      real(wp), allocatable :: vals(:, :), gv(:, :)
       real(wp) :: ke, eint, ehg
-      integer :: i, b, j, e, n
+      integer :: i, e
       if (.not. needed) return
-      allocate(vals(6, size(own)))
+      allocate(vals(6, size(own)), gv(6, size(plan_own%keys)))
       do i = 1, size(own)
          vals(1:3, i) = model%v(:, own(i))
          vals(4:6, i) = vold(:, own(i))
       end do
-      call par_gather_ordered(pm%node_global(own), vals, keys, gv)
-      g%v(:, keys) = gv(1:3, :)
-      gvold(:, keys) = gv(4:6, :)
-      n = 0
-      do b = 1, size(model%blocks)
-         n = n + model%blocks(b)%nel
+      call par_gather_values(plan_own, vals, gv)
+      g%v(:, plan_own%keys) = gv(1:3, :)
+      gvold(:, plan_own%keys) = gv(4:6, :)
+      deallocate(vals, gv)
+      allocate(vals(2, size(elem_loc, 2)), gv(2, size(plan_elem%keys)))
+      do i = 1, size(elem_loc, 2)
+         vals(1, i) = model%blocks(elem_loc(1, i))%eint(elem_loc(2, i))
+         vals(2, i) = model%blocks(elem_loc(1, i))%ehg(elem_loc(2, i))
       end do
-      allocate(ekeys(n), evals(2, n))
-      n = 0
-      do b = 1, size(model%blocks)
-         do j = 1, model%blocks(b)%nel
-            n = n + 1
-            ekeys(n) = model%blocks(b)%elem(j)
-            evals(1, n) = model%blocks(b)%eint(j)
-            evals(2, n) = model%blocks(b)%ehg(j)
-         end do
-      end do
-      call par_gather_ordered(ekeys, evals, keys, gv)
-      do i = 1, size(keys)
-         e = keys(i)
+      call par_gather_values(plan_elem, vals, gv)
+      do i = 1, size(plan_elem%keys)
+         e = plan_elem%keys(i)
          g%blocks(g%elem_block(e))%eint(g%elem_pos(e)) = gv(1, i)
          g%blocks(g%elem_block(e))%ehg(g%elem_pos(e)) = gv(2, i)
       end do
@@ -387,57 +427,48 @@ contains
       logical, intent(in) :: plot
       type(model_t), pointer, intent(out) :: om
       logical, intent(out) :: writer
-      integer, allocatable :: keys(:), ekeys(:)
       real(wp), allocatable :: vals(:, :), gv(:, :)
-      integer :: i, b, j, n, nc, e, ip, nip, nhv
+      integer :: i, b, j, nc, e, ip, nip, nhv
       g%time = model%time
       g%cycle = model%cycle
       g%dt = model%dt
       g%dt_elem = model%dt_elem
       g%energy = model%energy
       g%run = model%run
-      allocate(vals(9, size(own)))
+      allocate(vals(9, size(own)), gv(9, size(plan_own%keys)))
       do i = 1, size(own)
          vals(1:3, i) = model%x(:, own(i))
          vals(4:6, i) = model%v(:, own(i))
          vals(7:9, i) = model%f(:, own(i))
       end do
-      call par_gather_ordered(pm%node_global(own), vals, keys, gv)
-      g%x(:, keys) = gv(1:3, :)
-      g%v(:, keys) = gv(4:6, :)
-      g%f(:, keys) = gv(7:9, :)
+      call par_gather_values(plan_own, vals, gv)
+      g%x(:, plan_own%keys) = gv(1:3, :)
+      g%v(:, plan_own%keys) = gv(4:6, :)
+      g%f(:, plan_own%keys) = gv(7:9, :)
       if (plot) then
          nc = 0
          do b = 1, size(g%blocks)
             nc = max(nc, 6*g%blocks(b)%nip + g%blocks(b)%nhv*g%blocks(b)%nip + 4)
          end do
-         n = 0
-         do b = 1, size(model%blocks)
-            n = n + model%blocks(b)%nel
-         end do
-         deallocate(vals)
-         allocate(ekeys(n), vals(nc, n))
+         deallocate(vals, gv)
+         allocate(vals(nc, size(elem_loc, 2)), gv(nc, size(plan_elem%keys)))
          vals = 0.0_wp
-         n = 0
-         do b = 1, size(model%blocks)
-            associate (pb => model%blocks(b))
+         do i = 1, size(elem_loc, 2)
+            associate (pb => model%blocks(elem_loc(1, i)))
+               j = elem_loc(2, i)
                nip = pb%nip; nhv = pb%nhv
-               do j = 1, pb%nel
-                  n = n + 1
-                  ekeys(n) = pb%elem(j)
-                  vals(1:4, n) = [pb%relvol(j), pb%eint(j), pb%ehg(j), &
-                                  merge(1.0_wp, 0.0_wp, pb%failed(j))]
-                  do ip = 1, nip
-                     vals(4 + 6*(ip - 1) + 1:4 + 6*ip, n) = pb%sig(j, :, ip)
-                     if (nhv > 0) vals(4 + 6*nip + nhv*(ip - 1) + 1:4 + 6*nip + nhv*ip, n) = &
-                        pb%hv(j, :, ip)
-                  end do
+               vals(1:4, i) = [pb%relvol(j), pb%eint(j), pb%ehg(j), &
+                               merge(1.0_wp, 0.0_wp, pb%failed(j))]
+               do ip = 1, nip
+                  vals(4 + 6*(ip - 1) + 1:4 + 6*ip, i) = pb%sig(j, :, ip)
+                  if (nhv > 0) vals(4 + 6*nip + nhv*(ip - 1) + 1:4 + 6*nip + nhv*ip, i) = &
+                     pb%hv(j, :, ip)
                end do
             end associate
          end do
-         call par_gather_ordered(ekeys, vals, keys, gv)
-         do i = 1, size(keys)
-            e = keys(i)
+         call par_gather_values(plan_elem, vals, gv)
+         do i = 1, size(plan_elem%keys)
+            e = plan_elem%keys(i)
             associate (gb => g%blocks(g%elem_block(e)), p => g%elem_pos(e))
                nip = gb%nip; nhv = gb%nhv
                gb%relvol(p) = gv(1, i)

@@ -25,7 +25,7 @@ module dx_explicit
    use dx_energy_sums, only: initial_kinetic, kinetic_energy, element_energies, &
                              constraint_work, set_energy, constrained_nodes
    use dx_par_engine, only: par_engine_on, par_engine_fill, par_engine_dt, &
-                            par_engine_exchange, par_engine_wcon, par_engine_walls, &
+                            par_engine_exchange, par_engine_constraints, &
                             par_engine_energies, par_engine_initial, par_engine_output, &
                             par_engine_fail, par_engine_mass
    implicit none
@@ -81,7 +81,7 @@ contains
       integer, allocatable :: cnodes(:)
       real(wp) :: dt, dtavg, dtcrit, t, t0wall, ke, eint, ehg, tend, wrig
       integer :: b, i, ibmin, iemin
-      logical :: loads, done, stopped
+      logical :: loads, done, stopped, need
       type(block_result_t) :: res
       type(error_t), allocatable :: ioerr
       type(checkpoint_t) :: ck
@@ -182,17 +182,15 @@ contains
          end do
          call apply_spc(model, model%v)
          call apply_prescribed(model, t, dt, dtavg, vold, model%v)
-         if (par) then
-            call par_engine_wcon(model, cnodes, vfree, vold, dtavg, wcon)
+         done = t >= tend .or. (model%ctrl%endcyc > 0 .and. model%cycle >= model%ctrl%endcyc)
+         need = done .or. model%ctrl%endeng > 0.0_wp .or. (model%db%glstat_dt > 0.0_wp .and. &
+                                                          t >= next_glstat)
+         if (par) then     ! MPI: walls on each rank; work sums in serial order when needed
+            call par_engine_constraints(model, vfree, vold, dt, dtavg, wcon, wrw, need)
          else
             call constraint_work(cnodes, model%mass, vfree, vold, model%v, dtavg, wcon)
-         end if
-         if (allocated(model%walls)) then
-            if (par) then
-               call par_engine_walls(model, dt, dtavg, vold, wrw)
-            else
-               call apply_rigidwalls(model, dt, dtavg, vold, model%v, wrw)
-            end if
+            if (allocated(model%walls)) call apply_rigidwalls(model, dt, dtavg, vold, &
+                                                              model%v, wrw)
          end if
          if (loads) then
             do i = 1, model%nn
@@ -213,11 +211,8 @@ contains
             return
          end if
          model%dt = dt
-         done = t >= tend .or. (model%ctrl%endcyc > 0 .and. model%cycle >= model%ctrl%endcyc)
          if (par) then     ! global sums, only when glstat, ENDENG or the end need them
-            call par_engine_energies(model, vold, wext + wcon + wrig, -wrw, done .or. &
-               model%ctrl%endeng > 0.0_wp .or. (model%db%glstat_dt > 0.0_wp .and. &
-               t >= next_glstat))
+            call par_engine_energies(model, vold, wext + wcon + wrig, -wrw, need)
          else
             call element_energies(model%blocks, eint, ehg)
             call set_energy(model, ke, eint, ehg, wext + wcon + wrig, -wrw)
