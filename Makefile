@@ -115,6 +115,7 @@ bench: deps
 	@$(MAKE) --no-print-directory all $(MPI_BENCH)
 	@sh scripts/bench.sh
 	@sh scripts/bench_shared_sum.sh
+	@sh scripts/bench_mpi.sh
 
 studies: deps
 	@$(MAKE) --no-print-directory all

@@ -55,6 +55,9 @@ for d in tests/regression/*/; do
         patch_*) nps="2 3 4"; chk=0 ;;
         *) nps="2 3 4"; chk=1 ;;
     esac
+    # the balance is checked on decks of 64 elements or more (see the header)
+    ne=$(bin/dynx --check -i "${d}deck.k" 2>/dev/null | sed -n 's/.* nodes, \([0-9]*\) elements.*/\1/p')
+    [ -n "$ne" ] && [ "$ne" -lt 64 ] && chk=0
     for n in $nps; do
         partition "${d}deck.k" "$n" "$OUT/${c}_$n" "$chk"
     done

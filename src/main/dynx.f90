@@ -16,7 +16,7 @@ program dynx
    use dx_signals, only: signals_install, SIGTERM_NUM, SIGINT_NUM, SIGUSR1_NUM
    use dx_io_sys, only: sys_epoch_seconds
    use dx_par, only: par_init, par_finalize, par_size, par_rank, par_abort
-   use dx_par_engine, only: par_engine_setup, par_engine_global
+   use dx_par_engine, only: par_engine_setup, par_engine_global, par_engine_report
    implicit none
    character(:), allocatable :: deck, outdir, arg, val, rfile, rdeck, partdir
    type(model_t) :: model
@@ -137,6 +137,7 @@ program dynx
    end if
    call log_info('dynx: results in '//outdir//'/ (d3plot.h5, d3plot.xdmf'// &
       trim(merge(', glstat', '        ', model%db%glstat_dt > 0.0_wp))//')')
+   call par_engine_report()
    call par_finalize()
 
 contains

@@ -18,14 +18,14 @@
 module dx_par_engine
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_error, only: error_t, set_error, EXIT_INPUT
-   use dx_strings, only: str
+   use dx_strings, only: str, rstr
    use dx_log, only: log_info, log_set_quiet
    use dx_model, only: model_t
    use dx_model_input, only: model_input_t
    use dx_deck, only: read_deck_input
    use dx_par, only: par_rank, par_size, par_abort, par_minloc, par_gather_ordered, &
                      par_allreduce, par_barrier, PAR_MAX, gather_plan_t, par_gather_setup, &
-                     par_gather_values
+                     par_gather_values, par_wtime, PAR_SUM
    use dx_par_model, only: par_model_t, par_model_build, par_fill_slots, par_exchange_forces, &
                            par_exchange_mass
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report
@@ -39,7 +39,7 @@ module dx_par_engine
    public :: par_engine_setup, par_engine_on, par_engine_mass, par_engine_initial, &
              par_engine_fill, par_engine_dt, par_engine_exchange, par_engine_constraints, &
              par_engine_energies, par_engine_output, par_engine_fail, &
-             par_engine_global
+             par_engine_global, par_engine_report
 
    logical, save :: on = .false.
    type(model_t), target, save :: g                  !< the global model (serial numbering)
@@ -48,7 +48,6 @@ module dx_par_engine
    integer, allocatable, save :: key_elem(:)          !< serial order key -> global element
    integer, allocatable, save :: gcnodes(:)           !< constrained nodes (global)
    integer, allocatable, save :: gcpos(:)             !< global node -> position in gcnodes
-   integer, allocatable, save :: wall_loc(:)          !< local nodes on a rigid wall
    logical, allocatable, save :: owned(:)             !< (nloc) this rank owns the node
    real(wp), allocatable, save :: gvold(:, :), gvfree(:, :)
    integer, allocatable, save :: bc_loc(:)            !< owned constrained or wall nodes
@@ -59,6 +58,8 @@ module dx_par_engine
    integer, save :: nbuf = 0
    real(wp), allocatable, save :: buf(:, :, :)        !< (12, bc nodes, NBUF_MAX)
    real(wp), save :: buf_dt(2, NBUF_MAX)              !< dt, dtavg of the kept cycles
+   !> wall time in the force exchange, the dt reduction, the ordered gathers (sums, output)
+   real(wp), save :: t_exch = 0.0_wp, t_dt = 0.0_wp, t_gath = 0.0_wp
 
 contains
 
@@ -179,7 +180,6 @@ contains
                on_wall(g%walls(k)%nodes) = .true.
             end do
          end if
-         wall_loc = pack([(i, i = 1, pm%nloc)], on_wall(rp%nodes))
          call constrained_nodes(model, lc)
          lcpos = 0
          lcpos(lc) = [(i, i = 1, size(lc))]
@@ -309,17 +309,23 @@ contains
       real(wp), intent(inout) :: dtcrit
       integer, intent(inout) :: dt_elem
       integer :: key
+      real(wp) :: t0
       key = huge(key)
       if (dt_elem > 0 .and. dtcrit < huge_wp) key = (g%elem_block(dt_elem) - 1)*nv_chunk + &
                                                      g%elem_pos(dt_elem)
+      t0 = par_wtime()
       call par_minloc(dtcrit, key)
+      t_dt = t_dt + (par_wtime() - t0)
       if (key > 0 .and. key <= size(key_elem)) dt_elem = key_elem(key)
    end subroutine par_engine_dt
 
    !> The one shared-node exchange of the cycle: f at shared nodes becomes the serial sum.
    subroutine par_engine_exchange(f)
       real(wp), intent(inout) :: f(:, :)
+      real(wp) :: t0
+      t0 = par_wtime()
       call par_exchange_forces(pm, f)
+      t_exch = t_exch + (par_wtime() - t0)
    end subroutine par_engine_exchange
 
    !> Rigid walls and the work of constraint and wall forces. Each rank corrects its own
@@ -357,6 +363,8 @@ contains
       real(wp), intent(inout) :: wcon, wrw
       real(wp), allocatable :: vals(:, :), gv(:, :)
       integer :: c, i, nk
+      real(wp) :: t0
+      t0 = par_wtime()
       nk = size(plan_bc%keys)
       allocate(vals(12*nbuf, size(bc_loc)), gv(12*nbuf, nk))
       do i = 1, size(bc_loc)
@@ -381,6 +389,7 @@ contains
          end do
       end associate
       nbuf = 0
+      t_gath = t_gath + (par_wtime() - t0)
    end subroutine flush_work
 
    !> Energies and momentum of the step (when needed): nodal velocities and element
@@ -390,9 +399,10 @@ contains
       real(wp), intent(in) :: vold(:, :), wsum, erw
       logical, intent(in) :: needed
       real(wp), allocatable :: vals(:, :), gv(:, :)
-      real(wp) :: ke, eint, ehg
+      real(wp) :: ke, eint, ehg, t0
       integer :: i, e
       if (.not. needed) return
+      t0 = par_wtime()
       allocate(vals(6, size(own)), gv(6, size(plan_own%keys)))
       do i = 1, size(own)
          vals(1:3, i) = model%v(:, own(i))
@@ -418,6 +428,7 @@ contains
       g%energy%initial = model%energy%initial
       call set_energy(g, ke, eint, ehg, wsum, erw)
       model%energy = g%energy
+      t_gath = t_gath + (par_wtime() - t0)
    end subroutine par_engine_energies
 
    !> The global model for output at this step (nodal x, v, f and, for a plot state, the
@@ -429,6 +440,8 @@ contains
       logical, intent(out) :: writer
       real(wp), allocatable :: vals(:, :), gv(:, :)
       integer :: i, b, j, nc, e, ip, nip, nhv
+      real(wp) :: t0
+      t0 = par_wtime()
       g%time = model%time
       g%cycle = model%cycle
       g%dt = model%dt
@@ -485,7 +498,23 @@ contains
       end if
       om => g
       writer = par_rank() == 0
+      t_gath = t_gath + (par_wtime() - t0)
    end subroutine par_engine_output
+
+   !> End of an MPI run: the time spent in communication (largest over the ranks).
+   subroutine par_engine_report()
+      real(wp) :: t(3), tavg(3)
+      if (.not. on) return
+      t = [t_exch, t_dt, t_gath]
+      tavg = t
+      call par_allreduce(t, PAR_MAX)
+      call par_allreduce(tavg, PAR_SUM)
+      tavg = tavg/real(par_size(), wp)
+      call log_info('dynx: MPI on '//str(par_size())//' ranks: force exchange '// &
+         rstr(t(1), 4)//' s (mean '//rstr(tavg(1), 4)//'), dt reduction '//rstr(t(2), 4)// &
+         ' s (mean '//rstr(tavg(2), 4)//'), ordered gathers '//rstr(t(3), 4)//' s (mean '// &
+         rstr(tavg(3), 4)//'), largest over the ranks')
+   end subroutine par_engine_report
 
    !> The global model (serial numbering) of an MPI run: what rank 0 opens the output with.
    function par_engine_global() result(p)
