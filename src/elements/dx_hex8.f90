@@ -16,7 +16,6 @@ module dx_hex8
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_model, only: elem_block_t, part_t
    use dx_material, only: material_t
-   use dx_scalar_math, only: scalar_pow
    use dx_hex8_geometry, only: hex8_bvectors, hex8_char_length, inv3, GAMMA_HG, XI_NODE
    implicit none
    private
@@ -35,6 +34,42 @@ module dx_hex8
    end type block_result_t
 
 contains
+
+   !> l(1:n) = x(1:n)**(1/3) from IEEE operations only (sqrt, +, *, /), so a vectorized loop gives every
+   !> element the same bits in every lane and in the scalar remainder. (pow does not:
+   !> gfortran pre-includes glibc's math-vector-fortran.h, and the vector body then calls
+   !> libmvec's SIMD pow, the remainder scalar libm pow; an element's result depended on its
+   !> position in its block, and an MPI rank's piece of a block changes positions.)
+   !> Start x**(85/256) = x**(1/4+1/16+1/64+1/256) (within a factor x**(1/768): 1.13 for
+   !> x in 1e-40..1e40), three steps of Halley's iteration l <- l (l^3 + 2x)/(2 l^3 + x)
+   !> (cubic convergence; Halley 1694, see Traub 1964, Iterative Methods, sec. 8.4) and one
+   !> Newton step: within 3 ulp of the correctly rounded cube root on 1e-40..1e40 (2e5
+   !> random samples; pow(x, 1/3) itself is off by up to 16 ulp there, 1/3 being inexact).
+   !> Valid for volumes in 1e-40..1e40 (any consistent units); x <= 0 gives 0. One loop
+   !> without calls, so it vectorizes (sqrt and division are exact IEEE in every lane).
+   subroutine cube_roots(n, x, l)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: x(:)
+      real(wp), intent(out) :: l(:)
+      real(wp) :: y, s4, s16, s64, s256, r, r3
+      integer :: i
+      do i = 1, n
+         y = max(x(i), tiny(1.0_wp))
+         s4 = sqrt(sqrt(y))
+         s16 = sqrt(sqrt(s4))
+         s64 = sqrt(sqrt(s16))
+         s256 = sqrt(sqrt(s64))
+         r = s4*s16*s64*s256
+         r3 = r*r*r
+         r = r*(r3 + 2.0_wp*y)/(2.0_wp*r3 + y)
+         r3 = r*r*r
+         r = r*(r3 + 2.0_wp*y)/(2.0_wp*r3 + y)
+         r3 = r*r*r
+         r = r*(r3 + 2.0_wp*y)/(2.0_wp*r3 + y)
+         r = r - (r*r*r - y)/(3.0_wp*r*r)
+         l(i) = merge(r, 0.0_wp, x(i) > 0.0_wp)
+      end do
+   end subroutine cube_roots
 
    !> Volumes of the elements of a block at coordinates x(3,nn).
    subroutine hex8_volume(blk, x, vol)
@@ -104,6 +139,7 @@ contains
       real(wp), dimension(blk%nel) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive, ah
       real(wp) :: deps(blk%nel, 6), sold(blk%nel, 6), l(3, 3), hx(4), hy(4), hz(4), qx(4), qy(4), qz(4)
       real(wp) :: g(4, 8), rho, dtl, rvm, a, kh, bb, hgsum, ein_sum, ehg_sum
+      real(wp) :: lv(blk%nel)          ! V**(1/3)
       integer :: ierr(blk%nel)
       logical :: failed(blk%nel)
       integer :: i, k, n, nn, ihq
@@ -166,6 +202,7 @@ contains
          blk%relvol(i) = rv(i)
          ein(i) = blk%eint(i)/blk%vol0(i)
       end do
+      call cube_roots(n, vol, lv)     ! V**(1/3): bulk viscosity, hourglass
       ! ---- stress: rotate, update
       call jaumann(n, n, w12, w23, w31, blk%sig(:, :, 1))
       sold(1:n, :) = blk%sig(1:n, :, 1)
@@ -176,7 +213,7 @@ contains
       ein_sum = 0.0_wp
       do i = 1, n
          rho = mat%ro/rv(i)
-         q(i) = bulk_viscosity(part, rho, vol(i), trd(i), c(i))
+         q(i) = bulk_viscosity(part, rho, lv(i), trd(i), c(i))
          rvm = 0.5_wp*volm(i)
          a = rvm*((sold(i,1) + blk%sig(i,1,1))*deps(i,1) + (sold(i,2) + blk%sig(i,2,1))*deps(i,2) &
              + (sold(i,3) + blk%sig(i,3,1))*deps(i,3) + 2.0_wp*((sold(i,4) + blk%sig(i,4,1)) &
@@ -211,7 +248,7 @@ contains
       if (part%qh > 0.0_wp) then
          do i = 1, n
             rho = mat%ro/rv(i)
-            ah(i) = part%qh*rho*c(i)*scalar_pow(vol(i), 2.0_wp/3.0_wp)/4.0_wp
+            ah(i) = part%qh*rho*c(i)*lv(i)**2/4.0_wp
          end do
          do i = 1, n
             ! hourglass shape vectors: Gamma (IHQ 1) or FB gamma (IHQ 2-5)
@@ -275,13 +312,11 @@ contains
    end subroutine hex8_1pt
 
    !> DYNA bulk viscosity q = rho*l*(Q1*l*e_kk**2 - Q2*c*e_kk) for e_kk < 0, l = V**(1/3).
-   pure real(wp) function bulk_viscosity(part, rho, vol, trd, c) result(q)
+   pure real(wp) function bulk_viscosity(part, rho, l, trd, c) result(q)
       type(part_t), intent(in) :: part
-      real(wp), intent(in) :: rho, vol, trd, c
-      real(wp) :: l
+      real(wp), intent(in) :: rho, l, trd, c
       q = 0.0_wp
       if (trd < 0.0_wp) then
-         l = scalar_pow(vol, 1.0_wp/3.0_wp)
          q = rho*l*(part%q1*l*trd**2 - part%q2*c*trd)
       end if
    end function bulk_viscosity
@@ -337,6 +372,7 @@ contains
       real(wp) :: p8(8), q8(8), r8(8)
       real(wp), allocatable :: dng(:, :, :, :)
       real(wp) :: jwg(8, blk%nel), wm(blk%nel), dtl, rho, a, trp, pm, ein_sum
+      real(wp) :: lv(blk%nel)          ! V**(1/3)
       integer :: ierr(blk%nel)
       logical :: failed(blk%nel), fpt(blk%nel)
       integer :: i, k, n, nn, ip
@@ -365,6 +401,7 @@ contains
          ein(i) = blk%eint(i)/blk%vol0(i)
          alive(i) = merge(0.0_wp, 1.0_wp, blk%failed(i))
       end do
+      call cube_roots(n, vol, lv)     ! V**(1/3) for the bulk viscosity
       ! mean volumetric rate: (1/V) sum_I v_I . B_I at mid-step (B held in fx, fy, fz here)
       do i = 1, n
          trd(i) = sum(vx(i, :)*fx(i, :) + vy(i, :)*fy(i, :) + vz(i, :)*fz(i, :))/volm(i)
@@ -430,7 +467,7 @@ contains
       ! bulk viscosity, mean pressure through the exact mean B, erosion
       do i = 1, n
          rho = mat%ro/rv(i)
-         q(i) = bulk_viscosity(part, rho, vol(i), trd(i), c(i))
+         q(i) = bulk_viscosity(part, rho, lv(i), trd(i), c(i))
          a = -q(i)*trd(i)*dt_old*vol(i)*alive(i)
          blk%eint(i) = blk%eint(i) + a
          ein_sum = ein_sum + a

@@ -276,7 +276,7 @@ contains
    subroutine par_engine_mass(model)
       type(model_t), intent(inout) :: model
       integer, allocatable :: keys(:)
-      real(wp), allocatable :: vals(:, :), gv(:, :)
+      real(wp), allocatable :: vals(:, :)
       call par_exchange_mass(pm, model%mass)
       model%mass(pm%nloc + 1:) = 0.0_wp
       call par_gather_ordered(pm%node_global(own), reshape(model%mass(own), [1, size(own)]), &
