@@ -13,6 +13,7 @@
 !> Viscous hourglass coefficient a_h = QH*rho*c*V**(2/3)/4 (LS-DYNA Theory Manual, U);
 !> stiffness k_h = QH*(K + 4G/3)*sum(B_iI**2)/(8V) (dynx choice, see docs/theory/hex8.md).
 module dx_hex8
+   use, intrinsic :: iso_fortran_env, only: int64
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_model, only: elem_block_t, part_t
    use dx_material, only: material_t
@@ -35,33 +36,30 @@ module dx_hex8
 
 contains
 
-   !> l(1:n) = x(1:n)**(1/3) from IEEE operations only (sqrt, +, *, /), so a vectorized loop gives every
-   !> element the same bits in every lane and in the scalar remainder. (pow does not:
+   !> l(1:n) = x(1:n)**(1/3) from exactly rounded operations only, so a vectorized loop
+   !> gives every element the same bits in every lane and in the scalar remainder. (pow not:
    !> gfortran pre-includes glibc's math-vector-fortran.h, and the vector body then calls
    !> libmvec's SIMD pow, the remainder scalar libm pow; an element's result depended on its
    !> position in its block, and an MPI rank's piece of a block changes positions.)
-   !> Start x**(85/256) = x**(1/4+1/16+1/64+1/256) (within a factor x**(1/768): 1.13 for
-   !> x in 1e-40..1e40), three steps of Halley's iteration l <- l (l^3 + 2x)/(2 l^3 + x)
-   !> (cubic convergence; Halley 1694, see Traub 1964, Iterative Methods, sec. 8.4) and one
-   !> Newton step: within 3 ulp of the correctly rounded cube root on 1e-40..1e40 (2e5
-   !> random samples; pow(x, 1/3) itself is off by up to 16 ulp there, 1/3 being inexact).
-   !> Valid for volumes in 1e-40..1e40 (any consistent units); x <= 0 gives 0. One loop
-   !> without calls, so it vectorizes (sqrt and division are exact IEEE in every lane).
+   !> Start: the bit pattern of x divided by 3 plus the exponent bias term (the classic
+   !> cbrt start, as in FreeBSD's s_cbrt.c; within 3.3 % here), done through a double so the
+   !> loop vectorizes; then two steps of Halley's iteration l <- l (l^3 + 2x)/(2 l^3 + x)
+   !> (cubic convergence; Traub 1964, Iterative Methods for the Solution of Equations,
+   !> sec. 8.4) and one Newton step: within 3 ulp of the correctly rounded cube root on
+   !> 1e-90..1e90 (2e5 random samples; pow(x, 1/3) is itself off by up to 16 ulp at
+   !> 1e+-40, 1/3 not being a double). Valid for volumes in 1e-90..1e90 (any consistent
+   !> units); x <= 0 gives 0. One loop without calls, so it vectorizes; integer/real
+   !> conversions, +, *, / are exact or correctly rounded in every lane.
    subroutine cube_roots(n, x, l)
       integer, intent(in) :: n
       real(wp), intent(in) :: x(:)
       real(wp), intent(out) :: l(:)
-      real(wp) :: y, s4, s16, s64, s256, r, r3
+      integer(int64), parameter :: CBRT_BIAS = 3071306043645493248_int64   ! 715094163*2**32
+      real(wp) :: y, r, r3
       integer :: i
       do i = 1, n
-         y = max(x(i), tiny(1.0_wp))
-         s4 = sqrt(sqrt(y))
-         s16 = sqrt(sqrt(s4))
-         s64 = sqrt(sqrt(s16))
-         s256 = sqrt(sqrt(s64))
-         r = s4*s16*s64*s256
-         r3 = r*r*r
-         r = r*(r3 + 2.0_wp*y)/(2.0_wp*r3 + y)
+         y = max(x(i), 1.0e-90_wp)
+         r = transfer(int(real(transfer(y, 0_int64), wp)/3.0_wp, int64) + CBRT_BIAS, 1.0_wp)
          r3 = r*r*r
          r = r*(r3 + 2.0_wp*y)/(2.0_wp*r3 + y)
          r3 = r*r*r
