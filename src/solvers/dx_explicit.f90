@@ -224,7 +224,9 @@ contains
             if (par) call par_engine_output(model, .true., om, writer)
             if (writer) call out%write_plot(om, ioerr)
             if (allocated(ioerr)) then
-               call move_alloc(ioerr, error); call finish(model, out, ck, error); return
+               call move_alloc(ioerr, error)
+               if (par) call par_engine_fail(error)   ! rank 0 alone: stop every rank
+               call finish(model, out, ck, error); return
             end if
             if (model%db%d3plot_dt > 0.0_wp) then
                next_plot = next_output_time(next_plot, model%db%d3plot_dt, t)
@@ -236,7 +238,9 @@ contains
             if (par) call par_engine_output(model, .false., om, writer)
             if (writer) call out%write_glstat(om, ioerr)
             if (allocated(ioerr)) then
-               call move_alloc(ioerr, error); call finish(model, out, ck, error); return
+               call move_alloc(ioerr, error)
+               if (par) call par_engine_fail(error)   ! rank 0 alone: stop every rank
+               call finish(model, out, ck, error); return
             end if
             next_glstat = next_output_time(next_glstat, model%db%glstat_dt, t)
          end if
@@ -244,7 +248,9 @@ contains
             if (par) call par_engine_output(model, .false., om, writer)
             if (writer) call out%write_nodout(om, ioerr)
             if (allocated(ioerr)) then
-               call move_alloc(ioerr, error); call finish(model, out, ck, error); return
+               call move_alloc(ioerr, error)
+               if (par) call par_engine_fail(error)   ! rank 0 alone: stop every rank
+               call finish(model, out, ck, error); return
             end if
             next_nodout = next_output_time(next_nodout, model%db%nodout_dt, t)
          end if
