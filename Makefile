@@ -128,6 +128,7 @@ bench: deps
 	@sh scripts/bench.sh
 	@sh scripts/bench_shared_sum.sh
 	@sh scripts/bench_contact.sh
+	@sh scripts/bench_mpi.sh
 
 studies: deps
 	@$(MAKE) --no-print-directory all

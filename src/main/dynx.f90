@@ -17,8 +17,10 @@ program dynx
    use dx_io_sys, only: sys_epoch_seconds
    use dx_timer, only: wall_time
    use dx_emc_solver, only: run_emc
+   use dx_par, only: par_init, par_finalize, par_size, par_rank, par_abort
+   use dx_par_engine, only: par_engine_setup, par_engine_global, par_engine_report
    implicit none
-   character(:), allocatable :: deck, outdir, arg, val, rfile, rdeck
+   character(:), allocatable :: deck, outdir, arg, val, rfile, rdeck, partdir
    type(model_t) :: model
    type(output_t) :: out
    type(run_options_t) :: opts
@@ -33,6 +35,7 @@ program dynx
    deck = ''
    rfile = ''
    rdeck = ''
+   partdir = ''
    n = command_argument_count()
    i = 0
    do while (i < n)
@@ -51,6 +54,8 @@ program dynx
          if (ios /= 0 .or. opts%nstatus < 1) call die_usage('--status needs a positive integer')
       case ('--check')
          check_only = .true.
+      case ('--part')
+         i = i + 1; partdir = get_arg(i)
       case ('-r', '--restart')
          i = i + 1; rfile = get_arg(i)
       case ('-R', '--restart-deck')
@@ -84,7 +89,11 @@ program dynx
    opts%ck%outdir = outdir
    opts%ck%deck = deck
    call slurm_limit(opts%ck%walltime)
-   if (.not. check_only) call signals_install()   ! polled once per cycle by the solver
+   call par_init(error)             ! MPI only when started by mpirun/srun
+   if (allocated(error)) call die(error)
+   if (par_size() > 1 .and. len(rfile) > 0) call die_usage('-r (restart) is serial only so far')
+   ! polled once per cycle by the serial solver (an MPI run leaves signals to mpirun)
+   if (.not. check_only .and. par_size() == 1) call signals_install()
 
    call read_deck(deck, model, error, ignore_unknown)
    if (allocated(error)) call die(error)
@@ -98,6 +107,7 @@ program dynx
       end if
       call log_info('dynx: deck check passed')
       call log_summary()
+      call par_finalize()
       stop
    end if
    if (len(rfile) > 0 .and. allocated(model%emc)) then
@@ -105,6 +115,8 @@ program dynx
          'rigid-body solver (*DYNX_CONSERVING_CONTACT): its dumps are not written yet', EXIT_INPUT)
       call die(error)
    end if
+   call par_engine_setup(model, deck, outdir, partdir, error)   ! MPI run: the rank's part
+   if (allocated(error)) call die(error)
    call init_state(model)
    if (len(rfile) > 0) then
       call restart_read(model, rfile, error)
@@ -117,6 +129,8 @@ program dynx
          call log_info('dynx: restart deck '//rdeck//' applied')
       end if
       call out%resume(model, outdir, error)
+   else if (par_size() > 1) then       ! an MPI run writes its output from rank 0
+      if (par_rank() == 0) call out%open(par_engine_global(), outdir, error)
    else
       call out%open(model, outdir, error)
    end if
@@ -136,6 +150,8 @@ program dynx
    end if
    call log_info('dynx: results in '//outdir//'/ (d3plot.h5, d3plot.xdmf'// &
       trim(merge(', glstat', '        ', model%db%glstat_dt > 0.0_wp))//')')
+   call par_engine_report()
+   call par_finalize()
 
 contains
 
@@ -161,6 +177,9 @@ contains
          '                       d3plot.h5 + d3plot.xdmf (open in ParaView), glstat, nodout', &
          '  --status N           number of status lines over the run (default 10)', &
          '  --check              read and check the deck, print a summary, do not run', &
+         '  --part DIR           MPI runs: the rank files (dynx-part) are DIR/rank_R.h5', &
+         '                       (default: the output directory, else next to the deck;', &
+         '                       rank 0 partitions into the output directory if none)', &
          '  -r, --restart FILE   continue the run from restart dump FILE (d3dumpNN.h5,', &
          '                       runrsf.h5); give the same deck and -o as the first run', &
          '  -R, --restart-deck F a small restart deck applied after the deck (new end time,', &
@@ -228,6 +247,7 @@ contains
 
    subroutine die(err)
       type(error_t), intent(in) :: err
+      if (par_size() > 1) call par_abort(err%message, err%code)   ! stops every rank
       call log_error(err%message)
       call exit_process(err%code)
    end subroutine die

@@ -24,6 +24,7 @@ module dx_par
    public :: par_init, par_finalize, par_rank, par_size, par_active, par_barrier, &
              par_allreduce, par_abort, shared_sum_t, par_shared_setup, par_shared_sum, &
              par_shared_sum_plain, par_wtime, par_minloc, par_gather_ordered, PAR_SUM, &
+             gather_plan_t, par_gather_setup, par_gather_values, &
              PAR_MIN, PAR_MAX
 
    integer, parameter :: PAR_SUM = 1, PAR_MIN = 2, PAR_MAX = 3
@@ -43,6 +44,15 @@ module dx_par
       integer, allocatable :: ord_ptr(:), ord_src(:)     !< per shared node: sources by key
       integer, allocatable :: nbr_ptr(:), nbr_snode(:)   !< shared nodes of each neighbour
    end type shared_sum_t
+
+   !> A fixed ordered gather (the same keys every call): counts, offsets and the key order
+   !> are exchanged once, so each call is one MPI_Allgatherv of values.
+   type :: gather_plan_t
+      integer :: n = 0                      !< own entries
+      integer, allocatable :: counts(:), displs(:)
+      integer, allocatable :: keys(:)       !< all keys, ascending
+      integer, allocatable :: perm(:)       !< position in the gathered array of keys(j)
+   end type gather_plan_t
 
    interface par_allreduce
       module procedure allreduce_r0, allreduce_r1, allreduce_i0, allreduce_i1
@@ -496,6 +506,54 @@ contains
       all_keys = kk(idx)
       all_vals = vv(:, idx)
    end subroutine par_gather_ordered
+
+   !> Build a fixed gather plan from this rank's keys (distinct over all ranks).
+   subroutine par_gather_setup(plan, keys)
+      type(gather_plan_t), intent(out) :: plan
+      integer, intent(in) :: keys(:)
+      integer, allocatable :: kk(:)
+      integer :: r, ierr, i
+      plan%n = size(keys)
+      if (.not. mpi_on) then
+         kk = keys
+         plan%counts = [size(keys)]
+         plan%displs = [0]
+      else
+         allocate(plan%counts(0:nranks - 1), plan%displs(0:nranks - 1))
+         call MPI_Allgather(size(keys), 1, MPI_INTEGER, plan%counts, 1, MPI_INTEGER, comm, ierr)
+         call check(ierr, 'MPI_Allgather (gather plan counts)')
+         plan%displs(0) = 0
+         do r = 1, nranks - 1
+            plan%displs(r) = plan%displs(r - 1) + plan%counts(r - 1)
+         end do
+         allocate(kk(sum(plan%counts)))
+         call MPI_Allgatherv(keys, size(keys), MPI_INTEGER, kk, plan%counts, plan%displs, &
+                             MPI_INTEGER, comm, ierr)
+         call check(ierr, 'MPI_Allgatherv (gather plan keys)')
+      end if
+      plan%perm = [(i, i = 1, size(kk))]
+      call sort_idx_by_key(plan%perm, kk)
+      plan%keys = kk(plan%perm)
+   end subroutine par_gather_setup
+
+   !> One call of a fixed gather: vals(ncomp, plan%n) from every rank, ordered as plan%keys.
+   subroutine par_gather_values(plan, vals, all_vals)
+      type(gather_plan_t), intent(in) :: plan
+      real(wp), intent(in) :: vals(:, :)
+      real(wp), intent(out) :: all_vals(:, :)
+      real(wp), allocatable :: vv(:, :)
+      integer :: ncomp, ierr
+      ncomp = size(vals, 1)
+      if (.not. mpi_on) then
+         all_vals(:, 1:plan%n) = vals(:, plan%perm)
+         return
+      end if
+      allocate(vv(ncomp, size(plan%keys)))
+      call MPI_Allgatherv(vals, ncomp*plan%n, MPI_DOUBLE_PRECISION, vv, ncomp*plan%counts, &
+                          ncomp*plan%displs, MPI_DOUBLE_PRECISION, comm, ierr)
+      call check(ierr, 'MPI_Allgatherv (gather plan values)')
+      all_vals(:, 1:size(plan%keys)) = vv(:, plan%perm)
+   end subroutine par_gather_values
 
    !> Heap sort of idx by key(idx) (many entries: the insertion sort above is for short lists).
    subroutine sort_idx_by_key(idx, key)

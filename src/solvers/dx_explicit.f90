@@ -20,10 +20,16 @@ module dx_explicit
    use dx_loads, only: add_external_loads, has_external_loads
    use dx_constraints, only: apply_spc, apply_prescribed, apply_rigidwalls
    use dx_output, only: output_t
-   use dx_rigid_solver, only: rigid_step, rigid_write_rbdout, rigid_close
-   use dx_contact, only: contact_forces, contact_work
    use dx_checkpoint, only: checkpoint_t, checkpoint_stage, checkpoint_failure_dump, &
                             checkpoint_energy_band
+   use dx_contact, only: contact_forces, contact_work
+   use dx_rigid_solver, only: rigid_step, rigid_write_rbdout, rigid_close
+   use dx_energy_sums, only: initial_kinetic, kinetic_energy, element_energies, &
+                             constraint_work, set_energy, constrained_nodes
+   use dx_par_engine, only: par_engine_on, par_engine_fill, par_engine_dt, &
+                            par_engine_exchange, par_engine_constraints, &
+                            par_engine_energies, par_engine_initial, par_engine_output, &
+                            par_engine_fail, par_engine_mass
    implicit none
    private
    public :: run_options_t, init_state, run_explicit
@@ -61,6 +67,7 @@ contains
       model%cycle = 0
       model%energy%mass = sum(model%mass)
       if (allocated(model%rigid)) model%energy%mass = model%energy%mass + model%rigid%mass_corr
+      if (par_engine_on()) call par_engine_mass(model)   ! MPI: shared nodes' mass summed
    end subroutine init_state
 
    !> Run the explicit time loop to ENDTIM/ENDCYC, writing output as the deck asks.
@@ -68,20 +75,25 @@ contains
    !> cycle, element blocks, walls) and model%run (dt_old, work sums, next output times),
    !> so a restart dump restored into model (model%run%started) continues the run exactly.
    subroutine run_explicit(model, opts, out, error)
-      type(model_t), intent(inout) :: model
+      type(model_t), intent(inout), target :: model
       type(run_options_t), intent(in) :: opts
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: vold(:, :), fext(:, :), vfree(:, :)
       integer, allocatable :: cnodes(:)
-      real(wp) :: dt, dtavg, dtcrit, t, t0wall, ke, eint, ehg, du(3), tend, wrig, epend
-      integer :: b, i, ibmin, iemin, nd
-      logical :: loads, done, stopped
+      real(wp) :: dt, dtavg, dtcrit, t, t0wall, ke, eint, ehg, tend, wrig, epend
+      integer :: b, i, ibmin, iemin
+      logical :: loads, done, stopped, need
       type(block_result_t) :: res
       type(error_t), allocatable :: ioerr
       type(checkpoint_t) :: ck
+      type(model_t), pointer :: om          ! the model output is written from
+      logical :: par, writer
 
       if (.not. allocated(model%x)) call init_state(model)
+      par = par_engine_on()               ! an MPI run on more than one rank
+      om => model
+      writer = .true.
       ck = opts%ck
       allocate(vold(3, model%nn))
       loads = has_external_loads(model)
@@ -97,7 +109,8 @@ contains
       if (.not. model%run%started) then
          model%run = run_state_t()
          model%run%started = .true.
-         model%energy%initial = 0.5_wp*sum(model%mass*sum(model%v**2, dim=1))
+         model%energy%initial = initial_kinetic(model%mass, model%v)
+         if (par) call par_engine_initial(model)
          if (allocated(model%rigid)) model%energy%initial = model%energy%initial + &
                                                            model%rigid%ke0_corr
       else
@@ -116,9 +129,9 @@ contains
       do
          t = model%time
          ! ---- internal forces (element pass) and the critical step
+         if (par) call par_engine_fill(model)   ! shared nodes' x, v into their slots
          model%f = 0.0_wp
          dtcrit = huge_wp; ibmin = 0; iemin = 0
-         epend = 0.0_wp
          do b = 1, size(model%blocks)
             if (model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%is_rigid) cycle
             associate (blk => model%blocks(b), part => model%parts(model%blocks(b)%ipart))
@@ -126,10 +139,10 @@ contains
                                model%f, res)
                if (res%ibad /= 0) then
                   call element_failure(model, b, res, error)
+                  if (par) call par_engine_fail(error)
                   call finish(model, out, ck, error)
                   return
                end if
-               epend = epend + res%pend
                if (res%dt < dtcrit) then
                   dtcrit = res%dt; ibmin = b; iemin = res%imin
                end if
@@ -137,14 +150,17 @@ contains
          end do
          if (ibmin > 0) model%dt_elem = model%blocks(ibmin)%elem(iemin)
          if (allocated(model%rigid) .and. ibmin == 0) dtcrit = model%rigid%dtcrit
-         ! ---- contact forces (only when the deck has *CONTACT)
+         ! ---- contact forces (only when the deck has *CONTACT; serial runs)
          if (allocated(model%contact)) call contact_forces(model, dt_old, dtcrit)
+         if (par) call par_engine_dt(dtcrit, model%dt_elem)   ! global min, serial tie rule
          ! ---- external forces
          if (loads) then
             fext = 0.0_wp
             call add_external_loads(model, t, fext)
-            model%f = model%f + fext
          end if
+         ! ---- shared-node exchange (MPI runs): serial-order sums at shared nodes
+         if (par) call par_engine_exchange(model%f)
+         if (loads) model%f = model%f + fext
          ! ---- time step
          dt = model%ctrl%tssfac*dtcrit
          if (model%cycle == 0 .and. model%ctrl%dtinit > 0.0_wp) dt = min(dt, model%ctrl%dtinit)
@@ -174,13 +190,16 @@ contains
          end do
          call apply_spc(model, model%v)
          call apply_prescribed(model, t, dt, dtavg, vold, model%v)
-         do i = 1, size(cnodes)
-            nd = cnodes(i)
-            du = 0.5_wp*dtavg*(vold(:, nd) + model%v(:, nd))
-            wcon = wcon + model%mass(nd)*dot_product(model%v(:, nd) - vfree(:, i), du)/dtavg
-         end do
-         if (allocated(model%walls)) call apply_rigidwalls(model, dt, dtavg, vold, &
-                                                           model%v, wrw)
+         done = t >= tend .or. (model%ctrl%endcyc > 0 .and. model%cycle >= model%ctrl%endcyc)
+         need = done .or. model%ctrl%endeng > 0.0_wp .or. (model%db%glstat_dt > 0.0_wp .and. &
+                                                          t >= next_glstat)
+         if (par) then     ! MPI: walls on each rank; work sums in serial order when needed
+            call par_engine_constraints(model, vfree, vold, dt, dtavg, wcon, wrw, need)
+         else
+            call constraint_work(cnodes, model%mass, vfree, vold, model%v, dtavg, wcon)
+            if (allocated(model%walls)) call apply_rigidwalls(model, dt, dtavg, vold, &
+                                                              model%v, wrw)
+         end if
          if (loads) then
             do i = 1, model%nn
                wext = wext + dot_product(fext(:, i), 0.5_wp*dtavg*(vold(:, i) + model%v(:, i)))
@@ -193,11 +212,7 @@ contains
             end if
          end if
          ! ---- energies at t(n)
-         ke = 0.0_wp
-         do i = 1, model%nn
-            ke = ke + model%mass(i)*dot_product(vold(:, i), model%v(:, i))
-         end do
-         ke = 0.5_wp*ke
+         ke = kinetic_energy(model%nn, model%mass, vold, model%v)
          wrig = 0.0_wp
          if (allocated(model%rigid)) then
             ke = ke + model%rigid%ke_corr
@@ -205,24 +220,28 @@ contains
          end if
          if (.not. ieee_is_finite(ke)) then
             call nan_failure(model, error)
+            if (par) call par_engine_fail(error)
             call finish(model, out, ck, error)
             return
          end if
-         eint = 0.0_wp; ehg = 0.0_wp
-         do b = 1, size(model%blocks)
-            eint = eint + sum(model%blocks(b)%eint)
-            ehg = ehg + sum(model%blocks(b)%ehg)
-         end do
-         eint = eint + 0.25_wp*(dt - dt_old)*epend   ! the part of W(n) booked next cycle
          model%dt = dt
-         call set_energy(model, ke, eint, ehg, wext + wcon + wrig, -wrw)
+         if (par) then     ! global sums, only when glstat, ENDENG or the end need them
+            call par_engine_energies(model, vold, wext + wcon + wrig, -wrw, &
+                                     0.25_wp*(dt - dt_old), need)
+         else
+            call element_energies(model%blocks, eint, ehg, epend)
+            eint = eint + 0.25_wp*(dt - dt_old)*epend   ! the part of W(n) booked next cycle
+            call set_energy(model, ke, eint, ehg, wext + wcon + wrig, -wrw)
+         end if
          if (model%ctrl%endeng > 0.0_wp) call checkpoint_energy_band(ck, model, t)
-         ! ---- output at t(n)
-         done = t >= tend .or. (model%ctrl%endcyc > 0 .and. model%cycle >= model%ctrl%endcyc)
+         ! ---- output at t(n) (MPI runs: gathered into the global model, written by rank 0)
          if (t >= next_plot .or. done) then
-            call out%write_plot(model, ioerr)
+            if (par) call par_engine_output(model, .true., om, writer)
+            if (writer) call out%write_plot(om, ioerr)
             if (allocated(ioerr)) then
-               call move_alloc(ioerr, error); call finish(model, out, ck, error); return
+               call move_alloc(ioerr, error)
+               if (par) call par_engine_fail(error)   ! rank 0 alone: stop every rank
+               call finish(model, out, ck, error); return
             end if
             if (model%db%d3plot_dt > 0.0_wp) then
                next_plot = next_output_time(next_plot, model%db%d3plot_dt, t)
@@ -231,16 +250,22 @@ contains
             end if
          end if
          if (model%db%glstat_dt > 0.0_wp .and. (t >= next_glstat .or. done)) then
-            call out%write_glstat(model, ioerr)
+            if (par) call par_engine_output(model, .false., om, writer)
+            if (writer) call out%write_glstat(om, ioerr)
             if (allocated(ioerr)) then
-               call move_alloc(ioerr, error); call finish(model, out, ck, error); return
+               call move_alloc(ioerr, error)
+               if (par) call par_engine_fail(error)   ! rank 0 alone: stop every rank
+               call finish(model, out, ck, error); return
             end if
             next_glstat = next_output_time(next_glstat, model%db%glstat_dt, t)
          end if
          if (model%db%nodout_dt > 0.0_wp .and. (t >= next_nodout .or. done)) then
-            call out%write_nodout(model, ioerr)
+            if (par) call par_engine_output(model, .false., om, writer)
+            if (writer) call out%write_nodout(om, ioerr)
             if (allocated(ioerr)) then
-               call move_alloc(ioerr, error); call finish(model, out, ck, error); return
+               call move_alloc(ioerr, error)
+               if (par) call par_engine_fail(error)   ! rank 0 alone: stop every rank
+               call finish(model, out, ck, error); return
             end if
             next_nodout = next_output_time(next_nodout, model%db%nodout_dt, t)
          end if
@@ -255,7 +280,7 @@ contains
                                                           model%rigid%rbdout_dt, t)
             end if
          end if
-         if (t >= next_status .or. done) then
+         if ((t >= next_status .or. done) .and. writer) then
             call status_line(model, t, dt, t0wall, tend)
             if (tend < huge_wp) then
                next_status = next_status + tend/real(max(1, opts%nstatus), wp)
@@ -269,9 +294,11 @@ contains
          model%time = t + dt
          model%cycle = model%cycle + 1
          dt_old = dt
-         ! ---- cycle boundary: restart dumps, signals, wall-clock limit, ENDENG
-         call checkpoint_stage(ck, model, out, stopped, error)
-         if (stopped) return
+         ! ---- cycle boundary: restart dumps, signals, wall-clock limit, ENDENG (serial only)
+         if (.not. par) then
+            call checkpoint_stage(ck, model, out, stopped, error)
+            if (stopped) return
+         end if
       end do
       end associate
       call log_info('dynx: normal termination at cycle '//str(model%cycle)//', time '// &
@@ -281,7 +308,7 @@ contains
          real(max(1, model%ne), wp), 4)//' ns per element-cycle, peak memory '// &
          str(peak_memory_kb())//' KiB')
       if (allocated(model%rigid)) call rigid_close(model%rigid)
-      call out%close(ioerr)
+      if (writer) call out%close(ioerr)
       if (allocated(ioerr)) call move_alloc(ioerr, error)
    end subroutine run_explicit
 
@@ -290,51 +317,6 @@ contains
       real(wp), intent(in) :: next, interval, t
       tn = next + interval*real(max(1, ceiling((t - next)/interval + 1.0e-9_wp)), wp)
    end function next_output_time
-
-   subroutine set_energy(model, ke, eint, ehg, wext, erw)
-      type(model_t), intent(inout) :: model
-      real(wp), intent(in) :: ke, eint, ehg, wext, erw
-      real(wp) :: den
-      integer :: d
-      model%energy%kinetic = ke
-      model%energy%internal = eint
-      model%energy%hourglass = ehg
-      model%energy%external_work = wext
-      model%energy%rigidwall = erw
-      model%energy%total = ke + eint + ehg
-      den = model%energy%initial + wext
-      if (abs(den) > 0.0_wp) then
-         model%energy%ratio = (model%energy%total + erw + model%energy%sliding)/den
-      else
-         model%energy%ratio = 1.0_wp
-      end if
-      do d = 1, 3
-         model%energy%momentum(d) = sum(model%mass*model%v(d, :))
-      end do
-      if (allocated(model%rigid)) model%energy%momentum = model%energy%momentum + &
-                                                         model%rigid%p_corr
-   end subroutine set_energy
-
-   !> Nodes with an SPC or prescribed motion (their reaction forces do work).
-   subroutine constrained_nodes(model, nodes)
-      type(model_t), intent(in) :: model
-      integer, allocatable, intent(out) :: nodes(:)
-      logical, allocatable :: mark(:)
-      integer :: k
-      allocate(mark(model%nn))
-      mark = .false.
-      if (allocated(model%spcs)) then
-         do k = 1, size(model%spcs)
-            if (any(model%spcs(k)%dof(1:3))) mark(model%spcs(k)%node) = .true.
-         end do
-      end if
-      if (allocated(model%prescribed)) then
-         do k = 1, size(model%prescribed)
-            mark(model%prescribed(k)%node) = .true.
-         end do
-      end if
-      nodes = pack([(k, k = 1, model%nn)], mark)
-   end subroutine constrained_nodes
 
    integer function elem_label(model)
       type(model_t), intent(in) :: model
@@ -389,17 +371,26 @@ contains
 
    !> After a failure: write the last state and close the files so the output stays readable.
    subroutine finish(model, out, ck, error)
-      type(model_t), intent(inout) :: model
+      type(model_t), intent(inout), target :: model
       type(output_t), intent(inout) :: out
       type(checkpoint_t), intent(inout) :: ck
       type(error_t), allocatable, intent(inout) :: error
       type(error_t), allocatable :: ioerr
       character(:), allocatable :: dump
-      call checkpoint_failure_dump(ck, model, out, dump)
-      call out%write_plot(model, ioerr)
+      type(model_t), pointer :: om
+      logical :: writer
+      om => model
+      writer = .true.
+      dump = ''
+      if (par_engine_on()) then    ! every rank gets here together (a global failure)
+         call par_engine_output(model, .true., om, writer)
+      else
+         call checkpoint_failure_dump(ck, model, out, dump)
+      end if
+      if (writer) call out%write_plot(om, ioerr)
       if (allocated(ioerr)) deallocate(ioerr)
       if (allocated(model%rigid)) call rigid_close(model%rigid)
-      call out%close(ioerr)
+      if (writer) call out%close(ioerr)
       if (allocated(error)) error%message = error%message//new_line('a')// &
          'dynx: the last state (time '//rstr(model%time)//') was written to the plot file'
       if (allocated(error) .and. len(dump) > 0) error%message = error%message// &

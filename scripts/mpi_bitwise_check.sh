@@ -1,0 +1,41 @@
+#!/bin/sh
+# Serial and MPI runs agree bit for bit (docs/design.md, "ParaDyn step 5").
+#   sh scripts/mpi_bitwise_check.sh DECK SERIAL_OUTDIR [NP...]      (default NP: 1 2 3 4)
+# SERIAL_OUTDIR holds a serial run of DECK (bin/dynx -i DECK -o SERIAL_OUTDIR). For each NP,
+# runs `mpirun -np NP bin/dynx -i DECK -o SERIAL_OUTDIR/npNP` (--oversubscribe; as root also
+# --allow-run-as-root; rank 0 partitions the deck itself) and compares glstat and nodout
+# with cmp and d3plot.h5 with h5diff: zero tolerance. Exit 1 on any difference.
+set -u
+deck=$1
+ref=$2
+shift 2
+nps=${*:-1 2 3 4}
+MPIRUN=${MPIRUN:-mpirun}
+opts="--oversubscribe --mca mpi_yield_when_idle 1"
+[ "$(id -u)" = 0 ] && opts="$opts --allow-run-as-root"
+fail=0
+for np in $nps; do
+    out=$ref/np$np
+    rm -rf "$out"
+    mkdir -p "$out"
+    t0=$(date +%s)
+    timeout 300 $MPIRUN $opts -np "$np" bin/dynx -i "$deck" -o "$out" >"$out/stdout" 2>"$out/stderr"
+    rc=$?
+    t1=$(date +%s)
+    if [ $rc -ne 0 ]; then
+        echo "NP $np: exit $rc"; cat "$out/stderr"; fail=1; continue
+    fi
+    res=""
+    for f in glstat nodout d3plot.xdmf; do
+        [ -f "$ref/$f" ] || continue
+        if cmp -s "$ref/$f" "$out/$f"; then res="$res $f=identical"; else res="$res $f=DIFFERS"; fail=1; fi
+    done
+    if h5diff -q "$ref/d3plot.h5" "$out/d3plot.h5" >/dev/null 2>&1; then
+        res="$res d3plot.h5=identical"
+    else
+        res="$res d3plot.h5=DIFFERS"; fail=1
+        h5diff "$ref/d3plot.h5" "$out/d3plot.h5" | head -5
+    fi
+    echo "NP $np ($((t1 - t0)) s):$res"
+done
+exit $fail

@@ -1,0 +1,548 @@
+!> The MPI engine (ParaDyn step 5; docs/design.md): what `mpirun -np NP bin/dynx` adds to the
+!> serial explicit loop. Every rank reads the deck and builds the serial model, reads its rank
+!> file (dynx-part; or rank 0 partitions when none exists) and turns the model into its
+!> sub-model (dx_par_model: the pieces of the serial element blocks, its nodes, one slot node
+!> per shared element corner, its SPCs and prescribed motions). The loop then makes, per cycle:
+!> one shared-node force exchange in fixed serial order (par_shared_sum), one MINLOC for the
+!> stable step, and - only when the deck has them - one ordered gather of the constrained
+!> and rigid-wall nodes' velocities. Energies, momentum and work terms are not formed from
+!> per-rank partial sums: the terms are gathered (par_gather_ordered) into a global copy of
+!> the model held here, and the serial procedures (dx_energy_sums, apply_rigidwalls) run on
+!> it, so they add the same numbers in the same order with the same code: the parallel run
+!> reproduces the serial one bit for bit (NP = 1..4 regression cases, zero tolerance).
+!> Output: at output times the nodal and element state is gathered into the global model and
+!> rank 0 writes glstat, nodout and d3plot.h5 + d3plot.xdmf exactly as a serial run does.
+!> Fixed-order sums: the idea of OpenRadioss /PARITH/ON; single exchange per cycle: ParaDyn
+!> (Hoover et al., LLNL Engineering Thrust Area Report FY97, article 4 of shared/seed).
+!> Module state (allowed in parallel/): the global model, the rank's plan and maps.
+module dx_par_engine
+   use dx_kinds, only: wp, nv_chunk, huge_wp
+   use dx_error, only: error_t, set_error, EXIT_INPUT
+   use dx_strings, only: str, rstr
+   use dx_log, only: log_info, log_set_quiet
+   use dx_model, only: model_t
+   use dx_model_input, only: model_input_t
+   use dx_deck, only: read_deck_input
+   use dx_par, only: par_rank, par_size, par_abort, par_minloc, par_gather_ordered, &
+                     par_allreduce, par_barrier, PAR_MAX, gather_plan_t, par_gather_setup, &
+                     par_gather_values, par_wtime, PAR_SUM
+   use dx_par_model, only: par_model_t, par_model_build, par_fill_slots, par_exchange_forces, &
+                           par_exchange_mass
+   use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report
+   use dx_rank_file, only: read_rank_file, write_rank_file, rank_file_name, deck_content_hash
+   use dx_io_sys, only: sys_mkdir_p
+   use dx_energy_sums, only: initial_kinetic, kinetic_energy, element_energies, &
+                             constraint_work, set_energy, constrained_nodes
+   use dx_constraints, only: apply_rigidwalls
+   implicit none
+   private
+   public :: par_engine_setup, par_engine_on, par_engine_mass, par_engine_initial, &
+             par_engine_fill, par_engine_dt, par_engine_exchange, par_engine_constraints, &
+             par_engine_energies, par_engine_output, par_engine_fail, &
+             par_engine_global, par_engine_report
+
+   logical, save :: on = .false.
+   type(model_t), target, save :: g                  !< the global model (serial numbering)
+   type(par_model_t), save :: pm                      !< this rank's sub-model plan
+   integer, allocatable, save :: own(:)               !< owned local nodes
+   integer, allocatable, save :: key_elem(:)          !< serial order key -> global element
+   integer, allocatable, save :: gcnodes(:)           !< constrained nodes (global)
+   integer, allocatable, save :: gcpos(:)             !< global node -> position in gcnodes
+   logical, allocatable, save :: owned(:)             !< (nloc) this rank owns the node
+   real(wp), allocatable, save :: gvold(:, :), gvfree(:, :)
+   integer, allocatable, save :: bc_loc(:)            !< owned constrained or wall nodes
+   integer, allocatable, save :: lcpos(:)             !< local node -> position in cnodes
+   integer, allocatable, save :: elem_loc(:, :)       !< (2, nel) piece and position
+   type(gather_plan_t), save :: plan_bc, plan_own, plan_elem
+   integer, parameter :: NBUF_MAX = 32                !< cycles of work terms kept at most
+   integer, save :: nbuf = 0
+   real(wp), allocatable, save :: buf(:, :, :)        !< (12, bc nodes, NBUF_MAX)
+   real(wp), save :: buf_dt(2, NBUF_MAX)              !< dt, dtavg of the kept cycles
+   !> wall time in the force exchange, the dt reduction, the ordered gathers (sums, output)
+   real(wp), save :: t_exch = 0.0_wp, t_dt = 0.0_wp, t_gath = 0.0_wp
+
+contains
+
+   !> True in an MPI run on more than one rank (after par_engine_setup).
+   logical function par_engine_on()
+      par_engine_on = on
+   end function par_engine_on
+
+   !> Turn the serial model (read by every rank) into this rank's sub-model. The rank file is
+   !> partdir/rank_R.h5 when partdir is given, else outdir/rank_R.h5, else rank_R.h5 next
+   !> to the deck; when rank_00000.h5 is in none of them, rank 0 partitions the deck (as
+   !> dynx-part) into outdir first. Errors that concern one rank abort all ranks.
+   subroutine par_engine_setup(model, deck, outdir, partdir, error)
+      type(model_t), intent(inout) :: model
+      character(*), intent(in) :: deck, outdir, partdir
+      type(error_t), allocatable, intent(out) :: error
+      type(model_input_t) :: inp
+      type(rank_part_t) :: rp
+      character(16) :: hash
+      character(:), allocatable :: dir, deckdir
+      integer :: np, me, where, k, i
+      integer, allocatable :: loc(:)
+      logical :: ex
+      np = par_size()
+      me = par_rank()
+      if (np <= 1) return
+      call unsupported(model, error)
+      if (allocated(error)) return
+      if (me > 0) call log_set_quiet(.true.)
+      call read_deck_input(deck, inp, error)
+      if (allocated(error)) return
+      call deck_content_hash(inp%files, hash, error)
+      if (allocated(error)) return
+      k = index(deck, '/', back=.true.)
+      deckdir = '.'
+      if (k > 0) deckdir = deck(1:k - 1)
+      ! rank 0 decides where the files are; the others follow
+      where = 0
+      if (me == 0) then
+         if (len(partdir) > 0) then
+            where = 3
+         else
+            inquire(file=rank_file_name(outdir, 0), exist=ex)
+            if (ex) then
+               where = 1
+            else
+               inquire(file=rank_file_name(deckdir, 0), exist=ex)
+               if (ex) where = 2
+            end if
+         end if
+      end if
+      call par_allreduce(where, PAR_MAX)
+      select case (where)
+      case (0)
+         dir = outdir
+         if (me == 0) call partition_here(model, np, hash, deck, dir)
+         call par_barrier()
+      case (1)
+         dir = outdir
+      case (2)
+         dir = deckdir
+      case default
+         dir = partdir
+      end select
+      call log_info('dynx: MPI run on '//str(np)//' ranks, rank files '// &
+                    rank_file_name(dir, 0)//' ...')
+      call read_rank_file(rank_file_name(dir, me), hash, np, me, rp, error)
+      if (allocated(error)) call par_abort(error%message, error%code)
+      ! the global model keeps the serial numbering; the rank's model becomes local
+      g = model
+      allocate(g%x(3, g%nn), g%v(3, g%nn), g%f(3, g%nn), g%mass(g%nn))
+      g%x = g%x0
+      g%v = g%v0
+      g%f = 0.0_wp
+      g%mass = 0.0_wp
+      allocate(gvold(3, g%nn))
+      gvold = 0.0_wp
+      call par_model_build(model, rp, pm)
+      allocate(loc(g%nn))
+      loc = 0
+      loc(rp%nodes) = [(i, i = 1, pm%nloc)]
+      model%nn = pm%nloc + pm%nslot
+      model%node_label = [g%node_label(rp%nodes), g%node_label(rp%nodes(pm%slot_node))]
+      model%x0 = reshape([g%x0(:, rp%nodes), g%x0(:, rp%nodes(pm%slot_node))], [3, model%nn])
+      model%v0 = reshape([g%v0(:, rp%nodes), g%v0(:, rp%nodes(pm%slot_node))], [3, model%nn])
+      call move_alloc(pm%blocks, model%blocks)
+      if (allocated(model%spcs)) then
+         model%spcs = g%spcs(rp%spcs)
+         do k = 1, size(model%spcs)
+            model%spcs(k)%node = loc(model%spcs(k)%node)
+         end do
+      end if
+      if (allocated(model%prescribed)) then
+         model%prescribed = g%prescribed(rp%prescribed)
+         do k = 1, size(model%prescribed)
+            model%prescribed(k)%node = loc(model%prescribed(k)%node)
+         end do
+      end if
+      owned = rp%node_owner == me
+      own = pack([(i, i = 1, pm%nloc)], owned)
+      allocate(key_elem(size(g%blocks)*nv_chunk))
+      key_elem = 0
+      do k = 1, size(g%blocks)
+         key_elem((k - 1)*nv_chunk + 1:(k - 1)*nv_chunk + g%blocks(k)%nel) = g%blocks(k)%elem
+      end do
+      call constrained_nodes(g, gcnodes)
+      allocate(gcpos(g%nn), gvfree(3, size(gcnodes)))
+      gcpos = 0
+      gcpos(gcnodes) = [(i, i = 1, size(gcnodes))]
+      gvfree = 0.0_wp
+      block
+         logical, allocatable :: on_wall(:), bc(:)
+         integer, allocatable :: lc(:)
+         allocate(on_wall(g%nn), bc(pm%nloc), lcpos(model%nn))
+         on_wall = .false.
+         if (allocated(g%walls)) then
+            do k = 1, size(g%walls)
+               on_wall(g%walls(k)%nodes) = .true.
+            end do
+         end if
+         call constrained_nodes(model, lc)
+         lcpos = 0
+         lcpos(lc) = [(i, i = 1, size(lc))]
+         bc = on_wall(rp%nodes)
+         bc(lc) = .true.
+         bc_loc = pack([(i, i = 1, pm%nloc)], bc .and. owned)
+         allocate(buf(12, size(bc_loc), NBUF_MAX))
+         if (allocated(model%walls)) then     ! the rank's wall nodes, in wall order
+            do k = 1, size(model%walls)
+               model%walls(k)%nodes = pack(loc(g%walls(k)%nodes), loc(g%walls(k)%nodes) > 0)
+            end do
+         end if
+      end block
+      call par_gather_setup(plan_bc, pm%node_global(bc_loc))
+      call par_gather_setup(plan_own, pm%node_global(own))
+      block
+         integer :: b, j, n
+         integer, allocatable :: ek(:)
+         n = sum([(model%blocks(b)%nel, b = 1, size(model%blocks))])
+         allocate(elem_loc(2, n), ek(n))
+         n = 0
+         do b = 1, size(model%blocks)
+            do j = 1, model%blocks(b)%nel
+               n = n + 1
+               elem_loc(:, n) = [b, j]
+               ek(n) = model%blocks(b)%elem(j)
+            end do
+         end do
+         call par_gather_setup(plan_elem, ek)
+      end block
+      on = .true.
+   contains
+      !> Rank 0 only: partition the deck into dir as `dynx-part deck -n np -o dir` would.
+      subroutine partition_here(model, np, hash, deck, dir)
+         type(model_t), intent(in) :: model
+         integer, intent(in) :: np
+         character(*), intent(in) :: hash, deck, dir
+         type(partition_t) :: part
+         type(rank_part_t) :: rpr
+         type(error_t), allocatable :: err
+         integer :: r, u, ios
+         call log_info('dynx: no rank files in '//dir//' or '//deckdir//': partitioning '// &
+                       deck//' into '//str(np)//' ranks (as dynx-part) in '//dir)
+         if (np > model%ne) call par_abort(deck//': cannot split '//str(model%ne)// &
+                                           ' elements into '//str(np)//' ranks', EXIT_INPUT)
+         call partition_model(model, np, [1], [integer ::], part, err)
+         if (allocated(err)) call par_abort(err%message, err%code)
+         call sys_mkdir_p(dir, err)
+         if (allocated(err)) call par_abort(err%message, err%code)
+         do r = 0, np - 1
+            call rank_part(model, part, r, rpr, err)
+            if (allocated(err)) call par_abort(err%message, err%code)
+            call write_rank_file(rank_file_name(dir, r), rpr, hash, err)
+            if (allocated(err)) call par_abort(err%message, err%code)
+         end do
+         open(newunit=u, file=dir//'/partition.txt', status='replace', action='write', &
+              iostat=ios)
+         if (ios == 0) then
+            call write_report(u, part, deck, hash)
+            close(u)
+         end if
+      end subroutine partition_here
+   end subroutine par_engine_setup
+
+   !> What the engine does not run across ranks yet: exit 2 naming the keyword.
+   subroutine unsupported(model, error)
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      character(:), allocatable :: what
+      what = ''
+      if (allocated(model%rigid)) then
+         what = '*MAT_RIGID / *CONSTRAINED_NODAL_RIGID_BODY (rigid bodies)'
+      else if (nonempty_loads()) then
+         what = '*LOAD_NODE / *LOAD_SEGMENT / *LOAD_BODY (external loads)'
+      else if (allocated(model%contact)) then
+         what = '*CONTACT_... (contact)'
+      else if (allocated(model%emc)) then
+         what = '*DYNX_CONSERVING_CONTACT (the conserving rigid-body solver)'
+      else if (model%rst%d3dump_cycl > 0 .or. model%rst%runrsf_cycl > 0) then
+         what = '*DATABASE_BINARY_D3DUMP / *DATABASE_BINARY_RUNRSF (restart dumps)'
+      end if
+      if (len(what) > 0) call set_error(error, model%deck_file//': '//what// &
+         ' is not supported in an MPI run yet; run this deck serially (without mpirun)', &
+         EXIT_INPUT)
+   contains
+      logical function nonempty_loads()
+         nonempty_loads = .false.
+         if (allocated(model%node_loads)) nonempty_loads = size(model%node_loads) > 0
+         if (allocated(model%seg_loads)) nonempty_loads = nonempty_loads .or. &
+                                                          size(model%seg_loads) > 0
+         if (allocated(model%body_loads)) nonempty_loads = nonempty_loads .or. &
+                                                           size(model%body_loads) > 0
+      end function nonempty_loads
+   end subroutine unsupported
+
+   !> After init_state's element-major mass scatter: the mass exchange (serial order), slot
+   !> masses to zero, and the global mass and its sum as the serial run forms it.
+   subroutine par_engine_mass(model)
+      type(model_t), intent(inout) :: model
+      integer, allocatable :: keys(:)
+      real(wp), allocatable :: vals(:, :)
+      call par_exchange_mass(pm, model%mass)
+      model%mass(pm%nloc + 1:) = 0.0_wp
+      call par_gather_ordered(pm%node_global(own), reshape(model%mass(own), [1, size(own)]), &
+                              keys, vals)
+      g%mass(keys) = vals(1, :)
+      model%energy%mass = sum(g%mass)
+      g%energy%mass = model%energy%mass
+   end subroutine par_engine_mass
+
+   !> The initial kinetic energy of the global model.
+   subroutine par_engine_initial(model)
+      type(model_t), intent(inout) :: model
+      integer, allocatable :: keys(:)
+      real(wp), allocatable :: gv(:, :)
+      call par_gather_ordered(pm%node_global(own), model%v(:, own), keys, gv)
+      g%v(:, keys) = gv
+      model%energy%initial = initial_kinetic(g%mass, g%v)
+   end subroutine par_engine_initial
+
+   !> Before the element pass: shared nodes' x and v into their slot nodes.
+   subroutine par_engine_fill(model)
+      type(model_t), intent(inout) :: model
+      call par_fill_slots(pm, model%x)
+      call par_fill_slots(pm, model%v)
+   end subroutine par_engine_fill
+
+   !> The global critical step and its element (the lowest serial order key among equal
+   !> minima, as the serial loop's first minimum).
+   subroutine par_engine_dt(dtcrit, dt_elem)
+      real(wp), intent(inout) :: dtcrit
+      integer, intent(inout) :: dt_elem
+      integer :: key
+      real(wp) :: t0
+      key = huge(key)
+      if (dt_elem > 0 .and. dtcrit < huge_wp) key = (g%elem_block(dt_elem) - 1)*nv_chunk + &
+                                                     g%elem_pos(dt_elem)
+      t0 = par_wtime()
+      call par_minloc(dtcrit, key)
+      t_dt = t_dt + (par_wtime() - t0)
+      if (key > 0 .and. key <= size(key_elem)) dt_elem = key_elem(key)
+   end subroutine par_engine_dt
+
+   !> The one shared-node exchange of the cycle: f at shared nodes becomes the serial sum.
+   subroutine par_engine_exchange(f)
+      real(wp), intent(inout) :: f(:, :)
+      real(wp) :: t0
+      t0 = par_wtime()
+      call par_exchange_forces(pm, f)
+      t_exch = t_exch + (par_wtime() - t0)
+   end subroutine par_engine_exchange
+
+   !> Rigid walls and the work of constraint and wall forces. Each rank corrects its own
+   !> wall nodes (the correction of a node depends on that node alone, and every holder of
+   !> a shared node has the same x, v and mass). The work sums are order-dependent, so the
+   !> owned constrained and wall nodes' x, v(n+1/2), v(n-1/2) and free velocity are kept
+   !> for up to NBUF_MAX cycles and, when a sum is needed (or the buffer is full), gathered
+   !> in one call and replayed cycle by cycle through the serial procedures on the global
+   !> model (constraint_work, apply_rigidwalls): the serial sums, bit for bit.
+   subroutine par_engine_constraints(model, vfree, vold, dt, dtavg, wcon, wrw, needed)
+      type(model_t), intent(inout) :: model
+      real(wp), intent(in) :: vfree(:, :), vold(:, :), dt, dtavg
+      real(wp), intent(inout) :: wcon, wrw
+      logical, intent(in) :: needed
+      real(wp) :: dummy
+      integer :: i, n
+      if (size(plan_bc%keys) == 0) return
+      nbuf = nbuf + 1
+      do i = 1, size(bc_loc)
+         n = bc_loc(i)
+         buf(1:3, i, nbuf) = model%x(:, n)
+         buf(4:6, i, nbuf) = model%v(:, n)
+         buf(7:9, i, nbuf) = vold(:, n)
+         buf(10:12, i, nbuf) = 0.0_wp
+         if (lcpos(n) > 0) buf(10:12, i, nbuf) = vfree(:, lcpos(n))
+      end do
+      buf_dt(:, nbuf) = [dt, dtavg]
+      dummy = 0.0_wp
+      if (allocated(model%walls)) call apply_rigidwalls(model, dt, dtavg, vold, model%v, dummy)
+      if (needed .or. nbuf == NBUF_MAX) call flush_work(wcon, wrw)
+   end subroutine par_engine_constraints
+
+   !> Gather the kept cycles and add their work terms in serial order.
+   subroutine flush_work(wcon, wrw)
+      real(wp), intent(inout) :: wcon, wrw
+      real(wp), allocatable :: vals(:, :), gv(:, :)
+      integer :: c, i, nk
+      real(wp) :: t0
+      t0 = par_wtime()
+      nk = size(plan_bc%keys)
+      allocate(vals(12*nbuf, size(bc_loc)), gv(12*nbuf, nk))
+      do i = 1, size(bc_loc)
+         do c = 1, nbuf
+            vals(12*(c - 1) + 1:12*c, i) = buf(:, i, c)
+         end do
+      end do
+      call par_gather_values(plan_bc, vals, gv)
+      associate (keys => plan_bc%keys)
+         do c = 1, nbuf
+            g%x(:, keys) = gv(12*(c - 1) + 1:12*(c - 1) + 3, :)
+            g%v(:, keys) = gv(12*(c - 1) + 4:12*(c - 1) + 6, :)
+            gvold(:, keys) = gv(12*(c - 1) + 7:12*(c - 1) + 9, :)
+            do i = 1, nk
+               if (gcpos(keys(i)) > 0) gvfree(:, gcpos(keys(i))) = &
+                  gv(12*(c - 1) + 10:12*c, i)
+            end do
+            if (size(gcnodes) > 0) call constraint_work(gcnodes, g%mass, gvfree, gvold, &
+                                                        g%v, buf_dt(2, c), wcon)
+            if (allocated(g%walls)) call apply_rigidwalls(g, buf_dt(1, c), buf_dt(2, c), &
+                                                          gvold, g%v, wrw)
+         end do
+      end associate
+      nbuf = 0
+      t_gath = t_gath + (par_wtime() - t0)
+   end subroutine flush_work
+
+   !> Energies and momentum of the step (when needed): nodal velocities and element
+   !> energies gathered, then the serial sums on the global model.
+   !> dfac = (dt(n+1/2) - dt(n-1/2))/4 weighs the element work still to be booked (epend,
+   !> dx_energy_sums), gathered per element as alive*(ework(:,4) - ework(:,2)).
+   subroutine par_engine_energies(model, vold, wsum, erw, dfac, needed)
+      type(model_t), intent(inout) :: model
+      real(wp), intent(in) :: vold(:, :), wsum, erw, dfac
+      logical, intent(in) :: needed
+      real(wp), allocatable :: vals(:, :), gv(:, :)
+      real(wp) :: ke, eint, ehg, t0, epend
+      integer :: i, e
+      if (.not. needed) return
+      t0 = par_wtime()
+      allocate(vals(6, size(own)), gv(6, size(plan_own%keys)))
+      do i = 1, size(own)
+         vals(1:3, i) = model%v(:, own(i))
+         vals(4:6, i) = vold(:, own(i))
+      end do
+      call par_gather_values(plan_own, vals, gv)
+      g%v(:, plan_own%keys) = gv(1:3, :)
+      gvold(:, plan_own%keys) = gv(4:6, :)
+      deallocate(vals, gv)
+      allocate(vals(3, size(elem_loc, 2)), gv(3, size(plan_elem%keys)))
+      do i = 1, size(elem_loc, 2)
+         associate (pb => model%blocks(elem_loc(1, i)), j => elem_loc(2, i))
+            vals(1, i) = pb%eint(j)
+            vals(2, i) = pb%ehg(j)
+            vals(3, i) = 0.0_wp
+            if (allocated(pb%ework)) vals(3, i) = merge(0.0_wp, 1.0_wp, pb%failed(j))* &
+                                                  (pb%ework(j, 4) - pb%ework(j, 2))
+         end associate
+      end do
+      call par_gather_values(plan_elem, vals, gv)
+      do i = 1, size(plan_elem%keys)
+         e = plan_elem%keys(i)
+         associate (gb => g%blocks(g%elem_block(e)), p => g%elem_pos(e))
+            gb%eint(p) = gv(1, i)
+            gb%ehg(p) = gv(2, i)
+            ! the global copy only reports: its ework carries the pending term in column 4
+            if (allocated(gb%ework)) then
+               gb%ework(p, 4) = gv(3, i); gb%ework(p, 2) = 0.0_wp
+            end if
+         end associate
+      end do
+      ke = kinetic_energy(g%nn, g%mass, gvold, g%v)
+      call element_energies(g%blocks, eint, ehg, epend)
+      eint = eint + dfac*epend
+      g%energy%initial = model%energy%initial
+      call set_energy(g, ke, eint, ehg, wsum, erw)
+      model%energy = g%energy
+      t_gath = t_gath + (par_wtime() - t0)
+   end subroutine par_engine_energies
+
+   !> The global model for output at this step (nodal x, v, f and, for a plot state, the
+   !> element state gathered); writer is true on rank 0, which writes it.
+   subroutine par_engine_output(model, plot, om, writer)
+      type(model_t), intent(in) :: model
+      logical, intent(in) :: plot
+      type(model_t), pointer, intent(out) :: om
+      logical, intent(out) :: writer
+      real(wp), allocatable :: vals(:, :), gv(:, :)
+      integer :: i, b, j, nc, e, ip, nip, nhv
+      real(wp) :: t0
+      t0 = par_wtime()
+      g%time = model%time
+      g%cycle = model%cycle
+      g%dt = model%dt
+      g%dt_elem = model%dt_elem
+      g%energy = model%energy
+      g%run = model%run
+      allocate(vals(9, size(own)), gv(9, size(plan_own%keys)))
+      do i = 1, size(own)
+         vals(1:3, i) = model%x(:, own(i))
+         vals(4:6, i) = model%v(:, own(i))
+         vals(7:9, i) = model%f(:, own(i))
+      end do
+      call par_gather_values(plan_own, vals, gv)
+      g%x(:, plan_own%keys) = gv(1:3, :)
+      g%v(:, plan_own%keys) = gv(4:6, :)
+      g%f(:, plan_own%keys) = gv(7:9, :)
+      if (plot) then
+         nc = 0
+         do b = 1, size(g%blocks)
+            nc = max(nc, 6*g%blocks(b)%nip + g%blocks(b)%nhv*g%blocks(b)%nip + 4)
+         end do
+         deallocate(vals, gv)
+         allocate(vals(nc, size(elem_loc, 2)), gv(nc, size(plan_elem%keys)))
+         vals = 0.0_wp
+         do i = 1, size(elem_loc, 2)
+            associate (pb => model%blocks(elem_loc(1, i)))
+               j = elem_loc(2, i)
+               nip = pb%nip; nhv = pb%nhv
+               vals(1:4, i) = [pb%relvol(j), pb%eint(j), pb%ehg(j), &
+                               merge(1.0_wp, 0.0_wp, pb%failed(j))]
+               do ip = 1, nip
+                  vals(4 + 6*(ip - 1) + 1:4 + 6*ip, i) = pb%sig(j, :, ip)
+                  if (nhv > 0) vals(4 + 6*nip + nhv*(ip - 1) + 1:4 + 6*nip + nhv*ip, i) = &
+                     pb%hv(j, :, ip)
+               end do
+            end associate
+         end do
+         call par_gather_values(plan_elem, vals, gv)
+         do i = 1, size(plan_elem%keys)
+            e = plan_elem%keys(i)
+            associate (gb => g%blocks(g%elem_block(e)), p => g%elem_pos(e))
+               nip = gb%nip; nhv = gb%nhv
+               gb%relvol(p) = gv(1, i)
+               gb%eint(p) = gv(2, i)
+               gb%ehg(p) = gv(3, i)
+               gb%failed(p) = gv(4, i) > 0.5_wp
+               do ip = 1, nip
+                  gb%sig(p, :, ip) = gv(4 + 6*(ip - 1) + 1:4 + 6*ip, i)
+                  if (nhv > 0) gb%hv(p, :, ip) = &
+                     gv(4 + 6*nip + nhv*(ip - 1) + 1:4 + 6*nip + nhv*ip, i)
+               end do
+            end associate
+         end do
+      end if
+      om => g
+      writer = par_rank() == 0
+      t_gath = t_gath + (par_wtime() - t0)
+   end subroutine par_engine_output
+
+   !> End of an MPI run: the time spent in communication (largest over the ranks).
+   subroutine par_engine_report()
+      real(wp) :: t(3), tavg(3)
+      if (.not. on) return
+      t = [t_exch, t_dt, t_gath]
+      tavg = t
+      call par_allreduce(t, PAR_MAX)
+      call par_allreduce(tavg, PAR_SUM)
+      tavg = tavg/real(par_size(), wp)
+      call log_info('dynx: MPI on '//str(par_size())//' ranks: force exchange '// &
+         rstr(t(1), 4)//' s (mean '//rstr(tavg(1), 4)//'), dt reduction '//rstr(t(2), 4)// &
+         ' s (mean '//rstr(tavg(2), 4)//'), ordered gathers '//rstr(t(3), 4)//' s (mean '// &
+         rstr(tavg(3), 4)//'), largest over the ranks')
+   end subroutine par_engine_report
+
+   !> The global model (serial numbering) of an MPI run: what rank 0 opens the output with.
+   function par_engine_global() result(p)
+      type(model_t), pointer :: p
+      p => g
+   end function par_engine_global
+
+   !> A failure found on this rank alone (an element, a NaN): stop every rank, naming it.
+   subroutine par_engine_fail(error)
+      type(error_t), intent(in) :: error
+      call par_abort(error%message, error%code)
+   end subroutine par_engine_fail
+end module dx_par_engine
