@@ -57,7 +57,7 @@ for d in tests/regression/*/; do
     case $c in
         bad_*) continue ;;   # decks with input errors
         extreme_crushed_element|extreme_distorted_element) nps="2"; chk=0 ;;
-        patch_*) nps="2 3 4"; chk=0 ;;
+        patch_*|mpi_patch_*) nps="2 3 4"; chk=0 ;;
         *) nps="2 3 4"; chk=1 ;;
     esac
     # a deck of ne elements is split into at most ne ranks (dynx-part refuses more, tested below)
