@@ -10,6 +10,7 @@
 !> Errors name the deck file, line, keyword and field (exit code 2).
 module dx_contact_build
    use dx_kinds, only: wp
+   use dx_sort, only: sort4
    use dx_vec3, only: cross
    use dx_error, only: error_t, set_error
    use dx_strings, only: str
@@ -342,22 +343,6 @@ contains
          if (all(nd(1:k-1) /= nd(k))) n = n + 1
       end do
    end function count_unique
-
-   pure function sort4(nd) result(s)
-      integer, intent(in) :: nd(4)
-      integer :: s(4), i, j, t
-      s = nd
-      do i = 2, 4
-         t = s(i)
-         j = i - 1
-         do while (j >= 1)
-            if (s(j) <= t) exit
-            s(j + 1) = s(j)
-            j = j - 1
-         end do
-         s(j + 1) = t
-      end do
-   end function sort4
 
    !> Sort idx so that key(:, idx) is in lexicographic order (bottom-up merge sort).
    subroutine merge_sort(key, idx)

@@ -6,6 +6,7 @@
 !> deviation |r_i - R|/R is the fit error, checked against TOL).
 module dx_emc_build
    use dx_kinds, only: wp
+   use dx_sort, only: sort4
    use dx_error, only: error_t, set_error
    use dx_strings, only: str, rstr
    use dx_log, only: log_info
@@ -294,22 +295,8 @@ contains
       call move_alloc(sn, es%snodes)
    end subroutine build_surfaces
 
-   pure function sort4(a) result(s)
-      integer, intent(in) :: a(4)
-      integer :: s(4), i, j, t
-      s = a
-      do i = 2, 4
-         t = s(i)
-         j = i - 1
-         do while (j >= 1)
-            if (s(j) <= t) exit
-            s(j + 1) = s(j)
-            j = j - 1
-         end do
-         s(j + 1) = t
-      end do
-   end function sort4
-
+   !> Cross product, kept local: inlined here it keeps the rounding that the conservation
+   !> checks of the conserving solver were measured with (dx_vec3's is called out of line).
    pure function cross(a, b) result(c)
       real(wp), intent(in) :: a(3), b(3)
       real(wp) :: c(3)
