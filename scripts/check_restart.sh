@@ -35,13 +35,13 @@ rnd() {  # rnd LO HI K -> integer in [LO, HI], the K-th draw from the seed
 
 same() {  # same DIR LABEL
     ok=1
-    for f in glstat nodout d3plot.xdmf; do
+    for f in glstat nodout rbdout rcforc d3plot.xdmf; do
         if [ -f "$ref/$f" ] || [ -f "$1/$f" ]; then
             if ! cmp -s "$ref/$f" "$1/$f"; then echo "  $2: $f differs"; ok=0; fi
         fi
     done
     if ! h5diff -q "$ref/d3plot.h5" "$1/d3plot.h5"; then echo "  $2: d3plot.h5 differs (h5diff)"; ok=0; fi
-    if [ $ok = 1 ]; then echo "  $2: identical (glstat, nodout, xdmf byte-equal; h5diff 0 differences)"; else fail=1; fi
+    if [ $ok = 1 ]; then echo "  $2: identical (glstat, nodout, rbdout, rcforc, xdmf byte-equal; h5diff 0 differences)"; else fail=1; fi
 }
 
 last_dump() { ls "$1"/d3dump*.h5 2>/dev/null | sort | tail -1; }
