@@ -17,6 +17,8 @@
 #            (the states and lines written after the dump are dropped and rewritten) must
 #            give the same files again
 # Random choices come from DYNX_RESTART_SEED when set (printed either way).
+# DYNX_RESTART_WINDOW="LO HI" draws the stop/dump cycles from LO..HI only (e.g. the cycles in
+# which a contact is closed or a rigid body is driven), clamped to 1..(cycles - 1).
 set -u
 DYNX=${DYNX:-bin/dynx}
 deck=$1; ref=$2; work=$3; shift 3
@@ -28,6 +30,15 @@ fail=0
 ncyc=$(awk '!/^#/ {c=$2} END {print c+0}' "$ref/glstat")
 if [ "$ncyc" -lt 3 ]; then echo "check_restart: reference has $ncyc cycles"; exit 1; fi
 
+lo=1; hi=$((ncyc - 1))
+if [ -n "${DYNX_RESTART_WINDOW:-}" ]; then
+    set -- $DYNX_RESTART_WINDOW
+    [ "$1" -gt "$lo" ] && lo=$1
+    [ "$2" -lt "$hi" ] && hi=$2
+    if [ "$lo" -gt "$hi" ]; then echo "check_restart: window $DYNX_RESTART_WINDOW outside 1..$((ncyc - 1))"; exit 1; fi
+    echo "check_restart: cycles drawn from $lo..$hi"
+fi
+
 rnd() {  # rnd LO HI K -> integer in [LO, HI], the K-th draw from the seed
     awk -v s="$seed" -v k="$3" -v lo="$1" -v hi="$2" \
         'BEGIN { srand(s + 7919 * k); print int(lo + rand() * (hi - lo + 1)) }'
@@ -35,13 +46,13 @@ rnd() {  # rnd LO HI K -> integer in [LO, HI], the K-th draw from the seed
 
 same() {  # same DIR LABEL
     ok=1
-    for f in glstat nodout d3plot.xdmf; do
+    for f in glstat nodout rbdout rcforc d3plot.xdmf; do
         if [ -f "$ref/$f" ] || [ -f "$1/$f" ]; then
             if ! cmp -s "$ref/$f" "$1/$f"; then echo "  $2: $f differs"; ok=0; fi
         fi
     done
     if ! h5diff -q "$ref/d3plot.h5" "$1/d3plot.h5"; then echo "  $2: d3plot.h5 differs (h5diff)"; ok=0; fi
-    if [ $ok = 1 ]; then echo "  $2: identical (glstat, nodout, xdmf byte-equal; h5diff 0 differences)"; else fail=1; fi
+    if [ $ok = 1 ]; then echo "  $2: identical (glstat, nodout, rbdout, rcforc, xdmf byte-equal; h5diff 0 differences)"; else fail=1; fi
 }
 
 last_dump() { ls "$1"/d3dump*.h5 2>/dev/null | sort | tail -1; }
@@ -51,7 +62,7 @@ for m in $modes; do
     rm -rf "$d"; mkdir -p "$d"
     case $m in
     cycle)
-        n=$(rnd 1 $((ncyc - 1)) 1)
+        n=$(rnd $lo $hi 1)
         "$DYNX" -i "$deck" -o "$d" --raise-at-cycle "$n:TERM" > "$d/run1.log" 2>&1
         rc=$?
         if [ $rc -ne 5 ]; then echo "  cycle: exit $rc (expected 5) at --stop-at-cycle $n"; fail=1; continue; fi
@@ -80,7 +91,7 @@ for m in $modes; do
         n=$(sed -n 's/.*stopped by the wall-clock limit.* at cycle \([0-9]*\),.*/\1/p' "$d/run1.log")
         ;;
     usr1)
-        n=$(rnd 1 $((ncyc - 1)) 3)
+        n=$(rnd $lo $hi 3)
         "$DYNX" -i "$deck" -o "$d" --raise-at-cycle "$n:USR1" > "$d/run1.log" 2>&1
         rc=$?
         if [ $rc -ne 0 ]; then echo "  usr1: exit $rc (expected 0)"; fail=1; continue; fi

@@ -22,6 +22,7 @@ module dx_contact
    use dx_contact_search, only: bucket_sort
    use dx_contact_penalty, only: pass_forces
    use dx_rigid_contact, only: rigid_contact_w2, rigid_effective_mass
+   use dx_append_file, only: append_from
    implicit none
    private
    public :: contact_forces, contact_work
@@ -192,6 +193,12 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: ios, i
       character(256) :: msg
+      if (.not. cs%rcforc_open .and. cs%rcforc_resume > 0) then
+         ! continued run (dx_contact_restart): cut back to the dump point and append
+         call append_from(outdir//'/rcforc', cs%rcforc_resume, cs%rcforc_unit, error)
+         if (allocated(error)) return
+         cs%rcforc_open = .true.
+      end if
       if (.not. cs%rcforc_open) then
          open(newunit=cs%rcforc_unit, file=outdir//'/rcforc', status='replace', &
               action='write', form='formatted', iostat=ios, iomsg=msg)

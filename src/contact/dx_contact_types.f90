@@ -78,6 +78,7 @@ module dx_contact_types
       real(wp) :: next_rcforc = 0.0_wp
       integer :: rcforc_unit = 0
       logical :: rcforc_open = .false.
+      integer(8) :: rcforc_resume = 0          !< restart: bytes of rcforc to keep (0: anew)
       real(wp) :: t_search = 0.0_wp            !< wall time in bucket sorts [s]
       real(wp) :: t_force = 0.0_wp             !< wall time in local search + forces [s]
       real(wp) :: dt_limit = huge(1.0_wp)      !< contact bound on the critical step, last cycle

@@ -145,7 +145,7 @@ contains
                call get_real(deck, blk, i0 + 2, k, w, trim(c3(k)), 0.0_wp, r, error)
                if (allocated(error)) return
                if (r /= 0.0_wp) then
-                  call field_error(deck, blk, i0 + 2, k, w, merge('LCO', trim(c3(k)), k == 1), &
+                  call field_error(deck, blk, i0 + 2, k, w, trim(merge('LCO', c3(k), k == 1)), &
                      'local output systems (LCO, A1..V3) are not supported', error)
                   return
                end if

@@ -4,7 +4,8 @@
 !> next, taken at the top of a cycle, so a continued run repeats the uninterrupted run
 !> bit for bit: x, v, time, cycle, the loop state model%run (dt(n-1/2), the work sums, the
 !> next output times, the output-file sizes), the energies, every element block's state
-!> (sig, hv, relvol, eint, ehg, hgs, ework, failed) and the rigid-wall forces. What the deck
+!> (sig, hv, relvol, eint, ehg, hgs, ework, failed), the rigid-wall forces, the rigid bodies
+!> (dx_rigid_restart) and the contact interfaces (dx_contact_restart). What the deck
 !> defines (mesh, mass, materials, curves, loads) is rebuilt from the deck, as LS-DYNA's
 !> full-deck restart does (Keyword User's Manual Vol. I, "Restart Input Data").
 !> File layout and checksums: dx_restart_file. The list of datasets: docs/output-format.md.
@@ -19,6 +20,8 @@ module dx_restart
    use dx_strings, only: str
    use dx_model, only: model_t
    use dx_restart_file, only: rs_file_t, rs_create, rs_commit, rs_open, rs_close
+   use dx_rigid_restart, only: rigid_dump, rigid_restore
+   use dx_contact_restart, only: contact_dump, contact_restore
    implicit none
    private
    public :: restart_write, restart_read
@@ -82,8 +85,8 @@ contains
       call dump_nodes(rs, model)
       call dump_blocks(rs, model)
       if (allocated(model%walls)) call dump_walls(rs, model)
-      ! if (allocated(model%rigid)) call rigid_dump(rs, model%rigid)      <- rigid bodies
-      ! if (allocated(model%contact)) call contact_dump(rs, model%contact) <- contact
+      if (allocated(model%rigid)) call rigid_dump(rs, model%rigid)
+      if (allocated(model%contact)) call contact_dump(rs, model%contact)
    end subroutine dump_components
 
    subroutine restore_components(rs, model)
@@ -93,8 +96,8 @@ contains
       call restore_nodes(rs, model)
       call restore_blocks(rs, model)
       if (allocated(model%walls)) call restore_walls(rs, model)
-      ! if (allocated(model%rigid)) call rigid_restore(rs, model%rigid)
-      ! if (allocated(model%contact)) call contact_restore(rs, model%contact)
+      if (allocated(model%rigid)) call rigid_restore(rs, model%rigid)
+      if (allocated(model%contact)) call contact_restore(rs, model%contact)
    end subroutine restore_components
 
    ! ------------------------------------------------------------- loop state
@@ -124,14 +127,15 @@ contains
       call rs%put('dt_elem', model%dt_elem)
       associate (en => model%energy)
          call rs%put('energy', [en%kinetic, en%internal, en%hourglass, en%external_work, &
-                                en%rigidwall, en%total, en%initial, en%ratio, en%momentum, en%mass])
+                                en%rigidwall, en%total, en%initial, en%ratio, en%momentum, en%mass, &
+                                en%sliding])
       end associate
    end subroutine dump_run
 
    subroutine restore_run(rs, model)
       type(rs_file_t), intent(inout) :: rs
       type(model_t), intent(inout) :: model
-      real(wp) :: en(12)
+      real(wp) :: en(13)
       associate (r => model%run)
          call rs%get('run_dt_old', r%dt_old)
          call rs%get('run_dt_first', r%dt_first)
@@ -159,7 +163,7 @@ contains
       associate (e => model%energy)
          e%kinetic = en(1); e%internal = en(2); e%hourglass = en(3); e%external_work = en(4)
          e%rigidwall = en(5); e%total = en(6); e%initial = en(7); e%ratio = en(8)
-         e%momentum = en(9:11); e%mass = en(12)
+         e%momentum = en(9:11); e%mass = en(12); e%sliding = en(13)
       end associate
    end subroutine restore_run
 

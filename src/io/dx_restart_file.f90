@@ -21,7 +21,8 @@ module dx_restart_file
    public :: rs_file_t, rs_create, rs_commit, rs_open, rs_close, crc32, RESTART_FORMAT_VERSION
 
    !> Bump when the meaning or the list of datasets changes; readers refuse other versions.
-   integer, parameter :: RESTART_FORMAT_VERSION = 1
+   !> 2: energy record with the sliding energy (13 values), rigid_* and contact_* datasets.
+   integer, parameter :: RESTART_FORMAT_VERSION = 2
 
    type :: rs_file_t
       type(h5_file_t) :: h5

@@ -25,6 +25,7 @@ module dx_rigid_solver
    use dx_rigid_types, only: rigid_system_t, rigid_body_t
    use dx_rigid_mass, only: rotation_about
    use dx_load_body, only: base_acceleration
+   use dx_append_file, only: append_from
    implicit none
    private
    public :: rigid_step, rigid_write_rbdout, rigid_close
@@ -241,6 +242,12 @@ contains
       integer :: b, ios
       real(wp) :: wb(3), ke, ten(3, 3)
       character(256) :: msg
+      if (.not. rs%rbdout_open .and. rs%rbdout_resume > 0) then
+         ! continued run (dx_rigid_restart): cut back to the dump point and append
+         call append_from(dir//'/rbdout', rs%rbdout_resume, rs%rbdout_unit, error)
+         if (allocated(error)) return
+         rs%rbdout_open = .true.
+      end if
       if (.not. rs%rbdout_open) then
          open(newunit=rs%rbdout_unit, file=dir//'/rbdout', status='replace', &
               action='write', iostat=ios, iomsg=msg)

@@ -101,5 +101,6 @@ module dx_rigid_types
       real(wp) :: next_rbdout = 0.0_wp
       integer :: rbdout_unit = 0
       logical :: rbdout_open = .false.
+      integer(8) :: rbdout_resume = 0         !< restart: bytes of rbdout to keep (0: anew)
    end type rigid_system_t
 end module dx_rigid_types

@@ -10,7 +10,8 @@ program test_restart
    use dx_error, only: error_t, EXIT_IO, EXIT_INPUT
    use dx_io_sys, only: sys_mkdir_p
    use dx_h5, only: h5_file_t, h5_create, h5_close, h5_write_attr
-   use dx_restart_file, only: rs_file_t, rs_create, rs_commit, rs_open, rs_close, crc32
+   use dx_restart_file, only: rs_file_t, rs_create, rs_commit, rs_open, rs_close, crc32, &
+                              RESTART_FORMAT_VERSION
    use dx_assert, only: check, assert_summary
    implicit none
    character(*), parameter :: TMP = 'build/test_restart.tmp'
@@ -123,7 +124,7 @@ contains
       ! a file whose writer stopped before the end (no 'complete' attribute)
       path = TMP//'/incomplete.h5'
       call h5_create(h5, path, e)
-      call h5_write_attr(h5, '/', 'format_version', 1, e)
+      call h5_write_attr(h5, '/', 'format_version', RESTART_FORMAT_VERSION, e)
       call h5_close(h5, e)
       call rs_open(rs, path, error)
       call check(allocated(error), 'incomplete file refused')
