@@ -89,6 +89,7 @@ contains
       call check_close(rep%q(k)%time, 2.0_wp, 0.0_wp, 0.0_wp, 'worst difference time')
       call check(rep%q(k)%id == 7 .and. rep%q(k)%id_kind == 'node', 'worst difference node id')
       call check_close(rep%q(k)%worst_diff, 0.001_wp, 1.0e-12_wp, 0.0_wp, 'worst difference')
+      print '(a)', '  (the comparator report of a deliberately failing comparison follows)'
       call rep%print(6)
 
       test = gold
@@ -309,6 +310,7 @@ contains
       call check(rep%passed(), 'glstat equals itself')
       call write_run(TMP//'/b', 2, 1.0_wp + 1.0e-6_wp)
       call compare_files(TMP//'/a/d3plot.h5', TMP//'/b/d3plot.h5', tol, rep)
+      print '(a)', '  (the comparator report of a deliberately failing comparison follows)'
       call rep%print(6)
       call check(.not. rep%passed(), 'changed stress fails at default tolerance')
       k = rep%find('von_mises', 'd3plot.h5', tol)
@@ -330,6 +332,7 @@ contains
 
       call write_run(TMP//'/c', 1, 1.0_wp)
       call compare_files(TMP//'/a/d3plot.h5', TMP//'/c/d3plot.h5', tol, rep)
+      print '(a)', '  (the comparator report of a deliberately failing comparison follows)'
       call rep%print(6)
       call check(.not. rep%passed(), 'missing state fails')
       call compare_files(TMP//'/a/glstat', TMP//'/c/glstat', tol, rep)
