@@ -16,7 +16,7 @@ module dx_read_loads
                              IVEL_GEN
    implicit none
    private
-   public :: register_loads
+   public :: register_loads, read_motion_fields
 
 contains
 
@@ -147,30 +147,8 @@ contains
                'supported (supported: 1 x, 2 y, 3 z translation)', error)
             return
          end if
-         call get_int(deck, blk, ic, 3, w, 'VAD', 0, m%vad, error)
+         call read_motion_fields(deck, blk, ic, w, m%vad, m%lcid, m%sf, m%death, m%birth, error)
          if (allocated(error)) return
-         if (m%vad < 0 .or. m%vad > 2) then
-            call field_error(deck, blk, ic, 3, w, 'VAD', 'VAD '//str(m%vad)//' is not '// &
-               'supported (supported: 0 velocity, 1 acceleration, 2 displacement)', error)
-            return
-         end if
-         call positive_id(deck, blk, ic, 4, w, 'LCID', m%lcid, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, ic, 5, w, 'SF', 1.0_wp, m%sf, error)
-         if (allocated(error)) return
-         if (m%sf == 0.0_wp) m%sf = 1.0_wp
-         call zero_int(deck, blk, ic, 6, w, 'VID', '*DEFINE_VECTOR directions', error)
-         if (allocated(error)) return
-         call get_real(deck, blk, ic, 7, w, 'DEATH', 1.0e28_wp, m%death, error)
-         if (allocated(error)) return
-         if (m%death == 0.0_wp) m%death = 1.0e28_wp
-         call get_real(deck, blk, ic, 8, w, 'BIRTH', 0.0_wp, m%birth, error)
-         if (allocated(error)) return
-         if (m%birth >= m%death) then
-            call field_error(deck, blk, ic, 8, w, 'BIRTH', 'birth time '//rstr(m%birth)// &
-                             ' is not before the death time '//rstr(m%death), error)
-            return
-         end if
          m%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
          inp%motions = [inp%motions, m]
       end do
@@ -505,4 +483,39 @@ contains
       r%src = origin(blk%ifile, blk%cards(i0)%line, blk%name)
       inp%walls = [inp%walls, r]
    end subroutine read_rigidwall_planar
+
+   !> Fields 3-8 of a prescribed-motion card (*BOUNDARY_PRESCRIBED_MOTION_NODE/_SET/_RIGID):
+   !> VAD LCID SF VID DEATH BIRTH, with LS-DYNA's defaults (SF 0 -> 1, DEATH 0 -> 1e28).
+   subroutine read_motion_fields(deck, blk, ic, w, vad, lcid, sf, death, birth, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      integer, intent(in) :: ic, w(8)
+      integer, intent(out) :: vad, lcid
+      real(wp), intent(out) :: sf, death, birth
+      type(error_t), allocatable, intent(out) :: error
+      call get_int(deck, blk, ic, 3, w, 'VAD', 0, vad, error)
+      if (allocated(error)) return
+      if (vad < 0 .or. vad > 2) then
+         call field_error(deck, blk, ic, 3, w, 'VAD', 'VAD '//str(vad)//' is not '// &
+            'supported (supported: 0 velocity, 1 acceleration, 2 displacement)', error)
+         return
+      end if
+      call positive_id(deck, blk, ic, 4, w, 'LCID', lcid, error)
+      if (allocated(error)) return
+      call get_real(deck, blk, ic, 5, w, 'SF', 1.0_wp, sf, error)
+      if (allocated(error)) return
+      if (sf == 0.0_wp) sf = 1.0_wp
+      call zero_int(deck, blk, ic, 6, w, 'VID', '*DEFINE_VECTOR directions', error)
+      if (allocated(error)) return
+      call get_real(deck, blk, ic, 7, w, 'DEATH', 1.0e28_wp, death, error)
+      if (allocated(error)) return
+      if (death == 0.0_wp) death = 1.0e28_wp
+      call get_real(deck, blk, ic, 8, w, 'BIRTH', 0.0_wp, birth, error)
+      if (allocated(error)) return
+      if (birth >= death) then
+         call field_error(deck, blk, ic, 8, w, 'BIRTH', 'birth time '//rstr(birth)// &
+                          ' is not before the death time '//rstr(death), error)
+         return
+      end if
+   end subroutine read_motion_fields
 end module dx_read_loads

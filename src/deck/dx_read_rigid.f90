@@ -19,6 +19,7 @@ module dx_read_rigid
    use dx_model_input, only: model_input_t, origin
    use dx_rigid_types, only: inertia_in_t, nrb_in_t, extra_in_t, rmotion_in_t, rigid_origin_t
    use dx_load_body, only: body_load_in_t
+   use dx_read_loads, only: read_motion_fields
    implicit none
    private
    public :: register_rigid
@@ -349,30 +350,8 @@ contains
                'about x, y, z)', error)
             return
          end if
-         call get_int(deck, blk, ic, 3, w, 'VAD', 0, m%vad, error)
+         call read_motion_fields(deck, blk, ic, w, m%vad, m%lcid, m%sf, m%death, m%birth, error)
          if (allocated(error)) return
-         if (m%vad < 0 .or. m%vad > 2) then
-            call field_error(deck, blk, ic, 3, w, 'VAD', 'VAD '//str(m%vad)//' is not '// &
-               'supported (supported: 0 velocity, 1 acceleration, 2 displacement)', error)
-            return
-         end if
-         call positive_id(deck, blk, ic, 4, w, 'LCID', m%lcid, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, ic, 5, w, 'SF', 1.0_wp, m%sf, error)
-         if (allocated(error)) return
-         if (m%sf == 0.0_wp) m%sf = 1.0_wp
-         call zero_int(deck, blk, ic, 6, w, 'VID', '*DEFINE_VECTOR directions', error)
-         if (allocated(error)) return
-         call get_real(deck, blk, ic, 7, w, 'DEATH', 1.0e28_wp, m%death, error)
-         if (allocated(error)) return
-         if (m%death == 0.0_wp) m%death = 1.0e28_wp
-         call get_real(deck, blk, ic, 8, w, 'BIRTH', 0.0_wp, m%birth, error)
-         if (allocated(error)) return
-         if (m%birth >= m%death) then
-            call field_error(deck, blk, ic, 8, w, 'BIRTH', 'birth time '//rstr(m%birth)// &
-                             ' is not before the death time '//rstr(m%death), error)
-            return
-         end if
          m%src = rorigin(blk, ic)
          inp%rigid%motions = [inp%rigid%motions, m]
       end do
