@@ -34,12 +34,15 @@ module dx_par_engine
    use dx_energy_sums, only: initial_kinetic, kinetic_energy, element_energies, &
                              constraint_work, set_energy, constrained_nodes
    use dx_constraints, only: apply_rigidwalls
+   use dx_par_loads, only: par_loads_setup
+   use dx_hex8, only: hex8_mass_share
+   use dx_par_rigid, only: par_rigid_setup
    implicit none
    private
    public :: par_engine_setup, par_engine_on, par_engine_mass, par_engine_initial, &
              par_engine_fill, par_engine_dt, par_engine_exchange, par_engine_constraints, &
              par_engine_energies, par_engine_output, par_engine_fail, &
-             par_engine_global, par_engine_report
+             par_engine_global, par_engine_report, par_engine_mass_share
 
    logical, save :: on = .false.
    type(model_t), target, save :: g                  !< the global model (serial numbering)
@@ -160,6 +163,8 @@ contains
       end if
       owned = rp%node_owner == me
       own = pack([(i, i = 1, pm%nloc)], owned)
+      call par_loads_setup(model, g, rp, pm, loc, owned)   ! external loads (dx_par_loads)
+      call par_rigid_setup(g, pm, owned)                   ! rigid bodies (dx_par_rigid)
       allocate(key_elem(size(g%blocks)*nv_chunk))
       key_elem = 0
       do k = 1, size(g%blocks)
@@ -250,10 +255,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       character(:), allocatable :: what
       what = ''
-      if (allocated(model%rigid)) then
-         what = '*MAT_RIGID / *CONSTRAINED_NODAL_RIGID_BODY (rigid bodies)'
-      else if (nonempty_loads()) then
-         what = '*LOAD_NODE / *LOAD_SEGMENT / *LOAD_BODY (external loads)'
+      if (allocated(model%rigid) .and. allocated(model%contact)) then
+         what = '*MAT_RIGID / *CONSTRAINED_NODAL_RIGID_BODY (rigid bodies) with *CONTACT_...'
       else if (allocated(model%contact)) then
          what = '*CONTACT_... (contact)'
       else if (allocated(model%emc)) then
@@ -264,15 +267,6 @@ contains
       if (len(what) > 0) call set_error(error, model%deck_file//': '//what// &
          ' is not supported in an MPI run yet; run this deck serially (without mpirun)', &
          EXIT_INPUT)
-   contains
-      logical function nonempty_loads()
-         nonempty_loads = .false.
-         if (allocated(model%node_loads)) nonempty_loads = size(model%node_loads) > 0
-         if (allocated(model%seg_loads)) nonempty_loads = nonempty_loads .or. &
-                                                          size(model%seg_loads) > 0
-         if (allocated(model%body_loads)) nonempty_loads = nonempty_loads .or. &
-                                                           size(model%body_loads) > 0
-      end function nonempty_loads
    end subroutine unsupported
 
    !> After init_state's element-major mass scatter: the mass exchange (serial order), slot
@@ -287,8 +281,32 @@ contains
                               keys, vals)
       g%mass(keys) = vals(1, :)
       model%energy%mass = sum(g%mass)
+      if (allocated(g%rigid)) model%energy%mass = model%energy%mass + g%rigid%mass_corr
       g%energy%mass = model%energy%mass
    end subroutine par_engine_mass
+
+   !> hex8_mass_share (the element dt bound of one-element-wide blocks) on the rank's
+   !> blocks: their slot corners carry no mass (the mass is at the shared node), so each
+   !> slot is given its node's mass and constraint flag, as the serial element sees them.
+   subroutine par_engine_mass_share(model, cnodes)
+      type(model_t), intent(inout) :: model
+      integer, intent(in) :: cnodes(:)
+      real(wp), allocatable :: mext(:)
+      logical, allocatable :: con(:)
+      integer, allocatable :: cext(:)
+      integer :: b, i
+      mext = model%mass
+      mext(pm%nloc + 1:pm%nloc + pm%nslot) = model%mass(pm%slot_node)
+      allocate(con(model%nn))
+      con = .false.
+      con(cnodes) = .true.
+      con(pm%nloc + 1:pm%nloc + pm%nslot) = con(pm%slot_node)
+      cext = pack([(i, i = 1, model%nn)], con)
+      do b = 1, size(model%blocks)
+         call hex8_mass_share(model%blocks(b), &
+            model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%ro, mext, cext)
+      end do
+   end subroutine par_engine_mass_share
 
    !> The initial kinetic energy of the global model.
    subroutine par_engine_initial(model)
@@ -320,6 +338,8 @@ contains
       t0 = par_wtime()
       call par_minloc(dtcrit, key)
       t_dt = t_dt + (par_wtime() - t0)
+      ! no deformable element anywhere: the rigid elements' step (as the serial ibmin == 0)
+      if (dtcrit >= huge_wp .and. allocated(g%rigid)) dtcrit = g%rigid%dtcrit
       if (key > 0 .and. key <= size(key_elem)) dt_elem = key_elem(key)
    end subroutine par_engine_dt
 
@@ -441,6 +461,7 @@ contains
          end associate
       end do
       ke = kinetic_energy(g%nn, g%mass, gvold, g%v)
+      if (allocated(g%rigid)) ke = ke + g%rigid%ke_corr   ! body KE (dx_par_rigid)
       call element_energies(g%blocks, eint, ehg, epend)
       eint = eint + dfac*epend
       g%energy%initial = model%energy%initial

@@ -29,7 +29,9 @@ module dx_explicit
    use dx_par_engine, only: par_engine_on, par_engine_fill, par_engine_dt, &
                             par_engine_exchange, par_engine_constraints, &
                             par_engine_energies, par_engine_initial, par_engine_output, &
-                            par_engine_fail, par_engine_mass
+                            par_engine_fail, par_engine_mass, par_engine_mass_share
+   use dx_par_loads, only: par_loads_any, par_loads_shared, par_loads_work
+   use dx_par_rigid, only: par_rigid_step
    implicit none
    private
    public :: run_options_t, init_state, run_explicit
@@ -97,13 +99,16 @@ contains
       ck = opts%ck
       allocate(vold(3, model%nn))
       loads = has_external_loads(model)
+      if (par) loads = par_loads_any()    ! the deck's loads, whatever this rank holds
       if (loads) allocate(fext(3, model%nn))
       call constrained_nodes(model, cnodes)
       allocate(vfree(3, size(cnodes)))
       do b = 1, size(model%blocks)   ! one-element-wide blocks get the element dt bound
+         if (par) exit                 ! MPI: slot corners need their node's mass (below)
          call hex8_mass_share(model%blocks(b), &
             model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%ro, model%mass, cnodes)
       end do
+      if (par) call par_engine_mass_share(model, cnodes)
       tend = model%ctrl%endtim
       if (tend <= 0.0_wp) tend = huge_wp
       if (.not. model%run%started) then
@@ -149,7 +154,8 @@ contains
             end associate
          end do
          if (ibmin > 0) model%dt_elem = model%blocks(ibmin)%elem(iemin)
-         if (allocated(model%rigid) .and. ibmin == 0) dtcrit = model%rigid%dtcrit
+         if (allocated(model%rigid) .and. ibmin == 0 .and. .not. par) &
+            dtcrit = model%rigid%dtcrit           ! MPI runs: in par_engine_dt
          ! ---- contact forces (only when the deck has *CONTACT; serial runs)
          if (allocated(model%contact)) call contact_forces(model, dt_old, dtcrit)
          if (par) call par_engine_dt(dtcrit, model%dt_elem)   ! global min, serial tie rule
@@ -157,6 +163,7 @@ contains
          if (loads) then
             fext = 0.0_wp
             call add_external_loads(model, t, fext)
+            if (par) call par_loads_shared(model, t, fext)   ! shared nodes: serial chain
          end if
          ! ---- shared-node exchange (MPI runs): serial-order sums at shared nodes
          if (par) call par_engine_exchange(model%f)
@@ -183,7 +190,13 @@ contains
             if (model%mass(i) > 0.0_wp) model%v(:, i) = model%v(:, i) + dtavg*model%f(:, i)/model%mass(i)
          end do
          ! rigid bodies take their nodes' summed forces and overwrite their velocities
-         if (allocated(model%rigid)) call rigid_step(model%rigid, model, t, dt, dtavg, vold)
+         if (allocated(model%rigid)) then
+            if (par) then     ! MPI: bodies spanning ranks, on the gathered global model
+               call par_rigid_step(model, t, dt, dtavg, vold)
+            else
+               call rigid_step(model%rigid, model, t, dt, dtavg, vold)
+            end if
+         end if
          ! ---- constraints (work of the reaction forces enters the external work)
          do i = 1, size(cnodes)
             vfree(:, i) = model%v(:, cnodes(i))
@@ -200,7 +213,9 @@ contains
             if (allocated(model%walls)) call apply_rigidwalls(model, dt, dtavg, vold, &
                                                               model%v, wrw)
          end if
-         if (loads) then
+         if (loads .and. par) then   ! MPI: terms kept, summed in serial order when needed
+            call par_loads_work(fext, vold, model%v, dtavg, wext, need)
+         else if (loads) then
             do i = 1, model%nn
                wext = wext + dot_product(fext(:, i), 0.5_wp*dtavg*(vold(:, i) + model%v(:, i)))
             end do
@@ -272,9 +287,11 @@ contains
          if (allocated(model%rigid)) then
             if (model%rigid%rbdout_dt > 0.0_wp .and. &
                 (t >= model%rigid%next_rbdout .or. done)) then
-               call rigid_write_rbdout(model%rigid, opts%outdir, t, ioerr)
+               if (writer) call rigid_write_rbdout(model%rigid, opts%outdir, t, ioerr)
                if (allocated(ioerr)) then
-                  call move_alloc(ioerr, error); call finish(model, out, ck, error); return
+                  call move_alloc(ioerr, error)
+                  if (par) call par_engine_fail(error)   ! rank 0 alone: stop every rank
+                  call finish(model, out, ck, error); return
                end if
                model%rigid%next_rbdout = next_output_time(model%rigid%next_rbdout, &
                                                           model%rigid%rbdout_dt, t)

@@ -1,0 +1,78 @@
+!> Rigid bodies in an MPI run (ParaDyn step 5; docs/design.md, "Rigid bodies and loads under
+!> MPI"). A body's nodes may lie on several ranks. Every rank has built the serial model, so
+!> the bodies' mass properties (mass, centre, principal moments and axes, body coordinates:
+!> dx_rigid_build, from the whole deck) and their initial state are the same bits on every
+!> rank, and model%rigid keeps the serial (global) node numbers.
+!> Per cycle, after the nodal velocity update: the owned rigid nodes' x(n), f(n) (after the
+!> shared-node exchange and the external loads: the serial f) and v(n-1/2) are gathered into
+!> the engine's global model (one MPI_Allgatherv), then every rank runs the serial
+!> rigid_step (dx_rigid_solver: resultant force and moment summed over the body's nodes in
+!> ascending global order, the DLM rotation integrator of Dullweber, Leimkuhler & McLachlan
+!> 1997, J Chem Phys 107:5840) on the global model: same inputs, same order, same code, so
+!> the same bits on every rank and as in the serial run. Each rank then copies the secant
+!> velocities of the rigid nodes it holds (owned and shared) into its sub-model; the next
+!> x = x + dt v lands them where the serial run puts them. The body kinetic-energy and
+!> momentum corrections and the constraint work are global numbers (the same on every rank).
+!> rbdout is written by rank 0 (dx_explicit).
+module dx_par_rigid
+   use dx_kinds, only: wp
+   use dx_model, only: model_t
+   use dx_par, only: gather_plan_t, par_gather_setup, par_gather_values
+   use dx_par_model, only: par_model_t
+   use dx_rigid_solver, only: rigid_step
+   implicit none
+   private
+   public :: par_rigid_setup, par_rigid_step
+
+   type(model_t), pointer, save :: gp => null()   !< the engine's global model
+   integer, allocatable, save :: r_own(:)          !< owned local rigid nodes (gathered)
+   integer, allocatable, save :: r_loc(:), r_glob(:)   !< all local rigid nodes, global index
+   type(gather_plan_t), save :: plan_r
+   real(wp), allocatable, save :: gvold(:, :)       !< (3, global nn) v(n-1/2) of rigid nodes
+
+contains
+
+   !> Called by par_engine_setup after par_model_build (nothing without rigid bodies).
+   subroutine par_rigid_setup(g, pm, owned)
+      type(model_t), intent(inout), target :: g
+      type(par_model_t), intent(in) :: pm
+      logical, intent(in) :: owned(:)
+      logical, allocatable :: rig(:)
+      integer :: i
+      if (.not. allocated(g%rigid)) return
+      gp => g
+      rig = g%rigid%node_body(pm%node_global) > 0
+      r_own = pack([(i, i = 1, pm%nloc)], rig .and. owned)
+      r_loc = pack([(i, i = 1, pm%nloc)], rig)
+      r_glob = pm%node_global(r_loc)
+      call par_gather_setup(plan_r, pm%node_global(r_own))
+      allocate(gvold(3, g%nn))
+      gvold = 0.0_wp
+   end subroutine par_rigid_setup
+
+   !> The rigid-body stage of the cycle (in place of rigid_step in a serial run).
+   subroutine par_rigid_step(model, t, dt, dtavg, vold)
+      type(model_t), intent(inout) :: model
+      real(wp), intent(in) :: t, dt, dtavg, vold(:, :)
+      real(wp), allocatable :: vals(:, :), gv(:, :)
+      integer :: i, n
+      allocate(vals(9, size(r_own)), gv(9, size(plan_r%keys)))
+      do i = 1, size(r_own)
+         n = r_own(i)
+         vals(1:3, i) = model%x(:, n)
+         vals(4:6, i) = model%f(:, n)
+         vals(7:9, i) = vold(:, n)
+      end do
+      call par_gather_values(plan_r, vals, gv)
+      associate (keys => plan_r%keys)
+         gp%x(:, keys) = gv(1:3, :)
+         gp%f(:, keys) = gv(4:6, :)
+         gvold(:, keys) = gv(7:9, :)
+      end associate
+      call rigid_step(model%rigid, gp, t, dt, dtavg, gvold)
+      model%v(:, r_loc) = gp%v(:, r_glob)
+      ! the global model reports the momentum (set_energy) with the body correction
+      gp%rigid%p_corr = model%rigid%p_corr
+      gp%rigid%ke_corr = model%rigid%ke_corr
+   end subroutine par_rigid_step
+end module dx_par_rigid
