@@ -39,9 +39,14 @@ partition() {
     fi
     if [ "$chk" = 1 ]; then
         # the bound: MAXBAL, or the best a split of W unit-cost elements allows when that is
-        # worse (8 elements on 3 ranks: ceil(8/3)/(8/3) = 1.125)
+        # worse (8 elements on 3 ranks: ceil(8/3)/(8/3) = 1.125); with elements of unequal
+        # weight (decks with rigid parts: 4 and 1), the list-scheduling bound
+        # (W/n + wmax (1 - 1/n))/(W/n) with wmax the heaviest element
         lim=$(awk -v m="$MAXBAL" -v n="$n" '/^ *[0-9]+ +[0-9]+ +[0-9]+ +[0-9]+ +[0-9]+ +[0-9]+ *$/ { w += $3 }
-              END { q = w / n; c = int(q); if (c < q) c++; g = c / q; print (g > m ? g : m) }' \
+              /^heaviest element weight:/ { x = $4 }
+              END { q = w / n; c = int(q); if (c < q) c++; g = c / q
+                    if (x > 1) { h = (q + x * (1 - 1 / n)) / q; if (h > g) g = h }
+                    print (g > m ? g : m) }' \
               "$dir/partition.txt")
         if awk -v b="$bal" -v m="$lim" 'BEGIN { exit !(b != "" && b + 0 <= m + 1e-4) }'; then
             pass "$deck -n $n: balance $bal <= $lim"

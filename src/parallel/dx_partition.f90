@@ -28,11 +28,18 @@ module dx_partition
    public :: partition_t, rank_part_t, element_graph, condense_groups, partition_model, &
              partition_elements, rank_part, elem_costs, serial_order, write_report, face_elements, &
              model_conn, scatter_keys, COST_HEX8_1PT, &
-             COST_HEX8_SRI
+             COST_HEX8_SRI, COST_RIGID, RIGID_SCALE
 
    !> Element cost weights (integer, METIS needs integers): ELFORM 2 measured at about
    !> 8x ELFORM 1 per element-cycle (docs/design.md, "Partition weights").
    integer, parameter :: COST_HEX8_1PT = 1, COST_HEX8_SRI = 8
+   !> Elements of *MAT_RIGID parts have no stress update (the element pass skips them): in a
+   !> deck that has them the deformable weights are scaled by RIGID_SCALE and a rigid
+   !> element weighs COST_RIGID, i.e. 1/4 of ELFORM 1 (measured 0.27-0.34 serially, which
+   !> includes the rigid-body solver that an MPI run repeats on every rank whatever the
+   !> partition; docs/design.md, "Rigid bodies and loads under MPI"). Decks without rigid
+   !> parts keep the weights above (and their partitions).
+   integer, parameter :: RIGID_SCALE = 4, COST_RIGID = 1
 
    !> A partition of the whole model.
    type :: partition_t
@@ -43,6 +50,7 @@ module dx_partition
       integer, allocatable :: ewgt(:)        !< (ne) element cost weight
       integer, allocatable :: node_owner(:)  !< (nn) lowest rank holding the node
       integer, allocatable :: rank_wgt(:)    !< (0:np-1) summed element weight
+      integer :: wscale = 1                  !< RIGID_SCALE when the deck has rigid elements
       integer, allocatable :: rank_ne(:), rank_nn(:), rank_nshared(:)   !< (0:np-1)
       real(wp) :: balance = 1.0_wp           !< max(rank_wgt) / mean(rank_wgt)
       ! node -> ranks holding it (CSR over nodes; ranks ascending)
@@ -74,18 +82,35 @@ contains
    subroutine elem_costs(model, ewgt)
       type(model_t), intent(in) :: model
       integer, allocatable, intent(out) :: ewgt(:)
-      integer :: ib
+      integer :: ib, sc
+      logical :: rig
       allocate(ewgt(model%ne))
+      sc = 1
+      if (has_rigid_elements(model)) sc = RIGID_SCALE
       do ib = 1, size(model%blocks)
          associate (b => model%blocks(ib))
-            if (b%etype == ETYPE_HEX8_SRI) then
-               ewgt(b%elem) = COST_HEX8_SRI
+            rig = model%mats(model%parts(b%ipart)%imat)%m%is_rigid
+            if (rig) then
+               ewgt(b%elem) = COST_RIGID
+            else if (b%etype == ETYPE_HEX8_SRI) then
+               ewgt(b%elem) = sc*COST_HEX8_SRI
             else
-               ewgt(b%elem) = COST_HEX8_1PT
+               ewgt(b%elem) = sc*COST_HEX8_1PT
             end if
          end associate
       end do
    end subroutine elem_costs
+
+   !> True when some element block belongs to a *MAT_RIGID part.
+   logical function has_rigid_elements(model)
+      type(model_t), intent(in) :: model
+      integer :: ib
+      has_rigid_elements = .false.
+      do ib = 1, size(model%blocks)
+         if (model%mats(model%parts(model%blocks(ib)%ipart)%imat)%m%is_rigid) &
+            has_rigid_elements = .true.
+      end do
+   end function has_rigid_elements
 
    !> Position of each element in the serial scatter order (blocks in order, elements in
    !> block order): the order in which the serial run adds element forces into a node.
@@ -527,6 +552,7 @@ contains
       call model_conn(model, conn)
       call elem_costs(model, ewgt)
       call partition_elements(conn, model%nn, ewgt, grp_ptr, grp_elem, np, part, error)
+      if (has_rigid_elements(model)) part%wscale = RIGID_SCALE
    end subroutine partition_model
 
    !> What rank r holds: its elements and nodes, shared-node lists per neighbour, and the
@@ -669,8 +695,14 @@ contains
       write(unit, '(a)') 'dynx-part: partition of '//deck//' (deck content hash '//hash//')'
       write(unit, '(a,i0,a,i0,a,i0,a)') 'ranks ', part%np, ', elements ', part%ne, &
          ', nodes ', part%nn, ' (element graph: elements sharing a node; METIS k-way)'
-      write(unit, '(a,i0,a,i0,a)') 'element cost weights: ELFORM 1 = ', COST_HEX8_1PT, &
-         ', ELFORM 2 = ', COST_HEX8_SRI, ' (measured per element-cycle ratio)'
+      if (part%wscale == 1) then
+         write(unit, '(a,i0,a,i0,a)') 'element cost weights: ELFORM 1 = ', COST_HEX8_1PT, &
+            ', ELFORM 2 = ', COST_HEX8_SRI, ' (measured per element-cycle ratio)'
+      else
+         write(unit, '(a,i0,a,i0,a,i0,a)') 'element cost weights: ELFORM 1 = ', &
+            part%wscale*COST_HEX8_1PT, ', ELFORM 2 = ', part%wscale*COST_HEX8_SRI, &
+            ', rigid = ', COST_RIGID, ' (measured per element-cycle ratio)'
+      end if
       write(unit, '(a)') '  rank   elements     weight      nodes     shared  neighbours'
       do r = 0, part%np - 1
          write(unit, '(i6,4i11,i12)') r, part%rank_ne(r), part%rank_wgt(r), part%rank_nn(r), &
@@ -678,6 +710,10 @@ contains
       end do
       write(unit, '(a,i0)') 'shared nodes (held by more than one rank): ', nshared_total
       write(unit, '(a,i0)') 'edge cut (weighted): ', part%edgecut
+      if (allocated(part%ewgt)) then
+         if (size(part%ewgt) > 0) write(unit, '(a,i0)') 'heaviest element weight: ', &
+                                                        maxval(part%ewgt)
+      end if
       write(unit, '(a,f8.4,a)') 'balance (max weight / mean weight): ', part%balance, &
          '   (1.0 = perfect; 1.0-1.1 reasonable)'
    end subroutine write_report
