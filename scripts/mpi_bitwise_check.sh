@@ -5,7 +5,9 @@
 # runs `mpirun -np NP bin/dynx -i DECK -o SERIAL_OUTDIR/npNP` (--oversubscribe; as root also
 # --allow-run-as-root; rank 0 partitions the deck itself) and compares glstat and nodout
 # (and rbdout when the serial run wrote one) with cmp and d3plot.h5 with h5diff: zero
-# tolerance. Exit 1 on any difference.
+# tolerance. glstat prints 11 digits, so the final energies, work sums and momentum are also
+# compared as IEEE bit patterns (DYNX_ENERGY_BITS=1: one more serial run into
+# SERIAL_OUTDIR/bits). Exit 1 on any difference.
 set -u
 deck=$1
 ref=$2
@@ -15,12 +17,17 @@ MPIRUN=${MPIRUN:-mpirun}
 opts="--oversubscribe --mca mpi_yield_when_idle 1"
 [ "$(id -u)" = 0 ] && opts="$opts --allow-run-as-root"
 fail=0
+bits() { sed -n 's/^dynx: energy bits[^:]*: //p' "$1"; }
+rm -rf "$ref/bits"
+mkdir -p "$ref/bits"
+DYNX_ENERGY_BITS=1 timeout 300 bin/dynx -i "$deck" -o "$ref/bits" >"$ref/bits/stdout" 2>&1
+sbits=$(bits "$ref/bits/stdout")
 for np in $nps; do
     out=$ref/np$np
     rm -rf "$out"
     mkdir -p "$out"
     t0=$(date +%s)
-    timeout 300 $MPIRUN $opts -np "$np" bin/dynx -i "$deck" -o "$out" >"$out/stdout" 2>"$out/stderr"
+    DYNX_ENERGY_BITS=1 timeout 300 $MPIRUN $opts -x DYNX_ENERGY_BITS -np "$np" bin/dynx -i "$deck" -o "$out" >"$out/stdout" 2>"$out/stderr"
     rc=$?
     t1=$(date +%s)
     if [ $rc -ne 0 ]; then
@@ -31,6 +38,12 @@ for np in $nps; do
         [ -f "$ref/$f" ] || continue
         if cmp -s "$ref/$f" "$out/$f"; then res="$res $f=identical"; else res="$res $f=DIFFERS"; fail=1; fi
     done
+    if [ -n "$sbits" ] && [ "$sbits" = "$(bits "$out/stdout")" ]; then
+        res="$res energy-bits=identical"
+    else
+        res="$res energy-bits=DIFFERS"; fail=1
+        echo "serial: $sbits"; echo "NP $np:  $(bits "$out/stdout")"
+    fi
     if h5diff -q "$ref/d3plot.h5" "$out/d3plot.h5" >/dev/null 2>&1; then
         res="$res d3plot.h5=identical"
     else

@@ -459,6 +459,11 @@ contains
             end do
          end do
          e = ah*dt*sum(qx*qx + qy*qy + qz*qz)
+         ! e feeds two sums (ehg, dehg): "+ 0" gives the product one use, so it is rounded
+         ! alike in the vectorized body and the scalar remainder rather than fused (FMA) into
+         ! one sum there and not here; an element's energy must not depend on its position
+         ! in the block, which MPI pieces change (docs/design.md)
+         e = e + 0.0_wp
          blk%ehg(i) = blk%ehg(i) + e
          dehg = dehg + e
          !GCC$ unroll 8

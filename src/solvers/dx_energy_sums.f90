@@ -8,11 +8,11 @@
 !> Moran 2000, section 6.2.3 (time-centred kinetic energy, work of constraint reactions).
 module dx_energy_sums
    use dx_kinds, only: wp
-   use dx_model, only: model_t, elem_block_t
+   use dx_model, only: model_t, elem_block_t, energy_t
    implicit none
    private
    public :: initial_kinetic, kinetic_energy, element_energies, constraint_work, set_energy, &
-             constrained_nodes
+             constrained_nodes, energy_bits
 
 contains
 
@@ -120,4 +120,21 @@ contains
       end if
       nodes = pack([(k, k = 1, model%nn)], mark)
    end subroutine constrained_nodes
+
+   !> The energies and momentum as IEEE-754 bit patterns (hex), for bitwise comparison of
+   !> runs (glstat prints 11 digits, which hides differences in the last bits of a sum).
+   function energy_bits(e) result(line)
+      type(energy_t), intent(in) :: e
+      character(:), allocatable :: line
+      character(17) :: h
+      real(wp) :: v(12)
+      integer :: k
+      v = [e%kinetic, e%internal, e%hourglass, e%external_work, e%rigidwall, e%sliding, &
+           e%total, e%initial, e%ratio, e%momentum]
+      line = 'dynx: energy bits (KE IE HG WEXT RW SI TOTAL E0 RATIO PX PY PZ):'
+      do k = 1, size(v)
+         write(h, '(1x,z16.16)') transfer(v(k), 0_8)
+         line = line//h
+      end do
+   end function energy_bits
 end module dx_energy_sums

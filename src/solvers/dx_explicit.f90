@@ -25,7 +25,7 @@ module dx_explicit
    use dx_contact, only: contact_forces, contact_work
    use dx_rigid_solver, only: rigid_step, rigid_write_rbdout, rigid_close
    use dx_energy_sums, only: initial_kinetic, kinetic_energy, element_energies, &
-                             constraint_work, set_energy, constrained_nodes
+                             constraint_work, set_energy, constrained_nodes, energy_bits
    use dx_par_engine, only: par_engine_on, par_engine_fill, par_engine_dt, &
                             par_engine_exchange, par_engine_constraints, &
                             par_engine_energies, par_engine_initial, par_engine_output, &
@@ -320,6 +320,8 @@ contains
       end associate
       call log_info('dynx: normal termination at cycle '//str(model%cycle)//', time '// &
                     rstr(model%time)//', energy ratio '//rstr(model%energy%ratio, 8))
+      call get_environment_variable('DYNX_ENERGY_BITS', length=i)   ! bitwise checks
+      if (i > 0 .and. writer) call log_info(energy_bits(model%energy))
       call log_info('dynx: wall time '//rstr(wall_time() - t0wall, 4)//' s, '// &
          rstr(1.0e9_wp*(wall_time() - t0wall)/real(max(1, model%cycle), wp)/ &
          real(max(1, model%ne), wp), 4)//' ns per element-cycle, peak memory '// &
