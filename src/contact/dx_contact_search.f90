@@ -9,6 +9,7 @@
 !> the largest nodal travel since the sort stays below the margin (dx_contact re-sorts then,
 !> and every BSORT cycles).
 !> Cost: O(nseg + nnode) per sort for a surface of evenly sized segments.
+!> MPI runs (p%mine allocated, dx_contact_strips): candidates only for this strip's nodes.
 module dx_contact_search
    use dx_kinds, only: wp
    use dx_contact_types, only: contact_pass_t
@@ -120,6 +121,9 @@ contains
       nc = 0
       do i = 1, p%nnode
          p%cand_ptr(i) = nc + 1
+         if (allocated(p%mine)) then     ! MPI runs: only the slave nodes of this strip
+            if (.not. p%mine(i)) cycle
+         end if
          k = p%node(i)
          ic = min(p%ncell, max(1, int((x(:, k) - p%cell_lo)/h) + 1))
          c = cell_id(p, ic)
