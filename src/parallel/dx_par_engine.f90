@@ -34,12 +34,15 @@ module dx_par_engine
    use dx_energy_sums, only: initial_kinetic, kinetic_energy, element_energies, &
                              constraint_work, set_energy, constrained_nodes
    use dx_constraints, only: apply_rigidwalls
+   use dx_hex8, only: hex8_mass_share
+   use dx_par_contact, only: par_contact_setup, par_contact_report, contact_groups, &
+                             write_contact_report
    implicit none
    private
    public :: par_engine_setup, par_engine_on, par_engine_mass, par_engine_initial, &
              par_engine_fill, par_engine_dt, par_engine_exchange, par_engine_constraints, &
              par_engine_energies, par_engine_output, par_engine_fail, &
-             par_engine_global, par_engine_report
+             par_engine_global, par_engine_report, par_engine_mass_share
 
    logical, save :: on = .false.
    type(model_t), target, save :: g                  !< the global model (serial numbering)
@@ -160,6 +163,7 @@ contains
       end if
       owned = rp%node_owner == me
       own = pack([(i, i = 1, pm%nloc)], owned)
+      if (allocated(g%contact)) call par_contact_setup(model, g, pm%node_global, owned)
       allocate(key_elem(size(g%blocks)*nv_chunk))
       key_elem = 0
       do k = 1, size(g%blocks)
@@ -221,11 +225,13 @@ contains
          type(rank_part_t) :: rpr
          type(error_t), allocatable :: err
          integer :: r, u, ios
+         integer, allocatable :: grp_ptr(:), grp_elem(:), gid(:)
          call log_info('dynx: no rank files in '//dir//' or '//deckdir//': partitioning '// &
                        deck//' into '//str(np)//' ranks (as dynx-part) in '//dir)
          if (np > model%ne) call par_abort(deck//': cannot split '//str(model%ne)// &
                                            ' elements into '//str(np)//' ranks', EXIT_INPUT)
-         call partition_model(model, np, [1], [integer ::], part, err)
+         call contact_groups(model, grp_ptr, grp_elem, gid)   ! contact pairs kept whole
+         call partition_model(model, np, grp_ptr, grp_elem, part, err)
          if (allocated(err)) call par_abort(err%message, err%code)
          call sys_mkdir_p(dir, err)
          if (allocated(err)) call par_abort(err%message, err%code)
@@ -239,6 +245,7 @@ contains
               iostat=ios)
          if (ios == 0) then
             call write_report(u, part, deck, hash)
+            call write_contact_report(u, part, grp_ptr, grp_elem, gid)
             close(u)
          end if
       end subroutine partition_here
@@ -254,8 +261,6 @@ contains
          what = '*MAT_RIGID / *CONSTRAINED_NODAL_RIGID_BODY (rigid bodies)'
       else if (nonempty_loads()) then
          what = '*LOAD_NODE / *LOAD_SEGMENT / *LOAD_BODY (external loads)'
-      else if (allocated(model%contact)) then
-         what = '*CONTACT_... (contact)'
       else if (allocated(model%emc)) then
          what = '*DYNX_CONSERVING_CONTACT (the conserving rigid-body solver)'
       else if (model%rst%d3dump_cycl > 0 .or. model%rst%runrsf_cycl > 0) then
@@ -289,6 +294,30 @@ contains
       model%energy%mass = sum(g%mass)
       g%energy%mass = model%energy%mass
    end subroutine par_engine_mass
+
+   !> hex8_mass_share (the element step of one-element-wide blocks) for the rank's blocks:
+   !> a shared corner points to a slot node, which has no mass and is in no constraint list;
+   !> the share is formed with the slot's node's mass and constraint, as in the serial run.
+   subroutine par_engine_mass_share(model, cnodes)
+      type(model_t), intent(inout) :: model
+      integer, intent(in) :: cnodes(:)
+      real(wp), allocatable :: ms(:)
+      logical, allocatable :: con(:)
+      integer :: b, s
+      ms = model%mass
+      allocate(con(model%nn))
+      con = .false.
+      con(cnodes) = .true.
+      do s = 1, pm%nslot
+         ms(pm%nloc + s) = model%mass(pm%slot_node(s))
+         con(pm%nloc + s) = con(pm%slot_node(s))
+      end do
+      do b = 1, size(model%blocks)
+         call hex8_mass_share(model%blocks(b), &
+            model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%ro, ms, &
+            pack([(s, s = 1, model%nn)], con))
+      end do
+   end subroutine par_engine_mass_share
 
    !> The initial kinetic energy of the global model.
    subroutine par_engine_initial(model)
@@ -523,6 +552,7 @@ contains
    subroutine par_engine_report()
       real(wp) :: t(3), tavg(3)
       if (.not. on) return
+      call par_contact_report(g)
       t = [t_exch, t_dt, t_gath]
       tavg = t
       call par_allreduce(t, PAR_MAX)

@@ -29,7 +29,9 @@ module dx_explicit
    use dx_par_engine, only: par_engine_on, par_engine_fill, par_engine_dt, &
                             par_engine_exchange, par_engine_constraints, &
                             par_engine_energies, par_engine_initial, par_engine_output, &
-                            par_engine_fail, par_engine_mass
+                            par_engine_fail, par_engine_mass, par_engine_global, &
+                            par_engine_mass_share
+   use dx_par_contact, only: par_contact_forces, par_contact_add, par_contact_work
    implicit none
    private
    public :: run_options_t, init_state, run_explicit
@@ -100,10 +102,14 @@ contains
       if (loads) allocate(fext(3, model%nn))
       call constrained_nodes(model, cnodes)
       allocate(vfree(3, size(cnodes)))
+      if (par) then   ! MPI: slot nodes seen with their node's mass and constraint
+         call par_engine_mass_share(model, cnodes)
+      else
       do b = 1, size(model%blocks)   ! one-element-wide blocks get the element dt bound
          call hex8_mass_share(model%blocks(b), &
             model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%ro, model%mass, cnodes)
       end do
+      end if
       tend = model%ctrl%endtim
       if (tend <= 0.0_wp) tend = huge_wp
       if (.not. model%run%started) then
@@ -150,9 +156,15 @@ contains
          end do
          if (ibmin > 0) model%dt_elem = model%blocks(ibmin)%elem(iemin)
          if (allocated(model%rigid) .and. ibmin == 0) dtcrit = model%rigid%dtcrit
-         ! ---- contact forces (only when the deck has *CONTACT; serial runs)
-         if (allocated(model%contact)) call contact_forces(model, dt_old, dtcrit)
          if (par) call par_engine_dt(dtcrit, model%dt_elem)   ! global min, serial tie rule
+         ! ---- contact forces (only when the deck has *CONTACT; MPI runs: dx_par_contact)
+         if (allocated(model%contact)) then
+            if (par) then
+               call par_contact_forces(model, par_engine_global(), dt_old, dtcrit)
+            else
+               call contact_forces(model, dt_old, dtcrit)
+            end if
+         end if
          ! ---- external forces
          if (loads) then
             fext = 0.0_wp
@@ -160,6 +172,7 @@ contains
          end if
          ! ---- shared-node exchange (MPI runs): serial-order sums at shared nodes
          if (par) call par_engine_exchange(model%f)
+         if (par .and. allocated(model%contact)) call par_contact_add(model, par_engine_global())
          if (loads) model%f = model%f + fext
          ! ---- time step
          dt = model%ctrl%tssfac*dtcrit
@@ -205,7 +218,9 @@ contains
                wext = wext + dot_product(fext(:, i), 0.5_wp*dtavg*(vold(:, i) + model%v(:, i)))
             end do
          end if
-         if (allocated(model%contact)) then
+         if (allocated(model%contact) .and. par) then
+            call par_contact_work(model, par_engine_global(), dtavg, opts%outdir)
+         else if (allocated(model%contact)) then
             call contact_work(model, vold, dtavg, opts%outdir, ioerr)
             if (allocated(ioerr)) then
                call move_alloc(ioerr, error); call finish(model, out, ck, error); return
