@@ -219,13 +219,14 @@ contains
    !> End of the run (rank 0 logs): contact time per cycle and the slave nodes per strip.
    subroutine par_contact_report(g)
       type(model_t), intent(in) :: g
-      real(wp) :: t(2), tm(2)
+      real(wp) :: t(4), tm(4)
       integer, allocatable :: cnt(:)
       integer :: i, j, np
       character(:), allocatable :: line
       if (.not. on) return
       np = par_size()
-      t = [t_cont, t_comm]/real(max(1, ncycle), wp)
+      t = [t_cont, t_comm, g%contact%t_search, g%contact%t_force - g%contact%t_search]/ &
+          real(max(1, ncycle), wp)
       tm = t
       call par_allreduce(tm, PAR_MAX)
       call par_allreduce(t, PAR_SUM)
@@ -233,7 +234,10 @@ contains
       call log_info('dynx: MPI contact: '//str(ncycle)//' cycles, per cycle: search + '// &
          'forces '//rstr(1.0e6_wp*t(1), 4)//' us (max over ranks '//rstr(1.0e6_wp*tm(1), 4)// &
          '), contact communication '//rstr(1.0e6_wp*t(2), 4)//' us (max '// &
-         rstr(1.0e6_wp*tm(2), 4)//')')
+         rstr(1.0e6_wp*tm(2), 4)//'); of search + forces: bucket sorts and strips '// &
+         rstr(1.0e6_wp*t(3), 4)//' us (max '//rstr(1.0e6_wp*tm(3), 4)//'), local search, '// &
+         'forces and assembly '//rstr(1.0e6_wp*t(4), 4)//' us (max '// &
+         rstr(1.0e6_wp*tm(4), 4)//'); means over the ranks')
       allocate(cnt(0:np - 1))
       associate (cs => g%contact)
          do i = 1, size(cs%iface)
