@@ -4,7 +4,9 @@
 #    (scripts/gen_box_deck.py) at NP = 2, 3, 4: the rank files pass `dynx-part --verify`
 #    (checksums, deck hash, NP, every element on exactly one rank, symmetric shared-node
 #    lists), and the balance statistic (max weight / mean weight) is <= 1.1, or <= the best
-#    the element granularity allows where that is worse (8 unit elements on 3 ranks: 3/2.67).
+#    the element granularity allows where that is worse (8 unit elements on 3 ranks: 3/2.67),
+#    or than the heaviest local contact pair allows (kept whole on one rank: its weight over
+#    the mean weight; the report lists the pairs and their ranks).
 #    The patch and single-element decks are only verified.
 #  - the partition is reproducible (same report and checksums from a second run)
 #  - errors: files for another NP or another deck (exit 2, file named), a corrupt file
@@ -41,11 +43,16 @@ partition() {
         # the bound: MAXBAL, or the best a split of W unit-cost elements allows when that is
         # worse (8 elements on 3 ranks: ceil(8/3)/(8/3) = 1.125); with elements of unequal
         # weight (decks with rigid parts: 4 and 1), the list-scheduling bound
-        # (W/n + wmax (1 - 1/n))/(W/n) with wmax the heaviest element
+        # (W/n + wmax (1 - 1/n))/(W/n) with wmax the heaviest element; or, with contact
+        # pairs kept whole, the heaviest pair over the mean (a pair that is the whole model
+        # puts everything on one rank)
         lim=$(awk -v m="$MAXBAL" -v n="$n" '/^ *[0-9]+ +[0-9]+ +[0-9]+ +[0-9]+ +[0-9]+ +[0-9]+ *$/ { w += $3 }
               /^heaviest element weight:/ { x = $4 }
+              /^contact pairs kept whole/ { cp = 1; next }
+              cp && /^ *[0-9]+ +[0-9]+ +[0-9]+ +[0-9]+/ { if ($3 > gw) gw = $3 }
               END { q = w / n; c = int(q); if (c < q) c++; g = c / q
                     if (x > 1) { h = (q + x * (1 - 1 / n)) / q; if (h > g) g = h }
+                    if (gw / q > g) g = gw / q
                     print (g > m ? g : m) }' \
               "$dir/partition.txt")
         if awk -v b="$bal" -v m="$lim" 'BEGIN { exit !(b != "" && b + 0 <= m + 1e-4) }'; then

@@ -20,22 +20,38 @@ module dx_contact
    use dx_model, only: model_t
    use dx_contact_types, only: contact_set_t
    use dx_contact_search, only: bucket_sort
-   use dx_contact_penalty, only: pass_forces
+   use dx_contact_penalty, only: pass_records, pass_node, pass_apply
+   use dx_contact_strips, only: contact_strips
    use dx_rigid_contact, only: rigid_contact_w2, rigid_effective_mass
    use dx_append_file, only: append_from
    implicit none
    private
-   public :: contact_forces, contact_work
+   public :: contact_forces, contact_work, contact_search_nodes, contact_assemble, contact_dt
 
 contains
 
    !> Contact forces at x(n) into model%f; lowers dtcrit (element step) for stiff contact.
+   !> Three stages, which an MPI run calls separately (dx_par_contact) with the exchange of
+   !> the slave nodes' results between the first and the second.
    subroutine contact_forces(model, dt_old, dtcrit)
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: dtcrit
-      real(wp) :: vmax, t, t0, t1, w2max, dt_est, fsum(3), margin
-      integer :: i, j, nd
+      real(wp) :: w2max
+      call contact_search_nodes(model, dt_old, dtcrit, w2max)
+      call contact_assemble(model, w2max, .true.)
+      call contact_dt(model%contact, w2max, dtcrit)
+   end subroutine contact_forces
+
+   !> Stage 1: bucket sorts that are due (and, in MPI runs, the strips with them), then the
+   !> result of every slave node of this strip (pass_node; all of them in a serial run).
+   !> w2max: the contact frequency^2 bound of the candidate pairs (this strip's).
+   subroutine contact_search_nodes(model, dt_old, dtcrit, w2max)
+      type(model_t), intent(inout) :: model
+      real(wp), intent(in) :: dt_old, dtcrit
+      real(wp), intent(out) :: w2max
+      real(wp) :: vmax, t, t0, t1, dt_est, margin
+      integer :: i, j, k
       real(wp), allocatable :: meff(:)
       logical :: has_rigid
       t0 = wall_time()
@@ -73,8 +89,11 @@ contains
                   associate (p => f%pass(j))
                      p%moved = p%moved + vmax*dt_old
                      if (model%cycle - p%last_sort >= f%bsort .or. &
-                         2.0_wp*p%moved >= p%margin) then
+                         2.0_wp*p%moved >= p%margin .or. &
+                         (cs%nstrip > 1 .and. .not. allocated(p%mine))) then
                         t1 = wall_time()
+                        if (cs%nstrip > 1) call contact_strips(p, model%x, cs%nstrip, &
+                                                               cs%istrip)
                         margin = 0.25_wp*mean_extent(p, model%x)
                         margin = max(margin, 4.0_wp*vmax*dt_est)
                         if (has_rigid) then
@@ -89,9 +108,55 @@ contains
                         cs%t_search = cs%t_search + (wall_time() - t1)
                      end if
                      w2max = max(w2max, p%w2pot)
+                     call pass_records(p)
+                     if (allocated(p%mine)) then
+                        do k = 1, p%nnode
+                           if (p%mine(k)) then
+                              call pass_node(f, p, k, model%x, model%v, model%mass, &
+                                             dt_old, dt_est, 2.0_wp*vmax*dt_est)
+                           else
+                              p%rint(:, k) = 0     ! another strip's node: exchanged
+                           end if
+                        end do
+                     else
+                        do k = 1, p%nnode
+                           call pass_node(f, p, k, model%x, model%v, model%mass, dt_old, &
+                                          dt_est, 2.0_wp*vmax*dt_est)
+                        end do
+                     end if
+                  end associate
+               end do
+            end associate
+         end do
+         cs%t_force = cs%t_force + (wall_time() - t0)
+      end associate
+   end subroutine contact_search_nodes
+
+   !> Stage 2: the slave nodes' results added in the serial order (interface, pass, slave
+   !> node: pass_apply) into cs%fc, the stiffness row sums and the resultants; when
+   !> add_force, cs%fc into model%f (an MPI run adds it after the shared-node exchange).
+   !> w2max grows by the row sums over the nodal masses (rigid nodes: body inertia).
+   subroutine contact_assemble(model, w2max, add_force)
+      type(model_t), intent(inout) :: model
+      real(wp), intent(inout) :: w2max
+      logical, intent(in) :: add_force
+      real(wp) :: t, t0, fsum(3)
+      integer :: i, j, k, nd
+      logical :: has_rigid
+      t0 = wall_time()
+      has_rigid = allocated(model%rigid)
+      if (has_rigid) has_rigid = allocated(model%rigid%node_body)
+      t = model%time
+      associate (cs => model%contact)
+         do i = 1, size(cs%iface)
+            associate (f => cs%iface(i))
+               if (t < f%bt .or. t > f%dt) cycle
+               do j = 1, size(f%pass)
+                  associate (p => f%pass(j))
                      fsum = 0.0_wp
-                     call pass_forces(f, p, model%x, model%v, model%mass, dt_old, dt_est, &
-                                      2.0_wp*vmax*dt_est, cs%fc, fsum, cs%krow, f%nactive)
+                     do k = 1, p%nnode
+                        call pass_apply(p, k, cs%fc, fsum, cs%krow, f%nactive)
+                     end do
                      if (j == 1) then
                         f%fslave = f%fslave + fsum
                         f%fmaster = f%fmaster - fsum
@@ -105,7 +170,7 @@ contains
          end do
          do i = 1, size(cs%node)
             nd = cs%node(i)
-            model%f(:, nd) = model%f(:, nd) + cs%fc(:, nd)
+            if (add_force) model%f(:, nd) = model%f(:, nd) + cs%fc(:, nd)
             if (has_rigid) then
                if (model%rigid%node_body(nd) > 0) cycle   ! rigid nodes: body inertia below
             end if
@@ -113,14 +178,21 @@ contains
          end do
          if (has_rigid) &
             w2max = max(w2max, rigid_contact_w2(model%rigid, cs%node, cs%krow, model%x))
-         cs%dt_limit = huge(1.0_wp)
-         if (w2max > 0.0_wp) then
-            cs%dt_limit = 1.0_wp/sqrt(1.0_wp/dtcrit**2 + w2max)
-            dtcrit = min(dtcrit, cs%dt_limit)
-         end if
          cs%t_force = cs%t_force + (wall_time() - t0)
       end associate
-   end subroutine contact_forces
+   end subroutine contact_assemble
+
+   !> Stage 3: the contact bound on the critical step, dt <= 1/sqrt(1/dt_e^2 + w2max).
+   subroutine contact_dt(cs, w2max, dtcrit)
+      type(contact_set_t), intent(inout) :: cs
+      real(wp), intent(in) :: w2max
+      real(wp), intent(inout) :: dtcrit
+      cs%dt_limit = huge(1.0_wp)
+      if (w2max > 0.0_wp) then
+         cs%dt_limit = 1.0_wp/sqrt(1.0_wp/dtcrit**2 + w2max)
+         dtcrit = min(dtcrit, cs%dt_limit)
+      end if
+   end subroutine contact_dt
 
    !> mean largest extent of the pass's segments
    real(wp) function mean_extent(p, x) result(ext)

@@ -15,13 +15,17 @@
 !>  - the slave node gets f, the master nodes -N_i(xi, eta) f (momentum is conserved).
 !> Symbols: x_c the contact point, n the outward unit normal of the master segment,
 !> N_i the segment shape functions.
+!> Split in two per slave node (pass_node: its result, pass_apply: added in, in slave-node
+!> order) so that MPI runs compute the nodes on their strips and add the results in the
+!> serial order (dx_par_contact).
 module dx_contact_penalty
    use dx_kinds, only: wp
    use dx_vec3, only: cross
-   use dx_contact_types, only: contact_pass_t, contact_iface_t
+   use dx_contact_types, only: contact_pass_t, contact_iface_t, NREC, REC_NEAR, REC_NB, &
+                               REC_FSL, REC_GAP, REC_FT
    implicit none
    private
-   public :: project_point, pass_forces
+   public :: project_point, pass_forces, pass_records, pass_node, pass_apply
 
    real(wp), parameter :: tol_inside = 1.0e-6_wp   !< parametric tolerance on the segment edges
    real(wp), parameter :: xq(4) = [-1.0_wp, 1.0_wp, 1.0_wp, -1.0_wp]
@@ -132,6 +136,7 @@ contains
    !> dt_old: the last step (tangential slip increment), dt_est: the step being taken;
    !> a node closer than gtol to a segment (not yet touching) also enters krow, so that the
    !> step is already small in the cycle its contact starts.
+   !> Each slave node in turn: pass_node (its result) then pass_apply (added in).
    subroutine pass_forces(f, p, x, v, mass, dt_old, dt_est, gtol, fc, fsum, krow, nactive)
       type(contact_iface_t), intent(in) :: f
       type(contact_pass_t), intent(inout) :: p
@@ -139,133 +144,188 @@ contains
       real(wp), intent(in) :: dt_old, dt_est, gtol
       real(wp), intent(inout) :: fc(:, :), fsum(3), krow(:)
       integer, intent(inout) :: nactive
+      integer :: i
+      call pass_records(p)
+      do i = 1, p%nnode
+         call pass_node(f, p, i, x, v, mass, dt_old, dt_est, gtol)
+         call pass_apply(p, i, fc, fsum, krow, nactive)
+      end do
+   end subroutine pass_forces
+
+   !> Allocate the per-node result arrays of pass p (once).
+   subroutine pass_records(p)
+      type(contact_pass_t), intent(inout) :: p
+      if (allocated(p%rint)) return
+      allocate(p%rint(2, p%nnode), p%rval(NREC, p%nnode))
+      p%rint = 0
+      p%rval = 0.0_wp
+   end subroutine pass_records
+
+   !> The result of slave node i of pass p at x, v (reads its state, writes none of it):
+   !> p%rint(1, i) the segment it is near (within gtol, not touching; 0: none) with its
+   !> shape functions, p%rint(2, i) the segment in contact (0: none) with the shape
+   !> functions, the force on the slave node, the new gap and tangential force (p%rval,
+   !> columns REC_*). pass_apply adds it in; MPI runs compute it on the node's strip.
+   subroutine pass_node(f, p, i, x, v, mass, dt_old, dt_est, gtol)
+      type(contact_iface_t), intent(in) :: f
+      type(contact_pass_t), intent(inout) :: p
+      integer, intent(in) :: i
+      real(wp), intent(in) :: x(:, :), v(:, :), mass(:)
+      real(wp), intent(in) :: dt_old, dt_est, gtol
       real(wp) :: xe(3, 4), nsh(4), xc(3), nrm(3), xi(2), g, gbest, nb(4), nrmb(3)
       real(wp) :: kk, fn, vrel(3), vn, vt(3), vtm, ms, mm, meff, mu, fy, ftr(3), fsl(3), fmag
       real(wp) :: inv_mm
-      integer :: i, k, c, s, sb, j, n
+      integer :: k, c, s, sb, j, n
       logical :: inside, near
-      do i = 1, p%nnode
-         k = p%node(i)
-         sb = 0
-         gbest = -huge(1.0_wp)
-         near = .false.
-         do c = p%cand_ptr(i), p%cand_ptr(i + 1) - 1
-            s = p%cand(c)
-            n = p%nsn(s)
-            xe(:, 1:n) = x(:, p%seg(1:n, s))
-            ! cheap rejections before the projection: outside the segment's box grown by
-            ! the depth, or facing away (normal at the centre)
-            if (outside_box(xe, n, x(:, k), p%depth(s))) cycle
-            if (p%nsseg > 0) then
-               if (n == 4) then
-                  nrm = cross(xe(:, 3) - xe(:, 1), xe(:, 4) - xe(:, 2))
-               else
-                  nrm = cross(xe(:, 2) - xe(:, 1), xe(:, 3) - xe(:, 1))
-               end if
-               if (dot_product(p%nnrm(:, i), nrm) >= 0.0_wp) cycle
+      k = p%node(i)
+      p%rint(:, i) = 0
+      p%rval(:, i) = 0.0_wp
+      sb = 0
+      gbest = -huge(1.0_wp)
+      near = .false.
+      do c = p%cand_ptr(i), p%cand_ptr(i + 1) - 1
+         s = p%cand(c)
+         n = p%nsn(s)
+         xe(:, 1:n) = x(:, p%seg(1:n, s))
+         ! cheap rejections before the projection: outside the segment's box grown by
+         ! the depth, or facing away (normal at the centre)
+         if (outside_box(xe, n, x(:, k), p%depth(s))) cycle
+         if (p%nsseg > 0) then
+            if (n == 4) then
+               nrm = cross(xe(:, 3) - xe(:, 1), xe(:, 4) - xe(:, 2))
+            else
+               nrm = cross(xe(:, 2) - xe(:, 1), xe(:, 3) - xe(:, 1))
             end if
-            call project_point(n, xe, x(:, k), nsh, xc, nrm, xi, inside)
-            if (.not. inside) cycle
-            ! only segments facing the node's own surface (rejects the side faces of a
-            ! master edge the slave node lies on)
-            if (p%nsseg > 0) then
-               if (dot_product(p%nnrm(:, i), nrm) >= 0.0_wp) cycle
-            end if
-            g = dot_product(x(:, k) - xc, nrm)
-            if (g >= 0.0_wp .and. g < gtol .and. .not. near) then
-               near = .true.
-               krow(k) = krow(k) + 2.0_wp*p%kseg(s)
-               do j = 1, n
-                  krow(p%seg(j, s)) = krow(p%seg(j, s)) + 2.0_wp*p%kseg(s)*nsh(j)
-               end do
-            end if
-            ! a node on the segment's plane up to round-off (an edge shared with the master
-            ! body's side) is not penetrating it
-            if (g >= -1.0e-8_wp*p%depth(s) .or. -g > p%depth(s)) cycle
-            if (g > gbest) then
-               gbest = g; sb = s; nb = nsh; nrmb = nrm
-            end if
-         end do
-         ! a node in contact last cycle that now projects onto no segment (it sits over the
-         ! kink of a master surface that has become concave) stays on its segment, at the
-         ! clamped closest point: releasing and recapturing it would create energy
-         if (sb == 0 .and. p%iseg(i) > 0) then
-            s = p%iseg(i)
-            n = p%nsn(s)
-            xe(:, 1:n) = x(:, p%seg(1:n, s))
-            call project_point(n, xe, x(:, k), nsh, xc, nrm, xi, inside)
-            g = dot_product(x(:, k) - xc, nrm)
-            if (g < -1.0e-8_wp*p%depth(s) .and. -g <= p%depth(s) .and. norm2(nrm) > 0.0_wp) then
-               sb = s; gbest = g; nb = nsh; nrmb = nrm
-            end if
+            if (dot_product(p%nnrm(:, i), nrm) >= 0.0_wp) cycle
          end if
-         if (sb == 0) then
-            p%iseg(i) = 0
-            p%gap(i) = 0.0_wp
-            p%ft(:, i) = 0.0_wp
-            cycle
+         call project_point(n, xe, x(:, k), nsh, xc, nrm, xi, inside)
+         if (.not. inside) cycle
+         ! only segments facing the node's own surface (rejects the side faces of a
+         ! master edge the slave node lies on)
+         if (p%nsseg > 0) then
+            if (dot_product(p%nnrm(:, i), nrm) >= 0.0_wp) cycle
          end if
-         n = p%nsn(sb)
-         vrel = v(:, k)
-         do j = 1, n
-            vrel = vrel - nb(j)*v(:, p%seg(j, sb))
-         end do
-         vn = dot_product(vrel, nrmb)
-         ! the penetration can only grow by what the node travelled in one step: a deeper
-         ! first contact, or a jump onto another segment deeper than the last gap (a node
-         ! coming round an edge already inside), is not taken, since its penalty force
-         ! would inject energy
-         if (-gbest > -p%gap(i) + 2.0_wp*abs(vn)*dt_est + 0.02_wp*p%depth(sb)) then
-            p%iseg(i) = 0
-            p%gap(i) = 0.0_wp
-            p%ft(:, i) = 0.0_wp
-            cycle
+         g = dot_product(x(:, k) - xc, nrm)
+         if (g >= 0.0_wp .and. g < gtol .and. .not. near) then
+            near = .true.
+            p%rint(1, i) = s
+            p%rval(REC_NEAR + 1:REC_NEAR + n, i) = nsh(1:n)
          end if
-         p%gap(i) = gbest
-         nactive = nactive + 1
-         p%iseg(i) = sb
-         ! ---- stiffness and masses
-         ms = mass(k)
-         inv_mm = 0.0_wp
-         mm = 0.0_wp
-         do j = 1, n
-            if (mass(p%seg(j, sb)) > 0.0_wp) inv_mm = inv_mm + nb(j)**2/mass(p%seg(j, sb))
-            mm = mm + nb(j)*mass(p%seg(j, sb))
-         end do
-         kk = p%kseg(sb)
-         if (f%soft == 1 .and. dt_est > 0.0_wp) &
-            kk = max(kk, 0.5_wp*f%sofscl*min(ms, mm)/dt_est**2)
-         fn = -kk*gbest
-         if (f%vdc > 0.0_wp) then
-            meff = 0.0_wp
-            if (ms > 0.0_wp .and. inv_mm > 0.0_wp) meff = 1.0_wp/(1.0_wp/ms + inv_mm)
-            fn = max(0.0_wp, fn - 0.01_wp*f%vdc*2.0_wp*sqrt(kk*meff)*vn)
+         ! a node on the segment's plane up to round-off (an edge shared with the master
+         ! body's side) is not penetrating it
+         if (g >= -1.0e-8_wp*p%depth(s) .or. -g > p%depth(s)) cycle
+         if (g > gbest) then
+            gbest = g; sb = s; nb = nsh; nrmb = nrm
          end if
-         fsl = fn*nrmb
-         ! ---- friction
-         if (f%fs > 0.0_wp) then
-            vt = vrel - vn*nrmb
-            vtm = norm2(vt)
-            ftr = p%ft(:, i) - dot_product(p%ft(:, i), nrmb)*nrmb - kk*dt_old*vt
-            mu = f%fsf*(f%fd + (f%fs - f%fd)*exp(-f%dc*vtm))
-            fy = mu*fn
-            if (f%vc > 0.0_wp) fy = min(fy, f%vsf*f%vc*p%area(sb))
-            fmag = norm2(ftr)
-            if (fmag > fy) ftr = ftr*(fy/fmag)
-            p%ft(:, i) = ftr
-            fsl = fsl + ftr
-         end if
-         fc(:, k) = fc(:, k) + fsl
-         do j = 1, n
-            fc(:, p%seg(j, sb)) = fc(:, p%seg(j, sb)) - nb(j)*fsl
-         end do
-         fsum = fsum + fsl
-         ! the time step sees the segment stiffness only: the SOFT = 1 stiffness is scaled
-         ! to the step itself (w dt fixed by SOFSCL), feeding it back would shrink the step
-         krow(k) = krow(k) + 2.0_wp*p%kseg(sb)
-         do j = 1, n
-            krow(p%seg(j, sb)) = krow(p%seg(j, sb)) + 2.0_wp*p%kseg(sb)*nb(j)
-         end do
       end do
-   end subroutine pass_forces
+      ! a node in contact last cycle that now projects onto no segment (it sits over the
+      ! kink of a master surface that has become concave) stays on its segment, at the
+      ! clamped closest point: releasing and recapturing it would create energy
+      if (sb == 0 .and. p%iseg(i) > 0) then
+         s = p%iseg(i)
+         n = p%nsn(s)
+         xe(:, 1:n) = x(:, p%seg(1:n, s))
+         call project_point(n, xe, x(:, k), nsh, xc, nrm, xi, inside)
+         g = dot_product(x(:, k) - xc, nrm)
+         if (g < -1.0e-8_wp*p%depth(s) .and. -g <= p%depth(s) .and. norm2(nrm) > 0.0_wp) then
+            sb = s; gbest = g; nb = nsh; nrmb = nrm
+         end if
+      end if
+      if (sb == 0) return
+      n = p%nsn(sb)
+      vrel = v(:, k)
+      do j = 1, n
+         vrel = vrel - nb(j)*v(:, p%seg(j, sb))
+      end do
+      vn = dot_product(vrel, nrmb)
+      ! the penetration can only grow by what the node travelled in one step: a deeper
+      ! first contact, or a jump onto another segment deeper than the last gap (a node
+      ! coming round an edge already inside), is not taken, since its penalty force
+      ! would inject energy
+      if (-gbest > -p%gap(i) + 2.0_wp*abs(vn)*dt_est + 0.02_wp*p%depth(sb)) return
+      ! ---- stiffness and masses
+      ms = mass(k)
+      inv_mm = 0.0_wp
+      mm = 0.0_wp
+      do j = 1, n
+         if (mass(p%seg(j, sb)) > 0.0_wp) inv_mm = inv_mm + nb(j)**2/mass(p%seg(j, sb))
+         mm = mm + nb(j)*mass(p%seg(j, sb))
+      end do
+      kk = p%kseg(sb)
+      if (f%soft == 1 .and. dt_est > 0.0_wp) &
+         kk = max(kk, 0.5_wp*f%sofscl*min(ms, mm)/dt_est**2)
+      fn = -kk*gbest
+      if (f%vdc > 0.0_wp) then
+         meff = 0.0_wp
+         if (ms > 0.0_wp .and. inv_mm > 0.0_wp) meff = 1.0_wp/(1.0_wp/ms + inv_mm)
+         fn = max(0.0_wp, fn - 0.01_wp*f%vdc*2.0_wp*sqrt(kk*meff)*vn)
+      end if
+      fsl = fn*nrmb
+      ! ---- friction
+      ftr = p%ft(:, i)
+      if (f%fs > 0.0_wp) then
+         vt = vrel - vn*nrmb
+         vtm = norm2(vt)
+         ftr = p%ft(:, i) - dot_product(p%ft(:, i), nrmb)*nrmb - kk*dt_old*vt
+         mu = f%fsf*(f%fd + (f%fs - f%fd)*exp(-f%dc*vtm))
+         fy = mu*fn
+         if (f%vc > 0.0_wp) fy = min(fy, f%vsf*f%vc*p%area(sb))
+         fmag = norm2(ftr)
+         if (fmag > fy) ftr = ftr*(fy/fmag)
+         fsl = fsl + ftr
+      end if
+      p%rint(2, i) = sb
+      p%rval(REC_NB + 1:REC_NB + 4, i) = nb
+      p%rval(REC_FSL + 1:REC_FSL + 3, i) = fsl
+      p%rval(REC_GAP + 1, i) = gbest
+      p%rval(REC_FT + 1:REC_FT + 3, i) = ftr
+   end subroutine pass_node
+
+   !> Add the result of slave node i (pass_node) in: its state (segment, gap, tangential
+   !> force), the forces into fc (the slave node gets f, the master nodes -N_i f), the
+   !> resultant fsum, the stiffness row sums krow (2k on the slave node, 2k N_i on the
+   !> master nodes, for the near segment first, then for the contact segment) and the count
+   !> of nodes in contact. The serial order of every sum is this call order: slave node
+   !> after slave node, pass after pass.
+   subroutine pass_apply(p, i, fc, fsum, krow, nactive)
+      type(contact_pass_t), intent(inout) :: p
+      integer, intent(in) :: i
+      real(wp), intent(inout) :: fc(:, :), fsum(3), krow(:)
+      integer, intent(inout) :: nactive
+      real(wp) :: fsl(3), nb(4)
+      integer :: k, s, sb, j, n
+      k = p%node(i)
+      s = p%rint(1, i)
+      if (s > 0) then
+         krow(k) = krow(k) + 2.0_wp*p%kseg(s)
+         do j = 1, p%nsn(s)
+            krow(p%seg(j, s)) = krow(p%seg(j, s)) + 2.0_wp*p%kseg(s)*p%rval(REC_NEAR + j, i)
+         end do
+      end if
+      sb = p%rint(2, i)
+      if (sb == 0) then
+         p%iseg(i) = 0
+         p%gap(i) = 0.0_wp
+         p%ft(:, i) = 0.0_wp
+         return
+      end if
+      n = p%nsn(sb)
+      p%gap(i) = p%rval(REC_GAP + 1, i)
+      nactive = nactive + 1
+      p%iseg(i) = sb
+      p%ft(:, i) = p%rval(REC_FT + 1:REC_FT + 3, i)
+      fsl = p%rval(REC_FSL + 1:REC_FSL + 3, i)
+      nb = p%rval(REC_NB + 1:REC_NB + 4, i)
+      fc(:, k) = fc(:, k) + fsl
+      do j = 1, n
+         fc(:, p%seg(j, sb)) = fc(:, p%seg(j, sb)) - nb(j)*fsl
+      end do
+      fsum = fsum + fsl
+      ! the time step sees the segment stiffness only: the SOFT = 1 stiffness is scaled
+      ! to the step itself (w dt fixed by SOFSCL), feeding it back would shrink the step
+      krow(k) = krow(k) + 2.0_wp*p%kseg(sb)
+      do j = 1, n
+         krow(p%seg(j, sb)) = krow(p%seg(j, sb)) + 2.0_wp*p%kseg(sb)*nb(j)
+      end do
+   end subroutine pass_apply
 end module dx_contact_penalty

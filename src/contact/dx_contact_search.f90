@@ -9,6 +9,7 @@
 !> the largest nodal travel since the sort stays below the margin (dx_contact re-sorts then,
 !> and every BSORT cycles).
 !> Cost: O(nseg + nnode) per sort for a surface of evenly sized segments.
+!> MPI runs (p%mine allocated, dx_contact_strips): candidates only for this strip's nodes.
 module dx_contact_search
    use dx_kinds, only: wp
    use dx_contact_types, only: contact_pass_t
@@ -29,9 +30,10 @@ contains
       real(wp), intent(in), optional :: mass(:)
       real(wp), allocatable :: blo(:, :), bhi(:, :), snrm(:, :)
       real(wp) :: d1(3), d2(3)
-      real(wp) :: lo(3), hi(3), ext, h, vol
-      integer :: i, s, k, n, c, ic(3), jlo(3), jhi(3), i1, i2, i3, ncap, ncells, nc
+      real(wp) :: lo(3), hi(3), ext, h, vol, slo, shi
+      integer :: i, s, k, n, c, ic(3), jlo(3), jhi(3), i1, i2, i3, ncap, ncells, nc, a
       integer, allocatable :: fill(:), cand(:), tmp(:)
+      logical, allocatable :: act(:)
       logical :: ok
       p%margin = margin
       p%moved = 0.0_wp
@@ -53,15 +55,41 @@ contains
          bhi(:, s) = bhi(:, s) + (margin + p%depth(s))
       end do
       ext = ext/real(p%nseg, wp)
-      lo = minval(blo, dim=2)
-      hi = maxval(bhi, dim=2)
+      ! MPI runs: only the segments whose grown box reaches this strip's slab (the halo) can
+      ! be candidates of its nodes; the grid covers them and the strip's nodes. A node's
+      ! candidates (the segments whose grown box holds it, ascending) do not depend on the
+      ! grid, so every strip finds the serial candidates of its nodes.
+      allocate(act(p%nseg))
+      act = .true.
+      if (allocated(p%mine)) then
+         a = max(1, p%strip_axis)
+         slo = huge(1.0_wp); shi = -huge(1.0_wp)
+         do i = 1, p%nnode
+            if (.not. p%mine(i)) cycle
+            slo = min(slo, x(a, p%node(i)))
+            shi = max(shi, x(a, p%node(i)))
+         end do
+         act = bhi(a, :) >= slo .and. blo(a, :) <= shi
+      end if
+      lo = huge(1.0_wp); hi = -huge(1.0_wp)
+      do s = 1, p%nseg
+         if (.not. act(s)) cycle
+         lo = min(lo, blo(:, s))
+         hi = max(hi, bhi(:, s))
+      end do
       do i = 1, p%nnode
+         if (allocated(p%mine)) then
+            if (.not. p%mine(i)) cycle
+         end if
          lo = min(lo, x(:, p%node(i)))
          hi = max(hi, x(:, p%node(i)))
       end do
+      if (any(lo > hi)) then     ! an empty strip
+         lo = 0.0_wp; hi = 0.0_wp
+      end if
       h = max(ext, 1.0e-12_wp*maxval(hi - lo), tiny(1.0_wp))
       vol = product(max(hi - lo, h))
-      ncap = 4*p%nseg + 64
+      ncap = 4*count(act) + 64
       if (vol/h**3 > real(ncap, wp)) h = (vol/real(ncap, wp))**(1.0_wp/3.0_wp)
       p%cell_h = h
       p%cell_lo = lo
@@ -72,6 +100,7 @@ contains
       allocate(p%cell_ptr(ncells + 1))
       p%cell_ptr = 0
       do s = 1, p%nseg
+         if (.not. act(s)) cycle
          call cell_range(p, blo(:, s), bhi(:, s), jlo, jhi)
          do i3 = jlo(3), jhi(3)
             do i2 = jlo(2), jhi(2)
@@ -90,6 +119,7 @@ contains
       allocate(p%cell_seg(p%cell_ptr(ncells + 1) - 1), fill(ncells))
       fill = p%cell_ptr(1:ncells)
       do s = 1, p%nseg
+         if (.not. act(s)) cycle
          call cell_range(p, blo(:, s), bhi(:, s), jlo, jhi)
          do i3 = jlo(3), jhi(3)
             do i2 = jlo(2), jhi(2)
@@ -120,6 +150,9 @@ contains
       nc = 0
       do i = 1, p%nnode
          p%cand_ptr(i) = nc + 1
+         if (allocated(p%mine)) then     ! MPI runs: only the slave nodes of this strip
+            if (.not. p%mine(i)) cycle
+         end if
          k = p%node(i)
          ic = min(p%ncell, max(1, int((x(:, k) - p%cell_lo)/h) + 1))
          c = cell_id(p, ic)

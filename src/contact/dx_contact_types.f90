@@ -12,6 +12,12 @@ module dx_contact_types
    implicit none
    private
    public :: contact_set_t, contact_iface_t, contact_pass_t
+   public :: NREC, REC_NEAR, REC_NB, REC_FSL, REC_GAP, REC_FT
+
+   !> columns of contact_pass_t%rval: shape functions at the near point (4), at the contact
+   !> point (4), the force on the slave node (3), the new gap (1) and tangential force (3)
+   integer, parameter :: REC_NEAR = 0, REC_NB = 4, REC_FSL = 8, REC_GAP = 11, REC_FT = 12
+   integer, parameter :: NREC = 15
 
    !> One pass of the node-to-segment algorithm: slave nodes against master segments.
    !> Segments are stored with 4 node slots; a triangle repeats its third node (nsn = 3).
@@ -48,6 +54,13 @@ module dx_contact_types
       real(wp), allocatable :: ft(:, :)        !< (3, nnode) tangential (trial) force
       integer, allocatable :: iseg(:)          !< (nnode) segment in contact (0: none)
       real(wp), allocatable :: gap(:)          !< (nnode) its normal gap (< 0), 0: none
+      ! --- this cycle's result per slave node (dx_contact_penalty: pass_node computes it,
+      !     pass_apply adds it in slave-node order; MPI runs exchange it between strips)
+      integer, allocatable :: rint(:, :)       !< (2, nnode) near segment, contact segment
+      real(wp), allocatable :: rval(:, :)      !< (NREC, nnode) see REC_* below
+      ! --- strips (MPI runs, dx_contact_strips): slave node -> strip at the last sort
+      logical, allocatable :: mine(:)          !< (nnode) computed by this rank (MPI only)
+      integer :: strip_axis = 0                !< axis of the strips at the last sort
    end type contact_pass_t
 
    !> One *CONTACT_... interface: parameters, one or two passes, resultant forces.
@@ -83,5 +96,7 @@ module dx_contact_types
       real(wp) :: t_force = 0.0_wp             !< wall time in local search + forces [s]
       real(wp) :: dt_limit = huge(1.0_wp)      !< contact bound on the critical step, last cycle
       logical :: finished = .false.
+      integer :: nstrip = 1                    !< MPI runs: strips (ranks) of the search
+      integer :: istrip = 0                    !< this rank's strip, 0..nstrip-1
    end type contact_set_t
 end module dx_contact_types

@@ -37,6 +37,8 @@ module dx_par_engine
    use dx_par_loads, only: par_loads_setup
    use dx_hex8, only: hex8_mass_share
    use dx_par_rigid, only: par_rigid_setup
+   use dx_par_contact, only: par_contact_setup, par_contact_report, contact_groups, &
+                             write_contact_report
    implicit none
    private
    public :: par_engine_setup, par_engine_on, par_engine_mass, par_engine_initial, &
@@ -165,6 +167,7 @@ contains
       own = pack([(i, i = 1, pm%nloc)], owned)
       call par_loads_setup(model, g, rp, pm, loc, owned)   ! external loads (dx_par_loads)
       call par_rigid_setup(g, pm, owned)                   ! rigid bodies (dx_par_rigid)
+      if (allocated(g%contact)) call par_contact_setup(model, g, pm%node_global, owned)
       allocate(key_elem(size(g%blocks)*nv_chunk))
       key_elem = 0
       do k = 1, size(g%blocks)
@@ -226,11 +229,13 @@ contains
          type(rank_part_t) :: rpr
          type(error_t), allocatable :: err
          integer :: r, u, ios
+         integer, allocatable :: grp_ptr(:), grp_elem(:), gid(:)
          call log_info('dynx: no rank files in '//dir//' or '//deckdir//': partitioning '// &
                        deck//' into '//str(np)//' ranks (as dynx-part) in '//dir)
          if (np > model%ne) call par_abort(deck//': cannot split '//str(model%ne)// &
                                            ' elements into '//str(np)//' ranks', EXIT_INPUT)
-         call partition_model(model, np, [1], [integer ::], part, err)
+         call contact_groups(model, grp_ptr, grp_elem, gid)   ! contact pairs kept whole
+         call partition_model(model, np, grp_ptr, grp_elem, part, err)
          if (allocated(err)) call par_abort(err%message, err%code)
          call sys_mkdir_p(dir, err)
          if (allocated(err)) call par_abort(err%message, err%code)
@@ -244,6 +249,7 @@ contains
               iostat=ios)
          if (ios == 0) then
             call write_report(u, part, deck, hash)
+            call write_contact_report(u, part, grp_ptr, grp_elem, gid)
             close(u)
          end if
       end subroutine partition_here
@@ -257,8 +263,6 @@ contains
       what = ''
       if (allocated(model%rigid) .and. allocated(model%contact)) then
          what = '*MAT_RIGID / *CONSTRAINED_NODAL_RIGID_BODY (rigid bodies) with *CONTACT_...'
-      else if (allocated(model%contact)) then
-         what = '*CONTACT_... (contact)'
       else if (allocated(model%emc)) then
          what = '*DYNX_CONSERVING_CONTACT (the conserving rigid-body solver)'
       else if (model%rst%d3dump_cycl > 0 .or. model%rst%runrsf_cycl > 0) then
@@ -544,6 +548,7 @@ contains
    subroutine par_engine_report()
       real(wp) :: t(3), tavg(3)
       if (.not. on) return
+      call par_contact_report(g)
       t = [t_exch, t_dt, t_gath]
       tavg = t
       call par_allreduce(t, PAR_MAX)

@@ -29,9 +29,11 @@ module dx_explicit
    use dx_par_engine, only: par_engine_on, par_engine_fill, par_engine_dt, &
                             par_engine_exchange, par_engine_constraints, &
                             par_engine_energies, par_engine_initial, par_engine_output, &
-                            par_engine_fail, par_engine_mass, par_engine_mass_share
+                            par_engine_fail, par_engine_mass, par_engine_global, &
+                            par_engine_mass_share
    use dx_par_loads, only: par_loads_any, par_loads_shared, par_loads_work
    use dx_par_rigid, only: par_rigid_step
+   use dx_par_contact, only: par_contact_forces, par_contact_add, par_contact_work
    implicit none
    private
    public :: run_options_t, init_state, run_explicit
@@ -156,9 +158,15 @@ contains
          if (ibmin > 0) model%dt_elem = model%blocks(ibmin)%elem(iemin)
          if (allocated(model%rigid) .and. ibmin == 0 .and. .not. par) &
             dtcrit = model%rigid%dtcrit           ! MPI runs: in par_engine_dt
-         ! ---- contact forces (only when the deck has *CONTACT; serial runs)
-         if (allocated(model%contact)) call contact_forces(model, dt_old, dtcrit)
          if (par) call par_engine_dt(dtcrit, model%dt_elem)   ! global min, serial tie rule
+         ! ---- contact forces (only when the deck has *CONTACT; MPI runs: dx_par_contact)
+         if (allocated(model%contact)) then
+            if (par) then
+               call par_contact_forces(model, par_engine_global(), dt_old, dtcrit)
+            else
+               call contact_forces(model, dt_old, dtcrit)
+            end if
+         end if
          ! ---- external forces
          if (loads) then
             fext = 0.0_wp
@@ -167,6 +175,7 @@ contains
          end if
          ! ---- shared-node exchange (MPI runs): serial-order sums at shared nodes
          if (par) call par_engine_exchange(model%f)
+         if (par .and. allocated(model%contact)) call par_contact_add(model, par_engine_global())
          if (loads) model%f = model%f + fext
          ! ---- time step
          dt = model%ctrl%tssfac*dtcrit
@@ -220,7 +229,9 @@ contains
                wext = wext + dot_product(fext(:, i), 0.5_wp*dtavg*(vold(:, i) + model%v(:, i)))
             end do
          end if
-         if (allocated(model%contact)) then
+         if (allocated(model%contact) .and. par) then
+            call par_contact_work(model, par_engine_global(), dtavg, opts%outdir)
+         else if (allocated(model%contact)) then
             call contact_work(model, vold, dtavg, opts%outdir, ioerr)
             if (allocated(ioerr)) then
                call move_alloc(ioerr, error); call finish(model, out, ck, error); return

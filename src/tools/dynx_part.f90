@@ -11,9 +11,11 @@ program dynx_part
    use dx_model_input, only: model_input_t
    use dx_deck, only: read_deck_input
    use dx_model_build, only: build_model
+   use dx_contact_build, only: build_contact
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report
    use dx_rank_file, only: write_rank_file, read_rank_file, rank_file_name, deck_content_hash
    use dx_io_sys, only: sys_mkdir_p
+   use dx_par_contact, only: contact_groups, write_contact_report
    implicit none
    character(:), allocatable :: deck, outdir, arg, val
    type(model_input_t) :: inp
@@ -24,7 +26,7 @@ program dynx_part
    character(16) :: hash
    logical :: ignore_unknown, verify
    integer :: i, n, np, ios, r, u
-   integer, allocatable :: grp_ptr(:), grp_elem(:)
+   integer, allocatable :: grp_ptr(:), grp_elem(:), gid(:)
 
    np = 0
    outdir = '.'
@@ -62,6 +64,8 @@ program dynx_part
    model%deck_file = deck
    call build_model(inp, model, error)
    if (allocated(error)) call die(error)
+   call build_contact(inp, model, error)     ! the contact pairs (kept whole below)
+   if (allocated(error)) call die(error)
    call deck_content_hash(inp%files, hash, error)
    if (allocated(error)) call die(error)
    if (verify) then
@@ -75,12 +79,9 @@ program dynx_part
       call die(error)
    end if
 
-   ! element groups that must stay on one rank: none yet. The contact pairs of the deck
-   ! (*CONTACT_...) feed in here: one group per pair, the elements with a face on either
-   ! surface, face_elements(conn, nn, [master segments, slave segments], group) with the
-   ! connectivity from model_conn (dx_partition), appended to grp_ptr/grp_elem.
-   allocate(grp_ptr(1), grp_elem(0))
-   grp_ptr(1) = 1
+   ! element groups that must stay on one rank: one per local contact pair of the deck
+   ! (dx_par_contact: the elements with a face on either surface)
+   call contact_groups(model, grp_ptr, grp_elem, gid)
    call partition_model(model, np, grp_ptr, grp_elem, part, error)
    if (allocated(error)) call die(error)
 
@@ -93,12 +94,14 @@ program dynx_part
       if (allocated(error)) call die(error)
    end do
    call write_report(output_unit, part, deck, hash)
+   call write_contact_report(output_unit, part, grp_ptr, grp_elem, gid)
    open(newunit=u, file=outdir//'/partition.txt', status='replace', action='write', iostat=ios)
    if (ios /= 0) then
       call set_error(error, 'cannot write '//outdir//'/partition.txt', EXIT_IO)
       call die(error)
    end if
    call write_report(u, part, deck, hash)
+   call write_contact_report(u, part, grp_ptr, grp_elem, gid)
    close(u)
    call log_info('dynx-part: wrote '//str(np)//' rank files '//rank_file_name(outdir, 0)// &
                  ' ... and '//outdir//'/partition.txt')

@@ -1,0 +1,336 @@
+!> Contact in MPI runs (ParaDyn, issue 6; docs/design.md, "Parallel contact"). Only a deck with
+!> *CONTACT reaches any of this; every other MPI run allocates and calls nothing here.
+!>  - dynx-part and the engine's own partitioner condense each local contact pair (the
+!>    non-automatic *CONTACT_SURFACE_TO_SURFACE / NODES_TO_SURFACE / ONE_WAY interfaces) into
+!>    one super element (contact_groups: the elements with a face on either surface, or
+!>    holding a slave node of a node set), so a pair lands whole on one rank.
+!>  - The search and the forces are split by strips (dx_contact_strips): the slave nodes of
+!>    every pass are cut along their longest extent into NP strips of equal node count,
+!>    rebuilt with the bucket sort; rank r searches and computes strip r (pass_node).
+!>  - Each cycle the owners of the contact nodes gather x(n), v(n-1/2) of the contact nodes
+!>    into the global model, the strips compute their slave nodes' results, the results
+!>    are gathered (one ordered gather) and every rank adds all of them in the serial order
+!>    (interface, pass, slave node: pass_apply, the same code the serial run uses): the
+!>    contact forces, stiffness row sums, resultants and the contact step bound are the
+!>    serial ones bit for bit on every rank. The forces enter the rank's f after the
+!>    shared-node exchange (f = element sum + contact force, the serial order at every
+!>    node). After the velocity update v(n+1/2) of the contact nodes is gathered and the
+!>    serial contact_work (centred work, sliding energy, rcforc from rank 0) runs on the
+!>    global model.
+!> Strips: Hoover et al., ParaDyn, LLNL Engineering Thrust Area Report FY97 (article 4 of
+!> shared/seed); the serial algorithm: Hallquist, Goudreau & Benson 1985, CMAME 51:107-137.
+!> Module state (allowed in parallel/): the gather plans and local maps of the contact nodes.
+module dx_par_contact
+   use dx_kinds, only: wp
+   use dx_error, only: error_t
+   use dx_strings, only: str, rstr
+   use dx_log, only: log_info
+   use dx_model, only: model_t
+   use dx_contact, only: contact_search_nodes, contact_assemble, contact_dt, contact_work
+   use dx_contact_types, only: contact_set_t, NREC
+   use dx_contact_input, only: CT_SINGLE_SURFACE
+   use dx_partition, only: face_elements, model_conn, partition_t
+   use dx_par, only: par_rank, par_size, par_abort, par_allreduce, PAR_MAX, PAR_SUM, &
+                     gather_plan_t, par_gather_setup, par_gather_values, par_gather_ordered, &
+                     par_wtime
+   implicit none
+   private
+   public :: par_contact_setup, par_contact_forces, par_contact_add, par_contact_work, &
+             par_contact_report, contact_groups, write_contact_report
+
+   logical, save :: on = .false.
+   type(gather_plan_t), save :: plan_c              !< the owned contact nodes, by global id
+   integer, allocatable, save :: c_own(:)           !< local index of each owned contact node
+   integer, allocatable, save :: l_loc(:), l_glob(:)   !< held contact nodes: local, global
+   real(wp), allocatable, save :: cvold(:, :)       !< (3, nn global) v(n-1/2), contact nodes
+   real(wp), save :: t_cont = 0.0_wp, t_comm = 0.0_wp
+   integer, save :: ncycle = 0
+   integer(8), save :: nrec_sent = 0
+
+contains
+
+   !> Start of an MPI run with contact: g is the global model (serial numbering), model the
+   !> rank's sub-model (local nodes 1..nloc with global ids node_global, owned(i) if this
+   !> rank owns local node i). The contact state lives in g%contact from now on; model
+   !> keeps an empty contact set as the marker that the deck has contact.
+   subroutine par_contact_setup(model, g, node_global, owned)
+      type(model_t), intent(inout) :: model
+      type(model_t), intent(inout) :: g
+      integer, intent(in) :: node_global(:)
+      logical, intent(in) :: owned(:)
+      logical, allocatable :: isc(:)
+      integer :: i
+      if (.not. allocated(g%contact)) return
+      g%contact%nstrip = par_size()
+      g%contact%istrip = par_rank()
+      if (par_rank() /= 0) g%contact%rcforc_dt = 0.0_wp    ! rcforc: rank 0 writes it
+      allocate(isc(g%nn))
+      isc = .false.
+      isc(g%contact%node) = .true.
+      l_loc = pack([(i, i = 1, size(node_global))], isc(node_global))
+      l_glob = node_global(l_loc)
+      c_own = pack(l_loc, owned(l_loc))
+      call par_gather_setup(plan_c, node_global(c_own))
+      allocate(cvold(3, g%nn))
+      cvold = 0.0_wp
+      deallocate(model%contact)
+      allocate(model%contact)
+      on = .true.
+   end subroutine par_contact_setup
+
+   !> x(n) and v(n-1/2) of the contact nodes from their owners into g.
+   subroutine gather_xv(model, g)
+      type(model_t), intent(in) :: model
+      type(model_t), intent(inout) :: g
+      real(wp), allocatable :: vals(:, :), gv(:, :)
+      integer :: i
+      allocate(vals(6, size(c_own)), gv(6, size(plan_c%keys)))
+      do i = 1, size(c_own)
+         vals(1:3, i) = model%x(:, c_own(i))
+         vals(4:6, i) = model%v(:, c_own(i))
+      end do
+      call par_gather_values(plan_c, vals, gv)
+      g%x(:, plan_c%keys) = gv(1:3, :)
+      g%v(:, plan_c%keys) = gv(4:6, :)
+      cvold(:, plan_c%keys) = gv(4:6, :)    ! v(n-1/2) for the work (g%v is shared)
+   end subroutine gather_xv
+
+   !> The contact stage of an MPI run, before the shared-node exchange: search and results of
+   !> this rank's strips, the results gathered, all of them added in the serial order on the
+   !> global model, the contact step bound (dtcrit: the global element step on entry).
+   subroutine par_contact_forces(model, g, dt_old, dtcrit)
+      type(model_t), intent(in) :: model
+      type(model_t), intent(inout) :: g
+      real(wp), intent(in) :: dt_old
+      real(wp), intent(inout) :: dtcrit
+      real(wp) :: w2max, t0, t1
+      integer, allocatable :: keys(:), akeys(:)
+      real(wp), allocatable :: vals(:, :), avals(:, :)
+      integer :: i, j, k, n, off, q
+      t0 = par_wtime()
+      call gather_xv(model, g)
+      t1 = par_wtime()
+      t_comm = t_comm + (t1 - t0)
+      g%time = model%time
+      g%cycle = model%cycle
+      call contact_search_nodes(g, dt_old, dtcrit, w2max)
+      ! this strip's results (slave nodes near or in contact), keyed by serial position
+      associate (cs => g%contact)
+         n = 0
+         do i = 1, size(cs%iface)
+            if (g%time < cs%iface(i)%bt .or. g%time > cs%iface(i)%dt) cycle   ! inactive
+            do j = 1, size(cs%iface(i)%pass)
+               associate (p => cs%iface(i)%pass(j))
+                  n = n + count(p%mine .and. (p%rint(1, :) > 0 .or. p%rint(2, :) > 0))
+               end associate
+            end do
+         end do
+         allocate(keys(n), vals(NREC + 2, n))
+         n = 0
+         off = 0
+         do i = 1, size(cs%iface)
+            do j = 1, size(cs%iface(i)%pass)
+               associate (p => cs%iface(i)%pass(j))
+                  if (g%time >= cs%iface(i)%bt .and. g%time <= cs%iface(i)%dt) then
+                     do k = 1, p%nnode
+                        if (.not. p%mine(k)) cycle
+                        if (p%rint(1, k) == 0 .and. p%rint(2, k) == 0) cycle
+                        n = n + 1
+                        keys(n) = off + k
+                        vals(1:2, n) = real(p%rint(:, k), wp)
+                        vals(3:, n) = p%rval(:, k)
+                     end do
+                  end if
+                  off = off + p%nnode
+               end associate
+            end do
+         end do
+         nrec_sent = nrec_sent + n
+         t0 = par_wtime()
+         t_cont = t_cont + (t0 - t1)
+         call par_gather_ordered(keys, vals, akeys, avals)
+         t1 = par_wtime()
+         t_comm = t_comm + (t1 - t0)
+         ! every result into its slave node (the others: nothing to add)
+         q = 1
+         off = 0
+         do i = 1, size(cs%iface)
+            do j = 1, size(cs%iface(i)%pass)
+               associate (p => cs%iface(i)%pass(j))
+                  if (allocated(p%rint)) then
+                     do while (q <= size(akeys))
+                        if (akeys(q) > off + p%nnode) exit
+                        k = akeys(q) - off
+                        p%rint(:, k) = nint(avals(1:2, q))
+                        p%rval(:, k) = avals(3:, q)
+                        q = q + 1
+                     end do
+                  end if
+                  off = off + p%nnode
+               end associate
+            end do
+         end do
+      end associate
+      call contact_assemble(g, w2max, .false.)
+      ! the candidates' bound (w2pot) is this strip's: the largest over the strips
+      t0 = par_wtime()
+      t_cont = t_cont + (t0 - t1)
+      call par_allreduce(w2max, PAR_MAX)
+      t_comm = t_comm + (par_wtime() - t0)
+      call contact_dt(g%contact, w2max, dtcrit)
+      ncycle = ncycle + 1
+   end subroutine par_contact_forces
+
+   !> After the shared-node exchange: f = (element sum) + contact force at every held
+   !> contact node, as the serial contact_forces adds it.
+   subroutine par_contact_add(model, g)
+      type(model_t), intent(inout) :: model
+      type(model_t), intent(in) :: g
+      integer :: i
+      do i = 1, size(l_loc)
+         model%f(:, l_loc(i)) = model%f(:, l_loc(i)) + g%contact%fc(:, l_glob(i))
+      end do
+   end subroutine par_contact_add
+
+   !> After the velocity update: v(n+1/2) of the contact nodes gathered, then the serial
+   !> contact_work on the global model (work, sliding energy; rcforc from rank 0).
+   subroutine par_contact_work(model, g, dtavg, outdir)
+      type(model_t), intent(inout) :: model
+      type(model_t), intent(inout) :: g
+      real(wp), intent(in) :: dtavg
+      character(*), intent(in) :: outdir
+      type(error_t), allocatable :: error
+      real(wp), allocatable :: vals(:, :), gv(:, :)
+      integer :: i
+      real(wp) :: t0
+      t0 = par_wtime()
+      allocate(vals(3, size(c_own)), gv(3, size(plan_c%keys)))
+      do i = 1, size(c_own)
+         vals(:, i) = model%v(:, c_own(i))
+      end do
+      call par_gather_values(plan_c, vals, gv)
+      g%v(:, plan_c%keys) = gv
+      t_comm = t_comm + (par_wtime() - t0)
+      call contact_work(g, cvold, dtavg, outdir, error)
+      if (allocated(error)) call par_abort(error%message, error%code)   ! rank 0 alone
+      model%energy%sliding = g%energy%sliding
+   end subroutine par_contact_work
+
+   !> End of the run (rank 0 logs): contact time per cycle and the slave nodes per strip.
+   subroutine par_contact_report(g)
+      type(model_t), intent(in) :: g
+      real(wp) :: t(4), tm(4)
+      integer, allocatable :: cnt(:)
+      integer :: i, j, np
+      character(:), allocatable :: line
+      if (.not. on) return
+      np = par_size()
+      t = [t_cont, t_comm, g%contact%t_search, g%contact%t_force - g%contact%t_search]/ &
+          real(max(1, ncycle), wp)
+      tm = t
+      call par_allreduce(tm, PAR_MAX)
+      call par_allreduce(t, PAR_SUM)
+      t = t/real(np, wp)
+      call log_info('dynx: MPI contact: '//str(ncycle)//' cycles, per cycle: search + '// &
+         'forces '//rstr(1.0e6_wp*t(1), 4)//' us (max over ranks '//rstr(1.0e6_wp*tm(1), 4)// &
+         '), contact communication '//rstr(1.0e6_wp*t(2), 4)//' us (max '// &
+         rstr(1.0e6_wp*tm(2), 4)//'); of search + forces: bucket sorts and strips '// &
+         rstr(1.0e6_wp*t(3), 4)//' us (max '//rstr(1.0e6_wp*tm(3), 4)//'), local search, '// &
+         'forces and assembly '//rstr(1.0e6_wp*t(4), 4)//' us (max '// &
+         rstr(1.0e6_wp*tm(4), 4)//'); means over the ranks')
+      allocate(cnt(0:np - 1))
+      associate (cs => g%contact)
+         do i = 1, size(cs%iface)
+            do j = 1, size(cs%iface(i)%pass)
+               associate (p => cs%iface(i)%pass(j))
+                  cnt = 0
+                  if (allocated(p%mine)) cnt(par_rank()) = count(p%mine)
+                  call par_allreduce(cnt, PAR_SUM)
+                  line = 'dynx: MPI contact: interface '//str(cs%iface(i)%label)//' pass '// &
+                         str(j)//': slave nodes per strip (last sort, axis '// &
+                         str(p%strip_axis)//'):'
+                  do np = 0, size(cnt) - 1
+                     line = line//' '//str(cnt(np))
+                  end do
+                  call log_info(line)
+               end associate
+            end do
+         end do
+      end associate
+   end subroutine par_contact_report
+
+   !> Element groups that must stay on one rank: one per local contact pair (interfaces
+   !> neither AUTOMATIC_ nor SINGLE_SURFACE), the elements with a face on one of its
+   !> surfaces (face_elements) or holding one of its slave nodes (node-set slaves). CSR:
+   !> group g = grp_elem(grp_ptr(g):grp_ptr(g+1)-1); gid(g) the interface's label. Empty
+   !> (grp_ptr = [1]) for a deck without such pairs.
+   subroutine contact_groups(model, grp_ptr, grp_elem, gid)
+      type(model_t), intent(in) :: model
+      integer, allocatable, intent(out) :: grp_ptr(:), grp_elem(:), gid(:)
+      integer, allocatable :: conn(:, :), seg(:, :), elems(:)
+      logical, allocatable :: take(:), slave(:)
+      integer :: i, j, e, ng
+      allocate(grp_ptr(1), grp_elem(0), gid(0))
+      grp_ptr(1) = 1
+      if (.not. allocated(model%contact)) return
+      call model_conn(model, conn)
+      ng = 0
+      do i = 1, size(model%contact%iface)
+         associate (f => model%contact%iface(i))
+            if (f%kind == CT_SINGLE_SURFACE) cycle
+            if (index(f%name, 'AUTOMATIC') > 0) cycle
+            allocate(seg(4, 0), take(model%ne), slave(model%nn))
+            take = .false.
+            slave = .false.
+            do j = 1, size(f%pass)
+               associate (p => f%pass(j))
+                  seg = reshape([seg, p%seg(:, 1:p%nseg)], [4, size(seg, 2) + p%nseg])
+                  if (p%nsseg > 0) then
+                     seg = reshape([seg, p%sseg(:, 1:p%nsseg)], [4, size(seg, 2) + p%nsseg])
+                  else
+                     slave(p%node) = .true.
+                  end if
+               end associate
+            end do
+            call face_elements(conn, model%nn, seg, elems)
+            take(elems) = .true.
+            if (any(slave)) then
+               do e = 1, model%ne
+                  if (any(slave(conn(:, e)))) take(e) = .true.
+               end do
+            end if
+            elems = pack([(e, e = 1, model%ne)], take)
+            deallocate(seg, take, slave)
+            if (size(elems) == 0) cycle
+            ng = ng + 1
+            grp_elem = [grp_elem, elems]
+            grp_ptr = [grp_ptr, size(grp_elem) + 1]
+            gid = [gid, f%label]
+         end associate
+      end do
+   end subroutine contact_groups
+
+   !> Partition report, contact part: where each local contact pair went.
+   subroutine write_contact_report(unit, part, grp_ptr, grp_elem, gid)
+      integer, intent(in) :: unit
+      type(partition_t), intent(in) :: part
+      integer, intent(in) :: grp_ptr(:), grp_elem(:), gid(:)
+      integer :: k, r1, r2, w
+      if (size(gid) == 0) return
+      write(unit, '(a)') 'contact pairs kept whole (one super element each):'
+      write(unit, '(a)') '  contact   elements     weight   rank(s)'
+      do k = 1, size(gid)
+         associate (el => grp_elem(grp_ptr(k):grp_ptr(k + 1) - 1))
+            r1 = minval(part%epart(el))
+            r2 = maxval(part%epart(el))
+            w = sum(part%ewgt(el))
+            if (r1 == r2) then
+               write(unit, '(i9,2i11,3x,i0)') gid(k), size(el), w, r1
+            else
+               write(unit, '(i9,2i11,3x,i0,a,i0,a)') gid(k), size(el), w, r1, '..', r2, &
+                  '  (split: pairs that share elements are merged)'
+            end if
+         end associate
+      end do
+   end subroutine write_contact_report
+end module dx_par_contact
