@@ -40,6 +40,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer, allocatable :: elems(:), hex(:, :), eids(:), pids(:), l2g(:)
       integer :: i, b, j, e, stamp, imat
+      integer(8) :: clk
       character(:), allocatable :: title
       dir = outdir
       own = owned_nodes
@@ -61,9 +62,12 @@ contains
          eids(i) = g%elem_label(e)
          pids(i) = g%parts(g%elem_part(e))%label
       end do
-      ! one stamp for all parts of this run: rank 0's clock
+      ! one stamp for all parts of this run: rank 0's clock (seconds and the fine counter)
       stamp = 0
-      if (par_rank() == 0) stamp = int(modulo(sys_epoch_seconds(), 2147483647_8))
+      if (par_rank() == 0) then
+         call system_clock(count=clk)
+         stamp = int(modulo(sys_epoch_seconds()*1000003_8 + clk, 2147483647_8))
+      end if
       call par_allreduce(stamp, PAR_MAX)
       title = ''
       if (allocated(g%title)) title = g%title
