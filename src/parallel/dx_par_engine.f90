@@ -85,7 +85,6 @@ contains
       type(model_t), intent(inout) :: model
       character(*), intent(in) :: deck, outdir, partdir
       type(error_t), allocatable, intent(out) :: error
-      type(model_input_t) :: inp
       type(rank_part_t) :: rp
       character(16) :: hash
       character(:), allocatable :: dir, deckdir
@@ -98,9 +97,7 @@ contains
       call unsupported(model, error)
       if (allocated(error)) return
       if (me > 0) call log_set_quiet(.true.)
-      call read_deck_input(deck, inp, error)
-      if (allocated(error)) return
-      call deck_content_hash(inp%files, hash, error)
+      call deck_hash(deck, hash, error)    ! the parsed cards are freed on return
       if (allocated(error)) return
       k = index(deck, '/', back=.true.)
       deckdir = '.'
@@ -230,6 +227,18 @@ contains
       end do
       on = .true.
    contains
+      !> The deck's content hash (every file it reads), as dynx-part records it.
+      subroutine deck_hash(deck, hash, error)
+         character(*), intent(in) :: deck
+         character(16), intent(out) :: hash
+         type(error_t), allocatable, intent(out) :: error
+         type(model_input_t) :: inp
+         hash = ''
+         call read_deck_input(deck, inp, error)
+         if (allocated(error)) return
+         call deck_content_hash(inp%files, hash, error)
+      end subroutine deck_hash
+
       !> Rank 0 only: partition the deck into dir as `dynx-part deck -n np -o dir` would.
       subroutine partition_here(model, np, hash, deck, dir)
          type(model_t), intent(in) :: model
