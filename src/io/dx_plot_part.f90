@@ -16,7 +16,7 @@
 !> Engineering Thrust Area Report FY97 (article 4 of shared/seed). No MPI here: the engine
 !> (dx_par_plot) passes the rank's data in.
 module dx_plot_part
-   use dx_kinds, only: wp, i8
+   use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_IO
    use dx_strings, only: str
    use dx_h5, only: h5_file_t, h5_create, h5_open_read, h5_open_rw, h5_close, h5_flush, &
@@ -230,7 +230,7 @@ contains
       character(:), allocatable :: title, t0
       real(wp), allocatable :: times(:), t(:), buf(:), x0(:, :), x(:, :), v(:, :), &
                                stress(:, :), vm(:), pres(:), epsp(:)
-      integer, allocatable :: nodes(:, :), elems(:, :), cnt_n(:), cnt_e(:), node_ids(:), &
+      integer, allocatable :: cnt_n(:), cnt_e(:), node_ids(:), &
                               hex(:, :), elem_ids(:), part_ids(:), failed(:)
       type :: idx_t
          integer, allocatable :: n(:), e(:)
