@@ -431,9 +431,12 @@ contains
    end subroutine par_engine_plot
 
    !> End of an MPI run, normal or not (every rank): part files closed, rank 0 combines
-   !> them into d3plot.h5 + d3plot.xdmf. Call after rank 0 closed its output.
-   subroutine par_engine_plot_finish(error)
+   !> them into d3plot.h5 + d3plot.xdmf. Call after rank 0 closed its output. failure:
+   !> every rank stops on a failure it knows (it then exits without MPI_Abort).
+   subroutine par_engine_plot_finish(error, failure)
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: failure
+      if (present(failure)) together = together .or. failure
       call par_plot_finish(error)
    end subroutine par_engine_plot_finish
 

@@ -423,7 +423,7 @@ contains
       if (allocated(model%rigid)) call rigid_close(model%rigid)
       if (writer) call out%close(ioerr)
       if (allocated(ioerr)) deallocate(ioerr)
-      if (par_engine_on()) call par_engine_plot_finish(ioerr)   ! rank 0 combines
+      if (par_engine_on()) call par_engine_plot_finish(ioerr, failure=.true.)   ! rank 0 combines
       if (allocated(ioerr) .and. allocated(error)) error%message = error%message// &
          new_line('a')//'dynx: combining the plot files failed: '//ioerr%message
       if (allocated(error)) error%message = error%message//new_line('a')// &
