@@ -40,6 +40,7 @@ module dx_plot_part
       integer :: nown = 0, nel = 0
    contains
       procedure :: open => part_open
+      procedure :: resume => part_resume
       procedure :: write_state => part_write_state
       procedure :: close => part_close
    end type plot_part_t
@@ -122,6 +123,20 @@ contains
       end block work
       if (allocated(error)) call h5_close(self%h5, err2)
    end subroutine part_open
+
+   !> Continue rank's existing part file in dir after its first nkeep states (a restart):
+   !> later states are removed (plot_part_truncate), then the file is reopened for writing.
+   subroutine part_resume(self, dir, rank, nkeep, error)
+      class(plot_part_t), intent(inout) :: self
+      character(*), intent(in) :: dir
+      integer, intent(in) :: rank, nkeep
+      type(error_t), allocatable, intent(out) :: error
+      call plot_part_truncate(dir, rank, nkeep, error)
+      if (allocated(error)) return
+      call h5_open_rw(self%h5, plot_part_name(dir, rank), error)
+      if (allocated(error)) return
+      self%nstates = nkeep
+   end subroutine part_resume
 
    !> Append one state: x, v (3, nown) of the owned nodes; stress (6, nel) averaged over the
    !> integration points, eff_plastic_strain and failed (nel) of the held elements. The

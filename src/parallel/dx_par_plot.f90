@@ -4,6 +4,8 @@
 !> combines the parts into d3plot.h5 + d3plot.xdmf, equal to the serial run's files.
 !> Per-processor plot files merged after the run: ParaDyn (Hoover et al., LLNL Engineering
 !> Thrust Area Report FY97, article 4 of shared/seed).
+!> The part file is created at the first plot state (from the mesh kept by par_plot_setup),
+!> or continued by par_plot_resume (a restart: states after the dump removed).
 !> Module state (allowed in parallel/): the rank's part file and its node/element maps.
 module dx_par_plot
    use dx_kinds, only: wp
@@ -17,7 +19,8 @@ module dx_par_plot
    use dx_plot_part, only: plot_part_t, plot_combine
    implicit none
    private
-   public :: par_plot_setup, par_plot_write, par_plot_finish, par_plot_nstates
+   public :: par_plot_setup, par_plot_write, par_plot_finish, par_plot_nstates, &
+             par_plot_resume
 
    type(plot_part_t), save :: part
    character(:), allocatable, save :: dir
@@ -25,10 +28,16 @@ module dx_par_plot
    integer, allocatable, save :: eloc(:, :)      !< (2, nel): block and position of each element
    integer, allocatable, save :: khv(:)          !< per block: history index of eff. plastic strain
    logical, save :: finished = .false.
+   !> the part's mesh until the file is created (first state): nodes, labels, elements
+   integer, allocatable, save :: m_nodes(:), m_nids(:), m_elems(:), m_hex(:, :), m_eids(:), &
+                                 m_pids(:)
+   real(wp), allocatable, save :: m_x0(:, :)
+   integer, save :: m_stamp = 0, m_nn = 0, m_ne = 0
+   character(:), allocatable, save :: m_title
 
 contains
 
-   !> Create this rank's part file in outdir with its mesh. node_global(l) is the global
+   !> Prepare this rank's part file in outdir (created at the first state). node_global(l) is the global
    !> node of local node l <= nloc; slot node nloc + s stands for local node slot_node(s);
    !> own are the owned local nodes; elem_loc(:, i) = (block, position) of the rank's
    !> elements. g is the global model (labels, parts, title).
@@ -73,10 +82,40 @@ contains
       if (allocated(g%title)) title = g%title
       call sys_mkdir_p(dir, error)
       if (allocated(error)) return
-      call part%open(dir, par_rank(), par_size(), stamp, title, g%nn, g%ne, &
-                     node_global(own), model%x0(:, own), model%node_label(own), elems, hex, &
-                     eids, pids, error)
+      m_stamp = stamp
+      m_title = title
+      m_nn = g%nn
+      m_ne = g%ne
+      m_nodes = node_global(own)
+      m_x0 = model%x0(:, own)
+      m_nids = model%node_label(own)
+      call move_alloc(elems, m_elems)
+      call move_alloc(hex, m_hex)
+      call move_alloc(eids, m_eids)
+      call move_alloc(pids, m_pids)
    end subroutine par_plot_setup
+
+   !> Create the part file with its mesh (at the first state); the kept mesh is freed.
+   subroutine create_part(error)
+      type(error_t), allocatable, intent(out) :: error
+      call part%open(dir, par_rank(), par_size(), m_stamp, m_title, m_nn, m_ne, m_nodes, &
+                     m_x0, m_nids, m_elems, m_hex, m_eids, m_pids, error)
+      call free_mesh()
+   end subroutine create_part
+
+   subroutine free_mesh()
+      if (allocated(m_nodes)) deallocate(m_nodes, m_x0, m_nids, m_elems, m_hex, m_eids, m_pids)
+   end subroutine free_mesh
+
+   !> A restart of an MPI run: continue this rank's part after its first nkeep states (the
+   !> dump's plot-state count); states written after the dump are removed
+   !> (dx_plot_part: plot_part_truncate). Every rank calls it, before the first state.
+   subroutine par_plot_resume(nkeep, error)
+      integer, intent(in) :: nkeep
+      type(error_t), allocatable, intent(out) :: error
+      call part%resume(dir, par_rank(), nkeep, error)
+      call free_mesh()
+   end subroutine par_plot_resume
 
    !> Append the rank's part of the plot state at model%time (no communication).
    subroutine par_plot_write(model, error)
@@ -85,6 +124,10 @@ contains
       real(wp), allocatable :: stress(:, :), epsp(:)
       integer, allocatable :: failed(:)
       integer :: i, b
+      if (.not. part%h5%is_open()) then
+         call create_part(error)
+         if (allocated(error)) return
+      end if
       allocate(stress(6, size(eloc, 2)), epsp(size(eloc, 2)), failed(size(eloc, 2)))
       do i = 1, size(eloc, 2)
          b = eloc(1, i)

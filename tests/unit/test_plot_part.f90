@@ -45,6 +45,25 @@ program test_plot_part
       deallocate(error)
    end if
 
+   write(*, '(a)') 'resume'
+   block
+      type(plot_part_t) :: p
+      integer, allocatable :: nd(:)
+      nd = [(i, i = 1, 8)]
+      call p%resume(TMP, 0, 2, error)
+      call check(.not. allocated(error) .and. p%nstates == 2, 'rank 0 resumed after 2 states')
+      call p%write_state(1.0_wp, x0(:, nd) + spread([1.0_wp, 2.0_wp, 3.0_wp], 2, 8), &
+                         spread([-1.0_wp, 0.0_wp, 0.0_wp], 2, 8), &
+                         reshape([300.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], [6, 1]), &
+                         [0.03_wp], [0], error)
+      call check(.not. allocated(error) .and. p%nstates == 3, 'state 3 written again')
+      call p%close(error)
+      call plot_part_truncate(TMP, 1, 2, error)   ! rank 1 is at 2 already: no change
+      call check(.not. allocated(error), 'cut to its own count is a no-op')
+      call plot_combine(TMP, n, error)
+      call check(.not. allocated(error) .and. n == 2, 'combine: 3 and 2 states give 2')
+   end block
+
    write(*, '(a)') 'combine errors'
    call write_parts(TMP//'/other', 2, 778)
    call copy_part(TMP//'/other', TMP, 1)
