@@ -5,13 +5,14 @@
 !> Exit codes: 0 done, 2 usage error, 4 I/O error (a missing, unreadable or foreign part).
 program dynx_combine
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
-   use dx_error, only: error_t, EXIT_INPUT, exit_process
+   use dx_error, only: error_t, EXIT_INPUT, EXIT_IO, exit_process
    use dx_strings, only: str
-   use dx_plot_part, only: plot_combine
+   use dx_plot_part, only: plot_combine, plot_part_name
    implicit none
    character(:), allocatable :: dir, arg
    type(error_t), allocatable :: error
    integer :: n, l, i, nst
+   logical :: there
 
    dir = ''
    n = command_argument_count()
@@ -36,6 +37,13 @@ program dynx_combine
       write(error_unit, '(a)') 'dynx-combine: error: no output directory given'
       write(error_unit, '(a)') 'dynx-combine: try dynx-combine --help'
       call exit_process(EXIT_INPUT)
+   end if
+   inquire(file=plot_part_name(dir, 0), exist=there)
+   if (.not. there) then
+      write(error_unit, '(a)') 'dynx-combine: error: '//plot_part_name(dir, 0)// &
+         ' does not exist: '//dir//' holds no per-rank plot files (not the output of an '// &
+         'MPI run, or a serial run''s d3plot.h5 is already complete)'
+      call exit_process(EXIT_IO)
    end if
    call plot_combine(dir, nst, error)
    if (allocated(error)) then
