@@ -82,7 +82,7 @@ bin/dynx-%: build/release/dynx_%.o build/release/libdynx.a | bin
 	$(FC) $(REL_FLAGS) -o $@ $^ $(LIBS)
 
 UNIT_TESTS := $(patsubst tests/unit/%.f90,build/debug/tests/%,$(filter tests/unit/test_%,$(TEST_SRC)))
-MPI_TESTS := build/debug/tests/mpi_par_test build/debug/tests/mpi_par_model_test
+MPI_TESTS := build/debug/tests/mpi_par_test build/debug/tests/mpi_par_model_test build/debug/tests/mpi_fail_test
 MPI_BENCH := build/release/bench/mpi_shared_bench
 build/release/bench/%: build/release/%.o build/release/libdynx.a
 	@mkdir -p build/release/bench
@@ -129,6 +129,7 @@ bench: deps
 	@sh scripts/bench_shared_sum.sh
 	@sh scripts/bench_contact.sh
 	@sh scripts/bench_mpi.sh
+	@sh scripts/bench_mpi_memory.sh
 
 studies: deps
 	@$(MAKE) --no-print-directory all

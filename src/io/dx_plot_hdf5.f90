@@ -12,7 +12,7 @@
 module dx_plot_hdf5
    use dx_kinds, only: wp
    use dx_error, only: error_t
-   use dx_model, only: model_t
+   use dx_model, only: model_t, elem_block_t
    use dx_h5, only: h5_file_t, h5_create, h5_close, h5_flush, h5_create_group, h5_write, &
                     h5_write_attr, h5_create_extendible, h5_append, h5_open_rw, h5_read, &
                     h5_read_attr, h5_exists, h5_delete, h5_set_extent
@@ -22,7 +22,7 @@ module dx_plot_hdf5
    use dx_xdmf, only: xdmf_write, state_group
    implicit none
    private
-   public :: plot_file_t, element_results
+   public :: plot_file_t, element_results, stress_invariants, element_average
 
    character(*), parameter :: H5NAME = 'd3plot.h5', XMFNAME = 'd3plot.xdmf'
 
@@ -183,8 +183,7 @@ contains
       type(model_t), intent(in) :: model
       real(wp), intent(out) :: stress(:, :), vm(:), pres(:), epsp(:)
       integer, intent(out) :: failed(:)
-      integer :: ib, i, e, ip, k, imat
-      real(wp) :: s(6)
+      integer :: ib, i, e, k, imat
 
       stress = 0.0_wp
       epsp = 0.0_wp
@@ -199,30 +198,56 @@ contains
                      if (allocated(model%mats(imat)%m)) k = model%mats(imat)%m%hv_eps_p
                   end if
                end if
-               if (k > blk%nhv .or. .not. allocated(blk%hv)) k = 0
                do i = 1, blk%nel
                   e = blk%elem(i)
-                  if (allocated(blk%sig)) then
-                     do ip = 1, blk%nip
-                        stress(:, e) = stress(:, e) + blk%sig(i, :, ip)
-                     end do
-                     stress(:, e) = stress(:, e)/real(blk%nip, wp)
-                  end if
-                  if (k > 0) epsp(e) = sum(blk%hv(i, k, 1:blk%nip))/real(blk%nip, wp)
-                  if (allocated(blk%failed)) then
-                     if (blk%failed(i)) failed(e) = 1
-                  end if
+                  call element_average(blk, i, k, stress(:, e), epsp(e), failed(e))
                end do
             end associate
          end do
       end if
+      call stress_invariants(stress, vm, pres)
+   end subroutine element_results
+
+   !> Von Mises stress and pressure -(xx + yy + zz)/3 of averaged stresses (6, ne); the one
+   !> place this arithmetic lives, so a combined MPI plot file (dx_plot_part) has the bits
+   !> of the serial one.
+   subroutine stress_invariants(stress, vm, pres)
+      real(wp), intent(in) :: stress(:, :)
+      real(wp), intent(out) :: vm(:), pres(:)
+      real(wp) :: s(6)
+      integer :: e
       do e = 1, size(vm)
          s = stress(:, e)
          vm(e) = sqrt(max(0.0_wp, 0.5_wp*((s(1) - s(2))**2 + (s(2) - s(3))**2 &
                  + (s(3) - s(1))**2) + 3.0_wp*(s(4)**2 + s(5)**2 + s(6)**2)))
          pres(e) = -(s(1) + s(2) + s(3))/3.0_wp
       end do
-   end subroutine element_results
+   end subroutine stress_invariants
+
+   !> One element's plot values: stress averaged over its integration points, the average
+   !> of history variable k (hv_eps_p; 0 = none) and the failed flag (1 = eroded). Shared by
+   !> the serial writer and the per-rank MPI writer (dx_plot_part), so both give the same bits.
+   subroutine element_average(blk, i, k, stress, epsp, failed)
+      type(elem_block_t), intent(in) :: blk
+      integer, intent(in) :: i, k
+      real(wp), intent(out) :: stress(6), epsp
+      integer, intent(out) :: failed
+      integer :: ip
+      stress = 0.0_wp
+      epsp = 0.0_wp
+      failed = 0
+      if (allocated(blk%sig)) then
+         do ip = 1, blk%nip
+            stress = stress + blk%sig(i, :, ip)
+         end do
+         stress = stress/real(blk%nip, wp)
+      end if
+      if (k > 0 .and. k <= blk%nhv .and. allocated(blk%hv)) &
+         epsp = sum(blk%hv(i, k, 1:blk%nip))/real(blk%nip, wp)
+      if (allocated(blk%failed)) then
+         if (blk%failed(i)) failed = 1
+      end if
+   end subroutine element_average
 
    !> Write one plot state at model%time (see the module header for the order of writes).
    subroutine plot_write_state(self, model, error)

@@ -18,7 +18,8 @@ program dynx
    use dx_timer, only: wall_time
    use dx_emc_solver, only: run_emc
    use dx_par, only: par_init, par_finalize, par_size, par_rank, par_abort
-   use dx_par_engine, only: par_engine_setup, par_engine_global, par_engine_report
+   use dx_par_engine, only: par_engine_setup, par_engine_global, par_engine_report, &
+                            par_engine_together
    implicit none
    character(:), allocatable :: deck, outdir, arg, val, rfile, rdeck, partdir
    type(model_t) :: model
@@ -247,8 +248,11 @@ contains
 
    subroutine die(err)
       type(error_t), intent(in) :: err
-      if (par_size() > 1) call par_abort(err%message, err%code)   ! stops every rank
-      call log_error(err%message)
+      ! a failure every rank knows (it wrote the last plot state): rank 0 reports, all exit
+      ! with the code; any other failure on one rank stops every rank (MPI_Abort)
+      if (par_size() > 1 .and. .not. par_engine_together()) call par_abort(err%message, err%code)
+      if (par_rank() == 0) call log_error(err%message)
+      call par_finalize()
       call exit_process(err%code)
    end subroutine die
 end program dynx

@@ -25,7 +25,7 @@ module dx_par
              par_allreduce, par_abort, shared_sum_t, par_shared_setup, par_shared_sum, &
              par_shared_sum_plain, par_wtime, par_minloc, par_gather_ordered, PAR_SUM, &
              gather_plan_t, par_gather_setup, par_gather_values, &
-             PAR_MIN, PAR_MAX
+             PAR_MIN, PAR_MAX, par_bcast_text
 
    integer, parameter :: PAR_SUM = 1, PAR_MIN = 2, PAR_MAX = 3
    integer, parameter :: TAG_COUNT = 101, TAG_KEYS = 102, TAG_VALUES = 103
@@ -451,6 +451,29 @@ contains
       if (.not. own_added) res(:, 1:plan%nshared) = res(:, 1:plan%nshared) + &
                                                     partial(:, 1:plan%nshared)
    end subroutine par_shared_sum_plain
+
+   !> Broadcast a message and an integer code from rank root (a failure found on one rank,
+   !> made known to all: dx_par_engine). On the other ranks text is replaced.
+   subroutine par_bcast_text(text, code, root)
+      character(:), allocatable, intent(inout) :: text
+      integer, intent(inout) :: code
+      integer, intent(in) :: root
+      integer :: n(2), ierr
+      if (.not. mpi_on) return
+      n = 0
+      if (my_rank == root) n = [len(text), code]
+      call MPI_Bcast(n, 2, MPI_INTEGER, root, comm, ierr)
+      call check(ierr, 'MPI_Bcast (failure message length)')
+      if (my_rank /= root) then
+         if (allocated(text)) deallocate(text)
+         allocate(character(n(1)) :: text)
+      end if
+      code = n(2)
+      if (n(1) > 0) then
+         call MPI_Bcast(text, n(1), MPI_CHARACTER, root, comm, ierr)
+         call check(ierr, 'MPI_Bcast (failure message)')
+      end if
+   end subroutine par_bcast_text
 
    !> The global minimum of x and, among ranks holding it, the lowest key (the serial loop's
    !> first minimum): for the stable time step and its controlling element. key < 2**53.

@@ -10,8 +10,12 @@
 !> the model held here, and the serial procedures (dx_energy_sums, apply_rigidwalls) run on
 !> it, so they add the same numbers in the same order with the same code: the parallel run
 !> reproduces the serial one bit for bit (NP = 1..4 regression cases, zero tolerance).
-!> Output: at output times the nodal and element state is gathered into the global model and
-!> rank 0 writes glstat, nodout and d3plot.h5 + d3plot.xdmf exactly as a serial run does.
+!> Output: glstat and nodout are written by rank 0 from the nodal state gathered into the
+!> global model; plot states are written by every rank into its own part file (dx_par_plot,
+!> no gather) and combined by rank 0 at the end into the serial d3plot.h5 + d3plot.xdmf.
+!> Failures: a failure on one rank (negative volume, NaN) is kept and folded into the next
+!> dt MINLOC (dt = -1, key = the rank), so every rank learns it at no extra cost, receives
+!> the message, writes the last plot state and stops with the serial run's exit code.
 !> Fixed-order sums: the idea of OpenRadioss /PARITH/ON; single exchange per cycle: ParaDyn
 !> (Hoover et al., LLNL Engineering Thrust Area Report FY97, article 4 of shared/seed).
 !> Module state (allowed in parallel/): the global model, the rank's plan and maps.
@@ -25,7 +29,7 @@ module dx_par_engine
    use dx_deck, only: read_deck_input
    use dx_par, only: par_rank, par_size, par_abort, par_minloc, par_gather_ordered, &
                      par_allreduce, par_barrier, PAR_MAX, gather_plan_t, par_gather_setup, &
-                     par_gather_values, par_wtime, PAR_SUM
+                     par_gather_values, par_wtime, PAR_SUM, par_bcast_text
    use dx_par_model, only: par_model_t, par_model_build, par_fill_slots, par_exchange_forces, &
                            par_exchange_mass
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report
@@ -39,12 +43,15 @@ module dx_par_engine
    use dx_par_rigid, only: par_rigid_setup
    use dx_par_contact, only: par_contact_setup, par_contact_report, contact_groups, &
                              write_contact_report
+   use dx_par_plot, only: par_plot_setup, par_plot_write, par_plot_finish
    implicit none
    private
    public :: par_engine_setup, par_engine_on, par_engine_mass, par_engine_initial, &
              par_engine_fill, par_engine_dt, par_engine_exchange, par_engine_constraints, &
              par_engine_energies, par_engine_output, par_engine_fail, &
-             par_engine_global, par_engine_report, par_engine_mass_share
+             par_engine_global, par_engine_report, par_engine_mass_share, par_engine_defer, &
+             par_engine_pending, par_engine_sync_failure, par_engine_plot, &
+             par_engine_plot_finish, par_engine_together, par_engine_writer
 
    logical, save :: on = .false.
    type(model_t), target, save :: g                  !< the global model (serial numbering)
@@ -65,6 +72,8 @@ module dx_par_engine
    real(wp), save :: buf_dt(2, NBUF_MAX)              !< dt, dtavg of the kept cycles
    !> wall time in the force exchange, the dt reduction, the ordered gathers (sums, output)
    real(wp), save :: t_exch = 0.0_wp, t_dt = 0.0_wp, t_gath = 0.0_wp
+   type(error_t), allocatable, save :: pending     !< a failure found here, not yet known to all
+   logical, save :: together = .false.             !< a failure every rank knows (clean stop)
 
 contains
 
@@ -81,7 +90,6 @@ contains
       type(model_t), intent(inout) :: model
       character(*), intent(in) :: deck, outdir, partdir
       type(error_t), allocatable, intent(out) :: error
-      type(model_input_t) :: inp
       type(rank_part_t) :: rp
       character(16) :: hash
       character(:), allocatable :: dir, deckdir
@@ -94,9 +102,7 @@ contains
       call unsupported(model, error)
       if (allocated(error)) return
       if (me > 0) call log_set_quiet(.true.)
-      call read_deck_input(deck, inp, error)
-      if (allocated(error)) return
-      call deck_content_hash(inp%files, hash, error)
+      call deck_hash(deck, hash, error)    ! the parsed cards are freed on return
       if (allocated(error)) return
       k = index(deck, '/', back=.true.)
       deckdir = '.'
@@ -218,8 +224,29 @@ contains
          end do
          call par_gather_setup(plan_elem, ek)
       end block
+      ! plot states: each rank its own part file (no element data in g any more)
+      call par_plot_setup(model, g, pm%nloc, pm%node_global, pm%slot_node, own, elem_loc, &
+                          outdir, error)
+      if (allocated(error)) call par_abort(error%message, error%code)
+      do k = 1, size(g%blocks)
+         if (allocated(g%blocks(k)%sig)) deallocate(g%blocks(k)%sig)
+         if (allocated(g%blocks(k)%hv)) deallocate(g%blocks(k)%hv)
+         if (allocated(g%blocks(k)%hgs)) deallocate(g%blocks(k)%hgs)
+      end do
       on = .true.
    contains
+      !> The deck's content hash (every file it reads), as dynx-part records it.
+      subroutine deck_hash(deck, hash, error)
+         character(*), intent(in) :: deck
+         character(16), intent(out) :: hash
+         type(error_t), allocatable, intent(out) :: error
+         type(model_input_t) :: inp
+         hash = ''
+         call read_deck_input(deck, inp, error)
+         if (allocated(error)) return
+         call deck_content_hash(inp%files, hash, error)
+      end subroutine deck_hash
+
       !> Rank 0 only: partition the deck into dir as `dynx-part deck -n np -o dir` would.
       subroutine partition_here(model, np, hash, deck, dir)
          type(model_t), intent(in) :: model
@@ -330,22 +357,112 @@ contains
    end subroutine par_engine_fill
 
    !> The global critical step and its element (the lowest serial order key among equal
-   !> minima, as the serial loop's first minimum).
-   subroutine par_engine_dt(dtcrit, dt_elem)
+   !> minima, as the serial loop's first minimum). A failure kept on a rank (pending) is
+   !> folded in as dt = -1 with key = the rank: then every rank returns with error set to
+   !> the lowest failing rank's message (par_bcast_text), and dtcrit is not a step.
+   subroutine par_engine_dt(dtcrit, dt_elem, error)
       real(wp), intent(inout) :: dtcrit
       integer, intent(inout) :: dt_elem
+      type(error_t), allocatable, intent(inout) :: error
       integer :: key
       real(wp) :: t0
       key = huge(key)
       if (dt_elem > 0 .and. dtcrit < huge_wp) key = (g%elem_block(dt_elem) - 1)*nv_chunk + &
                                                      g%elem_pos(dt_elem)
+      if (allocated(pending)) then
+         dtcrit = -1.0_wp
+         key = par_rank()
+      end if
       t0 = par_wtime()
       call par_minloc(dtcrit, key)
       t_dt = t_dt + (par_wtime() - t0)
+      if (dtcrit < 0.0_wp) then
+         call failure_known(key, error)
+         return
+      end if
       ! no deformable element anywhere: the rigid elements' step (as the serial ibmin == 0)
       if (dtcrit >= huge_wp .and. allocated(g%rigid)) dtcrit = g%rigid%dtcrit
       if (key > 0 .and. key <= size(key_elem)) dt_elem = key_elem(key)
    end subroutine par_engine_dt
+
+   !> A failure found on this rank alone, in the middle of a cycle: kept until the next dt
+   !> reduction (or par_engine_sync_failure) makes it known to every rank. error is
+   !> deallocated; the caller carries on with the cycle (its collectives included).
+   subroutine par_engine_defer(error)
+      type(error_t), allocatable, intent(inout) :: error
+      if (.not. allocated(pending)) then
+         call move_alloc(error, pending)
+      else if (allocated(error)) then
+         deallocate(error)
+      end if
+   end subroutine par_engine_defer
+
+   !> Whether this rank holds a failure not yet known to the others (it then skips its
+   !> element pass: its state is no longer meaningful).
+   logical function par_engine_pending()
+      par_engine_pending = allocated(pending)
+   end function par_engine_pending
+
+   !> At the last cycle (no further dt reduction): one MINLOC on the failure flag alone.
+   subroutine par_engine_sync_failure(error)
+      type(error_t), allocatable, intent(inout) :: error
+      real(wp) :: x
+      integer :: key
+      x = 0.0_wp
+      key = par_rank()
+      if (allocated(pending)) x = -1.0_wp
+      call par_minloc(x, key)
+      if (x < 0.0_wp) call failure_known(key, error)
+   end subroutine par_engine_sync_failure
+
+   !> Every rank: the failure of rank root (its message and exit code), naming the rank.
+   subroutine failure_known(root, error)
+      integer, intent(in) :: root
+      type(error_t), allocatable, intent(inout) :: error
+      character(:), allocatable :: msg
+      integer :: code
+      msg = ''
+      code = 0
+      if (par_rank() == root) then
+         msg = pending%message
+         code = pending%code
+      end if
+      call par_bcast_text(msg, code, root)
+      if (allocated(error)) deallocate(error)
+      call set_error(error, 'rank '//str(root)//' of '//str(par_size())//': '//msg, code)
+      together = .true.
+   end subroutine failure_known
+
+   !> Whether the run stops on a failure every rank knows (then every rank writes the last
+   !> state and exits with the code after MPI_Finalize, instead of MPI_Abort).
+   logical function par_engine_together()
+      par_engine_together = together
+   end function par_engine_together
+
+   !> Whether this rank writes the global files (glstat, nodout, status lines): rank 0.
+   logical function par_engine_writer()
+      par_engine_writer = par_rank() == 0
+   end function par_engine_writer
+
+   !> A plot state: every rank appends its part (no communication).
+   subroutine par_engine_plot(model, error)
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: t0
+      t0 = par_wtime()
+      call par_plot_write(model, error)
+      t_gath = t_gath + (par_wtime() - t0)
+   end subroutine par_engine_plot
+
+   !> End of an MPI run, normal or not (every rank): part files closed, rank 0 combines
+   !> them into d3plot.h5 + d3plot.xdmf. Call after rank 0 closed its output. failure:
+   !> every rank stops on a failure it knows (it then exits without MPI_Abort).
+   subroutine par_engine_plot_finish(error, failure)
+      type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: failure
+      if (present(failure)) together = together .or. failure
+      call par_plot_finish(error)
+   end subroutine par_engine_plot_finish
 
    !> The one shared-node exchange of the cycle: f at shared nodes becomes the serial sum.
    subroutine par_engine_exchange(f)
@@ -474,15 +591,16 @@ contains
       t_gath = t_gath + (par_wtime() - t0)
    end subroutine par_engine_energies
 
-   !> The global model for output at this step (nodal x, v, f and, for a plot state, the
-   !> element state gathered); writer is true on rank 0, which writes it.
+   !> The global model for glstat and nodout at this step (nodal x, v, f gathered); writer
+   !> is true on rank 0, which writes them. Plot states do not come here (par_engine_plot:
+   !> per-rank part files); plot is kept for the interface and not used.
    subroutine par_engine_output(model, plot, om, writer)
       type(model_t), intent(in) :: model
       logical, intent(in) :: plot
       type(model_t), pointer, intent(out) :: om
       logical, intent(out) :: writer
       real(wp), allocatable :: vals(:, :), gv(:, :)
-      integer :: i, b, j, nc, e, ip, nip, nhv
+      integer :: i
       real(wp) :: t0
       t0 = par_wtime()
       g%time = model%time
@@ -501,44 +619,6 @@ contains
       g%x(:, plan_own%keys) = gv(1:3, :)
       g%v(:, plan_own%keys) = gv(4:6, :)
       g%f(:, plan_own%keys) = gv(7:9, :)
-      if (plot) then
-         nc = 0
-         do b = 1, size(g%blocks)
-            nc = max(nc, 6*g%blocks(b)%nip + g%blocks(b)%nhv*g%blocks(b)%nip + 4)
-         end do
-         deallocate(vals, gv)
-         allocate(vals(nc, size(elem_loc, 2)), gv(nc, size(plan_elem%keys)))
-         vals = 0.0_wp
-         do i = 1, size(elem_loc, 2)
-            associate (pb => model%blocks(elem_loc(1, i)))
-               j = elem_loc(2, i)
-               nip = pb%nip; nhv = pb%nhv
-               vals(1:4, i) = [pb%relvol(j), pb%eint(j), pb%ehg(j), &
-                               merge(1.0_wp, 0.0_wp, pb%failed(j))]
-               do ip = 1, nip
-                  vals(4 + 6*(ip - 1) + 1:4 + 6*ip, i) = pb%sig(j, :, ip)
-                  if (nhv > 0) vals(4 + 6*nip + nhv*(ip - 1) + 1:4 + 6*nip + nhv*ip, i) = &
-                     pb%hv(j, :, ip)
-               end do
-            end associate
-         end do
-         call par_gather_values(plan_elem, vals, gv)
-         do i = 1, size(plan_elem%keys)
-            e = plan_elem%keys(i)
-            associate (gb => g%blocks(g%elem_block(e)), p => g%elem_pos(e))
-               nip = gb%nip; nhv = gb%nhv
-               gb%relvol(p) = gv(1, i)
-               gb%eint(p) = gv(2, i)
-               gb%ehg(p) = gv(3, i)
-               gb%failed(p) = gv(4, i) > 0.5_wp
-               do ip = 1, nip
-                  gb%sig(p, :, ip) = gv(4 + 6*(ip - 1) + 1:4 + 6*ip, i)
-                  if (nhv > 0) gb%hv(p, :, ip) = &
-                     gv(4 + 6*nip + nhv*(ip - 1) + 1:4 + 6*nip + nhv*ip, i)
-               end do
-            end associate
-         end do
-      end if
       om => g
       writer = par_rank() == 0
       t_gath = t_gath + (par_wtime() - t0)
@@ -566,7 +646,7 @@ contains
       p => g
    end function par_engine_global
 
-   !> A failure found on this rank alone (an element, a NaN): stop every rank, naming it.
+   !> A failure on this rank alone that cannot wait (an I/O error): stop every rank, naming it.
    subroutine par_engine_fail(error)
       type(error_t), intent(in) :: error
       call par_abort(error%message, error%code)

@@ -30,7 +30,9 @@ module dx_explicit
                             par_engine_exchange, par_engine_constraints, &
                             par_engine_energies, par_engine_initial, par_engine_output, &
                             par_engine_fail, par_engine_mass, par_engine_global, &
-                            par_engine_mass_share
+                            par_engine_mass_share, par_engine_defer, &
+                            par_engine_pending, par_engine_sync_failure, par_engine_plot, &
+                            par_engine_plot_finish, par_engine_writer
    use dx_par_loads, only: par_loads_any, par_loads_shared, par_loads_work
    use dx_par_rigid, only: par_rigid_step
    use dx_par_contact, only: par_contact_forces, par_contact_add, par_contact_work
@@ -98,6 +100,7 @@ contains
       par = par_engine_on()               ! an MPI run on more than one rank
       om => model
       writer = .true.
+      if (par) writer = par_engine_writer()
       ck = opts%ck
       allocate(vold(3, model%nn))
       loads = has_external_loads(model)
@@ -140,13 +143,19 @@ contains
          model%f = 0.0_wp
          dtcrit = huge_wp; ibmin = 0; iemin = 0
          do b = 1, size(model%blocks)
+            if (par) then      ! MPI: a failure kept on this rank skips the pass
+               if (par_engine_pending()) exit
+            end if
             if (model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%is_rigid) cycle
             associate (blk => model%blocks(b), part => model%parts(model%blocks(b)%ipart))
                call hex8_block(blk, model%mats(part%imat)%m, part, model%x, model%v, dt_old, &
                                model%f, res)
                if (res%ibad /= 0) then
                   call element_failure(model, b, res, error)
-                  if (par) call par_engine_fail(error)
+                  if (par) then   ! every rank learns it at the dt reduction below
+                     call par_engine_defer(error)
+                     exit
+                  end if
                   call finish(model, out, ck, error)
                   return
                end if
@@ -158,7 +167,12 @@ contains
          if (ibmin > 0) model%dt_elem = model%blocks(ibmin)%elem(iemin)
          if (allocated(model%rigid) .and. ibmin == 0 .and. .not. par) &
             dtcrit = model%rigid%dtcrit           ! MPI runs: in par_engine_dt
-         if (par) call par_engine_dt(dtcrit, model%dt_elem)   ! global min, serial tie rule
+         if (par) then     ! global min, serial tie rule; a failure on any rank stops all
+            call par_engine_dt(dtcrit, model%dt_elem, error)
+            if (allocated(error)) then
+               call finish(model, out, ck, error); return
+            end if
+         end if
          ! ---- contact forces (only when the deck has *CONTACT; MPI runs: dx_par_contact)
          if (allocated(model%contact)) then
             if (par) then
@@ -246,9 +260,12 @@ contains
          end if
          if (.not. ieee_is_finite(ke)) then
             call nan_failure(model, error)
-            if (par) call par_engine_fail(error)
-            call finish(model, out, ck, error)
-            return
+            if (par) then       ! known to all at the next dt reduction
+               call par_engine_defer(error)
+            else
+               call finish(model, out, ck, error)
+               return
+            end if
          end if
          model%dt = dt
          if (par) then     ! global sums, only when glstat, ENDENG or the end need them
@@ -260,13 +277,16 @@ contains
             call set_energy(model, ke, eint, ehg, wext + wcon + wrig, -wrw)
          end if
          if (model%ctrl%endeng > 0.0_wp) call checkpoint_energy_band(ck, model, t)
-         ! ---- output at t(n) (MPI runs: gathered into the global model, written by rank 0)
+         ! ---- output at t(n) (MPI runs: plot states per rank; histories by rank 0)
          if (t >= next_plot .or. done) then
-            if (par) call par_engine_output(model, .true., om, writer)
-            if (writer) call out%write_plot(om, ioerr)
+            if (par) then
+               call par_engine_plot(model, ioerr)
+            else
+               call out%write_plot(model, ioerr)
+            end if
             if (allocated(ioerr)) then
                call move_alloc(ioerr, error)
-               if (par) call par_engine_fail(error)   ! rank 0 alone: stop every rank
+               if (par) call par_engine_fail(error)   ! this rank alone: stop every rank
                call finish(model, out, ck, error); return
             end if
             if (model%db%d3plot_dt > 0.0_wp) then
@@ -316,6 +336,12 @@ contains
                next_status = huge_wp
             end if
          end if
+         if (done .and. par) then    ! a failure kept in the last cycle stops the run
+            call par_engine_sync_failure(error)
+            if (allocated(error)) then
+               call finish(model, out, ck, error); return
+            end if
+         end if
          if (done) exit
          ! ---- positions
          model%x = model%x + dt*model%v
@@ -340,6 +366,10 @@ contains
       if (allocated(model%rigid)) call rigid_close(model%rigid)
       if (writer) call out%close(ioerr)
       if (allocated(ioerr)) call move_alloc(ioerr, error)
+      if (par) then         ! MPI: rank 0 combines the per-rank plot files
+         call par_engine_plot_finish(ioerr)
+         if (allocated(ioerr) .and. .not. allocated(error)) call move_alloc(ioerr, error)
+      end if
    end subroutine run_explicit
 
    !> The first output time on the grid next + k*interval (k >= 1) that lies after t.
@@ -412,15 +442,20 @@ contains
       om => model
       writer = .true.
       dump = ''
-      if (par_engine_on()) then    ! every rank gets here together (a global failure)
-         call par_engine_output(model, .true., om, writer)
+      if (par_engine_on()) then    ! every rank gets here together (a failure all know)
+         writer = par_engine_writer()
+         call par_engine_plot(model, ioerr)      ! the last state: each rank its part
       else
          call checkpoint_failure_dump(ck, model, out, dump)
+         call out%write_plot(om, ioerr)
       end if
-      if (writer) call out%write_plot(om, ioerr)
       if (allocated(ioerr)) deallocate(ioerr)
       if (allocated(model%rigid)) call rigid_close(model%rigid)
       if (writer) call out%close(ioerr)
+      if (allocated(ioerr)) deallocate(ioerr)
+      if (par_engine_on()) call par_engine_plot_finish(ioerr, failure=.true.)   ! rank 0 combines
+      if (allocated(ioerr) .and. allocated(error)) error%message = error%message// &
+         new_line('a')//'dynx: combining the plot files failed: '//ioerr%message
       if (allocated(error)) error%message = error%message//new_line('a')// &
          'dynx: the last state (time '//rstr(model%time)//') was written to the plot file'
       if (allocated(error) .and. len(dump) > 0) error%message = error%message// &

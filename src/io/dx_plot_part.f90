@@ -1,0 +1,466 @@
+!> Per-rank plot files of an MPI run and their combination into the serial d3plot.h5 +
+!> d3plot.xdmf (ParaDyn step 5 output; docs/output-format.md, "MPI runs"). Each rank writes
+!> DIR/d3plot_rank_NNNNN.h5: the nodes it owns and the elements it holds, with their global
+!> (dense) indices, and per state their coordinates, velocities and element values; no
+!> element data passes through another rank. plot_combine (bin/dynx-combine, and rank 0 at
+!> the end of a run) merges the files of DIR into d3plot.h5 + d3plot.xdmf with the layout,
+!> the values and the XDMF text of a serial run: the element averages and the stress
+!> invariants come from the serial writer's own routines (dx_plot_hdf5), so the bits agree.
+!> Crash safety as in the serial plot file (dx_plot_hdf5): a part file is created under a
+!> temporary name and renamed once its mesh is flushed; a state's datasets are written
+!> first, then its time appended and nstates set, then a global flush. plot_combine takes
+!> the states every part has completed (the smallest nstates), so the files of a run killed
+!> mid-way combine into the complete states only. plot_part_truncate is the one routine
+!> that cuts a run's part files back to a state count (restarts: states after the dump).
+!> ParaDyn's per-processor plot files joined by a post-processor: Hoover et al., LLNL
+!> Engineering Thrust Area Report FY97 (article 4 of shared/seed). No MPI here: the engine
+!> (dx_par_plot) passes the rank's data in.
+module dx_plot_part
+   use dx_kinds, only: wp
+   use dx_error, only: error_t, set_error, EXIT_IO
+   use dx_strings, only: str
+   use dx_h5, only: h5_file_t, h5_create, h5_open_read, h5_open_rw, h5_close, h5_flush, &
+                    h5_create_group, h5_write, h5_write_attr, h5_read_attr, h5_read, &
+                    h5_create_extendible, h5_append, h5_exists, h5_delete, h5_set_extent
+   use dx_io_sys, only: sys_rename
+   use dx_xdmf, only: xdmf_write, state_group
+   use dx_plot_hdf5, only: stress_invariants
+   implicit none
+   private
+   public :: plot_part_t, plot_part_name, plot_combine, plot_part_truncate, PART_FORMAT
+
+   character(*), parameter :: PART_FORMAT = 'dynx plot part'
+   integer, parameter :: PART_VERSION = 1
+   character(*), parameter :: H5NAME = 'd3plot.h5', XMFNAME = 'd3plot.xdmf'
+
+   !> One rank's open part file.
+   type :: plot_part_t
+      type(h5_file_t) :: h5
+      integer :: nstates = 0
+      integer :: nown = 0, nel = 0
+   contains
+      procedure :: open => part_open
+      procedure :: resume => part_resume
+      procedure :: write_state => part_write_state
+      procedure :: close => part_close
+   end type plot_part_t
+
+contains
+
+   !> DIR/d3plot_rank_NNNNN.h5
+   function plot_part_name(dir, rank) result(p)
+      character(*), intent(in) :: dir
+      integer, intent(in) :: rank
+      character(:), allocatable :: p
+      character(5) :: r
+      write(r, '(i5.5)') rank
+      p = dir//'/d3plot_rank_'//r//'.h5'
+   end function plot_part_name
+
+   !> Create rank's part file with its mesh: owned nodes (global dense index, initial
+   !> coordinates, label) and held elements (global dense index, connectivity as 0-based
+   !> global node indices, label, part label). stamp identifies the run: all parts of one
+   !> run carry the same stamp, so files of two runs are never mixed.
+   subroutine part_open(self, dir, rank, nprocs, stamp, title, nn, ne, nodes, x0, node_ids, &
+                        elems, hex, elem_ids, part_ids, error)
+      class(plot_part_t), intent(inout) :: self
+      character(*), intent(in) :: dir, title
+      integer, intent(in) :: rank, nprocs, stamp, nn, ne
+      integer, intent(in) :: nodes(:), node_ids(:), elems(:), hex(:, :), elem_ids(:), &
+                             part_ids(:)
+      real(wp), intent(in) :: x0(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: err2
+      character(:), allocatable :: path
+      path = plot_part_name(dir, rank)
+      self%nstates = 0
+      self%nown = size(nodes)
+      self%nel = size(elems)
+      call h5_create(self%h5, path//'.tmp', error)
+      if (allocated(error)) return
+      work: block
+         call h5_write_attr(self%h5, '/', 'format', PART_FORMAT, error)
+         if (allocated(error)) exit work
+         call h5_write_attr(self%h5, '/', 'version', PART_VERSION, error)
+         if (allocated(error)) exit work
+         call h5_write_attr(self%h5, '/', 'rank', rank, error)
+         if (allocated(error)) exit work
+         call h5_write_attr(self%h5, '/', 'nprocs', nprocs, error)
+         if (allocated(error)) exit work
+         call h5_write_attr(self%h5, '/', 'stamp', stamp, error)
+         if (allocated(error)) exit work
+         call h5_write_attr(self%h5, '/', 'nn_global', nn, error)
+         if (allocated(error)) exit work
+         call h5_write_attr(self%h5, '/', 'ne_global', ne, error)
+         if (allocated(error)) exit work
+         call h5_write_attr(self%h5, '/', 'title', title, error)
+         if (allocated(error)) exit work
+         call h5_write_attr(self%h5, '/', 'nstates', 0, error)
+         if (allocated(error)) exit work
+         call h5_create_group(self%h5, '/mesh', error)
+         if (allocated(error)) exit work
+         call h5_write(self%h5, '/mesh/nodes', nodes, error)
+         if (allocated(error)) exit work
+         call h5_write(self%h5, '/mesh/coordinates', x0, error)
+         if (allocated(error)) exit work
+         call h5_write(self%h5, '/mesh/node_ids', node_ids, error)
+         if (allocated(error)) exit work
+         call h5_write(self%h5, '/mesh/elements', elems, error)
+         if (allocated(error)) exit work
+         call h5_write(self%h5, '/mesh/hex8', hex, error)
+         if (allocated(error)) exit work
+         call h5_write(self%h5, '/mesh/element_ids', elem_ids, error)
+         if (allocated(error)) exit work
+         call h5_write(self%h5, '/mesh/part_ids', part_ids, error)
+         if (allocated(error)) exit work
+         call h5_create_group(self%h5, '/states', error)
+         if (allocated(error)) exit work
+         call h5_create_extendible(self%h5, '/states/times', error)
+         if (allocated(error)) exit work
+         call h5_flush(self%h5, error)
+         if (allocated(error)) exit work
+         call sys_rename(path//'.tmp', path, error)
+      end block work
+      if (allocated(error)) call h5_close(self%h5, err2)
+   end subroutine part_open
+
+   !> Continue rank's existing part file in dir after its first nkeep states (a restart):
+   !> later states are removed (plot_part_truncate), then the file is reopened for writing.
+   subroutine part_resume(self, dir, rank, nkeep, error)
+      class(plot_part_t), intent(inout) :: self
+      character(*), intent(in) :: dir
+      integer, intent(in) :: rank, nkeep
+      type(error_t), allocatable, intent(out) :: error
+      call plot_part_truncate(dir, rank, nkeep, error)
+      if (allocated(error)) return
+      call h5_open_rw(self%h5, plot_part_name(dir, rank), error)
+      if (allocated(error)) return
+      self%nstates = nkeep
+   end subroutine part_resume
+
+   !> Append one state: x, v (3, nown) of the owned nodes; stress (6, nel) averaged over the
+   !> integration points, eff_plastic_strain and failed (nel) of the held elements. The
+   !> datasets first, then the time and nstates, then a global flush (crash safety).
+   subroutine part_write_state(self, time, x, v, stress, epsp, failed, error)
+      class(plot_part_t), intent(inout) :: self
+      real(wp), intent(in) :: time, x(:, :), v(:, :), stress(:, :), epsp(:)
+      integer, intent(in) :: failed(:)
+      type(error_t), allocatable, intent(out) :: error
+      character(:), allocatable :: g
+      integer :: k, n
+      k = self%nstates + 1
+      g = state_group(k)
+      call h5_create_group(self%h5, g, error)
+      if (allocated(error)) return
+      call h5_write_attr(self%h5, g, 'time', time, error)
+      if (allocated(error)) return
+      call h5_write(self%h5, g//'/coordinates', x, error)
+      if (allocated(error)) return
+      call h5_write(self%h5, g//'/velocity', v, error)
+      if (allocated(error)) return
+      call h5_write(self%h5, g//'/stress', stress, error)
+      if (allocated(error)) return
+      call h5_write(self%h5, g//'/eff_plastic_strain', epsp, error)
+      if (allocated(error)) return
+      call h5_write(self%h5, g//'/failed', failed, error)
+      if (allocated(error)) return
+      call h5_append(self%h5, '/states/times', time, n, error)
+      if (allocated(error)) return
+      call h5_write_attr(self%h5, '/', 'nstates', k, error)
+      if (allocated(error)) return
+      call h5_flush(self%h5, error)
+      if (allocated(error)) return
+      self%nstates = k
+   end subroutine part_write_state
+
+   !> Flush and close (safe to call twice and after errors).
+   subroutine part_close(self, error)
+      class(plot_part_t), intent(inout) :: self
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: err2
+      if (.not. self%h5%is_open()) return
+      call h5_flush(self%h5, error)
+      call h5_close(self%h5, err2)
+      if (.not. allocated(error) .and. allocated(err2)) call move_alloc(err2, error)
+   end subroutine part_close
+
+   !> Cut rank's part file in dir back to its first nkeep states (states after them,
+   !> complete or not, are removed; /states/times and nstates follow). The routine a restart
+   !> of an MPI run calls for "plot states after the dump point are removed". A part with
+   !> fewer than nkeep complete states is an I/O error (exit 4) naming the file.
+   subroutine plot_part_truncate(dir, rank, nkeep, error)
+      character(*), intent(in) :: dir
+      integer, intent(in) :: rank, nkeep
+      type(error_t), allocatable, intent(out) :: error
+      type(h5_file_t) :: f
+      type(error_t), allocatable :: err2
+      real(wp), allocatable :: t(:)
+      character(:), allocatable :: path
+      integer :: ndisk, k
+      logical :: there
+      path = plot_part_name(dir, rank)
+      call h5_open_rw(f, path, error)
+      if (allocated(error)) return
+      work: block
+         call h5_read_attr(f, '/', 'nstates', ndisk, error)
+         if (allocated(error)) exit work
+         call h5_read(f, '/states/times', t, error)
+         if (allocated(error)) exit work
+         if (ndisk < nkeep .or. size(t) < nkeep) then
+            call set_error(error, 'cannot cut '//path//' back to '//str(nkeep)// &
+                           ' plot states: it has '//str(ndisk), EXIT_IO)
+            exit work
+         end if
+         do k = nkeep + 1, max(ndisk, size(t)) + 1
+            call h5_exists(f, state_group(k), there, error)
+            if (allocated(error)) exit work
+            if (there) call h5_delete(f, state_group(k), error)
+            if (allocated(error)) exit work
+         end do
+         call h5_set_extent(f, '/states/times', nkeep, error)
+         if (allocated(error)) exit work
+         call h5_write_attr(f, '/', 'nstates', nkeep, error)
+         if (allocated(error)) exit work
+         call h5_flush(f, error)
+      end block work
+      if (allocated(error)) then
+         call h5_close(f, err2)
+      else
+         call h5_close(f, error)
+      end if
+   end subroutine plot_part_truncate
+
+   !> Merge dir/d3plot_rank_*.h5 into dir/d3plot.h5 + dir/d3plot.xdmf, as a serial run
+   !> writes them: the states every part has completed (nstates_out of them). The result
+   !> is written as d3plot.h5.tmp and renamed, then the XDMF (tmp + rename). Parts of
+   !> another run (stamp), another NP or model size, a node or element missing or held
+   !> twice, or differing state times: I/O error (exit 4) naming the file.
+   subroutine plot_combine(dir, nstates_out, error)
+      character(*), intent(in) :: dir
+      integer, intent(out) :: nstates_out
+      type(error_t), allocatable, intent(out) :: error
+      type(h5_file_t), allocatable :: pf(:)
+      type(h5_file_t) :: out
+      type(error_t), allocatable :: err2
+      character(:), allocatable :: title, t0
+      real(wp), allocatable :: times(:), t(:), buf(:), x0(:, :), x(:, :), v(:, :), &
+                               stress(:, :), vm(:), pres(:), epsp(:)
+      integer, allocatable :: cnt_n(:), cnt_e(:), node_ids(:), &
+                              hex(:, :), elem_ids(:), part_ids(:), failed(:)
+      type :: idx_t
+         integer, allocatable :: n(:), e(:)
+      end type idx_t
+      type(idx_t), allocatable :: idx(:)
+      integer :: np, nn, ne, stamp, r, k, ival, nst, i, n
+      character(:), allocatable :: g, path
+      nstates_out = 0
+      ! ---- rank 0's part says how many there are
+      allocate(pf(1))
+      call h5_open_read(pf(1), plot_part_name(dir, 0), error)
+      if (allocated(error)) return
+      call read_header(pf(1), plot_part_name(dir, 0), np, stamp, nn, ne, title, error)
+      call h5_close(pf(1), err2)
+      if (allocated(error)) return
+      deallocate(pf)
+      allocate(pf(0:np - 1), idx(0:np - 1), cnt_n(nn), cnt_e(ne))
+      allocate(x0(3, nn), node_ids(nn), hex(8, ne), elem_ids(ne), part_ids(ne))
+      cnt_n = 0
+      cnt_e = 0
+      nst = huge(nst)
+      work: block
+         do r = 0, np - 1
+            path = plot_part_name(dir, r)
+            call h5_open_read(pf(r), path, error)
+            if (allocated(error)) exit work
+            call read_header(pf(r), path, ival, k, i, n, t0, error)
+            if (allocated(error)) exit work
+            if (ival /= np .or. k /= stamp .or. i /= nn .or. n /= ne) then
+               call set_error(error, path//': part of another run (NP, run stamp or model '// &
+                  'size differ from '//plot_part_name(dir, 0)//'); remove stale part files', &
+                  EXIT_IO)
+               exit work
+            end if
+            call h5_read_attr(pf(r), '/', 'rank', ival, error)
+            if (allocated(error)) exit work
+            if (ival /= r) then
+               call set_error(error, path//': holds rank '//str(ival)//', expected '// &
+                              str(r), EXIT_IO)
+               exit work
+            end if
+            call h5_read_attr(pf(r), '/', 'nstates', ival, error)
+            if (allocated(error)) exit work
+            nst = min(nst, ival)
+            ! mesh: owned nodes and held elements, each exactly once over the parts
+            call h5_read(pf(r), '/mesh/nodes', buf, error)
+            if (allocated(error)) exit work
+            idx(r)%n = nint(buf)
+            call h5_read(pf(r), '/mesh/elements', buf, error)
+            if (allocated(error)) exit work
+            idx(r)%e = nint(buf)
+            if (any(idx(r)%n < 1 .or. idx(r)%n > nn) .or. any(idx(r)%e < 1 .or. &
+                                                               idx(r)%e > ne)) then
+               call set_error(error, path//': node or element index out of range', EXIT_IO)
+               exit work
+            end if
+            cnt_n(idx(r)%n) = cnt_n(idx(r)%n) + 1
+            cnt_e(idx(r)%e) = cnt_e(idx(r)%e) + 1
+            call h5_read(pf(r), '/mesh/coordinates', buf, error)
+            if (allocated(error)) exit work
+            x0(:, idx(r)%n) = reshape(buf, [3, size(idx(r)%n)])
+            call h5_read(pf(r), '/mesh/node_ids', buf, error)
+            if (allocated(error)) exit work
+            node_ids(idx(r)%n) = nint(buf)
+            call h5_read(pf(r), '/mesh/hex8', buf, error)
+            if (allocated(error)) exit work
+            hex(:, idx(r)%e) = reshape(nint(buf), [8, size(idx(r)%e)])
+            call h5_read(pf(r), '/mesh/element_ids', buf, error)
+            if (allocated(error)) exit work
+            elem_ids(idx(r)%e) = nint(buf)
+            call h5_read(pf(r), '/mesh/part_ids', buf, error)
+            if (allocated(error)) exit work
+            part_ids(idx(r)%e) = nint(buf)
+         end do
+         if (any(cnt_n /= 1) .or. any(cnt_e /= 1)) then
+            call set_error(error, dir//': the part files do not hold every node and '// &
+               'element exactly once ('//str(count(cnt_n /= 1))//' nodes, '// &
+               str(count(cnt_e /= 1))//' elements wrong)', EXIT_IO)
+            exit work
+         end if
+         ! times: every part's first nst times agree
+         do r = 0, np - 1
+            call h5_read(pf(r), '/states/times', t, error)
+            if (allocated(error)) exit work
+            if (size(t) < nst) then
+               call set_error(error, plot_part_name(dir, r)//': /states/times has '// &
+                  str(size(t))//' entries, nstates '//str(nst), EXIT_IO)
+               exit work
+            end if
+            if (r == 0) then
+               times = t(1:nst)
+            else if (any(t(1:nst) /= times)) then
+               call set_error(error, plot_part_name(dir, r)//': state times differ from '// &
+                              plot_part_name(dir, 0), EXIT_IO)
+               exit work
+            end if
+         end do
+         ! ---- the combined file, in the serial writer's layout (dx_plot_hdf5)
+         call h5_create(out, dir//'/'//H5NAME//'.tmp', error)
+         if (allocated(error)) exit work
+         call h5_create_group(out, '/mesh', error)
+         if (allocated(error)) exit work
+         call h5_write(out, '/mesh/coordinates', x0, error)
+         if (allocated(error)) exit work
+         call h5_write(out, '/mesh/node_ids', node_ids, error)
+         if (allocated(error)) exit work
+         call h5_write(out, '/mesh/hex8', hex, error)
+         if (allocated(error)) exit work
+         call h5_write(out, '/mesh/element_ids', elem_ids, error)
+         if (allocated(error)) exit work
+         call h5_write(out, '/mesh/part_ids', part_ids, error)
+         if (allocated(error)) exit work
+         call h5_write_attr(out, '/', 'title', title, error)
+         if (allocated(error)) exit work
+         call h5_write_attr(out, '/', 'nstates', 0, error)
+         if (allocated(error)) exit work
+         call h5_create_group(out, '/states', error)
+         if (allocated(error)) exit work
+         call h5_create_extendible(out, '/states/times', error)
+         if (allocated(error)) exit work
+         deallocate(hex, elem_ids, part_ids, node_ids)
+         allocate(x(3, nn), v(3, nn), stress(6, ne), vm(ne), pres(ne), epsp(ne), failed(ne))
+         do k = 1, nst
+            g = state_group(k)
+            do r = 0, np - 1
+               call h5_read(pf(r), g//'/coordinates', buf, error)
+               if (allocated(error)) exit work
+               x(:, idx(r)%n) = reshape(buf, [3, size(idx(r)%n)])
+               call h5_read(pf(r), g//'/velocity', buf, error)
+               if (allocated(error)) exit work
+               v(:, idx(r)%n) = reshape(buf, [3, size(idx(r)%n)])
+               call h5_read(pf(r), g//'/stress', buf, error)
+               if (allocated(error)) exit work
+               stress(:, idx(r)%e) = reshape(buf, [6, size(idx(r)%e)])
+               call h5_read(pf(r), g//'/eff_plastic_strain', buf, error)
+               if (allocated(error)) exit work
+               epsp(idx(r)%e) = buf
+               call h5_read(pf(r), g//'/failed', buf, error)
+               if (allocated(error)) exit work
+               failed(idx(r)%e) = nint(buf)
+            end do
+            call stress_invariants(stress, vm, pres)
+            call h5_create_group(out, g, error)
+            if (allocated(error)) exit work
+            call h5_write_attr(out, g, 'time', times(k), error)
+            if (allocated(error)) exit work
+            call h5_write(out, g//'/coordinates', x, error)
+            if (allocated(error)) exit work
+            call h5_write(out, g//'/displacement', x - x0, error)
+            if (allocated(error)) exit work
+            call h5_write(out, g//'/velocity', v, error)
+            if (allocated(error)) exit work
+            call h5_write(out, g//'/stress', stress, error)
+            if (allocated(error)) exit work
+            call h5_write(out, g//'/von_mises', vm, error)
+            if (allocated(error)) exit work
+            call h5_write(out, g//'/pressure', pres, error)
+            if (allocated(error)) exit work
+            call h5_write(out, g//'/eff_plastic_strain', epsp, error)
+            if (allocated(error)) exit work
+            call h5_write(out, g//'/failed', failed, error)
+            if (allocated(error)) exit work
+            call h5_append(out, '/states/times', times(k), i, error)
+            if (allocated(error)) exit work
+            call h5_write_attr(out, '/', 'nstates', k, error)
+            if (allocated(error)) exit work
+         end do
+         call h5_flush(out, error)
+         if (allocated(error)) exit work
+         call h5_close(out, error)
+         if (allocated(error)) exit work
+         call sys_rename(dir//'/'//H5NAME//'.tmp', dir//'/'//H5NAME, error)
+         if (allocated(error)) exit work
+         call xdmf_write(dir//'/'//XMFNAME, H5NAME, title, nn, ne, times, error)
+         if (allocated(error)) exit work
+         nstates_out = nst
+      end block work
+      if (out%is_open()) call h5_close(out, err2)
+      do r = 0, size(pf) - 1
+         if (pf(r)%is_open()) call h5_close(pf(r), err2)
+      end do
+   end subroutine plot_combine
+
+   !> The root attributes of a part file (format checked).
+   subroutine read_header(f, path, np, stamp, nn, ne, title, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      integer, intent(out) :: np, stamp, nn, ne
+      character(:), allocatable, intent(out) :: title
+      type(error_t), allocatable, intent(out) :: error
+      character(:), allocatable :: fmt
+      integer :: ver
+      np = 0; stamp = 0; nn = 0; ne = 0
+      title = ''
+      call h5_read_attr(f, '/', 'format', fmt, error)
+      if (allocated(error)) return
+      call h5_read_attr(f, '/', 'version', ver, error)
+      if (allocated(error)) return
+      if (fmt /= PART_FORMAT .or. ver /= PART_VERSION) then
+         call set_error(error, path//': not a dynx plot part file of version '// &
+                        str(PART_VERSION), EXIT_IO)
+         return
+      end if
+      call h5_read_attr(f, '/', 'nprocs', np, error)
+      if (allocated(error)) return
+      call h5_read_attr(f, '/', 'stamp', stamp, error)
+      if (allocated(error)) return
+      call h5_read_attr(f, '/', 'nn_global', nn, error)
+      if (allocated(error)) return
+      call h5_read_attr(f, '/', 'ne_global', ne, error)
+      if (allocated(error)) return
+      call h5_read_attr(f, '/', 'title', title, error)
+      if (allocated(error)) return
+      if (np < 1 .or. nn < 0 .or. ne < 0) call set_error(error, path// &
+         ': bad header (nprocs '//str(np)//', nodes '//str(nn)//', elements '//str(ne)//')', &
+         EXIT_IO)
+   end subroutine read_header
+end module dx_plot_part

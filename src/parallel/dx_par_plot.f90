@@ -1,0 +1,162 @@
+!> Plot output of an MPI run (ParaDyn step 5; docs/design.md, docs/output-format.md): each
+!> rank writes its owned nodes and its elements to its own part file (dx_plot_part) at every
+!> plot time, with no gather; at the end of the run (normal or after a failure) rank 0
+!> combines the parts into d3plot.h5 + d3plot.xdmf, equal to the serial run's files.
+!> Per-processor plot files merged after the run: ParaDyn (Hoover et al., LLNL Engineering
+!> Thrust Area Report FY97, article 4 of shared/seed).
+!> The part file is created at the first plot state (from the mesh kept by par_plot_setup),
+!> or continued by par_plot_resume (a restart: states after the dump removed).
+!> Module state (allowed in parallel/): the rank's part file and its node/element maps.
+module dx_par_plot
+   use dx_kinds, only: wp
+   use dx_error, only: error_t
+   use dx_strings, only: str
+   use dx_log, only: log_info
+   use dx_model, only: model_t
+   use dx_par, only: par_rank, par_size, par_barrier, par_allreduce, PAR_MAX
+   use dx_io_sys, only: sys_mkdir_p, sys_epoch_seconds
+   use dx_plot_hdf5, only: element_average
+   use dx_plot_part, only: plot_part_t, plot_combine
+   implicit none
+   private
+   public :: par_plot_setup, par_plot_write, par_plot_finish, par_plot_nstates, &
+             par_plot_resume
+
+   type(plot_part_t), save :: part
+   character(:), allocatable, save :: dir
+   integer, allocatable, save :: own(:)          !< owned local nodes
+   integer, allocatable, save :: eloc(:, :)      !< (2, nel): block and position of each element
+   integer, allocatable, save :: khv(:)          !< per block: history index of eff. plastic strain
+   logical, save :: finished = .false.
+   !> the part's mesh until the file is created (first state): nodes, labels, elements
+   integer, allocatable, save :: m_nodes(:), m_nids(:), m_elems(:), m_hex(:, :), m_eids(:), &
+                                 m_pids(:)
+   real(wp), allocatable, save :: m_x0(:, :)
+   integer, save :: m_stamp = 0, m_nn = 0, m_ne = 0
+   character(:), allocatable, save :: m_title
+
+contains
+
+   !> Prepare this rank's part file in outdir (created at the first state). node_global(l) is the global
+   !> node of local node l <= nloc; slot node nloc + s stands for local node slot_node(s);
+   !> own are the owned local nodes; elem_loc(:, i) = (block, position) of the rank's
+   !> elements. g is the global model (labels, parts, title).
+   subroutine par_plot_setup(model, g, nloc, node_global, slot_node, owned_nodes, elem_loc, &
+                             outdir, error)
+      type(model_t), intent(in) :: model, g
+      integer, intent(in) :: nloc, node_global(:), slot_node(:), owned_nodes(:), elem_loc(:, :)
+      character(*), intent(in) :: outdir
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: elems(:), hex(:, :), eids(:), pids(:), l2g(:)
+      integer :: i, b, j, e, stamp, imat
+      integer(8) :: clk
+      character(:), allocatable :: title
+      dir = outdir
+      own = owned_nodes
+      eloc = elem_loc
+      finished = .false.
+      allocate(khv(size(model%blocks)))
+      do b = 1, size(model%blocks)
+         imat = model%parts(model%blocks(b)%ipart)%imat
+         khv(b) = model%mats(imat)%m%hv_eps_p
+      end do
+      l2g = [node_global(1:nloc), node_global(slot_node)]
+      allocate(elems(size(eloc, 2)), hex(8, size(eloc, 2)), eids(size(eloc, 2)), &
+               pids(size(eloc, 2)))
+      do i = 1, size(eloc, 2)
+         b = eloc(1, i); j = eloc(2, i)
+         e = model%blocks(b)%elem(j)
+         elems(i) = e
+         hex(:, i) = l2g(model%blocks(b)%conn(1:8, j)) - 1
+         eids(i) = g%elem_label(e)
+         pids(i) = g%parts(g%elem_part(e))%label
+      end do
+      ! one stamp for all parts of this run: rank 0's clock (seconds and the fine counter)
+      stamp = 0
+      if (par_rank() == 0) then
+         call system_clock(count=clk)
+         stamp = int(modulo(sys_epoch_seconds()*1000003_8 + clk, 2147483647_8))
+      end if
+      call par_allreduce(stamp, PAR_MAX)
+      title = ''
+      if (allocated(g%title)) title = g%title
+      call sys_mkdir_p(dir, error)
+      if (allocated(error)) return
+      m_stamp = stamp
+      m_title = title
+      m_nn = g%nn
+      m_ne = g%ne
+      m_nodes = node_global(own)
+      m_x0 = model%x0(:, own)
+      m_nids = model%node_label(own)
+      call move_alloc(elems, m_elems)
+      call move_alloc(hex, m_hex)
+      call move_alloc(eids, m_eids)
+      call move_alloc(pids, m_pids)
+   end subroutine par_plot_setup
+
+   !> Create the part file with its mesh (at the first state); the kept mesh is freed.
+   subroutine create_part(error)
+      type(error_t), allocatable, intent(out) :: error
+      call part%open(dir, par_rank(), par_size(), m_stamp, m_title, m_nn, m_ne, m_nodes, &
+                     m_x0, m_nids, m_elems, m_hex, m_eids, m_pids, error)
+      call free_mesh()
+   end subroutine create_part
+
+   subroutine free_mesh()
+      if (allocated(m_nodes)) deallocate(m_nodes, m_x0, m_nids, m_elems, m_hex, m_eids, m_pids)
+   end subroutine free_mesh
+
+   !> A restart of an MPI run: continue this rank's part after its first nkeep states (the
+   !> dump's plot-state count); states written after the dump are removed
+   !> (dx_plot_part: plot_part_truncate). Every rank calls it, before the first state.
+   subroutine par_plot_resume(nkeep, error)
+      integer, intent(in) :: nkeep
+      type(error_t), allocatable, intent(out) :: error
+      call part%resume(dir, par_rank(), nkeep, error)
+      call free_mesh()
+   end subroutine par_plot_resume
+
+   !> Append the rank's part of the plot state at model%time (no communication).
+   subroutine par_plot_write(model, error)
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: stress(:, :), epsp(:)
+      integer, allocatable :: failed(:)
+      integer :: i, b
+      if (.not. part%h5%is_open()) then
+         call create_part(error)
+         if (allocated(error)) return
+      end if
+      allocate(stress(6, size(eloc, 2)), epsp(size(eloc, 2)), failed(size(eloc, 2)))
+      do i = 1, size(eloc, 2)
+         b = eloc(1, i)
+         call element_average(model%blocks(b), eloc(2, i), khv(b), stress(:, i), epsp(i), &
+                              failed(i))
+      end do
+      call part%write_state(model%time, model%x(:, own), model%v(:, own), stress, epsp, &
+                            failed, error)
+   end subroutine par_plot_write
+
+   !> States this rank's part holds.
+   integer function par_plot_nstates()
+      par_plot_nstates = part%nstates
+   end function par_plot_nstates
+
+   !> End of the run (every rank): close the part, then rank 0 combines the parts into
+   !> d3plot.h5 + d3plot.xdmf. An error is returned on the rank that had it.
+   subroutine par_plot_finish(error)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: n
+      if (finished) return
+      finished = .true.
+      call part%close(error)
+      call par_barrier()           ! every part closed before rank 0 reads them
+      if (allocated(error)) return
+      if (par_rank() /= 0) return
+      call plot_combine(dir, n, error)
+      if (allocated(error)) return
+      call log_info('dynx: combined '//str(n)//' plot states of '//str(par_size())// &
+                    ' ranks into '//dir//'/d3plot.h5 + d3plot.xdmf')
+   end subroutine par_plot_finish
+end module dx_par_plot
