@@ -25,7 +25,7 @@ module dx_par_engine
    use dx_deck, only: read_deck_input
    use dx_par, only: par_rank, par_size, par_abort, par_minloc, par_gather_ordered, &
                      par_allreduce, par_barrier, PAR_MAX, gather_plan_t, par_gather_setup, &
-                     par_gather_values, par_wtime, PAR_SUM
+                     par_gather_values, par_wtime, PAR_SUM, par_minloc_flags
    use dx_par_model, only: par_model_t, par_model_build, par_fill_slots, par_exchange_forces, &
                            par_exchange_mass
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report
@@ -39,7 +39,7 @@ module dx_par_engine
    public :: par_engine_setup, par_engine_on, par_engine_mass, par_engine_initial, &
              par_engine_fill, par_engine_dt, par_engine_exchange, par_engine_constraints, &
              par_engine_energies, par_engine_output, par_engine_fail, &
-             par_engine_global, par_engine_report
+             par_engine_global, par_engine_report, par_engine_flush_work, par_engine_maps
 
    logical, save :: on = .false.
    type(model_t), target, save :: g                  !< the global model (serial numbering)
@@ -60,6 +60,7 @@ module dx_par_engine
    real(wp), save :: buf_dt(2, NBUF_MAX)              !< dt, dtavg of the kept cycles
    !> wall time in the force exchange, the dt reduction, the ordered gathers (sums, output)
    real(wp), save :: t_exch = 0.0_wp, t_dt = 0.0_wp, t_gath = 0.0_wp
+   character(16), save :: deck_hash = ''              !< content hash of the deck (restart)
 
 contains
 
@@ -93,6 +94,7 @@ contains
       if (allocated(error)) return
       call deck_content_hash(inp%files, hash, error)
       if (allocated(error)) return
+      deck_hash = hash
       k = index(deck, '/', back=.true.)
       deckdir = '.'
       if (k > 0) deckdir = deck(1:k - 1)
@@ -258,8 +260,6 @@ contains
          what = '*CONTACT_... (contact)'
       else if (allocated(model%emc)) then
          what = '*DYNX_CONSERVING_CONTACT (the conserving rigid-body solver)'
-      else if (model%rst%d3dump_cycl > 0 .or. model%rst%runrsf_cycl > 0) then
-         what = '*DATABASE_BINARY_D3DUMP / *DATABASE_BINARY_RUNRSF (restart dumps)'
       end if
       if (len(what) > 0) call set_error(error, model%deck_file//': '//what// &
          ' is not supported in an MPI run yet; run this deck serially (without mpirun)', &
@@ -309,16 +309,23 @@ contains
 
    !> The global critical step and its element (the lowest serial order key among equal
    !> minima, as the serial loop's first minimum).
-   subroutine par_engine_dt(dtcrit, dt_elem)
+   !> flags (optional): stop/dump requests of this rank, folded into the same reduction
+   !> (largest over the ranks; dx_checkpoint).
+   subroutine par_engine_dt(dtcrit, dt_elem, flags)
       real(wp), intent(inout) :: dtcrit
       integer, intent(inout) :: dt_elem
+      integer, intent(inout), optional :: flags(:)
       integer :: key
       real(wp) :: t0
       key = huge(key)
       if (dt_elem > 0 .and. dtcrit < huge_wp) key = (g%elem_block(dt_elem) - 1)*nv_chunk + &
                                                      g%elem_pos(dt_elem)
       t0 = par_wtime()
-      call par_minloc(dtcrit, key)
+      if (present(flags)) then
+         call par_minloc_flags(dtcrit, key, flags)
+      else
+         call par_minloc(dtcrit, key)
+      end if
       t_dt = t_dt + (par_wtime() - t0)
       if (key > 0 .and. key <= size(key_elem)) dt_elem = key_elem(key)
    end subroutine par_engine_dt
@@ -361,6 +368,24 @@ contains
       if (allocated(model%walls)) call apply_rigidwalls(model, dt, dtavg, vold, model%v, dummy)
       if (needed .or. nbuf == NBUF_MAX) call flush_work(wcon, wrw)
    end subroutine par_engine_constraints
+
+   !> Before a restart dump: the kept cycles' work terms into wcon, wrw (the same additions
+   !> in the same order as a later flush would make), so the dump holds the sums to date.
+   subroutine par_engine_flush_work(wcon, wrw)
+      real(wp), intent(inout) :: wcon, wrw
+      if (nbuf > 0) call flush_work(wcon, wrw)
+   end subroutine par_engine_flush_work
+
+   !> For restart dumps (dx_par_restart): the global model, the global node of each local
+   !> node (slot nodes included) and the deck's content hash.
+   subroutine par_engine_maps(gp, node_global, hash)
+      type(model_t), pointer, intent(out) :: gp
+      integer, allocatable, intent(out) :: node_global(:)
+      character(16), intent(out) :: hash
+      gp => g
+      node_global = [pm%node_global, pm%node_global(pm%slot_node)]
+      hash = deck_hash
+   end subroutine par_engine_maps
 
    !> Gather the kept cycles and add their work terms in serial order.
    subroutine flush_work(wcon, wrw)
