@@ -11,7 +11,7 @@ program dynx
    use dx_deck, only: read_deck
    use dx_output, only: output_t
    use dx_explicit, only: run_options_t, run_explicit, init_state
-   use dx_par_restart, only: par_restart_read
+   use dx_par_restart, only: par_restart_read, par_restart_precheck
    use dx_restart_deck, only: apply_restart_deck
    use dx_signals, only: signals_install, SIGTERM_NUM, SIGINT_NUM, SIGUSR1_NUM
    use dx_io_sys, only: sys_epoch_seconds
@@ -114,6 +114,7 @@ program dynx
          'rigid-body solver (*DYNX_CONSERVING_CONTACT): its dumps are not written yet', EXIT_INPUT)
       call die(error)
    end if
+   if (len(rfile) > 0) call par_restart_precheck(rfile, deck)   ! MPI: dump of another NP or deck
    call par_engine_setup(model, deck, outdir, partdir, error)   ! MPI run: the rank's part
    if (allocated(error)) call die(error)
    call init_state(model)

@@ -29,9 +29,12 @@ module dx_par_restart
    use dx_h5, only: h5_write_attr, h5_read_attr
    use dx_par, only: par_rank, par_size, par_abort, par_allreduce, par_gather_ordered, PAR_MAX
    use dx_par_engine, only: par_engine_on, par_engine_maps
+   use dx_model_input, only: model_input_t
+   use dx_deck, only: read_deck_input
+   use dx_rank_file, only: deck_content_hash
    implicit none
    private
-   public :: par_restart_write, par_restart_read, par_restart_part_name
+   public :: par_restart_write, par_restart_read, par_restart_part_name, par_restart_precheck
 
 contains
 
@@ -182,6 +185,36 @@ contains
       mode = 0
       call par_allreduce(mode, PAR_MAX)   ! every rank has its state
    end subroutine par_restart_read
+
+   !> Before the rank files are read (dynx.f90): a dump set of another number of ranks or
+   !> of another deck is an input error naming the dump (not the rank files, which would
+   !> mismatch too). Rank 0 looks; a serial run needs nothing here (par_restart_read
+   !> refuses a manifest).
+   subroutine par_restart_precheck(path, deck)
+      character(*), intent(in) :: path, deck
+      integer :: mode, mnp, np
+      character(:), allocatable :: mhash
+      character(16) :: hash
+      real(wp), allocatable :: crcs(:)
+      type(error_t), allocatable :: error
+      type(model_input_t) :: inp
+      np = par_size()
+      if (np <= 1 .or. par_rank() /= 0) return
+      call inspect(path, mode, mnp, mhash, crcs, error)
+      if (allocated(error)) call par_abort(error%message, error%code)
+      if (mode /= 1) return
+      if (mnp /= np) call par_abort('restart file '//path//' is a dump of '// &
+         'a run on '//str(mnp)//' ranks; this run has '//str(np)//'. Continue it with '// &
+         'mpirun -np '//str(mnp)//' (a dump set continues on the number of ranks that '// &
+         'wrote it)', EXIT_INPUT)
+      call read_deck_input(deck, inp, error)
+      if (.not. allocated(error)) call deck_content_hash(inp%files, hash, error)
+      if (allocated(error)) call par_abort(error%message, error%code)
+      if (mhash /= hash) call par_abort('restart file '//path//' is a dump of another '// &
+         'deck (deck hash '//mhash//'; '//deck//' has '//hash//'). Give the deck the run '// &
+         'was started with (a restart deck, -R, may change the end time and the output)', &
+         EXIT_INPUT)
+   end subroutine par_restart_precheck
 
    !> What path is: mode 1 an MPI manifest (with its NP, deck hash and part CRCs), 0 else.
    subroutine inspect(path, mode, mnp, mhash, crcs, error)
