@@ -16,6 +16,10 @@
 #            normally with the reference files; then a continue from that dump over the
 #            finished output must give the same files again
 #   serial   a serial run stopped at a random cycle, continued on NP ranks from its dump
+#   periodic the deck plus *DATABASE_BINARY_RUNRSF (CYCL = cycles/5 + 7, NR 1) and
+#            *DATABASE_BINARY_D3DUMP (CYCL = cycles/3): the run must give the reference
+#            files, runrsf.h5 must name NP parts that are on disk and the superseded
+#            runrsf parts must be gone; then continued from runrsf.h5: the same files again
 #   errors   (after cycle) the dump set continued with NP+1 ranks and serially (exit 2),
 #            with another deck (exit 2), with one part missing and one part damaged
 #            (exit 4, the message names the rank and the part file)
@@ -110,6 +114,28 @@ for m in $modes; do
         if [ $rc -ne 5 ]; then echo "  serial: exit $rc (expected 5)"; fail=1; continue; fi
         n="$n (serial run)"
         ;;
+    periodic)
+        c1=$((ncyc / 5 + 7)); c2=$((ncyc / 3))
+        [ "$c1" -lt 1 ] && c1=1; [ "$c2" -lt 1 ] && c2=1
+        awk -v c1=$c1 -v c2=$c2 '/^\*END/ { print "*DATABASE_BINARY_RUNRSF"; printf "%10d%10d\n", c1, 1; print "*DATABASE_BINARY_D3DUMP"; printf "%10d\n", c2 } { print }' "$deck" > "$d/deck.k"
+        timeout 300 $MPIRUN $mo -np "$np" "$DYNX" -i "$d/deck.k" -o "$d" > "$d/run1.log" 2>&1
+        rc=$?
+        if [ $rc -ne 0 ]; then echo "  periodic: exit $rc"; tail -3 "$d/run1.log"; fail=1; continue; fi
+        same "$d" "periodic (RUNRSF every $c1, D3DUMP every $c2 cycles; run with the dumps)"
+        nr=$(ls "$d"/runrsf.cyc*.rank*.h5 2>/dev/null | wc -l)
+        if [ "$nr" -ne "$np" ]; then echo "  periodic: $nr runrsf parts on disk (expected $np: superseded parts not removed?)"; fail=1; fi
+        nd=$(ls "$d"/d3dump*.cyc*.rank*.h5 2>/dev/null | wc -l)
+        echo "  periodic: runrsf parts on disk $nr, d3dump parts $nd ($(ls "$d"/d3dump??.h5 | wc -l) d3dump sets)"
+        deck=$d/deck.k
+        dump=$d/runrsf.h5
+        n="$(ls "$d"/runrsf.cyc*.rank00000.h5 | sed 's/.*cyc\([0-9]*\).*/\1/') (last runrsf)"
+        timeout 300 $MPIRUN $mo -np "$np" "$DYNX" -i "$deck" -o "$d" -r "$dump" > "$d/run2.log" 2>&1
+        rc=$?
+        deck=$1
+        if [ $rc -ne 0 ]; then echo "  periodic: continue run exit $rc"; tail -5 "$d/run2.log"; fail=1; continue; fi
+        same "$d" "periodic NP $np (continued from runrsf.h5 at cycle $n)"
+        continue
+        ;;
     errors)
         src=$work/np$np-cycle
         dump=$(last_dump "$src")
@@ -123,12 +149,12 @@ for m in $modes; do
         sed '1s/^/$ another deck\n/' "$deck" > "$d/other.k"
         timeout 300 $MPIRUN $mo -np "$np" "$DYNX" -i "$d/other.k" -o "$d/set" -r "$dump" > "$d/deck.log" 2>&1
         rc=$?; expect_fail "other-deck" 2 "is a dump of another deck" "$d/deck.log"
-        part=${dump%.h5}.rank$(printf %05d $((np - 1))).h5
+        part=$(ls ${dump%.h5}.cyc*.rank$(printf %05d $((np - 1))).h5)
         mv "$part" "$part.away"
         timeout 300 $MPIRUN $mo -np "$np" "$DYNX" -i "$deck" -o "$d/set" -r "$dump" > "$d/missing.log" 2>&1
         rc=$?; expect_fail "missing-part" 4 "part of rank $((np - 1)): $part is missing" "$d/missing.log"
         mv "$part.away" "$part"
-        part=${dump%.h5}.rank00000.h5
+        part=$(ls ${dump%.h5}.cyc*.rank00000.h5)
         printf 'XXXXXXXX' | dd of="$part" bs=1 seek=3000 conv=notrunc 2>/dev/null
         timeout 300 $MPIRUN $mo -np "$np" "$DYNX" -i "$deck" -o "$d/set" -r "$dump" > "$d/damaged.log" 2>&1
         rc=$?; expect_fail "damaged-part" 4 "part of rank 0: $part: its CRC-32" "$d/damaged.log"
@@ -139,7 +165,7 @@ for m in $modes; do
     if [ -z "$dump" ]; then echo "  $m: no d3dump manifest in $d"; fail=1; continue; fi
     if [ "$m" != serial ]; then
         for q in $(seq 0 $((np - 1))); do
-            [ -f "${dump%.h5}.rank$(printf %05d $q).h5" ] || { echo "  $m: part of rank $q missing"; fail=1; }
+            ls ${dump%.h5}.cyc*.rank$(printf %05d $q).h5 >/dev/null 2>&1 || { echo "  $m: part of rank $q missing"; fail=1; }
         done
     fi
     timeout 300 $MPIRUN $mo -np "$np" "$DYNX" -i "$deck" -o "$d" -r "$dump" > "$d/run2.log" 2>&1

@@ -1,14 +1,18 @@
 !> Restart dumps of MPI runs (issue 7, last acceptance item; docs/design.md "Restart of MPI
 !> runs"). A dump set of an NP-rank run is NP part files and one manifest:
-!>   <stem>.rankRRRRR.h5   each rank's sub-model state at the cycle boundary, written by the
+!>   <stem>.cycC.rankRRRRR.h5  each rank's sub-model state at cycle C, written by the
 !>                         serial writer (dx_restart: restart_write on the rank's model_t, so
 !>                         components that dump themselves there - rigid bodies, contact -
 !>                         are in the part too), atomically: <part>.tmp, fsync, rename;
 !>   <stem>.h5             the manifest, written by rank 0 only after every rank's part is on
 !>                         disk (the CRC gather below is the barrier), also atomically: NP,
-!>                         the deck's content hash, cycle, time and the CRC-32 of each part
-!>                         file's bytes. A set counts as complete only when its manifest
-!>                         exists, and -r names the manifest.
+!>                         the deck's content hash, cycle, time, the parts' prefix and the
+!>                         CRC-32 of each part file's bytes. A set counts as complete only
+!>                         when its manifest exists, and -r names the manifest. The parts
+!>                         carry the cycle, so rewriting a manifest (runrsf.h5 every CYCL
+!>                         cycles) never touches the parts the old manifest names: a crash
+!>                         at any moment leaves the old set or the new one whole. A rank
+!>                         removes its superseded part once the new manifest is in place.
 !> Continuing (`mpirun -np NP dynx -i deck.k -r <stem>.h5`): rank 0 checks the manifest (NP
 !> and deck hash: input errors, exit 2, naming the file and what to do), every rank checks
 !> its part's CRC against the manifest and reads it (a missing or damaged part: exit 4 naming
@@ -36,22 +40,69 @@ module dx_par_restart
    private
    public :: par_restart_write, par_restart_read, par_restart_part_name, par_restart_precheck
 
+   !> Parts this rank wrote or read, by manifest (removed when a new set replaces them).
+   type :: part_rec_t
+      character(:), allocatable :: manifest, part
+   end type part_rec_t
+   type(part_rec_t), allocatable, save :: known(:)
+
 contains
 
-   !> The part file of rank r in the dump set whose manifest is path.
-   function par_restart_part_name(path, r) result(p)
+   !> The parts' prefix of the dump set at cycle whose manifest is path: the manifest's
+   !> name without .h5, then .cycC (the manifest records it without the directory).
+   function part_prefix(path, cycle) result(p)
       character(*), intent(in) :: path
-      integer, intent(in) :: r
+      integer, intent(in) :: cycle
       character(:), allocatable :: p
-      character(5) :: num
       integer :: n
-      write(num, '(i5.5)') r
       n = len(path)
       if (n > 3) then
          if (path(n - 2:n) == '.h5') n = n - 3
       end if
-      p = path(1:n)//'.rank'//num//'.h5'
+      p = path(1:n)//'.cyc'//str(cycle)
+   end function part_prefix
+
+   !> The part file of rank r: prefix.rankRRRRR.h5.
+   function par_restart_part_name(prefix, r) result(p)
+      character(*), intent(in) :: prefix
+      integer, intent(in) :: r
+      character(:), allocatable :: p
+      character(5) :: num
+      write(num, '(i5.5)') r
+      p = prefix//'.rank'//num//'.h5'
    end function par_restart_part_name
+
+   !> The directory of path with a trailing '/', or ''.
+   function dir_of(path) result(d)
+      character(*), intent(in) :: path
+      character(:), allocatable :: d
+      d = path(1:index(path, '/', back=.true.))
+   end function dir_of
+
+   !> Remember that part belongs to manifest; return the part it replaces ('' if none).
+   subroutine remember(manifest, part, old)
+      character(*), intent(in) :: manifest, part
+      character(:), allocatable, intent(out) :: old
+      integer :: k
+      old = ''
+      if (.not. allocated(known)) allocate(known(0))
+      do k = 1, size(known)
+         if (known(k)%manifest == manifest) then
+            old = known(k)%part
+            known(k)%part = part
+            return
+         end if
+      end do
+      known = [known, part_rec_t(manifest, part)]
+   end subroutine remember
+
+   !> Remove a file if it exists (superseded parts; failures do not matter).
+   subroutine remove_file(path)
+      character(*), intent(in) :: path
+      integer :: u, ios
+      open(newunit=u, file=path, status='old', iostat=ios)
+      if (ios == 0) close(u, status='delete', iostat=ios)
+   end subroutine remove_file
 
    !> Collective: every rank writes its part, then rank 0 the manifest path. On failure
    !> every rank returns an error (the failing rank's own message on that rank).
@@ -64,13 +115,14 @@ contains
       integer, allocatable :: ng(:), keys(:)
       real(wp), allocatable :: vals(:, :), allv(:, :)
       character(16) :: hash
-      character(:), allocatable :: part
+      character(:), allocatable :: part, prefix, old
       integer(int64) :: crc
       integer :: me, np, code
       type(rs_file_t) :: rs
       me = par_rank()
       np = par_size()
-      part = par_restart_part_name(path, me)
+      prefix = part_prefix(path, model%cycle)
+      part = par_restart_part_name(prefix, me)
       call restart_write(model, part, kind, e)
       crc = -1
       if (.not. allocated(e)) call file_crc(part, crc, e)
@@ -97,8 +149,10 @@ contains
          call rs%put('cycle', model%cycle)
          call rs%put('time', model%time)
          if (rs%ok()) call h5_write_attr(rs%h5, '/', 'deck_hash', hash, rs%err)
+         if (rs%ok()) call h5_write_attr(rs%h5, '/', 'part_prefix', &
+                                         prefix(len(dir_of(prefix)) + 1:), rs%err)
          if (rs%ok()) call h5_write_attr(rs%h5, '/', 'parts', &
-            'the part of rank R is <this name without .h5>.rankRRRRR.h5', rs%err)
+            'the part of rank R is <part_prefix>.rankRRRRR.h5 in this directory', rs%err)
          call rs_commit(rs, e)
          code = 0
          if (allocated(e)) code = e%code
@@ -111,7 +165,10 @@ contains
             call set_error(error, 'restart dump '//path//': rank 0 could not write the '// &
                            'manifest (its message names it)', code)
          end if
+         return
       end if
+      call remember(path, part, old)           ! the new set is whole: drop the old part
+      if (len(old) > 0 .and. old /= part) call remove_file(old)
    end subroutine par_restart_write
 
    !> Restore model from the dump path: serial runs read a serial dump (an MPI manifest is
@@ -126,11 +183,11 @@ contains
       character(16) :: hash
       integer :: np, me, mode, mnp
       real(wp), allocatable :: crcs(:)
-      character(:), allocatable :: mhash, part
+      character(:), allocatable :: mhash, part, prefix, old
       np = par_size()
       me = par_rank()
       if (.not. par_engine_on()) then
-         call inspect(path, mode, mnp, mhash, crcs, error)
+         call inspect(path, mode, mnp, mhash, crcs, error, prefix)
          if (allocated(error)) return
          if (mode == 1) then
             call set_error(error, 'restart file '//path//' is the manifest of a dump written '// &
@@ -146,7 +203,7 @@ contains
       ! rank 0 judges the dump set; its errors stop every rank
       mode = 0
       if (me == 0) then
-         call inspect(path, mode, mnp, mhash, crcs, error)
+         call inspect(path, mode, mnp, mhash, crcs, error, prefix)
          if (allocated(error)) call par_abort(error%message, error%code)
          if (mode == 1) then
             if (mnp /= np) call par_abort('restart file '//path//' is a dump of a run on '// &
@@ -161,9 +218,10 @@ contains
       end if
       call par_allreduce(mode, PAR_MAX)
       if (mode == 1) then
-         if (me /= 0) call inspect(path, mode, mnp, mhash, crcs, error)
+         if (me /= 0) call inspect(path, mode, mnp, mhash, crcs, error, prefix)
          if (allocated(error)) call par_abort(error%message, error%code)
-         part = par_restart_part_name(path, me)
+         part = par_restart_part_name(dir_of(path)//prefix, me)
+         call remember(path, part, old)
          call check_part(part, crcs(me + 1), error)
          if (allocated(error)) call par_abort('restart dump '//path//', part of rank '// &
                                               str(me)//': '//error%message, error%code)
@@ -217,15 +275,17 @@ contains
    end subroutine par_restart_precheck
 
    !> What path is: mode 1 an MPI manifest (with its NP, deck hash and part CRCs), 0 else.
-   subroutine inspect(path, mode, mnp, mhash, crcs, error)
+   subroutine inspect(path, mode, mnp, mhash, crcs, error, prefix)
       character(*), intent(in) :: path
       integer, intent(out) :: mode, mnp
       character(:), allocatable, intent(out) :: mhash
       real(wp), allocatable, intent(out) :: crcs(:)
       type(error_t), allocatable, intent(out) :: error
+      character(:), allocatable, intent(out), optional :: prefix
       type(rs_file_t) :: rs
       type(error_t), allocatable :: e
-      mode = 0; mnp = 0; mhash = ''
+      character(:), allocatable :: pre
+      mode = 0; mnp = 0; mhash = ''; pre = ''
       allocate(crcs(0))
       call rs_open(rs, path, error)
       if (allocated(error)) return
@@ -240,7 +300,9 @@ contains
             call rs%get('part_crc32', crcs)
          end if
          if (rs%ok()) call h5_read_attr(rs%h5, '/', 'deck_hash', mhash, rs%err)
+         if (rs%ok()) call h5_read_attr(rs%h5, '/', 'part_prefix', pre, rs%err)
       end if
+      if (present(prefix)) prefix = pre
       call rs_close(rs, e)
       if (allocated(e)) call move_alloc(e, error)
    end subroutine inspect
