@@ -89,10 +89,11 @@ program dynx
    opts%ck%outdir = outdir
    opts%ck%deck = deck
    call slurm_limit(opts%ck%walltime)
+   ! polled once per cycle (MPI: folded into the dt reduction, every rank acts together);
+   ! installed before MPI_Init so that a SIGTERM during the start-up is a request too
+   if (.not. check_only) call signals_install()
    call par_init(error)             ! MPI only when started by mpirun/srun
    if (allocated(error)) call die(error)
-   ! polled once per cycle (MPI: folded into the dt reduction, every rank acts together)
-   if (.not. check_only) call signals_install()
 
    call read_deck(deck, model, error, ignore_unknown)
    if (allocated(error)) call die(error)
