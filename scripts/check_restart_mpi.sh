@@ -11,6 +11,9 @@
 #            N:TERM@R): the other ranks learn it through the dt reduction; exit 5 expected
 #   sigterm  a real SIGTERM to one rank's process (not mpirun) a random 0.05 .. 0.8 s after
 #            the first status line (retried shorter if the run ended first); exit 5 expected
+#   mpirun   a real SIGTERM to mpirun itself (Open MPI forwards it to every rank) a random
+#            0.05 .. 0.8 s after the first status line: every rank dumps; mpirun's own exit
+#            code is then 1 (Open MPI's), so the check is the message and the dump set
 #   walltime --walltime 1.0 (each rank's own clock; the decision is collective), exit 5
 #   usr1     SIGUSR1 at a random cycle on one random rank: every rank dumps, the run ends
 #            normally with the reference files; then a continue from that dump over the
@@ -95,6 +98,22 @@ for m in $modes; do
         done
         if [ $rc -ne 5 ]; then echo "  sigterm: exit $rc (expected 5) after ${ms} ms"; fail=1; continue; fi
         n="$(sed -n 's/.*stopped by SIGTERM at cycle \([0-9]*\).*/\1/p' "$d/run1.log") (SIGTERM to one rank's process after $ms ms)"
+        ;;
+    mpirun)
+        rc=0
+        for ms in $(rnd 50 800 $k) 100 20; do
+            rm -rf "$d"; mkdir -p "$d"
+            $MPIRUN $mo -np "$np" "$DYNX" -i "$deck" -o "$d" > "$d/run1.log" 2>&1 &
+            pid=$!
+            w=0
+            while [ $w -lt 600 ] && ! grep -q '^ *0  0.0000E+00' "$d/run1.log" 2>/dev/null; do sleep 0.05; w=$((w + 1)); done
+            sleep "$(echo "$ms" | awk '{printf "%.3f", $1/1000}')"
+            kill -TERM $pid 2>/dev/null
+            wait $pid; rc=$?
+            grep -q 'normal termination' "$d/run1.log" || break
+        done
+        if ! grep -q "stopped by SIGTERM" "$d/run1.log"; then echo "  mpirun: exit $rc, no 'stopped by SIGTERM' message"; fail=1; continue; fi
+        n="$(sed -n 's/.*stopped by SIGTERM at cycle \([0-9]*\).*/\1/p' "$d/run1.log") (SIGTERM to mpirun after $ms ms, mpirun exit $rc)"
         ;;
     walltime)
         timeout 300 $MPIRUN $mo -np "$np" "$DYNX" -i "$deck" -o "$d" --walltime 1.0 > "$d/run1.log" 2>&1
