@@ -5,6 +5,7 @@
 #   make studies  error-against-run-time studies (docs/studies/)
 #   make fuzz   10000 mutated decks through bin/dynx-asan --check (docs/errors.md)
 #   make restart-long  interrupt-and-continue on every scene deck, 20 kill -9 on the full Taylor impact
+#   make kill9-sweep   kill -9 at every write of a short run (measures the plot file's crash safety)
 SHELL := /bin/sh
 FC := h5pfc
 SRC_DIRS := base parallel model materials deck elements rigid contact loads io solvers
@@ -34,7 +35,7 @@ OUT := out
 PROGS := bin/dynx $(patsubst src/tools/%.f90,bin/%,$(wildcard src/tools/*.f90))
 PROGS := $(subst _,-,$(PROGS))
 
-.PHONY: all deps run test unit regression bench studies clean debug fuzz restart-long
+.PHONY: all deps run test unit regression bench studies clean debug fuzz restart-long kill9-sweep
 all: $(PROGS)
 
 deps:
@@ -117,6 +118,11 @@ test: deps
 restart-long: deps
 	@$(MAKE) --no-print-directory all
 	@sh scripts/restart_long.sh
+
+# kill -9 at every pwrite64 of a run (strace fault injection; fails today: docs/errors.md)
+kill9-sweep: deps
+	@$(MAKE) --no-print-directory all
+	@python3 scripts/kill9_sweep.py
 
 # the deck-reader fuzzer, >= 1e4 mutated decks through the sanitized debug build
 fuzz: deps

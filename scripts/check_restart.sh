@@ -52,7 +52,8 @@ same() {  # same DIR LABEL
         fi
     done
     if ! h5diff -q "$ref/d3plot.h5" "$1/d3plot.h5"; then echo "  $2: d3plot.h5 differs (h5diff)"; ok=0; fi
-    if [ $ok = 1 ]; then echo "  $2: identical (glstat, nodout, rbdout, rcforc, xdmf byte-equal; h5diff 0 differences)"; else fail=1; fi
+    if ! cmp -s "$ref/d3plot.h5" "$1/d3plot.h5"; then echo "  $2: d3plot.h5 not byte-equal (cmp)"; ok=0; fi
+    if [ $ok = 1 ]; then echo "  $2: identical (glstat, nodout, rbdout, rcforc, xdmf byte-equal; h5diff 0 differences; d3plot.h5 byte-equal)"; else fail=1; fi
 }
 
 last_dump() { ls "$1"/d3dump*.h5 2>/dev/null | sort | tail -1; }

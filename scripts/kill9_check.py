@@ -85,7 +85,64 @@ def same(ref, d):
     if subprocess.run(['h5diff', '-q', os.path.join(ref, 'd3plot.h5'),
                        os.path.join(d, 'd3plot.h5')]).returncode != 0:
         bad.append('d3plot.h5')
+    elif open(os.path.join(ref, 'd3plot.h5'), 'rb').read() != \
+            open(os.path.join(d, 'd3plot.h5'), 'rb').read():
+        bad.append('d3plot.h5 (not byte-equal)')
     return bad
+
+
+def check_killed(d, deck, ref, dynx, stats):
+    """What a killed run left in d: the problems found, the XDMF states checked and a note
+    on the continue (also used by kill9_sweep.py)."""
+    problems = []
+    h5 = os.path.join(d, 'd3plot.h5')
+    xmf = os.path.join(d, 'd3plot.xdmf')
+    nx = 0
+    if os.path.exists(h5):
+        if subprocess.run(['h5dump', h5], stdout=subprocess.DEVNULL,
+                          stderr=subprocess.DEVNULL).returncode != 0:
+            problems.append('h5dump cannot read d3plot.h5')
+        groups = h5_groups(h5) or {}
+        if os.path.exists(xmf):
+            try:
+                root = ET.parse(xmf).getroot()
+            except ET.ParseError as e:
+                problems.append('d3plot.xdmf is not valid XML: %s' % e)
+                root = None
+            if root is not None:
+                for g in root.iter('Grid'):
+                    name = g.get('Name', '')
+                    if not name.startswith('state'):
+                        continue
+                    nx += 1
+                    sid = name[5:]
+                    if sid not in groups:
+                        problems.append('XDMF lists state %s, not in d3plot.h5' % sid)
+                    elif not set(DATASETS) <= groups[sid]:
+                        problems.append('state %s lacks %s' % (sid, set(DATASETS) - groups[sid]))
+    stats['states'] += nx
+    for f, n in (('glstat', None), ('nodout', None)):
+        if os.path.exists(os.path.join(d, f)):
+            msg = check_table(os.path.join(d, f), n)
+            if msg:
+                problems.append('%s: %s' % (f, msg))
+    dumps = sorted(x for x in os.listdir(d) if re.fullmatch(r'd3dump\d+\.h5', x)) if os.path.isdir(d) else []
+    cont = ''
+    if dumps:
+        last = os.path.join(d, dumps[-1])
+        p = subprocess.run([dynx, '-i', deck, '-o', d, '-r', last], capture_output=True,
+                           text=True)
+        if p.returncode != 0:
+            problems.append('continue from %s: exit %d: %s' % (dumps[-1], p.returncode,
+                                                                 p.stderr.strip()[:300]))
+        else:
+            bad = same(ref, d)
+            if bad:
+                problems.append('continued run differs from the reference: %s' % ', '.join(bad))
+            else:
+                stats['continued'] += 1
+                cont = ', continued from %s: identical' % dumps[-1]
+    return problems, nx, cont
 
 
 def main():
@@ -121,54 +178,7 @@ def main():
         time.sleep(delay)
         proc.send_signal(signal.SIGKILL)
         proc.wait()
-        problems = []
-        h5 = os.path.join(d, 'd3plot.h5')
-        xmf = os.path.join(d, 'd3plot.xdmf')
-        nx = 0
-        if os.path.exists(h5):
-            if subprocess.run(['h5dump', h5], stdout=subprocess.DEVNULL,
-                              stderr=subprocess.DEVNULL).returncode != 0:
-                problems.append('h5dump cannot read d3plot.h5')
-            groups = h5_groups(h5) or {}
-            if os.path.exists(xmf):
-                try:
-                    root = ET.parse(xmf).getroot()
-                except ET.ParseError as e:
-                    problems.append('d3plot.xdmf is not valid XML: %s' % e)
-                    root = None
-                if root is not None:
-                    for g in root.iter('Grid'):
-                        name = g.get('Name', '')
-                        if not name.startswith('state'):
-                            continue
-                        nx += 1
-                        sid = name[5:]
-                        if sid not in groups:
-                            problems.append('XDMF lists state %s, not in d3plot.h5' % sid)
-                        elif not set(DATASETS) <= groups[sid]:
-                            problems.append('state %s lacks %s' % (sid, set(DATASETS) - groups[sid]))
-        stats['states'] += nx
-        for f, n in (('glstat', None), ('nodout', None)):
-            if os.path.exists(os.path.join(d, f)):
-                msg = check_table(os.path.join(d, f), n)
-                if msg:
-                    problems.append('%s: %s' % (f, msg))
-        dumps = sorted(x for x in os.listdir(d) if re.fullmatch(r'd3dump\d+\.h5', x)) if os.path.isdir(d) else []
-        cont = ''
-        if dumps:
-            last = os.path.join(d, dumps[-1])
-            p = subprocess.run([args.dynx, '-i', deck, '-o', d, '-r', last], capture_output=True,
-                               text=True)
-            if p.returncode != 0:
-                problems.append('continue from %s: exit %d: %s' % (dumps[-1], p.returncode,
-                                                                     p.stderr.strip()[:300]))
-            else:
-                bad = same(ref, d)
-                if bad:
-                    problems.append('continued run differs from the reference: %s' % ', '.join(bad))
-                else:
-                    stats['continued'] += 1
-                    cont = ', continued from %s: identical' % dumps[-1]
+        problems, nx, cont = check_killed(d, deck, ref, args.dynx, stats)
         status = 'FAIL' if problems else 'ok'
         print('  run %2d: kill -9 after %.3f s: %d XDMF states readable%s %s' % (
             k, delay, nx, cont, status))

@@ -8,6 +8,7 @@ module dx_read_controls
    use dx_kinds, only: wp
    use dx_error, only: error_t
    use dx_strings, only: str, rstr
+   use dx_log, only: log_warn
    use dx_deck_cards, only: deck_t, block_t, get_int, get_real, field_error, block_error, &
                             std_widths, check_max_cards
    use dx_deck_registry, only: registry_t
@@ -77,6 +78,12 @@ contains
          if (allocated(error)) return
          call get_real(deck, blk, 1, 5, w, 'ENDMAS', 0.0_wp, c%endmas, error)
          if (allocated(error)) return
+         ! LS-DYNA: stop when the mass added by mass scaling (*CONTROL_TIMESTEP DT2MS < 0)
+         ! reaches ENDMAS percent of the model's mass. dynx adds no mass, so it never acts.
+         if (c%endmas /= 0.0_wp) call log_warn(deck%files(blk%ifile)%s//':'// &
+            str(blk%cards(1)%line)//': *CONTROL_TERMINATION ENDMAS = '//rstr(c%endmas)// &
+            ' has no effect: it limits the mass added by mass scaling, and dynx adds none '// &
+            '(DT2MS is not applied)')
       end associate
       call must_be_zero(deck, blk, 1, 6, w, 'NOSOL', 'dynx always solves', error)
       if (allocated(error)) return

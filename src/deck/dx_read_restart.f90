@@ -7,6 +7,7 @@
 module dx_read_restart
    use dx_error, only: error_t
    use dx_strings, only: str
+   use dx_log, only: log_warn
    use dx_deck_cards, only: deck_t, block_t, get_int, field_error, block_error, &
                             std_widths, check_max_cards
    use dx_deck_registry, only: registry_t
@@ -60,6 +61,11 @@ contains
          end if
       end do
       if (blk%base == 'DATABASE_BINARY_D3DUMP') then
+         ! LS-DYNA counts running restart files with NR only for RUNRSF; each d3dump is a
+         ! new file (d3dump01, 02, ...), so NR has nothing to act on here
+         if (nr /= 0) call log_warn(deck%files(blk%ifile)%s//':'//str(blk%cards(1)%line)// &
+            ': *DATABASE_BINARY_D3DUMP NR = '//str(nr)//' has no effect: NR counts the '// &
+            'running restart files of *DATABASE_BINARY_RUNRSF; every d3dump is a new file')
          inp%rst%d3dump_cycl = cycl
       else
          inp%rst%runrsf_cycl = cycl

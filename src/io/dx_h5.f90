@@ -216,7 +216,13 @@ contains
          call fail(f, error, 'create dataspace for', path)
          return
       end if
-      call h5dcreate_f(f%id, path, dtype, space, dset, ierr)
+      block
+         integer(hid_t) :: pl
+         call h5pcreate_f(H5P_DATASET_CREATE_F, pl, ierr)
+         call h5pset_obj_track_times_f(pl, .false., ierr)
+         call h5dcreate_f(f%id, path, dtype, space, dset, ierr, pl)
+         call h5pclose_f(pl, ierr2)
+      end block
       if (ierr < 0) then
          dset = -1
          call fail(f, error, 'create dataset', path)
@@ -495,6 +501,7 @@ contains
             exit work
          end if
          call h5pset_chunk_f(plist, 1, chunk, ierr)
+         call h5pset_obj_track_times_f(plist, .false., ierr)
          if (ierr < 0) then
             call fail(f, error, 'set chunking of', path)
             exit work

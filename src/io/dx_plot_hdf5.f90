@@ -8,14 +8,17 @@
 !> Crash safety: the file is created as d3plot.h5.tmp and renamed once the mesh is flushed;
 !> then per state its datasets first, then its time appended and nstates set, then a
 !> global flush, then the XDMF rewritten (tmp + rename) listing only complete states.
+!> A continued run (plot_resume) rebuilds the file: the states up to the dump are copied
+!> into a new file with the same calls in the same order as the first run made them, so
+!> with object times off (dx_h5) the file is byte for byte the uninterrupted run's.
 !> All HDF5 calls go through dx_h5.
 module dx_plot_hdf5
    use dx_kinds, only: wp
    use dx_error, only: error_t
    use dx_model, only: model_t, elem_block_t
    use dx_h5, only: h5_file_t, h5_create, h5_close, h5_flush, h5_create_group, h5_write, &
-                    h5_write_attr, h5_create_extendible, h5_append, h5_open_rw, h5_read, &
-                    h5_read_attr, h5_exists, h5_delete, h5_set_extent
+                    h5_write_attr, h5_create_extendible, h5_append, h5_open_read, h5_read, &
+                    h5_read_attr
    use dx_error, only: set_error, EXIT_IO
    use dx_io_sys, only: sys_rename
    use dx_strings, only: str
@@ -43,11 +46,13 @@ module dx_plot_hdf5
 contains
 
    !> Create dir/d3plot.h5 with the mesh and an empty state list, and dir/d3plot.xdmf.
-   subroutine plot_open(self, model, dir, error)
+   !> publish = .false. (plot_resume): leave the new file as d3plot.h5.tmp, no XDMF.
+   subroutine plot_open(self, model, dir, error, publish)
       class(plot_file_t), intent(inout) :: self
       type(model_t), intent(in) :: model
       character(*), intent(in) :: dir
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: publish
       integer, allocatable :: hex(:, :), ids(:), nlab(:), elab(:)
       integer :: ib, i, e
       type(error_t), allocatable :: err2
@@ -110,6 +115,9 @@ contains
          if (allocated(error)) exit work
          call h5_flush(self%h5, error)
          if (allocated(error)) exit work
+         if (present(publish)) then
+            if (.not. publish) exit work
+         end if
          ! an empty XDMF first: an older one must not list states the new file lacks
          call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, &
                          self%times(1:0), error)
@@ -119,9 +127,13 @@ contains
       if (allocated(error)) call h5_close(self%h5, err2)   ! keep the first error
    end subroutine plot_open
 
-   !> Continue dir/d3plot.h5 from a restart point that had written nkeep states: states
-   !> after it (written by the interrupted run after its dump, complete or not) are
-   !> removed, /states/times and nstates are cut back, and the XDMF is rewritten.
+   !> Continue dir/d3plot.h5 from a restart point that had written nkeep states. The file
+   !> is rebuilt: a new d3plot.h5.tmp gets the mesh and states 1..nkeep copied from the old
+   !> file with the calls of plot_open and plot_write_state, in their order (the same bytes
+   !> as the uninterrupted run's file at that point, so the continued run's file ends up
+   !> identical to it; deleting the later states in place left other bytes, and HDF5 does
+   !> not shrink a file). Order for a kill at any moment: the XDMF is cut to nkeep states
+   !> first (they are in the old file), then the new file replaces the old by rename.
    !> A missing plot file is started anew.
    subroutine plot_resume(self, model, dir, nkeep, error)
       class(plot_file_t), intent(inout) :: self
@@ -130,25 +142,27 @@ contains
       integer, intent(in) :: nkeep
       type(error_t), allocatable, intent(out) :: error
       type(error_t), allocatable :: err2
-      real(wp), allocatable :: t(:)
-      integer :: ndisk, k
+      type(h5_file_t) :: old
+      real(wp), allocatable :: t(:), b(:), x(:, :), d(:, :), v(:, :), stress(:, :), vm(:), &
+                               pres(:), epsp(:)
+      integer, allocatable :: failed(:)
+      real(wp) :: tk
+      integer :: ndisk, k, nn, ne
       logical :: there
+      character(:), allocatable :: g
       inquire(file=dir//'/'//H5NAME, exist=there)
       if (.not. there) then
          call self%open(model, dir, error)
          return
       end if
-      self%nn = model%nn
-      self%ne = model%ne
-      self%title = ''
-      if (allocated(model%title)) self%title = model%title
-      self%xdmf_path = dir//'/'//XMFNAME
-      call h5_open_rw(self%h5, dir//'/'//H5NAME, error)
+      nn = model%nn
+      ne = model%ne
+      call h5_open_read(old, dir//'/'//H5NAME, error)
       if (allocated(error)) return
       work: block
-         call h5_read_attr(self%h5, '/', 'nstates', ndisk, error)
+         call h5_read_attr(old, '/', 'nstates', ndisk, error)
          if (allocated(error)) exit work
-         call h5_read(self%h5, '/states/times', t, error)
+         call h5_read(old, '/states/times', t, error)
          if (allocated(error)) exit work
          if (ndisk < nkeep .or. size(t) < nkeep) then
             call set_error(error, 'cannot continue '//dir//'/'//H5NAME//': it has '// &
@@ -156,25 +170,58 @@ contains
                ' (another run''s file?)', EXIT_IO)
             exit work
          end if
-         do k = nkeep + 1, max(ndisk, size(t)) + 1
-            call h5_exists(self%h5, state_group(k), there, error)
+         self%title = ''
+         if (allocated(model%title)) self%title = model%title
+         call xdmf_write(dir//'/'//XMFNAME, H5NAME, self%title, nn, ne, t(1:nkeep), error)
+         if (allocated(error)) exit work
+         call self%open(model, dir, error, publish=.false.)
+         if (allocated(error)) exit work
+         allocate(failed(ne))
+         do k = 1, nkeep
+            g = state_group(k)
+            call h5_read_attr(old, g, 'time', tk, error)
+            if (.not. allocated(error)) call get2(g//'/coordinates', 3, nn, x)
+            if (.not. allocated(error)) call get2(g//'/displacement', 3, nn, d)
+            if (.not. allocated(error)) call get2(g//'/velocity', 3, nn, v)
+            if (.not. allocated(error)) call get2(g//'/stress', 6, ne, stress)
+            if (.not. allocated(error)) call get1(g//'/von_mises', ne, vm)
+            if (.not. allocated(error)) call get1(g//'/pressure', ne, pres)
+            if (.not. allocated(error)) call get1(g//'/eff_plastic_strain', ne, epsp)
+            if (.not. allocated(error)) call get1(g//'/failed', ne, b)
             if (allocated(error)) exit work
-            if (there) call h5_delete(self%h5, state_group(k), error)
+            failed = nint(b)
+            call write_arrays(self, tk, x, d, v, stress, vm, pres, epsp, failed, error, &
+                              xdmf=.false.)
             if (allocated(error)) exit work
          end do
-         call h5_set_extent(self%h5, '/states/times', nkeep, error)
+         call h5_close(old, error)
          if (allocated(error)) exit work
-         call h5_write_attr(self%h5, '/', 'nstates', nkeep, error)
-         if (allocated(error)) exit work
-         call h5_flush(self%h5, error)
-         if (allocated(error)) exit work
-         self%nstates = nkeep
-         allocate(self%times(max(16, 2*nkeep)))
-         self%times(1:nkeep) = t(1:nkeep)
-         call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, &
-                         self%times(1:nkeep), error)
+         call sys_rename(dir//'/'//H5NAME//'.tmp', dir//'/'//H5NAME, error)
       end block work
-      if (allocated(error)) call h5_close(self%h5, err2)
+      if (allocated(error)) then
+         call h5_close(old, err2)
+         call h5_close(self%h5, err2)
+      end if
+   contains
+      subroutine get1(path, n, a)
+         character(*), intent(in) :: path
+         integer, intent(in) :: n
+         real(wp), allocatable, intent(out) :: a(:)
+         call h5_read(old, path, a, error)
+         if (allocated(error)) return
+         if (size(a) /= n) call set_error(error, 'cannot continue '//dir//'/'//H5NAME// &
+            ': '//path//' has '//str(size(a))//' values, expected '//str(n)//' (another '// &
+            'run''s file?)', EXIT_IO)
+      end subroutine get1
+      subroutine get2(path, m, n, a)
+         character(*), intent(in) :: path
+         integer, intent(in) :: m, n
+         real(wp), allocatable, intent(out) :: a(:, :)
+         real(wp), allocatable :: f(:)
+         call get1(path, m*n, f)
+         if (allocated(error)) return
+         a = reshape(f, [m, n])
+      end subroutine get2
    end subroutine plot_resume
 
    !> Element results: stress averaged over integration points, von Mises, pressure,
@@ -254,13 +301,9 @@ contains
       class(plot_file_t), intent(inout) :: self
       type(model_t), intent(in) :: model
       type(error_t), allocatable, intent(out) :: error
-      real(wp), allocatable :: x(:, :), stress(:, :), vm(:), pres(:), epsp(:), tmp(:)
+      real(wp), allocatable :: x(:, :), stress(:, :), vm(:), pres(:), epsp(:), z(:, :)
       integer, allocatable :: failed(:)
-      character(:), allocatable :: g
-      integer :: k, n
 
-      k = self%nstates + 1
-      g = state_group(k)
       allocate(x(3, self%nn), stress(6, self%ne), vm(self%ne), pres(self%ne), &
                epsp(self%ne), failed(self%ne))
       if (allocated(model%x)) then
@@ -270,20 +313,40 @@ contains
       end if
       call element_results(model, stress, vm, pres, epsp, failed)
 
+      if (allocated(model%v)) then
+         call write_arrays(self, model%time, x, x - model%x0, model%v, stress, vm, pres, epsp, &
+                           failed, error)
+      else
+         allocate(z(3, self%nn))
+         z = 0.0_wp
+         call write_arrays(self, model%time, x, x - model%x0, z, stress, vm, pres, epsp, &
+                           failed, error)
+      end if
+   end subroutine plot_write_state
+
+   !> The writes of one state (the order of the module header), then its XDMF entry.
+   !> plot_write_state and plot_resume's copy both come through here: the same calls.
+   subroutine write_arrays(self, time, x, d, v, stress, vm, pres, epsp, failed, error, xdmf)
+      class(plot_file_t), intent(inout) :: self
+      real(wp), intent(in) :: time, x(:, :), d(:, :), v(:, :), stress(:, :), vm(:), pres(:), &
+                              epsp(:)
+      integer, intent(in) :: failed(:)
+      type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: xdmf     !< .false.: no XDMF entry (plot_resume)
+      real(wp), allocatable :: tmp(:)
+      character(:), allocatable :: g
+      integer :: k, n
+      k = self%nstates + 1
+      g = state_group(k)
       call h5_create_group(self%h5, g, error)
       if (allocated(error)) return
-      call h5_write_attr(self%h5, g, 'time', model%time, error)
+      call h5_write_attr(self%h5, g, 'time', time, error)
       if (allocated(error)) return
       call h5_write(self%h5, g//'/coordinates', x, error)
       if (allocated(error)) return
-      call h5_write(self%h5, g//'/displacement', x - model%x0, error)
+      call h5_write(self%h5, g//'/displacement', d, error)
       if (allocated(error)) return
-      if (allocated(model%v)) then
-         call h5_write(self%h5, g//'/velocity', model%v, error)
-      else
-         x = 0.0_wp
-         call h5_write(self%h5, g//'/velocity', x, error)
-      end if
+      call h5_write(self%h5, g//'/velocity', v, error)
       if (allocated(error)) return
       call h5_write(self%h5, g//'/stress', stress, error)
       if (allocated(error)) return
@@ -296,7 +359,7 @@ contains
       call h5_write(self%h5, g//'/failed', failed, error)
       if (allocated(error)) return
       ! the state is complete: publish it
-      call h5_append(self%h5, '/states/times', model%time, n, error)
+      call h5_append(self%h5, '/states/times', time, n, error)
       if (allocated(error)) return
       call h5_write_attr(self%h5, '/', 'nstates', k, error)
       if (allocated(error)) return
@@ -308,10 +371,13 @@ contains
          tmp(1:k - 1) = self%times(1:k - 1)
          call move_alloc(tmp, self%times)
       end if
-      self%times(k) = model%time
+      self%times(k) = time
+      if (present(xdmf)) then
+         if (.not. xdmf) return
+      end if
       call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, &
                       self%times(1:k), error)
-   end subroutine plot_write_state
+   end subroutine write_arrays
 
    !> Flush and close (safe to call twice and after errors).
    subroutine plot_close(self, error)

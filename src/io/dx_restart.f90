@@ -70,12 +70,44 @@ contains
                'dump instead', EXIT_INPUT)
          end if
       end if
+      if (.not. allocated(error)) call check_components(rs, model, path, error)
       if (allocated(error)) then
          call rs_close(rs, e); return
       end if
       call restore_components(rs, model)
       call rs_close(rs, error)
    end subroutine restart_read
+
+   !> The dump and the deck must have the same components with state: a dump with rigid
+   !> bodies or contact restored into a deck without them (or the reverse) is an input
+   !> error naming both files and what differs (the mesh checks alone let it through).
+   subroutine check_components(rs, model, path, error)
+      type(rs_file_t), intent(inout) :: rs
+      type(model_t), intent(in) :: model
+      character(*), intent(in) :: path
+      type(error_t), allocatable, intent(out) :: error
+      call one('rigid_nbodies', allocated(model%rigid), 'rigid bodies (*MAT_RIGID, '// &
+               '*CONSTRAINED_NODAL_RIGID_BODY)')
+      if (.not. allocated(error)) call one('contact_ninterfaces', allocated(model%contact), &
+                                            'contact interfaces (*CONTACT_...)')
+   contains
+      subroutine one(dataset, in_deck, what)
+         character(*), intent(in) :: dataset, what
+         logical, intent(in) :: in_deck
+         logical :: in_dump
+         in_dump = rs%has(dataset)
+         if (in_dump .eqv. in_deck) return
+         if (in_dump) then
+            call set_error(error, 'restart file '//path//' holds the state of '//what// &
+               ', but the deck '//model%deck_file//' has none; continue it with the deck '// &
+               'the dump was written from', EXIT_INPUT)
+         else
+            call set_error(error, 'the deck '//model%deck_file//' has '//what// &
+               ', but restart file '//path//' holds no state of them (a dump of a deck '// &
+               'without them); continue it with the deck the dump was written from', EXIT_INPUT)
+         end if
+      end subroutine one
+   end subroutine check_components
 
    !> Every component with state, in a fixed order. New components: one line each.
    subroutine dump_components(rs, model)

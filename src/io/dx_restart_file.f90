@@ -18,7 +18,8 @@ module dx_restart_file
    use dx_io_sys, only: sys_rename, sys_fsync
    implicit none
    private
-   public :: rs_file_t, rs_create, rs_commit, rs_open, rs_close, crc32, RESTART_FORMAT_VERSION
+   public :: rs_file_t, rs_create, rs_commit, rs_open, rs_close, crc32, RESTART_FORMAT_VERSION, &
+             crc32_bytes
 
    !> Bump when the meaning or the list of datasets changes; readers refuse other versions.
    !> 2: energy record with the sliding energy (13 values), rigid_* and contact_* datasets.
@@ -322,18 +323,23 @@ contains
    integer(int64) function crc32(a) result(c)
       real(wp), intent(in) :: a(:)
       integer(int8), allocatable :: bytes(:)
+      allocate(bytes(0))
+      if (size(a) > 0) bytes = transfer(a, bytes)
+      c = crc32_bytes(bytes)
+   end function crc32
+
+   !> CRC-32 of a byte string (the same rule as crc32; whole files, dx_par_restart).
+   integer(int64) function crc32_bytes(bytes) result(c)
+      integer(int8), intent(in) :: bytes(:)
       integer(int64), parameter :: MASK32 = int(z'FFFFFFFF', int64)
       integer :: i
       if (.not. table_ready) call make_table()
       c = MASK32
-      if (size(a) > 0) then
-         bytes = transfer(a, bytes)
-         do i = 1, size(bytes)
-            c = ieor(table(iand(ieor(c, int(bytes(i), int64)), 255_int64)), shiftr(c, 8))
-         end do
-      end if
+      do i = 1, size(bytes)
+         c = ieor(table(iand(ieor(c, int(bytes(i), int64)), 255_int64)), shiftr(c, 8))
+      end do
       c = ieor(c, MASK32)
-   end function crc32
+   end function crc32_bytes
 
    subroutine make_table()
       integer(int64), parameter :: POLY = int(z'EDB88320', int64)

@@ -11,7 +11,7 @@ program dynx
    use dx_deck, only: read_deck
    use dx_output, only: output_t
    use dx_explicit, only: run_options_t, run_explicit, init_state
-   use dx_restart, only: restart_read
+   use dx_par_restart, only: par_restart_read, par_restart_precheck
    use dx_restart_deck, only: apply_restart_deck
    use dx_signals, only: signals_install, SIGTERM_NUM, SIGINT_NUM, SIGUSR1_NUM
    use dx_io_sys, only: sys_epoch_seconds
@@ -68,7 +68,7 @@ program dynx
             call die_usage('--walltime needs a positive number of seconds')
       case ('--raise-at-cycle')
          i = i + 1; val = get_arg(i)
-         call parse_raise(val, opts%ck%raise_cycle, opts%ck%raise_sig)
+         call parse_raise(val, opts%ck%raise_cycle, opts%ck%raise_sig, opts%ck%raise_rank)
       case ('--ignore-unknown')
          ignore_unknown = .true.
       case default
@@ -90,11 +90,11 @@ program dynx
    opts%ck%outdir = outdir
    opts%ck%deck = deck
    call slurm_limit(opts%ck%walltime)
+   ! polled once per cycle (MPI: folded into the dt reduction, every rank acts together);
+   ! installed before MPI_Init so that a SIGTERM during the start-up is a request too
+   if (.not. check_only) call signals_install()
    call par_init(error)             ! MPI only when started by mpirun/srun
    if (allocated(error)) call die(error)
-   if (par_size() > 1 .and. len(rfile) > 0) call die_usage('-r (restart) is serial only so far')
-   ! polled once per cycle by the serial solver (an MPI run leaves signals to mpirun)
-   if (.not. check_only .and. par_size() == 1) call signals_install()
 
    call read_deck(deck, model, error, ignore_unknown)
    if (allocated(error)) call die(error)
@@ -116,20 +116,27 @@ program dynx
          'rigid-body solver (*DYNX_CONSERVING_CONTACT): its dumps are not written yet', EXIT_INPUT)
       call die(error)
    end if
+   if (len(rfile) > 0) call par_restart_precheck(rfile, deck)   ! MPI: dump of another NP or deck
    call par_engine_setup(model, deck, outdir, partdir, error)   ! MPI run: the rank's part
    if (allocated(error)) call die(error)
    call init_state(model)
    if (len(rfile) > 0) then
-      call restart_read(model, rfile, error)
+      call par_restart_read(model, rfile, error)   ! serial dump, or an MPI run's parts
       if (allocated(error)) call die(error)
       call log_info('dynx: restart from '//rfile//' at cycle '//str(model%cycle)//', time '// &
                     rstr(model%time))
       if (len(rdeck) > 0) then
          call apply_restart_deck(rdeck, model, error)
          if (allocated(error)) call die(error)
+         if (par_size() > 1) call apply_restart_deck(rdeck, par_engine_global(), error)
+         if (allocated(error)) call die(error)
          call log_info('dynx: restart deck '//rdeck//' applied')
       end if
-      call out%resume(model, outdir, error)
+      if (par_size() == 1) then
+         call out%resume(model, outdir, error)
+      else if (par_rank() == 0) then  ! MPI: rank 0 writes the output (global model)
+         call out%resume(par_engine_global(), outdir, error)
+      end if
    else if (par_size() > 1) then       ! an MPI run writes its output from rank 0
       if (par_rank() == 0) call out%open(par_engine_global(), outdir, error)
    else
@@ -145,6 +152,7 @@ program dynx
    if (allocated(error)) then
       if (error%code == EXIT_CHECKPOINT) then
          call log_info(error%message)
+         call par_finalize()
          call exit_process(EXIT_CHECKPOINT)
       end if
       call die(error)
@@ -187,8 +195,9 @@ contains
          '                       output intervals, curves; docs/keywords.md)', &
          '  --walltime S         write a restart dump and stop (exit 5) before S seconds of', &
          '                       wall time (SLURM_JOB_END_TIME is read when set)', &
-         '  --raise-at-cycle N[:SIG]  send SIG (TERM, INT, USR1; default TERM) to dynx', &
-         '                       itself at cycle N (tests of the signal path)', &
+         '  --raise-at-cycle N[:SIG][@R]  send SIG (TERM, INT, USR1; default TERM) to', &
+         '                       dynx itself at cycle N (tests of the signal path); MPI:', &
+         '                       @R only on rank R (default every rank)', &
          '  --ignore-unknown     unknown keywords are warnings, not errors', &
          '  -h, --help           this text', &
          '', &
@@ -218,12 +227,20 @@ contains
       call log_info('dynx: SLURM_JOB_END_TIME leaves '//rstr(left, 6)//' s')
    end subroutine slurm_limit
 
-   !> --raise-at-cycle N[:SIG]
-   subroutine parse_raise(v, n, sig)
-      character(*), intent(in) :: v
-      integer, intent(out) :: n, sig
+   !> --raise-at-cycle N[:SIG][@R]
+   subroutine parse_raise(vv, n, sig, rank)
+      character(*), intent(in) :: vv
+      integer, intent(out) :: n, sig, rank
       integer :: k, ios
-      character(:), allocatable :: name
+      character(:), allocatable :: name, v
+      v = vv
+      rank = -1
+      k = index(v, '@')
+      if (k > 0) then
+         read(v(k + 1:), *, iostat=ios) rank
+         if (ios /= 0 .or. rank < 0) call die_usage('--raise-at-cycle N[:SIG]@R needs a rank R >= 0')
+         v = v(1:k - 1)
+      end if
       k = index(v, ':')
       name = 'TERM'
       if (k > 0) name = v(k + 1:)

@@ -25,7 +25,7 @@ module dx_par
              par_allreduce, par_abort, shared_sum_t, par_shared_setup, par_shared_sum, &
              par_shared_sum_plain, par_wtime, par_minloc, par_gather_ordered, PAR_SUM, &
              gather_plan_t, par_gather_setup, par_gather_values, &
-             PAR_MIN, PAR_MAX, par_bcast_text
+             PAR_MIN, PAR_MAX, par_bcast_text, par_minloc_flags
 
    integer, parameter :: PAR_SUM = 1, PAR_MIN = 2, PAR_MAX = 3
    integer, parameter :: TAG_COUNT = 101, TAG_KEYS = 102, TAG_VALUES = 103
@@ -491,6 +491,34 @@ contains
       x = pout(1, 1)
       key = nint(pout(2, 1))
    end subroutine par_minloc
+
+   !> par_minloc with flags folded into the same reduction (no extra synchronization): the
+   !> MINLOC runs on 1 + size(flags) (value, index) pairs at once; flag k travels as the pair
+   !> (-flags(k), 0), so its minimum is the largest flag over the ranks. Used for the
+   !> collective stop/dump decision of an MPI run (dx_checkpoint): a signal that reached one
+   !> rank, or one rank's wall-clock limit, becomes every rank's decision in the same cycle.
+   subroutine par_minloc_flags(x, key, flags)
+      real(wp), intent(inout) :: x
+      integer, intent(inout) :: key
+      integer, intent(inout) :: flags(:)
+      real(wp) :: pin(2, 1 + size(flags)), pout(2, 1 + size(flags))
+      integer :: ierr, k
+      if (.not. mpi_on) return
+      pin(1, 1) = x
+      pin(2, 1) = real(key, wp)
+      do k = 1, size(flags)
+         pin(1, 1 + k) = -real(flags(k), wp)
+         pin(2, 1 + k) = 0.0_wp
+      end do
+      call MPI_Allreduce(pin, pout, 1 + size(flags), MPI_2DOUBLE_PRECISION, MPI_MINLOC, &
+                         comm, ierr)
+      call check(ierr, 'MPI_Allreduce (MINLOC with flags)')
+      x = pout(1, 1)
+      key = nint(pout(2, 1))
+      do k = 1, size(flags)
+         flags(k) = -nint(pout(1, 1 + k))
+      end do
+   end subroutine par_minloc_flags
 
    !> Every rank's (key, value) pairs, gathered on every rank and sorted by key (keys distinct
    !> over all ranks): the caller then sums them in the serial order and structure (for

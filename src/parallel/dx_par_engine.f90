@@ -29,7 +29,7 @@ module dx_par_engine
    use dx_deck, only: read_deck_input
    use dx_par, only: par_rank, par_size, par_abort, par_minloc, par_gather_ordered, &
                      par_allreduce, par_barrier, PAR_MAX, gather_plan_t, par_gather_setup, &
-                     par_gather_values, par_wtime, PAR_SUM, par_bcast_text
+                     par_gather_values, par_wtime, PAR_SUM, par_bcast_text, par_minloc_flags
    use dx_par_model, only: par_model_t, par_model_build, par_fill_slots, par_exchange_forces, &
                            par_exchange_mass
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report
@@ -51,7 +51,8 @@ module dx_par_engine
              par_engine_energies, par_engine_output, par_engine_fail, &
              par_engine_global, par_engine_report, par_engine_mass_share, par_engine_defer, &
              par_engine_pending, par_engine_sync_failure, par_engine_plot, &
-             par_engine_plot_finish, par_engine_together, par_engine_writer
+             par_engine_plot_finish, par_engine_together, par_engine_writer, &
+             par_engine_flush_work, par_engine_maps
 
    logical, save :: on = .false.
    type(model_t), target, save :: g                  !< the global model (serial numbering)
@@ -74,6 +75,7 @@ module dx_par_engine
    real(wp), save :: t_exch = 0.0_wp, t_dt = 0.0_wp, t_gath = 0.0_wp
    type(error_t), allocatable, save :: pending     !< a failure found here, not yet known to all
    logical, save :: together = .false.             !< a failure every rank knows (clean stop)
+   character(16), save :: deck_hash = ''              !< content hash of the deck (restart)
 
 contains
 
@@ -102,8 +104,9 @@ contains
       call unsupported(model, error)
       if (allocated(error)) return
       if (me > 0) call log_set_quiet(.true.)
-      call deck_hash(deck, hash, error)    ! the parsed cards are freed on return
+      call deck_content_hash_of(deck, hash, error)    ! the parsed cards are freed on return
       if (allocated(error)) return
+      deck_hash = hash
       k = index(deck, '/', back=.true.)
       deckdir = '.'
       if (k > 0) deckdir = deck(1:k - 1)
@@ -236,7 +239,7 @@ contains
       on = .true.
    contains
       !> The deck's content hash (every file it reads), as dynx-part records it.
-      subroutine deck_hash(deck, hash, error)
+      subroutine deck_content_hash_of(deck, hash, error)
          character(*), intent(in) :: deck
          character(16), intent(out) :: hash
          type(error_t), allocatable, intent(out) :: error
@@ -245,7 +248,7 @@ contains
          call read_deck_input(deck, inp, error)
          if (allocated(error)) return
          call deck_content_hash(inp%files, hash, error)
-      end subroutine deck_hash
+      end subroutine deck_content_hash_of
 
       !> Rank 0 only: partition the deck into dir as `dynx-part deck -n np -o dir` would.
       subroutine partition_here(model, np, hash, deck, dir)
@@ -292,8 +295,6 @@ contains
          what = '*MAT_RIGID / *CONSTRAINED_NODAL_RIGID_BODY (rigid bodies) with *CONTACT_...'
       else if (allocated(model%emc)) then
          what = '*DYNX_CONSERVING_CONTACT (the conserving rigid-body solver)'
-      else if (model%rst%d3dump_cycl > 0 .or. model%rst%runrsf_cycl > 0) then
-         what = '*DATABASE_BINARY_D3DUMP / *DATABASE_BINARY_RUNRSF (restart dumps)'
       end if
       if (len(what) > 0) call set_error(error, model%deck_file//': '//what// &
          ' is not supported in an MPI run yet; run this deck serially (without mpirun)', &
@@ -360,10 +361,13 @@ contains
    !> minima, as the serial loop's first minimum). A failure kept on a rank (pending) is
    !> folded in as dt = -1 with key = the rank: then every rank returns with error set to
    !> the lowest failing rank's message (par_bcast_text), and dtcrit is not a step.
-   subroutine par_engine_dt(dtcrit, dt_elem, error)
+   !> flags (optional): stop/dump requests of this rank, folded into the same reduction
+   !> (largest over the ranks; dx_checkpoint).
+   subroutine par_engine_dt(dtcrit, dt_elem, error, flags)
       real(wp), intent(inout) :: dtcrit
       integer, intent(inout) :: dt_elem
       type(error_t), allocatable, intent(inout) :: error
+      integer, intent(inout), optional :: flags(:)
       integer :: key
       real(wp) :: t0
       key = huge(key)
@@ -374,7 +378,11 @@ contains
          key = par_rank()
       end if
       t0 = par_wtime()
-      call par_minloc(dtcrit, key)
+      if (present(flags)) then
+         call par_minloc_flags(dtcrit, key, flags)
+      else
+         call par_minloc(dtcrit, key)
+      end if
       t_dt = t_dt + (par_wtime() - t0)
       if (dtcrit < 0.0_wp) then
          call failure_known(key, error)
@@ -502,6 +510,24 @@ contains
       if (allocated(model%walls)) call apply_rigidwalls(model, dt, dtavg, vold, model%v, dummy)
       if (needed .or. nbuf == NBUF_MAX) call flush_work(wcon, wrw)
    end subroutine par_engine_constraints
+
+   !> Before a restart dump: the kept cycles' work terms into wcon, wrw (the same additions
+   !> in the same order as a later flush would make), so the dump holds the sums to date.
+   subroutine par_engine_flush_work(wcon, wrw)
+      real(wp), intent(inout) :: wcon, wrw
+      if (nbuf > 0) call flush_work(wcon, wrw)
+   end subroutine par_engine_flush_work
+
+   !> For restart dumps (dx_par_restart): the global model, the global node of each local
+   !> node (slot nodes included) and the deck's content hash.
+   subroutine par_engine_maps(gp, node_global, hash)
+      type(model_t), pointer, intent(out) :: gp
+      integer, allocatable, intent(out) :: node_global(:)
+      character(16), intent(out) :: hash
+      gp => g
+      node_global = [pm%node_global, pm%node_global(pm%slot_node)]
+      hash = deck_hash
+   end subroutine par_engine_maps
 
    !> Gather the kept cycles and add their work terms in serial order.
    subroutine flush_work(wcon, wrw)

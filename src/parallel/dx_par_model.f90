@@ -98,6 +98,7 @@ contains
                pb%ehg = sb%ehg(piece)
                pb%failed = sb%failed(piece)
                if (allocated(sb%hgs)) pb%hgs = sb%hgs(piece, :, :)
+               if (allocated(sb%ework)) pb%ework = sb%ework(piece, :)   ! a restart reads it
                allocate(pb%conn(8, pb%nel))
                ! slots numbered corner-major as the force scatter visits them
                do k = 1, 8

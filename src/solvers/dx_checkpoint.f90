@@ -11,6 +11,11 @@
 !>  - *CONTROL_TERMINATION ENDENG: the energy ratio left the band 1 +- ENDENG/100 (flagged
 !>    by the solver), stop like SIGTERM but with exit code 3 (numerical failure).
 !> A numerical failure in the middle of a cycle writes a d3dump marked as not restartable.
+!> MPI runs (dx_par_restart): a signal may reach one rank or all, and each rank has its own
+!> clock, so the decision is collective: each rank's requests (stop signal, SIGUSR1, its
+!> wall-clock limit) ride in the cycle's dt reduction (checkpoint_par_dt: MINLOC plus the
+!> largest flag, one MPI_Allreduce, no extra synchronization) and every rank acts on the
+!> reduced flags at the same cycle boundary; dumps are per-rank parts plus a manifest.
 module dx_checkpoint
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_CHECKPOINT, EXIT_NUMERIC
@@ -20,11 +25,16 @@ module dx_checkpoint
    use dx_model, only: model_t
    use dx_output, only: output_t
    use dx_restart, only: restart_write
+   use dx_par, only: par_rank, par_size
+   use dx_par_engine, only: par_engine_on, par_engine_dt, par_engine_flush_work, &
+                            par_engine_output
+   use dx_par_restart, only: par_restart_write
    use dx_signals, only: signal_stop_requested, signal_dump_requested, signal_name, &
                          signal_raise
    implicit none
    private
-   public :: checkpoint_t, checkpoint_stage, checkpoint_failure_dump, checkpoint_energy_band
+   public :: checkpoint_t, checkpoint_stage, checkpoint_failure_dump, checkpoint_energy_band, &
+             checkpoint_par_dt
 
    type :: checkpoint_t
       character(:), allocatable :: outdir       !< where dumps go (the output directory)
@@ -36,6 +46,9 @@ module dx_checkpoint
       real(wp) :: dump_cost = -1.0_wp           !< seconds of the costliest dump (-1: none yet)
       integer :: raise_cycle = 0                !< testing: raise raise_sig at this cycle
       integer :: raise_sig = 0                  !< (--raise-at-cycle N:SIG, real handler path)
+      integer :: raise_rank = -1                !< MPI: only this rank raises (-1: every rank)
+      integer :: coll(3) = 0                    !< MPI: stop signal, SIGUSR1, wall-clock limit
+                                                !< of any rank (from checkpoint_par_dt)
       logical :: endeng_hit = .false.           !< set by the solver ...
       real(wp) :: endeng_ratio = 1.0_wp         !< ... with the ratio, cycle and time
       integer :: endeng_cycle = 0
@@ -48,16 +61,20 @@ contains
    !> end now; error then carries the exit code and the message (with how to continue).
    subroutine checkpoint_stage(ck, model, out, stopped, error)
       type(checkpoint_t), intent(inout) :: ck
-      type(model_t), intent(inout) :: model
+      type(model_t), intent(inout), target :: model
       type(output_t), intent(inout) :: out
       logical, intent(out) :: stopped
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: now, margin, est
       integer :: sig, nr
       character(:), allocatable :: path, why
+      logical :: par, dumpreq, writer
+      type(model_t), pointer :: om
 
       stopped = .false.
-      if (ck%raise_cycle > 0 .and. model%cycle == ck%raise_cycle) call signal_raise(ck%raise_sig)
+      par = par_engine_on()
+      if (ck%raise_cycle > 0 .and. model%cycle == ck%raise_cycle .and. &
+          (ck%raise_rank < 0 .or. ck%raise_rank == par_rank())) call signal_raise(ck%raise_sig)
       now = wall_time()
       if (ck%last >= 0.0_wp) then
          if (ck%cycle_cost == 0.0_wp) then
@@ -92,7 +109,13 @@ contains
             end if
          end if
       end if
-      if (signal_dump_requested()) then
+      if (par) then              ! the requests of every rank, reduced with this cycle's dt
+         dumpreq = ck%coll(2) /= 0
+         ck%coll(2) = 0
+      else
+         dumpreq = signal_dump_requested()
+      end if
+      if (dumpreq) then
          call next_d3dump(ck, model, path)
          call write_dump(ck, model, out, path, 'signal', error)
          if (allocated(error)) then
@@ -104,11 +127,15 @@ contains
       end if
       ! ---- stop requests
       sig = signal_stop_requested()
+      if (par) sig = ck%coll(1)
       why = ''
       if (sig /= 0) then
          why = signal_name(sig)
       else if (ck%endeng_hit) then
          why = 'ENDENG'
+      else if (par) then
+         if (ck%coll(3) /= 0) why = 'the wall-clock limit ('//rstr(ck%walltime, 4)// &
+                                    ' s, on at least one rank)'
       else if (ck%walltime > 0.0_wp) then
          est = ck%dump_cost
          if (est < 0.0_wp) est = estimated_dump_cost(model)
@@ -121,9 +148,12 @@ contains
       call next_d3dump(ck, model, path)
       call write_dump(ck, model, out, path, 'signal', error)
       if (allocated(error)) return
-      call out%write_plot(model, error)
+      om => model
+      writer = .true.
+      if (par) call par_engine_output(model, .true., om, writer)   ! rank 0 writes
+      if (writer) call out%write_plot(om, error)
       if (allocated(error)) return
-      call out%close(error)
+      if (writer) call out%close(error)
       if (allocated(error)) return
       if (why == 'ENDENG') then
          call set_error(error, 'energy ratio '//rstr(ck%endeng_ratio, 8)//' left the '// &
@@ -136,9 +166,34 @@ contains
          call set_error(error, 'dynx: stopped by '//why//' at cycle '//str(model%cycle)// &
             ', time '//rstr(model%time)//'; restart dump '//path//' and the last plot '// &
             'state written, all files closed.'//new_line('a')//'dynx: continue with: '// &
-            'dynx -i '//ck%deck//' -o '//ck%outdir//' -r '//path, EXIT_CHECKPOINT)
+            launcher(par)//'dynx -i '//ck%deck//' -o '//ck%outdir//' -r '//path, &
+            EXIT_CHECKPOINT)
       end if
    end subroutine checkpoint_stage
+
+   !> MPI runs, in place of par_engine_dt: this rank's stop signal, SIGUSR1 and wall-clock
+   !> limit folded into the cycle's dt reduction; ck%coll gets the largest over the ranks,
+   !> which checkpoint_stage acts on at the end of the cycle (the same cycle on every rank).
+   subroutine checkpoint_par_dt(ck, dtcrit, dt_elem, error)
+      type(checkpoint_t), intent(inout) :: ck
+      real(wp), intent(inout) :: dtcrit
+      integer, intent(inout) :: dt_elem
+      type(error_t), allocatable, intent(inout) :: error
+      integer :: flags(3)
+      real(wp) :: est, now
+      flags = 0
+      flags(1) = signal_stop_requested()
+      if (signal_dump_requested()) flags(2) = 1
+      if (ck%walltime > 0.0_wp) then
+         now = wall_time()
+         est = ck%dump_cost
+         if (est < 0.0_wp) est = 0.05_wp
+         if (now - ck%wall0 + 3.0_wp*ck%cycle_cost + 2.0_wp*est >= ck%walltime) flags(3) = 1
+      end if
+      flags(2) = max(flags(2), ck%coll(2))       ! a request not yet served stays
+      call par_engine_dt(dtcrit, dt_elem, error, flags)
+      ck%coll = flags
+   end subroutine checkpoint_par_dt
 
    !> *CONTROL_TERMINATION ENDENG: note (once) that abs(energy ratio - 1)*100 > ENDENG at
    !> time t of this cycle; checkpoint_stage stops the run at the end of the cycle.
@@ -189,7 +244,12 @@ contains
       real(wp) :: t0
       t0 = wall_time()
       call out%sizes(model%run%nplot, model%run%glstat_bytes, model%run%nodout_bytes)
-      call restart_write(model, path, kind, error)
+      if (par_engine_on()) then   ! every rank its part, rank 0 the manifest (rank 0's sizes)
+         call par_engine_flush_work(model%run%wcon, model%run%wrw)
+         call par_restart_write(model, path, kind, error)
+      else
+         call restart_write(model, path, kind, error)
+      end if
       ck%dump_cost = max(ck%dump_cost, wall_time() - t0)
    end subroutine write_dump
 
@@ -206,6 +266,14 @@ contains
       end do
       c = 2.0_wp*(bytes/1.0e8_wp + 0.05_wp)
    end function estimated_dump_cost
+
+   !> 'mpirun -np N ' in an MPI run (the continue command needs the same N), else ''.
+   function launcher(par) result(s)
+      logical, intent(in) :: par
+      character(:), allocatable :: s
+      s = ''
+      if (par) s = 'mpirun -np '//str(par_size())//' '
+   end function launcher
 
    !> Two-digit (or wider) file number: 01, 02, ..., 99, 100.
    function two(k) result(s)

@@ -21,12 +21,12 @@ module dx_explicit
    use dx_constraints, only: apply_spc, apply_prescribed, apply_rigidwalls
    use dx_output, only: output_t
    use dx_checkpoint, only: checkpoint_t, checkpoint_stage, checkpoint_failure_dump, &
-                            checkpoint_energy_band
+                            checkpoint_energy_band, checkpoint_par_dt
    use dx_contact, only: contact_forces, contact_work
    use dx_rigid_solver, only: rigid_step, rigid_write_rbdout, rigid_close
    use dx_energy_sums, only: initial_kinetic, kinetic_energy, element_energies, &
                              constraint_work, set_energy, constrained_nodes, energy_bits
-   use dx_par_engine, only: par_engine_on, par_engine_fill, par_engine_dt, &
+   use dx_par_engine, only: par_engine_on, par_engine_fill, &
                             par_engine_exchange, par_engine_constraints, &
                             par_engine_energies, par_engine_initial, par_engine_output, &
                             par_engine_fail, par_engine_mass, par_engine_global, &
@@ -167,8 +167,9 @@ contains
          if (ibmin > 0) model%dt_elem = model%blocks(ibmin)%elem(iemin)
          if (allocated(model%rigid) .and. ibmin == 0 .and. .not. par) &
             dtcrit = model%rigid%dtcrit           ! MPI runs: in par_engine_dt
-         if (par) then     ! global min, serial tie rule; a failure on any rank stops all
-            call par_engine_dt(dtcrit, model%dt_elem, error)
+         if (par) then     ! global min, serial tie rule; the ranks' stop/dump requests with
+                           ! it; a failure on any rank stops all
+            call checkpoint_par_dt(ck, dtcrit, model%dt_elem, error)
             if (allocated(error)) then
                call finish(model, out, ck, error); return
             end if
@@ -348,11 +349,9 @@ contains
          model%time = t + dt
          model%cycle = model%cycle + 1
          dt_old = dt
-         ! ---- cycle boundary: restart dumps, signals, wall-clock limit, ENDENG (serial only)
-         if (.not. par) then
-            call checkpoint_stage(ck, model, out, stopped, error)
-            if (stopped) return
-         end if
+         ! ---- cycle boundary: restart dumps, signals, wall-clock limit, ENDENG
+         call checkpoint_stage(ck, model, out, stopped, error)
+         if (stopped) return
       end do
       end associate
       call log_info('dynx: normal termination at cycle '//str(model%cycle)//', time '// &

@@ -9,7 +9,7 @@ program mpi_par_test
    use dx_error, only: error_t
    use dx_par, only: par_init, par_finalize, par_rank, par_size, par_allreduce, par_abort, &
                      par_barrier, shared_sum_t, par_shared_setup, par_shared_sum, PAR_SUM, &
-                     PAR_MIN, PAR_MAX, par_minloc, par_gather_ordered
+                     PAR_MIN, PAR_MAX, par_minloc, par_gather_ordered, par_minloc_flags
    use dx_model, only: model_t
    use dx_partition, only: partition_t, rank_part_t, partition_elements, rank_part
    use dx_assert, only: check, assert_summary
@@ -36,6 +36,7 @@ program mpi_par_test
    call test_random_partition(3000, 500, 2)
    call test_metis_box()
    call test_minloc()
+   call test_minloc_flags()
    call test_ordered_energy()
    call par_finalize()
    if (me == 0) call assert_summary()
@@ -86,6 +87,31 @@ contains
       call check_all(x == 1.0_wp .and. key == 100 - 7*lastev, &
                      'par_minloc: minimum 1 held by the even ranks, lowest key among them')
    end subroutine test_minloc
+
+   !> The stop/dump requests folded into the dt reduction (dx_checkpoint): the minimum and
+   !> its key as par_minloc, and each flag the largest over the ranks - a request of one
+   !> rank (the last: SIGTERM = 15; rank 1 or 0: SIGUSR1) reaches every rank; no request
+   !> anywhere gives 0 on every rank.
+   subroutine test_minloc_flags()
+      real(wp) :: x
+      integer :: key, lastev, flags(3)
+      x = 1.0_wp + real(mod(me, 2), wp)
+      key = 100 - 7*me
+      flags = 0
+      if (me == np - 1) flags(1) = 15
+      if (me == min(1, np - 1)) flags(2) = 1
+      call par_minloc_flags(x, key, flags)
+      lastev = 2*((np - 1)/2)
+      call check_all(x == 1.0_wp .and. key == 100 - 7*lastev, &
+                     'par_minloc_flags: minimum and lowest key as par_minloc')
+      call check_all(all(flags == [15, 1, 0]), &
+                     'par_minloc_flags: flags of one rank reach all (largest over the ranks)')
+      flags = 0
+      x = real(me + 3, wp); key = me
+      call par_minloc_flags(x, key, flags)
+      call check_all(all(flags == 0) .and. x == 3.0_wp .and. key == 0, &
+                     'par_minloc_flags: no request anywhere gives 0 flags')
+   end subroutine test_minloc_flags
 
    !> Energies: 1000 per-element values (2 components, adversarial) in blocks of 128; the
    !> serial glstat sum is `e = e + sum(blk%eint)` block by block. Elements spread over the
