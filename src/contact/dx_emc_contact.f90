@@ -27,14 +27,21 @@ module dx_emc_contact
    implicit none
    private
    public :: emc_kin_t, emc_pair_t, emc_select_pairs, emc_contact_forces, emc_inv3, &
+             emc_same_plane, &
              PAIR_FACET, PAIR_SPHERE_OUT, PAIR_SPHERE_IN
 
    integer, parameter :: PAIR_FACET = 1, PAIR_SPHERE_OUT = 2, PAIR_SPHERE_IN = 3
 
-   !> kinematics of one body over the step
+   !> kinematics of one body over the step. The geometry is formed from differences of the
+   !> centres (xc0 + xl0 of one body minus the other's) plus the small increments dxc and
+   !> dr, never from absolute positions: a body 200 m from the origin would otherwise put
+   !> ulp(200 m) = 3e-14 m of noise into every gap (times EPS into the force).
    type :: emc_kin_t
       real(wp) :: xc0(3), xc1(3), xm(3)
+      real(wp) :: xl0(3) = 0.0_wp    !< low part of the compensated centre at t(n)
+      real(wp) :: dxc(3)             !< xc1 - xc0 = dt/2 (v0 + v1)
       real(wp) :: r0(3, 3), r1(3, 3), a(3, 3), ainv(3, 3)   !< A = (R0 + R1)/2
+      real(wp) :: dr(3, 3)           !< R1 - R0 = R0 (cay(Th) - I)
    end type emc_kin_t
 
    type :: emc_pair_t
@@ -78,6 +85,20 @@ contains
       c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
    end function cross
 
+   !> centre of body s minus centre of body m at t(n) (compensated parts included)
+   pure function rel0(ks, km) result(d)
+      type(emc_kin_t), intent(in) :: ks, km
+      real(wp) :: d(3)
+      d = (ks%xc0 - km%xc0) + (ks%xl0 - km%xl0)
+   end function rel0
+
+   !> mid centre of body s minus mid centre of body m
+   pure function relm(ks, km) result(d)
+      type(emc_kin_t), intent(in) :: ks, km
+      real(wp) :: d(3)
+      d = rel0(ks, km) + 0.5_wp*(ks%dxc - km%dxc)
+   end function relm
+
    !> Regularized Coulomb friction at the contact point c (mid configuration; arm rc from the
    !> slave's mid centre): the slave and master material points whose mid positions are both c
    !> (X = A^-1 (c - xm) on each body) slip by d = dx_S - dx_M over the step; with the
@@ -92,16 +113,15 @@ contains
       real(wp), intent(inout) :: fs(3), ts(3), fm(3), tm(3)
       real(wp), intent(out) :: work
       real(wp) :: c(3), xs(3), xm(3), d(3), dtan(3), nh(3), f(3), rm(3), del
-      c = ks%xm + rc
-      xs = matmul(ks%ainv, c - ks%xm)
-      xm = matmul(km%ainv, c - km%xm)
-      d = (ks%xc1 + matmul(ks%r1, xs) - ks%xc0 - matmul(ks%r0, xs)) - &
-          (km%xc1 + matmul(km%r1, xm) - km%xc0 - matmul(km%r0, xm))
+      c = relm(ks, km) + rc             ! the contact point, from the master's mid centre
+      xs = matmul(ks%ainv, rc)
+      xm = matmul(km%ainv, c)
+      d = (ks%dxc + matmul(ks%dr, xs)) - (km%dxc + matmul(km%dr, xm))
       nh = nu/max(norm2(nu), tiny(1.0_wp))
       dtan = d - dot_product(d, nh)*nh
       del = max(delta, 1.0e-12_wp)
       f = -mu*fn*dtan/sqrt(dot_product(dtan, dtan) + del*del)
-      rm = c - km%xm
+      rm = c
       fs = fs + f
       ts = ts + cross(rc, f)
       fm = fm - f
@@ -115,6 +135,27 @@ contains
       upen = 0.5_wp*eps*min(g, 0.0_wp)**2
    end function upen
 
+   !> The discrete derivative (U(g1) - U(g0))/(g1 - g0) of U(g) = eps/2 <-g>^2 in closed form
+   !> for each sign case, so no difference quotient is formed: both gaps closed, it is
+   !> eps (g0 + g1)/2 (the midpoint derivative, exact for a quadratic); one closed, eps/2
+   !> times the closed gap squared over (g1 - g0), whose magnitude is at least that gap.
+   !> The quotient (u1 - u0)/(g1 - g0) lost up to |g|/|g1 - g0| of its digits near the
+   !> turning point of a bounce, which left Newton stagnating at 1e-13 instead of 1e-16
+   !> (Armero & Petocz 1998, CMAME 158:269-300: the discrete gradient; its value is
+   !> unchanged, only its rounding).
+   pure real(wp) function discrete_gradient(eps, g0, g1) result(ub)
+      real(wp), intent(in) :: eps, g0, g1
+      if (g0 <= 0.0_wp .and. g1 <= 0.0_wp) then
+         ub = 0.5_wp*eps*(g0 + g1)
+      else if (g1 < 0.0_wp) then
+         ub = 0.5_wp*eps*g1*(g1/(g1 - g0))
+      else if (g0 < 0.0_wp) then
+         ub = 0.5_wp*eps*g0*(g0/(g0 - g1))
+      else
+         ub = 0.0_wp
+      end if
+   end function discrete_gradient
+
    !> Gap at n and n+1, normal nu and master point P (body frame of mb) of a pair, for the
    !> kinematics k. inside: P lies inside the facet polygon (facet pairs).
    subroutine pair_geometry(es, k, p, g0, g1, nu, xp, rsm, rmm, inside)
@@ -127,10 +168,12 @@ contains
                   d0(3), d1(3), den, e(3), c(3), sgn
       integer :: j, jn, np
       associate (ks => k(p%sb), km => k(p%mb))
-         xs0 = ks%xc0 + matmul(ks%r0, p%s)
-         xs1 = ks%xc1 + matmul(ks%r1, p%s)
-         xsm = 0.5_wp*(xs0 + xs1)
-         rsm = xsm - ks%xm
+         ! positions relative to the master's centre at t(n) (xs0, pn0, xsm) and increments
+         ! over the step (xs1, pn1 hold x(n+1) - x(n))
+         rsm = matmul(ks%a, p%s)
+         xs0 = rel0(ks, km) + matmul(ks%r0, p%s)
+         xs1 = ks%dxc + matmul(ks%dr, p%s)
+         xsm = relm(ks, km) + rsm
          inside = .true.
          select case (p%kind)
          case (PAIR_FACET)
@@ -138,16 +181,16 @@ contains
                n0 = matmul(km%r0, f%n)
                n1 = matmul(km%r1, f%n)
                nu = 0.5_wp*(n0 + n1)
-               u = matmul(km%ainv, xsm - km%xm)
+               u = matmul(km%ainv, xsm)
                q = matmul(km%ainv, nu)
                alpha = (dot_product(f%n, u) - dot_product(f%n, f%c))/dot_product(f%n, q)
                xp = u - alpha*q
-               pn0 = km%xc0 + matmul(km%r0, xp)
-               pn1 = km%xc1 + matmul(km%r1, xp)
-               rmm = 0.5_wp*(pn0 + pn1) - km%xm
+               pn0 = matmul(km%r0, xp)
+               pn1 = km%dxc + matmul(km%dr, xp)
+               rmm = matmul(km%a, xp)
                g0 = dot_product(n0, xs0 - pn0) - p%rs
                if (p%carried) g0 = p%g0c
-               g1 = g0 + dot_product(nu, (xs1 - xs0) - (pn1 - pn0))
+               g1 = g0 + dot_product(nu, xs1 - pn1)
                np = f%np
                do j = 1, np
                   jn = mod(j, np) + 1
@@ -159,11 +202,11 @@ contains
          case default
             associate (sm => es%sphere(p%mb))
                xp = sm%c
-               pn0 = km%xc0 + matmul(km%r0, xp)
-               pn1 = km%xc1 + matmul(km%r1, xp)
-               rmm = 0.5_wp*(pn0 + pn1) - km%xm
+               pn0 = matmul(km%r0, xp)
+               pn1 = km%dxc + matmul(km%dr, xp)
+               rmm = matmul(km%a, xp)
                d0 = xs0 - pn0
-               d1 = xs1 - pn1
+               d1 = d0 + (xs1 - pn1)
                den = norm2(d0) + norm2(d1)
                sgn = 1.0_wp
                if (p%kind == PAIR_SPHERE_IN) sgn = -1.0_wp
@@ -178,7 +221,7 @@ contains
                   g0 = norm2(d0) - p%rs - sm%r
                end if
                if (p%carried) g0 = p%g0c
-               g1 = g0 + dot_product(nu, (xs1 - xs0) - (pn1 - pn0))
+               g1 = g0 + dot_product(nu, xs1 - pn1)
             end associate
          end select
       end associate
@@ -225,8 +268,9 @@ contains
             nsp = npair
             ! cheap filter in the master's frame at t(n): distance to the facet plane and to
             ! its centroid, against the travel over the step
-            xb = matmul(transpose(k(mb)%r0), k(sb)%xc0 + matmul(k(sb)%r0, p%s) - k(mb)%xc0)
-            xb1 = matmul(transpose(k(mb)%r1), k(sb)%xc1 + matmul(k(sb)%r1, p%s) - k(mb)%xc1)
+            xb = matmul(transpose(k(mb)%r0), rel0(k(sb), k(mb)) + matmul(k(sb)%r0, p%s))
+            xb1 = matmul(transpose(k(mb)%r1), rel0(k(sb), k(mb)) + (k(sb)%dxc - k(mb)%dxc) + &
+                         matmul(k(sb)%r1, p%s))
             trav = norm2(xb1 - xb)
             do f = es%fac_ptr(mb), es%fac_ptr(mb + 1) - 1
                associate (fc => es%facets(f))
@@ -242,7 +286,7 @@ contains
                p%g0 = g0
                dup = .false.
                do q = nsp + 1, npair
-                  if (same_plane(es, pairs(q)%facet, f)) dup = .true.
+                  if (emc_same_plane(es, pairs(q)%facet, f)) dup = .true.
                end do
                if (.not. dup) call push(p)
             end do
@@ -277,7 +321,8 @@ contains
       d = 0.5_wp*d
    end function facet_depth
 
-   pure logical function same_plane(es, f1, f2)
+   !> facets f1 and f2 lie in one plane (with the same outward normal)
+   pure logical function emc_same_plane(es, f1, f2) result(same_plane)
       type(emc_system_t), intent(in) :: es
       integer, intent(in) :: f1, f2
       real(wp) :: l
@@ -286,7 +331,7 @@ contains
          same_plane = dot_product(a%n, b%n) > 1.0_wp - 1.0e-10_wp .and. &
                       abs(dot_product(a%n, a%c) - dot_product(b%n, b%c)) < 1.0e-9_wp*l
       end associate
-   end function same_plane
+   end function emc_same_plane
 
    !> Resultant force F and spatial torque T about each body's mid centre from the pairs
    !> (kinematics k); stores g0, g1 and the discrete derivative in the pairs; upen1 = sum
@@ -314,10 +359,8 @@ contains
                ! Lagrange multiplier: f = lam nu, no stored energy (constraint g1 = g0)
                u0 = 0.0_wp; u1 = 0.0_wp
                ub = -p%lam
-            else if (abs(g1 - g0) > 1.0e-10_wp*max(abs(g0), abs(g1))) then
-               ub = (u1 - u0)/(g1 - g0)
             else
-               ub = eps*min(0.5_wp*(g0 + g1), 0.0_wp)
+               ub = discrete_gradient(eps, g0, g1)
             end if
             p%g0 = g0; p%g1 = g1; p%ubar = ub
             p%n1 = 0.0_wp

@@ -225,9 +225,9 @@ contains
       if (inp%emc%maxit < 0) then
          call field_error(deck, blk, i0, 1, w, 'MAXIT', 'must be > 0', error); return
       end if
-      call get_real(deck, blk, i0, 2, w, 'RTOL', 1.0e-15_wp, inp%emc%rtol, error)
+      call get_real(deck, blk, i0, 2, w, 'RTOL', 1.0e-16_wp, inp%emc%rtol, error)
       if (allocated(error)) return
-      if (inp%emc%rtol == 0.0_wp) inp%emc%rtol = 1.0e-15_wp
+      if (inp%emc%rtol == 0.0_wp) inp%emc%rtol = 1.0e-16_wp
       if (inp%emc%rtol < 0.0_wp) then
          call field_error(deck, blk, i0, 2, w, 'RTOL', 'must be > 0', error); return
       end if

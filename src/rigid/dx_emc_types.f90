@@ -37,7 +37,7 @@ module dx_emc_types
       real(wp) :: dt0 = 0.0_wp
       integer :: imp_ifile = 0, imp_line = 0
       integer :: maxit = 20            !< Newton iterations per attempt
-      real(wp) :: rtol = 1.0e-15_wp    !< residual tolerance relative to the momentum scale
+      real(wp) :: rtol = 1.0e-16_wp    !< residual tolerance relative to the momentum scale
       integer :: nfail = 0             !< 0: stop at a Newton failure; > 0: step cuts allowed
       real(wp) :: out_dt = 0.0_wp      !< emcstat interval (0: every step)
    end type emc_input_t
@@ -78,7 +78,7 @@ module dx_emc_types
       real(wp), allocatable :: w(:, :)                  !< (3, nb) body-frame angular velocity
       real(wp) :: dt = 0.0_wp
       integer :: maxit = 20, nfail = 0
-      real(wp) :: rtol = 1.0e-15_wp, out_dt = 0.0_wp
+      real(wp) :: rtol = 1.0e-16_wp, out_dt = 0.0_wp
       real(wp) :: upen = 0.0_wp                         !< stored penalty energy at t(n)
       integer :: newton_total = 0, newton_max = 0, npairs = 0, ncuts = 0
       real(wp) :: resid_max = 0.0_wp

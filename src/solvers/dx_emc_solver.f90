@@ -22,7 +22,7 @@ module dx_emc_solver
    use dx_dense_solve, only: dense_solve
    use dx_emc_types, only: emc_system_t, EMC_LAGRANGE
    use dx_emc_contact, only: emc_kin_t, emc_pair_t, emc_select_pairs, emc_contact_forces, &
-                             emc_inv3
+                             emc_inv3, emc_same_plane
    implicit none
    private
    public :: run_emc, emc_state_t, emc_init_state, emc_try_step, emc_energy, emc_momenta, &
@@ -32,6 +32,10 @@ module dx_emc_solver
    type :: emc_state_t
       integer :: nb = 0
       real(wp), allocatable :: m(:), j(:, :), xc(:, :), v(:, :), r(:, :, :), w(:, :)
+      !> low parts of the centres: xc + xcl is the compensated sum of the increments
+      !> (Kahan 1965 / Knuth's two-sum), so 1e5 steps of x += dt v do not random-walk by
+      !> sqrt(n) ulp(x) (which moved L = xc x p by 2.5e-12 in the dt sweep)
+      real(wp), allocatable :: xcl(:, :)
       real(wp) :: upen = 0.0_wp      !< penalty energy stored at t(n)
       type(emc_pair_t), allocatable :: act(:)   !< pairs in penetration at t(n), with g(n)
    end type emc_state_t
@@ -48,15 +52,32 @@ contains
    !> cay(th) = (I - th^/2)^-1 (I + th^/2) = I + 4/(4 + |th|^2) (th^ + th^ th^/2)
    pure function cayley(th) result(c)
       real(wp), intent(in) :: th(3)
-      real(wp) :: c(3, 3), s(3, 3)
+      real(wp) :: c(3, 3)
       integer :: i
-      s = reshape([0.0_wp, th(3), -th(2), -th(3), 0.0_wp, th(1), th(2), -th(1), 0.0_wp], &
-                  [3, 3])
-      c = 4.0_wp/(4.0_wp + dot_product(th, th))*(s + 0.5_wp*matmul(s, s))
+      c = cayley_m1(th)
       do i = 1, 3
          c(i, i) = c(i, i) + 1.0_wp
       end do
    end function cayley
+
+   !> cay(th) - I, formed without the identity (its entries keep full relative precision)
+   pure function cayley_m1(th) result(c)
+      real(wp), intent(in) :: th(3)
+      real(wp) :: c(3, 3), s(3, 3)
+      s = reshape([0.0_wp, th(3), -th(2), -th(3), 0.0_wp, th(1), th(2), -th(1), 0.0_wp], &
+                  [3, 3])
+      c = 4.0_wp/(4.0_wp + dot_product(th, th))*(s + 0.5_wp*matmul(s, s))
+   end function cayley_m1
+
+   !> a + b = s + e exactly (two-sum; Knuth, TAOCP vol. 2, sec. 4.2.2)
+   elemental subroutine two_sum(a, b, s, e)
+      real(wp), intent(in) :: a, b
+      real(wp), intent(out) :: s, e
+      real(wp) :: bb
+      s = a + b
+      bb = s - a
+      e = (a - (s - bb)) + (b - bb)
+   end subroutine two_sum
 
    pure function cross(a, b) result(c)
       real(wp), intent(in) :: a(3), b(3)
@@ -71,7 +92,8 @@ contains
       integer :: b
       st%nb = size(model%rigid%bodies)
       allocate(st%m(st%nb), st%j(3, st%nb), st%xc(3, st%nb), st%v(3, st%nb), &
-               st%r(3, 3, st%nb), st%w(3, st%nb))
+               st%r(3, 3, st%nb), st%w(3, st%nb), st%xcl(3, st%nb))
+      st%xcl = 0.0_wp
       do b = 1, st%nb
          associate (bd => model%rigid%bodies(b))
             st%m(b) = bd%mass
@@ -113,7 +135,7 @@ contains
       end do
    end subroutine emc_momenta
 
-   !> Kinematics over the step for the unknowns y = (v1, W1) per body.
+   !> Kinematics over the step for the unknowns y = (v1, W1) per body; rc = cay(Th) - I.
    pure subroutine kinematics(st, dt, y, k, rc)
       type(emc_state_t), intent(in) :: st
       real(wp), intent(in) :: dt, y(:)
@@ -123,12 +145,15 @@ contains
       do b = 1, st%nb
          o = 6*(b - 1)
          k(b)%xc0 = st%xc(:, b)
-         k(b)%xc1 = st%xc(:, b) + 0.5_wp*dt*(st%v(:, b) + y(o + 1:o + 3))
-         k(b)%xm = 0.5_wp*(k(b)%xc0 + k(b)%xc1)
-         rc(:, :, b) = cayley(0.5_wp*dt*(st%w(:, b) + y(o + 4:o + 6)))
+         k(b)%xl0 = st%xcl(:, b)
+         k(b)%dxc = 0.5_wp*dt*(st%v(:, b) + y(o + 1:o + 3))
+         k(b)%xc1 = st%xc(:, b) + k(b)%dxc
+         k(b)%xm = st%xc(:, b) + 0.5_wp*k(b)%dxc
+         rc(:, :, b) = cayley_m1(0.5_wp*dt*(st%w(:, b) + y(o + 4:o + 6)))
          k(b)%r0 = st%r(:, :, b)
-         k(b)%r1 = matmul(st%r(:, :, b), rc(:, :, b))
-         k(b)%a = 0.5_wp*(k(b)%r0 + k(b)%r1)
+         k(b)%dr = matmul(st%r(:, :, b), rc(:, :, b))
+         k(b)%r1 = k(b)%r0 + k(b)%dr
+         k(b)%a = k(b)%r0 + 0.5_wp*k(b)%dr
          k(b)%ainv = emc_inv3(k(b)%a)
       end do
    end subroutine kinematics
@@ -154,7 +179,9 @@ contains
       do b = 1, st%nb
          o = 6*(b - 1)
          res(o + 1:o + 3) = st%m(b)*(y(o + 1:o + 3) - st%v(:, b)) - dt*fo(:, b)
-         res(o + 4:o + 6) = st%j(:, b)*y(o + 4:o + 6) - &
+         ! J W1 - cay^T J W0 as J (W1 - W0) - (cay - I)^T J W0: no 1 + O(Th^2) is rounded,
+         ! which biased the energy of a free spinning body by 1e-16 per step
+         res(o + 4:o + 6) = st%j(:, b)*(y(o + 4:o + 6) - st%w(:, b)) - &
                             matmul(transpose(rc(:, :, b)), st%j(:, b)*st%w(:, b)) - &
                             dt*matmul(transpose(k(b)%r1), to(:, b))
          scale = max(scale, st%m(b)*norm2(st%v(:, b)), st%m(b)*norm2(y(o + 1:o + 3)), &
@@ -239,7 +266,7 @@ contains
       type(newton_report_t), intent(out) :: rep
       logical, intent(out) :: ok
       real(wp), allocatable :: y(:), yp(:), r(:), rp(:), jac(:, :), ysave(:)
-      real(wp) :: scale, sp, rn, rn_old, h, upen1, ymag, rc(3, 3, st%nb)
+      real(wp) :: scale, sp, rn, rn_old, h, upen1, ymag, rc(3, 3, st%nb), xold(3), dxl(3)
       type(emc_pair_t), allocatable :: pairs(:), cand(:)
       type(emc_kin_t) :: k(st%nb)
       integer :: nb6, n, it, jc, b, npair, ncand, pass, i, q, nact, nl, nrel
@@ -248,6 +275,10 @@ contains
       logical, allocatable :: used(:)
       character(:), allocatable :: msg
       nb6 = 6*st%nb
+      if (.not. allocated(st%xcl)) then
+         allocate(st%xcl(3, st%nb))
+         st%xcl = 0.0_wp
+      end if
       allocate(ysave(nb6))
       do b = 1, st%nb
          ysave(6*b - 5:6*b - 3) = st%v(:, b)
@@ -336,8 +367,13 @@ contains
          do i = 1, ncand
             found = .false.
             do q = 1, npair
+               ! one pair per slave point and plane: a coplanar neighbour facet is the same
+               ! contact (it was counted twice, and the energy of one copy was lost when the
+               ! next step carried only the other)
                if (pairs(q)%def == cand(i)%def .and. pairs(q)%src == cand(i)%src .and. &
-                   pairs(q)%facet == cand(i)%facet) found = .true.
+                   pairs(q)%kind == 1 .and. cand(i)%kind == 1) then
+                  if (emc_same_plane(es, pairs(q)%facet, cand(i)%facet)) found = .true.
+               end if
                if (pairs(q)%def == cand(i)%def .and. pairs(q)%src == cand(i)%src .and. &
                    pairs(q)%kind /= 1) found = .true.
             end do
@@ -374,10 +410,16 @@ contains
       call residual(es, st, dt, y, pairs, npair, r, scale, upen1)
       call kinematics(st, dt, ysave, k, rc)
       do b = 1, st%nb
-         st%xc(:, b) = k(b)%xc1
+         xold = st%xc(:, b)
+         dxl = k(b)%dxc + st%xcl(:, b)
+         call two_sum(xold, dxl, st%xc(:, b), st%xcl(:, b))
          st%r(:, :, b) = k(b)%r1
-         st%v(:, b) = ysave(6*b - 5:6*b - 3)
-         st%w(:, b) = ysave(6*b - 2:6*b)
+         ! momentum form of the update (Simo & Wong: p1 = p0 + dt F, pi1 = pi0 + dt T): the
+         ! velocities take the converged step's forces exactly, v1 = v0 + dt F/m and
+         ! W1 = J^-1 (cay^T J W0 + dt R1^T T) = y - r/diag(M, J), so the momenta do not
+         ! inherit the Newton residual (it only enters the positions, at second order)
+         st%v(:, b) = ysave(6*b - 5:6*b - 3) - r(6*b - 5:6*b - 3)/st%m(b)
+         st%w(:, b) = ysave(6*b - 2:6*b) - r(6*b - 2:6*b)/st%j(:, b)
       end do
       st%upen = upen1
       rep%npair = npair
