@@ -23,11 +23,11 @@
 !> work (energy conserved, no stored energy) and, with g(n) >= 0, nothing penetrates.
 module dx_emc_contact
    use dx_kinds, only: wp
-   use dx_emc_types, only: emc_system_t
+   use dx_emc_types, only: emc_system_t, EMC_PAIR_NI, EMC_PAIR_NR
    implicit none
    private
    public :: emc_kin_t, emc_pair_t, emc_select_pairs, emc_contact_forces, emc_inv3, &
-             emc_same_plane, &
+             emc_same_plane, emc_pairs_pack, emc_pairs_unpack, &
              PAIR_FACET, PAIR_SPHERE_OUT, PAIR_SPHERE_IN
 
    integer, parameter :: PAIR_FACET = 1, PAIR_SPHERE_OUT = 2, PAIR_SPHERE_IN = 3
@@ -61,6 +61,38 @@ module dx_emc_contact
    end type emc_pair_t
 
 contains
+
+   !> The pairs as an integer and a real table (restart snapshots), column per pair.
+   subroutine emc_pairs_pack(p, ai, ar)
+      type(emc_pair_t), intent(in) :: p(:)
+      integer, allocatable, intent(out) :: ai(:, :)
+      real(wp), allocatable, intent(out) :: ar(:, :)
+      integer :: i
+      allocate(ai(EMC_PAIR_NI, size(p)), ar(EMC_PAIR_NR, size(p)))
+      do i = 1, size(p)
+         ai(:, i) = [p(i)%kind, p(i)%def, p(i)%sb, p(i)%mb, p(i)%src, p(i)%facet, p(i)%il, &
+                     merge(1, 0, p(i)%carried)]
+         ar(:, i) = [p(i)%s, p(i)%rs, p(i)%g0, p(i)%g1, p(i)%ubar, p(i)%lam, p(i)%g0c, &
+                     p(i)%n1, p(i)%dfr]
+      end do
+   end subroutine emc_pairs_pack
+
+   !> Inverse of emc_pairs_pack.
+   subroutine emc_pairs_unpack(ai, ar, p)
+      integer, intent(in) :: ai(:, :)
+      real(wp), intent(in) :: ar(:, :)
+      type(emc_pair_t), allocatable, intent(out) :: p(:)
+      integer :: i
+      allocate(p(size(ai, 2)))
+      do i = 1, size(p)
+         p(i)%kind = ai(1, i); p(i)%def = ai(2, i); p(i)%sb = ai(3, i); p(i)%mb = ai(4, i)
+         p(i)%src = ai(5, i); p(i)%facet = ai(6, i); p(i)%il = ai(7, i)
+         p(i)%carried = ai(8, i) /= 0
+         p(i)%s = ar(1:3, i); p(i)%rs = ar(4, i); p(i)%g0 = ar(5, i); p(i)%g1 = ar(6, i)
+         p(i)%ubar = ar(7, i); p(i)%lam = ar(8, i); p(i)%g0c = ar(9, i)
+         p(i)%n1 = ar(10:12, i); p(i)%dfr = ar(13, i)
+      end do
+   end subroutine emc_pairs_unpack
 
    !> Inverse of a 3x3 matrix (A = (R0 + R1)/2 is well conditioned for |Theta| < 2).
    pure function emc_inv3(a) result(b)

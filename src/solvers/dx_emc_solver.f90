@@ -22,7 +22,11 @@ module dx_emc_solver
    use dx_dense_solve, only: dense_solve
    use dx_emc_types, only: emc_system_t, EMC_LAGRANGE
    use dx_emc_contact, only: emc_kin_t, emc_pair_t, emc_select_pairs, emc_contact_forces, &
-                             emc_inv3, emc_same_plane
+                             emc_inv3, emc_same_plane, emc_pairs_pack, emc_pairs_unpack
+   use dx_emc_types, only: EMC_PAIR_NI, EMC_PAIR_NR
+   use dx_checkpoint, only: checkpoint_t, checkpoint_stage
+   use dx_signals, only: signal_stop_requested, signal_dump_pending
+   use dx_append_file, only: append_from
    implicit none
    private
    public :: run_emc, emc_state_t, emc_init_state, emc_try_step, emc_energy, emc_momenta, &
@@ -486,10 +490,24 @@ contains
       end do
    end subroutine to_model
 
-   !> Run the conserving solver to ENDTIM (or ENDCYC) with the step DT0.
-   subroutine run_emc(model, outdir, out, error)
+   !> Whether this step boundary may write a restart dump or stop (checkpoint_stage): only
+   !> then are the model's nodes and the snapshot brought up to date.
+   logical function checkpoint_due(ck, model, cyc) result(due)
+      type(checkpoint_t), intent(in) :: ck
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: cyc
+      due = ck%walltime > 0.0_wp .or. ck%raise_cycle == cyc .or. &
+            signal_stop_requested() /= 0 .or. signal_dump_pending()
+      if (model%rst%d3dump_cycl > 0) due = due .or. mod(cyc, model%rst%d3dump_cycl) == 0
+      if (model%rst%runrsf_cycl > 0) due = due .or. mod(cyc, model%rst%runrsf_cycl) == 0
+   end function checkpoint_due
+
+   !> Run the conserving solver to ENDTIM (or ENDCYC) with the step DT0, or continue it from
+   !> the snapshot a restart dump restored (model%emc%snap%valid). Restart dumps, signals
+   !> and the wall-clock limit as in the explicit loop (dx_checkpoint, called once per step).
+   subroutine run_emc(model, ck, out, error)
       type(model_t), intent(inout) :: model
-      character(*), intent(in) :: outdir
+      type(checkpoint_t), intent(inout) :: ck
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       type(emc_state_t) :: st
@@ -499,37 +517,50 @@ contains
                   de, dp, dl, next_out, next_plot, t0wall
       real(wp), allocatable :: lb(:, :)
       integer :: u, ios, cyc, b, ncut, itmax, ittot
-      logical :: ok
+      logical :: ok, stopped
       character(256) :: iomsg
+      character(:), allocatable :: outdir
       t0wall = wall_time()
+      if (ck%wall0 <= 0.0_wp) ck%wall0 = t0wall
+      outdir = ck%outdir
       associate (es => model%emc)
          call emc_init_state(model, st)
          allocate(lb(3, st%nb))
-         t = 0.0_wp
          tend = model%ctrl%endtim
          dt = es%dt
-         open(newunit=u, file=outdir//'/emcstat', status='replace', action='write', &
-              iostat=ios, iomsg=iomsg)
-         if (ios /= 0) then
-            call set_error(error, outdir//'/emcstat: cannot open: '//trim(iomsg), EXIT_IO)
-            return
+         if (es%snap%valid) then
+            call from_snapshot()
+            call append_from(outdir//'/emcstat', es%snap%emcstat_bytes, u, error)
+            if (allocated(error)) return
+            call emc_momenta(st, p, lb, lt, ps, ls)
+            call log_info('emc: continuing at step '//str(cyc)//', time '//rstr(t))
+         else
+            open(newunit=u, file=outdir//'/emcstat', status='replace', action='write', &
+                 iostat=ios, iomsg=iomsg)
+            if (ios /= 0) then
+               call set_error(error, outdir//'/emcstat: cannot open: '//trim(iomsg), EXIT_IO)
+               return
+            end if
+            write(u, '(a)') '# dynx emcstat: energy-momentum conserving rigid-body contact '// &
+               '(docs/conserving-contact.md)'
+            write(u, '(a,i0,a,es24.16e3)') '# bodies ', st%nb, ' dt ', dt
+            write(u, '(a)') '# cycle time ke upen etot px py pz lx ly lz iters resid npair '// &
+               '[per body: xc yc zc lx ly lz (about the origin)]'
+            t = 0.0_wp
+            ke = emc_energy(st)
+            e0 = ke + st%upen
+            call emc_momenta(st, p0, lb, l0, ps0, ls0)
+            cyc = 0
+            p = p0; lt = l0
+            rep%iters = 0; rep%resid = 0.0_wp; rep%npair = 0
+            call write_line()
+            next_out = es%out_dt
+            next_plot = model%db%d3plot_dt
+            de = 0.0_wp; dp = 0.0_wp; dl = 0.0_wp
+            itmax = 0; ittot = 0; ncut = 0
          end if
-         write(u, '(a)') '# dynx emcstat: energy-momentum conserving rigid-body contact '// &
-            '(docs/conserving-contact.md)'
-         write(u, '(a,i0,a,es24.16e3)') '# bodies ', st%nb, ' dt ', dt
-         write(u, '(a)') '# cycle time ke upen etot px py pz lx ly lz iters resid npair '// &
-            '[per body: xc yc zc lx ly lz (about the origin)]'
-         ke = emc_energy(st)
-         e0 = ke + st%upen
-         call emc_momenta(st, p0, lb, l0, ps0, ls0)
-         cyc = 0
-         p = p0; lt = l0
-         rep%iters = 0; rep%resid = 0.0_wp; rep%npair = 0
-         call write_line()
-         next_out = es%out_dt
-         next_plot = model%db%d3plot_dt
-         de = 0.0_wp; dp = 0.0_wp; dl = 0.0_wp
-         itmax = 0; ittot = 0; ncut = 0
+         es%snap%unit = u
+         es%snap%unit_open = .true.
          call log_info('emc: conserving rigid-body solver, '//str(st%nb)//' bodies, dt '// &
                        rstr(dt)//', end time '//rstr(tend))
          do while (t < tend*(1.0_wp - 1.0e-12_wp))
@@ -561,8 +592,22 @@ contains
                call plot()
                if (allocated(ioerr)) exit
             end if
+            ! ---- restart dumps and stop requests, at this step boundary
+            model%time = t
+            model%cycle = cyc
+            if (checkpoint_due(ck, model, cyc)) then
+               call to_model(st, model)
+               call to_snapshot()
+            end if
+            call checkpoint_stage(ck, model, out, stopped, error)
+            if (stopped) then
+               close(u)
+               es%snap%unit_open = .false.
+               return
+            end if
          end do
          close(u)
+         es%snap%unit_open = .false.
          call plot()
          call log_info('emc: '//str(cyc)//' steps to time '//rstr(t)//', Newton iterations '// &
             str(ittot)//' (max '//str(itmax)//' per step), step cuts '//str(ncut)// &
@@ -589,5 +634,41 @@ contains
          model%cycle = cyc
          call out%write_plot(model, ioerr)
       end subroutine plot
+      !> the state and loop variables into model%emc%snap (written by a dump)
+      subroutine to_snapshot()
+         associate (sn => model%emc%snap)
+            sn%xc = st%xc; sn%xcl = st%xcl; sn%v = st%v; sn%r = st%r; sn%w = st%w
+            sn%upen = st%upen
+            if (allocated(st%act)) then
+               call emc_pairs_pack(st%act, sn%act_i, sn%act_r)
+            else
+               if (allocated(sn%act_i)) deallocate(sn%act_i, sn%act_r)
+               allocate(sn%act_i(EMC_PAIR_NI, 0), sn%act_r(EMC_PAIR_NR, 0))
+            end if
+            sn%t = t; sn%next_out = next_out; sn%next_plot = next_plot
+            sn%e0 = e0; sn%p0 = p0; sn%l0 = l0; sn%ps0 = ps0; sn%ls0 = ls0
+            sn%de = de; sn%dp = dp; sn%dl = dl; sn%resid = rep%resid
+            sn%cyc = cyc; sn%itmax = itmax; sn%ittot = ittot; sn%ncut = ncut
+            sn%iters = rep%iters; sn%npair = rep%npair
+         end associate
+      end subroutine to_snapshot
+      !> the state and loop variables from a restored snapshot
+      subroutine from_snapshot()
+         associate (sn => model%emc%snap)
+            st%xc = sn%xc; st%xcl = sn%xcl; st%v = sn%v; st%r = sn%r; st%w = sn%w
+            st%upen = sn%upen
+            if (size(sn%act_i, 2) > 0) then
+               call emc_pairs_unpack(sn%act_i, sn%act_r, st%act)
+            else if (allocated(st%act)) then
+               deallocate(st%act)
+            end if
+            t = sn%t; next_out = sn%next_out; next_plot = sn%next_plot
+            e0 = sn%e0; p0 = sn%p0; l0 = sn%l0; ps0 = sn%ps0; ls0 = sn%ls0
+            de = sn%de; dp = sn%dp; dl = sn%dl
+            cyc = sn%cyc; itmax = sn%itmax; ittot = sn%ittot; ncut = sn%ncut
+            rep%iters = sn%iters; rep%resid = sn%resid; rep%npair = sn%npair
+            ke = emc_energy(st)
+         end associate
+      end subroutine from_snapshot
    end subroutine run_emc
 end module dx_emc_solver
