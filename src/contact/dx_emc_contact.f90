@@ -368,19 +368,21 @@ contains
    !> Resultant force F and spatial torque T about each body's mid centre from the pairs
    !> (kinematics k); stores g0, g1 and the discrete derivative in the pairs; upen1 = sum
    !> U(g(n+1)), upen0 = sum U(g(n)).
-   subroutine emc_contact_forces(es, k, pairs, npair, fo, to, upen0, upen1)
+   subroutine emc_contact_forces(es, k, pairs, npair, fo, to, upen0, upen1, dissip)
       type(emc_system_t), intent(in) :: es
       type(emc_kin_t), intent(in) :: k(:)
       type(emc_pair_t), intent(inout) :: pairs(:)
       integer, intent(in) :: npair
       real(wp), intent(out) :: fo(:, :), to(:, :), upen0, upen1
+      real(wp), intent(out), optional :: dissip   !< energy the dissipation takes this step
       integer :: ip
-      real(wp) :: g0, g1, nu(3), xp(3), rsm(3), rmm(3), eps, ub, f(3), u0, u1
+      real(wp) :: g0, g1, nu(3), xp(3), rsm(3), rmm(3), eps, ub, f(3), u0, u1, ubd, dis
       logical :: inside
       fo = 0.0_wp
       to = 0.0_wp
       upen0 = 0.0_wp
       upen1 = 0.0_wp
+      dis = 0.0_wp
       do ip = 1, npair
          associate (p => pairs(ip))
             call pair_geometry(es, k, p, g0, g1, nu, xp, rsm, rmm, inside)
@@ -393,6 +395,15 @@ contains
                ub = -p%lam
             else
                ub = discrete_gradient(eps, g0, g1)
+               ! algorithmic dissipation (HHT/Newmark parameters, rho_inf < 1): a force
+               ! chi eps (<g1> - <g0>) against the change of the penetration; it does the
+               ! work -chi eps (<g1> - <g0>)(g1 - g0) <= 0 along nu, so momenta stay exact.
+               ! Clamped so that the pair never pulls (that part dissipates too).
+               if (es%chi > 0.0_wp) then
+                  ubd = min(ub + es%chi*eps*(min(g1, 0.0_wp) - min(g0, 0.0_wp)), 0.0_wp)
+                  dis = dis + (ubd - ub)*(g1 - g0)
+                  ub = ubd
+               end if
             end if
             p%g0 = g0; p%g1 = g1; p%ubar = ub
             p%n1 = 0.0_wp
@@ -410,5 +421,6 @@ contains
                              fo(:, p%sb), to(:, p%sb), fo(:, p%mb), to(:, p%mb), p%dfr)
          end associate
       end do
+      if (present(dissip)) dissip = dis
    end subroutine emc_contact_forces
 end module dx_emc_contact

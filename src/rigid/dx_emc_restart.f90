@@ -43,7 +43,7 @@ contains
             call rs%put('emc_act_r', s%act_r)
          end if
          call rs%put('emc_reals', [s%upen, s%t, s%next_out, s%next_plot, s%e0, s%p0, s%l0, &
-                                   s%ps0, s%ls0, s%de, s%dp, s%dl, s%resid])
+                                   s%ps0, s%ls0, s%de, s%dp, s%dl, s%resid, s%ediss])
          call rs%put('emc_ints', [s%cyc, s%itmax, s%ittot, s%ncut, s%iters, s%npair])
          bytes = 0
          if (s%unit_open) bytes = unit_bytes(s%unit)
@@ -57,7 +57,7 @@ contains
       type(emc_system_t), intent(inout) :: es
       integer :: nb, nact, ints(6)
       integer, allocatable :: ai(:)
-      real(wp) :: reals(17)
+      real(wp) :: reals(18)
       nb = -1
       call rs%get('emc_nbodies', nb)
       if (.not. rs%ok()) return
@@ -94,7 +94,7 @@ contains
          s%upen = reals(1); s%t = reals(2); s%next_out = reals(3); s%next_plot = reals(4)
          s%e0 = reals(5); s%p0 = reals(6:8); s%l0 = reals(9:11); s%ps0 = reals(12)
          s%ls0 = reals(13); s%de = reals(14); s%dp = reals(15); s%dl = reals(16)
-         s%resid = reals(17)
+         s%resid = reals(17); s%ediss = reals(18)
          ints = 0
          call rs%get('emc_ints', ints)
          s%cyc = ints(1); s%itmax = ints(2); s%ittot = ints(3); s%ncut = ints(4)

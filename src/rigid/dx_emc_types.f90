@@ -41,6 +41,9 @@ module dx_emc_types
       real(wp) :: rtol = 1.0e-16_wp    !< residual tolerance relative to the momentum scale
       integer :: nfail = 0             !< 0: stop at a Newton failure; > 0: step cuts allowed
       real(wp) :: out_dt = 0.0_wp      !< emcstat interval (0: every step)
+      !> *CONTROL_IMPLICIT_DYNAMICS as read, and the high-frequency spectral radius they
+      !> ask for (1: the conserving midpoint rule)
+      real(wp) :: gamma = 0.5_wp, beta = 0.25_wp, alpha = 0.0_wp, rho_inf = 1.0_wp
    end type emc_input_t
 
    !> a planar facet of a rigid body, in the body (principal) frame: centroid, unit normal
@@ -82,7 +85,8 @@ module dx_emc_types
       real(wp), allocatable :: xc(:, :), xcl(:, :), v(:, :), r(:, :, :), w(:, :)
       integer, allocatable :: act_i(:, :)      !< (EMC_PAIR_NI, nact)
       real(wp), allocatable :: act_r(:, :)     !< (EMC_PAIR_NR, nact)
-      real(wp) :: upen = 0.0_wp, t = 0.0_wp, next_out = 0.0_wp, next_plot = 0.0_wp
+      real(wp) :: upen = 0.0_wp, ediss = 0.0_wp, t = 0.0_wp, next_out = 0.0_wp
+      real(wp) :: next_plot = 0.0_wp
       real(wp) :: e0 = 0.0_wp, p0(3) = 0.0_wp, l0(3) = 0.0_wp, ps0 = 0.0_wp, ls0 = 0.0_wp
       real(wp) :: de = 0.0_wp, dp = 0.0_wp, dl = 0.0_wp, resid = 0.0_wp
       integer :: cyc = 0, itmax = 0, ittot = 0, ncut = 0, iters = 0, npair = 0
@@ -103,6 +107,9 @@ module dx_emc_types
       real(wp) :: dt = 0.0_wp
       integer :: maxit = 20, nfail = 0
       real(wp) :: rtol = 1.0e-16_wp, out_dt = 0.0_wp
+      !> algorithmic dissipation of the penalty pairs (dx_emc_contact): chi =
+      !> (1 - rho_inf)/(2 (1 + rho_inf)), 0 for the conserving midpoint rule
+      real(wp) :: rho_inf = 1.0_wp, chi = 0.0_wp
       real(wp) :: upen = 0.0_wp                         !< stored penalty energy at t(n)
       integer :: newton_total = 0, newton_max = 0, npairs = 0, ncuts = 0
       real(wp) :: resid_max = 0.0_wp

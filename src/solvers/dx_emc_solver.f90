@@ -41,6 +41,7 @@ module dx_emc_solver
       !> sqrt(n) ulp(x) (which moved L = xc x p by 2.5e-12 in the dt sweep)
       real(wp), allocatable :: xcl(:, :)
       real(wp) :: upen = 0.0_wp      !< penalty energy stored at t(n)
+      real(wp) :: ediss = 0.0_wp     !< energy taken by the algorithmic dissipation to t(n)
       type(emc_pair_t), allocatable :: act(:)   !< pairs in penetration at t(n), with g(n)
    end type emc_state_t
 
@@ -163,13 +164,14 @@ contains
    end subroutine kinematics
 
    !> Residual of the midpoint equations; scale: momentum scale of the step.
-   subroutine residual(es, st, dt, y, pairs, npair, res, scale, upen1)
+   subroutine residual(es, st, dt, y, pairs, npair, res, scale, upen1, dis)
       type(emc_system_t), intent(in) :: es
       type(emc_state_t), intent(in) :: st
       real(wp), intent(in) :: dt, y(:)
       type(emc_pair_t), intent(inout) :: pairs(:)
       integer, intent(in) :: npair
       real(wp), intent(out) :: res(:), scale, upen1
+      real(wp), intent(out), optional :: dis
       type(emc_kin_t) :: k(st%nb)
       real(wp) :: rc(3, 3, st%nb), fo(3, st%nb), to(3, st%nb), upen0
       integer :: b, o, i, nb6
@@ -178,7 +180,7 @@ contains
          if (pairs(i)%il > 0) pairs(i)%lam = y(nb6 + pairs(i)%il)/dt
       end do
       call kinematics(st, dt, y, k, rc)
-      call emc_contact_forces(es, k, pairs, npair, fo, to, upen0, upen1)
+      call emc_contact_forces(es, k, pairs, npair, fo, to, upen0, upen1, dis)
       scale = tiny(1.0_wp)
       do b = 1, st%nb
          o = 6*(b - 1)
@@ -270,7 +272,7 @@ contains
       type(newton_report_t), intent(out) :: rep
       logical, intent(out) :: ok
       real(wp), allocatable :: y(:), yp(:), r(:), rp(:), jac(:, :), ysave(:)
-      real(wp) :: scale, sp, rn, rn_old, h, upen1, ymag, rc(3, 3, st%nb), xold(3), dxl(3)
+      real(wp) :: scale, sp, rn, rn_old, h, upen1, ymag, rc(3, 3, st%nb), xold(3), dxl(3), dis
       type(emc_pair_t), allocatable :: pairs(:), cand(:)
       type(emc_kin_t) :: k(st%nb)
       integer :: nb6, n, it, jc, b, npair, ncand, pass, i, q, nact, nl, nrel
@@ -411,7 +413,7 @@ contains
       end do
       if (allocated(r)) deallocate(r)
       allocate(r(nb6 + nl))
-      call residual(es, st, dt, y, pairs, npair, r, scale, upen1)
+      call residual(es, st, dt, y, pairs, npair, r, scale, upen1, dis)
       call kinematics(st, dt, ysave, k, rc)
       do b = 1, st%nb
          xold = st%xc(:, b)
@@ -426,6 +428,7 @@ contains
          st%w(:, b) = ysave(6*b - 2:6*b) - r(6*b - 2:6*b)/st%j(:, b)
       end do
       st%upen = upen1
+      st%ediss = st%ediss + dis
       rep%npair = npair
       st%act = pack(pairs(1:npair), pairs(1:npair)%g1 < 0.0_wp .and. pairs(1:npair)%il == 0)
    contains
@@ -580,7 +583,7 @@ contains
             itmax = max(itmax, rep%iters); ittot = ittot + rep%iters
             ke = emc_energy(st)
             call emc_momenta(st, p, lb, lt, ps, ls)
-            de = max(de, abs(ke + st%upen - e0)/max(e0, tiny(1.0_wp)))
+            de = max(de, abs(ke + st%upen + st%ediss - e0)/max(e0, tiny(1.0_wp)))
             dp = max(dp, norm2(p - p0)/max(ps0, tiny(1.0_wp)))
             dl = max(dl, norm2(lt - l0)/max(ls0, ps0*1.0_wp, tiny(1.0_wp)))   ! floor: |p| x 1 m
             if (t >= next_out*(1.0_wp - 1.0e-9_wp) .or. t >= tend*(1.0_wp - 1.0e-12_wp)) then
@@ -612,6 +615,9 @@ contains
          call log_info('emc: '//str(cyc)//' steps to time '//rstr(t)//', Newton iterations '// &
             str(ittot)//' (max '//str(itmax)//' per step), step cuts '//str(ncut)// &
             ', last scaled residual '//rstr(rep%resid))
+         if (es%chi > 0.0_wp) call log_info('emc: algorithmic dissipation (rho_inf '// &
+            rstr(es%rho_inf)//', chi '//rstr(es%chi)//'): '//rstr(st%ediss)// &
+            ' taken over the run, '//rstr(st%ediss/max(e0, tiny(1.0_wp)))//' of E0')
          call log_info('emc: max relative drift over the run: energy '//rstr(de)// &
             ', linear momentum '//rstr(dp)//', angular momentum '//rstr(dl))
          call log_info('emc: wall time '//rstr(wall_time() - t0wall, 4)//' s')
@@ -639,6 +645,7 @@ contains
          associate (sn => model%emc%snap)
             sn%xc = st%xc; sn%xcl = st%xcl; sn%v = st%v; sn%r = st%r; sn%w = st%w
             sn%upen = st%upen
+            sn%ediss = st%ediss
             if (allocated(st%act)) then
                call emc_pairs_pack(st%act, sn%act_i, sn%act_r)
             else
@@ -657,6 +664,7 @@ contains
          associate (sn => model%emc%snap)
             st%xc = sn%xc; st%xcl = sn%xcl; st%v = sn%v; st%r = sn%r; st%w = sn%w
             st%upen = sn%upen
+            st%ediss = sn%ediss
             if (size(sn%act_i, 2) > 0) then
                call emc_pairs_unpack(sn%act_i, sn%act_r, st%act)
             else if (allocated(st%act)) then
