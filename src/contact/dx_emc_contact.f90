@@ -314,7 +314,10 @@ contains
                call pair_geometry(es, k, p, g0, g1, nu, xp, rsm, rmm, inside)
                if (.not. inside) cycle
                dpen = facet_depth(es, f)
-               if (.not. (min(g0, g1) < 0.0_wp .and. g0 > -dpen)) cycle
+               ! a point that only touches the plane (|g| at round-off of the facet size, e.g.
+               ! a corner sliding along a coplanar side face) is no contact: as a Lagrange
+               ! pair it made the Newton matrix singular (bars at 1e3 m/s)
+               if (.not. (min(g0, g1) < -1.0e-12_wp*fc_rad(es, f) .and. g0 > -dpen)) cycle
                p%g0 = g0
                dup = .false.
                do q = nsp + 1, npair
@@ -337,6 +340,12 @@ contains
          pairs(npair) = pp
       end subroutine push
    end subroutine emc_select_pairs
+
+   pure real(wp) function fc_rad(es, f)
+      type(emc_system_t), intent(in) :: es
+      integer, intent(in) :: f
+      fc_rad = es%facets(f)%rad
+   end function fc_rad
 
    !> how deep a slave point may be behind a facet and still count as penetrating it:
    !> half the facet's smallest edge

@@ -32,6 +32,9 @@ module dx_emc_solver
    public :: run_emc, emc_state_t, emc_init_state, emc_try_step, emc_energy, emc_momenta, &
              cayley, newton_report_t
 
+   !> compliance of a Lagrange constraint row (residual units: momentum per impulse)
+   real(wp), parameter :: LAG_COMPLIANCE = 1.0e-12_wp
+
    !> the bodies' state at t(n)
    type :: emc_state_t
       integer :: nb = 0
@@ -200,7 +203,7 @@ contains
       do i = 1, npair
          if (pairs(i)%il > 0) res(nb6 + pairs(i)%il) = &
             min(st%m(pairs(i)%sb), st%m(pairs(i)%mb))*(pairs(i)%g1 - pairs(i)%g0)/dt + &
-            1.0e-12_wp*y(nb6 + pairs(i)%il)
+            LAG_COMPLIANCE*y(nb6 + pairs(i)%il)
       end do
    end subroutine residual
 
@@ -242,6 +245,37 @@ contains
          end associate
       end do
    end subroutine carry_gaps
+
+   !> A pair in penetration at t(n) that the search did not find again (deeper than half a
+   !> facet edge, or its point left the facet polygon) stays a pair, on its facet's plane or
+   !> its sphere, with its algorithmic gap, until it opens (g >= 0). Before, it was dropped:
+   !> its stored energy vanished and the bodies passed through each other (two bars at
+   !> 1e3 m/s, EPS 1e6: half the energy lost). The potential is then that of the facet's
+   !> plane continued (the explicit contact keeps a node on its last segment likewise).
+   subroutine keep_penetrated(st, list, n, used)
+      type(emc_state_t), intent(in) :: st
+      type(emc_pair_t), allocatable, intent(inout) :: list(:)
+      integer, intent(inout) :: n
+      logical, intent(inout) :: used(:)
+      type(emc_pair_t), allocatable :: t(:)
+      integer :: q
+      if (.not. allocated(st%act)) return
+      do q = 1, size(st%act)
+         if (used(q)) cycle
+         used(q) = .true.
+         if (n == size(list)) then
+            allocate(t(max(2*n, 4)))
+            t(1:n) = list(1:n)
+            call move_alloc(t, list)
+         end if
+         n = n + 1
+         list(n) = st%act(q)
+         list(n)%carried = .true.
+         list(n)%g0c = st%act(q)%g1
+         list(n)%il = 0
+         list(n)%lam = 0.0_wp
+      end do
+   end subroutine keep_penetrated
 
    !> A facet pair that does not continue a penetration must start outside (g(n) >= 0): a
    !> node already behind a facet plane at t(n) is behind the body's far side or was
@@ -297,6 +331,7 @@ contains
       allocate(used(nact))
       used = .false.
       call carry_gaps(es, st, k, pairs, npair, used)
+      call keep_penetrated(st, pairs, npair, used)
       call drop_new_penetrated(es, pairs, npair)
       ok = .false.
       rep%iters = 0
@@ -333,6 +368,12 @@ contains
                yp(jc) = y(jc) + h
                call residual(es, st, dt, yp, pairs, npair, rp, sp, upen1)
                jac(:, jc) = (rp - r)/h
+            end do
+            ! the compliance's derivative exactly: a forward difference loses it in the
+            ! rounding of a large constraint residual (a deep predictor penetration), and
+            ! redundant constraints (8 slave nodes on one facet) then left a zero pivot
+            do i = 1, npair
+               if (pairs(i)%il > 0) jac(nb6 + pairs(i)%il, nb6 + pairs(i)%il) = LAG_COMPLIANCE
             end do
             call dense_solve(jac, r, msg)
             if (len(msg) > 0) then
