@@ -12,6 +12,7 @@ module dx_signals
    implicit none
    private
    public :: signals_install, signal_stop_requested, signal_dump_requested, signal_name, &
+             signal_dump_pending, &
              SIGINT_NUM, SIGTERM_NUM, SIGUSR1_NUM, signal_raise
 
    integer(c_int), parameter :: SIGINT_NUM = 2, SIGUSR1_NUM = 10, SIGTERM_NUM = 15
@@ -68,6 +69,11 @@ contains
       signal_dump_requested = dump_sig /= 0
       if (signal_dump_requested) dump_sig = 0
    end function signal_dump_requested
+
+   !> Whether a 'dump and go on' request is pending, without clearing it.
+   logical function signal_dump_pending()
+      signal_dump_pending = dump_sig /= 0
+   end function signal_dump_pending
 
    !> Send sig to this process (tests).
    subroutine signal_raise(sig)

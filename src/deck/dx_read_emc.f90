@@ -1,6 +1,7 @@
 !> Readers for the energy-momentum conserving rigid-body contact keywords:
 !>   *CONTROL_IMPLICIT_GENERAL  IMFLAG DT0 (IMFORM NSBS IGS CNSTN FORM ZERO_V read past)
 !>   *CONTROL_IMPLICIT_DYNAMICS IMASS GAMMA BETA (TDYBIR TDYDTH TDYBUR IRATE) ALPHA
+!>     (HHT: Hilber, Hughes & Taylor 1977, Earthq. Eng. Struct. Dyn. 5:283-292)
 !>   *DYNX_CONSERVING_CONTACT   CID SPID MPID FORM EPS FS DFRIC
 !>   *DYNX_RIGID_SPHERE         PID SIDE TOL
 !>   *DYNX_CONSERVING_CONTROL   MAXIT RTOL NFAIL OUTDT
@@ -9,7 +10,7 @@
 module dx_read_emc
    use dx_kinds, only: wp
    use dx_error, only: error_t
-   use dx_strings, only: str
+   use dx_strings, only: str, rstr
    use dx_deck_cards, only: deck_t, block_t, get_int, get_real, field_error, block_error, &
                             std_widths, data_start
    use dx_deck_registry, only: registry_t
@@ -69,17 +70,21 @@ contains
       inp%emc%imp_line = blk%cards(i0)%line
    end subroutine read_implicit_general
 
-   !> IMASS GAMMA BETA TDYBIR TDYDTH TDYBUR IRATE ALPHA: the conserving solver is the
-   !> energy-momentum midpoint rule, the conserving member of the Newmark family
-   !> (GAMMA = 1/2, BETA = 1/4, ALPHA = 0); the dissipative HHT/generalized-alpha variants are
-   !> not implemented, so other values are rejected rather than silently ignored.
+   !> IMASS GAMMA BETA TDYBIR TDYDTH TDYBUR IRATE ALPHA, with their LS-DYNA meaning: the
+   !> Newmark parameters GAMMA, BETA and the HHT parameter ALPHA (LS-DYNA's sign: -1/3 <=
+   !> ALPHA <= 0, with GAMMA = 1/2 - ALPHA and BETA = (1 - ALPHA)^2/4). The conserving
+   !> solver takes from them the high-frequency spectral radius rho_inf of that scheme (HHT:
+   !> (1 + ALPHA)/(1 - ALPHA); Newmark: the larger root modulus of
+   !> BETA l^2 + (1/2 + GAMMA - 2 BETA) l + (1/2 - GAMMA + BETA) = 0) and gives its penalty
+   !> contact the same rho_inf (docs/conserving-contact.md, "Algorithmic dissipation").
+   !> GAMMA 1/2, BETA 1/4, ALPHA 0 (the defaults): rho_inf = 1, exact conservation.
    subroutine read_implicit_dynamics(deck, blk, inp, error)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
       integer :: w(8), i0, imass
-      real(wp) :: gamma, beta, alpha
+      real(wp) :: gamma, beta, alpha, b, c, disc, r1, r2
       w = std_widths(blk, 8)
       i0 = data_start(blk)
       call need_card(deck, blk, i0, 'IMASS GAMMA BETA ...', error)
@@ -90,28 +95,71 @@ contains
          call field_error(deck, blk, i0, 1, w, 'IMASS', 'only 1 (dynamic analysis) is '// &
                           'supported, got '//str(imass), error); return
       end if
-      call get_real(deck, blk, i0, 2, w, 'GAMMA', 0.5_wp, gamma, error)
-      if (allocated(error)) return
-      if (gamma == 0.0_wp) gamma = 0.5_wp
-      if (gamma /= 0.5_wp) then
-         call field_error(deck, blk, i0, 2, w, 'GAMMA', 'the conserving solver is the '// &
-            'midpoint rule (GAMMA = 0.5); numerical damping (GAMMA > 0.5) is not implemented', &
-            error); return
-      end if
-      call get_real(deck, blk, i0, 3, w, 'BETA', 0.25_wp, beta, error)
-      if (allocated(error)) return
-      if (beta == 0.0_wp) beta = 0.25_wp
-      if (beta /= 0.25_wp) then
-         call field_error(deck, blk, i0, 3, w, 'BETA', 'the conserving solver is the '// &
-            'midpoint rule (BETA = 0.25); other values are not implemented', error); return
-      end if
       call get_real(deck, blk, i0, 8, w, 'ALPHA', 0.0_wp, alpha, error)
       if (allocated(error)) return
-      if (alpha /= 0.0_wp) then
-         call field_error(deck, blk, i0, 8, w, 'ALPHA', 'the HHT/generalized-alpha '// &
-            'dissipative variant is not implemented (ALPHA = 0: exact conservation)', error)
-         return
+      if (alpha > 0.0_wp) then
+         call field_error(deck, blk, i0, 8, w, 'ALPHA', 'ALPHA > 0 selects the Bathe '// &
+            'composite scheme, which the conserving solver does not have; HHT needs '// &
+            '-1/3 <= ALPHA <= 0, got '//rstr(alpha), error); return
       end if
+      if (alpha < -1.0_wp/3.0_wp - 1.0e-12_wp) then
+         call field_error(deck, blk, i0, 8, w, 'ALPHA', 'the HHT parameter must be in '// &
+            '[-1/3, 0] (unconditional stability), got '//rstr(alpha), error); return
+      end if
+      call get_real(deck, blk, i0, 2, w, 'GAMMA', 0.0_wp, gamma, error)
+      if (allocated(error)) return
+      call get_real(deck, blk, i0, 3, w, 'BETA', 0.0_wp, beta, error)
+      if (allocated(error)) return
+      if (alpha < 0.0_wp) then
+         ! HHT: GAMMA and BETA follow from ALPHA; given ones must agree
+         if (gamma /= 0.0_wp .and. abs(gamma - (0.5_wp - alpha)) > 1.0e-6_wp) then
+            call field_error(deck, blk, i0, 2, w, 'GAMMA', 'with the HHT ALPHA = '// &
+               rstr(alpha)//' GAMMA must be 1/2 - ALPHA = '//rstr(0.5_wp - alpha)// &
+               ' (or blank), got '//rstr(gamma), error); return
+         end if
+         if (beta /= 0.0_wp .and. abs(beta - 0.25_wp*(1.0_wp - alpha)**2) > 1.0e-6_wp) then
+            call field_error(deck, blk, i0, 3, w, 'BETA', 'with the HHT ALPHA = '// &
+               rstr(alpha)//' BETA must be (1 - ALPHA)^2/4 = '// &
+               rstr(0.25_wp*(1.0_wp - alpha)**2)//' (or blank), got '//rstr(beta), error)
+            return
+         end if
+         gamma = 0.5_wp - alpha
+         beta = 0.25_wp*(1.0_wp - alpha)**2
+         inp%emc%rho_inf = (1.0_wp + alpha)/(1.0_wp - alpha)
+      else
+         if (gamma == 0.0_wp) gamma = 0.5_wp
+         if (beta == 0.0_wp) beta = 0.25_wp
+         if (gamma < 0.5_wp .or. gamma > 1.5_wp) then
+            call field_error(deck, blk, i0, 2, w, 'GAMMA', 'must be in [0.5, 1.5] (0.5: '// &
+               'no numerical damping; > 0.5: high-frequency damping), got '//rstr(gamma), &
+               error); return
+         end if
+         if (2.0_wp*beta < gamma) then
+            call field_error(deck, blk, i0, 3, w, 'BETA', 'unconditional stability needs '// &
+               'BETA >= GAMMA/2 = '//rstr(0.5_wp*gamma)//' (most damping: BETA = '// &
+               '(GAMMA + 1/2)^2/4 = '//rstr(0.25_wp*(gamma + 0.5_wp)**2)//'), got '// &
+               rstr(beta), error); return
+         end if
+         if (gamma == 0.5_wp .and. beta == 0.25_wp) then
+            inp%emc%rho_inf = 1.0_wp
+         else
+            ! roots of beta l^2 + b l + c = 0, the Newmark amplification at omega dt -> inf
+            b = 0.5_wp + gamma - 2.0_wp*beta
+            c = 0.5_wp - gamma + beta
+            disc = b*b - 4.0_wp*beta*c
+            if (disc < 0.0_wp) then
+               inp%emc%rho_inf = sqrt(c/beta)
+            else
+               r1 = (-b + sqrt(disc))/(2.0_wp*beta)
+               r2 = (-b - sqrt(disc))/(2.0_wp*beta)
+               inp%emc%rho_inf = max(abs(r1), abs(r2))
+            end if
+            inp%emc%rho_inf = min(inp%emc%rho_inf, 1.0_wp)
+         end if
+      end if
+      inp%emc%gamma = gamma
+      inp%emc%beta = beta
+      inp%emc%alpha = alpha
    end subroutine read_implicit_dynamics
 
    !> CID SPID MPID FORM EPS: a conserving contact between two rigid parts.
@@ -225,9 +273,9 @@ contains
       if (inp%emc%maxit < 0) then
          call field_error(deck, blk, i0, 1, w, 'MAXIT', 'must be > 0', error); return
       end if
-      call get_real(deck, blk, i0, 2, w, 'RTOL', 1.0e-15_wp, inp%emc%rtol, error)
+      call get_real(deck, blk, i0, 2, w, 'RTOL', 1.0e-16_wp, inp%emc%rtol, error)
       if (allocated(error)) return
-      if (inp%emc%rtol == 0.0_wp) inp%emc%rtol = 1.0e-15_wp
+      if (inp%emc%rtol == 0.0_wp) inp%emc%rtol = 1.0e-16_wp
       if (inp%emc%rtol < 0.0_wp) then
          call field_error(deck, blk, i0, 2, w, 'RTOL', 'must be > 0', error); return
       end if

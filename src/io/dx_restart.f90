@@ -22,6 +22,7 @@ module dx_restart
    use dx_restart_file, only: rs_file_t, rs_create, rs_commit, rs_open, rs_close
    use dx_rigid_restart, only: rigid_dump, rigid_restore
    use dx_contact_restart, only: contact_dump, contact_restore
+   use dx_emc_restart, only: emc_dump, emc_restore
    implicit none
    private
    public :: restart_write, restart_read
@@ -119,6 +120,7 @@ contains
       if (allocated(model%walls)) call dump_walls(rs, model)
       if (allocated(model%rigid)) call rigid_dump(rs, model%rigid)
       if (allocated(model%contact)) call contact_dump(rs, model%contact)
+      if (allocated(model%emc)) call emc_dump(rs, model%emc)
    end subroutine dump_components
 
    subroutine restore_components(rs, model)
@@ -130,6 +132,7 @@ contains
       if (allocated(model%walls)) call restore_walls(rs, model)
       if (allocated(model%rigid)) call rigid_restore(rs, model%rigid)
       if (allocated(model%contact)) call contact_restore(rs, model%contact)
+      if (allocated(model%emc)) call emc_restore(rs, model%emc)
    end subroutine restore_components
 
    ! ------------------------------------------------------------- loop state

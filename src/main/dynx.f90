@@ -111,11 +111,6 @@ program dynx
       call par_finalize()
       stop
    end if
-   if (len(rfile) > 0 .and. allocated(model%emc)) then
-      call set_error(error, 'restart (-r) is not available for decks that use the conserving '// &
-         'rigid-body solver (*DYNX_CONSERVING_CONTACT): its dumps are not written yet', EXIT_INPUT)
-      call die(error)
-   end if
    if (len(rfile) > 0) call par_restart_precheck(rfile, deck)   ! MPI: dump of another NP or deck
    call par_engine_setup(model, deck, outdir, partdir, error)   ! MPI run: the rank's part
    if (allocated(error)) call die(error)
@@ -144,7 +139,7 @@ program dynx
    end if
    if (allocated(error)) call die(error)
    if (allocated(model%emc)) then
-      call run_emc(model, outdir, out, error)
+      call run_emc(model, opts%ck, out, error)
    else
       call run_explicit(model, opts, out, error)
    end if

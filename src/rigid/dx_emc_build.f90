@@ -94,6 +94,8 @@ contains
          es%dt = inp%emc%dt0
          es%maxit = inp%emc%maxit
          es%rtol = inp%emc%rtol
+         es%rho_inf = inp%emc%rho_inf
+         es%chi = (1.0_wp - es%rho_inf)/(2.0_wp*(1.0_wp + es%rho_inf))
          es%nfail = inp%emc%nfail
          es%out_dt = inp%emc%out_dt
          allocate(es%defs(nc))

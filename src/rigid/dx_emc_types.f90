@@ -11,7 +11,8 @@ module dx_emc_types
    implicit none
    private
    public :: emc_input_t, emc_contact_in_t, emc_sphere_in_t, emc_system_t, emc_pair_def_t, &
-             emc_facet_t, emc_sphere_t, EMC_PENALTY, EMC_LAGRANGE
+             emc_facet_t, emc_sphere_t, emc_snapshot_t, EMC_PENALTY, EMC_LAGRANGE, &
+             EMC_PAIR_NI, EMC_PAIR_NR
 
    integer, parameter :: EMC_PENALTY = 1, EMC_LAGRANGE = 2
 
@@ -37,9 +38,12 @@ module dx_emc_types
       real(wp) :: dt0 = 0.0_wp
       integer :: imp_ifile = 0, imp_line = 0
       integer :: maxit = 20            !< Newton iterations per attempt
-      real(wp) :: rtol = 1.0e-15_wp    !< residual tolerance relative to the momentum scale
+      real(wp) :: rtol = 1.0e-16_wp    !< residual tolerance relative to the momentum scale
       integer :: nfail = 0             !< 0: stop at a Newton failure; > 0: step cuts allowed
       real(wp) :: out_dt = 0.0_wp      !< emcstat interval (0: every step)
+      !> *CONTROL_IMPLICIT_DYNAMICS as read, and the high-frequency spectral radius they
+      !> ask for (1: the conserving midpoint rule)
+      real(wp) :: gamma = 0.5_wp, beta = 0.25_wp, alpha = 0.0_wp, rho_inf = 1.0_wp
    end type emc_input_t
 
    !> a planar facet of a rigid body, in the body (principal) frame: centroid, unit normal
@@ -67,6 +71,30 @@ module dx_emc_types
       real(wp) :: fs = 0.0_wp, dfric = 0.0_wp
    end type emc_pair_def_t
 
+   !> integers and reals of one contact pair in a snapshot (dx_emc_contact packs them)
+   integer, parameter :: EMC_PAIR_NI = 8, EMC_PAIR_NR = 13
+
+   !> The conserving solver's state at a step boundary, copied by dx_emc_solver before each
+   !> checkpoint and written to / read from restart dumps by dx_emc_restart: the bodies
+   !> (compensated centres, velocities, rotations, body angular velocities), the stored
+   !> penalty energy, the pairs in penetration with their algorithmic gaps, and the loop
+   !> state (time, cycle, next output times, initial invariants, drift maxima, counters,
+   !> emcstat size). valid: restored from a dump (the run continues from it).
+   type :: emc_snapshot_t
+      logical :: valid = .false.
+      real(wp), allocatable :: xc(:, :), xcl(:, :), v(:, :), r(:, :, :), w(:, :)
+      integer, allocatable :: act_i(:, :)      !< (EMC_PAIR_NI, nact)
+      real(wp), allocatable :: act_r(:, :)     !< (EMC_PAIR_NR, nact)
+      real(wp) :: upen = 0.0_wp, ediss = 0.0_wp, t = 0.0_wp, next_out = 0.0_wp
+      real(wp) :: next_plot = 0.0_wp
+      real(wp) :: e0 = 0.0_wp, p0(3) = 0.0_wp, l0(3) = 0.0_wp, ps0 = 0.0_wp, ls0 = 0.0_wp
+      real(wp) :: de = 0.0_wp, dp = 0.0_wp, dl = 0.0_wp, resid = 0.0_wp
+      integer :: cyc = 0, itmax = 0, ittot = 0, ncut = 0, iters = 0, npair = 0
+      integer :: unit = 0                      !< emcstat (for its size at a dump) ...
+      logical :: unit_open = .false.           !< ... while open
+      integer(8) :: emcstat_bytes = 0          !< emcstat size at the restored dump
+   end type emc_snapshot_t
+
    type :: emc_system_t
       integer :: nb = 0
       type(emc_pair_def_t), allocatable :: defs(:)
@@ -78,9 +106,13 @@ module dx_emc_types
       real(wp), allocatable :: w(:, :)                  !< (3, nb) body-frame angular velocity
       real(wp) :: dt = 0.0_wp
       integer :: maxit = 20, nfail = 0
-      real(wp) :: rtol = 1.0e-15_wp, out_dt = 0.0_wp
+      real(wp) :: rtol = 1.0e-16_wp, out_dt = 0.0_wp
+      !> algorithmic dissipation of the penalty pairs (dx_emc_contact): chi =
+      !> (1 - rho_inf)/(2 (1 + rho_inf)), 0 for the conserving midpoint rule
+      real(wp) :: rho_inf = 1.0_wp, chi = 0.0_wp
       real(wp) :: upen = 0.0_wp                         !< stored penalty energy at t(n)
       integer :: newton_total = 0, newton_max = 0, npairs = 0, ncuts = 0
       real(wp) :: resid_max = 0.0_wp
+      type(emc_snapshot_t) :: snap                      !< restart state (dx_emc_restart)
    end type emc_system_t
 end module dx_emc_types
