@@ -31,7 +31,7 @@ module dx_explicit
                             par_engine_energies, par_engine_initial, par_engine_output, &
                             par_engine_fail, par_engine_mass, par_engine_mass_share
    use dx_par_loads, only: par_loads_any, par_loads_shared, par_loads_work
-   use dx_par_rigid, only: par_rigid_step
+   use dx_par_rigid, only: par_rigid_step, par_rigid_writes
    implicit none
    private
    public :: run_options_t, init_state, run_explicit
@@ -287,7 +287,8 @@ contains
          if (allocated(model%rigid)) then
             if (model%rigid%rbdout_dt > 0.0_wp .and. &
                 (t >= model%rigid%next_rbdout .or. done)) then
-               if (writer) call rigid_write_rbdout(model%rigid, opts%outdir, t, ioerr)
+               if (.not. par .or. par_rigid_writes()) &     ! MPI: rank 0 writes rbdout
+                  call rigid_write_rbdout(model%rigid, opts%outdir, t, ioerr)
                if (allocated(ioerr)) then
                   call move_alloc(ioerr, error)
                   if (par) call par_engine_fail(error)   ! rank 0 alone: stop every rank
