@@ -322,7 +322,7 @@ contains
       call log_info('dynx: normal termination at cycle '//str(model%cycle)//', time '// &
                     rstr(model%time)//', energy ratio '//rstr(model%energy%ratio, 8))
       call get_environment_variable('DYNX_ENERGY_BITS', length=i)   ! bitwise checks
-      if (i > 0 .and. writer) call log_info(energy_bits(model%energy))
+      if (i > 0) call log_info(energy_bits(model%energy))   ! (MPI: rank 0 logs)
       call log_info('dynx: wall time '//rstr(wall_time() - t0wall, 4)//' s, '// &
          rstr(1.0e9_wp*(wall_time() - t0wall)/real(max(1, model%cycle), wp)/ &
          real(max(1, model%ne), wp), 4)//' ns per element-cycle, peak memory '// &
