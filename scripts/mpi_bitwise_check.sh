@@ -22,6 +22,7 @@ rm -rf "$ref/bits"
 mkdir -p "$ref/bits"
 DYNX_ENERGY_BITS=1 timeout 300 bin/dynx -i "$deck" -o "$ref/bits" >"$ref/bits/stdout" 2>&1
 sbits=$(bits "$ref/bits/stdout")
+[ -n "$sbits" ] || { echo "serial run for the energy bits failed:"; tail -n 5 "$ref/bits/stdout"; }
 for np in $nps; do
     out=$ref/np$np
     rm -rf "$out"

@@ -17,12 +17,12 @@
 module dx_par_rigid
    use dx_kinds, only: wp
    use dx_model, only: model_t
-   use dx_par, only: gather_plan_t, par_gather_setup, par_gather_values
+   use dx_par, only: gather_plan_t, par_gather_setup, par_gather_values, par_rank
    use dx_par_model, only: par_model_t
    use dx_rigid_solver, only: rigid_step
    implicit none
    private
-   public :: par_rigid_setup, par_rigid_step
+   public :: par_rigid_setup, par_rigid_step, par_rigid_writes
 
    type(model_t), pointer, save :: gp => null()   !< the engine's global model
    integer, allocatable, save :: r_own(:)          !< owned local rigid nodes (gathered)
@@ -75,4 +75,9 @@ contains
       gp%rigid%p_corr = model%rigid%p_corr
       gp%rigid%ke_corr = model%rigid%ke_corr
    end subroutine par_rigid_step
+
+   !> True on the rank that writes rbdout (rank 0; every rank has the same body states).
+   logical function par_rigid_writes()
+      par_rigid_writes = par_rank() == 0
+   end function par_rigid_writes
 end module dx_par_rigid

@@ -34,7 +34,7 @@ module dx_explicit
                             par_engine_pending, par_engine_sync_failure, par_engine_plot, &
                             par_engine_plot_finish, par_engine_writer
    use dx_par_loads, only: par_loads_any, par_loads_shared, par_loads_work
-   use dx_par_rigid, only: par_rigid_step
+   use dx_par_rigid, only: par_rigid_step, par_rigid_writes
    use dx_par_contact, only: par_contact_forces, par_contact_add, par_contact_work
    implicit none
    private
@@ -319,7 +319,8 @@ contains
          if (allocated(model%rigid)) then
             if (model%rigid%rbdout_dt > 0.0_wp .and. &
                 (t >= model%rigid%next_rbdout .or. done)) then
-               if (writer) call rigid_write_rbdout(model%rigid, opts%outdir, t, ioerr)
+               if (.not. par .or. par_rigid_writes()) &     ! MPI: rank 0 writes rbdout
+                  call rigid_write_rbdout(model%rigid, opts%outdir, t, ioerr)
                if (allocated(ioerr)) then
                   call move_alloc(ioerr, error)
                   if (par) call par_engine_fail(error)   ! rank 0 alone: stop every rank
@@ -357,7 +358,7 @@ contains
       call log_info('dynx: normal termination at cycle '//str(model%cycle)//', time '// &
                     rstr(model%time)//', energy ratio '//rstr(model%energy%ratio, 8))
       call get_environment_variable('DYNX_ENERGY_BITS', length=i)   ! bitwise checks
-      if (i > 0 .and. writer) call log_info(energy_bits(model%energy))
+      if (i > 0) call log_info(energy_bits(model%energy))   ! (MPI: rank 0 logs)
       call log_info('dynx: wall time '//rstr(wall_time() - t0wall, 4)//' s, '// &
          rstr(1.0e9_wp*(wall_time() - t0wall)/real(max(1, model%cycle), wp)/ &
          real(max(1, model%ne), wp), 4)//' ns per element-cycle, peak memory '// &
