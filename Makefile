@@ -113,6 +113,7 @@ test: deps
 	@sh scripts/run_regression.sh
 	@python3 scripts/fuzz_decks.py --count 300 --seed 7 --jobs 2
 	@python3 scripts/kill9_check.py --runs 20 --seed 7
+	@python3 scripts/kill9_sweep.py --endtim 0.009 --target d3dump02 --stride 7
 
 # long interrupt-and-continue and kill -9 checks: every scene deck in decks/, every mode
 restart-long: deps

@@ -44,6 +44,7 @@ module dx_checkpoint
       real(wp) :: last = -1.0_wp                !< wall_time() at the previous call
       real(wp) :: cycle_cost = 0.0_wp           !< smoothed seconds per cycle
       real(wp) :: dump_cost = -1.0_wp           !< seconds of the costliest dump (-1: none yet)
+      real(wp) :: dump_est = -1.0_wp            !< MPI: estimated_dump_cost of the rank's model
       integer :: raise_cycle = 0                !< testing: raise raise_sig at this cycle
       integer :: raise_sig = 0                  !< (--raise-at-cycle N:SIG, real handler path)
       integer :: raise_rank = -1                !< MPI: only this rank raises (-1: every rank)
@@ -73,6 +74,7 @@ contains
 
       stopped = .false.
       par = par_engine_on()
+      if (par .and. ck%dump_est < 0.0_wp) ck%dump_est = estimated_dump_cost(model)
       if (ck%raise_cycle > 0 .and. model%cycle == ck%raise_cycle .and. &
           (ck%raise_rank < 0 .or. ck%raise_rank == par_rank())) call signal_raise(ck%raise_sig)
       now = wall_time()
@@ -187,7 +189,7 @@ contains
       if (ck%walltime > 0.0_wp) then
          now = wall_time()
          est = ck%dump_cost
-         if (est < 0.0_wp) est = 0.05_wp
+         if (est < 0.0_wp) est = max(ck%dump_est, 0.05_wp)
          if (now - ck%wall0 + 3.0_wp*ck%cycle_cost + 2.0_wp*est >= ck%walltime) flags(3) = 1
       end if
       flags(2) = max(flags(2), ck%coll(2))       ! a request not yet served stays
