@@ -202,7 +202,8 @@ plot "%s/emc_ball_shell_smooth.dat" u 1:3 w l t "ball", "" u 1:4 w l t "shell", 
      "" u 1:5 w l t "total", "%s/emc_ball_shell_faceted.dat" u 1:3 w l dt 2 t "ball, faceted"
 ''' % (DOC, DATA, DATA))
     md += ['', 'Reference: smoothed, dt = 1e-4 s. Faceted: the ball\'s nodes against the '
-           'shell\'s facets; its energy error is the bumping over the facet edges.', '',
+           'shell\'s facets; energy and momenta are conserved (penetrated pairs persist), the '
+           'bumping over the facet edges shows in the position error.', '',
            '![Lx](emc_ball_shell_lx.png)', '']
 
     # ---- scene 3: bars, penetration against stiffness and dt; extreme speeds

@@ -21,6 +21,11 @@
 !> 1997): f = lam nu with lam >= 0 found by the solver so that the algorithmic gap does not
 !> change over the step, g(n+1) = g(n) (the discrete gap rate is zero): the contact does no
 !> work (energy conserved, no stored energy) and, with g(n) >= 0, nothing penetrates.
+!> Algorithmic dissipation (*CONTROL_IMPLICIT_DYNAMICS, rho_inf < 1): the penalty force gets
+!> chi eps (<g1> - <g0>), <g> = min(g, 0), chi = (1 - rho_inf)/(2 (1 + rho_inf)), so a closed
+!> linear pair has the high-frequency spectral radius rho_inf and the energy falls by
+!> chi eps (<g1> - <g0>)(g1 - g0) >= 0 per step with the momenta exact (the energy-decaying
+!> momentum-conserving idea of Armero & Romero 2001, CMAME 190:2603-2649, on the gap).
 module dx_emc_contact
    use dx_kinds, only: wp
    use dx_emc_types, only: emc_system_t, EMC_PAIR_NI, EMC_PAIR_NR

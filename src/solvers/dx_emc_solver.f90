@@ -10,6 +10,13 @@
 !> Each step solves these 6 equations per body by Newton iterations (Jacobian by forward
 !> differences, LAPACK dgesv); a step that does not converge stops the run (exit 3) or is
 !> halved (*DYNX_CONSERVING_CONTROL NFAIL). Output: emcstat (docs/conserving-contact.md).
+!> Round-off (docs/conserving-contact.md, "Round-off"): compensated centres (two-sum; Knuth,
+!> TAOCP vol. 2, 4.2.2), cay - I formed without the identity, the momentum form of the
+!> velocity update (v1 = v0 + dt F/m, W1 = J^-1 (cay^T J W0 + dt R1^T T)).
+!> *CONTROL_IMPLICIT_DYNAMICS damping: the contact's dissipative discrete gradient
+!> (dx_emc_contact; Armero & Romero 2001, CMAME 190:2603-2649); the energy it takes is
+!> booked (ediss) so that KE + U + ediss = E0. Restart dumps and stops: one checkpoint_stage
+!> per step (dx_checkpoint), the state in model%emc%snap (dx_emc_restart).
 module dx_emc_solver
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use dx_kinds, only: wp
