@@ -61,6 +61,7 @@ module dx_contact_types
       ! --- strips (MPI runs, dx_contact_strips): slave node -> strip at the last sort
       logical, allocatable :: mine(:)          !< (nnode) computed by this rank (MPI only)
       integer :: strip_axis = 0                !< axis of the strips at the last sort
+      logical :: sort_due = .false.            !< this cycle sorts (contact_prepare)
    end type contact_pass_t
 
    !> One *CONTACT_... interface: parameters, one or two passes, resultant forces.
