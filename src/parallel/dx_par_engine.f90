@@ -261,6 +261,8 @@ contains
          what = '*MAT_RIGID / *CONSTRAINED_NODAL_RIGID_BODY (rigid bodies)'
       else if (nonempty_loads()) then
          what = '*LOAD_NODE / *LOAD_SEGMENT / *LOAD_BODY (external loads)'
+      else if (allocated(model%contact) .and. allocated(model%rigid)) then
+         what = '*CONTACT_... with rigid bodies (contact of rigid parts)'
       else if (allocated(model%emc)) then
          what = '*DYNX_CONSERVING_CONTACT (the conserving rigid-body solver)'
       else if (model%rst%d3dump_cycl > 0 .or. model%rst%runrsf_cycl > 0) then
