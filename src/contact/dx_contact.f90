@@ -132,8 +132,12 @@ contains
                   associate (p => f%pass(j))
                      if (p%sort_due) then
                         t1 = wall_time()
-                        if (cs%nstrip > 1) call contact_strips(p, model%x, cs%nstrip, &
-                                                               cs%istrip)
+                        if (cs%nstrip > 1 .and. f%rank >= 0) then   ! a local pair: its rank
+                           if (.not. allocated(p%mine)) allocate(p%mine(p%nnode))
+                           p%mine = f%rank == cs%istrip
+                        else if (cs%nstrip > 1) then
+                           call contact_strips(p, model%x, cs%nstrip, cs%istrip)
+                        end if
                         margin = 0.25_wp*mean_extent(p, model%x)
                         margin = max(margin, 4.0_wp*vmax*dt_est)
                         if (has_rigid) then

@@ -79,6 +79,8 @@ module dx_contact_types
       real(wp) :: fslave(3) = 0.0_wp           !< resultant force on the slave side
       real(wp) :: fmaster(3) = 0.0_wp          !< resultant force on the master side
       integer :: nactive = 0                   !< slave nodes in contact, last cycle
+      integer :: rank = -1                     !< MPI runs: the rank computing a local pair
+                                               !< (-1: strips)
    end type contact_iface_t
 
    !> All interfaces of the model and their shared state.

@@ -96,6 +96,25 @@ contains
       allocate(h_req(0), h_snd(0))
       allocate(cvold(3, g%nn))
       cvold = 0.0_wp
+      ! a local pair (kept whole by the partitioner) is computed by the rank holding its
+      ! elements, without strips: its surface nodes are that rank's own
+      block
+         integer, allocatable :: gp(:), ge(:), gid(:), gif(:)
+         logical, allocatable :: mine_e(:)
+         integer :: b, k, r
+         call contact_groups(g, gp, ge, gid, gif)
+         allocate(mine_e(g%ne))
+         mine_e = .false.
+         do b = 1, size(model%blocks)
+            mine_e(model%blocks(b)%elem(1:model%blocks(b)%nel)) = .true.
+         end do
+         do k = 1, size(gid)
+            r = -1
+            if (mine_e(ge(gp(k)))) r = par_rank()
+            call par_allreduce(r, PAR_MAX)
+            g%contact%iface(gif(k))%rank = r
+         end do
+      end block
       deallocate(model%contact)
       allocate(model%contact)
       on = .true.
@@ -394,13 +413,15 @@ contains
    !> surfaces (face_elements) or holding one of its slave nodes (node-set slaves). CSR:
    !> group g = grp_elem(grp_ptr(g):grp_ptr(g+1)-1); gid(g) the interface's label. Empty
    !> (grp_ptr = [1]) for a deck without such pairs.
-   subroutine contact_groups(model, grp_ptr, grp_elem, gid)
+   subroutine contact_groups(model, grp_ptr, grp_elem, gid, gif)
       type(model_t), intent(in) :: model
       integer, allocatable, intent(out) :: grp_ptr(:), grp_elem(:), gid(:)
-      integer, allocatable :: conn(:, :), seg(:, :), elems(:)
+      integer, allocatable, intent(out), optional :: gif(:)   !< interface index of each
+      integer, allocatable :: conn(:, :), seg(:, :), elems(:), gi(:)
       logical, allocatable :: take(:), slave(:)
       integer :: i, j, e, ng
-      allocate(grp_ptr(1), grp_elem(0), gid(0))
+      allocate(grp_ptr(1), grp_elem(0), gid(0), gi(0))
+      if (present(gif)) gif = gi
       grp_ptr(1) = 1
       if (.not. allocated(model%contact)) return
       call model_conn(model, conn)
@@ -436,6 +457,8 @@ contains
             grp_elem = [grp_elem, elems]
             grp_ptr = [grp_ptr, size(grp_elem) + 1]
             gid = [gid, f%label]
+            gi = [gi, i]
+            if (present(gif)) gif = gi
          end associate
       end do
    end subroutine contact_groups
