@@ -4,19 +4,22 @@
 !>    non-automatic *CONTACT_SURFACE_TO_SURFACE / NODES_TO_SURFACE / ONE_WAY interfaces) into
 !>    one super element (contact_groups: the elements with a face on either surface, or
 !>    holding a slave node of a node set), so a pair lands whole on one rank.
-!>  - The search and the forces are split by strips (dx_contact_strips): the slave nodes of
-!>    every pass are cut along their longest extent into NP strips of equal node count,
-!>    rebuilt with the bucket sort; rank r searches and computes strip r (pass_node).
-!>  - Each cycle the owners of the contact nodes gather x(n), v(n-1/2) of the contact nodes
-!>    into the global model, the strips compute their slave nodes' results, the results
+!>  - The search and the forces of automatic / single-surface contacts are split by strips
+!>    (dx_contact_strips): the slave nodes of every pass are cut along their longest extent
+!>    into NP strips of equal node count, rebuilt with the bucket sort; rank r searches and
+!>    computes strip r (pass_node). A local pair is computed by the rank holding it.
+!>  - Each cycle x(n), v(n-1/2) reach the global model g: every contact node's at a sort
+!>    cycle (one allgather), between sorts only the halo the rank's nodes need (its slave
+!>    nodes, their candidate and contact segments' nodes; one alltoallv from the owners).
+!>    The ranks compute their slave nodes' results, the results
 !>    are gathered (one ordered gather) and every rank adds all of them in the serial order
 !>    (interface, pass, slave node: pass_apply, the same code the serial run uses): the
 !>    contact forces, stiffness row sums, resultants and the contact step bound are the
 !>    serial ones bit for bit on every rank. The forces enter the rank's f after the
 !>    shared-node exchange (f = element sum + contact force, the serial order at every
-!>    node). After the velocity update v(n+1/2) of the contact nodes is gathered and the
-!>    serial contact_work (centred work, sliding energy, rcforc from rank 0) runs on the
-!>    global model.
+!>    node). After the velocity update v(n-1/2), v(n+1/2) of the nodes with a contact force
+!>    are gathered and the serial contact_work (centred work, sliding energy, rcforc from
+!>    rank 0) runs on the global model.
 !> Strips: Hoover et al., ParaDyn, LLNL Engineering Thrust Area Report FY97 (article 4 of
 !> shared/seed); the serial algorithm: Hallquist, Goudreau & Benson 1985, CMAME 51:107-137.
 !> Module state (allowed in parallel/): the gather plans and local maps of the contact nodes.
