@@ -137,6 +137,7 @@ bench: deps
 	@sh scripts/bench_contact.sh
 	@sh scripts/bench_mpi.sh
 	@sh scripts/bench_mpi_memory.sh
+	@sh scripts/bench_par_contact.sh
 
 studies: deps
 	@$(MAKE) --no-print-directory all

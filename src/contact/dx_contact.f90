@@ -26,7 +26,8 @@ module dx_contact
    use dx_append_file, only: append_from
    implicit none
    private
-   public :: contact_forces, contact_work, contact_search_nodes, contact_assemble, contact_dt
+   public :: contact_forces, contact_work, contact_search_nodes, contact_assemble, contact_dt, &
+             contact_vmax, contact_prepare
 
 contains
 
@@ -37,41 +38,43 @@ contains
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: dtcrit
-      real(wp) :: w2max
-      call contact_search_nodes(model, dt_old, dtcrit, w2max)
+      real(wp) :: w2max, vmax
+      logical :: due
+      vmax = contact_vmax(model%v, model%contact%node)
+      call contact_prepare(model, dt_old, vmax, due)
+      call contact_search_nodes(model, dt_old, dtcrit, vmax, w2max)
       call contact_assemble(model, w2max, .true.)
       call contact_dt(model%contact, w2max, dtcrit)
    end subroutine contact_forces
 
-   !> Stage 1: bucket sorts that are due (and, in MPI runs, the strips with them), then the
-   !> result of every slave node of this strip (pass_node; all of them in a serial run).
-   !> w2max: the contact frequency^2 bound of the candidate pairs (this strip's).
-   subroutine contact_search_nodes(model, dt_old, dtcrit, w2max)
+   !> The largest speed |v| over the given nodes (the contact nodes, or in an MPI run the
+   !> rank's owned contact nodes, then the maximum over the ranks: the same bits).
+   real(wp) function contact_vmax(v, nodes) result(vmax)
+      real(wp), intent(in) :: v(:, :)
+      integer, intent(in) :: nodes(:)
+      integer :: i
+      vmax = 0.0_wp
+      do i = 1, size(nodes)
+         vmax = max(vmax, norm2(v(:, nodes(i))))
+      end do
+   end function contact_vmax
+
+   !> Stage 0: contact forces and row sums to zero, inactive interfaces' state cleared, the
+   !> travel since each pass's sort advanced by vmax dt_old and the passes that sort this
+   !> cycle marked (p%sort_due; due: any). MPI runs need every contact node's x when due.
+   subroutine contact_prepare(model, dt_old, vmax, due)
       type(model_t), intent(inout) :: model
-      real(wp), intent(in) :: dt_old, dtcrit
-      real(wp), intent(out) :: w2max
-      real(wp) :: vmax, t, t0, t1, dt_est, margin
-      integer :: i, j, k
-      real(wp), allocatable :: meff(:)
-      logical :: has_rigid
-      t0 = wall_time()
-      ! (model%rigid is unallocated in a deck without rigid bodies; nested tests, no
-      ! short-circuit in Fortran)
-      has_rigid = allocated(model%rigid)
-      if (has_rigid) has_rigid = allocated(model%rigid%node_body)
+      real(wp), intent(in) :: dt_old, vmax
+      logical, intent(out) :: due
+      integer :: i, j
+      real(wp) :: t
       t = model%time
+      due = .false.
       associate (cs => model%contact)
          do i = 1, size(cs%node)
             cs%fc(:, cs%node(i)) = 0.0_wp
             cs%krow(cs%node(i)) = 0.0_wp
          end do
-         vmax = 0.0_wp
-         do i = 1, size(cs%node)
-            vmax = max(vmax, norm2(model%v(:, cs%node(i))))
-         end do
-         dt_est = dt_old
-         if (dt_est <= 0.0_wp) dt_est = model%ctrl%tssfac*dtcrit
-         w2max = 0.0_wp
          do i = 1, size(cs%iface)
             associate (f => cs%iface(i))
                f%fslave = 0.0_wp
@@ -82,18 +85,59 @@ contains
                      f%pass(j)%iseg = 0
                      f%pass(j)%ft = 0.0_wp
                      f%pass(j)%gap = 0.0_wp
+                     f%pass(j)%sort_due = .false.
                   end do
                   cycle
                end if
                do j = 1, size(f%pass)
                   associate (p => f%pass(j))
                      p%moved = p%moved + vmax*dt_old
-                     if (model%cycle - p%last_sort >= f%bsort .or. &
-                         2.0_wp*p%moved >= p%margin .or. &
-                         (cs%nstrip > 1 .and. .not. allocated(p%mine))) then
+                     p%sort_due = model%cycle - p%last_sort >= f%bsort .or. &
+                                  2.0_wp*p%moved >= p%margin .or. &
+                                  (cs%nstrip > 1 .and. .not. allocated(p%mine))
+                     due = due .or. p%sort_due
+                  end associate
+               end do
+            end associate
+         end do
+      end associate
+   end subroutine contact_prepare
+
+   !> Stage 1: bucket sorts that are due (and, in MPI runs, the strips with them), then the
+   !> result of every slave node of this strip (pass_node; all of them in a serial run).
+   !> vmax: the largest contact node speed; w2max: the contact frequency^2 bound of the
+   !> candidate pairs (this strip's).
+   subroutine contact_search_nodes(model, dt_old, dtcrit, vmax, w2max)
+      type(model_t), intent(inout) :: model
+      real(wp), intent(in) :: dt_old, dtcrit, vmax
+      real(wp), intent(out) :: w2max
+      real(wp) :: t, t0, t1, dt_est, margin
+      integer :: i, j, k
+      real(wp), allocatable :: meff(:)
+      logical :: has_rigid
+      t0 = wall_time()
+      ! (model%rigid is unallocated in a deck without rigid bodies; nested tests, no
+      ! short-circuit in Fortran)
+      has_rigid = allocated(model%rigid)
+      if (has_rigid) has_rigid = allocated(model%rigid%node_body)
+      t = model%time
+      associate (cs => model%contact)
+         dt_est = dt_old
+         if (dt_est <= 0.0_wp) dt_est = model%ctrl%tssfac*dtcrit
+         w2max = 0.0_wp
+         do i = 1, size(cs%iface)
+            associate (f => cs%iface(i))
+               if (t < f%bt .or. t > f%dt) cycle
+               do j = 1, size(f%pass)
+                  associate (p => f%pass(j))
+                     if (p%sort_due) then
                         t1 = wall_time()
-                        if (cs%nstrip > 1) call contact_strips(p, model%x, cs%nstrip, &
-                                                               cs%istrip)
+                        if (cs%nstrip > 1 .and. f%rank >= 0) then   ! a local pair: its rank
+                           if (.not. allocated(p%mine)) allocate(p%mine(p%nnode))
+                           p%mine = f%rank == cs%istrip
+                        else if (cs%nstrip > 1) then
+                           call contact_strips(p, model%x, cs%nstrip, cs%istrip)
+                        end if
                         margin = 0.25_wp*mean_extent(p, model%x)
                         margin = max(margin, 4.0_wp*vmax*dt_est)
                         if (has_rigid) then

@@ -61,6 +61,7 @@ module dx_contact_types
       ! --- strips (MPI runs, dx_contact_strips): slave node -> strip at the last sort
       logical, allocatable :: mine(:)          !< (nnode) computed by this rank (MPI only)
       integer :: strip_axis = 0                !< axis of the strips at the last sort
+      logical :: sort_due = .false.            !< this cycle sorts (contact_prepare)
    end type contact_pass_t
 
    !> One *CONTACT_... interface: parameters, one or two passes, resultant forces.
@@ -78,6 +79,8 @@ module dx_contact_types
       real(wp) :: fslave(3) = 0.0_wp           !< resultant force on the slave side
       real(wp) :: fmaster(3) = 0.0_wp          !< resultant force on the master side
       integer :: nactive = 0                   !< slave nodes in contact, last cycle
+      integer :: rank = -1                     !< MPI runs: the rank computing a local pair
+                                               !< (-1: strips)
    end type contact_iface_t
 
    !> All interfaces of the model and their shared state.

@@ -25,7 +25,7 @@ module dx_par
              par_allreduce, par_abort, shared_sum_t, par_shared_setup, par_shared_sum, &
              par_shared_sum_plain, par_wtime, par_minloc, par_gather_ordered, PAR_SUM, &
              gather_plan_t, par_gather_setup, par_gather_values, &
-             PAR_MIN, PAR_MAX, par_bcast_text, par_minloc_flags
+             PAR_MIN, PAR_MAX, par_bcast_text, par_minloc_flags, par_alltoallv
 
    integer, parameter :: PAR_SUM = 1, PAR_MIN = 2, PAR_MAX = 3
    integer, parameter :: TAG_COUNT = 101, TAG_KEYS = 102, TAG_VALUES = 103
@@ -57,6 +57,12 @@ module dx_par
    interface par_allreduce
       module procedure allreduce_r0, allreduce_r1, allreduce_i0, allreduce_i1
    end interface par_allreduce
+
+   !> Personalized all-to-all exchange (MPI_Alltoallv): sbuf(scnt(0)) to rank 0, then
+   !> scnt(1) to rank 1, ...; rbuf likewise by rcnt (counts in elements, 0:np-1).
+   interface par_alltoallv
+      module procedure alltoallv_i, alltoallv_r
+   end interface par_alltoallv
 
 contains
 
@@ -474,6 +480,47 @@ contains
          call check(ierr, 'MPI_Bcast (failure message)')
       end if
    end subroutine par_bcast_text
+   subroutine alltoallv_i(sbuf, scnt, rbuf, rcnt)
+      integer, intent(in) :: sbuf(:), scnt(0:)
+      integer, intent(out) :: rbuf(:)
+      integer, intent(in) :: rcnt(0:)
+      integer, allocatable :: sd(:), rd(:)
+      integer :: r, ierr
+      if (.not. mpi_on) then
+         rbuf = sbuf
+         return
+      end if
+      allocate(sd(0:nranks - 1), rd(0:nranks - 1))
+      sd(0) = 0; rd(0) = 0
+      do r = 1, nranks - 1
+         sd(r) = sd(r - 1) + scnt(r - 1)
+         rd(r) = rd(r - 1) + rcnt(r - 1)
+      end do
+      call MPI_Alltoallv(sbuf, scnt, sd, MPI_INTEGER, rbuf, rcnt, rd, MPI_INTEGER, comm, ierr)
+      call check(ierr, 'MPI_Alltoallv (integer)')
+   end subroutine alltoallv_i
+
+   subroutine alltoallv_r(sbuf, scnt, rbuf, rcnt)
+      real(wp), intent(in) :: sbuf(:)
+      integer, intent(in) :: scnt(0:)
+      real(wp), intent(out) :: rbuf(:)
+      integer, intent(in) :: rcnt(0:)
+      integer, allocatable :: sd(:), rd(:)
+      integer :: r, ierr
+      if (.not. mpi_on) then
+         rbuf = sbuf
+         return
+      end if
+      allocate(sd(0:nranks - 1), rd(0:nranks - 1))
+      sd(0) = 0; rd(0) = 0
+      do r = 1, nranks - 1
+         sd(r) = sd(r - 1) + scnt(r - 1)
+         rd(r) = rd(r - 1) + rcnt(r - 1)
+      end do
+      call MPI_Alltoallv(sbuf, scnt, sd, MPI_DOUBLE_PRECISION, rbuf, rcnt, rd, &
+                         MPI_DOUBLE_PRECISION, comm, ierr)
+      call check(ierr, 'MPI_Alltoallv (real)')
+   end subroutine alltoallv_r
 
    !> The global minimum of x and, among ranks holding it, the lowest key (the serial loop's
    !> first minimum): for the stable time step and its controlling element. key < 2**53.

@@ -4,19 +4,22 @@
 !>    non-automatic *CONTACT_SURFACE_TO_SURFACE / NODES_TO_SURFACE / ONE_WAY interfaces) into
 !>    one super element (contact_groups: the elements with a face on either surface, or
 !>    holding a slave node of a node set), so a pair lands whole on one rank.
-!>  - The search and the forces are split by strips (dx_contact_strips): the slave nodes of
-!>    every pass are cut along their longest extent into NP strips of equal node count,
-!>    rebuilt with the bucket sort; rank r searches and computes strip r (pass_node).
-!>  - Each cycle the owners of the contact nodes gather x(n), v(n-1/2) of the contact nodes
-!>    into the global model, the strips compute their slave nodes' results, the results
+!>  - The search and the forces of automatic / single-surface contacts are split by strips
+!>    (dx_contact_strips): the slave nodes of every pass are cut along their longest extent
+!>    into NP strips of equal node count, rebuilt with the bucket sort; rank r searches and
+!>    computes strip r (pass_node). A local pair is computed by the rank holding it.
+!>  - Each cycle x(n), v(n-1/2) reach the global model g: every contact node's at a sort
+!>    cycle (one allgather), between sorts only the halo the rank's nodes need (its slave
+!>    nodes, their candidate and contact segments' nodes; one alltoallv from the owners).
+!>    The ranks compute their slave nodes' results, the results
 !>    are gathered (one ordered gather) and every rank adds all of them in the serial order
 !>    (interface, pass, slave node: pass_apply, the same code the serial run uses): the
 !>    contact forces, stiffness row sums, resultants and the contact step bound are the
 !>    serial ones bit for bit on every rank. The forces enter the rank's f after the
 !>    shared-node exchange (f = element sum + contact force, the serial order at every
-!>    node). After the velocity update v(n+1/2) of the contact nodes is gathered and the
-!>    serial contact_work (centred work, sliding energy, rcforc from rank 0) runs on the
-!>    global model.
+!>    node). After the velocity update v(n-1/2), v(n+1/2) of the nodes with a contact force
+!>    are gathered and the serial contact_work (centred work, sliding energy, rcforc from
+!>    rank 0) runs on the global model.
 !> Strips: Hoover et al., ParaDyn, LLNL Engineering Thrust Area Report FY97 (article 4 of
 !> shared/seed); the serial algorithm: Hallquist, Goudreau & Benson 1985, CMAME 51:107-137.
 !> Module state (allowed in parallel/): the gather plans and local maps of the contact nodes.
@@ -26,13 +29,14 @@ module dx_par_contact
    use dx_strings, only: str, rstr
    use dx_log, only: log_info
    use dx_model, only: model_t
-   use dx_contact, only: contact_search_nodes, contact_assemble, contact_dt, contact_work
+   use dx_contact, only: contact_search_nodes, contact_assemble, contact_dt, contact_work, &
+                         contact_vmax, contact_prepare
    use dx_contact_types, only: contact_set_t, NREC
    use dx_contact_input, only: CT_SINGLE_SURFACE
    use dx_partition, only: face_elements, model_conn, partition_t
    use dx_par, only: par_rank, par_size, par_abort, par_allreduce, PAR_MAX, PAR_SUM, &
                      gather_plan_t, par_gather_setup, par_gather_values, par_gather_ordered, &
-                     par_wtime
+                     par_wtime, par_alltoallv
    implicit none
    private
    public :: par_contact_setup, par_contact_forces, par_contact_add, par_contact_work, &
@@ -41,6 +45,13 @@ module dx_par_contact
    logical, save :: on = .false.
    type(gather_plan_t), save :: plan_c              !< the owned contact nodes, by global id
    integer, allocatable, save :: c_own(:)           !< local index of each owned contact node
+   integer, allocatable, save :: c_glob(:)          !< its global index
+   integer, allocatable, save :: c_all(:)           !< every contact node (global, ascending)
+   integer, allocatable, save :: c_owner(:)         !< the rank owning each of c_all
+   integer, allocatable, save :: loc_of(:)          !< global node -> local index (0: none)
+   integer, allocatable, save :: h_req(:), h_snd(:) !< halo: nodes received / sent
+   integer, allocatable, save :: h_rcnt(:), h_scnt(:)   !< (0:np-1) their counts per rank
+   integer(8), save :: nval_recv = 0                !< numbers received (x, v, work terms)
    integer, allocatable, save :: l_loc(:), l_glob(:)   !< held contact nodes: local, global
    real(wp), allocatable, save :: cvold(:, :)       !< (3, nn global) v(n-1/2), contact nodes
    real(wp), save :: t_cont = 0.0_wp, t_comm = 0.0_wp
@@ -70,15 +81,49 @@ contains
       l_loc = pack([(i, i = 1, size(node_global))], isc(node_global))
       l_glob = node_global(l_loc)
       c_own = pack(l_loc, owned(l_loc))
-      call par_gather_setup(plan_c, node_global(c_own))
+      c_glob = node_global(c_own)
+      call par_gather_setup(plan_c, c_glob)
+      block
+         integer, allocatable :: ak(:)
+         real(wp), allocatable :: av(:, :)
+         call par_gather_ordered(c_glob, reshape([(real(par_rank(), wp), i = 1, &
+                                 size(c_glob))], [1, size(c_glob)]), ak, av)
+         c_all = ak
+         c_owner = nint(av(1, :))
+      end block
+      allocate(loc_of(g%nn), h_rcnt(0:par_size() - 1), h_scnt(0:par_size() - 1))
+      loc_of = 0
+      loc_of(node_global) = [(i, i = 1, size(node_global))]
+      h_rcnt = 0
+      h_scnt = 0
+      allocate(h_req(0), h_snd(0))
       allocate(cvold(3, g%nn))
       cvold = 0.0_wp
+      ! a local pair (kept whole by the partitioner) is computed by the rank holding its
+      ! elements, without strips: its surface nodes are that rank's own
+      block
+         integer, allocatable :: gp(:), ge(:), gid(:), gif(:)
+         logical, allocatable :: mine_e(:)
+         integer :: b, k, r
+         call contact_groups(g, gp, ge, gid, gif)
+         allocate(mine_e(g%ne))
+         mine_e = .false.
+         do b = 1, size(model%blocks)
+            mine_e(model%blocks(b)%elem(1:model%blocks(b)%nel)) = .true.
+         end do
+         do k = 1, size(gid)
+            r = -1
+            if (mine_e(ge(gp(k)))) r = par_rank()
+            call par_allreduce(r, PAR_MAX)
+            g%contact%iface(gif(k))%rank = r
+         end do
+      end block
       deallocate(model%contact)
       allocate(model%contact)
       on = .true.
    end subroutine par_contact_setup
 
-   !> x(n) and v(n-1/2) of the contact nodes from their owners into g.
+   !> x(n) and v(n-1/2) of every contact node from their owners into g (sort cycles).
    subroutine gather_xv(model, g)
       type(model_t), intent(in) :: model
       type(model_t), intent(inout) :: g
@@ -92,8 +137,86 @@ contains
       call par_gather_values(plan_c, vals, gv)
       g%x(:, plan_c%keys) = gv(1:3, :)
       g%v(:, plan_c%keys) = gv(4:6, :)
-      cvold(:, plan_c%keys) = gv(4:6, :)    ! v(n-1/2) for the work (g%v is shared)
+      nval_recv = nval_recv + 6*(size(plan_c%keys) - size(c_own))
    end subroutine gather_xv
+
+   !> x(n) and v(n-1/2) of the nodes this rank's strips need (between sorts): its own
+   !> contact nodes copied, the others from their owners (MPI_Alltoallv over the halo plan).
+   subroutine halo_xv(model, g)
+      type(model_t), intent(in) :: model
+      type(model_t), intent(inout) :: g
+      real(wp), allocatable :: sb(:), rb(:)
+      integer :: i, n
+      do i = 1, size(c_own)
+         g%x(:, c_glob(i)) = model%x(:, c_own(i))
+         g%v(:, c_glob(i)) = model%v(:, c_own(i))
+      end do
+      allocate(sb(6*size(h_snd)), rb(6*size(h_req)))
+      do i = 1, size(h_snd)
+         n = h_snd(i)
+         sb(6*i - 5:6*i - 3) = model%x(:, n)
+         sb(6*i - 2:6*i) = model%v(:, n)
+      end do
+      call par_alltoallv(sb, 6*h_scnt, rb, 6*h_rcnt)
+      do i = 1, size(h_req)
+         n = h_req(i)
+         g%x(:, n) = rb(6*i - 5:6*i - 3)
+         g%v(:, n) = rb(6*i - 2:6*i)
+      end do
+      nval_recv = nval_recv + size(rb)
+   end subroutine halo_xv
+
+   !> After a sort: the nodes this rank's strips need until the next sort (its slave nodes,
+   !> the nodes of their candidate segments and of the segments they are in contact with),
+   !> requested from their owners: h_req (grouped by owner), h_snd (owned local nodes to
+   !> send, grouped by requesting rank).
+   subroutine halo_plan(g)
+      type(model_t), intent(in) :: g
+      logical, allocatable :: need(:)
+      integer, allocatable :: req(:), sglob(:), one(:)
+      integer :: i, j, k, c, s, r, np, me
+      np = par_size()
+      me = par_rank()
+      allocate(need(g%nn))
+      need = .false.
+      associate (cs => g%contact)
+         do i = 1, size(cs%iface)
+            if (g%time < cs%iface(i)%bt .or. g%time > cs%iface(i)%dt) cycle
+            do j = 1, size(cs%iface(i)%pass)
+               associate (p => cs%iface(i)%pass(j))
+                  if (.not. allocated(p%mine)) cycle
+                  do k = 1, p%nnode
+                     if (.not. p%mine(k)) cycle
+                     need(p%node(k)) = .true.
+                     do c = p%cand_ptr(k), p%cand_ptr(k + 1) - 1
+                        s = p%cand(c)
+                        need(p%seg(1:p%nsn(s), s)) = .true.
+                     end do
+                     s = p%iseg(k)
+                     if (s > 0) need(p%seg(1:p%nsn(s), s)) = .true.
+                  end do
+               end associate
+            end do
+         end do
+      end associate
+      allocate(req(0))
+      do r = 0, np - 1
+         if (r == me) then
+            h_rcnt(r) = 0
+            cycle
+         end if
+         sglob = pack(c_all, need(c_all) .and. c_owner == r)
+         h_rcnt(r) = size(sglob)
+         req = [req, sglob]
+      end do
+      h_req = req
+      one = [(1, r = 0, np - 1)]
+      call par_alltoallv(h_rcnt, one, h_scnt, one)
+      if (allocated(sglob)) deallocate(sglob)
+      allocate(sglob(sum(h_scnt)))
+      call par_alltoallv(h_req, h_rcnt, sglob, h_scnt)
+      h_snd = loc_of(sglob)
+   end subroutine halo_plan
 
    !> The contact stage of an MPI run, before the shared-node exchange: search and results of
    !> this rank's strips, the results gathered, all of them added in the serial order on the
@@ -103,17 +226,26 @@ contains
       type(model_t), intent(inout) :: g
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: dtcrit
-      real(wp) :: w2max, t0, t1
+      real(wp) :: w2max, t0, t1, vmax
       integer, allocatable :: keys(:), akeys(:)
       real(wp), allocatable :: vals(:, :), avals(:, :)
       integer :: i, j, k, n, off, q
+      logical :: due
       t0 = par_wtime()
-      call gather_xv(model, g)
-      t1 = par_wtime()
-      t_comm = t_comm + (t1 - t0)
       g%time = model%time
       g%cycle = model%cycle
-      call contact_search_nodes(g, dt_old, dtcrit, w2max)
+      vmax = contact_vmax(model%v, c_own)      ! the owners' largest speed, then the max
+      call par_allreduce(vmax, PAR_MAX)
+      call contact_prepare(g, dt_old, vmax, due)
+      if (due) then        ! a sort: every contact node's x (the strips, the grids)
+         call gather_xv(model, g)
+      else                 ! between sorts: the halo of this rank's strips
+         call halo_xv(model, g)
+      end if
+      t1 = par_wtime()
+      t_comm = t_comm + (t1 - t0)
+      call contact_search_nodes(g, dt_old, dtcrit, vmax, w2max)
+      if (due) call halo_plan(g)
       ! this strip's results (slave nodes near or in contact), keyed by serial position
       associate (cs => g%contact)
          n = 0
@@ -192,24 +324,37 @@ contains
       end do
    end subroutine par_contact_add
 
-   !> After the velocity update: v(n+1/2) of the contact nodes gathered, then the serial
+   !> After the velocity update: v(n-1/2) and v(n+1/2) of the nodes with a contact force
+   !> (the others add an exact zero to the work) from their owners, then the serial
    !> contact_work on the global model (work, sliding energy; rcforc from rank 0).
-   subroutine par_contact_work(model, g, dtavg, outdir)
+   subroutine par_contact_work(model, g, vold, dtavg, outdir)
       type(model_t), intent(inout) :: model
       type(model_t), intent(inout) :: g
-      real(wp), intent(in) :: dtavg
+      real(wp), intent(in) :: vold(:, :), dtavg
       character(*), intent(in) :: outdir
       type(error_t), allocatable :: error
-      real(wp), allocatable :: vals(:, :), gv(:, :)
-      integer :: i
+      integer, allocatable :: keys(:), akeys(:)
+      real(wp), allocatable :: vals(:, :), avals(:, :)
+      integer :: i, n
       real(wp) :: t0
       t0 = par_wtime()
-      allocate(vals(3, size(c_own)), gv(3, size(plan_c%keys)))
+      n = 0
       do i = 1, size(c_own)
-         vals(:, i) = model%v(:, c_own(i))
+         if (any(g%contact%fc(:, c_glob(i)) /= 0.0_wp)) n = n + 1
       end do
-      call par_gather_values(plan_c, vals, gv)
-      g%v(:, plan_c%keys) = gv
+      allocate(keys(n), vals(6, n))
+      n = 0
+      do i = 1, size(c_own)
+         if (.not. any(g%contact%fc(:, c_glob(i)) /= 0.0_wp)) cycle
+         n = n + 1
+         keys(n) = c_glob(i)
+         vals(1:3, n) = vold(:, c_own(i))
+         vals(4:6, n) = model%v(:, c_own(i))
+      end do
+      call par_gather_ordered(keys, vals, akeys, avals)
+      cvold(:, akeys) = avals(1:3, :)
+      g%v(:, akeys) = avals(4:6, :)
+      nval_recv = nval_recv + size(avals) - size(vals)
       t_comm = t_comm + (par_wtime() - t0)
       call contact_work(g, cvold, dtavg, outdir, error)
       if (allocated(error)) call par_abort(error%message, error%code)   ! rank 0 alone
@@ -219,7 +364,7 @@ contains
    !> End of the run (rank 0 logs): contact time per cycle and the slave nodes per strip.
    subroutine par_contact_report(g)
       type(model_t), intent(in) :: g
-      real(wp) :: t(4), tm(4)
+      real(wp) :: t(4), tm(4), rv, rvm
       integer, allocatable :: cnt(:)
       integer :: i, j, np
       character(:), allocatable :: line
@@ -231,6 +376,13 @@ contains
       call par_allreduce(tm, PAR_MAX)
       call par_allreduce(t, PAR_SUM)
       t = t/real(np, wp)
+      rv = real(nval_recv, wp)/real(max(1, ncycle), wp)
+      rvm = rv
+      call par_allreduce(rv, PAR_SUM)
+      call par_allreduce(rvm, PAR_MAX)
+      call log_info('dynx: MPI contact: '//str(size(c_all))//' contact nodes; numbers '// &
+         'received per rank and cycle (x, v, work terms; without the results): mean '// &
+         rstr(rv/real(par_size(), wp), 4)//', max '//rstr(rvm, 4))
       call log_info('dynx: MPI contact: '//str(ncycle)//' cycles, per cycle: search + '// &
          'forces '//rstr(1.0e6_wp*t(1), 4)//' us (max over ranks '//rstr(1.0e6_wp*tm(1), 4)// &
          '), contact communication '//rstr(1.0e6_wp*t(2), 4)//' us (max '// &
@@ -264,13 +416,15 @@ contains
    !> surfaces (face_elements) or holding one of its slave nodes (node-set slaves). CSR:
    !> group g = grp_elem(grp_ptr(g):grp_ptr(g+1)-1); gid(g) the interface's label. Empty
    !> (grp_ptr = [1]) for a deck without such pairs.
-   subroutine contact_groups(model, grp_ptr, grp_elem, gid)
+   subroutine contact_groups(model, grp_ptr, grp_elem, gid, gif)
       type(model_t), intent(in) :: model
       integer, allocatable, intent(out) :: grp_ptr(:), grp_elem(:), gid(:)
-      integer, allocatable :: conn(:, :), seg(:, :), elems(:)
+      integer, allocatable, intent(out), optional :: gif(:)   !< interface index of each
+      integer, allocatable :: conn(:, :), seg(:, :), elems(:), gi(:)
       logical, allocatable :: take(:), slave(:)
       integer :: i, j, e, ng
-      allocate(grp_ptr(1), grp_elem(0), gid(0))
+      allocate(grp_ptr(1), grp_elem(0), gid(0), gi(0))
+      if (present(gif)) gif = gi
       grp_ptr(1) = 1
       if (.not. allocated(model%contact)) return
       call model_conn(model, conn)
@@ -306,6 +460,8 @@ contains
             grp_elem = [grp_elem, elems]
             grp_ptr = [grp_ptr, size(grp_elem) + 1]
             gid = [gid, f%label]
+            gi = [gi, i]
+            if (present(gif)) gif = gi
          end associate
       end do
    end subroutine contact_groups

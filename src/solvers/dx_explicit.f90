@@ -245,7 +245,7 @@ contains
             end do
          end if
          if (allocated(model%contact) .and. par) then
-            call par_contact_work(model, par_engine_global(), dtavg, opts%outdir)
+            call par_contact_work(model, par_engine_global(), vold, dtavg, opts%outdir)
          else if (allocated(model%contact)) then
             call contact_work(model, vold, dtavg, opts%outdir, ioerr)
             if (allocated(ioerr)) then
