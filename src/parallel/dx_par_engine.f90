@@ -261,9 +261,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       character(:), allocatable :: what
       what = ''
-      if (allocated(model%rigid) .and. allocated(model%contact)) then
-         what = '*MAT_RIGID / *CONSTRAINED_NODAL_RIGID_BODY (rigid bodies) with *CONTACT_...'
-      else if (allocated(model%emc)) then
+      if (allocated(model%emc)) then
          what = '*DYNX_CONSERVING_CONTACT (the conserving rigid-body solver)'
       else if (model%rst%d3dump_cycl > 0 .or. model%rst%runrsf_cycl > 0) then
          what = '*DATABASE_BINARY_D3DUMP / *DATABASE_BINARY_RUNRSF (restart dumps)'

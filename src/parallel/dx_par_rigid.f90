@@ -74,5 +74,10 @@ contains
       ! the global model reports the momentum (set_energy) with the body correction
       gp%rigid%p_corr = model%rigid%p_corr
       gp%rigid%ke_corr = model%rigid%ke_corr
+      ! contact on the global model (dx_par_contact) bounds its step and sizes its search
+      ! with the bodies' centres at t(n) (dx_rigid_contact): keep them current there
+      do i = 1, size(model%rigid%bodies)
+         gp%rigid%bodies(i)%xc = model%rigid%bodies(i)%xc
+      end do
    end subroutine par_rigid_step
 end module dx_par_rigid
