@@ -13,7 +13,10 @@
 !> velocities of the rigid nodes it holds (owned and shared) into its sub-model; the next
 !> x = x + dt v lands them where the serial run puts them. The body kinetic-energy and
 !> momentum corrections and the constraint work are global numbers (the same on every rank).
-!> rbdout is written by rank 0 (dx_explicit).
+!> rbdout is written by rank 0 (dx_explicit). Rigid bodies in contact: f holds the contact
+!> force (dx_par_contact adds it before this stage), and the contact stage, which runs on
+!> the global model, reads the bodies' centres there (dx_rigid_contact), so they are copied
+!> into it after each update (docs/design.md, "Rigid bodies in contact under MPI").
 module dx_par_rigid
    use dx_kinds, only: wp
    use dx_model, only: model_t
