@@ -30,6 +30,7 @@ module dx_par_contact
    use dx_contact_types, only: contact_set_t, NREC
    use dx_contact_input, only: CT_SINGLE_SURFACE
    use dx_partition, only: face_elements, model_conn, partition_t
+   use dx_par_rigid, only: par_rigid_centres
    use dx_par, only: par_rank, par_size, par_abort, par_allreduce, PAR_MAX, PAR_SUM, &
                      gather_plan_t, par_gather_setup, par_gather_values, par_gather_ordered, &
                      par_wtime
@@ -113,6 +114,8 @@ contains
       t_comm = t_comm + (t1 - t0)
       g%time = model%time
       g%cycle = model%cycle
+      ! rigid bodies in contact: their centres x_c(n) into g (dx_par_rigid)
+      if (allocated(model%rigid)) call par_rigid_centres(model%rigid, g%rigid)
       call contact_search_nodes(g, dt_old, dtcrit, w2max)
       ! this strip's results (slave nodes near or in contact), keyed by serial position
       associate (cs => g%contact)

@@ -15,17 +15,18 @@
 !> momentum corrections and the constraint work are global numbers (the same on every rank).
 !> rbdout is written by rank 0 (dx_explicit). Rigid bodies in contact: f holds the contact
 !> force (dx_par_contact adds it before this stage), and the contact stage, which runs on
-!> the global model, reads the bodies' centres there (dx_rigid_contact), so they are copied
-!> into it after each update (docs/design.md, "Rigid bodies in contact under MPI").
+!> the global model, reads the bodies' centres there (dx_rigid_contact): par_rigid_centres
+!> copies them in before it (docs/design.md, "Rigid bodies in contact under MPI").
 module dx_par_rigid
    use dx_kinds, only: wp
    use dx_model, only: model_t
    use dx_par, only: gather_plan_t, par_gather_setup, par_gather_values
    use dx_par_model, only: par_model_t
+   use dx_rigid_types, only: rigid_system_t
    use dx_rigid_solver, only: rigid_step
    implicit none
    private
-   public :: par_rigid_setup, par_rigid_step
+   public :: par_rigid_setup, par_rigid_step, par_rigid_centres
 
    type(model_t), pointer, save :: gp => null()   !< the engine's global model
    integer, allocatable, save :: r_own(:)          !< owned local rigid nodes (gathered)
@@ -77,10 +78,18 @@ contains
       ! the global model reports the momentum (set_energy) with the body correction
       gp%rigid%p_corr = model%rigid%p_corr
       gp%rigid%ke_corr = model%rigid%ke_corr
-      ! contact on the global model (dx_par_contact) bounds its step and sizes its search
-      ! with the bodies' centres at t(n) (dx_rigid_contact): keep them current there
-      do i = 1, size(model%rigid%bodies)
-         gp%rigid%bodies(i)%xc = model%rigid%bodies(i)%xc
-      end do
    end subroutine par_rigid_step
+
+   !> The bodies' centres x_c(n) from the state (the sub-model's rigid system, advanced on
+   !> every rank) into the global model's copy, which the contact stage reads (the effective
+   !> masses of the bucket sort and the contact step bound, dx_rigid_contact). Mass,
+   !> principal moments and the fixed flags do not change during the run.
+   subroutine par_rigid_centres(state, grs)
+      type(rigid_system_t), intent(in) :: state
+      type(rigid_system_t), intent(inout) :: grs
+      integer :: b
+      do b = 1, size(state%bodies)
+         grs%bodies(b)%xc = state%bodies(b)%xc
+      end do
+   end subroutine par_rigid_centres
 end module dx_par_rigid
