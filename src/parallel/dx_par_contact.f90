@@ -34,6 +34,7 @@ module dx_par_contact
    use dx_contact_types, only: contact_set_t, NREC
    use dx_contact_input, only: CT_SINGLE_SURFACE
    use dx_partition, only: face_elements, model_conn, partition_t
+   use dx_par_rigid, only: par_rigid_centres
    use dx_par, only: par_rank, par_size, par_abort, par_allreduce, PAR_MAX, PAR_SUM, &
                      gather_plan_t, par_gather_setup, par_gather_values, par_gather_ordered, &
                      par_wtime, par_alltoallv
@@ -236,6 +237,8 @@ contains
       g%cycle = model%cycle
       vmax = contact_vmax(model%v, c_own)      ! the owners' largest speed, then the max
       call par_allreduce(vmax, PAR_MAX)
+      ! rigid bodies in contact: their centres x_c(n) into g (dx_par_rigid)
+      if (allocated(model%rigid)) call par_rigid_centres(model%rigid, g%rigid)
       call contact_prepare(g, dt_old, vmax, due)
       if (due) then        ! a sort: every contact node's x (the strips, the grids)
          call gather_xv(model, g)

@@ -291,9 +291,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       character(:), allocatable :: what
       what = ''
-      if (allocated(model%rigid) .and. allocated(model%contact)) then
-         what = '*MAT_RIGID / *CONSTRAINED_NODAL_RIGID_BODY (rigid bodies) with *CONTACT_...'
-      else if (allocated(model%emc)) then
+      if (allocated(model%emc)) then
          what = '*DYNX_CONSERVING_CONTACT (the conserving rigid-body solver)'
       end if
       if (len(what) > 0) call set_error(error, model%deck_file//': '//what// &

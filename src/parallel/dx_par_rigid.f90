@@ -13,16 +13,20 @@
 !> velocities of the rigid nodes it holds (owned and shared) into its sub-model; the next
 !> x = x + dt v lands them where the serial run puts them. The body kinetic-energy and
 !> momentum corrections and the constraint work are global numbers (the same on every rank).
-!> rbdout is written by rank 0 (dx_explicit).
+!> rbdout is written by rank 0 (dx_explicit). Rigid bodies in contact: f holds the contact
+!> force (dx_par_contact adds it before this stage), and the contact stage, which runs on
+!> the global model, reads the bodies' centres there (dx_rigid_contact): par_rigid_centres
+!> copies them in before it (docs/design.md, "Rigid bodies in contact under MPI").
 module dx_par_rigid
    use dx_kinds, only: wp
    use dx_model, only: model_t
    use dx_par, only: gather_plan_t, par_gather_setup, par_gather_values, par_rank
    use dx_par_model, only: par_model_t
+   use dx_rigid_types, only: rigid_system_t
    use dx_rigid_solver, only: rigid_step
    implicit none
    private
-   public :: par_rigid_setup, par_rigid_step, par_rigid_writes
+   public :: par_rigid_setup, par_rigid_step, par_rigid_writes, par_rigid_centres
 
    type(model_t), pointer, save :: gp => null()   !< the engine's global model
    integer, allocatable, save :: r_own(:)          !< owned local rigid nodes (gathered)
@@ -80,4 +84,16 @@ contains
    logical function par_rigid_writes()
       par_rigid_writes = par_rank() == 0
    end function par_rigid_writes
+   !> The bodies' centres x_c(n) from the state (the sub-model's rigid system, advanced on
+   !> every rank) into the global model's copy, which the contact stage reads (the effective
+   !> masses of the bucket sort and the contact step bound, dx_rigid_contact). Mass,
+   !> principal moments and the fixed flags do not change during the run.
+   subroutine par_rigid_centres(state, grs)
+      type(rigid_system_t), intent(in) :: state
+      type(rigid_system_t), intent(inout) :: grs
+      integer :: b
+      do b = 1, size(state%bodies)
+         grs%bodies(b)%xc = state%bodies(b)%xc
+      end do
+   end subroutine par_rigid_centres
 end module dx_par_rigid
