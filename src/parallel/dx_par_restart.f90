@@ -33,6 +33,7 @@ module dx_par_restart
    use dx_h5, only: h5_write_attr, h5_read_attr
    use dx_par, only: par_rank, par_size, par_abort, par_allreduce, par_gather_ordered, PAR_MAX
    use dx_par_engine, only: par_engine_on, par_engine_maps
+   use dx_par_plot, only: par_plot_resume, par_plot_from_serial
    use dx_model_input, only: model_input_t
    use dx_deck, only: read_deck_input
    use dx_rank_file, only: deck_content_hash
@@ -234,7 +235,18 @@ contains
          if (allocated(error)) call par_abort(error%message, error%code)
          call scatter_global(gp, ng, model)
       end if
+      ! plot states: each rank continues its part file (the dump's state count; a serial
+      ! dump: the parts are filled from the serial d3plot.h5 first), before rank 0 replaces
+      ! d3plot.h5 (out%resume in dynx.f90, after the barrier below)
+      if (mode == 1) then
+         call par_plot_resume(model%run%nplot, error)
+      else
+         call par_plot_from_serial(model%run%nplot, error)
+      end if
+      if (allocated(error)) call par_abort('restart from '//path//', plot part of rank '// &
+                                           str(me)//': '//error%message, error%code)
       gp%run = model%run            ! rank 0 resumes the output from the global model
+      gp%run%nplot = 0              ! MPI: d3plot.h5 is mesh-only until the combine
       gp%time = model%time
       gp%cycle = model%cycle
       gp%dt = model%dt
