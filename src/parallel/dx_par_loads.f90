@@ -33,7 +33,7 @@ module dx_par_loads
    use dx_loads, only: add_external_loads, has_external_loads
    implicit none
    private
-   public :: par_loads_setup, par_loads_any, par_loads_shared, par_loads_work
+   public :: par_loads_setup, par_loads_any, par_loads_shared, par_loads_work, par_loads_flush
 
    logical, save :: active = .false.
    type(model_t), pointer, save :: gp => null()     !< the engine's global model
@@ -204,8 +204,7 @@ contains
       real(wp), intent(in) :: fext(:, :), vold(:, :), v(:, :), dtavg
       real(wp), intent(inout) :: wext
       logical, intent(in) :: needed
-      real(wp), allocatable :: vals(:, :), gv(:, :)
-      integer :: i, c
+      integer :: i
       if (.not. active) return
       nbuf = nbuf + 1
       do i = 1, size(w_loc)
@@ -214,6 +213,18 @@ contains
          end associate
       end do
       if (.not. (needed .or. nbuf == NBUF_MAX)) return
+      call par_loads_flush(wext)
+   end subroutine par_loads_work
+
+   !> Add the kept external-work terms into wext (collective; nothing when none are kept):
+   !> the same additions in the same order as the flush in par_loads_work would make, so a
+   !> restart dump (dx_checkpoint) that calls it first keeps wext's bits.
+   subroutine par_loads_flush(wext)
+      real(wp), intent(inout) :: wext
+      real(wp), allocatable :: vals(:, :), gv(:, :)
+      integer :: i, c
+      if (.not. active) return
+      if (nbuf == 0) return
       allocate(gv(nbuf, size(plan_w%keys)))
       vals = wbuf(1:nbuf, :)               ! contiguous for MPI
       call par_gather_values(plan_w, vals, gv)
@@ -223,5 +234,5 @@ contains
          end do
       end do
       nbuf = 0
-   end subroutine par_loads_work
+   end subroutine par_loads_flush
 end module dx_par_loads

@@ -31,6 +31,7 @@ module dx_checkpoint
                             par_engine_fail
    use dx_par_restart, only: par_restart_write
    use dx_par_plot, only: par_plot_nstates
+   use dx_par_loads, only: par_loads_flush
    use dx_signals, only: signal_stop_requested, signal_dump_requested, signal_name, &
                          signal_raise
    implicit none
@@ -264,6 +265,7 @@ contains
       if (par_engine_on()) then   ! every rank its part, rank 0 the manifest (rank 0's sizes)
          model%run%nplot = par_plot_nstates()   ! the states in each rank's plot part
          call par_engine_flush_work(model%run%wcon, model%run%wrw)
+         call par_loads_flush(model%run%wext)   ! kept external-work terms (dx_par_loads)
          call par_restart_write(model, path, kind, error)
       else
          call restart_write(model, path, kind, error)
