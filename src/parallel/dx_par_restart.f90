@@ -21,6 +21,13 @@
 !> A serial dump continued on NP ranks: every rank reads it into the global model of the
 !> engine (serial numbering) and copies its own nodes and elements into its sub-model. The
 !> reverse (an MPI dump continued serially) is refused with exit 2 naming the NP to use.
+!> Plot output: a dump records the states in the rank's plot part (dx_checkpoint); the
+!> continue cuts every part back to them (par_plot_resume) or, from a serial dump, fills new
+!> parts from the serial d3plot.h5 (par_plot_from_serial), before rank 0 rewrites d3plot.h5.
+!> Contact: the rank's contact state lives in the engine's global model (dx_par_contact:
+!> replicated per-node state, the rank's own strip and candidate lists), so it is swapped
+!> into the rank's model around the serial writer and reader (swap_contact): each part holds
+!> its rank's contact state. Rigid bodies are model%rigid on every rank (in every part).
 !> CRC-32: dx_restart_file (Sarwate 1988). Atomic replace: POSIX rename(2).
 module dx_par_restart
    use, intrinsic :: iso_fortran_env, only: int8, int64
