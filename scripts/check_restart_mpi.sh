@@ -1,8 +1,11 @@
 #!/bin/sh
 # Interrupt-and-continue of MPI runs (issue 7, last item): an MPI run stopped at a checkpoint
 # and continued with `mpirun -np NP dynx -r <manifest>` must give byte-identical glstat,
-# nodout and XDMF and plot states with zero h5diff differences against REFDIR, the serial
-# run of DECK (the uninterrupted MPI run equals the serial run: mpi_* cases).
+# nodout, rbdout, rcforc (when the deck writes them), XDMF and d3plot.h5 (cmp, and h5diff
+# with zero differences) against REFDIR, the serial run of DECK (the uninterrupted MPI run
+# equals the serial run: mpi_* cases). After every stop (cycle, sigterm, mpirun, walltime)
+# the combined d3plot.h5 + XDMF must hold the states the stop message names (count, last
+# time; the earlier states h5diff-equal to the reference's).
 #
 #   sh scripts/check_restart_mpi.sh DECK REFDIR WORKDIR NP [modes...]
 #
@@ -27,6 +30,9 @@
 #            with another deck (exit 2), with one part missing and one part damaged
 #            (exit 4, the message names the rank and the part file)
 # Random choices come from DYNX_RESTART_SEED when set (printed either way).
+# DYNX_RESTART_WINDOW="LO HI" draws the cycles of cycle, usr1 and serial from LO..HI.
+# Every run that ends normally must also print the serial run's final energies, work sums
+# and momentum as IEEE bits (DYNX_ENERGY_BITS=1; one extra serial run into WORKDIR/bits).
 set -u
 DYNX=${DYNX:-bin/dynx}
 deck=$1; ref=$2; work=$3; np=$4; shift 4
@@ -41,6 +47,13 @@ fail=0
 ncyc=$(awk '!/^#/ {c=$2} END {print c+0}' "$ref/glstat")
 if [ "$ncyc" -lt 3 ]; then echo "check_restart_mpi: reference has $ncyc cycles"; exit 1; fi
 
+# DYNX_RESTART_WINDOW="LO HI": draw the stop/dump cycles of cycle, usr1 and serial from
+# LO..HI (e.g. while contact is active); default 1..cycles-1
+wlo=1; whi=$((ncyc - 1))
+if [ -n "${DYNX_RESTART_WINDOW:-}" ]; then
+    wlo=${DYNX_RESTART_WINDOW%% *}; whi=${DYNX_RESTART_WINDOW##* }
+fi
+
 rnd() {  # rnd LO HI K -> integer in [LO, HI], the K-th draw from the seed
     awk -v s="$seed" -v k="$3" -v lo="$1" -v hi="$2" \
         'BEGIN { srand(s + 7919 * k); print int(lo + rand() * (hi - lo + 1)) }'
@@ -48,14 +61,16 @@ rnd() {  # rnd LO HI K -> integer in [LO, HI], the K-th draw from the seed
 
 same() {  # same DIR LABEL
     ok=1
-    for f in glstat nodout d3plot.xdmf; do
+    cmpd=""
+    for f in glstat nodout rbdout rcforc d3plot.xdmf; do
         if [ -f "$ref/$f" ] || [ -f "$1/$f" ]; then
             if ! cmp -s "$ref/$f" "$1/$f"; then echo "  $2: $f differs"; ok=0; fi
+            cmpd="$cmpd$f, "
         fi
     done
     if ! h5diff -q "$ref/d3plot.h5" "$1/d3plot.h5"; then echo "  $2: d3plot.h5 differs (h5diff)"; ok=0; fi
     if ! cmp -s "$ref/d3plot.h5" "$1/d3plot.h5"; then echo "  $2: d3plot.h5 not byte-equal (cmp)"; ok=0; fi
-    if [ $ok = 1 ]; then echo "  $2: identical (glstat, nodout, xdmf byte-equal; h5diff 0 differences; d3plot.h5 byte-equal)"; else fail=1; fi
+    if [ $ok = 1 ]; then echo "  $2: identical (${cmpd%, } byte-equal; h5diff 0 differences; d3plot.h5 byte-equal)"; else fail=1; fi
 }
 
 expect_fail() {  # expect_fail LABEL CODE SUBSTRING LOG
@@ -64,7 +79,49 @@ expect_fail() {  # expect_fail LABEL CODE SUBSTRING LOG
     echo "  errors/$1: exit $2, $(grep -m1 'error:' "$4" | cut -c1-150)..."
 }
 
+stopped_plot() {  # stopped_plot DIR LABEL: after a stop, the combined d3plot.h5/xdmf hold
+    # the states the message names: its count, the last at the stop time, and every earlier
+    # state equal to the reference's (h5diff of the state group)
+    lg=$1/run1.log
+    nm=$(sed -n "s/.*plot files combined into .*: \([0-9]*\) states).*/\1/p" "$lg")
+    tm=$(sed -n 's/.*stopped by .* at cycle [0-9]*, time \([^;]*\);.*/\1/p' "$lg")
+    if [ -z "$nm" ] || [ -z "$tm" ]; then echo "  $2: stop message lacks the combined state count or the time"; fail=1; return; fi
+    nh=$(h5dump -a /nstates "$1/d3plot.h5" 2>/dev/null | sed -n 's/.*(0): *\([0-9]*\).*/\1/p')
+    nx=$(grep -c '<Time ' "$1/d3plot.xdmf")
+    tx=$(grep '<Time ' "$1/d3plot.xdmf" | tail -1 | sed 's/.*Value="\([^"]*\)".*/\1/')
+    okt=$(awk -v a="$tm" -v b="$tx" 'BEGIN { d = a - b; if (d < 0) d = -d; s = (a < 0 ? -a : a); print (d <= 1e-5 * s + 1e-300) ? 1 : 0 }')
+    if [ "$nh" != "$nm" ] || [ "$nx" != "$nm" ] || [ "$okt" != 1 ]; then
+        echo "  $2: message says $nm states at time $tm; d3plot.h5 has ${nh:-none}, d3plot.xdmf $nx (last at $tx)"; fail=1; return
+    fi
+    q=1
+    while [ $q -lt "$nm" ]; do
+        gq=$(printf '/states/%06d' $q)
+        if ! h5diff -q "$ref/d3plot.h5" "$1/d3plot.h5" "$gq" "$gq" >/dev/null 2>&1; then
+            echo "  $2: combined state $q differs from the reference's"; fail=1; return
+        fi
+        q=$((q + 1))
+    done
+    echo "  $2: combined d3plot.h5 + xdmf after the stop: $nm states as the message says, last at t = $tm, states 1..$((nm - 1)) h5diff-equal to the reference's"
+}
+
 last_dump() { ls "$1"/d3dump*.h5 2>/dev/null | grep -v '\.rank[0-9]*\.h5$' | sort | tail -1; }
+
+# the final energies, work sums and momentum as IEEE bits (glstat prints 11 digits): one
+# serial run with DYNX_ENERGY_BITS=1; every run that ends normally must print the same bits
+bits() { sed -n 's/^dynx: energy bits[^:]*: //p' "$1"; }
+mkdir -p "$work/bits"
+DYNX_ENERGY_BITS=1 timeout 300 "$DYNX" -i "$deck" -o "$work/bits" > "$work/bits/stdout" 2>&1
+sbits=$(bits "$work/bits/stdout")
+[ -n "$sbits" ] || { echo "check_restart_mpi: no energy bits from the serial run"; exit 1; }
+export DYNX_ENERGY_BITS=1
+mo="$mo -x DYNX_ENERGY_BITS"
+samebits() {  # samebits LOG LABEL
+    if [ "$(bits "$1")" != "$sbits" ]; then
+        echo "  $2: energy bits differ: serial $sbits"; echo "      this run $(bits "$1")"; fail=1
+    else
+        echo "  $2: energy bits identical"
+    fi
+}
 
 k=0
 for m in $modes; do
@@ -74,7 +131,7 @@ for m in $modes; do
     r=$(rnd 0 $((np - 1)) $((100 + k)))
     case $m in
     cycle)
-        n=$(rnd 1 $((ncyc - 1)) $k)
+        n=$(rnd $wlo $whi $k)
         timeout 300 $MPIRUN $mo -np "$np" "$DYNX" -i "$deck" -o "$d" --raise-at-cycle "$n:TERM@$r" > "$d/run1.log" 2>&1
         rc=$?
         if [ $rc -ne 5 ]; then echo "  cycle: exit $rc (expected 5) with SIGTERM at cycle $n on rank $r"; fail=1; continue; fi
@@ -122,16 +179,17 @@ for m in $modes; do
         n="$(sed -n 's/.*stopped by the wall-clock limit.* at cycle \([0-9]*\),.*/\1/p' "$d/run1.log") (--walltime 1.0)"
         ;;
     usr1)
-        n=$(rnd 1 $((ncyc - 1)) $k)
+        n=$(rnd $wlo $whi $k)
         timeout 300 $MPIRUN $mo -np "$np" "$DYNX" -i "$deck" -o "$d" --raise-at-cycle "$n:USR1@$r" > "$d/run1.log" 2>&1
         rc=$?
         if [ $rc -ne 0 ]; then echo "  usr1: exit $rc (expected 0)"; fail=1; continue; fi
         grep -q 'SIGUSR1: restart dump' "$d/run1.log" || { echo "  usr1: no dump message"; fail=1; continue; }
         same "$d" "usr1 (run that dumped at cycle $n, SIGUSR1 on rank $r, and went on)"
+        samebits "$d/run1.log" "usr1 (run that dumped and went on)"
         n="$n (SIGUSR1 on rank $r)"
         ;;
     serial)
-        n=$(rnd 1 $((ncyc - 1)) $k)
+        n=$(rnd $wlo $whi $k)
         "$DYNX" -i "$deck" -o "$d" --raise-at-cycle "$n:TERM" > "$d/run1.log" 2>&1
         rc=$?
         if [ $rc -ne 5 ]; then echo "  serial: exit $rc (expected 5)"; fail=1; continue; fi
@@ -157,6 +215,7 @@ for m in $modes; do
         deck=$1
         if [ $rc -ne 0 ]; then echo "  periodic: continue run exit $rc"; tail -5 "$d/run2.log"; fail=1; continue; fi
         same "$d" "periodic NP $np (continued from runrsf.h5 at cycle $n)"
+        samebits "$d/run2.log" "periodic NP $np (continued)"
         continue
         ;;
     errors)
@@ -186,6 +245,7 @@ for m in $modes; do
     esac
     dump=$(last_dump "$d")
     if [ -z "$dump" ]; then echo "  $m: no d3dump manifest in $d"; fail=1; continue; fi
+    case $m in cycle|sigterm|mpirun|walltime) stopped_plot "$d" "$m NP $np" ;; esac
     if [ "$m" != serial ]; then
         for q in $(seq 0 $((np - 1))); do
             ls ${dump%.h5}.cyc*.rank$(printf %05d $q).h5 >/dev/null 2>&1 || { echo "  $m: part of rank $q missing"; fail=1; }
@@ -195,5 +255,6 @@ for m in $modes; do
     rc=$?
     if [ $rc -ne 0 ]; then echo "  $m: continue run exit $rc"; tail -5 "$d/run2.log"; fail=1; continue; fi
     same "$d" "$m NP $np (stopped at cycle $n of $ncyc, continued from $(basename "$dump"))"
+    samebits "$d/run2.log" "$m NP $np (continued)"
 done
 exit $fail

@@ -43,6 +43,9 @@ contains
                call rs%put(p//'ft', ps%ft)
                call rs%put(p//'iseg', ps%iseg)
                call rs%put(p//'gap', ps%gap)
+               ! MPI runs: this rank's strip at the last sort (dx_contact_strips)
+               if (allocated(ps%mine)) call rs%put(p//'strip', [ps%strip_axis, &
+                                                   merge(1, 0, ps%mine)])
             end associate
          end do
       end do
@@ -57,7 +60,7 @@ contains
       type(rs_file_t), intent(inout) :: rs
       type(contact_set_t), intent(inout) :: cs
       integer :: i, j, n, nc
-      integer, allocatable :: labels(:)
+      integer, allocatable :: labels(:), strip(:)
       real(wp) :: sort(5)
       character(:), allocatable :: p
       n = -1
@@ -112,6 +115,15 @@ contains
                call rs%get(p//'ft', ps%ft)
                call rs%get(p//'iseg', ps%iseg)
                call rs%get(p//'gap', ps%gap)
+               if (rs%has(p//'strip') .and. rs%ok()) then   ! an MPI rank's part
+                  allocate(strip(ps%nnode + 1))
+                  call rs%get(p//'strip', strip)
+                  ps%strip_axis = strip(1)
+                  if (allocated(ps%mine)) deallocate(ps%mine)
+                  allocate(ps%mine(ps%nnode))
+                  ps%mine = strip(2:) == 1
+                  deallocate(strip)
+               end if
                if (rs%ok()) then
                   if (any(ps%iseg < 0 .or. ps%iseg > ps%nseg)) call set_error(rs%err, &
                      'restart file '//rs%path//': dataset '//p//'iseg names segments '// &

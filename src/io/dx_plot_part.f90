@@ -366,6 +366,10 @@ contains
          if (allocated(error)) exit work
          call h5_create_extendible(out, '/states/times', error)
          if (allocated(error)) exit work
+         ! the serial writer's flushes too (after the mesh, after each state): HDF5 lays
+         ! out the file by its sequence of calls, so the same calls give the same bytes
+         call h5_flush(out, error)
+         if (allocated(error)) exit work
          deallocate(hex, elem_ids, part_ids, node_ids)
          allocate(x(3, nn), v(3, nn), stress(6, ne), vm(ne), pres(ne), epsp(ne), failed(ne))
          do k = 1, nst
@@ -411,6 +415,8 @@ contains
             call h5_append(out, '/states/times', times(k), i, error)
             if (allocated(error)) exit work
             call h5_write_attr(out, '/', 'nstates', k, error)
+            if (allocated(error)) exit work
+            call h5_flush(out, error)
             if (allocated(error)) exit work
          end do
          call h5_flush(out, error)

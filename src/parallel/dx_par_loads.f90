@@ -216,13 +216,15 @@ contains
       call par_loads_flush(wext)
    end subroutine par_loads_work
 
-   !> Add the kept work terms to wext (serial order) now: before anything reads wext outside
-   !> the energy sums (e.g. a restart dump of an MPI run). Collective.
+   !> Add the kept external-work terms into wext (collective; nothing when none are kept):
+   !> the same additions in the same order as the flush in par_loads_work would make, so a
+   !> restart dump (dx_checkpoint) that calls it first keeps wext's bits.
    subroutine par_loads_flush(wext)
       real(wp), intent(inout) :: wext
       real(wp), allocatable :: vals(:, :), gv(:, :)
       integer :: i, c
-      if (.not. active .or. nbuf == 0) return
+      if (.not. active) return
+      if (nbuf == 0) return
       allocate(gv(nbuf, size(plan_w%keys)))
       vals = wbuf(1:nbuf, :)               ! contiguous for MPI
       call par_gather_values(plan_w, vals, gv)

@@ -9,7 +9,9 @@
 !> Module state (allowed in parallel/): the rank's part file and its node/element maps.
 module dx_par_plot
    use dx_kinds, only: wp
-   use dx_error, only: error_t
+   use dx_error, only: error_t, set_error, EXIT_IO
+   use dx_h5, only: h5_file_t, h5_open_read, h5_close, h5_read, h5_read_attr
+   use dx_xdmf, only: state_group
    use dx_strings, only: str
    use dx_log, only: log_info
    use dx_model, only: model_t
@@ -20,7 +22,7 @@ module dx_par_plot
    implicit none
    private
    public :: par_plot_setup, par_plot_write, par_plot_finish, par_plot_nstates, &
-             par_plot_resume
+             par_plot_resume, par_plot_from_serial
 
    type(plot_part_t), save :: part
    character(:), allocatable, save :: dir
@@ -110,12 +112,86 @@ contains
    !> A restart of an MPI run: continue this rank's part after its first nkeep states (the
    !> dump's plot-state count); states written after the dump are removed
    !> (dx_plot_part: plot_part_truncate). Every rank calls it, before the first state.
+   !> nkeep = 0: nothing to keep, the part is created anew at the first state.
    subroutine par_plot_resume(nkeep, error)
       integer, intent(in) :: nkeep
       type(error_t), allocatable, intent(out) :: error
+      if (nkeep <= 0) return
       call part%resume(dir, par_rank(), nkeep, error)
       call free_mesh()
    end subroutine par_plot_resume
+
+   !> A serial run's dump continued on NP ranks: this rank's part is created and gets its
+   !> nodes and elements of the first nkeep states of the serial plot file (the
+   !> states written before the dump), so the combine at the end gives the file of the
+   !> uninterrupted run. Stress (averaged), plastic strain and failed flag are the serial
+   !> writer's values; the combine recomputes displacement and invariants from them as the
+   !> serial writer did, so the bits agree. Every rank reads OUTDIR/d3plot.h5 (read-only),
+   !> before rank 0 replaces it (out%resume).
+   subroutine par_plot_from_serial(nkeep, error)
+      integer, intent(in) :: nkeep
+      type(error_t), allocatable, intent(out) :: error
+      type(h5_file_t) :: f
+      type(error_t), allocatable :: err2
+      integer, allocatable :: nodes(:), elems(:)
+      real(wp), allocatable :: buf(:), t(:), x(:, :), v(:, :), stress(:, :), epsp(:)
+      real(wp) :: tk
+      integer :: k, ndisk
+      character(:), allocatable :: gname, h5path
+      if (nkeep <= 0) return
+      h5path = dir//'/d3plot.h5'
+      nodes = m_nodes
+      elems = m_elems
+      call create_part(error)
+      if (allocated(error)) return
+      call h5_open_read(f, h5path, error)
+      if (allocated(error)) return
+      work: block
+         call h5_read_attr(f, '/', 'nstates', ndisk, error)
+         if (allocated(error)) exit work
+         call h5_read(f, '/states/times', t, error)
+         if (allocated(error)) exit work
+         if (ndisk < nkeep .or. size(t) < nkeep) then
+            call set_error(error, 'cannot continue '//h5path//': it has '//str(ndisk)// &
+               ' plot states, the restart dump expects '//str(nkeep)// &
+               ' (another run''s file?)', EXIT_IO)
+            exit work
+         end if
+         do k = 1, nkeep
+            gname = state_group(k)
+            call h5_read_attr(f, gname, 'time', tk, error)
+            if (allocated(error)) exit work
+            call get(gname//'/coordinates', 3*m_nn)
+            if (allocated(error)) exit work
+            x = reshape(buf, [3, m_nn])
+            call get(gname//'/velocity', 3*m_nn)
+            if (allocated(error)) exit work
+            v = reshape(buf, [3, m_nn])
+            call get(gname//'/stress', 6*m_ne)
+            if (allocated(error)) exit work
+            stress = reshape(buf, [6, m_ne])
+            call get(gname//'/eff_plastic_strain', m_ne)
+            if (allocated(error)) exit work
+            epsp = buf
+            call get(gname//'/failed', m_ne)
+            if (allocated(error)) exit work
+            call part%write_state(tk, x(:, nodes), v(:, nodes), stress(:, elems), &
+                                  epsp(elems), nint(buf(elems)), error)
+            if (allocated(error)) exit work
+         end do
+      end block work
+      call h5_close(f, err2)
+   contains
+      subroutine get(path, n)
+         character(*), intent(in) :: path
+         integer, intent(in) :: n
+         call h5_read(f, path, buf, error)
+         if (allocated(error)) return
+         if (size(buf) /= n) call set_error(error, 'cannot continue '//h5path//': '// &
+            path//' has '//str(size(buf))//' values, expected '//str(n)// &
+            ' (another run''s file?)', EXIT_IO)
+      end subroutine get
+   end subroutine par_plot_from_serial
 
    !> Append the rank's part of the plot state at model%time (no communication).
    subroutine par_plot_write(model, error)

@@ -21,6 +21,13 @@
 !> A serial dump continued on NP ranks: every rank reads it into the global model of the
 !> engine (serial numbering) and copies its own nodes and elements into its sub-model. The
 !> reverse (an MPI dump continued serially) is refused with exit 2 naming the NP to use.
+!> Plot output: a dump records the states in the rank's plot part (dx_checkpoint); the
+!> continue cuts every part back to them (par_plot_resume) or, from a serial dump, fills new
+!> parts from the serial d3plot.h5 (par_plot_from_serial), before rank 0 rewrites d3plot.h5.
+!> Contact: the rank's contact state lives in the engine's global model (dx_par_contact:
+!> replicated per-node state, the rank's own strip and candidate lists), so it is swapped
+!> into the rank's model around the serial writer and reader (swap_contact): each part holds
+!> its rank's contact state. Rigid bodies are model%rigid on every rank (in every part).
 !> CRC-32: dx_restart_file (Sarwate 1988). Atomic replace: POSIX rename(2).
 module dx_par_restart
    use, intrinsic :: iso_fortran_env, only: int8, int64
@@ -28,11 +35,14 @@ module dx_par_restart
    use dx_error, only: error_t, set_error, EXIT_INPUT, EXIT_IO
    use dx_strings, only: str
    use dx_model, only: model_t
+   use dx_contact_types, only: contact_set_t
+   use dx_contact_strips, only: contact_strips
    use dx_restart, only: restart_write, restart_read
    use dx_restart_file, only: rs_file_t, rs_create, rs_commit, rs_open, rs_close, crc32_bytes
    use dx_h5, only: h5_write_attr, h5_read_attr
    use dx_par, only: par_rank, par_size, par_abort, par_allreduce, par_gather_ordered, PAR_MAX
    use dx_par_engine, only: par_engine_on, par_engine_maps
+   use dx_par_plot, only: par_plot_resume, par_plot_from_serial
    use dx_model_input, only: model_input_t
    use dx_deck, only: read_deck_input
    use dx_rank_file, only: deck_content_hash
@@ -107,7 +117,7 @@ contains
    !> Collective: every rank writes its part, then rank 0 the manifest path. On failure
    !> every rank returns an error (the failing rank's own message on that rank).
    subroutine par_restart_write(model, path, kind, error)
-      type(model_t), intent(in) :: model
+      type(model_t), intent(inout) :: model
       character(*), intent(in) :: path, kind
       type(error_t), allocatable, intent(out) :: error
       type(error_t), allocatable :: e
@@ -123,7 +133,10 @@ contains
       np = par_size()
       prefix = part_prefix(path, model%cycle)
       part = par_restart_part_name(prefix, me)
+      call par_engine_maps(gp, ng, hash)
+      call swap_contact(model, gp)          ! the rank's contact state is in g (below)
       call restart_write(model, part, kind, e)
+      call swap_contact(model, gp)
       crc = -1
       if (.not. allocated(e)) call file_crc(part, crc, e)
       code = 0
@@ -142,7 +155,6 @@ contains
          return
       end if
       if (me == 0) then
-         call par_engine_maps(gp, ng, hash)
          call rs_create(rs, path, 'dynx (MPI manifest)')
          call rs%put('mpi_np', np)
          call rs%put('part_crc32', allv(1, :))
@@ -225,16 +237,32 @@ contains
          call check_part(part, crcs(me + 1), error)
          if (allocated(error)) call par_abort('restart dump '//path//', part of rank '// &
                                               str(me)//': '//error%message, error%code)
+         call swap_contact(model, gp)
          call restart_read(model, part, error)
+         call swap_contact(model, gp)
          if (allocated(error)) call par_abort('restart dump '//path//', part of rank '// &
                                               str(me)//': '//error%message, error%code)
       else
          ! a serial dump: into the global model, then this rank's nodes and elements
+         call global_blocks(gp, .true.)      ! g's element state is freed after setup
          call restart_read(gp, path, error)
          if (allocated(error)) call par_abort(error%message, error%code)
          call scatter_global(gp, ng, model)
+         call global_blocks(gp, .false.)
+         if (allocated(gp%contact)) call contact_strips_all(gp%contact, gp%x)
       end if
+      ! plot states: each rank continues its part file (the dump's state count; a serial
+      ! dump: the parts are filled from the serial d3plot.h5 first), before rank 0 replaces
+      ! d3plot.h5 (out%resume in dynx.f90, after the barrier below)
+      if (mode == 1) then
+         call par_plot_resume(model%run%nplot, error)
+      else
+         call par_plot_from_serial(model%run%nplot, error)
+      end if
+      if (allocated(error)) call par_abort('restart from '//path//', plot part of rank '// &
+                                           str(me)//': '//error%message, error%code)
       gp%run = model%run            ! rank 0 resumes the output from the global model
+      gp%run%nplot = 0              ! MPI: d3plot.h5 is mesh-only until the combine
       gp%time = model%time
       gp%cycle = model%cycle
       gp%dt = model%dt
@@ -351,6 +379,59 @@ contains
       crc = crc32_bytes(bytes)
    end subroutine file_crc
 
+   !> Contact in an MPI run: the rank's contact state (the replicated per-node state and
+   !> this rank's strips and candidate lists, dx_par_contact) is g%contact, and model%contact
+   !> an empty marker. Exchanged around restart_write/restart_read (move_alloc, no copy) so
+   !> that the serial writer dumps and restores the rank's own contact state in its part.
+   subroutine swap_contact(model, gp)
+      type(model_t), intent(inout) :: model, gp
+      type(contact_set_t), allocatable :: tmp
+      if (.not. allocated(model%contact) .or. .not. allocated(gp%contact)) return
+      call move_alloc(model%contact, tmp)
+      call move_alloc(gp%contact, model%contact)
+      call move_alloc(tmp, gp%contact)
+   end subroutine swap_contact
+
+   !> A serial dump of a contact deck: its candidate lists cover every slave node, so the
+   !> rank takes the strips of the current coordinates without a new sort (a strip only
+   !> says which rank computes a node; every node's candidates are the serial ones), and
+   !> the next sort falls on the serial run's cycle.
+   subroutine contact_strips_all(cs, x)
+      type(contact_set_t), intent(inout) :: cs
+      real(wp), intent(in) :: x(:, :)
+      integer :: i, j
+      do i = 1, size(cs%iface)
+         do j = 1, size(cs%iface(i)%pass)
+            call contact_strips(cs%iface(i)%pass(j), x, cs%nstrip, cs%istrip)
+         end do
+      end do
+   end subroutine contact_strips_all
+
+   !> The element state arrays of the global model (freed after setup, dx_par_engine) for
+   !> restoring a serial dump into it (on = .true.), and freed again afterwards.
+   subroutine global_blocks(gp, on)
+      type(model_t), intent(inout) :: gp
+      logical, intent(in) :: on
+      integer :: b
+      do b = 1, size(gp%blocks)
+         associate (blk => gp%blocks(b))
+            if (on) then
+               if (.not. allocated(blk%sig)) allocate(blk%sig(blk%nel, 6, blk%nip), &
+                                                      source=0.0_wp)
+               if (.not. allocated(blk%hv)) allocate(blk%hv(blk%nel, blk%nhv, blk%nip), &
+                                                     source=0.0_wp)
+               if (.not. allocated(blk%hgs) .and. (gp%parts(blk%ipart)%ihq == 4 .or. &
+                   gp%parts(blk%ipart)%ihq == 5)) allocate(blk%hgs(blk%nel, 3, 4), &
+                                                           source=0.0_wp)
+            else
+               if (allocated(blk%sig)) deallocate(blk%sig)
+               if (allocated(blk%hv)) deallocate(blk%hv)
+               if (allocated(blk%hgs)) deallocate(blk%hgs)
+            end if
+         end associate
+      end do
+   end subroutine global_blocks
+
    !> A serial dump restored into the global model gp: copy this rank's nodes (local i is
    !> global ng(i), slot nodes included) and elements (blocks hold global element numbers)
    !> and the loop state into the rank's sub-model.
@@ -384,6 +465,7 @@ contains
             model%walls(k)%force = gp%walls(k)%force
          end do
       end if
+      if (allocated(model%rigid) .and. allocated(gp%rigid)) model%rigid = gp%rigid
       model%run = gp%run
       model%time = gp%time
       model%dt = gp%dt

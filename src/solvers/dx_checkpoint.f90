@@ -27,8 +27,11 @@ module dx_checkpoint
    use dx_restart, only: restart_write
    use dx_par, only: par_rank, par_size
    use dx_par_engine, only: par_engine_on, par_engine_dt, par_engine_flush_work, &
-                            par_engine_output
+                            par_engine_plot, par_engine_plot_finish, par_engine_writer, &
+                            par_engine_fail
    use dx_par_restart, only: par_restart_write
+   use dx_par_plot, only: par_plot_nstates
+   use dx_par_loads, only: par_loads_flush
    use dx_signals, only: signal_stop_requested, signal_dump_requested, signal_name, &
                          signal_raise
    implicit none
@@ -68,7 +71,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: now, margin, est
       integer :: sig, nr
-      character(:), allocatable :: path, why
+      character(:), allocatable :: path, why, comb
       logical :: par, dumpreq, writer
       type(model_t), pointer :: om
 
@@ -147,27 +150,42 @@ contains
       end if
       if (len(why) == 0) return
       stopped = .true.
+      comb = ''
       call next_d3dump(ck, model, path)
       call write_dump(ck, model, out, path, 'signal', error)
       if (allocated(error)) return
       om => model
       writer = .true.
-      if (par) call par_engine_output(model, .true., om, writer)   ! rank 0 writes
-      if (writer) call out%write_plot(om, error)
-      if (allocated(error)) return
+      if (par) then      ! MPI: each rank its part of the last state; rank 0 combines
+         writer = par_engine_writer()
+         call par_engine_plot(model, error)
+         if (allocated(error)) call par_engine_fail(error)   ! this rank alone: stop all
+      else
+         call out%write_plot(om, error)
+         if (allocated(error)) return
+      end if
       if (writer) call out%close(error)
-      if (allocated(error)) return
+      if (allocated(error)) then
+         if (par) call par_engine_fail(error)
+         return
+      end if
+      if (par) then
+         call par_engine_plot_finish(error)
+         if (allocated(error)) call par_engine_fail(error)
+         comb = ' (the '//str(par_size())//' ranks'' plot files combined into '// &
+                ck%outdir//'/d3plot.h5 + d3plot.xdmf: '//str(par_plot_nstates())//' states)'
+      end if
       if (why == 'ENDENG') then
          call set_error(error, 'energy ratio '//rstr(ck%endeng_ratio, 8)//' left the '// &
             'band 1 +- ENDENG/100 = '//rstr(model%ctrl%endeng/100.0_wp, 4)// &
             ' (*CONTROL_TERMINATION ENDENG) at cycle '//str(ck%endeng_cycle)//', time '// &
             rstr(ck%endeng_time)//new_line('a')//'dynx: restart dump '//path// &
             ' (cycle '//str(model%cycle)//', time '//rstr(model%time)// &
-            ') and the last plot state written', EXIT_NUMERIC)
+            ') and the last plot state written'//comb, EXIT_NUMERIC)
       else
          call set_error(error, 'dynx: stopped by '//why//' at cycle '//str(model%cycle)// &
             ', time '//rstr(model%time)//'; restart dump '//path//' and the last plot '// &
-            'state written, all files closed.'//new_line('a')//'dynx: continue with: '// &
+            'state written'//comb//', all files closed.'//new_line('a')//'dynx: continue with: '// &
             launcher(par)//'dynx -i '//ck%deck//' -o '//ck%outdir//' -r '//path, &
             EXIT_CHECKPOINT)
       end if
@@ -247,7 +265,9 @@ contains
       t0 = wall_time()
       call out%sizes(model%run%nplot, model%run%glstat_bytes, model%run%nodout_bytes)
       if (par_engine_on()) then   ! every rank its part, rank 0 the manifest (rank 0's sizes)
+         model%run%nplot = par_plot_nstates()   ! the states in each rank's plot part
          call par_engine_flush_work(model%run%wcon, model%run%wrw)
+         call par_loads_flush(model%run%wext)   ! kept external-work terms (dx_par_loads)
          call par_restart_write(model, path, kind, error)
       else
          call restart_write(model, path, kind, error)
