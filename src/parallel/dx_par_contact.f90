@@ -44,6 +44,9 @@ module dx_par_contact
              par_contact_report, contact_groups, write_contact_report, par_contact_resume
 
    logical, save :: on = .false.
+   !> true until the first contact stage: it gathers every contact node's x and v and plans
+   !> the halo even between sorts (a continued run: g's x is the deck's, the plan empty)
+   logical, save :: fresh = .true.
    type(gather_plan_t), save :: plan_c              !< the owned contact nodes, by global id
    integer, allocatable, save :: c_own(:)           !< local index of each owned contact node
    integer, allocatable, save :: c_glob(:)          !< its global index
@@ -207,6 +210,15 @@ contains
             end do
          end do
       end associate
+      ! rigid bodies: the contact step bound reads x of every body node with a contact
+      ! stiffness (rigid_contact_w2 in contact_assemble, which runs on all of g's results)
+      if (allocated(g%rigid)) then
+         if (allocated(g%rigid%node_body)) then
+            do i = 1, size(g%contact%node)
+               if (g%rigid%node_body(g%contact%node(i)) > 0) need(g%contact%node(i)) = .true.
+            end do
+         end if
+      end if
       allocate(req(0))
       do r = 0, np - 1
          if (r == me) then
@@ -247,7 +259,7 @@ contains
       ! rigid bodies in contact: their centres x_c(n) into g (dx_par_rigid)
       if (allocated(model%rigid)) call par_rigid_centres(model%rigid, g%rigid)
       call contact_prepare(g, dt_old, vmax, due)
-      if (due) then        ! a sort: every contact node's x (the strips, the grids)
+      if (due .or. fresh) then   ! a sort: every contact node's x (the strips, the grids)
          call gather_xv(model, g)
       else                 ! between sorts: the halo of this rank's strips
          call halo_xv(model, g)
@@ -255,7 +267,8 @@ contains
       t1 = par_wtime()
       t_comm = t_comm + (t1 - t0)
       call contact_search_nodes(g, dt_old, dtcrit, vmax, w2max)
-      if (due) call halo_plan(g)
+      if (due .or. fresh) call halo_plan(g)
+      fresh = .false.
       ! this strip's results (slave nodes near or in contact), keyed by serial position
       associate (cs => g%contact)
          n = 0
