@@ -41,7 +41,7 @@ module dx_par_contact
    implicit none
    private
    public :: par_contact_setup, par_contact_forces, par_contact_add, par_contact_work, &
-             par_contact_report, contact_groups, write_contact_report, par_contact_resume
+             par_contact_report, contact_groups, write_contact_report
 
    logical, save :: on = .false.
    !> true until the first contact stage: it gathers every contact node's x and v and plans
@@ -169,13 +169,6 @@ contains
       end do
       nval_recv = nval_recv + size(rb)
    end subroutine halo_xv
-
-   !> After a restart (-r) has restored the contact state (candidate lists, strips): the halo
-   !> plan of the restored strips, which the cycles until the next sort use (collective).
-   subroutine par_contact_resume(g)
-      type(model_t), intent(in) :: g
-      if (on) call halo_plan(g)
-   end subroutine par_contact_resume
 
    !> After a sort: the nodes this rank's strips need until the next sort (its slave nodes,
    !> the nodes of their candidate segments and of the segments they are in contact with),

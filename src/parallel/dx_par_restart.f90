@@ -37,7 +37,6 @@ module dx_par_restart
    use dx_model, only: model_t
    use dx_contact_types, only: contact_set_t
    use dx_contact_strips, only: contact_strips
-   use dx_par_contact, only: par_contact_resume
    use dx_restart, only: restart_write, restart_read
    use dx_restart_file, only: rs_file_t, rs_create, rs_commit, rs_open, rs_close, crc32_bytes
    use dx_h5, only: h5_write_attr, h5_read_attr
@@ -269,7 +268,6 @@ contains
       gp%dt = model%dt
       gp%dt_elem = model%dt_elem
       gp%energy = model%energy
-      if (allocated(gp%contact)) call par_contact_resume(gp)   ! the halo of the strips
       mode = 0
       call par_allreduce(mode, PAR_MAX)   ! every rank has its state
    end subroutine par_restart_read
