@@ -23,6 +23,9 @@ module dx_plot_hdf5
    use dx_io_sys, only: sys_rename
    use dx_strings, only: str
    use dx_xdmf, only: xdmf_write, state_group
+   use dx_plot_states, only: STATES_DIR, state_file, states_write_mesh, states_write_state, &
+                             states_have, states_clear, states_remove_all, file_remove
+   use dx_io_sys, only: sys_fsync
    implicit none
    private
    public :: plot_file_t, element_results, stress_invariants, element_average
@@ -35,7 +38,10 @@ module dx_plot_hdf5
       integer :: nstates = 0
       integer :: nn = 0, ne = 0
       real(wp), allocatable :: times(:)
-      character(:), allocatable :: xdmf_path, title
+      character(:), allocatable :: xdmf_path, title, dir
+      !> .true. while the run writes its states to d3plot.states/ (dx_plot_states) and
+      !> d3plot.h5.tmp; plot_close then renames d3plot.h5.tmp into place
+      logical :: live = .false.
    contains
       procedure :: open => plot_open
       procedure :: resume => plot_resume
@@ -56,6 +62,7 @@ contains
       integer, allocatable :: hex(:, :), ids(:), nlab(:), elab(:)
       integer :: ib, i, e
       type(error_t), allocatable :: err2
+      logical :: there
 
       self%nn = model%nn
       self%ne = model%ne
@@ -65,6 +72,8 @@ contains
       self%title = ''
       if (allocated(model%title)) self%title = model%title
       self%xdmf_path = dir//'/'//XMFNAME
+      self%dir = dir
+      self%live = .false.
       ! created under a temporary name and renamed once the mesh is on disk, so a reader
       ! (or a kill -9) never finds a d3plot.h5 without its superblock and mesh
       call h5_create(self%h5, dir//'/'//H5NAME//'.tmp', error)
@@ -118,23 +127,36 @@ contains
          if (present(publish)) then
             if (.not. publish) exit work
          end if
-         ! an empty XDMF first: an older one must not list states the new file lacks
+         ! an empty XDMF first: an older one must not list states of an older run; then
+         ! the older run's files go, and the mesh file of this run is published
          call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, &
-                         self%times(1:0), error)
+                         self%times(1:0), error, states_dir=STATES_DIR)
          if (allocated(error)) exit work
-         call sys_rename(dir//'/'//H5NAME//'.tmp', dir//'/'//H5NAME, error)
+         call file_remove(dir//'/'//H5NAME)
+         call states_remove_all(dir)
+         call states_write_mesh(dir, model%x0, nlab, hex, elab, ids, self%title, error)
+         if (allocated(error)) exit work
+         self%live = .true.
       end block work
+      if (.not. allocated(error) .and. .not. self%live) then
+         ! plot_resume: the mesh file, unless the killed run's is there (never rewritten)
+         inquire(file=dir//'/'//state_file(0), exist=there)
+         if (.not. there) call states_write_mesh(dir, model%x0, nlab, hex, elab, ids, &
+                                                 self%title, error)
+      end if
       if (allocated(error)) call h5_close(self%h5, err2)   ! keep the first error
    end subroutine plot_open
 
-   !> Continue dir/d3plot.h5 from a restart point that had written nkeep states. The file
-   !> is rebuilt: a new d3plot.h5.tmp gets the mesh and states 1..nkeep copied from the old
-   !> file with the calls of plot_open and plot_write_state, in their order (the same bytes
-   !> as the uninterrupted run's file at that point, so the continued run's file ends up
-   !> identical to it; deleting the later states in place left other bytes, and HDF5 does
-   !> not shrink a file). Order for a kill at any moment: the XDMF is cut to nkeep states
-   !> first (they are in the old file), then the new file replaces the old by rename.
-   !> A missing plot file is started anew.
+   !> Continue the plot output from a restart point that had written nkeep states. The
+   !> states 1..nkeep come from the killed or stopped run's state files (d3plot.states/,
+   !> when they are all there) or else from its d3plot.h5 (a run that ended in order). A new
+   !> d3plot.h5.tmp gets the mesh and those states with the calls of plot_open and
+   !> plot_write_state, in their order (the same bytes as the uninterrupted run's file at
+   !> that point, so the continued run's file ends up identical to it; HDF5 does not
+   !> shrink a file, so cutting states in place left other bytes). Order for a kill at any
+   !> moment: the XDMF is cut to nkeep states first (they are in the files it names), state
+   !> files are written (from d3plot.h5) before the XDMF names them, and files the XDMF
+   !> no longer names are removed last. Nothing is found: the plot file is started anew.
    subroutine plot_resume(self, model, dir, nkeep, error)
       class(plot_file_t), intent(inout) :: self
       type(model_t), intent(in) :: model
@@ -148,37 +170,50 @@ contains
       integer, allocatable :: failed(:)
       real(wp) :: tk
       integer :: ndisk, k, nn, ne
-      logical :: there
-      character(:), allocatable :: g
+      logical :: there, from_states
+      character(:), allocatable :: g, src
+      from_states = states_have(dir, nkeep)
       inquire(file=dir//'/'//H5NAME, exist=there)
-      if (.not. there) then
+      if (.not. there .and. .not. from_states) then
          call self%open(model, dir, error)
          return
       end if
       nn = model%nn
       ne = model%ne
-      call h5_open_read(old, dir//'/'//H5NAME, error)
-      if (allocated(error)) return
+      self%title = ''
+      if (allocated(model%title)) self%title = model%title
+      src = dir//'/'//H5NAME
+      if (.not. from_states) then
+         call h5_open_read(old, src, error)
+         if (allocated(error)) return
+      end if
       work: block
-         call h5_read_attr(old, '/', 'nstates', ndisk, error)
-         if (allocated(error)) exit work
-         call h5_read(old, '/states/times', t, error)
-         if (allocated(error)) exit work
-         if (ndisk < nkeep .or. size(t) < nkeep) then
-            call set_error(error, 'cannot continue '//dir//'/'//H5NAME//': it has '// &
-               str(ndisk)//' plot states, the restart dump expects '//str(nkeep)// &
-               ' (another run''s file?)', EXIT_IO)
-            exit work
+         if (.not. from_states) then
+            call h5_read_attr(old, '/', 'nstates', ndisk, error)
+            if (allocated(error)) exit work
+            call h5_read(old, '/states/times', t, error)
+            if (allocated(error)) exit work
+            if (ndisk < nkeep .or. size(t) < nkeep) then
+               call set_error(error, 'cannot continue '//dir//'/'//H5NAME//': it has '// &
+                  str(ndisk)//' plot states, the restart dump expects '//str(nkeep)// &
+                  ' (another run''s file?)', EXIT_IO)
+               exit work
+            end if
+            call xdmf_write(dir//'/'//XMFNAME, H5NAME, self%title, nn, ne, t(1:nkeep), error)
+            if (allocated(error)) exit work
          end if
-         self%title = ''
-         if (allocated(model%title)) self%title = model%title
-         call xdmf_write(dir//'/'//XMFNAME, H5NAME, self%title, nn, ne, t(1:nkeep), error)
-         if (allocated(error)) exit work
          call self%open(model, dir, error, publish=.false.)
          if (allocated(error)) exit work
+         ! from d3plot.h5, the copies also go to state files; from state files, not
+         self%live = .not. from_states
          allocate(failed(ne))
          do k = 1, nkeep
             g = state_group(k)
+            if (from_states) then
+               src = dir//'/'//state_file(k)
+               call h5_open_read(old, src, error)
+               if (allocated(error)) exit work
+            end if
             call h5_read_attr(old, g, 'time', tk, error)
             if (.not. allocated(error)) call get2(g//'/coordinates', 3, nn, x)
             if (.not. allocated(error)) call get2(g//'/displacement', 3, nn, d)
@@ -189,16 +224,28 @@ contains
             if (.not. allocated(error)) call get1(g//'/eff_plastic_strain', ne, epsp)
             if (.not. allocated(error)) call get1(g//'/failed', ne, b)
             if (allocated(error)) exit work
+            if (from_states) then
+               call h5_close(old, error)
+               if (allocated(error)) exit work
+            end if
             failed = nint(b)
             call write_arrays(self, tk, x, d, v, stress, vm, pres, epsp, failed, error, &
                               xdmf=.false.)
             if (allocated(error)) exit work
          end do
-         call h5_close(old, error)
+         if (.not. from_states) then
+            call h5_close(old, error)
+            if (allocated(error)) exit work
+         end if
+         self%live = .true.
+         call xdmf_write(self%xdmf_path, H5NAME, self%title, nn, ne, self%times(1:nkeep), &
+                         error, states_dir=STATES_DIR)
          if (allocated(error)) exit work
-         call sys_rename(dir//'/'//H5NAME//'.tmp', dir//'/'//H5NAME, error)
+         call states_clear(dir, nkeep + 1)
+         call file_remove(dir//'/'//H5NAME)
       end block work
       if (allocated(error)) then
+         self%live = .false.
          call h5_close(old, err2)
          call h5_close(self%h5, err2)
       end if
@@ -209,7 +256,7 @@ contains
          real(wp), allocatable, intent(out) :: a(:)
          call h5_read(old, path, a, error)
          if (allocated(error)) return
-         if (size(a) /= n) call set_error(error, 'cannot continue '//dir//'/'//H5NAME// &
+         if (size(a) /= n) call set_error(error, 'cannot continue '//src// &
             ': '//path//' has '//str(size(a))//' values, expected '//str(n)//' (another '// &
             'run''s file?)', EXIT_IO)
       end subroutine get1
@@ -372,11 +419,17 @@ contains
          call move_alloc(tmp, self%times)
       end if
       self%times(k) = time
+      ! the state's own file (temp, fsync, rename: dx_plot_states), then the XDMF names it
+      if (self%live) then
+         call states_write_state(self%dir, k, time, x, d, v, stress, vm, pres, epsp, failed, &
+                                 error)
+         if (allocated(error)) return
+      end if
       if (present(xdmf)) then
          if (.not. xdmf) return
       end if
       call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, &
-                      self%times(1:k), error)
+                      self%times(1:k), error, states_dir=STATES_DIR)
    end subroutine write_arrays
 
    !> Flush and close (safe to call twice and after errors).
@@ -388,5 +441,18 @@ contains
       call h5_flush(self%h5, error)
       call h5_close(self%h5, err2)
       if (.not. allocated(error) .and. allocated(err2)) call move_alloc(err2, error)
+      if (.not. self%live) return
+      self%live = .false.
+      if (allocated(error)) return          ! the state files stay listed and readable
+      ! d3plot.h5 into place (whole, synced), the XDMF pointed at it, the state files gone:
+      ! a kill between any two steps leaves an XDMF whose files are all whole
+      call sys_fsync(self%dir//'/'//H5NAME//'.tmp', error)
+      if (allocated(error)) return
+      call sys_rename(self%dir//'/'//H5NAME//'.tmp', self%dir//'/'//H5NAME, error)
+      if (allocated(error)) return
+      call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, &
+                      self%times(1:self%nstates), error)
+      if (allocated(error)) return
+      call states_remove_all(self%dir)
    end subroutine plot_close
 end module dx_plot_hdf5
