@@ -169,20 +169,23 @@ contains
       states_have = .true.
    end function states_have
 
-   !> Remove the state files k >= kfrom of dir (they are written in order, so the first
-   !> missing one ends them) and a left-over temporary file of the first missing one.
+   !> Remove the state files k >= kfrom of dir and a left-over temporary file after them.
+   !> They are written in order, so they run from 1 to the first missing one; they are
+   !> removed from the last down, so a kill here leaves them contiguous again.
    subroutine states_clear(dir, kfrom)
       character(*), intent(in) :: dir
       integer, intent(in) :: kfrom
-      integer :: k
+      integer :: k, m
       logical :: there
-      k = kfrom
+      m = kfrom - 1
       do
-         call file_remove(dir//'/'//state_file(k)//'.tmp')
-         inquire(file=dir//'/'//state_file(k), exist=there)
+         inquire(file=dir//'/'//state_file(m + 1), exist=there)
          if (.not. there) exit
+         m = m + 1
+      end do
+      call file_remove(dir//'/'//state_file(m + 1)//'.tmp')
+      do k = m, kfrom, -1
          call file_remove(dir//'/'//state_file(k))
-         k = k + 1
       end do
    end subroutine states_clear
 
