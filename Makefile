@@ -122,7 +122,7 @@ restart-long: deps
 	@sh scripts/restart_long.sh
 
 # kill -9 at every pwrite64, write, rename, fsync and unlink of a run (strace fault injection;
-# 774 kill points, 0 failures: docs/design.md, "Crash-safe plot output")
+# 763 kill points, 0 failures: docs/design.md, "Crash-safe plot output")
 kill9-sweep: deps
 	@$(MAKE) --no-print-directory all
 	@python3 scripts/kill9_sweep.py
