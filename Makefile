@@ -126,6 +126,8 @@ restart-long: deps
 kill9-sweep: deps
 	@$(MAKE) --no-print-directory all
 	@python3 scripts/kill9_sweep.py
+	@python3 scripts/kill9_resume_sweep.py states
+	@python3 scripts/kill9_resume_sweep.py h5
 
 # the deck-reader fuzzer, >= 1e4 mutated decks through the sanitized debug build
 fuzz: deps
