@@ -23,9 +23,13 @@ module dx_plot_hdf5
    use dx_io_sys, only: sys_rename
    use dx_strings, only: str
    use dx_xdmf, only: xdmf_write, state_group
+   use dx_plot_states, only: STATES_DIR, state_file, states_write_mesh, states_write_state, &
+                             states_have, states_clear, states_remove_all, file_remove
+   use dx_io_sys, only: sys_fsync
    implicit none
    private
-   public :: plot_file_t, element_results, stress_invariants, element_average
+   public :: plot_file_t, element_results, stress_invariants, element_average, &
+             plot_merge_states
 
    character(*), parameter :: H5NAME = 'd3plot.h5', XMFNAME = 'd3plot.xdmf'
 
@@ -35,7 +39,10 @@ module dx_plot_hdf5
       integer :: nstates = 0
       integer :: nn = 0, ne = 0
       real(wp), allocatable :: times(:)
-      character(:), allocatable :: xdmf_path, title
+      character(:), allocatable :: xdmf_path, title, dir
+      !> .true. while the run writes its states to d3plot.states/ (dx_plot_states) and
+      !> d3plot.h5.tmp; plot_close then renames d3plot.h5.tmp into place
+      logical :: live = .false.
    contains
       procedure :: open => plot_open
       procedure :: resume => plot_resume
@@ -45,8 +52,11 @@ module dx_plot_hdf5
 
 contains
 
-   !> Create dir/d3plot.h5 with the mesh and an empty state list, and dir/d3plot.xdmf.
-   !> publish = .false. (plot_resume): leave the new file as d3plot.h5.tmp, no XDMF.
+   !> Start the plot output of a run in dir: d3plot.h5.tmp with the mesh and an empty state
+   !> list (renamed to d3plot.h5 by plot_close at the end of the run), the mesh file
+   !> d3plot.states/mesh.h5 and an empty d3plot.xdmf; an older run's d3plot.h5 and state
+   !> files are removed. publish = .false. (plot_resume): only d3plot.h5.tmp and, when
+   !> missing, the mesh file.
    subroutine plot_open(self, model, dir, error, publish)
       class(plot_file_t), intent(inout) :: self
       type(model_t), intent(in) :: model
@@ -55,20 +65,8 @@ contains
       logical, intent(in), optional :: publish
       integer, allocatable :: hex(:, :), ids(:), nlab(:), elab(:)
       integer :: ib, i, e
-      type(error_t), allocatable :: err2
-
-      self%nn = model%nn
-      self%ne = model%ne
-      self%nstates = 0
-      if (allocated(self%times)) deallocate(self%times)
-      allocate(self%times(16))
-      self%title = ''
-      if (allocated(model%title)) self%title = model%title
-      self%xdmf_path = dir//'/'//XMFNAME
-      ! created under a temporary name and renamed once the mesh is on disk, so a reader
-      ! (or a kill -9) never finds a d3plot.h5 without its superblock and mesh
-      call h5_create(self%h5, dir//'/'//H5NAME//'.tmp', error)
-      if (allocated(error)) return
+      character(:), allocatable :: title
+      logical :: pub
 
       allocate(hex(8, model%ne), ids(model%ne))
       hex = 0
@@ -91,11 +89,42 @@ contains
       if (allocated(model%node_label)) nlab = model%node_label
       elab = [(i, i = 1, model%ne)]
       if (allocated(model%elem_label)) elab = model%elem_label
+      title = ''
+      if (allocated(model%title)) title = model%title
+      pub = .true.
+      if (present(publish)) pub = publish
+      call open_arrays(self, dir, title, model%x0, nlab, hex, elab, ids, pub, error)
+   end subroutine plot_open
+
+   !> plot_open on the mesh arrays (also used by plot_merge_states).
+   subroutine open_arrays(self, dir, title, x0, nlab, hex, elab, ids, publish, error)
+      class(plot_file_t), intent(inout) :: self
+      character(*), intent(in) :: dir, title
+      real(wp), intent(in) :: x0(:, :)
+      integer, intent(in) :: nlab(:), hex(:, :), elab(:), ids(:)
+      logical, intent(in) :: publish
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: err2
+      logical :: there
+
+      self%nn = size(x0, 2)
+      self%ne = size(hex, 2)
+      self%nstates = 0
+      if (allocated(self%times)) deallocate(self%times)
+      allocate(self%times(16))
+      self%title = title
+      self%xdmf_path = dir//'/'//XMFNAME
+      self%dir = dir
+      self%live = .false.
+      ! written under a temporary name and renamed at the end of the run (plot_close): a
+      ! reader (or a kill -9) never finds a d3plot.h5 that is being written
+      call h5_create(self%h5, dir//'/'//H5NAME//'.tmp', error)
+      if (allocated(error)) return
 
       work: block
          call h5_create_group(self%h5, '/mesh', error)
          if (allocated(error)) exit work
-         call h5_write(self%h5, '/mesh/coordinates', model%x0, error)
+         call h5_write(self%h5, '/mesh/coordinates', x0, error)
          if (allocated(error)) exit work
          call h5_write(self%h5, '/mesh/node_ids', nlab, error)
          if (allocated(error)) exit work
@@ -115,26 +144,155 @@ contains
          if (allocated(error)) exit work
          call h5_flush(self%h5, error)
          if (allocated(error)) exit work
-         if (present(publish)) then
-            if (.not. publish) exit work
+         if (.not. publish) then
+            ! plot_resume: the mesh file, unless the killed run's is there (never rewritten)
+            inquire(file=dir//'/'//state_file(0), exist=there)
+            if (.not. there) call states_write_mesh(dir, x0, nlab, hex, elab, ids, &
+                                                    self%title, error)
+            exit work
          end if
-         ! an empty XDMF first: an older one must not list states the new file lacks
+         ! an empty XDMF first: an older one must not list states of an older run; then
+         ! the older run's files go, and the mesh file of this run is published
          call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, &
-                         self%times(1:0), error)
+                         self%times(1:0), error, states_dir=STATES_DIR)
          if (allocated(error)) exit work
-         call sys_rename(dir//'/'//H5NAME//'.tmp', dir//'/'//H5NAME, error)
+         call file_remove(dir//'/'//H5NAME)
+         call states_remove_all(dir)
+         call states_write_mesh(dir, x0, nlab, hex, elab, ids, self%title, error)
+         if (allocated(error)) exit work
+         self%live = .true.
       end block work
       if (allocated(error)) call h5_close(self%h5, err2)   ! keep the first error
-   end subroutine plot_open
+   end subroutine open_arrays
 
-   !> Continue dir/d3plot.h5 from a restart point that had written nkeep states. The file
-   !> is rebuilt: a new d3plot.h5.tmp gets the mesh and states 1..nkeep copied from the old
-   !> file with the calls of plot_open and plot_write_state, in their order (the same bytes
-   !> as the uninterrupted run's file at that point, so the continued run's file ends up
-   !> identical to it; deleting the later states in place left other bytes, and HDF5 does
-   !> not shrink a file). Order for a kill at any moment: the XDMF is cut to nkeep states
-   !> first (they are in the old file), then the new file replaces the old by rename.
-   !> A missing plot file is started anew.
+   !> Merge the state files a killed run left in dir (d3plot.states/mesh.h5 and the
+   !> contiguous NNNNNN.h5 from 1) into dir/d3plot.h5 + d3plot.xdmf, with the writer's calls
+   !> in the run's order (the bytes of the uninterrupted run's file at that state), then
+   !> remove the state files (bin/dynx-combine). nmerged: states merged. If d3plot.h5 is
+   !> there (the run was killed while plot_close cleaned up), only the XDMF is pointed at it
+   !> and the state files are removed.
+   subroutine plot_merge_states(dir, nmerged, error)
+      character(*), intent(in) :: dir
+      integer, intent(out) :: nmerged
+      type(error_t), allocatable, intent(out) :: error
+      type(plot_file_t) :: self
+      type(h5_file_t) :: f
+      type(error_t), allocatable :: err2
+      real(wp), allocatable :: x0(:), nlab(:), hex(:), elab(:), ids(:), x(:), d(:), v(:), &
+                               stress(:), vm(:), pres(:), epsp(:), b(:)
+      character(:), allocatable :: title, src, g
+      real(wp) :: tk
+      integer :: k, nn, ne
+      logical :: there
+      nmerged = 0
+      inquire(file=dir//'/'//H5NAME, exist=there)
+      if (there) then
+         ! killed in plot_close after d3plot.h5 (always whole: it is only ever renamed into
+         ! place) was in place: point the XDMF at it and finish the clean-up
+         src = dir//'/'//H5NAME
+         call h5_open_read(f, src, error)
+         if (allocated(error)) return
+         call h5_read_attr(f, '/', 'nstates', nmerged, error)
+         if (.not. allocated(error)) call h5_read(f, '/states/times', x, error)
+         if (.not. allocated(error)) call h5_read(f, '/mesh/node_ids', nlab, error)
+         if (.not. allocated(error)) call h5_read(f, '/mesh/part_ids', ids, error)
+         if (.not. allocated(error)) call h5_read_attr(f, '/', 'title', title, error)
+         if (allocated(error)) then
+            call h5_close(f, err2)
+            return
+         end if
+         call h5_close(f, error)
+         if (allocated(error)) return
+         if (size(x) < nmerged) then
+            call set_error(error, src//': /states/times has '//str(size(x))// &
+                           ' values, nstates is '//str(nmerged), EXIT_IO)
+            return
+         end if
+         call xdmf_write(dir//'/'//XMFNAME, H5NAME, title, size(nlab), size(ids), &
+                         x(1:nmerged), error)
+         if (allocated(error)) return
+         call file_remove(dir//'/'//H5NAME//'.tmp')
+         call states_remove_all(dir)
+         return
+      end if
+      src = dir//'/'//state_file(0)
+      call h5_open_read(f, src, error)
+      if (allocated(error)) return
+      call h5_read(f, '/mesh/coordinates', x0, error)
+      if (.not. allocated(error)) call h5_read(f, '/mesh/node_ids', nlab, error)
+      if (.not. allocated(error)) call h5_read(f, '/mesh/hex8', hex, error)
+      if (.not. allocated(error)) call h5_read(f, '/mesh/element_ids', elab, error)
+      if (.not. allocated(error)) call h5_read(f, '/mesh/part_ids', ids, error)
+      if (.not. allocated(error)) call h5_read_attr(f, '/', 'title', title, error)
+      if (allocated(error)) then
+         call h5_close(f, err2)
+         return
+      end if
+      call h5_close(f, error)
+      if (allocated(error)) return
+      nn = size(nlab)
+      ne = size(ids)
+      if (size(x0) /= 3*nn .or. size(hex) /= 8*ne .or. size(elab) /= ne) then
+         call set_error(error, src//': mesh datasets of inconsistent sizes', EXIT_IO)
+         return
+      end if
+      call open_arrays(self, dir, title, reshape(x0, [3, nn]), nint(nlab), &
+                       reshape(nint(hex), [8, ne]), nint(elab), nint(ids), .false., error)
+      if (allocated(error)) return
+      do k = 1, huge(k) - 1
+         src = dir//'/'//state_file(k)
+         inquire(file=src, exist=there)
+         if (.not. there) exit
+         g = state_group(k)
+         call h5_open_read(f, src, error)
+         if (allocated(error)) exit
+         call h5_read_attr(f, g, 'time', tk, error)
+         if (.not. allocated(error)) call get(g//'/coordinates', 3*nn, x)
+         if (.not. allocated(error)) call get(g//'/displacement', 3*nn, d)
+         if (.not. allocated(error)) call get(g//'/velocity', 3*nn, v)
+         if (.not. allocated(error)) call get(g//'/stress', 6*ne, stress)
+         if (.not. allocated(error)) call get(g//'/von_mises', ne, vm)
+         if (.not. allocated(error)) call get(g//'/pressure', ne, pres)
+         if (.not. allocated(error)) call get(g//'/eff_plastic_strain', ne, epsp)
+         if (.not. allocated(error)) call get(g//'/failed', ne, b)
+         if (allocated(error)) exit
+         call h5_close(f, error)
+         if (allocated(error)) exit
+         call write_arrays(self, tk, reshape(x, [3, nn]), reshape(d, [3, nn]), &
+                           reshape(v, [3, nn]), reshape(stress, [6, ne]), vm, pres, epsp, &
+                           nint(b), error, xdmf=.false.)
+         if (allocated(error)) exit
+      end do
+      if (allocated(error)) then
+         call h5_close(f, err2)
+         call h5_close(self%h5, err2)
+         return
+      end if
+      nmerged = self%nstates
+      self%live = .true.            ! plot_close: rename, XDMF, remove the state files
+      call plot_close(self, error)
+   contains
+      subroutine get(path, n, a)
+         character(*), intent(in) :: path
+         integer, intent(in) :: n
+         real(wp), allocatable, intent(out) :: a(:)
+         call h5_read(f, path, a, error)
+         if (allocated(error)) return
+         if (size(a) /= n) call set_error(error, src//': '//path//' has '//str(size(a))// &
+            ' values, expected '//str(n), EXIT_IO)
+      end subroutine get
+   end subroutine plot_merge_states
+
+   !> Continue the plot output from a restart point that had written nkeep states. The
+   !> states 1..nkeep come from the killed or stopped run's state files (d3plot.states/,
+   !> when they are all there) or else from its d3plot.h5 (a run that ended in order). A new
+   !> d3plot.h5.tmp gets the mesh and those states with the calls of plot_open and
+   !> plot_write_state, in their order (the same bytes as the uninterrupted run's file at
+   !> that point, so the continued run's file ends up identical to it; HDF5 does not
+   !> shrink a file, so cutting states in place left other bytes). Order for a kill at any
+   !> moment: the XDMF is cut to nkeep states first (they are in the files it names), state
+   !> files are written (from d3plot.h5) before the XDMF names them, and files the XDMF
+   !> no longer names are removed last. Nothing is found: the plot file is started anew.
    subroutine plot_resume(self, model, dir, nkeep, error)
       class(plot_file_t), intent(inout) :: self
       type(model_t), intent(in) :: model
@@ -148,37 +306,50 @@ contains
       integer, allocatable :: failed(:)
       real(wp) :: tk
       integer :: ndisk, k, nn, ne
-      logical :: there
-      character(:), allocatable :: g
+      logical :: there, from_states
+      character(:), allocatable :: g, src
+      from_states = states_have(dir, nkeep)
       inquire(file=dir//'/'//H5NAME, exist=there)
-      if (.not. there) then
+      if (.not. there .and. .not. from_states) then
          call self%open(model, dir, error)
          return
       end if
       nn = model%nn
       ne = model%ne
-      call h5_open_read(old, dir//'/'//H5NAME, error)
-      if (allocated(error)) return
+      self%title = ''
+      if (allocated(model%title)) self%title = model%title
+      src = dir//'/'//H5NAME
+      if (.not. from_states) then
+         call h5_open_read(old, src, error)
+         if (allocated(error)) return
+      end if
       work: block
-         call h5_read_attr(old, '/', 'nstates', ndisk, error)
-         if (allocated(error)) exit work
-         call h5_read(old, '/states/times', t, error)
-         if (allocated(error)) exit work
-         if (ndisk < nkeep .or. size(t) < nkeep) then
-            call set_error(error, 'cannot continue '//dir//'/'//H5NAME//': it has '// &
-               str(ndisk)//' plot states, the restart dump expects '//str(nkeep)// &
-               ' (another run''s file?)', EXIT_IO)
-            exit work
+         if (.not. from_states) then
+            call h5_read_attr(old, '/', 'nstates', ndisk, error)
+            if (allocated(error)) exit work
+            call h5_read(old, '/states/times', t, error)
+            if (allocated(error)) exit work
+            if (ndisk < nkeep .or. size(t) < nkeep) then
+               call set_error(error, 'cannot continue '//dir//'/'//H5NAME//': it has '// &
+                  str(ndisk)//' plot states, the restart dump expects '//str(nkeep)// &
+                  ' (another run''s file?)', EXIT_IO)
+               exit work
+            end if
+            call xdmf_write(dir//'/'//XMFNAME, H5NAME, self%title, nn, ne, t(1:nkeep), error)
+            if (allocated(error)) exit work
          end if
-         self%title = ''
-         if (allocated(model%title)) self%title = model%title
-         call xdmf_write(dir//'/'//XMFNAME, H5NAME, self%title, nn, ne, t(1:nkeep), error)
-         if (allocated(error)) exit work
          call self%open(model, dir, error, publish=.false.)
          if (allocated(error)) exit work
+         ! from d3plot.h5, the copies also go to state files; from state files, not
+         self%live = .not. from_states
          allocate(failed(ne))
          do k = 1, nkeep
             g = state_group(k)
+            if (from_states) then
+               src = dir//'/'//state_file(k)
+               call h5_open_read(old, src, error)
+               if (allocated(error)) exit work
+            end if
             call h5_read_attr(old, g, 'time', tk, error)
             if (.not. allocated(error)) call get2(g//'/coordinates', 3, nn, x)
             if (.not. allocated(error)) call get2(g//'/displacement', 3, nn, d)
@@ -189,16 +360,28 @@ contains
             if (.not. allocated(error)) call get1(g//'/eff_plastic_strain', ne, epsp)
             if (.not. allocated(error)) call get1(g//'/failed', ne, b)
             if (allocated(error)) exit work
+            if (from_states) then
+               call h5_close(old, error)
+               if (allocated(error)) exit work
+            end if
             failed = nint(b)
             call write_arrays(self, tk, x, d, v, stress, vm, pres, epsp, failed, error, &
                               xdmf=.false.)
             if (allocated(error)) exit work
          end do
-         call h5_close(old, error)
+         if (.not. from_states) then
+            call h5_close(old, error)
+            if (allocated(error)) exit work
+         end if
+         self%live = .true.
+         call xdmf_write(self%xdmf_path, H5NAME, self%title, nn, ne, self%times(1:nkeep), &
+                         error, states_dir=STATES_DIR)
          if (allocated(error)) exit work
-         call sys_rename(dir//'/'//H5NAME//'.tmp', dir//'/'//H5NAME, error)
+         call states_clear(dir, nkeep + 1)
+         call file_remove(dir//'/'//H5NAME)
       end block work
       if (allocated(error)) then
+         self%live = .false.
          call h5_close(old, err2)
          call h5_close(self%h5, err2)
       end if
@@ -209,7 +392,7 @@ contains
          real(wp), allocatable, intent(out) :: a(:)
          call h5_read(old, path, a, error)
          if (allocated(error)) return
-         if (size(a) /= n) call set_error(error, 'cannot continue '//dir//'/'//H5NAME// &
+         if (size(a) /= n) call set_error(error, 'cannot continue '//src// &
             ': '//path//' has '//str(size(a))//' values, expected '//str(n)//' (another '// &
             'run''s file?)', EXIT_IO)
       end subroutine get1
@@ -372,11 +555,17 @@ contains
          call move_alloc(tmp, self%times)
       end if
       self%times(k) = time
+      ! the state's own file (temp, fsync, rename: dx_plot_states), then the XDMF names it
+      if (self%live) then
+         call states_write_state(self%dir, k, time, x, d, v, stress, vm, pres, epsp, failed, &
+                                 error)
+         if (allocated(error)) return
+      end if
       if (present(xdmf)) then
          if (.not. xdmf) return
       end if
       call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, &
-                      self%times(1:k), error)
+                      self%times(1:k), error, states_dir=STATES_DIR)
    end subroutine write_arrays
 
    !> Flush and close (safe to call twice and after errors).
@@ -388,5 +577,18 @@ contains
       call h5_flush(self%h5, error)
       call h5_close(self%h5, err2)
       if (.not. allocated(error) .and. allocated(err2)) call move_alloc(err2, error)
+      if (.not. self%live) return
+      self%live = .false.
+      if (allocated(error)) return          ! the state files stay listed and readable
+      ! d3plot.h5 into place (whole, synced), the XDMF pointed at it, the state files gone:
+      ! a kill between any two steps leaves an XDMF whose files are all whole
+      call sys_fsync(self%dir//'/'//H5NAME//'.tmp', error)
+      if (allocated(error)) return
+      call sys_rename(self%dir//'/'//H5NAME//'.tmp', self%dir//'/'//H5NAME, error)
+      if (allocated(error)) return
+      call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, &
+                      self%times(1:self%nstates), error)
+      if (allocated(error)) return
+      call states_remove_all(self%dir)
    end subroutine plot_close
 end module dx_plot_hdf5

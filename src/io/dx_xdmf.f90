@@ -24,14 +24,17 @@ contains
    end function state_group
 
    !> Write the XDMF file path listing states 1..size(times) of h5name (relative name).
-   subroutine xdmf_write(path, h5name, title, nn, ne, times, error)
+   !> With states_dir (a running job, dx_plot_states): the mesh is states_dir/mesh.h5 and
+   !> state k is states_dir/NNNNNN.h5, each under the path it has in h5name.
+   subroutine xdmf_write(path, h5name, title, nn, ne, times, error, states_dir)
       character(*), intent(in) :: path, h5name, title
+      character(*), intent(in), optional :: states_dir
       integer, intent(in) :: nn, ne
       real(wp), intent(in) :: times(:)
       type(error_t), allocatable, intent(out) :: error
       integer :: u, ios, k
       character(256) :: msg
-      character(:), allocatable :: tmp, g, snn, sne
+      character(:), allocatable :: tmp, g, snn, sne, mfile, sfile
       character(32) :: buf
 
       tmp = path//'.tmp'
@@ -39,6 +42,9 @@ contains
       snn = trim(buf)
       write(buf, '(i0)') ne
       sne = trim(buf)
+      mfile = h5name
+      sfile = h5name
+      if (present(states_dir)) mfile = states_dir//'/mesh.h5'
       open(newunit=u, file=tmp, status='replace', action='write', iostat=ios, iomsg=msg)
       if (ios /= 0) then
          call set_error(error, 'cannot open '//tmp//' for writing: '//trim(msg), EXIT_IO)
@@ -52,14 +58,15 @@ contains
       call put('   <Information Name="title" Value="'//xml_escape(title)//'"/>')
       do k = 1, size(times)
          g = state_group(k)
+         if (present(states_dir)) sfile = states_dir//'/'//g(9:)//'.h5'
          write(buf, '(es24.16e3)') times(k)
          call put('   <Grid Name="state'//g(9:)//'" GridType="Uniform">')
          call put('    <Time Value="'//trim(adjustl(buf))//'"/>')
          call put('    <Topology TopologyType="Hexahedron" NumberOfElements="'//sne//'">')
-         call item(sne//' 8', 'Int', '4', '/mesh/hex8')
+         call item(sne//' 8', 'Int', '4', '/mesh/hex8', mfile)
          call put('    </Topology>')
          call put('    <Geometry GeometryType="XYZ">')
-         call item(snn//' 3', 'Float', '8', g//'/coordinates')
+         call item(snn//' 3', 'Float', '8', g//'/coordinates', sfile)
          call put('    </Geometry>')
          call attribute('displacement', 'Vector', 'Node', snn//' 3', 'Float', '8', &
                         g//'/displacement')
@@ -98,17 +105,21 @@ contains
          if (ios /= 0) call set_error(error, 'cannot write '//tmp//': '//trim(msg), EXIT_IO)
       end subroutine put
 
-      subroutine item(dims, ntype, prec, dset)
-         character(*), intent(in) :: dims, ntype, prec, dset
+      subroutine item(dims, ntype, prec, dset, file)
+         character(*), intent(in) :: dims, ntype, prec, dset, file
          call put('     <DataItem Dimensions="'//dims//'" NumberType="'//ntype// &
-                  '" Precision="'//prec//'" Format="HDF">'//h5name//':'//dset//'</DataItem>')
+                  '" Precision="'//prec//'" Format="HDF">'//file//':'//dset//'</DataItem>')
       end subroutine item
 
       subroutine attribute(name, atype, center, dims, ntype, prec, dset)
          character(*), intent(in) :: name, atype, center, dims, ntype, prec, dset
          call put('    <Attribute Name="'//name//'" AttributeType="'//atype// &
                   '" Center="'//center//'">')
-         call item(dims, ntype, prec, dset)
+         if (dset(1:6) == '/mesh/') then
+            call item(dims, ntype, prec, dset, mfile)
+         else
+            call item(dims, ntype, prec, dset, sfile)
+         end if
          call put('    </Attribute>')
       end subroutine attribute
    end subroutine xdmf_write

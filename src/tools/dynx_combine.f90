@@ -2,12 +2,15 @@
 !> written by every rank, dx_par_plot) into OUTDIR/d3plot.h5 + OUTDIR/d3plot.xdmf, the files
 !> a serial run writes (dx_plot_part: plot_combine). An MPI run does this itself at its end;
 !> the tool is for a run that was killed: it combines the states every rank completed.
+!> A killed serial run's state files (DIR/d3plot.states/, dx_plot_states) are merged too.
 !> Exit codes: 0 done, 2 usage error, 4 I/O error (a missing, unreadable or foreign part).
 program dynx_combine
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use dx_error, only: error_t, EXIT_INPUT, EXIT_IO, exit_process
    use dx_strings, only: str
    use dx_plot_part, only: plot_combine, plot_part_name
+   use dx_plot_hdf5, only: plot_merge_states
+   use dx_plot_states, only: state_file
    implicit none
    character(:), allocatable :: dir, arg
    type(error_t), allocatable :: error
@@ -39,6 +42,18 @@ program dynx_combine
       call exit_process(EXIT_INPUT)
    end if
    inquire(file=plot_part_name(dir, 0), exist=there)
+   if (.not. there) inquire(file=dir//'/'//state_file(0), exist=there)
+   if (there .and. .not. plot_part_exists()) then
+      ! a serial run killed before its end: merge its state files (dx_plot_states)
+      call plot_merge_states(dir, nst, error)
+      if (allocated(error)) then
+         write(error_unit, '(a)') 'dynx-combine: error: '//error%message
+         call exit_process(error%code)
+      end if
+      write(output_unit, '(a)') 'dynx-combine: '//str(nst)//' plot states of '//dir//'/'// &
+         'd3plot.states -> '//dir//'/d3plot.h5 + '//dir//'/d3plot.xdmf'
+      stop
+   end if
    if (.not. there) then
       write(error_unit, '(a)') 'dynx-combine: error: '//plot_part_name(dir, 0)// &
          ' does not exist: '//dir//' holds no per-rank plot files (not the output of an '// &
@@ -55,6 +70,10 @@ program dynx_combine
 
 contains
 
+   logical function plot_part_exists()
+      inquire(file=plot_part_name(dir, 0), exist=plot_part_exists)
+   end function plot_part_exists
+
    subroutine usage()
       write(output_unit, '(a)') &
          'usage: dynx-combine OUTDIR', &
@@ -63,6 +82,8 @@ contains
          'OUTDIR/d3plot.h5 + OUTDIR/d3plot.xdmf, identical to what a serial run writes.', &
          'The run does this itself when it ends (normally or on a numerical failure); use', &
          'the tool after a run was killed: it takes the states every rank completed.', &
+         'A serial run killed before its end leaves OUTDIR/d3plot.states/ (one file per', &
+         'state): the tool merges those into OUTDIR/d3plot.h5 + d3plot.xdmf and removes them.', &
          '', &
          'exit codes: 0 done, 2 usage error, 4 I/O error (missing, unreadable or foreign', &
          '            part file; the file is named)'
