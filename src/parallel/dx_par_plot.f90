@@ -17,7 +17,7 @@ module dx_par_plot
    use dx_model, only: model_t
    use dx_par, only: par_rank, par_size, par_barrier, par_allreduce, PAR_MAX
    use dx_io_sys, only: sys_mkdir_p, sys_epoch_seconds
-   use dx_plot_hdf5, only: element_average
+   use dx_plot_hdf5, only: element_average, plot_merge_states
    use dx_plot_part, only: plot_part_t, plot_combine
    implicit none
    private
@@ -136,10 +136,22 @@ contains
       integer, allocatable :: nodes(:), elems(:)
       real(wp), allocatable :: buf(:), t(:), x(:, :), v(:, :), stress(:, :), epsp(:)
       real(wp) :: tk
-      integer :: k, ndisk
+      integer :: k, ndisk, nmerged
+      logical :: there, merge_them
       character(:), allocatable :: gname, h5path
       if (nkeep <= 0) return
       h5path = dir//'/d3plot.h5'
+      ! a serial run killed with -9 left its states in d3plot.states/ (no d3plot.h5 yet):
+      ! rank 0 merges them first, as bin/dynx-combine would (an error is reported below,
+      ! when d3plot.h5 cannot be read)
+      if (par_rank() == 0) then
+         inquire(file=h5path, exist=there)
+         merge_them = .false.
+         if (.not. there) inquire(file=dir//'/d3plot.states/mesh.h5', exist=merge_them)
+         if (.not. there .and. merge_them) call plot_merge_states(dir, nmerged, err2)
+         if (allocated(err2)) deallocate(err2)
+      end if
+      call par_barrier()
       nodes = m_nodes
       elems = m_elems
       call create_part(error)
