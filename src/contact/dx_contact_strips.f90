@@ -11,6 +11,7 @@
 !> No MPI here: the strips depend on x only, so every rank computes all of them alike.
 module dx_contact_strips
    use dx_kinds, only: wp
+   use dx_sort, only: sort_index
    use dx_contact_types, only: contact_pass_t
    implicit none
    private
@@ -52,46 +53,10 @@ contains
       p%strip_axis = a
       c = x(a, p%node)
       idx = [(i, i = 1, n)]
-      call sort_by_coord(idx, c)
+      call sort_index(idx, c)
       do i = 1, n
          strip(idx(i)) = int((int(i - 1, 8)*int(nstrip, 8))/int(n, 8))
       end do
    end subroutine strip_of
 
-   !> Heap sort of idx by (c(idx), idx): a total order, the same on every rank.
-   subroutine sort_by_coord(idx, c)
-      integer, intent(inout) :: idx(:)
-      real(wp), intent(in) :: c(:)
-      integer :: n, i, t
-      n = size(idx)
-      do i = n/2, 1, -1
-         call sift(i, n)
-      end do
-      do i = n, 2, -1
-         t = idx(1); idx(1) = idx(i); idx(i) = t
-         call sift(1, i - 1)
-      end do
-   contains
-      logical function before(a, b)
-         integer, intent(in) :: a, b
-         before = c(a) < c(b) .or. (c(a) == c(b) .and. a < b)
-      end function before
-      subroutine sift(start, m)
-         integer, intent(in) :: start, m
-         integer :: r, ch, t2
-         r = start
-         do while (2*r <= m)
-            ch = 2*r
-            if (ch < m) then
-               if (before(idx(ch), idx(ch + 1))) ch = ch + 1
-            end if
-            if (before(idx(r), idx(ch))) then
-               t2 = idx(r); idx(r) = idx(ch); idx(ch) = t2
-               r = ch
-            else
-               return
-            end if
-         end do
-      end subroutine sift
-   end subroutine sort_by_coord
 end module dx_contact_strips

@@ -17,6 +17,7 @@ module dx_par
    use, intrinsic :: iso_fortran_env, only: error_unit, int64
    use mpi_f08
    use dx_kinds, only: wp
+   use dx_sort, only: sort_index
    use dx_error, only: error_t, set_error, exit_process, EXIT_NUMERIC
    use dx_strings, only: str
    implicit none
@@ -600,7 +601,7 @@ contains
          call check(ierr, 'MPI_Allgatherv (ordered gather values)')
       end if
       idx = [(i, i = 1, size(kk))]
-      call sort_idx_by_key(idx, kk)
+      call sort_index(idx, kk)
       all_keys = kk(idx)
       all_vals = vv(:, idx)
    end subroutine par_gather_ordered
@@ -630,7 +631,7 @@ contains
          call check(ierr, 'MPI_Allgatherv (gather plan keys)')
       end if
       plan%perm = [(i, i = 1, size(kk))]
-      call sort_idx_by_key(plan%perm, kk)
+      call sort_index(plan%perm, kk)
       plan%keys = kk(plan%perm)
    end subroutine par_gather_setup
 
@@ -653,35 +654,6 @@ contains
       all_vals(:, 1:size(plan%keys)) = vv(:, plan%perm)
    end subroutine par_gather_values
 
-   !> Heap sort of idx by key(idx) (many entries: the insertion sort above is for short lists).
-   subroutine sort_idx_by_key(idx, key)
-      integer, intent(inout) :: idx(:)
-      integer, intent(in) :: key(:)
-      integer :: n, i, t
-      n = size(idx)
-      do i = n/2, 1, -1
-         call sift(i, n)
-      end do
-      do i = n, 2, -1
-         t = idx(1); idx(1) = idx(i); idx(i) = t
-         call sift(1, i - 1)
-      end do
-   contains
-      subroutine sift(start, m)
-         integer, intent(in) :: start, m
-         integer :: r, c, tt
-         r = start
-         do while (2*r <= m)
-            c = 2*r
-            if (c < m) then
-               if (key(idx(c + 1)) > key(idx(c))) c = c + 1
-            end if
-            if (key(idx(r)) >= key(idx(c))) return
-            tt = idx(r); idx(r) = idx(c); idx(c) = tt
-            r = c
-         end do
-      end subroutine sift
-   end subroutine sort_idx_by_key
 
    !> Wall-clock seconds (MPI_Wtime under MPI, else the system clock).
    real(wp) function par_wtime()
