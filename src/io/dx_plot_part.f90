@@ -6,12 +6,17 @@
 !> the end of a run) merges the files of DIR into d3plot.h5 + d3plot.xdmf with the layout,
 !> the values and the XDMF text of a serial run: the element averages and the stress
 !> invariants come from the serial writer's own routines (dx_plot_hdf5), so the bits agree.
-!> Crash safety as in the serial plot file (dx_plot_hdf5): a part file is created under a
-!> temporary name and renamed once its mesh is flushed; a state's datasets are written
-!> first, then its time appended and nstates set, then a global flush. plot_combine takes
-!> the states every part has completed (the smallest nstates), so the files of a run killed
-!> mid-way combine into the complete states only. plot_part_truncate is the one routine
-!> that cuts a run's part files back to a state count (restarts: states after the dump).
+!> Crash safety as in the serial state files (dx_plot_states, issue 7): no file of a part is
+!> ever rewritten in place. The part file DIR/d3plot_rank_NNNNN.h5 holds the header and the
+!> mesh only; state k of the rank is its own small file DIR/d3plot_rank_NNNNN.states/
+!> KKKKKK.h5 (group /states/KKKKKK, the run's stamp). Each is written under NAME.tmp, closed,
+!> fsynced and renamed, and never touched again, so a kill -9 at any moment leaves every
+!> renamed file whole. A rank's states are the files 1, 2, ... up to the first missing one;
+!> plot_combine takes the states every part has completed (the smallest count), so the files
+!> of a run killed mid-way combine into the complete states only. plot_part_truncate is the
+!> one routine that cuts a run's parts back to a state count (restarts: states after the
+!> dump), removing state files from the last down. Atomic publication by temp + fsync +
+!> rename: Pillai et al., "All file systems are not created equal", OSDI 2014.
 !> ParaDyn's per-processor plot files joined by a post-processor: Hoover et al., LLNL
 !> Engineering Thrust Area Report FY97 (article 4 of shared/seed). No MPI here: the engine
 !> (dx_par_plot) passes the rank's data in.
@@ -19,23 +24,27 @@ module dx_plot_part
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_IO
    use dx_strings, only: str
-   use dx_h5, only: h5_file_t, h5_create, h5_open_read, h5_open_rw, h5_close, h5_flush, &
+   use dx_h5, only: h5_file_t, h5_create, h5_open_read, h5_close, h5_flush, &
                     h5_create_group, h5_write, h5_write_attr, h5_read_attr, h5_read, &
-                    h5_create_extendible, h5_append, h5_exists, h5_delete, h5_set_extent
-   use dx_io_sys, only: sys_rename
+                    h5_create_extendible, h5_append
+   use dx_io_sys, only: sys_rename, sys_fsync, sys_mkdir_p
+   use dx_plot_states, only: file_remove
    use dx_xdmf, only: xdmf_write, state_group
    use dx_plot_hdf5, only: stress_invariants
    implicit none
    private
-   public :: plot_part_t, plot_part_name, plot_combine, plot_part_truncate, PART_FORMAT
+   public :: plot_part_t, plot_part_name, plot_part_state_name, plot_part_count, plot_combine, &
+             plot_part_truncate, PART_FORMAT
 
    character(*), parameter :: PART_FORMAT = 'dynx plot part'
-   integer, parameter :: PART_VERSION = 1
+   integer, parameter :: PART_VERSION = 2
    character(*), parameter :: H5NAME = 'd3plot.h5', XMFNAME = 'd3plot.xdmf'
 
    !> One rank's open part file.
    type :: plot_part_t
-      type(h5_file_t) :: h5
+      logical :: active = .false.     !< header written (open) or found (resume)
+      character(:), allocatable :: dir
+      integer :: rank = 0, stamp = 0
       integer :: nstates = 0
       integer :: nown = 0, nel = 0
    contains
@@ -57,10 +66,69 @@ contains
       p = dir//'/d3plot_rank_'//r//'.h5'
    end function plot_part_name
 
+   !> State k of rank's part: DIR/d3plot_rank_NNNNN.states/KKKKKK.h5
+   function plot_part_state_name(dir, rank, k) result(p)
+      character(*), intent(in) :: dir
+      integer, intent(in) :: rank, k
+      character(:), allocatable :: p
+      character(6) :: c
+      write(c, '(i6.6)') k
+      p = states_dir(dir, rank)//'/'//c//'.h5'
+   end function plot_part_state_name
+
+   function states_dir(dir, rank) result(p)
+      character(*), intent(in) :: dir
+      integer, intent(in) :: rank
+      character(:), allocatable :: p
+      p = plot_part_name(dir, rank)
+      p = p(1:len(p) - 3)//'.states'
+   end function states_dir
+
+   !> The states rank's part has completed: its state files 1, 2, ... up to the first
+   !> missing one (they are written in order and published by rename).
+   integer function plot_part_count(dir, rank) result(m)
+      character(*), intent(in) :: dir
+      integer, intent(in) :: rank
+      logical :: there
+      m = 0
+      do
+         inquire(file=plot_part_state_name(dir, rank, m + 1), exist=there)
+         if (.not. there) exit
+         m = m + 1
+      end do
+   end function plot_part_count
+
+   !> Remove rank's state files k >= kfrom and a left-over temporary file, from the last
+   !> down (a kill here leaves them contiguous).
+   subroutine clear_states(dir, rank, kfrom)
+      character(*), intent(in) :: dir
+      integer, intent(in) :: rank, kfrom
+      integer :: k, m
+      m = max(plot_part_count(dir, rank), kfrom - 1)
+      call file_remove(plot_part_state_name(dir, rank, m + 1)//'.tmp')
+      do k = m, kfrom, -1
+         call file_remove(plot_part_state_name(dir, rank, k))
+      end do
+   end subroutine clear_states
+
+   !> Close f (written as p.tmp), sync it to disk and rename it to p.
+   subroutine publish(f, p, error)
+      type(h5_file_t), intent(inout) :: f
+      character(*), intent(in) :: p
+      type(error_t), allocatable, intent(out) :: error
+      call h5_close(f, error)
+      if (allocated(error)) return
+      call sys_fsync(p//'.tmp', error)
+      if (allocated(error)) return
+      call sys_rename(p//'.tmp', p, error)
+   end subroutine publish
+
    !> Create rank's part file with its mesh: owned nodes (global dense index, initial
    !> coordinates, label) and held elements (global dense index, connectivity as 0-based
    !> global node indices, label, part label). stamp identifies the run: all parts of one
-   !> run carry the same stamp, so files of two runs are never mixed.
+   !> run carry the same stamp, so files of two runs are never mixed. State files left in
+   !> dir by an earlier run are removed first; the file is written as NAME.tmp, closed,
+   !> fsynced and renamed, and never written again.
    subroutine part_open(self, dir, rank, nprocs, stamp, title, nn, ne, nodes, x0, node_ids, &
                         elems, hex, elem_ids, part_ids, error)
       class(plot_part_t), intent(inout) :: self
@@ -71,167 +139,167 @@ contains
       real(wp), intent(in) :: x0(:, :)
       type(error_t), allocatable, intent(out) :: error
       type(error_t), allocatable :: err2
+      type(h5_file_t) :: f
       character(:), allocatable :: path
       path = plot_part_name(dir, rank)
+      self%active = .false.
+      self%dir = dir
+      self%rank = rank
+      self%stamp = stamp
       self%nstates = 0
       self%nown = size(nodes)
       self%nel = size(elems)
-      call h5_create(self%h5, path//'.tmp', error)
+      call sys_mkdir_p(states_dir(dir, rank), error)
+      if (allocated(error)) return
+      call clear_states(dir, rank, 1)
+      call h5_create(f, path//'.tmp', error)
       if (allocated(error)) return
       work: block
-         call h5_write_attr(self%h5, '/', 'format', PART_FORMAT, error)
+         call h5_write_attr(f, '/', 'format', PART_FORMAT, error)
          if (allocated(error)) exit work
-         call h5_write_attr(self%h5, '/', 'version', PART_VERSION, error)
+         call h5_write_attr(f, '/', 'version', PART_VERSION, error)
          if (allocated(error)) exit work
-         call h5_write_attr(self%h5, '/', 'rank', rank, error)
+         call h5_write_attr(f, '/', 'rank', rank, error)
          if (allocated(error)) exit work
-         call h5_write_attr(self%h5, '/', 'nprocs', nprocs, error)
+         call h5_write_attr(f, '/', 'nprocs', nprocs, error)
          if (allocated(error)) exit work
-         call h5_write_attr(self%h5, '/', 'stamp', stamp, error)
+         call h5_write_attr(f, '/', 'stamp', stamp, error)
          if (allocated(error)) exit work
-         call h5_write_attr(self%h5, '/', 'nn_global', nn, error)
+         call h5_write_attr(f, '/', 'nn_global', nn, error)
          if (allocated(error)) exit work
-         call h5_write_attr(self%h5, '/', 'ne_global', ne, error)
+         call h5_write_attr(f, '/', 'ne_global', ne, error)
          if (allocated(error)) exit work
-         call h5_write_attr(self%h5, '/', 'title', title, error)
+         call h5_write_attr(f, '/', 'title', title, error)
          if (allocated(error)) exit work
-         call h5_write_attr(self%h5, '/', 'nstates', 0, error)
+         call h5_create_group(f, '/mesh', error)
          if (allocated(error)) exit work
-         call h5_create_group(self%h5, '/mesh', error)
+         call h5_write(f, '/mesh/nodes', nodes, error)
          if (allocated(error)) exit work
-         call h5_write(self%h5, '/mesh/nodes', nodes, error)
+         call h5_write(f, '/mesh/coordinates', x0, error)
          if (allocated(error)) exit work
-         call h5_write(self%h5, '/mesh/coordinates', x0, error)
+         call h5_write(f, '/mesh/node_ids', node_ids, error)
          if (allocated(error)) exit work
-         call h5_write(self%h5, '/mesh/node_ids', node_ids, error)
+         call h5_write(f, '/mesh/elements', elems, error)
          if (allocated(error)) exit work
-         call h5_write(self%h5, '/mesh/elements', elems, error)
+         call h5_write(f, '/mesh/hex8', hex, error)
          if (allocated(error)) exit work
-         call h5_write(self%h5, '/mesh/hex8', hex, error)
+         call h5_write(f, '/mesh/element_ids', elem_ids, error)
          if (allocated(error)) exit work
-         call h5_write(self%h5, '/mesh/element_ids', elem_ids, error)
-         if (allocated(error)) exit work
-         call h5_write(self%h5, '/mesh/part_ids', part_ids, error)
-         if (allocated(error)) exit work
-         call h5_create_group(self%h5, '/states', error)
-         if (allocated(error)) exit work
-         call h5_create_extendible(self%h5, '/states/times', error)
-         if (allocated(error)) exit work
-         call h5_flush(self%h5, error)
-         if (allocated(error)) exit work
-         call sys_rename(path//'.tmp', path, error)
+         call h5_write(f, '/mesh/part_ids', part_ids, error)
       end block work
-      if (allocated(error)) call h5_close(self%h5, err2)
+      if (allocated(error)) then
+         call h5_close(f, err2)
+         return
+      end if
+      call publish(f, path, error)
+      if (allocated(error)) return
+      self%active = .true.
    end subroutine part_open
 
-   !> Continue rank's existing part file in dir after its first nkeep states (a restart):
-   !> later states are removed (plot_part_truncate), then the file is reopened for writing.
+   !> Continue rank's existing part in dir after its first nkeep states (a restart): later
+   !> states are removed (plot_part_truncate); the run's stamp is read from the part file.
    subroutine part_resume(self, dir, rank, nkeep, error)
       class(plot_part_t), intent(inout) :: self
       character(*), intent(in) :: dir
       integer, intent(in) :: rank, nkeep
       type(error_t), allocatable, intent(out) :: error
+      type(h5_file_t) :: f
+      type(error_t), allocatable :: err2
       call plot_part_truncate(dir, rank, nkeep, error)
       if (allocated(error)) return
-      call h5_open_rw(self%h5, plot_part_name(dir, rank), error)
+      call h5_open_read(f, plot_part_name(dir, rank), error)
       if (allocated(error)) return
+      call h5_read_attr(f, '/', 'stamp', self%stamp, error)
+      call h5_close(f, err2)
+      if (allocated(error)) return
+      self%dir = dir
+      self%rank = rank
       self%nstates = nkeep
+      self%active = .true.
    end subroutine part_resume
 
-   !> Append one state: x, v (3, nown) of the owned nodes; stress (6, nel) averaged over the
-   !> integration points, eff_plastic_strain and failed (nel) of the held elements. The
-   !> datasets first, then the time and nstates, then a global flush (crash safety).
+   !> Write one state to its own file: x, v (3, nown) of the owned nodes; stress (6, nel)
+   !> averaged over the integration points, eff_plastic_strain and failed (nel) of the held
+   !> elements; the time and the run's stamp. Temp, close, fsync, rename (crash safety).
    subroutine part_write_state(self, time, x, v, stress, epsp, failed, error)
       class(plot_part_t), intent(inout) :: self
       real(wp), intent(in) :: time, x(:, :), v(:, :), stress(:, :), epsp(:)
       integer, intent(in) :: failed(:)
       type(error_t), allocatable, intent(out) :: error
-      character(:), allocatable :: g
-      integer :: k, n
+      type(h5_file_t) :: f
+      type(error_t), allocatable :: err2
+      character(:), allocatable :: g, path
+      integer :: k
       k = self%nstates + 1
       g = state_group(k)
-      call h5_create_group(self%h5, g, error)
+      path = plot_part_state_name(self%dir, self%rank, k)
+      call h5_create(f, path//'.tmp', error)
       if (allocated(error)) return
-      call h5_write_attr(self%h5, g, 'time', time, error)
-      if (allocated(error)) return
-      call h5_write(self%h5, g//'/coordinates', x, error)
-      if (allocated(error)) return
-      call h5_write(self%h5, g//'/velocity', v, error)
-      if (allocated(error)) return
-      call h5_write(self%h5, g//'/stress', stress, error)
-      if (allocated(error)) return
-      call h5_write(self%h5, g//'/eff_plastic_strain', epsp, error)
-      if (allocated(error)) return
-      call h5_write(self%h5, g//'/failed', failed, error)
-      if (allocated(error)) return
-      call h5_append(self%h5, '/states/times', time, n, error)
-      if (allocated(error)) return
-      call h5_write_attr(self%h5, '/', 'nstates', k, error)
-      if (allocated(error)) return
-      call h5_flush(self%h5, error)
+      work: block
+         call h5_write_attr(f, '/', 'stamp', self%stamp, error)
+         if (allocated(error)) exit work
+         call h5_create_group(f, '/states', error)
+         if (allocated(error)) exit work
+         call h5_create_group(f, g, error)
+         if (allocated(error)) exit work
+         call h5_write_attr(f, g, 'time', time, error)
+         if (allocated(error)) exit work
+         call h5_write(f, g//'/coordinates', x, error)
+         if (allocated(error)) exit work
+         call h5_write(f, g//'/velocity', v, error)
+         if (allocated(error)) exit work
+         call h5_write(f, g//'/stress', stress, error)
+         if (allocated(error)) exit work
+         call h5_write(f, g//'/eff_plastic_strain', epsp, error)
+         if (allocated(error)) exit work
+         call h5_write(f, g//'/failed', failed, error)
+      end block work
+      if (allocated(error)) then
+         call h5_close(f, err2)
+         return
+      end if
+      call publish(f, path, error)
       if (allocated(error)) return
       self%nstates = k
    end subroutine part_write_state
 
-   !> Flush and close (safe to call twice and after errors).
+   !> End of the part (every file is already on disk; safe to call twice).
    subroutine part_close(self, error)
       class(plot_part_t), intent(inout) :: self
       type(error_t), allocatable, intent(out) :: error
-      type(error_t), allocatable :: err2
-      if (.not. self%h5%is_open()) return
-      call h5_flush(self%h5, error)
-      call h5_close(self%h5, err2)
-      if (.not. allocated(error) .and. allocated(err2)) call move_alloc(err2, error)
+      self%active = .false.
    end subroutine part_close
 
-   !> Cut rank's part file in dir back to its first nkeep states (states after them,
-   !> complete or not, are removed; /states/times and nstates follow). The routine a restart
-   !> of an MPI run calls for "plot states after the dump point are removed". A part with
-   !> fewer than nkeep complete states is an I/O error (exit 4) naming the file.
+   !> Cut rank's part in dir back to its first nkeep states (state files after them and a
+   !> left-over temporary file are removed, from the last down). The routine a restart of
+   !> an MPI run calls for "plot states after the dump point are removed". A missing part
+   !> file or fewer than nkeep complete states is an I/O error (exit 4) naming the file.
    subroutine plot_part_truncate(dir, rank, nkeep, error)
       character(*), intent(in) :: dir
       integer, intent(in) :: rank, nkeep
       type(error_t), allocatable, intent(out) :: error
-      type(h5_file_t) :: f
-      type(error_t), allocatable :: err2
-      real(wp), allocatable :: t(:)
       character(:), allocatable :: path
-      integer :: ndisk, k
+      integer :: ndisk
       logical :: there
       path = plot_part_name(dir, rank)
-      call h5_open_rw(f, path, error)
-      if (allocated(error)) return
-      work: block
-         call h5_read_attr(f, '/', 'nstates', ndisk, error)
-         if (allocated(error)) exit work
-         call h5_read(f, '/states/times', t, error)
-         if (allocated(error)) exit work
-         if (ndisk < nkeep .or. size(t) < nkeep) then
-            call set_error(error, 'cannot cut '//path//' back to '//str(nkeep)// &
-                           ' plot states: it has '//str(ndisk), EXIT_IO)
-            exit work
-         end if
-         do k = nkeep + 1, max(ndisk, size(t)) + 1
-            call h5_exists(f, state_group(k), there, error)
-            if (allocated(error)) exit work
-            if (there) call h5_delete(f, state_group(k), error)
-            if (allocated(error)) exit work
-         end do
-         call h5_set_extent(f, '/states/times', nkeep, error)
-         if (allocated(error)) exit work
-         call h5_write_attr(f, '/', 'nstates', nkeep, error)
-         if (allocated(error)) exit work
-         call h5_flush(f, error)
-      end block work
-      if (allocated(error)) then
-         call h5_close(f, err2)
-      else
-         call h5_close(f, error)
+      inquire(file=path, exist=there)
+      if (.not. there) then
+         call set_error(error, 'cannot cut '//path//' back to '//str(nkeep)// &
+                        ' plot states: the file is missing', EXIT_IO)
+         return
       end if
+      ndisk = plot_part_count(dir, rank)
+      if (ndisk < nkeep) then
+         call set_error(error, 'cannot cut '//path//' back to '//str(nkeep)// &
+                        ' plot states: it has '//str(ndisk)//' (in '// &
+                        states_dir(dir, rank)//')', EXIT_IO)
+         return
+      end if
+      call clear_states(dir, rank, nkeep + 1)
    end subroutine plot_part_truncate
 
-   !> Merge dir/d3plot_rank_*.h5 into dir/d3plot.h5 + dir/d3plot.xdmf, as a serial run
-   !> writes them: the states every part has completed (nstates_out of them). The result
+   !> Merge dir/d3plot_rank_*.h5 and their state files into dir/d3plot.h5 + dir/d3plot.xdmf,
+   !> as a serial run writes them: the states every part has completed (nstates_out). The result
    !> is written as d3plot.h5.tmp and renamed, then the XDMF (tmp + rename). Parts of
    !> another run (stamp), another NP or model size, a node or element missing or held
    !> twice, or differing state times: I/O error (exit 4) naming the file.
@@ -243,7 +311,8 @@ contains
       type(h5_file_t) :: out
       type(error_t), allocatable :: err2
       character(:), allocatable :: title, t0
-      real(wp), allocatable :: times(:), t(:), buf(:), x0(:, :), x(:, :), v(:, :), &
+      real(wp) :: tk
+      real(wp), allocatable :: times(:), buf(:), x0(:, :), x(:, :), v(:, :), &
                                stress(:, :), vm(:), pres(:), epsp(:)
       integer, allocatable :: cnt_n(:), cnt_e(:), node_ids(:), &
                               hex(:, :), elem_ids(:), part_ids(:), failed(:)
@@ -287,9 +356,7 @@ contains
                               str(r), EXIT_IO)
                exit work
             end if
-            call h5_read_attr(pf(r), '/', 'nstates', ival, error)
-            if (allocated(error)) exit work
-            nst = min(nst, ival)
+            nst = min(nst, plot_part_count(dir, r))
             ! mesh: owned nodes and held elements, each exactly once over the parts
             call h5_read(pf(r), '/mesh/nodes', buf, error)
             if (allocated(error)) exit work
@@ -326,22 +393,36 @@ contains
                str(count(cnt_e /= 1))//' elements wrong)', EXIT_IO)
             exit work
          end if
-         ! times: every part's first nst times agree
          do r = 0, np - 1
-            call h5_read(pf(r), '/states/times', t, error)
+            call h5_close(pf(r), error)
             if (allocated(error)) exit work
-            if (size(t) < nst) then
-               call set_error(error, plot_part_name(dir, r)//': /states/times has '// &
-                  str(size(t))//' entries, nstates '//str(nst), EXIT_IO)
-               exit work
-            end if
-            if (r == 0) then
-               times = t(1:nst)
-            else if (any(t(1:nst) /= times)) then
-               call set_error(error, plot_part_name(dir, r)//': state times differ from '// &
-                              plot_part_name(dir, 0), EXIT_IO)
-               exit work
-            end if
+         end do
+         ! times: every part's first nst state files are of this run and agree in time
+         allocate(times(nst))
+         do k = 1, nst
+            do r = 0, np - 1
+               path = plot_part_state_name(dir, r, k)
+               call h5_open_read(pf(r), path, error)
+               if (allocated(error)) exit work
+               call h5_read_attr(pf(r), '/', 'stamp', ival, error)
+               if (allocated(error)) exit work
+               if (ival /= stamp) then
+                  call set_error(error, path//': state of another run (run stamp differs '// &
+                     'from '//plot_part_name(dir, 0)//'); remove stale part files', EXIT_IO)
+                  exit work
+               end if
+               call h5_read_attr(pf(r), state_group(k), 'time', tk, error)
+               if (allocated(error)) exit work
+               call h5_close(pf(r), error)
+               if (allocated(error)) exit work
+               if (r == 0) then
+                  times(k) = tk
+               else if (tk /= times(k)) then
+                  call set_error(error, path//': state time differs from '// &
+                                 plot_part_state_name(dir, 0, k), EXIT_IO)
+                  exit work
+               end if
+            end do
          end do
          ! ---- the combined file, in the serial writer's layout (dx_plot_hdf5)
          call h5_create(out, dir//'/'//H5NAME//'.tmp', error)
@@ -375,6 +456,8 @@ contains
          do k = 1, nst
             g = state_group(k)
             do r = 0, np - 1
+               call h5_open_read(pf(r), plot_part_state_name(dir, r, k), error)
+               if (allocated(error)) exit work
                call h5_read(pf(r), g//'/coordinates', buf, error)
                if (allocated(error)) exit work
                x(:, idx(r)%n) = reshape(buf, [3, size(idx(r)%n)])
@@ -390,6 +473,8 @@ contains
                call h5_read(pf(r), g//'/failed', buf, error)
                if (allocated(error)) exit work
                failed(idx(r)%e) = nint(buf)
+               call h5_close(pf(r), error)
+               if (allocated(error)) exit work
             end do
             call stress_invariants(stress, vm, pres)
             call h5_create_group(out, g, error)

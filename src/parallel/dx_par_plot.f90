@@ -212,7 +212,7 @@ contains
       real(wp), allocatable :: stress(:, :), epsp(:)
       integer, allocatable :: failed(:)
       integer :: i, b
-      if (.not. part%h5%is_open()) then
+      if (.not. part%active) then
          call create_part(error)
          if (allocated(error)) return
       end if

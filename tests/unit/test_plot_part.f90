@@ -4,19 +4,22 @@
 !> with x = x0 + t*(1, 2, 3) and element stresses of known invariants. Checks the combined
 !> d3plot.h5 (global order, displacement x - x0 exactly, von Mises and pressure of uniaxial
 !> and pure-shear stress), plot_part_truncate (states cut back, combine takes the smallest
-!> count, too few states is an I/O error) and the combine errors (foreign, missing part).
+!> count, too few states is an I/O error), a torn state .tmp (ignored, removed by truncate)
+!> and the combine errors (foreign part, foreign state file, missing part).
 program test_plot_part
    use dx_kinds, only: wp
    use dx_error, only: error_t, EXIT_IO
    use dx_h5, only: h5_file_t, h5_open_read, h5_close, h5_read, h5_read_attr
    use dx_io_sys, only: sys_mkdir_p
-   use dx_plot_part, only: plot_part_t, plot_combine, plot_part_truncate, plot_part_name
+   use dx_plot_part, only: plot_part_t, plot_combine, plot_part_truncate, plot_part_name, &
+                           plot_part_state_name, plot_part_count
    use dx_assert, only: check, check_close, assert_summary
    implicit none
    character(*), parameter :: TMP = 'build/test_plot_part.tmp'
    type(error_t), allocatable :: error
    real(wp) :: x0(3, 12)
    integer :: i, n
+   logical :: there
 
    call sys_mkdir_p(TMP, error)
    call check(.not. allocated(error), 'create scratch dir '//TMP)
@@ -64,8 +67,29 @@ program test_plot_part
       call check(.not. allocated(error) .and. n == 2, 'combine: 3 and 2 states give 2')
    end block
 
+   write(*, '(a)') 'torn temporary state file'
+   ! a kill -9 inside a state's writes leaves KKKKKK.h5.tmp, never KKKKKK.h5: ignored
+   call execute_command_line('printf torn > '//plot_part_state_name(TMP, 1, 3)//'.tmp')
+   call check(plot_part_count(TMP, 1) == 2, 'rank 1 still counts 2 states')
+   call plot_combine(TMP, n, error)
+   call check(.not. allocated(error) .and. n == 2, 'combine ignores the torn .tmp (2 states)')
+   call plot_part_truncate(TMP, 1, 1, error)
+   inquire(file=plot_part_state_name(TMP, 1, 3)//'.tmp', exist=there)
+   call check(.not. allocated(error) .and. plot_part_count(TMP, 1) == 1 .and. .not. there, &
+              'truncate to 1 removes state 2 and the .tmp')
+
    write(*, '(a)') 'combine errors'
    call write_parts(TMP//'/other', 2, 778)
+   ! a state file of another run (stamp 778) in rank 1's part
+   call execute_command_line('cp '//plot_part_state_name(TMP//'/other', 1, 1)//' '// &
+                             plot_part_state_name(TMP, 1, 1))
+   call plot_combine(TMP, n, error)
+   call check(allocated(error), 'a state file of another run is refused')
+   if (allocated(error)) then
+      call check(error%code == EXIT_IO .and. index(error%message, 'state of another run') > 0 &
+                 .and. index(error%message, '000001.h5') > 0, 'exit 4 naming the state file')
+      deallocate(error)
+   end if
    call copy_part(TMP//'/other', TMP, 1)
    call plot_combine(TMP, n, error)
    call check(allocated(error), 'a part of another run is refused')
