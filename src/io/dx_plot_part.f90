@@ -27,8 +27,8 @@ module dx_plot_part
    use dx_h5, only: h5_file_t, h5_create, h5_open_read, h5_close, h5_flush, &
                     h5_create_group, h5_write, h5_write_attr, h5_read_attr, h5_read, &
                     h5_create_extendible, h5_append
-   use dx_io_sys, only: sys_rename, sys_fsync, sys_mkdir_p
-   use dx_plot_states, only: file_remove
+   use dx_io_sys, only: sys_rename, sys_mkdir_p
+   use dx_plot_states, only: file_remove, publish
    use dx_xdmf, only: xdmf_write, state_group
    use dx_plot_hdf5, only: stress_invariants
    implicit none
@@ -110,18 +110,6 @@ contains
          call file_remove(plot_part_state_name(dir, rank, k))
       end do
    end subroutine clear_states
-
-   !> Close f (written as p.tmp), sync it to disk and rename it to p.
-   subroutine publish(f, p, error)
-      type(h5_file_t), intent(inout) :: f
-      character(*), intent(in) :: p
-      type(error_t), allocatable, intent(out) :: error
-      call h5_close(f, error)
-      if (allocated(error)) return
-      call sys_fsync(p//'.tmp', error)
-      if (allocated(error)) return
-      call sys_rename(p//'.tmp', p, error)
-   end subroutine publish
 
    !> Create rank's part file with its mesh: owned nodes (global dense index, initial
    !> coordinates, label) and held elements (global dense index, connectivity as 0-based

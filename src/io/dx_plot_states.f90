@@ -22,7 +22,7 @@ module dx_plot_states
    implicit none
    private
    public :: STATES_DIR, state_file, states_write_mesh, states_write_state, states_have, &
-             states_clear, states_remove_all, file_remove
+             states_clear, states_remove_all, file_remove, publish
 
    character(*), parameter :: STATES_DIR = 'd3plot.states'
 
