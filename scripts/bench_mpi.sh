@@ -11,8 +11,11 @@ set -e
 cd "$(dirname "$0")/.."
 B=build/bench/mpi
 REPS=${REPS:-2}
+BOX=${BOX:-50 50 40}      # elements along x, y, z (BOX="100 100 100" for the 1e6-element box)
+CYC=${CYC:-200}
+B=$B/$(echo $BOX | tr ' ' x)
 mkdir -p $B
-python3 scripts/gen_box_deck.py $B/box.k 50 50 40 200
+python3 scripts/gen_box_deck.py $B/box.k $BOX $CYC
 opts="--oversubscribe --mca mpi_yield_when_idle 1"
 [ "$(id -u)" = 0 ] && opts="$opts --allow-run-as-root"
 for np in 2 4; do
@@ -30,9 +33,11 @@ for r in $(seq 1 $REPS); do
         echo "bench_mpi: NP $np run $r: $(grep 'wall time' $B/run${np}_$r.log)"
     done
 done
-python3 - "$B" "$REPS" "$cores" <<'PY' > $B/table.md
+python3 - "$B" "$REPS" "$cores" "$BOX" <<'PY' > $B/table.md
 import re, sys, datetime, subprocess
 B, reps, cores = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+box = [int(v) for v in sys.argv[4].split()]
+nel = box[0] * box[1] * box[2]
 def parse(np, r):
     t = open(f'{B}/run{np}_{r}.log').read()
     wall = float(re.search(r'wall time ([0-9.Ee+-]+) s', t).group(1))
@@ -47,13 +52,14 @@ cpu = [l.split(':', 1)[1].strip() for l in open('/proc/cpuinfo') if l.startswith
 load = open('/proc/loadavg').read().split()[0]
 print(f'\n### make bench (MPI strong scaling), {datetime.date.today()}, commit {rev}, {cpu}, '
       f'{cores} cores, load average {load} at the end\n')
-print('100 000-element hex8 box, 200 cycles, best of %d alternating runs per NP.\n' % reps)
-print('| NP | ms / cycle | speed-up | parallel efficiency | force exchange | dt reduction | gathers |')
-print('|---|---|---|---|---|---|---|')
 best = {}
 for np in (1, 2, 4):
     runs = [parse(np, r) for r in range(1, reps + 1)]
     best[np] = min(runs, key=lambda x: x[0])
+print('%s-element hex8 box (%s), %d cycles, best of %d alternating runs per NP.\n'
+      % (f'{nel:,}', ' x '.join(map(str, box)), best[1][1], reps))
+print('| NP | ms / cycle | speed-up | parallel efficiency | force exchange | dt reduction | gathers |')
+print('|---|---|---|---|---|---|---|')
 t1 = best[1][0] / best[1][1]
 for np in (1, 2, 4):
     wall, cyc, ex = best[np]
