@@ -262,8 +262,6 @@ contains
          integer, allocatable :: grp_ptr(:), grp_elem(:), gid(:)
          call log_info('dynx: no rank files in '//dir//' or '//deckdir//': partitioning '// &
                        deck//' into '//str(np)//' ranks (as dynx-part) in '//dir)
-         if (np > model%ne) call par_abort(deck//': cannot split '//str(model%ne)// &
-                                           ' elements into '//str(np)//' ranks', EXIT_INPUT)
          call contact_groups(model, grp_ptr, grp_elem, gid)   ! contact pairs kept whole
          call partition_model(model, np, grp_ptr, grp_elem, part, err)
          if (allocated(err)) call par_abort(err%message, err%code)

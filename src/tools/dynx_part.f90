@@ -73,12 +73,6 @@ program dynx_part
       if (allocated(error)) call die(error)
       stop
    end if
-   if (np > model%ne) then
-      call set_error(error, deck//': cannot split '//str(model%ne)//' elements into '// &
-                     str(np)//' ranks', EXIT_INPUT)
-      call die(error)
-   end if
-
    ! element groups that must stay on one rank: one per local contact pair of the deck
    ! (dx_par_contact: the elements with a face on either surface)
    call contact_groups(model, grp_ptr, grp_elem, gid)
