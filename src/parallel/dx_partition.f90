@@ -46,6 +46,7 @@ module dx_partition
       integer :: np = 1
       integer :: ne = 0, nn = 0
       integer :: edgecut = 0
+      logical :: direct = .false.            !< fewer vertices than ranks: one per rank, no METIS
       integer, allocatable :: epart(:)       !< (ne) rank of each element, 0..np-1
       integer, allocatable :: ewgt(:)        !< (ne) element cost weight
       integer, allocatable :: node_owner(:)  !< (nn) lowest rank holding the node
@@ -362,6 +363,7 @@ contains
             ! (allowed, as in LS-DYNA MPP and ParaDyn). Every edge is cut.
             vpart = [(i, i = 0, nv - 1)]
             part%edgecut = sum(adjwgt)/2
+            part%direct = .true.
          else
             call metis_part_kway(nv, xadj, adjncy, vwgt, adjwgt, np, vpart, part%edgecut, error)
             if (allocated(error)) return
@@ -702,8 +704,14 @@ contains
       end do
       nnb = count(adj, dim=2)
       write(unit, '(a)') 'dynx-part: partition of '//deck//' (deck content hash '//hash//')'
-      write(unit, '(a,i0,a,i0,a,i0,a)') 'ranks ', part%np, ', elements ', part%ne, &
-         ', nodes ', part%nn, ' (element graph: elements sharing a node; METIS k-way)'
+      if (part%direct) then
+         write(unit, '(a,i0,a,i0,a,i0,a)') 'ranks ', part%np, ', elements ', part%ne, &
+            ', nodes ', part%nn, ' (fewer elements or contact groups than ranks: one per '// &
+            'rank, no METIS)'
+      else
+         write(unit, '(a,i0,a,i0,a,i0,a)') 'ranks ', part%np, ', elements ', part%ne, &
+            ', nodes ', part%nn, ' (element graph: elements sharing a node; METIS k-way)'
+      end if
       if (part%wscale == 1) then
          write(unit, '(a,i0,a,i0,a)') 'element cost weights: ELFORM 1 = ', COST_HEX8_1PT, &
             ', ELFORM 2 = ', COST_HEX8_SRI, ' (measured per element-cycle ratio)'
