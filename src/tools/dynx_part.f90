@@ -12,6 +12,7 @@ program dynx_part
    use dx_deck, only: read_deck_input
    use dx_model_build, only: build_model
    use dx_contact_build, only: build_contact
+   use dx_emc_build, only: build_emc
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report
    use dx_rank_file, only: write_rank_file, read_rank_file, rank_file_name, deck_content_hash
    use dx_io_sys, only: sys_mkdir_p
@@ -65,6 +66,8 @@ program dynx_part
    call build_model(inp, model, error)
    if (allocated(error)) call die(error)
    call build_contact(inp, model, error)     ! the contact pairs (kept whole below)
+   if (allocated(error)) call die(error)
+   call build_emc(inp, model, error)         ! the rest of dynx's checks (read_deck)
    if (allocated(error)) call die(error)
    call deck_content_hash(inp%files, hash, error)
    if (allocated(error)) call die(error)
