@@ -17,7 +17,8 @@ program dynx
    use dx_io_sys, only: sys_epoch_seconds
    use dx_timer, only: wall_time
    use dx_emc_solver, only: run_emc
-   use dx_par, only: par_init, par_finalize, par_size, par_rank, par_abort, par_barrier
+   use dx_par, only: par_init, par_finalize, par_size, par_rank, par_abort, par_barrier, &
+                     par_active
    use dx_par_agree, only: par_agree, par_agreed
    use dx_par_engine, only: par_engine_setup, par_engine_global, par_engine_report, &
                             par_engine_together
@@ -114,7 +115,8 @@ program dynx
       call par_finalize()
       stop
    end if
-   if (len(rfile) > 0) call par_restart_precheck(rfile, deck)   ! MPI: dump of another NP or deck
+   if (len(rfile) > 0) call par_restart_precheck(rfile, deck, error)   ! MPI: another NP or deck
+   if (allocated(error)) call die(error)
    call par_engine_setup(model, deck, outdir, partdir, error)   ! MPI run: the rank's part
    call par_agree(error)
    if (allocated(error)) call die(error)
@@ -259,8 +261,17 @@ contains
 
    subroutine die_usage(msg)
       character(*), intent(in) :: msg
-      call log_error(msg)
-      write(error_unit, '(a)') 'dynx: try dynx --help'
+      type(error_t), allocatable :: e
+      ! under mpirun every rank gets here (before MPI_Init): start MPI so that rank 0 alone
+      ! speaks and no rank exits before it has (par_init does nothing in a serial run)
+      if (.not. par_active()) call par_init(e)
+      if (par_rank() == 0) then
+         call log_error(msg)
+         write(error_unit, '(a)') 'dynx: try dynx --help'
+         flush(error_unit)
+      end if
+      call par_barrier()
+      call par_finalize()
       call exit_process(EXIT_INPUT)
    end subroutine die_usage
 
