@@ -131,10 +131,12 @@ kill9-sweep: deps
 	@python3 scripts/kill9_resume_sweep.py h5
 
 # serial vs MPI bit for bit on every regression deck that runs to a normal end (docs/design.md,
-# "Every regression deck under MPI")
+# "Every regression deck under MPI"); then every `expect` case (bad input, run failures) at
+# NP 2 and 3: mpirun's exit code and the message equal the serial run's (mpi_expect_decks.sh)
 mpi-sweep: deps
 	@$(MAKE) --no-print-directory all
 	@sh scripts/mpi_all_decks.sh 2 3 4
+	@sh scripts/mpi_expect_decks.sh 2 3
 
 # the deck-reader fuzzer, >= 1e4 mutated decks through the sanitized debug build
 fuzz: deps

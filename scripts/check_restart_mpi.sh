@@ -36,6 +36,7 @@
 set -u
 DYNX=${DYNX:-bin/dynx}
 deck=$1; ref=$2; work=$3; np=$4; shift 4
+deck0=$deck
 modes=${*:-cycle usr1}
 seed=${DYNX_RESTART_SEED:-$(od -An -N2 -tu2 /dev/urandom | tr -d ' ')}
 MPIRUN=${MPIRUN:-mpirun}
@@ -212,7 +213,7 @@ for m in $modes; do
         n="$(ls "$d"/runrsf.cyc*.rank00000.h5 | sed 's/.*cyc\([0-9]*\).*/\1/') (last runrsf)"
         timeout 300 $MPIRUN $mo -np "$np" "$DYNX" -i "$deck" -o "$d" -r "$dump" > "$d/run2.log" 2>&1
         rc=$?
-        deck=$1
+        deck=$deck0
         if [ $rc -ne 0 ]; then echo "  periodic: continue run exit $rc"; tail -5 "$d/run2.log"; fail=1; continue; fi
         same "$d" "periodic NP $np (continued from runrsf.h5 at cycle $n)"
         samebits "$d/run2.log" "periodic NP $np (continued)"

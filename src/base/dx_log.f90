@@ -37,7 +37,7 @@ contains
       character(*), intent(in) :: msg
       nwarn = nwarn + 1
       if (nwarn <= max_kept) kept(nwarn) = msg
-      write(error_unit, '(a)') 'dynx: warning: '//msg
+      if (.not. quiet) write(error_unit, '(a)') 'dynx: warning: '//msg   ! MPI: rank 0 only
       if (extra_unit > 0) write(extra_unit, '(a)') 'dynx: warning: '//msg
    end subroutine log_warn
 

@@ -6,7 +6,7 @@ program dynx
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_INPUT, EXIT_CHECKPOINT, exit_process
    use dx_strings, only: str, rstr
-   use dx_log, only: log_info, log_error, log_summary
+   use dx_log, only: log_info, log_error, log_summary, log_set_quiet
    use dx_model, only: model_t
    use dx_deck, only: read_deck
    use dx_output, only: output_t
@@ -17,7 +17,9 @@ program dynx
    use dx_io_sys, only: sys_epoch_seconds
    use dx_timer, only: wall_time
    use dx_emc_solver, only: run_emc
-   use dx_par, only: par_init, par_finalize, par_size, par_rank, par_abort
+   use dx_par, only: par_init, par_finalize, par_size, par_rank, par_abort, par_barrier, &
+                     par_active
+   use dx_par_agree, only: par_agree, par_agreed
    use dx_par_engine, only: par_engine_setup, par_engine_global, par_engine_report, &
                             par_engine_together
    implicit none
@@ -95,8 +97,10 @@ program dynx
    if (.not. check_only) call signals_install()
    call par_init(error)             ! MPI only when started by mpirun/srun
    if (allocated(error)) call die(error)
+   if (par_rank() > 0) call log_set_quiet(.true.)   ! MPI: rank 0 prints info and warnings
 
    call read_deck(deck, model, error, ignore_unknown)
+   call par_agree(error)            ! MPI: a bad deck stops every rank together (dx_par_agree)
    if (allocated(error)) call die(error)
    call log_info('dynx: read '//deck//': '//str(model%nn)//' nodes, '//str(model%ne)// &
                  ' elements, '//str(size(model%parts))//' parts, '//str(size(model%blocks))// &
@@ -111,8 +115,10 @@ program dynx
       call par_finalize()
       stop
    end if
-   if (len(rfile) > 0) call par_restart_precheck(rfile, deck)   ! MPI: dump of another NP or deck
+   if (len(rfile) > 0) call par_restart_precheck(rfile, deck, error)   ! MPI: another NP or deck
+   if (allocated(error)) call die(error)
    call par_engine_setup(model, deck, outdir, partdir, error)   ! MPI run: the rank's part
+   call par_agree(error)
    if (allocated(error)) call die(error)
    call init_state(model)
    if (len(rfile) > 0) then
@@ -122,8 +128,9 @@ program dynx
                     rstr(model%time))
       if (len(rdeck) > 0) then
          call apply_restart_deck(rdeck, model, error)
-         if (allocated(error)) call die(error)
-         if (par_size() > 1) call apply_restart_deck(rdeck, par_engine_global(), error)
+         if (.not. allocated(error) .and. par_size() > 1) &
+            call apply_restart_deck(rdeck, par_engine_global(), error)
+         call par_agree(error)
          if (allocated(error)) call die(error)
          call log_info('dynx: restart deck '//rdeck//' applied')
       end if
@@ -137,6 +144,7 @@ program dynx
    else
       call out%open(model, outdir, error)
    end if
+   call par_agree(error)            ! MPI: rank 0 opened the output; its error stops all
    if (allocated(error)) call die(error)
    if (allocated(model%emc)) then
       call run_emc(model, opts%ck, out, error)
@@ -253,8 +261,17 @@ contains
 
    subroutine die_usage(msg)
       character(*), intent(in) :: msg
-      call log_error(msg)
-      write(error_unit, '(a)') 'dynx: try dynx --help'
+      type(error_t), allocatable :: e
+      ! under mpirun every rank gets here (before MPI_Init): start MPI so that rank 0 alone
+      ! speaks and no rank exits before it has (par_init does nothing in a serial run)
+      if (.not. par_active()) call par_init(e)
+      if (par_rank() == 0) then
+         call log_error(msg)
+         write(error_unit, '(a)') 'dynx: try dynx --help'
+         flush(error_unit)
+      end if
+      call par_barrier()
+      call par_finalize()
       call exit_process(EXIT_INPUT)
    end subroutine die_usage
 
@@ -262,8 +279,11 @@ contains
       type(error_t), intent(in) :: err
       ! a failure every rank knows (it wrote the last plot state): rank 0 reports, all exit
       ! with the code; any other failure on one rank stops every rank (MPI_Abort)
-      if (par_size() > 1 .and. .not. par_engine_together()) call par_abort(err%message, err%code)
+      if (par_size() > 1 .and. .not. (par_engine_together() .or. par_agreed())) &
+         call par_abort(err%message, err%code)
       if (par_rank() == 0) call log_error(err%message)
+      flush(error_unit)
+      call par_barrier()       ! every rank stops together: none exits before rank 0 printed
       call par_finalize()
       call exit_process(err%code)
    end subroutine die

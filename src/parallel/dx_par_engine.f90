@@ -44,6 +44,7 @@ module dx_par_engine
    use dx_par_contact, only: par_contact_setup, par_contact_report, contact_groups, &
                              write_contact_report
    use dx_par_plot, only: par_plot_setup, par_plot_write, par_plot_finish
+   use dx_par_agree, only: par_agree
    implicit none
    private
    public :: par_engine_setup, par_engine_on, par_engine_mass, par_engine_initial, &
@@ -129,8 +130,9 @@ contains
       select case (where)
       case (0)
          dir = outdir
-         if (me == 0) call partition_here(model, np, hash, deck, dir)
-         call par_barrier()
+         if (me == 0) call partition_here(model, np, hash, deck, dir, error)
+         call par_agree(error)          ! rank 0's error (a bad deck, no output dir) stops all
+         if (allocated(error)) return
       case (1)
          dir = outdir
       case (2)
@@ -141,7 +143,8 @@ contains
       call log_info('dynx: MPI run on '//str(np)//' ranks, rank files '// &
                     rank_file_name(dir, 0)//' ...')
       call read_rank_file(rank_file_name(dir, me), hash, np, me, rp, error)
-      if (allocated(error)) call par_abort(error%message, error%code)
+      call par_agree(error)             ! a missing or wrong rank file: every rank stops
+      if (allocated(error)) return
       ! the global model keeps the serial numbering; the rank's model becomes local
       g = model
       allocate(g%x(3, g%nn), g%v(3, g%nn), g%f(3, g%nn), g%mass(g%nn))
@@ -230,7 +233,8 @@ contains
       ! plot states: each rank its own part file (no element data in g any more)
       call par_plot_setup(model, g, pm%nloc, pm%node_global, pm%slot_node, own, elem_loc, &
                           outdir, error)
-      if (allocated(error)) call par_abort(error%message, error%code)
+      call par_agree(error)
+      if (allocated(error)) return
       do k = 1, size(g%blocks)
          if (allocated(g%blocks(k)%sig)) deallocate(g%blocks(k)%sig)
          if (allocated(g%blocks(k)%hv)) deallocate(g%blocks(k)%hv)
@@ -251,29 +255,27 @@ contains
       end subroutine deck_content_hash_of
 
       !> Rank 0 only: partition the deck into dir as `dynx-part deck -n np -o dir` would.
-      subroutine partition_here(model, np, hash, deck, dir)
+      subroutine partition_here(model, np, hash, deck, dir, err)
          type(model_t), intent(in) :: model
          integer, intent(in) :: np
          character(*), intent(in) :: hash, deck, dir
+         type(error_t), allocatable, intent(out) :: err
          type(partition_t) :: part
          type(rank_part_t) :: rpr
-         type(error_t), allocatable :: err
          integer :: r, u, ios
          integer, allocatable :: grp_ptr(:), grp_elem(:), gid(:)
          call log_info('dynx: no rank files in '//dir//' or '//deckdir//': partitioning '// &
                        deck//' into '//str(np)//' ranks (as dynx-part) in '//dir)
-         if (np > model%ne) call par_abort(deck//': cannot split '//str(model%ne)// &
-                                           ' elements into '//str(np)//' ranks', EXIT_INPUT)
          call contact_groups(model, grp_ptr, grp_elem, gid)   ! contact pairs kept whole
          call partition_model(model, np, grp_ptr, grp_elem, part, err)
-         if (allocated(err)) call par_abort(err%message, err%code)
+         if (allocated(err)) return
          call sys_mkdir_p(dir, err)
-         if (allocated(err)) call par_abort(err%message, err%code)
+         if (allocated(err)) return
          do r = 0, np - 1
             call rank_part(model, part, r, rpr, err)
-            if (allocated(err)) call par_abort(err%message, err%code)
+            if (allocated(err)) return
             call write_rank_file(rank_file_name(dir, r), rpr, hash, err)
-            if (allocated(err)) call par_abort(err%message, err%code)
+            if (allocated(err)) return
          end do
          open(newunit=u, file=dir//'/partition.txt', status='replace', action='write', &
               iostat=ios)

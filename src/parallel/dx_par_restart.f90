@@ -41,6 +41,7 @@ module dx_par_restart
    use dx_restart_file, only: rs_file_t, rs_create, rs_commit, rs_open, rs_close, crc32_bytes
    use dx_h5, only: h5_write_attr, h5_read_attr
    use dx_par, only: par_rank, par_size, par_abort, par_allreduce, par_gather_ordered, PAR_MAX
+   use dx_par_agree, only: par_agree
    use dx_par_engine, only: par_engine_on, par_engine_maps
    use dx_par_plot, only: par_plot_resume, par_plot_from_serial
    use dx_model_input, only: model_input_t
@@ -195,7 +196,8 @@ contains
       character(16) :: hash
       integer :: np, me, mode, mnp
       real(wp), allocatable :: crcs(:)
-      character(:), allocatable :: mhash, part, prefix, old
+      character(:), allocatable :: mhash, part, prefix, old, msg
+      integer :: code
       np = par_size()
       me = par_rank()
       if (.not. par_engine_on()) then
@@ -214,39 +216,48 @@ contains
       call par_engine_maps(gp, ng, hash)
       ! rank 0 judges the dump set; its errors stop every rank
       mode = 0
+      ! (errors: every rank reaches each par_agree, and all stop together: dx_par_agree)
       if (me == 0) then
          call inspect(path, mode, mnp, mhash, crcs, error, prefix)
-         if (allocated(error)) call par_abort(error%message, error%code)
-         if (mode == 1) then
-            if (mnp /= np) call par_abort('restart file '//path//' is a dump of a run on '// &
-               str(mnp)//' ranks; this run has '//str(np)//'. Continue it with mpirun -np '// &
-               str(mnp)//' (a dump set continues on the number of ranks that wrote it)', &
-               EXIT_INPUT)
-            if (mhash /= hash) call par_abort('restart file '//path//' is a dump of another '// &
-               'deck (deck hash '//mhash//'; '//model%deck_file//' has '//hash//'). Give the '// &
-               'deck the run was started with (a restart deck, -R, may change end time and '// &
-               'output)', EXIT_INPUT)
+         if (.not. allocated(error) .and. mode == 1) then
+            if (mnp /= np) then
+               call set_error(error, 'restart file '//path//' is a dump of a run on '// &
+                  str(mnp)//' ranks; this run has '//str(np)//'. Continue it with mpirun -np '// &
+                  str(mnp)//' (a dump set continues on the number of ranks that wrote it)', &
+                  EXIT_INPUT)
+            else if (mhash /= hash) then
+               call set_error(error, 'restart file '//path//' is a dump of another '// &
+                  'deck (deck hash '//mhash//'; '//model%deck_file//' has '//hash//'). Give '// &
+                  'the deck the run was started with (a restart deck, -R, may change end '// &
+                  'time and output)', EXIT_INPUT)
+            end if
          end if
       end if
+      call par_agree(error)
+      if (allocated(error)) return
       call par_allreduce(mode, PAR_MAX)
       if (mode == 1) then
          if (me /= 0) call inspect(path, mode, mnp, mhash, crcs, error, prefix)
-         if (allocated(error)) call par_abort(error%message, error%code)
+         call par_agree(error)
+         if (allocated(error)) return
          part = par_restart_part_name(dir_of(path)//prefix, me)
          call remember(path, part, old)
          call check_part(part, crcs(me + 1), error)
-         if (allocated(error)) call par_abort('restart dump '//path//', part of rank '// &
-                                              str(me)//': '//error%message, error%code)
+         if (allocated(error)) call part_error(error)
+         call par_agree(error)
+         if (allocated(error)) return
          call swap_contact(model, gp)
          call restart_read(model, part, error)
          call swap_contact(model, gp)
-         if (allocated(error)) call par_abort('restart dump '//path//', part of rank '// &
-                                              str(me)//': '//error%message, error%code)
+         if (allocated(error)) call part_error(error)
+         call par_agree(error)
+         if (allocated(error)) return
       else
          ! a serial dump: into the global model, then this rank's nodes and elements
          call global_blocks(gp, .true.)      ! g's element state is freed after setup
          call restart_read(gp, path, error)
-         if (allocated(error)) call par_abort(error%message, error%code)
+         call par_agree(error)
+         if (allocated(error)) return
          call scatter_global(gp, ng, model)
          call global_blocks(gp, .false.)
          if (allocated(gp%contact)) call contact_strips_all(gp%contact, gp%x)
@@ -259,8 +270,14 @@ contains
       else
          call par_plot_from_serial(model%run%nplot, error)
       end if
-      if (allocated(error)) call par_abort('restart from '//path//', plot part of rank '// &
-                                           str(me)//': '//error%message, error%code)
+      if (allocated(error)) then
+         msg = 'restart from '//path//', plot part of rank '//str(me)//': '//error%message
+         code = error%code
+         deallocate(error)
+         call set_error(error, msg, code)
+      end if
+      call par_agree(error)
+      if (allocated(error)) return
       gp%run = model%run            ! rank 0 resumes the output from the global model
       gp%run%nplot = 0              ! MPI: d3plot.h5 is mesh-only until the combine
       gp%time = model%time
@@ -270,36 +287,55 @@ contains
       gp%energy = model%energy
       mode = 0
       call par_allreduce(mode, PAR_MAX)   ! every rank has its state
+   contains
+      !> The error of this rank's dump part, naming the dump, the rank and the part.
+      subroutine part_error(error)
+         type(error_t), allocatable, intent(inout) :: error
+         msg = 'restart dump '//path//', part of rank '//str(me)//': '//error%message
+         code = error%code
+         deallocate(error)
+         call set_error(error, msg, code)
+      end subroutine part_error
    end subroutine par_restart_read
 
    !> Before the rank files are read (dynx.f90): a dump set of another number of ranks or
    !> of another deck is an input error naming the dump (not the rank files, which would
    !> mismatch too). Rank 0 looks; a serial run needs nothing here (par_restart_read
    !> refuses a manifest).
-   subroutine par_restart_precheck(path, deck)
+   subroutine par_restart_precheck(path, deck, error)
       character(*), intent(in) :: path, deck
-      integer :: mode, mnp, np
-      character(:), allocatable :: mhash
-      character(16) :: hash
-      real(wp), allocatable :: crcs(:)
-      type(error_t), allocatable :: error
-      type(model_input_t) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: np
       np = par_size()
-      if (np <= 1 .or. par_rank() /= 0) return
-      call inspect(path, mode, mnp, mhash, crcs, error)
-      if (allocated(error)) call par_abort(error%message, error%code)
-      if (mode /= 1) return
-      if (mnp /= np) call par_abort('restart file '//path//' is a dump of '// &
-         'a run on '//str(mnp)//' ranks; this run has '//str(np)//'. Continue it with '// &
-         'mpirun -np '//str(mnp)//' (a dump set continues on the number of ranks that '// &
-         'wrote it)', EXIT_INPUT)
-      call read_deck_input(deck, inp, error)
-      if (.not. allocated(error)) call deck_content_hash(inp%files, hash, error)
-      if (allocated(error)) call par_abort(error%message, error%code)
-      if (mhash /= hash) call par_abort('restart file '//path//' is a dump of another '// &
-         'deck (deck hash '//mhash//'; '//deck//' has '//hash//'). Give the deck the run '// &
-         'was started with (a restart deck, -R, may change the end time and the output)', &
-         EXIT_INPUT)
+      if (np <= 1) return
+      if (par_rank() == 0) call look(error)
+      call par_agree(error)      ! rank 0's verdict stops every rank together (dx_par_agree)
+   contains
+      subroutine look(error)
+         type(error_t), allocatable, intent(out) :: error
+         integer :: mode, mnp
+         character(:), allocatable :: mhash
+         character(16) :: hash
+         real(wp), allocatable :: crcs(:)
+         type(model_input_t) :: inp
+         call inspect(path, mode, mnp, mhash, crcs, error)
+         if (allocated(error)) return
+         if (mode /= 1) return
+         if (mnp /= np) then
+            call set_error(error, 'restart file '//path//' is a dump of '// &
+               'a run on '//str(mnp)//' ranks; this run has '//str(np)//'. Continue it with '// &
+               'mpirun -np '//str(mnp)//' (a dump set continues on the number of ranks that '// &
+               'wrote it)', EXIT_INPUT)
+            return
+         end if
+         call read_deck_input(deck, inp, error)
+         if (.not. allocated(error)) call deck_content_hash(inp%files, hash, error)
+         if (allocated(error)) return
+         if (mhash /= hash) call set_error(error, 'restart file '//path//' is a dump of '// &
+            'another deck (deck hash '//mhash//'; '//deck//' has '//hash//'). Give the deck '// &
+            'the run was started with (a restart deck, -R, may change the end time and the '// &
+            'output)', EXIT_INPUT)
+      end subroutine look
    end subroutine par_restart_precheck
 
    !> What path is: mode 1 an MPI manifest (with its NP, deck hash and part CRCs), 0 else.

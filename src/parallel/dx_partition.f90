@@ -46,6 +46,7 @@ module dx_partition
       integer :: np = 1
       integer :: ne = 0, nn = 0
       integer :: edgecut = 0
+      logical :: direct = .false.            !< fewer vertices than ranks: one per rank, no METIS
       integer, allocatable :: epart(:)       !< (ne) rank of each element, 0..np-1
       integer, allocatable :: ewgt(:)        !< (ne) element cost weight
       integer, allocatable :: node_owner(:)  !< (nn) lowest rank holding the node
@@ -355,26 +356,36 @@ contains
          if (allocated(error)) return
          call element_graph(conn, nn, vtx, nv, xadj, adjncy, adjwgt)
          allocate(vpart(nv))
-         call metis_part_kway(nv, xadj, adjncy, vwgt, adjwgt, np, vpart, part%edgecut, error)
-         if (allocated(error)) return
-         ! k-way can leave ranks empty or unbalanced on small graphs; then recursive
-         ! bisection is tried too and the partition with the lighter heaviest rank is kept
-         if (max_weight(vpart, vwgt, np) > 1.1_wp*real(sum(vwgt), wp)/real(np, wp)) then
-            block
-               integer, allocatable :: vpart2(:)
-               integer :: cut2
-               allocate(vpart2(nv))
-               call metis_part_kway(nv, xadj, adjncy, vwgt, adjwgt, np, vpart2, cut2, error, &
-                                    METIS_RECURSIVE)
-               if (allocated(error)) return
-               if (max_weight(vpart2, vwgt, np) < max_weight(vpart, vwgt, np)) then
-                  vpart = vpart2
-                  part%edgecut = cut2
-               end if
-            end block
+         if (nv < np) then
+            ! more ranks than vertices (a one-element deck on 4 ranks; a contact pair holding
+            ! most of the model): METIS needs nparts <= nvtxs, and the best partition is one
+            ! vertex per rank, so vertex v goes to rank v - 1 and ranks nv..np-1 stay empty
+            ! (allowed, as in LS-DYNA MPP and ParaDyn). Every edge is cut.
+            vpart = [(i, i = 0, nv - 1)]
+            part%edgecut = sum(adjwgt)/2
+            part%direct = .true.
+         else
+            call metis_part_kway(nv, xadj, adjncy, vwgt, adjwgt, np, vpart, part%edgecut, error)
+            if (allocated(error)) return
+            ! k-way can leave ranks empty or unbalanced on small graphs; then recursive
+            ! bisection is tried too and the partition with the lighter heaviest rank is kept
+            if (max_weight(vpart, vwgt, np) > 1.1_wp*real(sum(vwgt), wp)/real(np, wp)) then
+               block
+                  integer, allocatable :: vpart2(:)
+                  integer :: cut2
+                  allocate(vpart2(nv))
+                  call metis_part_kway(nv, xadj, adjncy, vwgt, adjwgt, np, vpart2, cut2, error, &
+                                       METIS_RECURSIVE)
+                  if (allocated(error)) return
+                  if (max_weight(vpart2, vwgt, np) < max_weight(vpart, vwgt, np)) then
+                     vpart = vpart2
+                     part%edgecut = cut2
+                  end if
+               end block
+            end if
+            if (max_weight(vpart, vwgt, np) > 1.1_wp*real(sum(vwgt), wp)/real(np, wp)) &
+               call rebalance(xadj, adjncy, adjwgt, vwgt, np, vpart)
          end if
-         if (max_weight(vpart, vwgt, np) > 1.1_wp*real(sum(vwgt), wp)/real(np, wp)) &
-            call rebalance(xadj, adjncy, adjwgt, vwgt, np, vpart)
          part%epart = vpart(vtx)
       end if
       ! ranks of each node (ascending, distinct); a node of no element goes to rank 0
@@ -693,8 +704,14 @@ contains
       end do
       nnb = count(adj, dim=2)
       write(unit, '(a)') 'dynx-part: partition of '//deck//' (deck content hash '//hash//')'
-      write(unit, '(a,i0,a,i0,a,i0,a)') 'ranks ', part%np, ', elements ', part%ne, &
-         ', nodes ', part%nn, ' (element graph: elements sharing a node; METIS k-way)'
+      if (part%direct) then
+         write(unit, '(a,i0,a,i0,a,i0,a)') 'ranks ', part%np, ', elements ', part%ne, &
+            ', nodes ', part%nn, ' (fewer elements or contact groups than ranks: one per '// &
+            'rank, no METIS)'
+      else
+         write(unit, '(a,i0,a,i0,a,i0,a)') 'ranks ', part%np, ', elements ', part%ne, &
+            ', nodes ', part%nn, ' (element graph: elements sharing a node; METIS k-way)'
+      end if
       if (part%wscale == 1) then
          write(unit, '(a,i0,a,i0,a)') 'element cost weights: ELFORM 1 = ', COST_HEX8_1PT, &
             ', ELFORM 2 = ', COST_HEX8_SRI, ' (measured per element-cycle ratio)'
@@ -708,6 +725,8 @@ contains
          write(unit, '(i6,4i11,i12)') r, part%rank_ne(r), part%rank_wgt(r), part%rank_nn(r), &
             part%rank_nshared(r), nnb(r)
       end do
+      if (any(part%rank_ne == 0)) write(unit, '(a,i0,a,i0,a)') 'empty ranks (no elements): ', &
+         count(part%rank_ne == 0), ' of ', part%np, ': '//rank_list(part%rank_ne == 0)
       write(unit, '(a,i0)') 'shared nodes (held by more than one rank): ', nshared_total
       write(unit, '(a,i0)') 'edge cut (weighted): ', part%edgecut
       if (allocated(part%ewgt)) then
@@ -717,4 +736,28 @@ contains
       write(unit, '(a,f8.4,a)') 'balance (max weight / mean weight): ', part%balance, &
          '   (1.0 = perfect; 1.0-1.1 reasonable)'
    end subroutine write_report
+
+   !> The ranks r (0-based) where sel(r) holds, as a list of ranges: "1, 3-5, 9".
+   function rank_list(sel) result(t)
+      logical, intent(in) :: sel(0:)
+      character(:), allocatable :: t
+      integer :: r, r1
+      t = ''
+      r = 0
+      do while (r < size(sel))
+         if (.not. sel(r)) then
+            r = r + 1
+            cycle
+         end if
+         r1 = r
+         do while (r1 + 1 < size(sel))
+            if (.not. sel(r1 + 1)) exit
+            r1 = r1 + 1
+         end do
+         if (len(t) > 0) t = t//', '
+         t = t//str(r)
+         if (r1 > r) t = t//'-'//str(r1)
+         r = r1 + 1
+      end do
+   end function rank_list
 end module dx_partition

@@ -169,8 +169,8 @@ contains
          if (par) call par_engine_fail(error)
          return
       end if
-      if (par) then
-         call par_engine_plot_finish(error)
+      if (par) then      ! ENDENG: every rank formed the same ratio, so all stop together
+         call par_engine_plot_finish(error, failure=why == 'ENDENG')
          if (allocated(error)) call par_engine_fail(error)
          comb = ' (the '//str(par_size())//' ranks'' plot files combined into '// &
                 ck%outdir//'/d3plot.h5 + d3plot.xdmf: '//str(par_plot_nstates())//' states)'

@@ -12,6 +12,7 @@ program dynx_part
    use dx_deck, only: read_deck_input
    use dx_model_build, only: build_model
    use dx_contact_build, only: build_contact
+   use dx_emc_build, only: build_emc
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report
    use dx_rank_file, only: write_rank_file, read_rank_file, rank_file_name, deck_content_hash
    use dx_io_sys, only: sys_mkdir_p
@@ -66,6 +67,8 @@ program dynx_part
    if (allocated(error)) call die(error)
    call build_contact(inp, model, error)     ! the contact pairs (kept whole below)
    if (allocated(error)) call die(error)
+   call build_emc(inp, model, error)         ! the rest of dynx's checks (read_deck)
+   if (allocated(error)) call die(error)
    call deck_content_hash(inp%files, hash, error)
    if (allocated(error)) call die(error)
    if (verify) then
@@ -73,12 +76,6 @@ program dynx_part
       if (allocated(error)) call die(error)
       stop
    end if
-   if (np > model%ne) then
-      call set_error(error, deck//': cannot split '//str(model%ne)//' elements into '// &
-                     str(np)//' ranks', EXIT_INPUT)
-      call die(error)
-   end if
-
    ! element groups that must stay on one rank: one per local contact pair of the deck
    ! (dx_par_contact: the elements with a face on either surface)
    call contact_groups(model, grp_ptr, grp_elem, gid)

@@ -14,7 +14,7 @@ program test_partition
    use dx_model_build, only: build_model
    use dx_partition, only: partition_t, rank_part_t, element_graph, condense_groups, &
                            partition_elements, partition_model, rank_part, face_elements, &
-                           scatter_keys
+                           scatter_keys, write_report
    use dx_rank_file, only: write_rank_file, read_rank_file, rank_file_name, deck_content_hash
    use dx_io_sys, only: sys_mkdir_p
    use dx_assert, only: check, check_close, assert_summary
@@ -32,6 +32,7 @@ program test_partition
    call test_bcs_on_ranks()
    call test_rank_files()
    call test_serial_order_emulation()
+   call test_more_ranks_than_elements()
    call assert_summary()
 
 contains
@@ -616,4 +617,70 @@ contains
       write(u, pos=1) buf
       close(u)
    end subroutine corrupt_elements
+   !> More ranks than graph vertices (issue 6: one-element decks at NP 2-4, a contact pair
+   !> holding the model): no METIS call, one vertex per rank in vertex order, the other ranks
+   !> empty (no elements, no nodes, no neighbours), and the report names them. Hand counts:
+   !> two elements sharing a face (4 nodes) on 4 ranks; a 3x3x3 box with elements 1..26 in
+   !> one group (2 vertices) on 3 ranks: the corner element 27 touches its 7 neighbours by
+   !> 3 faces, 3 edges and 1 corner, 3*4 + 3*2 + 1 = 19 shared node slots = the edge cut.
+   subroutine test_more_ranks_than_elements()
+      integer, allocatable :: conn(:, :), ewgt(:)
+      type(partition_t) :: part
+      type(rank_part_t) :: rp
+      type(model_t) :: empty
+      integer :: nn, r, u, ios
+      character(200) :: line
+      logical :: found
+      write(*, '(a)') 'more ranks than elements: direct assignment, empty ranks'
+      call box(2, 1, 1, conn, nn)
+      ewgt = [1, 1]
+      call partition_elements(conn, nn, ewgt, [1], [integer ::], 4, part, error)
+      call check(.not. allocated(error), '2 elements on 4 ranks: no error')
+      if (allocated(error)) return
+      call check(all(part%epart == [0, 1]), '2 elements on 4 ranks: element e on rank e - 1')
+      call check(all(part%rank_ne == [1, 1, 0, 0]) .and. all(part%rank_nn == [8, 8, 0, 0]) &
+                 .and. all(part%rank_nshared == [4, 4, 0, 0]), &
+                 '2 elements on 4 ranks: elements 1 1 0 0, nodes 8 8 0 0, shared 4 4 0 0')
+      call check(part%edgecut == 4, '2 elements on 4 ranks: edge cut 4 (one face)')
+      call check_close(part%balance, 2.0_wp, 0.0_wp, 1.0e-15_wp, &
+                       '2 elements on 4 ranks: balance max/mean = 1/(2/4) = 2')
+      do r = 2, 3
+         call rank_part(empty, part, r, rp, error)
+         call check(.not. allocated(error) .and. size(rp%elements) == 0 .and. &
+                    size(rp%nodes) == 0 .and. size(rp%nbr) == 0 .and. &
+                    size(rp%nbr_nodes) == 0, '2 elements on 4 ranks: rank '//achar(48 + r)// &
+                    ' holds no element, node or neighbour')
+      end do
+      call rank_part(empty, part, 1, rp, error)
+      call check(size(rp%elements) == 1 .and. size(rp%nodes) == 8 .and. &
+                 all(rp%nbr == [0]) .and. size(rp%nbr_nodes) == 4, &
+                 '2 elements on 4 ranks: rank 1 holds element 2, 8 nodes, 4 shared with rank 0')
+      open(newunit=u, file=TMP//'/report_empty.txt', status='replace', action='readwrite')
+      call write_report(u, part, 'two.k', '0123456789ABCDEF')
+      rewind(u)
+      found = .false.
+      do
+         read(u, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         if (trim(line) == 'empty ranks (no elements): 2 of 4: 2-3') found = .true.
+      end do
+      close(u)
+      call check(found, 'report line "empty ranks (no elements): 2 of 4: 2-3"')
+      call box(1, 1, 1, conn, nn)
+      call partition_elements(conn, nn, [8], [1], [integer ::], 3, part, error)
+      call check(.not. allocated(error) .and. all(part%epart == [0]) .and. &
+                 all(part%rank_ne == [1, 0, 0]) .and. part%edgecut == 0, &
+                 '1 element on 3 ranks: on rank 0, ranks 1-2 empty, no cut')
+      call box(3, 3, 3, conn, nn)
+      deallocate(ewgt)
+      allocate(ewgt(27))
+      ewgt = 1
+      call partition_elements(conn, nn, ewgt, [1, 27], [(r, r = 1, 26)], 3, part, error)
+      call check(.not. allocated(error), '27 elements in 2 vertices on 3 ranks: no error')
+      if (allocated(error)) return
+      call check(all(part%epart(1:26) == 0) .and. part%epart(27) == 1 .and. &
+                 all(part%rank_ne == [26, 1, 0]), &
+                 '27 elements in 2 vertices on 3 ranks: group on rank 0, element 27 on 1, 2 empty')
+      call check(part%edgecut == 19, '27 elements in 2 vertices on 3 ranks: edge cut 19')
+   end subroutine test_more_ranks_than_elements
 end program test_partition
