@@ -44,6 +44,7 @@ module dx_par_engine
    use dx_par_contact, only: par_contact_setup, par_contact_report, contact_groups, &
                              write_contact_report
    use dx_par_plot, only: par_plot_setup, par_plot_write, par_plot_finish
+   use dx_par_emc, only: par_emc_setup
    implicit none
    private
    public :: par_engine_setup, par_engine_on, par_engine_mass, par_engine_initial, &
@@ -142,6 +143,10 @@ contains
                     rank_file_name(dir, 0)//' ...')
       call read_rank_file(rank_file_name(dir, me), hash, np, me, rp, error)
       if (allocated(error)) call par_abort(error%message, error%code)
+      if (allocated(model%emc)) then   ! conserving solver: whole model, pairs split (dx_par_emc)
+         call par_emc_setup(model%emc, model%nn, rp%nodes, rp%node_owner)
+         return
+      end if
       ! the global model keeps the serial numbering; the rank's model becomes local
       g = model
       allocate(g%x(3, g%nn), g%v(3, g%nn), g%f(3, g%nn), g%mass(g%nn))
@@ -290,10 +295,7 @@ contains
       type(model_t), intent(in) :: model
       type(error_t), allocatable, intent(out) :: error
       character(:), allocatable :: what
-      what = ''
-      if (allocated(model%emc)) then
-         what = '*DYNX_CONSERVING_CONTACT (the conserving rigid-body solver)'
-      end if
+      what = ''   ! nothing at present (the conserving solver runs under MPI: dx_par_emc)
       if (len(what) > 0) call set_error(error, model%deck_file//': '//what// &
          ' is not supported in an MPI run yet; run this deck serially (without mpirun)', &
          EXIT_INPUT)
