@@ -18,7 +18,7 @@ module dx_par_emc
    use dx_kinds, only: wp
    use dx_strings, only: str, rstr
    use dx_log, only: log_info
-   use dx_par, only: par_rank, par_size, par_gather_ordered, par_wtime
+   use dx_par, only: par_rank, par_size, par_gather_ordered, par_wtime, par_allreduce, PAR_SUM
    use dx_emc_types, only: emc_system_t
    implicit none
    private
@@ -41,7 +41,9 @@ contains
       type(emc_system_t), intent(in) :: es
       integer, intent(in) :: nn, nodes(:), owner(:)
       logical, allocatable :: owned(:)
-      integer :: id, sb, n, i, i1, i2, s, me, nmine
+      integer :: id, sb, n, i, i1, i2, s, me
+      integer, allocatable :: cnt(:)
+      character(:), allocatable :: txt
       me = par_rank()
       allocate(owned(nn))
       owned = .false.
@@ -69,10 +71,17 @@ contains
             end if
          end do
       end do
-      nmine = count(mine)
+      allocate(cnt(0:par_size() - 1))
+      cnt = 0
+      cnt(me) = count(mine)
+      call par_allreduce(cnt, PAR_SUM)
       on = .true.
+      txt = ''
+      do i = 0, par_size() - 1
+         txt = txt//' '//str(cnt(i))
+      end do
       call log_info('dynx: conserving solver on '//str(par_size())//' ranks: '//str(n)// &
-                    ' slave points, '//str(nmine)//' on rank 0')
+                    ' slave points, per rank:'//txt)
    end subroutine par_emc_setup
 
    !> The slave points of definition id: i1..i2 index es%snodes (0..0: the sphere's centre).
