@@ -1,16 +1,18 @@
 #!/bin/sh
 # Serial and MPI agree bit for bit on every regression deck (issue 6 acceptance), beyond the
 # mpi_* cases that make test runs: for each tests/regression/<case>/deck.k that runs to a
-# normal end serially (no `expect` file; not the conserving solver, which MPI refuses, and not
-# the mpi_* cases themselves), run it serially, then under mpirun at each NP, and compare with
-# scripts/mpi_bitwise_check.sh (glstat, nodout, rbdout, rcforc, XDMF cmp; d3plot.h5 h5diff;
-# final energies as IEEE bits; zero tolerance). Decks whose serial run takes longer than
-# MAXSEC seconds are listed as skipped (time), not passed.
+# normal end serially (no `expect` file, not the mpi_* cases themselves; the conserving
+# solver's emc_* decks included: dx_par_emc), run it serially, then under mpirun at each NP,
+# and compare with scripts/mpi_bitwise_check.sh (glstat, nodout, rbdout, rcforc, emcstat, XDMF
+# cmp; d3plot.h5 h5diff; final energies as IEEE bits; zero tolerance). Decks whose serial run
+# takes longer than MAXSEC seconds are listed as skipped (time), not passed.
 #   sh scripts/mpi_all_decks.sh [NP...]        (default NP: 2 3 4; MAXSEC default 60)
+#   MATCH='emc_*' sh scripts/mpi_all_decks.sh  only the cases whose name matches (shell glob)
 # Output: one line per deck (PASS / FAIL / SKIP), then the counts; exit 1 if any deck failed.
 set -u
 cd "$(dirname "$0")/.." || exit 2
 MAXSEC=${MAXSEC:-60}
+MATCH=${MATCH:-*}
 nps=${*:-2 3 4}
 work=build/mpi_all_decks
 rm -rf "$work"; mkdir -p "$work"
@@ -19,7 +21,8 @@ for dir in tests/regression/*/; do
     c=$(basename "$dir")
     [ -f "$dir/deck.k" ] || continue
     [ -f "$dir/expect" ] && continue
-    case $c in mpi_*|emc_*|bad_*) continue ;; esac
+    case $c in mpi_*|bad_*) continue ;; esac
+    case $c in $MATCH) ;; *) continue ;; esac
     [ -f "$dir/args" ] && { echo "SKIP $c (extra arguments: $(cat "$dir/args"))"; ns=$((ns + 1)); continue; }
     ref=$work/$c
     mkdir -p "$ref"

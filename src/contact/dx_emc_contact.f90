@@ -26,9 +26,14 @@
 !> linear pair has the high-frequency spectral radius rho_inf and the energy falls by
 !> chi eps (<g1> - <g0>)(g1 - g0) >= 0 per step with the momenta exact (the energy-decaying
 !> momentum-conserving idea of Armero & Romero 2001, CMAME 190:2603-2649, on the gap).
+!> MPI (dx_par_emc): each rank searches and evaluates the pairs of the slave points it owns;
+!> the pairs and the per-pair contributions are gathered in serial order and added by the
+!> same loop as in a serial run (emc_contact_forces computes every pair's contribution
+!> first, then adds them in pair order), so the sums are the serial ones bit for bit.
 module dx_emc_contact
    use dx_kinds, only: wp
    use dx_emc_types, only: emc_system_t, EMC_PAIR_NI, EMC_PAIR_NR
+   use dx_par_emc, only: par_emc_on, par_emc_mine, par_emc_slot, par_emc_gather
    implicit none
    private
    public :: emc_kin_t, emc_pair_t, emc_select_pairs, emc_contact_forces, emc_inv3, &
@@ -36,6 +41,7 @@ module dx_emc_contact
              PAIR_FACET, PAIR_SPHERE_OUT, PAIR_SPHERE_IN
 
    integer, parameter :: PAIR_FACET = 1, PAIR_SPHERE_OUT = 2, PAIR_SPHERE_IN = 3
+   integer, parameter :: NREC = 28   !< reals of one pair's contribution (pair_contribution)
 
    !> kinematics of one body over the step. The geometry is formed from differences of the
    !> centres (xc0 + xl0 of one body minus the other's) plus the small increments dxc and
@@ -144,12 +150,12 @@ contains
    !> the work f.d = -mu N |dt|^2/sqrt(|dt|^2 + delta^2) <= 0 (Cayley arms make it exact), so
    !> friction only dissipates. (Regularized Coulomb law: Wriggers 2006, Computational Contact
    !> Mechanics, sec. 5.2.)
-   subroutine friction(mu, delta, fn, nu, ks, km, rc, fs, ts, fm, tm, work)
+   subroutine friction(mu, delta, fn, nu, ks, km, rc, f, ts, tm, work)
       real(wp), intent(in) :: mu, delta, fn, nu(3), rc(3)
       type(emc_kin_t), intent(in) :: ks, km
-      real(wp), intent(inout) :: fs(3), ts(3), fm(3), tm(3)
+      real(wp), intent(out) :: f(3), ts(3), tm(3)   !< force on the slave, torques (+ts, -tm)
       real(wp), intent(out) :: work
-      real(wp) :: c(3), xs(3), xm(3), d(3), dtan(3), nh(3), f(3), rm(3), del
+      real(wp) :: c(3), xs(3), xm(3), d(3), dtan(3), nh(3), rm(3), del
       c = relm(ks, km) + rc             ! the contact point, from the master's mid centre
       xs = matmul(ks%ainv, rc)
       xm = matmul(km%ainv, c)
@@ -159,10 +165,8 @@ contains
       del = max(delta, 1.0e-12_wp)
       f = -mu*fn*dtan/sqrt(dot_product(dtan, dtan) + del*del)
       rm = c
-      fs = fs + f
-      ts = ts + cross(rc, f)
-      fm = fm - f
-      tm = tm - cross(rm, f)
+      ts = cross(rc, f)
+      tm = cross(rm, f)
       work = dot_product(f, d)
    end subroutine friction
 
@@ -267,6 +271,8 @@ contains
    !> The candidate pairs of the step for the kinematics k: every slave point of every
    !> definition against the master facets it projects into (one facet per plane) or the
    !> master sphere, kept when g(n) or g(n+1) < 0 and g(n) > -dpen (not through the body).
+   !> MPI (dx_par_emc): each rank searches its own slave points; the pairs are gathered in
+   !> the serial order (by slave point; a point's pairs are found by one rank, in order).
    subroutine emc_select_pairs(es, k, pairs, npair)
       type(emc_system_t), intent(in) :: es
       type(emc_kin_t), intent(in) :: k(:)
@@ -274,10 +280,11 @@ contains
       integer, intent(out) :: npair
       integer :: id, sb, mb, i, i1, i2, f, q, nsp
       real(wp) :: g0, g1, nu(3), xp(3), rsm(3), rmm(3), dpen, xb(3), xb1(3), trav
-      logical :: inside, dup
+      logical :: inside, dup, split
       type(emc_pair_t) :: p
       if (.not. allocated(pairs)) allocate(pairs(16))
       npair = 0
+      split = par_emc_on()
       do id = 1, size(es%defs)
          sb = es%defs(id)%sb
          mb = es%defs(id)%mb
@@ -287,6 +294,9 @@ contains
             i1 = es%sn_ptr(sb); i2 = es%sn_ptr(sb + 1) - 1
          end if
          do i = i1, i2
+            if (split) then
+               if (.not. par_emc_mine(es, id, i)) cycle
+            end if
             p%def = id; p%sb = sb; p%mb = mb; p%src = i
             if (i == 0) then
                p%s = es%sphere(sb)%c; p%rs = es%sphere(sb)%r
@@ -332,6 +342,7 @@ contains
             end do
          end do
       end do
+      if (split) call gather_pairs(es, pairs, npair)
    contains
       subroutine push(pp)
          type(emc_pair_t), intent(in) :: pp
@@ -379,62 +390,150 @@ contains
       end associate
    end function emc_same_plane
 
+   !> MPI: every rank's pairs (pairs(1:npair)) into the full list in serial order, on every
+   !> rank. Each pair travels as EMC_PAIR_NI integers (exact as reals) and EMC_PAIR_NR reals,
+   !> keyed by its slave point's serial position.
+   subroutine gather_pairs(es, pairs, npair)
+      type(emc_system_t), intent(in) :: es
+      type(emc_pair_t), allocatable, intent(inout) :: pairs(:)
+      integer, intent(inout) :: npair
+      integer, allocatable :: ai(:, :), keys(:), akeys(:)
+      real(wp), allocatable :: ar(:, :), v(:, :), av(:, :)
+      integer :: i, n
+      call emc_pairs_pack(pairs(1:npair), ai, ar)
+      allocate(keys(npair), v(EMC_PAIR_NI + EMC_PAIR_NR, npair))
+      do i = 1, npair
+         keys(i) = par_emc_slot(es, pairs(i)%def, pairs(i)%src)
+         v(1:EMC_PAIR_NI, i) = real(ai(:, i), wp)
+         v(EMC_PAIR_NI + 1:, i) = ar(:, i)
+      end do
+      call par_emc_gather(keys, v, akeys, av)
+      n = size(akeys)
+      deallocate(ai, ar)
+      allocate(ai(EMC_PAIR_NI, n), ar(EMC_PAIR_NR, n))
+      ai = nint(av(1:EMC_PAIR_NI, :))
+      ar = av(EMC_PAIR_NI + 1:, :)
+      call emc_pairs_unpack(ai, ar, pairs)
+      npair = n
+      if (n == 0) then
+         deallocate(pairs)
+         allocate(pairs(16))
+      end if
+   end subroutine gather_pairs
+
    !> Resultant force F and spatial torque T about each body's mid centre from the pairs
    !> (kinematics k); stores g0, g1 and the discrete derivative in the pairs; upen1 = sum
-   !> U(g(n+1)), upen0 = sum U(g(n)).
-   subroutine emc_contact_forces(es, k, pairs, npair, fo, to, upen0, upen1, dissip)
+   !> U(g(n+1)), upen0 = sum U(g(n)). Two passes: each pair's contribution (rec), then the
+   !> sums in pair order. MPI (unless local): a rank evaluates the pairs of its slave points
+   !> and the contributions are gathered by pair index before the sums.
+   subroutine emc_contact_forces(es, k, pairs, npair, fo, to, upen0, upen1, dissip, local)
       type(emc_system_t), intent(in) :: es
       type(emc_kin_t), intent(in) :: k(:)
       type(emc_pair_t), intent(inout) :: pairs(:)
       integer, intent(in) :: npair
       real(wp), intent(out) :: fo(:, :), to(:, :), upen0, upen1
       real(wp), intent(out), optional :: dissip   !< energy the dissipation takes this step
-      integer :: ip
-      real(wp) :: g0, g1, nu(3), xp(3), rsm(3), rmm(3), eps, ub, f(3), u0, u1, ubd, dis
-      logical :: inside
+      logical, intent(in), optional :: local      !< MPI: every rank evaluates every pair
+      integer :: ip, n
+      real(wp) :: dis, rec(NREC, npair)
+      real(wp), allocatable :: v(:, :), av(:, :)
+      integer, allocatable :: keys(:), akeys(:)
+      logical :: split, fric
+      split = par_emc_on()
+      if (present(local)) split = split .and. .not. local
+      split = split .and. npair > 0     ! (every rank knows npair: nothing to gather)
+      if (split) then
+         n = 0
+         do ip = 1, npair
+            if (par_emc_mine(es, pairs(ip)%def, pairs(ip)%src)) n = n + 1
+         end do
+         allocate(keys(n), v(NREC, n))
+         n = 0
+         do ip = 1, npair
+            if (.not. par_emc_mine(es, pairs(ip)%def, pairs(ip)%src)) cycle
+            n = n + 1
+            keys(n) = ip
+            call pair_contribution(es, k, pairs(ip), v(:, n))
+         end do
+         call par_emc_gather(keys, v, akeys, av)
+         rec(:, akeys) = av
+      else
+         do ip = 1, npair
+            call pair_contribution(es, k, pairs(ip), rec(:, ip))
+         end do
+      end if
       fo = 0.0_wp
       to = 0.0_wp
       upen0 = 0.0_wp
       upen1 = 0.0_wp
       dis = 0.0_wp
       do ip = 1, npair
-         associate (p => pairs(ip))
-            call pair_geometry(es, k, p, g0, g1, nu, xp, rsm, rmm, inside)
-            eps = es%defs(p%def)%eps
-            u0 = upen(eps, g0)
-            u1 = upen(eps, g1)
-            if (p%il > 0) then
-               ! Lagrange multiplier: f = lam nu, no stored energy (constraint g1 = g0)
-               u0 = 0.0_wp; u1 = 0.0_wp
-               ub = -p%lam
-            else
-               ub = discrete_gradient(eps, g0, g1)
-               ! algorithmic dissipation (HHT/Newmark parameters, rho_inf < 1): a force
-               ! chi eps (<g1> - <g0>) against the change of the penetration; it does the
-               ! work -chi eps (<g1> - <g0>)(g1 - g0) <= 0 along nu, so momenta stay exact.
-               ! Clamped so that the pair never pulls (that part dissipates too).
-               if (es%chi > 0.0_wp) then
-                  ubd = min(ub + es%chi*eps*(min(g1, 0.0_wp) - min(g0, 0.0_wp)), 0.0_wp)
-                  dis = dis + (ubd - ub)*(g1 - g0)
-                  ub = ubd
-               end if
+         associate (p => pairs(ip), r => rec(:, ip))
+            p%g0 = r(22); p%g1 = r(23); p%ubar = r(24); p%n1 = r(25:27); p%dfr = r(28)
+            upen0 = upen0 + r(19)
+            upen1 = upen1 + r(20)
+            if (p%il == 0 .and. es%chi > 0.0_wp) dis = dis + r(21)
+            fo(:, p%sb) = fo(:, p%sb) + r(1:3)
+            to(:, p%sb) = to(:, p%sb) + r(4:6)
+            fo(:, p%mb) = fo(:, p%mb) - r(1:3)
+            to(:, p%mb) = to(:, p%mb) - r(7:9)
+            fric = es%defs(p%def)%fs > 0.0_wp .and. p%ubar < 0.0_wp
+            if (fric) then
+               fo(:, p%sb) = fo(:, p%sb) + r(10:12)
+               to(:, p%sb) = to(:, p%sb) + r(13:15)
+               fo(:, p%mb) = fo(:, p%mb) - r(10:12)
+               to(:, p%mb) = to(:, p%mb) - r(16:18)
             end if
-            p%g0 = g0; p%g1 = g1; p%ubar = ub
-            p%n1 = 0.0_wp
-            if (p%kind == PAIR_FACET) p%n1 = matmul(k(p%mb)%r1, es%facets(p%facet)%n)
-            upen0 = upen0 + u0
-            upen1 = upen1 + u1
-            f = -ub*nu
-            fo(:, p%sb) = fo(:, p%sb) + f
-            to(:, p%sb) = to(:, p%sb) + cross(rsm, f)
-            fo(:, p%mb) = fo(:, p%mb) - f
-            to(:, p%mb) = to(:, p%mb) - cross(rmm, f)
-            if (es%defs(p%def)%fs > 0.0_wp .and. ub < 0.0_wp) &
-               call friction(es%defs(p%def)%fs, es%defs(p%def)%dfric, -ub*norm2(nu), nu, &
-                             k(p%sb), k(p%mb), rsm - p%rs*nu/max(norm2(nu), tiny(1.0_wp)), &
-                             fo(:, p%sb), to(:, p%sb), fo(:, p%mb), to(:, p%mb), p%dfr)
          end associate
       end do
       if (present(dissip)) dissip = dis
    end subroutine emc_contact_forces
+
+   !> One pair's contribution (NREC reals): normal force on the slave and the torques of
+   !> slave and master (1:9), the friction force and torques (10:18), U(g(n)), U(g(n+1)), the
+   !> dissipated energy (19:21), then g0, g1, the discrete derivative, n1, the friction work
+   !> (22:28) that the pair keeps.
+   subroutine pair_contribution(es, k, p, r)
+      type(emc_system_t), intent(in) :: es
+      type(emc_kin_t), intent(in) :: k(:)
+      type(emc_pair_t), intent(in) :: p
+      real(wp), intent(out) :: r(NREC)
+      real(wp) :: g0, g1, nu(3), xp(3), rsm(3), rmm(3), eps, ub, f(3), u0, u1, ubd, dfr
+      logical :: inside
+      call pair_geometry(es, k, p, g0, g1, nu, xp, rsm, rmm, inside)
+      r = 0.0_wp
+      eps = es%defs(p%def)%eps
+      u0 = upen(eps, g0)
+      u1 = upen(eps, g1)
+      if (p%il > 0) then
+         ! Lagrange multiplier: f = lam nu, no stored energy (constraint g1 = g0)
+         u0 = 0.0_wp; u1 = 0.0_wp
+         ub = -p%lam
+      else
+         ub = discrete_gradient(eps, g0, g1)
+         ! algorithmic dissipation (HHT/Newmark parameters, rho_inf < 1): a force
+         ! chi eps (<g1> - <g0>) against the change of the penetration; it does the
+         ! work -chi eps (<g1> - <g0>)(g1 - g0) <= 0 along nu, so momenta stay exact.
+         ! Clamped so that the pair never pulls (that part dissipates too).
+         if (es%chi > 0.0_wp) then
+            ubd = min(ub + es%chi*eps*(min(g1, 0.0_wp) - min(g0, 0.0_wp)), 0.0_wp)
+            r(21) = (ubd - ub)*(g1 - g0)
+            ub = ubd
+         end if
+      end if
+      r(22) = g0; r(23) = g1; r(24) = ub
+      if (p%kind == PAIR_FACET) r(25:27) = matmul(k(p%mb)%r1, es%facets(p%facet)%n)
+      r(19) = u0
+      r(20) = u1
+      f = -ub*nu
+      r(1:3) = f
+      r(4:6) = cross(rsm, f)
+      r(7:9) = cross(rmm, f)
+      dfr = p%dfr
+      if (es%defs(p%def)%fs > 0.0_wp .and. ub < 0.0_wp) &
+         call friction(es%defs(p%def)%fs, es%defs(p%def)%dfric, -ub*norm2(nu), nu, &
+                       k(p%sb), k(p%mb), rsm - p%rs*nu/max(norm2(nu), tiny(1.0_wp)), &
+                       r(10:12), r(13:15), r(16:18), dfr)
+      r(28) = dfr
+   end subroutine pair_contribution
 end module dx_emc_contact

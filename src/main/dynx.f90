@@ -22,6 +22,7 @@ program dynx
    use dx_par_agree, only: par_agree, par_agreed
    use dx_par_engine, only: par_engine_setup, par_engine_global, par_engine_report, &
                             par_engine_together
+   use dx_par_emc, only: par_emc_together
    implicit none
    character(:), allocatable :: deck, outdir, arg, val, rfile, rdeck, partdir
    type(model_t) :: model
@@ -128,19 +129,23 @@ program dynx
                     rstr(model%time))
       if (len(rdeck) > 0) then
          call apply_restart_deck(rdeck, model, error)
-         if (.not. allocated(error) .and. par_size() > 1) &
+         if (.not. allocated(error) .and. par_size() > 1 .and. .not. allocated(model%emc)) &
             call apply_restart_deck(rdeck, par_engine_global(), error)
          call par_agree(error)
          if (allocated(error)) call die(error)
          call log_info('dynx: restart deck '//rdeck//' applied')
       end if
-      if (par_size() == 1) then
-         call out%resume(model, outdir, error)
+      if (par_size() == 1 .or. (par_rank() == 0 .and. allocated(model%emc))) then
+         call out%resume(model, outdir, error)   ! (MPI conserving solver: rank 0, whole model)
       else if (par_rank() == 0) then  ! MPI: rank 0 writes the output (global model)
          call out%resume(par_engine_global(), outdir, error)
       end if
    else if (par_size() > 1) then       ! an MPI run writes its output from rank 0
-      if (par_rank() == 0) call out%open(par_engine_global(), outdir, error)
+      if (par_rank() == 0 .and. allocated(model%emc)) then   ! conserving solver: whole model
+         call out%open(model, outdir, error)
+      else if (par_rank() == 0) then
+         call out%open(par_engine_global(), outdir, error)
+      end if
    else
       call out%open(model, outdir, error)
    end if
@@ -279,7 +284,8 @@ contains
       type(error_t), intent(in) :: err
       ! a failure every rank knows (it wrote the last plot state): rank 0 reports, all exit
       ! with the code; any other failure on one rank stops every rank (MPI_Abort)
-      if (par_size() > 1 .and. .not. (par_engine_together() .or. par_agreed())) &
+      if (par_size() > 1 .and. .not. (par_engine_together() .or. par_agreed() .or. &
+                                      par_emc_together())) &
          call par_abort(err%message, err%code)
       if (par_rank() == 0) call log_error(err%message)
       flush(error_unit)

@@ -45,6 +45,7 @@ module dx_par_engine
                              write_contact_report
    use dx_par_plot, only: par_plot_setup, par_plot_write, par_plot_finish
    use dx_par_agree, only: par_agree
+   use dx_par_emc, only: par_emc_setup
    implicit none
    private
    public :: par_engine_setup, par_engine_on, par_engine_mass, par_engine_initial, &
@@ -145,6 +146,10 @@ contains
       call read_rank_file(rank_file_name(dir, me), hash, np, me, rp, error)
       call par_agree(error)             ! a missing or wrong rank file: every rank stops
       if (allocated(error)) return
+      if (allocated(model%emc)) then   ! conserving solver: whole model, pairs split (dx_par_emc)
+         call par_emc_setup(model%emc, model%nn, rp%nodes, rp%node_owner)
+         return
+      end if
       ! the global model keeps the serial numbering; the rank's model becomes local
       g = model
       allocate(g%x(3, g%nn), g%v(3, g%nn), g%f(3, g%nn), g%mass(g%nn))
@@ -292,10 +297,7 @@ contains
       type(model_t), intent(in) :: model
       type(error_t), allocatable, intent(out) :: error
       character(:), allocatable :: what
-      what = ''
-      if (allocated(model%emc)) then
-         what = '*DYNX_CONSERVING_CONTACT (the conserving rigid-body solver)'
-      end if
+      what = ''   ! nothing at present (the conserving solver runs under MPI: dx_par_emc)
       if (len(what) > 0) call set_error(error, model%deck_file//': '//what// &
          ' is not supported in an MPI run yet; run this deck serially (without mpirun)', &
          EXIT_INPUT)

@@ -203,12 +203,13 @@ contains
       integer, allocatable :: fk(:, :), fn(:, :), fe(:), mark(:)
       type(emc_facet_t), allocatable :: fac(:)
       real(wp), allocatable :: sn(:, :)
+      integer, allocatable :: snn(:)
       integer, intent(out) :: ibad   !< a node of a zero-area face (0: none)
       real(wp) :: xe(3), nrm(3)
       logical :: shared
       ibad = 0
       nb = size(model%rigid%bodies)
-      allocate(es%fac_ptr(nb + 1), es%sn_ptr(nb + 1), fac(0), sn(3, 0))
+      allocate(es%fac_ptr(nb + 1), es%sn_ptr(nb + 1), fac(0), sn(3, 0), snn(0))
       allocate(mark(model%nn))
       es%fac_ptr(1) = 1
       es%sn_ptr(1) = 1
@@ -286,6 +287,7 @@ contains
             do i = 1, size(bd%nodes)
                if (mark(bd%nodes(i)) == 1) then
                   sn = reshape([sn, bd%s(:, i)], [3, size(sn, 2) + 1])
+                  snn = [snn, bd%nodes(i)]
                   cnt = cnt + 1
                end if
             end do
@@ -295,6 +297,7 @@ contains
       end do
       call move_alloc(fac, es%facets)
       call move_alloc(sn, es%snodes)
+      call move_alloc(snn, es%sn_node)
    end subroutine build_surfaces
 
    !> Cross product, kept local: inlined here it keeps the rounding that the conservation

@@ -102,6 +102,7 @@ module dx_emc_types
       integer, allocatable :: fac_ptr(:)                !< (nb+1) facets of body b
       real(wp), allocatable :: snodes(:, :)             !< surface nodes, body frame
       integer, allocatable :: sn_ptr(:)                 !< (nb+1) surface nodes of body b
+      integer, allocatable :: sn_node(:)                !< model node of each surface node
       type(emc_sphere_t), allocatable :: sphere(:)      !< (nb) r = 0: not spherical
       real(wp), allocatable :: w(:, :)                  !< (3, nb) body-frame angular velocity
       real(wp) :: dt = 0.0_wp

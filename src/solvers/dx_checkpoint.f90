@@ -16,6 +16,9 @@
 !> wall-clock limit) ride in the cycle's dt reduction (checkpoint_par_dt: MINLOC plus the
 !> largest flag, one MPI_Allreduce, no extra synchronization) and every rank acts on the
 !> reduced flags at the same cycle boundary; dumps are per-rank parts plus a manifest.
+!> MPI runs of the conserving solver (ck%replicated: every rank holds the whole state): the
+!> requests are reduced once per step (checkpoint_requests, one MPI_Allreduce of 3 flags) and
+!> rank 0 writes the serial dump and the last plot state.
 module dx_checkpoint
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_CHECKPOINT, EXIT_NUMERIC
@@ -25,7 +28,7 @@ module dx_checkpoint
    use dx_model, only: model_t
    use dx_output, only: output_t
    use dx_restart, only: restart_write
-   use dx_par, only: par_rank, par_size
+   use dx_par, only: par_rank, par_size, par_allreduce, PAR_MAX
    use dx_par_engine, only: par_engine_on, par_engine_dt, par_engine_flush_work, &
                             par_engine_plot, par_engine_plot_finish, par_engine_writer, &
                             par_engine_fail
@@ -37,7 +40,7 @@ module dx_checkpoint
    implicit none
    private
    public :: checkpoint_t, checkpoint_stage, checkpoint_failure_dump, checkpoint_energy_band, &
-             checkpoint_par_dt
+             checkpoint_par_dt, checkpoint_requests
 
    type :: checkpoint_t
       character(:), allocatable :: outdir       !< where dumps go (the output directory)
@@ -53,6 +56,8 @@ module dx_checkpoint
       integer :: raise_rank = -1                !< MPI: only this rank raises (-1: every rank)
       integer :: coll(3) = 0                    !< MPI: stop signal, SIGUSR1, wall-clock limit
                                                 !< of any rank (from checkpoint_par_dt)
+      logical :: replicated = .false.           !< MPI, conserving solver: every rank has the
+                                                !< whole state; rank 0 writes (dx_par_emc)
       logical :: endeng_hit = .false.           !< set by the solver ...
       real(wp) :: endeng_ratio = 1.0_wp         !< ... with the ratio, cycle and time
       integer :: endeng_cycle = 0
@@ -72,13 +77,14 @@ contains
       real(wp) :: now, margin, est
       integer :: sig, nr
       character(:), allocatable :: path, why, comb
-      logical :: par, dumpreq, writer
+      logical :: par, dumpreq, writer, coll
       type(model_t), pointer :: om
 
       stopped = .false.
       par = par_engine_on()
+      coll = par .or. ck%replicated     ! act on the reduced requests of every rank
       if (par .and. ck%dump_est < 0.0_wp) ck%dump_est = estimated_dump_cost(model)
-      if (ck%raise_cycle > 0 .and. model%cycle == ck%raise_cycle .and. &
+      if (.not. ck%replicated .and. ck%raise_cycle > 0 .and. model%cycle == ck%raise_cycle .and. &
           (ck%raise_rank < 0 .or. ck%raise_rank == par_rank())) call signal_raise(ck%raise_sig)
       now = wall_time()
       if (ck%last >= 0.0_wp) then
@@ -114,7 +120,7 @@ contains
             end if
          end if
       end if
-      if (par) then              ! the requests of every rank, reduced with this cycle's dt
+      if (coll) then             ! the requests of every rank, reduced with this cycle's dt
          dumpreq = ck%coll(2) /= 0
          ck%coll(2) = 0
       else
@@ -132,13 +138,13 @@ contains
       end if
       ! ---- stop requests
       sig = signal_stop_requested()
-      if (par) sig = ck%coll(1)
+      if (coll) sig = ck%coll(1)
       why = ''
       if (sig /= 0) then
          why = signal_name(sig)
       else if (ck%endeng_hit) then
          why = 'ENDENG'
-      else if (par) then
+      else if (coll) then
          if (ck%coll(3) /= 0) why = 'the wall-clock limit ('//rstr(ck%walltime, 4)// &
                                     ' s, on at least one rank)'
       else if (ck%walltime > 0.0_wp) then
@@ -161,7 +167,8 @@ contains
          call par_engine_plot(model, error)
          if (allocated(error)) call par_engine_fail(error)   ! this rank alone: stop all
       else
-         call out%write_plot(om, error)
+         writer = .not. ck%replicated .or. par_rank() == 0
+         if (writer) call out%write_plot(om, error)
          if (allocated(error)) return
       end if
       if (writer) call out%close(error)
@@ -186,7 +193,7 @@ contains
          call set_error(error, 'dynx: stopped by '//why//' at cycle '//str(model%cycle)// &
             ', time '//rstr(model%time)//'; restart dump '//path//' and the last plot '// &
             'state written'//comb//', all files closed.'//new_line('a')//'dynx: continue with: '// &
-            launcher(par)//'dynx -i '//ck%deck//' -o '//ck%outdir//' -r '//path, &
+            launcher(coll)//'dynx -i '//ck%deck//' -o '//ck%outdir//' -r '//path, &
             EXIT_CHECKPOINT)
       end if
    end subroutine checkpoint_stage
@@ -214,6 +221,32 @@ contains
       call par_engine_dt(dtcrit, dt_elem, error, flags)
       ck%coll = flags
    end subroutine checkpoint_par_dt
+
+   !> MPI runs of the conserving solver (ck%replicated), once per step before the
+   !> checkpoint: --raise-at-cycle, then this rank's stop signal, SIGUSR1 and wall-clock
+   !> limit, reduced (MAX) over the ranks into ck%coll, which checkpoint_stage acts on at the
+   !> same step on every rank. No-op otherwise.
+   subroutine checkpoint_requests(ck, model)
+      type(checkpoint_t), intent(inout) :: ck
+      type(model_t), intent(in) :: model
+      integer :: flags(3)
+      real(wp) :: est, now
+      if (.not. ck%replicated) return
+      if (ck%raise_cycle > 0 .and. model%cycle == ck%raise_cycle .and. &
+          (ck%raise_rank < 0 .or. ck%raise_rank == par_rank())) call signal_raise(ck%raise_sig)
+      flags = 0
+      flags(1) = signal_stop_requested()
+      if (signal_dump_requested()) flags(2) = 1
+      if (ck%walltime > 0.0_wp) then
+         now = wall_time()
+         est = ck%dump_cost
+         if (est < 0.0_wp) est = estimated_dump_cost(model)
+         if (now - ck%wall0 + 3.0_wp*ck%cycle_cost + 2.0_wp*est >= ck%walltime) flags(3) = 1
+      end if
+      flags(2) = max(flags(2), ck%coll(2))       ! a request not yet served stays
+      call par_allreduce(flags, PAR_MAX)
+      ck%coll = flags
+   end subroutine checkpoint_requests
 
    !> *CONTROL_TERMINATION ENDENG: note (once) that abs(energy ratio - 1)*100 > ENDENG at
    !> time t of this cycle; checkpoint_stage stops the run at the end of the cycle.
@@ -269,7 +302,7 @@ contains
          call par_engine_flush_work(model%run%wcon, model%run%wrw)
          call par_loads_flush(model%run%wext)   ! kept external-work terms (dx_par_loads)
          call par_restart_write(model, path, kind, error)
-      else
+      else if (.not. ck%replicated .or. par_rank() == 0) then   ! replicated: rank 0 writes
          call restart_write(model, path, kind, error)
       end if
       ck%dump_cost = max(ck%dump_cost, wall_time() - t0)

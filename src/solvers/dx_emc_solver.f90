@@ -34,6 +34,8 @@ module dx_emc_solver
    use dx_checkpoint, only: checkpoint_t, checkpoint_stage
    use dx_signals, only: signal_stop_requested, signal_dump_pending
    use dx_append_file, only: append_from
+   use dx_par_emc, only: par_emc_on, par_emc_writer, par_emc_set_together, par_emc_report
+   use dx_checkpoint, only: checkpoint_requests
    implicit none
    private
    public :: run_emc, emc_state_t, emc_init_state, emc_try_step, emc_energy, emc_momenta, &
@@ -174,7 +176,7 @@ contains
    end subroutine kinematics
 
    !> Residual of the midpoint equations; scale: momentum scale of the step.
-   subroutine residual(es, st, dt, y, pairs, npair, res, scale, upen1, dis)
+   subroutine residual(es, st, dt, y, pairs, npair, res, scale, upen1, dis, local)
       type(emc_system_t), intent(in) :: es
       type(emc_state_t), intent(in) :: st
       real(wp), intent(in) :: dt, y(:)
@@ -182,6 +184,7 @@ contains
       integer, intent(in) :: npair
       real(wp), intent(out) :: res(:), scale, upen1
       real(wp), intent(out), optional :: dis
+      logical, intent(in), optional :: local   !< MPI: evaluate the pairs on every rank
       type(emc_kin_t) :: k(st%nb)
       real(wp) :: rc(3, 3, st%nb), fo(3, st%nb), to(3, st%nb), upen0
       integer :: b, o, i, nb6
@@ -190,7 +193,7 @@ contains
          if (pairs(i)%il > 0) pairs(i)%lam = y(nb6 + pairs(i)%il)/dt
       end do
       call kinematics(st, dt, y, k, rc)
-      call emc_contact_forces(es, k, pairs, npair, fo, to, upen0, upen1, dis)
+      call emc_contact_forces(es, k, pairs, npair, fo, to, upen0, upen1, dis, local)
       scale = tiny(1.0_wp)
       do b = 1, st%nb
          o = 6*(b - 1)
@@ -437,7 +440,7 @@ contains
             end do
             if (found) cycle
             cand(i)%il = 0
-            call residual(es, st, dt, ysave, cand(i:i), 1, rp, sp, upen1)
+            call residual(es, st, dt, ysave, cand(i:i), 1, rp, sp, upen1, local=.true.)
             if (cand(i)%g1 >= 0.0_wp) cycle
             if (npair == size(pairs)) pairs = [pairs, pairs]
             npair = npair + 1
@@ -548,7 +551,7 @@ contains
       type(model_t), intent(in) :: model
       integer, intent(in) :: cyc
       due = ck%walltime > 0.0_wp .or. ck%raise_cycle == cyc .or. &
-            signal_stop_requested() /= 0 .or. signal_dump_pending()
+            signal_stop_requested() /= 0 .or. signal_dump_pending() .or. any(ck%coll /= 0)
       if (model%rst%d3dump_cycl > 0) due = due .or. mod(cyc, model%rst%d3dump_cycl) == 0
       if (model%rst%runrsf_cycl > 0) due = due .or. mod(cyc, model%rst%runrsf_cycl) == 0
    end function checkpoint_due
@@ -568,12 +571,15 @@ contains
                   de, dp, dl, next_out, next_plot, t0wall
       real(wp), allocatable :: lb(:, :)
       integer :: u, ios, cyc, b, ncut, itmax, ittot
-      logical :: ok, stopped
+      logical :: ok, stopped, wr
       character(256) :: iomsg
       character(:), allocatable :: outdir
       t0wall = wall_time()
       if (ck%wall0 <= 0.0_wp) ck%wall0 = t0wall
       outdir = ck%outdir
+      wr = par_emc_writer()              ! MPI: rank 0 writes emcstat and the plot states
+      ck%replicated = par_emc_on()       ! MPI: stop/dump requests reduced over the ranks
+      u = -1
       associate (es => model%emc)
          call emc_init_state(model, st)
          allocate(lb(3, st%nb))
@@ -581,22 +587,24 @@ contains
          dt = es%dt
          if (es%snap%valid) then
             call from_snapshot()
-            call append_from(outdir//'/emcstat', es%snap%emcstat_bytes, u, error)
+            if (wr) call append_from(outdir//'/emcstat', es%snap%emcstat_bytes, u, error)
             if (allocated(error)) return
             call emc_momenta(st, p, lb, lt, ps, ls)
             call log_info('emc: continuing at step '//str(cyc)//', time '//rstr(t))
          else
-            open(newunit=u, file=outdir//'/emcstat', status='replace', action='write', &
-                 iostat=ios, iomsg=iomsg)
-            if (ios /= 0) then
-               call set_error(error, outdir//'/emcstat: cannot open: '//trim(iomsg), EXIT_IO)
-               return
+            if (wr) then
+               open(newunit=u, file=outdir//'/emcstat', status='replace', action='write', &
+                    iostat=ios, iomsg=iomsg)
+               if (ios /= 0) then
+                  call set_error(error, outdir//'/emcstat: cannot open: '//trim(iomsg), EXIT_IO)
+                  return
+               end if
+               write(u, '(a)') '# dynx emcstat: energy-momentum conserving rigid-body contact '// &
+                  '(docs/conserving-contact.md)'
+               write(u, '(a,i0,a,es24.16e3)') '# bodies ', st%nb, ' dt ', dt
+               write(u, '(a)') '# cycle time ke upen etot px py pz lx ly lz iters resid npair '// &
+                  '[per body: xc yc zc lx ly lz (about the origin)]'
             end if
-            write(u, '(a)') '# dynx emcstat: energy-momentum conserving rigid-body contact '// &
-               '(docs/conserving-contact.md)'
-            write(u, '(a,i0,a,es24.16e3)') '# bodies ', st%nb, ' dt ', dt
-            write(u, '(a)') '# cycle time ke upen etot px py pz lx ly lz iters resid npair '// &
-               '[per body: xc yc zc lx ly lz (about the origin)]'
             t = 0.0_wp
             ke = emc_energy(st)
             e0 = ke + st%upen
@@ -611,7 +619,7 @@ contains
             itmax = 0; ittot = 0; ncut = 0
          end if
          es%snap%unit = u
-         es%snap%unit_open = .true.
+         es%snap%unit_open = wr
          call log_info('emc: conserving rigid-body solver, '//str(st%nb)//' bodies, dt '// &
                        rstr(dt)//', end time '//rstr(tend))
          do while (t < tend*(1.0_wp - 1.0e-12_wp))
@@ -624,6 +632,7 @@ contains
                   ' after '//str(rep%iters)//' iterations (tolerance '//rstr(es%rtol)// &
                   '; *DYNX_CONSERVING_CONTROL MAXIT, NFAIL); last converged state written', &
                   EXIT_NUMERIC)
+               call par_emc_set_together()     ! every rank failed at this step (same data)
                exit
             end if
             cyc = cyc + 1
@@ -646,18 +655,19 @@ contains
             ! ---- restart dumps and stop requests, at this step boundary
             model%time = t
             model%cycle = cyc
+            call checkpoint_requests(ck, model)    ! MPI: every rank's requests, reduced
             if (checkpoint_due(ck, model, cyc)) then
                call to_model(st, model)
                call to_snapshot()
             end if
             call checkpoint_stage(ck, model, out, stopped, error)
             if (stopped) then
-               close(u)
+               if (wr) close(u)
                es%snap%unit_open = .false.
                return
             end if
          end do
-         close(u)
+         if (wr) close(u)
          es%snap%unit_open = .false.
          call plot()
          call log_info('emc: '//str(cyc)//' steps to time '//rstr(t)//', Newton iterations '// &
@@ -669,12 +679,34 @@ contains
          call log_info('emc: max relative drift over the run: energy '//rstr(de)// &
             ', linear momentum '//rstr(dp)//', angular momentum '//rstr(dl))
          call log_info('emc: wall time '//rstr(wall_time() - t0wall, 4)//' s')
+         call par_emc_report(cyc)
+         call energy_bits_line()
       end associate
       if (allocated(ioerr) .and. .not. allocated(error)) call move_alloc(ioerr, error)
-      call out%close(ioerr)
+      if (wr) call out%close(ioerr)
       if (allocated(ioerr) .and. .not. allocated(error)) call move_alloc(ioerr, error)
    contains
+      !> DYNX_ENERGY_BITS=1: the final energies and momenta as IEEE-754 bit patterns (the
+      !> serial and MPI runs compared bitwise, scripts/mpi_bitwise_check.sh)
+      subroutine energy_bits_line()
+         character(8) :: env
+         character(17) :: hx
+         character(:), allocatable :: line
+         real(wp) :: v(9)
+         integer :: j, l, stat
+         call get_environment_variable('DYNX_ENERGY_BITS', env, length=l, status=stat)
+         if (stat /= 0 .or. l == 0) return
+         if (env(1:1) == '0') return
+         v = [ke, st%upen, st%ediss, p, lt]
+         line = 'dynx: energy bits (KE UPEN EDISS PX PY PZ LX LY LZ):'
+         do j = 1, size(v)
+            write(hx, '(1x,z16.16)') transfer(v(j), 0_8)
+            line = line//hx
+         end do
+         call log_info(line)
+      end subroutine energy_bits_line
       subroutine write_line()
+         if (.not. wr) return
          write(u, '(i10,4es25.16e3,6es25.16e3,i6,es10.2e3,i6)', advance='no') cyc, t, ke, &
             st%upen, ke + st%upen, p, lt, rep%iters, rep%resid, rep%npair
          do b = 1, st%nb
@@ -686,7 +718,7 @@ contains
          call to_model(st, model)
          model%time = t
          model%cycle = cyc
-         call out%write_plot(model, ioerr)
+         if (wr) call out%write_plot(model, ioerr)
       end subroutine plot
       !> the state and loop variables into model%emc%snap (written by a dump)
       subroutine to_snapshot()

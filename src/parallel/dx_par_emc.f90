@@ -1,0 +1,164 @@
+!> The conserving rigid-body contact solver (dx_emc_solver) under MPI (ParaDyn; issue 6).
+!> Every rank holds the whole (small) rigid-body state and repeats the Newton update of the
+!> bodies (6 unknowns per body) identically; the work that grows with the model, the contact
+!> pairs of the slave points (surface nodes, or a smoothed slave's centre) against the master
+!> geometry, is split: a slave point is searched (emc_select_pairs) and its pairs evaluated
+!> (emc_contact_forces) by the rank that owns its node in the partition the explicit engine
+!> uses (the rank files of dynx-part, dx_partition). The results are gathered keyed by their
+!> serial position (par_gather_ordered: MPI_Allgatherv, then a stable sort by key) and every
+!> rank adds the per-pair force/torque contributions in the serial pair order with the serial
+!> code, so the sums, and every file, are those of the serial run bit for bit. Fixed-order
+!> sums: the idea of OpenRadioss /PARITH/ON; one exchange of the per-pair results per
+!> residual: ParaDyn (Hoover et al., LLNL Engineering Thrust Area Report FY97, article 4).
+!> Output, restart dumps (serial format) and the last plot state are written by rank 0;
+!> stop and dump requests are reduced over the ranks at every step (dx_checkpoint).
+!> A deck without *DYNX_CONSERVING_CONTACT, or a serial run, never calls this (on = .false.).
+!> Module state (allowed in parallel/): the slot ownership and the exchange counters.
+module dx_par_emc
+   use dx_kinds, only: wp
+   use dx_strings, only: str, rstr
+   use dx_log, only: log_info
+   use dx_par, only: par_rank, par_size, par_gather_ordered, par_wtime, par_allreduce, PAR_SUM
+   use dx_emc_types, only: emc_system_t
+   implicit none
+   private
+   public :: par_emc_setup, par_emc_on, par_emc_mine, par_emc_slot, par_emc_gather, &
+             par_emc_report, par_emc_set_together, par_emc_together, par_emc_writer
+
+   logical, save :: on = .false.
+   logical, save :: together = .false.      !< a failure every rank found (replicated Newton)
+   integer, allocatable, save :: base(:)    !< (ndefs) first slot of each contact definition
+   logical, allocatable, save :: mine(:)    !< (nslots) this rank evaluates the slot
+   !> counters: gathers, values sent by this rank, values received, wall time in the gathers
+   integer(8), save :: ngath = 0, nsent = 0, nrecv = 0
+   real(wp), save :: tgath = 0.0_wp
+
+contains
+
+   !> MPI run of a conserving deck: the slot ownership from the rank's part. nodes, owner:
+   !> the rank file's global nodes and their owning ranks (rank_part_t).
+   subroutine par_emc_setup(es, nn, nodes, owner)
+      type(emc_system_t), intent(in) :: es
+      integer, intent(in) :: nn, nodes(:), owner(:)
+      logical, allocatable :: owned(:)
+      integer :: id, sb, n, i, i1, i2, s, me
+      integer, allocatable :: cnt(:)
+      character(:), allocatable :: txt
+      me = par_rank()
+      allocate(owned(nn))
+      owned = .false.
+      owned(pack(nodes, owner == me)) = .true.
+      allocate(base(size(es%defs)))
+      n = 0
+      do id = 1, size(es%defs)
+         base(id) = n + 1
+         call slot_range(es, id, i1, i2)
+         n = n + (i2 - i1 + 1)
+      end do
+      allocate(mine(n))
+      mine = .false.
+      do id = 1, size(es%defs)
+         sb = es%defs(id)%sb
+         call slot_range(es, id, i1, i2)
+         do i = i1, i2
+            s = base(id) + (i - i1)
+            if (i > 0) then
+               mine(s) = owned(es%sn_node(i))
+            else if (es%sn_ptr(sb + 1) > es%sn_ptr(sb)) then
+               mine(s) = owned(es%sn_node(es%sn_ptr(sb)))   ! the sphere's first surface node
+            else
+               mine(s) = me == 0
+            end if
+         end do
+      end do
+      allocate(cnt(0:par_size() - 1))
+      cnt = 0
+      cnt(me) = count(mine)
+      call par_allreduce(cnt, PAR_SUM)
+      on = .true.
+      txt = ''
+      do i = 0, par_size() - 1
+         txt = txt//' '//str(cnt(i))
+      end do
+      call log_info('dynx: conserving solver on '//str(par_size())//' ranks: '//str(n)// &
+                    ' slave points, per rank:'//txt)
+   end subroutine par_emc_setup
+
+   !> The slave points of definition id: i1..i2 index es%snodes (0..0: the sphere's centre).
+   pure subroutine slot_range(es, id, i1, i2)
+      type(emc_system_t), intent(in) :: es
+      integer, intent(in) :: id
+      integer, intent(out) :: i1, i2
+      integer :: sb
+      sb = es%defs(id)%sb
+      if (es%sphere(sb)%r > 0.0_wp .and. es%sphere(sb)%side == 0) then
+         i1 = 0; i2 = 0
+      else
+         i1 = es%sn_ptr(sb); i2 = es%sn_ptr(sb + 1) - 1
+      end if
+   end subroutine slot_range
+
+   !> True in an MPI run (NP > 1) of a conserving deck.
+   logical function par_emc_on()
+      par_emc_on = on
+   end function par_emc_on
+
+   !> The serial position of slave point src of definition id (slots in serial loop order).
+   integer function par_emc_slot(es, id, src) result(s)
+      type(emc_system_t), intent(in) :: es
+      integer, intent(in) :: id, src
+      integer :: i1, i2
+      call slot_range(es, id, i1, i2)
+      s = base(id) + (src - i1)
+   end function par_emc_slot
+
+   !> This rank searches and evaluates slave point src of definition id (always when off).
+   logical function par_emc_mine(es, id, src)
+      type(emc_system_t), intent(in) :: es
+      integer, intent(in) :: id, src
+      par_emc_mine = .true.
+      if (on) par_emc_mine = mine(par_emc_slot(es, id, src))
+   end function par_emc_mine
+
+   !> Every rank's (key, values) in serial order (a stable sort by key: equal keys keep
+   !> their rank-local order); counted for the report.
+   subroutine par_emc_gather(keys, vals, all_keys, all_vals)
+      integer, intent(in) :: keys(:)
+      real(wp), intent(in) :: vals(:, :)
+      integer, allocatable, intent(out) :: all_keys(:)
+      real(wp), allocatable, intent(out) :: all_vals(:, :)
+      real(wp) :: t0
+      t0 = par_wtime()
+      call par_gather_ordered(keys, vals, all_keys, all_vals)
+      tgath = tgath + (par_wtime() - t0)
+      ngath = ngath + 1
+      nsent = nsent + size(vals) + size(keys)
+      nrecv = nrecv + size(all_vals) + size(all_keys)
+   end subroutine par_emc_gather
+
+   !> A failure every rank found at the same step (Newton, on identical data): a clean stop
+   !> on every rank with the serial exit code, no MPI_Abort.
+   subroutine par_emc_set_together()
+      together = .true.
+   end subroutine par_emc_set_together
+
+   logical function par_emc_together()
+      par_emc_together = on .and. together
+   end function par_emc_together
+
+   !> This rank writes the output (rank 0 of an MPI run; always in a serial run).
+   logical function par_emc_writer()
+      par_emc_writer = .not. on .or. par_rank() == 0
+   end function par_emc_writer
+
+   !> The exchange counters of the run (log, rank 0): per step when nstep > 0.
+   subroutine par_emc_report(nstep)
+      integer, intent(in) :: nstep
+      if (.not. on) return
+      call log_info('dynx: conserving solver MPI exchange (rank 0): '//str(int(ngath))// &
+         ' ordered gathers, '//str(int(nrecv))//' numbers received ('// &
+         rstr(real(nrecv, wp)/max(nstep, 1), 5)//' per step, '// &
+         rstr(real(ngath, wp)/max(nstep, 1), 5)//' gathers per step), '//str(int(nsent))// &
+         ' sent, '//rstr(tgath, 4)//' s in the gathers')
+   end subroutine par_emc_report
+end module dx_par_emc
