@@ -31,8 +31,9 @@ module dx_par_engine
    use dx_deck, only: read_deck_input
    use dx_par, only: par_rank, par_size, par_abort, par_minloc, par_gather_ordered, &
                      par_allreduce, par_barrier, PAR_MAX, gather_plan_t, par_gather_setup, &
-                     par_gather_values, par_wtime, PAR_SUM, par_bcast_text, par_minloc_flags, &
-                     par_gather_setup_root, par_gather_values_root, par_bcast_real
+                     par_gather_values, par_wtime, PAR_SUM, par_bcast_text, &
+                     par_gather_setup_root, par_gather_values_root, par_bcast_real, par_minloc8
+   use dx_sort, only: sort_index
    use dx_par_model, only: par_model_t, par_model_build, par_fill_slots, par_exchange_forces, &
                            par_exchange_mass
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report
@@ -84,6 +85,17 @@ module dx_par_engine
    !> contact and rigid bodies, whose stages read g's nodal arrays on every rank.
    logical, save :: root_only = .false.
    logical, save :: trimmed = .false.
+   !> The dt reduction's key names its element: key = serial order key * kmult + element
+   !> (kmult = ne + 1 while that stays below 2**53, else 0 and the key_elem table is kept).
+   !> Each rank keys its own elements (lel ascending, lkey their serial order keys) and the
+   !> element of the last reduction (stale_*: a rank without deformable elements passes the
+   !> previous step's element on), so no rank holds a whole-model table for it.
+   integer(int64), save :: kmult = 0
+   integer(int64), parameter :: KEY_NONE = 2_int64**53 - 1
+   integer, allocatable, save :: lel(:)
+   integer(int64), allocatable, save :: lkey(:)
+   integer, save :: stale_elem = 0
+   integer(int64), save :: stale_key = 0
 
 contains
 
@@ -200,11 +212,32 @@ contains
       call par_loads_setup(model, g, rp, pm, loc, owned)   ! external loads (dx_par_loads)
       call par_rigid_setup(g, pm, owned)                   ! rigid bodies (dx_par_rigid)
       if (allocated(g%contact)) call par_contact_setup(model, g, pm%node_global, owned)
-      allocate(key_elem(size(g%blocks)*nv_chunk))
-      key_elem = 0
-      do k = 1, size(g%blocks)
-         key_elem((k - 1)*nv_chunk + 1:(k - 1)*nv_chunk + g%blocks(k)%nel) = g%blocks(k)%elem
-      end do
+      kmult = int(g%ne, int64) + 1
+      if (real(size(g%blocks)*int(nv_chunk, int64) + 1, wp)*real(kmult, wp) >= &
+          real(KEY_NONE, wp)) kmult = 0
+      if (kmult == 0) then    ! a model too large for the key to carry the element
+         allocate(key_elem(size(g%blocks)*nv_chunk))
+         key_elem = 0
+         do k = 1, size(g%blocks)
+            key_elem((k - 1)*nv_chunk + 1:(k - 1)*nv_chunk + g%blocks(k)%nel) = &
+               g%blocks(k)%elem
+         end do
+      end if
+      block
+         integer :: b, j, n
+         integer, allocatable :: ids(:), idx(:)
+         n = sum([(model%blocks(b)%nel, b = 1, size(model%blocks))])
+         allocate(ids(n))
+         n = 0
+         do b = 1, size(model%blocks)
+            ids(n + 1:n + model%blocks(b)%nel) = model%blocks(b)%elem(1:model%blocks(b)%nel)
+            n = n + model%blocks(b)%nel
+         end do
+         idx = [(j, j = 1, n)]
+         call sort_index(idx, ids)
+         lel = ids(idx)
+         lkey = [(serial_key(lel(j)), j = 1, n)]
+      end block
       call constrained_nodes(g, gcnodes)
       allocate(gcpos(g%nn), gvfree(3, size(gcnodes)))
       gcpos = 0
@@ -364,7 +397,7 @@ contains
          call hex8_mass_share(model%blocks(b), &
             model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%ro, mext, cext)
       end do
-      call trim_global()      ! the last set-up step of run_explicit (after a restart read)
+      call trim_global(model)   ! the last set-up step of run_explicit (after a restart read)
    end subroutine par_engine_mass_share
 
    !> End of set-up (every rank, once): what of the global model g the run no longer needs
@@ -374,10 +407,15 @@ contains
    !> its own part plus the index maps of the dt reduction. Rank 0, the gather root, keeps
    !> the nodal state and the element energies it sums, and frees the rest of the elements'
    !> arrays. The sizes left are logged (mem_report).
-   subroutine trim_global()
+   subroutine trim_global(model)
+      type(model_t), intent(in) :: model
       integer :: k
       if (trimmed) return
       trimmed = .true.
+      if (model%dt_elem > 0) then          ! a restart's element of the last reduction
+         stale_elem = model%dt_elem
+         stale_key = serial_key(stale_elem)
+      end if
       do k = 1, size(g%blocks)
          associate (b => g%blocks(k))
             if (allocated(b%conn)) deallocate(b%conn)
@@ -399,6 +437,8 @@ contains
       if (par_rank() > 0) then
          if (allocated(g%elem_label)) deallocate(g%elem_label)
          if (allocated(g%elem_part)) deallocate(g%elem_part)
+         if (allocated(g%elem_block)) deallocate(g%elem_block)   ! rank 0: energies' places
+         if (allocated(g%elem_pos)) deallocate(g%elem_pos)
          if (root_only) then
             call par_loads_take_mass()      ! the loads on shared nodes keep their masses
             if (allocated(g%x)) deallocate(g%x)
@@ -533,30 +573,72 @@ contains
       integer, intent(inout) :: dt_elem
       type(error_t), allocatable, intent(inout) :: error
       integer, intent(inout), optional :: flags(:)
-      integer :: key
+      integer(int64) :: key
       real(wp) :: t0
-      key = huge(key)
-      if (dt_elem > 0 .and. dtcrit < huge_wp) key = (g%elem_block(dt_elem) - 1)*nv_chunk + &
-                                                     g%elem_pos(dt_elem)
+      key = KEY_NONE
+      if (dt_elem > 0 .and. dtcrit < huge_wp) then
+         key = elem_key(dt_elem)
+         if (kmult > 0) key = key*kmult + dt_elem
+      end if
       if (allocated(pending)) then
          dtcrit = -1.0_wp
          key = par_rank()
       end if
       t0 = par_wtime()
-      if (present(flags)) then
-         call par_minloc_flags(dtcrit, key, flags)
-      else
-         call par_minloc(dtcrit, key)
-      end if
+      call par_minloc8(dtcrit, key, flags)
       t_dt = t_dt + (par_wtime() - t0)
       if (dtcrit < 0.0_wp) then
-         call failure_known(key, error)
+         call failure_known(int(key), error)
          return
       end if
       ! no deformable element anywhere: the rigid elements' step (as the serial ibmin == 0)
       if (dtcrit >= huge_wp .and. allocated(g%rigid)) dtcrit = g%rigid%dtcrit
-      if (key > 0 .and. key <= size(key_elem)) dt_elem = key_elem(key)
+      if (key >= KEY_NONE) return
+      if (kmult > 0) then
+         dt_elem = int(mod(key, kmult))
+         stale_key = key/kmult
+      else
+         if (key <= 0 .or. key > size(key_elem)) return
+         dt_elem = key_elem(key)
+         stale_key = key
+      end if
+      stale_elem = dt_elem
    end subroutine par_engine_dt
+
+   !> The serial order key (serial block - 1)*nv_chunk + position of global element e, from
+   !> the global model's maps (set-up; rank 0 keeps them).
+   integer(int64) function serial_key(e)
+      integer, intent(in) :: e
+      serial_key = int(g%elem_block(e) - 1, int64)*nv_chunk + g%elem_pos(e)
+   end function serial_key
+
+   !> The serial order key of element e: one of this rank's elements, or the element the
+   !> last reduction named (a rank whose element pass found no deformable element keeps it).
+   integer(int64) function elem_key(e)
+      integer, intent(in) :: e
+      integer :: lo, hi, mid
+      lo = 1
+      hi = size(lel)
+      do while (lo <= hi)
+         mid = (lo + hi)/2
+         if (lel(mid) == e) then
+            elem_key = lkey(mid)
+            return
+         else if (lel(mid) < e) then
+            lo = mid + 1
+         else
+            hi = mid - 1
+         end if
+      end do
+      if (e == stale_elem) then
+         elem_key = stale_key
+      else if (allocated(g%elem_block)) then
+         elem_key = serial_key(e)
+      else
+         call par_abort('internal error: rank '//str(par_rank())//' has no order key for '// &
+                        'element '//str(e)//' (dt reduction)', EXIT_INPUT)
+      end if
+   end function elem_key
 
    !> A failure found on this rank alone, in the middle of a cycle: kept until the next dt
    !> reduction (or par_engine_sync_failure) makes it known to every rank. error is
