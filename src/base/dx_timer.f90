@@ -3,7 +3,7 @@ module dx_timer
    use dx_kinds, only: wp, i8
    implicit none
    private
-   public :: wall_time, peak_memory_kb
+   public :: wall_time, peak_memory_kb, current_memory_kb
 contains
    !> Seconds since an arbitrary origin, from system_clock.
    function wall_time() result(t)
@@ -16,6 +16,19 @@ contains
    !> Peak resident memory of this process in KiB (VmHWM from /proc/self/status; 0 if unknown).
    function peak_memory_kb() result(kb)
       integer(i8) :: kb
+      kb = status_kb('VmHWM:')
+   end function peak_memory_kb
+
+   !> Resident memory of this process now in KiB (VmRSS; 0 if unknown).
+   function current_memory_kb() result(kb)
+      integer(i8) :: kb
+      kb = status_kb('VmRSS:')
+   end function current_memory_kb
+
+   !> A "Name: value kB" line of /proc/self/status (0 if unknown).
+   function status_kb(name) result(kb)
+      character(6), intent(in) :: name
+      integer(i8) :: kb
       character(256) :: line
       integer :: u, ios
       kb = 0
@@ -24,11 +37,11 @@ contains
       do
          read(u, '(a)', iostat=ios) line
          if (ios /= 0) exit
-         if (line(1:6) == 'VmHWM:') then
+         if (line(1:6) == name) then
             read(line(7:), *, iostat=ios) kb
             exit
          end if
       end do
       close(u)
-   end function peak_memory_kb
+   end function status_kb
 end module dx_timer

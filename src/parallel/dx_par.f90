@@ -27,6 +27,7 @@ module dx_par
              par_shared_sum_plain, par_wtime, par_minloc, par_gather_ordered, PAR_SUM, &
              gather_plan_t, par_gather_setup, par_gather_values, &
              PAR_MIN, PAR_MAX, par_bcast_text, par_minloc_flags, par_alltoallv
+   public :: par_gather_setup_root, par_gather_values_root, par_bcast_real, par_minloc8
 
    integer, parameter :: PAR_SUM = 1, PAR_MIN = 2, PAR_MAX = 3
    integer, parameter :: TAG_COUNT = 101, TAG_KEYS = 102, TAG_VALUES = 103
@@ -665,4 +666,92 @@ contains
          par_wtime = real(c, wp)/real(r, wp)
       end if
    end function par_wtime
+   !> par_gather_setup for a gather to rank 0 only (par_gather_values_root): rank 0 gets
+   !> every rank's keys (plan%keys, ascending; plan%perm), the other ranks keep only the
+   !> counts (plan%counts: sum(plan%counts) is the total everywhere; keys and perm are empty
+   !> there), so no rank but 0 holds the whole key list.
+   subroutine par_gather_setup_root(plan, keys)
+      type(gather_plan_t), intent(out) :: plan
+      integer, intent(in) :: keys(:)
+      integer, allocatable :: kk(:)
+      integer :: r, ierr, i
+      plan%n = size(keys)
+      if (.not. mpi_on) then
+         call par_gather_setup(plan, keys)
+         return
+      end if
+      allocate(plan%counts(0:nranks - 1), plan%displs(0:nranks - 1))
+      call MPI_Allgather(size(keys), 1, MPI_INTEGER, plan%counts, 1, MPI_INTEGER, comm, ierr)
+      call check(ierr, 'MPI_Allgather (root gather plan counts)')
+      plan%displs(0) = 0
+      do r = 1, nranks - 1
+         plan%displs(r) = plan%displs(r - 1) + plan%counts(r - 1)
+      end do
+      allocate(kk(merge(sum(plan%counts), 0, my_rank == 0)))
+      call MPI_Gatherv(keys, size(keys), MPI_INTEGER, kk, plan%counts, plan%displs, &
+                       MPI_INTEGER, 0, comm, ierr)
+      call check(ierr, 'MPI_Gatherv (root gather plan keys)')
+      plan%perm = [(i, i = 1, size(kk))]
+      call sort_index(plan%perm, kk)
+      plan%keys = kk(plan%perm)
+   end subroutine par_gather_setup_root
+
+   !> One call of a root plan (par_gather_setup_root): vals(ncomp, plan%n) from every rank
+   !> into all_vals(ncomp, size(plan%keys)) on rank 0, ordered as plan%keys (the same
+   !> numbers par_gather_values gives every rank); all_vals is not touched on other ranks.
+   subroutine par_gather_values_root(plan, vals, all_vals)
+      type(gather_plan_t), intent(in) :: plan
+      real(wp), intent(in) :: vals(:, :)
+      real(wp), intent(inout) :: all_vals(:, :)
+      real(wp), allocatable :: vv(:, :)
+      integer :: ncomp, ierr
+      ncomp = size(vals, 1)
+      if (.not. mpi_on) then
+         all_vals(:, 1:plan%n) = vals(:, plan%perm)
+         return
+      end if
+      allocate(vv(ncomp, size(plan%keys)))
+      call MPI_Gatherv(vals, ncomp*plan%n, MPI_DOUBLE_PRECISION, vv, ncomp*plan%counts, &
+                       ncomp*plan%displs, MPI_DOUBLE_PRECISION, 0, comm, ierr)
+      call check(ierr, 'MPI_Gatherv (root gather plan values)')
+      if (my_rank == 0) all_vals(:, 1:size(plan%keys)) = vv(:, plan%perm)
+   end subroutine par_gather_values_root
+
+   !> x from rank root to every rank (MPI_Bcast): results formed on one rank, bit for bit.
+   subroutine par_bcast_real(x, root)
+      real(wp), intent(inout) :: x(:)
+      integer, intent(in) :: root
+      integer :: ierr
+      if (.not. mpi_on) return
+      call MPI_Bcast(x, size(x), MPI_DOUBLE_PRECISION, root, comm, ierr)
+      call check(ierr, 'MPI_Bcast (values)')
+   end subroutine par_bcast_real
+
+   !> par_minloc (and par_minloc_flags when flags are given) with a 64-bit key (< 2**53, it
+   !> travels as a double): a key that carries the element itself, so no rank needs a
+   !> whole-model table to name the element controlling the step.
+   subroutine par_minloc8(x, key, flags)
+      real(wp), intent(inout) :: x
+      integer(int64), intent(inout) :: key
+      integer, intent(inout), optional :: flags(:)
+      integer :: nf, ierr, k
+      real(wp), allocatable :: pin(:, :), pout(:, :)
+      if (.not. mpi_on) return
+      nf = 0
+      if (present(flags)) nf = size(flags)
+      allocate(pin(2, 1 + nf), pout(2, 1 + nf))
+      pin(1, 1) = x
+      pin(2, 1) = real(key, wp)
+      do k = 1, nf
+         pin(1, 1 + k) = -real(flags(k), wp)
+         pin(2, 1 + k) = 0.0_wp
+      end do
+      call MPI_Allreduce(pin, pout, 1 + nf, MPI_2DOUBLE_PRECISION, MPI_MINLOC, comm, ierr)
+      call check(ierr, 'MPI_Allreduce (MINLOC, 64-bit key)')
+      x = pout(1, 1)
+      key = nint(pout(2, 1), int64)
+      do k = 1, nf
+         flags(k) = -nint(pout(1, 1 + k))
+      end do
+   end subroutine par_minloc8
 end module dx_par

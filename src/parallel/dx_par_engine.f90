@@ -20,16 +20,20 @@
 !> (Hoover et al., LLNL Engineering Thrust Area Report FY97, article 4 of shared/seed).
 !> Module state (allowed in parallel/): the global model, the rank's plan and maps.
 module dx_par_engine
+   use, intrinsic :: iso_fortran_env, only: int64
    use dx_kinds, only: wp, nv_chunk, huge_wp
+   use dx_timer, only: current_memory_kb
    use dx_error, only: error_t, set_error, EXIT_INPUT
    use dx_strings, only: str, rstr
    use dx_log, only: log_info, log_set_quiet
-   use dx_model, only: model_t
+   use dx_model, only: model_t, elem_block_t
    use dx_model_input, only: model_input_t
    use dx_deck, only: read_deck_input
    use dx_par, only: par_rank, par_size, par_abort, par_minloc, par_gather_ordered, &
                      par_allreduce, par_barrier, PAR_MAX, gather_plan_t, par_gather_setup, &
-                     par_gather_values, par_wtime, PAR_SUM, par_bcast_text, par_minloc_flags
+                     par_gather_values, par_wtime, PAR_SUM, par_bcast_text, &
+                     par_gather_setup_root, par_gather_values_root, par_bcast_real, par_minloc8
+   use dx_sort, only: sort_index
    use dx_par_model, only: par_model_t, par_model_build, par_fill_slots, par_exchange_forces, &
                            par_exchange_mass
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report
@@ -38,7 +42,7 @@ module dx_par_engine
    use dx_energy_sums, only: initial_kinetic, kinetic_energy, element_energies, &
                              constraint_work, set_energy, constrained_nodes
    use dx_constraints, only: apply_rigidwalls
-   use dx_par_loads, only: par_loads_setup
+   use dx_par_loads, only: par_loads_setup, par_loads_take_mass
    use dx_hex8, only: hex8_mass_share
    use dx_par_rigid, only: par_rigid_setup
    use dx_par_contact, only: par_contact_setup, par_contact_report, contact_groups, &
@@ -78,6 +82,22 @@ module dx_par_engine
    type(error_t), allocatable, save :: pending     !< a failure found here, not yet known to all
    logical, save :: together = .false.             !< a failure every rank knows (clean stop)
    character(16), save :: deck_hash = ''              !< content hash of the deck (restart)
+   !> Rank 0 alone holds the global model's nodal state and forms the ordered sums (the
+   !> other ranks get the results by MPI_Bcast and free g after set-up): decks without
+   !> contact and rigid bodies, whose stages read g's nodal arrays on every rank.
+   logical, save :: root_only = .false.
+   logical, save :: trimmed = .false.
+   !> The dt reduction's key names its element: key = serial order key * kmult + element
+   !> (kmult = ne + 1 while that stays below 2**53, else 0 and the key_elem table is kept).
+   !> Each rank keys its own elements (lel ascending, lkey their serial order keys) and the
+   !> element of the last reduction (stale_*: a rank without deformable elements passes the
+   !> previous step's element on), so no rank holds a whole-model table for it.
+   integer(int64), save :: kmult = 0
+   integer(int64), parameter :: KEY_NONE = 2_int64**53 - 1
+   integer, allocatable, save :: lel(:)
+   integer(int64), allocatable, save :: lkey(:)
+   integer, save :: stale_elem = 0
+   integer(int64), save :: stale_key = 0
 
 contains
 
@@ -150,8 +170,23 @@ contains
          call par_emc_setup(model%emc, model%nn, rp%nodes, rp%node_owner)
          return
       end if
-      ! the global model keeps the serial numbering; the rank's model becomes local
-      g = model
+      ! the global model keeps the serial numbering; the rank's model becomes local. The
+      ! big arrays move into g (no second copy of the serial model on any rank).
+      root_only = .not. (allocated(model%contact) .or. allocated(model%rigid))
+      block
+         type(elem_block_t), allocatable :: tb(:)
+         real(wp), allocatable :: tx0(:, :), tv0(:, :)
+         integer, allocatable :: tlab(:)
+         call move_alloc(model%blocks, tb)
+         call move_alloc(model%x0, tx0)
+         call move_alloc(model%v0, tv0)
+         call move_alloc(model%node_label, tlab)
+         g = model
+         call move_alloc(tb, g%blocks)
+         call move_alloc(tx0, g%x0)
+         call move_alloc(tv0, g%v0)
+         call move_alloc(tlab, g%node_label)
+      end block
       allocate(g%x(3, g%nn), g%v(3, g%nn), g%f(3, g%nn), g%mass(g%nn))
       g%x = g%x0
       g%v = g%v0
@@ -159,7 +194,7 @@ contains
       g%mass = 0.0_wp
       allocate(gvold(3, g%nn))
       gvold = 0.0_wp
-      call par_model_build(model, rp, pm)
+      call par_model_build(g, rp, pm)
       allocate(loc(g%nn))
       loc = 0
       loc(rp%nodes) = [(i, i = 1, pm%nloc)]
@@ -185,11 +220,32 @@ contains
       call par_loads_setup(model, g, rp, pm, loc, owned)   ! external loads (dx_par_loads)
       call par_rigid_setup(g, pm, owned)                   ! rigid bodies (dx_par_rigid)
       if (allocated(g%contact)) call par_contact_setup(model, g, pm%node_global, owned)
-      allocate(key_elem(size(g%blocks)*nv_chunk))
-      key_elem = 0
-      do k = 1, size(g%blocks)
-         key_elem((k - 1)*nv_chunk + 1:(k - 1)*nv_chunk + g%blocks(k)%nel) = g%blocks(k)%elem
-      end do
+      kmult = int(g%ne, int64) + 1
+      if (real(size(g%blocks)*int(nv_chunk, int64) + 1, wp)*real(kmult, wp) >= &
+          real(KEY_NONE, wp)) kmult = 0
+      if (kmult == 0) then    ! a model too large for the key to carry the element
+         allocate(key_elem(size(g%blocks)*nv_chunk))
+         key_elem = 0
+         do k = 1, size(g%blocks)
+            key_elem((k - 1)*nv_chunk + 1:(k - 1)*nv_chunk + g%blocks(k)%nel) = &
+               g%blocks(k)%elem
+         end do
+      end if
+      block
+         integer :: b, j, n
+         integer, allocatable :: ids(:), idx(:)
+         n = sum([(model%blocks(b)%nel, b = 1, size(model%blocks))])
+         allocate(ids(n))
+         n = 0
+         do b = 1, size(model%blocks)
+            ids(n + 1:n + model%blocks(b)%nel) = model%blocks(b)%elem(1:model%blocks(b)%nel)
+            n = n + model%blocks(b)%nel
+         end do
+         idx = [(j, j = 1, n)]
+         call sort_index(idx, ids)
+         lel = ids(idx)
+         lkey = [(serial_key(lel(j)), j = 1, n)]
+      end block
       call constrained_nodes(g, gcnodes)
       allocate(gcpos(g%nn), gvfree(3, size(gcnodes)))
       gcpos = 0
@@ -218,8 +274,13 @@ contains
             end do
          end if
       end block
-      call par_gather_setup(plan_bc, pm%node_global(bc_loc))
-      call par_gather_setup(plan_own, pm%node_global(own))
+      if (root_only) then     ! ordered sums and output on rank 0 alone
+         call par_gather_setup_root(plan_bc, pm%node_global(bc_loc))
+         call par_gather_setup_root(plan_own, pm%node_global(own))
+      else
+         call par_gather_setup(plan_bc, pm%node_global(bc_loc))
+         call par_gather_setup(plan_own, pm%node_global(own))
+      end if
       block
          integer :: b, j, n
          integer, allocatable :: ek(:)
@@ -233,7 +294,7 @@ contains
                ek(n) = model%blocks(b)%elem(j)
             end do
          end do
-         call par_gather_setup(plan_elem, ek)
+         call par_gather_setup_root(plan_elem, ek)   ! element energies: rank 0 sums them
       end block
       ! plot states: each rank its own part file (no element data in g any more)
       call par_plot_setup(model, g, pm%nloc, pm%node_global, pm%slot_node, own, elem_loc, &
@@ -340,13 +401,159 @@ contains
          call hex8_mass_share(model%blocks(b), &
             model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%ro, mext, cext)
       end do
+      call trim_global(model)   ! the last set-up step of run_explicit (after a restart read)
    end subroutine par_engine_mass_share
+
+   !> End of set-up (every rank, once): what of the global model g the run no longer needs
+   !> is freed. Ranks other than 0 free g's element arrays (every element's energies go to
+   !> rank 0 alone) and, when rank 0 alone forms the ordered sums (root_only: no contact, no
+   !> rigid bodies), g's nodal arrays, constraint lists and the element labels: each keeps
+   !> its own part plus the index maps of the dt reduction. Rank 0, the gather root, keeps
+   !> the nodal state and the element energies it sums, and frees the rest of the elements'
+   !> arrays. The sizes left are logged (mem_report).
+   subroutine trim_global(model)
+      type(model_t), intent(in) :: model
+      integer :: k
+      if (trimmed) return
+      trimmed = .true.
+      if (model%dt_elem > 0) then          ! a restart's element of the last reduction
+         stale_elem = model%dt_elem
+         stale_key = serial_key(stale_elem)
+      end if
+      do k = 1, size(g%blocks)
+         associate (b => g%blocks(k))
+            if (allocated(b%conn)) deallocate(b%conn)
+            if (allocated(b%elem)) deallocate(b%elem)
+            if (allocated(b%vol0)) deallocate(b%vol0)
+            if (allocated(b%relvol)) deallocate(b%relvol)
+            if (allocated(b%phim)) deallocate(b%phim)
+            if (allocated(b%hgs)) deallocate(b%hgs)
+            if (allocated(b%sig)) deallocate(b%sig)
+            if (allocated(b%hv)) deallocate(b%hv)
+            if (par_rank() > 0) then          ! rank 0 sums the element energies
+               if (allocated(b%eint)) deallocate(b%eint)
+               if (allocated(b%ehg)) deallocate(b%ehg)
+               if (allocated(b%ework)) deallocate(b%ework)
+               if (allocated(b%failed)) deallocate(b%failed)
+            end if
+         end associate
+      end do
+      if (par_rank() > 0) then
+         if (allocated(g%elem_label)) deallocate(g%elem_label)
+         if (allocated(g%elem_part)) deallocate(g%elem_part)
+         if (allocated(g%elem_block)) deallocate(g%elem_block)   ! rank 0: energies' places
+         if (allocated(g%elem_pos)) deallocate(g%elem_pos)
+         if (root_only) then
+            call par_loads_take_mass()      ! the loads on shared nodes keep their masses
+            if (allocated(g%x)) deallocate(g%x)
+            if (allocated(g%v)) deallocate(g%v)
+            if (allocated(g%f)) deallocate(g%f)
+            if (allocated(g%mass)) deallocate(g%mass)
+            if (allocated(g%x0)) deallocate(g%x0)
+            if (allocated(g%v0)) deallocate(g%v0)
+            if (allocated(g%node_label)) deallocate(g%node_label)
+            if (allocated(g%spcs)) deallocate(g%spcs)
+            if (allocated(g%prescribed)) deallocate(g%prescribed)
+            if (allocated(gvold)) deallocate(gvold)
+            if (allocated(gvfree)) deallocate(gvfree)
+            if (allocated(gcpos)) deallocate(gcpos)
+            if (allocated(gcnodes)) deallocate(gcnodes)
+         end if
+      end if
+      call mem_report()
+   end subroutine trim_global
+
+   !> Bytes of the arrays this rank holds that are sized by the whole model (global
+   !> elements: elem, global nodes: node), in g, the engine's maps and the gather plans.
+   subroutine global_bytes(elem, node)
+      integer(int64), intent(out) :: elem, node
+      integer :: k
+      elem = 0
+      node = 0
+      if (allocated(g%blocks)) then
+         do k = 1, size(g%blocks)
+            associate (b => g%blocks(k))
+               if (allocated(b%conn)) elem = elem + 4*size(b%conn, kind=int64)
+               if (allocated(b%elem)) elem = elem + 4*size(b%elem, kind=int64)
+               if (allocated(b%sig)) elem = elem + 8*size(b%sig, kind=int64)
+               if (allocated(b%hv)) elem = elem + 8*size(b%hv, kind=int64)
+               if (allocated(b%vol0)) elem = elem + 8*size(b%vol0, kind=int64)
+               if (allocated(b%relvol)) elem = elem + 8*size(b%relvol, kind=int64)
+               if (allocated(b%eint)) elem = elem + 8*size(b%eint, kind=int64)
+               if (allocated(b%ehg)) elem = elem + 8*size(b%ehg, kind=int64)
+               if (allocated(b%ework)) elem = elem + 8*size(b%ework, kind=int64)
+               if (allocated(b%phim)) elem = elem + 8*size(b%phim, kind=int64)
+               if (allocated(b%hgs)) elem = elem + 8*size(b%hgs, kind=int64)
+               if (allocated(b%failed)) elem = elem + 4*size(b%failed, kind=int64)
+            end associate
+         end do
+      end if
+      if (allocated(g%elem_label)) elem = elem + 4*size(g%elem_label, kind=int64)
+      if (allocated(g%elem_part)) elem = elem + 4*size(g%elem_part, kind=int64)
+      if (allocated(g%elem_block)) elem = elem + 4*size(g%elem_block, kind=int64)
+      if (allocated(g%elem_pos)) elem = elem + 4*size(g%elem_pos, kind=int64)
+      if (allocated(key_elem)) elem = elem + 4*size(key_elem, kind=int64)
+      if (allocated(plan_elem%keys)) elem = elem + 4*size(plan_elem%keys, kind=int64)
+      if (allocated(plan_elem%perm)) elem = elem + 4*size(plan_elem%perm, kind=int64)
+      if (allocated(g%x0)) node = node + 8*size(g%x0, kind=int64)
+      if (allocated(g%v0)) node = node + 8*size(g%v0, kind=int64)
+      if (allocated(g%x)) node = node + 8*size(g%x, kind=int64)
+      if (allocated(g%v)) node = node + 8*size(g%v, kind=int64)
+      if (allocated(g%f)) node = node + 8*size(g%f, kind=int64)
+      if (allocated(g%mass)) node = node + 8*size(g%mass, kind=int64)
+      if (allocated(g%node_label)) node = node + 4*size(g%node_label, kind=int64)
+      if (allocated(gvold)) node = node + 8*size(gvold, kind=int64)
+      if (allocated(gcpos)) node = node + 4*size(gcpos, kind=int64)
+      if (allocated(plan_own%keys)) node = node + 4*size(plan_own%keys, kind=int64)
+      if (allocated(plan_own%perm)) node = node + 4*size(plan_own%perm, kind=int64)
+   end subroutine global_bytes
+
+   !> One log line (rank 0) after set-up: the bytes of whole-model arrays on rank 0 and the
+   !> largest on any other rank, per element and per node of the model, and the resident
+   !> memory (VmRSS) of rank 0 and the largest of the others (docs/performance.md).
+   subroutine mem_report()
+      integer(int64) :: e, n, mine(4), oth(4)
+      call global_bytes(e, n)
+      mine = [e, n, current_memory_kb(), 0_int64]
+      oth = mine
+      if (par_rank() == 0) oth = 0
+      call par_allreduce_i8max(oth)
+      call log_info('dynx: MPI memory after set-up: whole-model arrays on rank 0: '// &
+         rstr(real(mine(1), wp)/max(1, g%ne), 4)//' B/element, '// &
+         rstr(real(mine(2), wp)/max(1, g%nn), 4)//' B/node; on the other ranks at most: '// &
+         rstr(real(oth(1), wp)/max(1, g%ne), 4)//' B/element, '// &
+         rstr(real(oth(2), wp)/max(1, g%nn), 4)//' B/node ('//str(g%ne)//' elements, '// &
+         str(g%nn)//' nodes); VmRSS rank 0 '//str(int(mine(3)))//' KiB, others at most '// &
+         str(int(oth(3)))//' KiB')
+   end subroutine mem_report
+
+   !> Largest over the ranks of 64-bit counts (as doubles: exact below 2**53).
+   subroutine par_allreduce_i8max(a)
+      integer(int64), intent(inout) :: a(:)
+      real(wp) :: r(size(a))
+      r = real(a, wp)
+      call par_allreduce(r, PAR_MAX)
+      a = nint(r, int64)
+   end subroutine par_allreduce_i8max
 
    !> The initial kinetic energy of the global model.
    subroutine par_engine_initial(model)
       type(model_t), intent(inout) :: model
       integer, allocatable :: keys(:)
       real(wp), allocatable :: gv(:, :)
+      real(wp) :: e0(1)
+      if (root_only) then     ! rank 0 sums, the others receive the sum
+         allocate(gv(3, size(plan_own%keys)))
+         call par_gather_values_root(plan_own, model%v(:, own), gv)
+         e0 = 0.0_wp
+         if (par_rank() == 0) then
+            g%v(:, plan_own%keys) = gv
+            e0(1) = initial_kinetic(g%mass, g%v)
+         end if
+         call par_bcast_real(e0, 0)
+         model%energy%initial = e0(1)
+         return
+      end if
       call par_gather_ordered(pm%node_global(own), model%v(:, own), keys, gv)
       g%v(:, keys) = gv
       model%energy%initial = initial_kinetic(g%mass, g%v)
@@ -370,30 +577,72 @@ contains
       integer, intent(inout) :: dt_elem
       type(error_t), allocatable, intent(inout) :: error
       integer, intent(inout), optional :: flags(:)
-      integer :: key
+      integer(int64) :: key
       real(wp) :: t0
-      key = huge(key)
-      if (dt_elem > 0 .and. dtcrit < huge_wp) key = (g%elem_block(dt_elem) - 1)*nv_chunk + &
-                                                     g%elem_pos(dt_elem)
+      key = KEY_NONE
+      if (dt_elem > 0 .and. dtcrit < huge_wp) then
+         key = elem_key(dt_elem)
+         if (kmult > 0) key = key*kmult + dt_elem
+      end if
       if (allocated(pending)) then
          dtcrit = -1.0_wp
          key = par_rank()
       end if
       t0 = par_wtime()
-      if (present(flags)) then
-         call par_minloc_flags(dtcrit, key, flags)
-      else
-         call par_minloc(dtcrit, key)
-      end if
+      call par_minloc8(dtcrit, key, flags)
       t_dt = t_dt + (par_wtime() - t0)
       if (dtcrit < 0.0_wp) then
-         call failure_known(key, error)
+         call failure_known(int(key), error)
          return
       end if
       ! no deformable element anywhere: the rigid elements' step (as the serial ibmin == 0)
       if (dtcrit >= huge_wp .and. allocated(g%rigid)) dtcrit = g%rigid%dtcrit
-      if (key > 0 .and. key <= size(key_elem)) dt_elem = key_elem(key)
+      if (key >= KEY_NONE) return
+      if (kmult > 0) then
+         dt_elem = int(mod(key, kmult))
+         stale_key = key/kmult
+      else
+         if (key <= 0 .or. key > size(key_elem)) return
+         dt_elem = key_elem(key)
+         stale_key = key
+      end if
+      stale_elem = dt_elem
    end subroutine par_engine_dt
+
+   !> The serial order key (serial block - 1)*nv_chunk + position of global element e, from
+   !> the global model's maps (set-up; rank 0 keeps them).
+   integer(int64) function serial_key(e)
+      integer, intent(in) :: e
+      serial_key = int(g%elem_block(e) - 1, int64)*nv_chunk + g%elem_pos(e)
+   end function serial_key
+
+   !> The serial order key of element e: one of this rank's elements, or the element the
+   !> last reduction named (a rank whose element pass found no deformable element keeps it).
+   integer(int64) function elem_key(e)
+      integer, intent(in) :: e
+      integer :: lo, hi, mid
+      lo = 1
+      hi = size(lel)
+      do while (lo <= hi)
+         mid = (lo + hi)/2
+         if (lel(mid) == e) then
+            elem_key = lkey(mid)
+            return
+         else if (lel(mid) < e) then
+            lo = mid + 1
+         else
+            hi = mid - 1
+         end if
+      end do
+      if (e == stale_elem) then
+         elem_key = stale_key
+      else if (allocated(g%elem_block)) then
+         elem_key = serial_key(e)
+      else
+         call par_abort('internal error: rank '//str(par_rank())//' has no order key for '// &
+                        'element '//str(e)//' (dt reduction)', EXIT_INPUT)
+      end if
+   end function elem_key
 
    !> A failure found on this rank alone, in the middle of a cycle: kept until the next dt
    !> reduction (or par_engine_sync_failure) makes it known to every rank. error is
@@ -497,7 +746,7 @@ contains
       logical, intent(in) :: needed
       real(wp) :: dummy
       integer :: i, n
-      if (size(plan_bc%keys) == 0) return
+      if (sum(plan_bc%counts) == 0) return     ! no constrained or wall node anywhere
       nbuf = nbuf + 1
       do i = 1, size(bc_loc)
          n = bc_loc(i)
@@ -536,7 +785,7 @@ contains
       real(wp), intent(inout) :: wcon, wrw
       real(wp), allocatable :: vals(:, :), gv(:, :)
       integer :: c, i, nk
-      real(wp) :: t0
+      real(wp) :: t0, w(2)
       t0 = par_wtime()
       nk = size(plan_bc%keys)
       allocate(vals(12*nbuf, size(bc_loc)), gv(12*nbuf, nk))
@@ -545,7 +794,21 @@ contains
             vals(12*(c - 1) + 1:12*c, i) = buf(:, i, c)
          end do
       end do
-      call par_gather_values(plan_bc, vals, gv)
+      if (root_only) then     ! rank 0 replays the cycles, the others receive the sums
+         call par_gather_values_root(plan_bc, vals, gv)
+         if (par_rank() == 0) call replay()
+         w = [wcon, wrw]
+         call par_bcast_real(w, 0)
+         wcon = w(1)
+         wrw = w(2)
+      else
+         call par_gather_values(plan_bc, vals, gv)
+         call replay()
+      end if
+      nbuf = 0
+      t_gath = t_gath + (par_wtime() - t0)
+   contains
+      subroutine replay()
       associate (keys => plan_bc%keys)
          do c = 1, nbuf
             g%x(:, keys) = gv(12*(c - 1) + 1:12*(c - 1) + 3, :)
@@ -561,12 +824,13 @@ contains
                                                           gvold, g%v, wrw)
          end do
       end associate
-      nbuf = 0
-      t_gath = t_gath + (par_wtime() - t0)
+      end subroutine replay
    end subroutine flush_work
 
    !> Energies and momentum of the step (when needed): nodal velocities and element
-   !> energies gathered, then the serial sums on the global model.
+   !> energies gathered to rank 0, the serial sums on its global model, the results sent
+   !> to every rank (MPI_Bcast: one energy record, not the arrays). Decks with contact or
+   !> rigid bodies gather the nodal velocities to every rank (their stages read g's nodes).
    !> dfac = (dt(n+1/2) - dt(n-1/2))/4 weighs the element work still to be booked (epend,
    !> dx_energy_sums), gathered per element as alive*(ework(:,4) - ework(:,2)).
    subroutine par_engine_energies(model, vold, wsum, erw, dfac, needed)
@@ -574,18 +838,26 @@ contains
       real(wp), intent(in) :: vold(:, :), wsum, erw, dfac
       logical, intent(in) :: needed
       real(wp), allocatable :: vals(:, :), gv(:, :)
-      real(wp) :: ke, eint, ehg, t0, epend
+      real(wp) :: ke, eint, ehg, t0, epend, rec(13)
       integer :: i, e
+      logical :: root
       if (.not. needed) return
       t0 = par_wtime()
+      root = par_rank() == 0
       allocate(vals(6, size(own)), gv(6, size(plan_own%keys)))
       do i = 1, size(own)
          vals(1:3, i) = model%v(:, own(i))
          vals(4:6, i) = vold(:, own(i))
       end do
-      call par_gather_values(plan_own, vals, gv)
-      g%v(:, plan_own%keys) = gv(1:3, :)
-      gvold(:, plan_own%keys) = gv(4:6, :)
+      if (root_only) then
+         call par_gather_values_root(plan_own, vals, gv)
+      else
+         call par_gather_values(plan_own, vals, gv)
+      end if
+      if (root .or. .not. root_only) then
+         g%v(:, plan_own%keys) = gv(1:3, :)
+         gvold(:, plan_own%keys) = gv(4:6, :)
+      end if
       deallocate(vals, gv)
       allocate(vals(3, size(elem_loc, 2)), gv(3, size(plan_elem%keys)))
       do i = 1, size(elem_loc, 2)
@@ -597,31 +869,46 @@ contains
                                                   (pb%ework(j, 4) - pb%ework(j, 2))
          end associate
       end do
-      call par_gather_values(plan_elem, vals, gv)
-      do i = 1, size(plan_elem%keys)
-         e = plan_elem%keys(i)
-         associate (gb => g%blocks(g%elem_block(e)), p => g%elem_pos(e))
-            gb%eint(p) = gv(1, i)
-            gb%ehg(p) = gv(2, i)
-            ! the global copy only reports: its ework carries the pending term in column 4
-            if (allocated(gb%ework)) then
-               gb%ework(p, 4) = gv(3, i); gb%ework(p, 2) = 0.0_wp
-            end if
+      call par_gather_values_root(plan_elem, vals, gv)
+      rec = 0.0_wp
+      if (root) then
+         do i = 1, size(plan_elem%keys)
+            e = plan_elem%keys(i)
+            associate (gb => g%blocks(g%elem_block(e)), p => g%elem_pos(e))
+               gb%eint(p) = gv(1, i)
+               gb%ehg(p) = gv(2, i)
+               ! the global copy only reports: its ework carries the pending term in col. 4
+               if (allocated(gb%ework)) then
+                  gb%ework(p, 4) = gv(3, i); gb%ework(p, 2) = 0.0_wp
+               end if
+            end associate
+         end do
+         ke = kinetic_energy(g%nn, g%mass, gvold, g%v)
+         if (allocated(g%rigid)) ke = ke + g%rigid%ke_corr   ! body KE (dx_par_rigid)
+         call element_energies(g%blocks, eint, ehg, epend)
+         eint = eint + dfac*epend
+         g%energy%initial = model%energy%initial
+         call set_energy(g, ke, eint, ehg, wsum, erw)
+         associate (en => g%energy)
+            rec = [en%kinetic, en%internal, en%hourglass, en%external_work, en%rigidwall, &
+                   en%sliding, en%total, en%initial, en%ratio, en%momentum, en%mass]
          end associate
-      end do
-      ke = kinetic_energy(g%nn, g%mass, gvold, g%v)
-      if (allocated(g%rigid)) ke = ke + g%rigid%ke_corr   ! body KE (dx_par_rigid)
-      call element_energies(g%blocks, eint, ehg, epend)
-      eint = eint + dfac*epend
-      g%energy%initial = model%energy%initial
-      call set_energy(g, ke, eint, ehg, wsum, erw)
-      model%energy = g%energy
+      end if
+      call par_bcast_real(rec, 0)
+      associate (en => model%energy)
+         en%kinetic = rec(1); en%internal = rec(2); en%hourglass = rec(3)
+         en%external_work = rec(4); en%rigidwall = rec(5); en%sliding = rec(6)
+         en%total = rec(7); en%initial = rec(8); en%ratio = rec(9)
+         en%momentum = rec(10:12); en%mass = rec(13)
+      end associate
+      g%energy = model%energy
       t_gath = t_gath + (par_wtime() - t0)
    end subroutine par_engine_energies
 
-   !> The global model for glstat and nodout at this step (nodal x, v, f gathered); writer
-   !> is true on rank 0, which writes them. Plot states do not come here (par_engine_plot:
-   !> per-rank part files); plot is kept for the interface and not used.
+   !> The global model for glstat and nodout at this step (nodal x, v, f gathered to rank 0,
+   !> or to every rank for decks with contact or rigid bodies); writer is true on rank 0,
+   !> which writes them. Plot states do not come here (par_engine_plot: per-rank part
+   !> files); plot is kept for the interface and not used.
    subroutine par_engine_output(model, plot, om, writer)
       type(model_t), intent(in) :: model
       logical, intent(in) :: plot
@@ -643,10 +930,16 @@ contains
          vals(4:6, i) = model%v(:, own(i))
          vals(7:9, i) = model%f(:, own(i))
       end do
-      call par_gather_values(plan_own, vals, gv)
-      g%x(:, plan_own%keys) = gv(1:3, :)
-      g%v(:, plan_own%keys) = gv(4:6, :)
-      g%f(:, plan_own%keys) = gv(7:9, :)
+      if (root_only) then
+         call par_gather_values_root(plan_own, vals, gv)
+      else
+         call par_gather_values(plan_own, vals, gv)
+      end if
+      if (par_rank() == 0 .or. .not. root_only) then
+         g%x(:, plan_own%keys) = gv(1:3, :)
+         g%v(:, plan_own%keys) = gv(4:6, :)
+         g%f(:, plan_own%keys) = gv(7:9, :)
+      end if
       om => g
       writer = par_rank() == 0
       t_gath = t_gath + (par_wtime() - t0)

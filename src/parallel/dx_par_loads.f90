@@ -33,7 +33,8 @@ module dx_par_loads
    use dx_loads, only: add_external_loads, has_external_loads
    implicit none
    private
-   public :: par_loads_setup, par_loads_any, par_loads_shared, par_loads_work, par_loads_flush
+   public :: par_loads_setup, par_loads_any, par_loads_shared, par_loads_work, par_loads_flush, &
+             par_loads_take_mass
 
    logical, save :: active = .false.
    type(model_t), pointer, save :: gp => null()     !< the engine's global model
@@ -188,10 +189,7 @@ contains
          end do
       end if
       if (size(lm_out, 2) == 0) return
-      if (.not. lm_mass_set) then          ! masses are known after init_state
-         lm%mass = gp%mass(lm_glob)
-         lm_mass_set = .true.
-      end if
+      call par_loads_take_mass()
       allocate(lf(3, lm%nn))
       lf = 0.0_wp
       call add_external_loads(lm, t, lf)
@@ -235,4 +233,13 @@ contains
       end do
       nbuf = 0
    end subroutine par_loads_flush
+
+   !> The global masses of the loads' nodes on this rank's shared nodes, once (after
+   !> init_state; the engine calls it before it frees the global model's masses).
+   subroutine par_loads_take_mass()
+      if (.not. active .or. lm_mass_set) return
+      if (size(lm_out, 2) == 0) return
+      lm%mass = gp%mass(lm_glob)
+      lm_mass_set = .true.
+   end subroutine par_loads_take_mass
 end module dx_par_loads

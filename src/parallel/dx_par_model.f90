@@ -12,7 +12,7 @@
 module dx_par_model
    use dx_kinds, only: wp, nv_chunk
    use dx_model, only: model_t, elem_block_t
-   use dx_partition, only: rank_part_t, scatter_keys
+   use dx_partition, only: rank_part_t
    use dx_par, only: shared_sum_t, par_shared_setup, par_shared_sum
    implicit none
    private
@@ -38,10 +38,10 @@ contains
       type(model_t), intent(in) :: model
       type(rank_part_t), intent(in) :: rp
       type(par_model_t), intent(out) :: pm
-      integer, allocatable :: loc(:), snum(:), keys(:, :), piece(:), c_node(:), c_fkey(:), &
+      integer, allocatable :: loc(:), snum(:), piece(:), c_node(:), c_fkey(:), &
                               c_mkey(:), nbr_snode(:)
       logical, allocatable :: here(:), shared(:)
-      integer :: i, j, k, b, nb, e, n, slot, s
+      integer :: i, j, k, b, nb, n, slot, s
       pm%nloc = size(rp%nodes)
       pm%node_global = rp%nodes
       allocate(loc(model%nn), snum(model%nn), here(model%ne), shared(model%nn))
@@ -66,7 +66,6 @@ contains
       do i = 1, pm%nloc
          if (snum(rp%nodes(i)) > 0) pm%shared_local(snum(rp%nodes(i))) = i
       end do
-      call scatter_keys(model, keys)
       ! pieces of the serial blocks, in serial order
       nb = 0
       do b = 1, size(model%blocks)
@@ -103,14 +102,15 @@ contains
                ! slots numbered corner-major as the force scatter visits them
                do k = 1, 8
                   do j = 1, pb%nel
-                     e = pb%elem(j)
                      n = sb%conn(k, piece(j))
                      if (snum(n) > 0) then
                         slot = slot + 1
                         pb%conn(k, j) = pm%nloc + slot
                         pm%slot_node(slot) = loc(n)
                         c_node(slot) = snum(n)
-                        c_fkey(slot) = keys(k, e)
+                        ! force: the serial scatter order (dx_partition scatter_keys),
+                        ! formed here for the rank's corners only
+                        c_fkey(slot) = ((b - 1)*8 + k - 1)*nv_chunk + piece(j)
                         ! mass: element-major serial order (block, position, corner)
                         c_mkey(slot) = ((b - 1)*nv_chunk + piece(j) - 1)*8 + k
                      else
