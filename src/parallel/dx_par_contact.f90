@@ -74,6 +74,7 @@ contains
       integer, intent(in) :: node_global(:)
       logical, intent(in) :: owned(:)
       logical, allocatable :: isc(:)
+      character(16) :: mode
       integer :: i
       if (.not. allocated(g%contact)) return
       g%contact%nstrip = par_size()
@@ -87,6 +88,15 @@ contains
       c_own = pack(l_loc, owned(l_loc))
       c_glob = node_global(c_own)
       call par_gather_setup(plan_c, c_glob)
+      ! owner-computes (default): this rank computes the slave nodes it owns, the same
+      ! nodes at every sort (no strips to find, and its slave nodes' x and v are its own);
+      ! DYNX_PAR_CONTACT=strips: the geometric strips of dx_contact_strips
+      call get_environment_variable('DYNX_PAR_CONTACT', mode, status=i)
+      if (i /= 0 .or. trim(mode) /= 'strips') then
+         allocate(g%contact%mine_node(g%nn))
+         g%contact%mine_node = .false.
+         g%contact%mine_node(c_glob) = .true.
+      end if
       block
          integer, allocatable :: ak(:)
          real(wp), allocatable :: av(:, :)
