@@ -27,6 +27,7 @@ module dx_par
              par_shared_sum_plain, par_wtime, par_minloc, par_gather_ordered, PAR_SUM, &
              gather_plan_t, par_gather_setup, par_gather_values, &
              PAR_MIN, PAR_MAX, par_bcast_text, par_minloc_flags, par_alltoallv
+   public :: par_allgatherv_real    ! (contact, dx_par_contact)
 
    integer, parameter :: PAR_SUM = 1, PAR_MIN = 2, PAR_MAX = 3
    integer, parameter :: TAG_COUNT = 101, TAG_KEYS = 102, TAG_VALUES = 103
@@ -654,6 +655,39 @@ contains
       all_vals(:, 1:size(plan%keys)) = vv(:, plan%perm)
    end subroutine par_gather_values
 
+
+   !> Every rank's sbuf, concatenated in rank order into rbuf (MPI_Allgatherv). counts
+   !> (0:np-1, numbers per rank): given, or when absent exchanged first (MPI_Allgather) and
+   !> returned in cnt. Serial: rbuf = sbuf.
+   subroutine par_allgatherv_real(sbuf, rbuf, counts, cnt)
+      real(wp), intent(in) :: sbuf(:)
+      real(wp), allocatable, intent(out) :: rbuf(:)
+      integer, intent(in), optional :: counts(0:)
+      integer, allocatable, intent(out), optional :: cnt(:)
+      integer, allocatable :: c(:), d(:)
+      integer :: r, ierr
+      if (.not. mpi_on) then
+         rbuf = sbuf
+         if (present(cnt)) cnt = [size(sbuf)]
+         return
+      end if
+      allocate(c(0:nranks - 1), d(0:nranks - 1))
+      if (present(counts)) then
+         c = counts
+      else
+         call MPI_Allgather(size(sbuf), 1, MPI_INTEGER, c, 1, MPI_INTEGER, comm, ierr)
+         call check(ierr, 'MPI_Allgather (counts)')
+      end if
+      d(0) = 0
+      do r = 1, nranks - 1
+         d(r) = d(r - 1) + c(r - 1)
+      end do
+      allocate(rbuf(sum(c)))
+      call MPI_Allgatherv(sbuf, size(sbuf), MPI_DOUBLE_PRECISION, rbuf, c, d, &
+                          MPI_DOUBLE_PRECISION, comm, ierr)
+      call check(ierr, 'MPI_Allgatherv (real)')
+      if (present(cnt)) cnt = c
+   end subroutine par_allgatherv_real
 
    !> Wall-clock seconds (MPI_Wtime under MPI, else the system clock).
    real(wp) function par_wtime()
