@@ -27,7 +27,7 @@ module dx_par
              par_shared_sum_plain, par_wtime, par_minloc, par_gather_ordered, PAR_SUM, &
              gather_plan_t, par_gather_setup, par_gather_values, &
              PAR_MIN, PAR_MAX, par_bcast_text, par_minloc_flags, par_alltoallv
-   public :: par_allgatherv_real    ! (contact, dx_par_contact)
+   public :: par_allgatherv_real, par_sparse_exchange    ! (contact, dx_par_contact)
 
    integer, parameter :: PAR_SUM = 1, PAR_MIN = 2, PAR_MAX = 3
    integer, parameter :: TAG_COUNT = 101, TAG_KEYS = 102, TAG_VALUES = 103
@@ -688,6 +688,44 @@ contains
       call check(ierr, 'MPI_Allgatherv (real)')
       if (present(cnt)) cnt = c
    end subroutine par_allgatherv_real
+
+   !> Point-to-point exchange with the ranks that share data: scnt(r) numbers of sbuf (in
+   !> rank order) to rank r, rcnt(r) numbers from rank r into rbuf (rank order); only the
+   !> pairs with a nonzero count send a message (MPI_Isend/MPI_Irecv, MPI_Waitall). Both
+   !> sides know the counts (a plan); this rank's own counts are ignored.
+   subroutine par_sparse_exchange(sbuf, scnt, rbuf, rcnt)
+      real(wp), intent(in), contiguous, asynchronous :: sbuf(:)
+      integer, intent(in) :: scnt(0:), rcnt(0:)
+      real(wp), intent(inout), contiguous, asynchronous :: rbuf(:)
+      type(MPI_Request), allocatable :: req(:)
+      integer, parameter :: TAG_SPARSE = 104
+      integer :: r, a, b, nq, ierr
+      if (.not. mpi_on) return
+      allocate(req(2*nranks))
+      nq = 0
+      a = 0
+      do r = 0, nranks - 1
+         if (rcnt(r) > 0 .and. r /= my_rank) then
+            nq = nq + 1
+            call MPI_Irecv(rbuf(a + 1:a + rcnt(r)), rcnt(r), MPI_DOUBLE_PRECISION, r, &
+                           TAG_SPARSE, comm, req(nq), ierr)
+            call check(ierr, 'MPI_Irecv (sparse exchange)')
+         end if
+         a = a + rcnt(r)
+      end do
+      b = 0
+      do r = 0, nranks - 1
+         if (scnt(r) > 0 .and. r /= my_rank) then
+            nq = nq + 1
+            call MPI_Isend(sbuf(b + 1:b + scnt(r)), scnt(r), MPI_DOUBLE_PRECISION, r, &
+                           TAG_SPARSE, comm, req(nq), ierr)
+            call check(ierr, 'MPI_Isend (sparse exchange)')
+         end if
+         b = b + scnt(r)
+      end do
+      call MPI_Waitall(nq, req(1:nq), MPI_STATUSES_IGNORE, ierr)
+      call check(ierr, 'MPI_Waitall (sparse exchange)')
+   end subroutine par_sparse_exchange
 
    !> Wall-clock seconds (MPI_Wtime under MPI, else the system clock).
    real(wp) function par_wtime()

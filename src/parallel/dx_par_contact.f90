@@ -37,7 +37,7 @@ module dx_par_contact
    use dx_par_rigid, only: par_rigid_centres
    use dx_par, only: par_rank, par_size, par_abort, par_allreduce, PAR_MAX, PAR_SUM, &
                      gather_plan_t, par_gather_setup, par_gather_values, par_gather_ordered, &
-                     par_wtime, par_alltoallv, par_allgatherv_real
+                     par_wtime, par_alltoallv, par_allgatherv_real, par_sparse_exchange
    implicit none
    private
    public :: par_contact_setup, par_contact_forces, par_contact_add, par_contact_work, &
@@ -57,6 +57,10 @@ module dx_par_contact
    integer, allocatable, save :: h_rcnt(:), h_scnt(:)   !< (0:np-1) their counts per rank
    integer(8), save :: nval_recv = 0                !< numbers received (x, v, work terms)
    integer(8), save :: nres_recv = 0                !< numbers received (results)
+   !> the largest contact-node speed |v(n+1/2)| over the ranks, found with the work
+   !> exchange, for the next cycle's contact stage (v does not change in between)
+   real(wp), save :: vmax_next = 0.0_wp
+   logical, save :: have_vmax = .false.
    integer, allocatable, save :: l_loc(:), l_glob(:)   !< held contact nodes: local, global
    real(wp), allocatable, save :: cvold(:, :)       !< (3, nn global) v(n-1/2), contact nodes
    real(wp), save :: t_cont = 0.0_wp, t_comm = 0.0_wp
@@ -172,7 +176,7 @@ contains
          sb(6*i - 5:6*i - 3) = model%x(:, n)
          sb(6*i - 2:6*i) = model%v(:, n)
       end do
-      call par_alltoallv(sb, 6*h_scnt, rb, 6*h_rcnt)
+      call par_sparse_exchange(sb, 6*h_scnt, rb, 6*h_rcnt)   ! with the halo's ranks only
       do i = 1, size(h_req)
          n = h_req(i)
          g%x(:, n) = rb(6*i - 5:6*i - 3)
@@ -259,8 +263,13 @@ contains
       t0 = par_wtime()
       g%time = model%time
       g%cycle = model%cycle
-      vmax = contact_vmax(model%v, c_own)      ! the owners' largest speed, then the max
-      call par_allreduce(vmax, PAR_MAX)
+      if (have_vmax) then      ! from the last cycle's work exchange (v unchanged since)
+         vmax = vmax_next
+      else
+         vmax = contact_vmax(model%v, c_own)   ! the owners' largest speed, then the max
+         call par_allreduce(vmax, PAR_MAX)
+      end if
+      have_vmax = .false.
       ! rigid bodies in contact: their centres x_c(n) into g (dx_par_rigid)
       if (allocated(model%rigid)) call par_rigid_centres(model%rigid, g%rigid)
       call contact_prepare(g, dt_old, vmax, due)
@@ -381,12 +390,14 @@ contains
       np = par_size()
       allocate(cnt(0:np - 1), d(0:np - 1))
       cnt = 0
-      n = 0
       do i = 1, size(c_all)
          if (.not. any(g%contact%fc(:, c_all(i)) /= 0.0_wp)) cycle
          cnt(c_owner(i)) = cnt(c_owner(i)) + 6
       end do
+      cnt = cnt + 1                  ! first: the rank's largest contact-node speed
       allocate(sb(cnt(par_rank())))
+      sb(1) = contact_vmax(model%v, c_own)
+      n = 1
       do i = 1, size(c_all)
          if (c_owner(i) /= par_rank()) cycle
          if (.not. any(g%contact%fc(:, c_all(i)) /= 0.0_wp)) cycle
@@ -400,6 +411,12 @@ contains
       do r = 1, np - 1
          d(r) = d(r - 1) + cnt(r - 1)
       end do
+      vmax_next = 0.0_wp
+      do r = 0, np - 1
+         vmax_next = max(vmax_next, rb(d(r) + 1))
+         d(r) = d(r) + 1
+      end do
+      have_vmax = .true.
       do i = 1, size(c_all)
          nd = c_all(i)
          if (.not. any(g%contact%fc(:, nd) /= 0.0_wp)) cycle
