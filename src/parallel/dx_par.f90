@@ -27,7 +27,7 @@ module dx_par
              par_shared_sum_plain, par_wtime, par_minloc, par_gather_ordered, PAR_SUM, &
              gather_plan_t, par_gather_setup, par_gather_values, &
              PAR_MIN, PAR_MAX, par_bcast_text, par_minloc_flags, par_alltoallv
-   public :: par_allgatherv_real, par_sparse_exchange    ! (contact, dx_par_contact)
+   public :: par_allgatherv_real, par_sparse_exchange, par_allgather_probe   ! (contact)
 
    integer, parameter :: PAR_SUM = 1, PAR_MIN = 2, PAR_MAX = 3
    integer, parameter :: TAG_COUNT = 101, TAG_KEYS = 102, TAG_VALUES = 103
@@ -688,6 +688,60 @@ contains
       call check(ierr, 'MPI_Allgatherv (real)')
       if (present(cnt)) cnt = c
    end subroutine par_allgatherv_real
+
+   !> Every rank's sbuf (any length) concatenated in rank order into rbuf, cnt(0:np-1) the
+   !> lengths: one message to each other rank (MPI_Isend), received with MPI_Probe and
+   !> MPI_Get_count, so the lengths need no collective of their own (one round, not two).
+   subroutine par_allgather_probe(sbuf, rbuf, cnt)
+      real(wp), intent(in), contiguous, asynchronous :: sbuf(:)
+      real(wp), allocatable, intent(out) :: rbuf(:)
+      integer, allocatable, intent(out) :: cnt(:)
+      integer, parameter :: TAG_PROBE = 105
+      type(MPI_Request), allocatable :: req(:)
+      type(MPI_Status) :: st
+      type :: part_t
+         real(wp), allocatable :: v(:)
+      end type part_t
+      type(part_t), allocatable :: part(:)
+      integer :: r, nq, ierr, n, a
+      if (.not. mpi_on) then
+         rbuf = sbuf
+         cnt = [size(sbuf)]
+         return
+      end if
+      allocate(req(nranks), part(0:nranks - 1), cnt(0:nranks - 1))
+      nq = 0
+      do r = 0, nranks - 1
+         if (r == my_rank) cycle
+         nq = nq + 1
+         call MPI_Isend(sbuf, size(sbuf), MPI_DOUBLE_PRECISION, r, TAG_PROBE, comm, &
+                        req(nq), ierr)
+         call check(ierr, 'MPI_Isend (probe gather)')
+      end do
+      do r = 0, nranks - 1
+         if (r == my_rank) then
+            part(r)%v = sbuf
+         else
+            call MPI_Probe(r, TAG_PROBE, comm, st, ierr)
+            call check(ierr, 'MPI_Probe (probe gather)')
+            call MPI_Get_count(st, MPI_DOUBLE_PRECISION, n, ierr)
+            call check(ierr, 'MPI_Get_count (probe gather)')
+            allocate(part(r)%v(n))
+            call MPI_Recv(part(r)%v, n, MPI_DOUBLE_PRECISION, r, TAG_PROBE, comm, &
+                          MPI_STATUS_IGNORE, ierr)
+            call check(ierr, 'MPI_Recv (probe gather)')
+         end if
+         cnt(r) = size(part(r)%v)
+      end do
+      call MPI_Waitall(nq, req(1:nq), MPI_STATUSES_IGNORE, ierr)
+      call check(ierr, 'MPI_Waitall (probe gather)')
+      allocate(rbuf(sum(cnt)))
+      a = 0
+      do r = 0, nranks - 1
+         rbuf(a + 1:a + cnt(r)) = part(r)%v
+         a = a + cnt(r)
+      end do
+   end subroutine par_allgather_probe
 
    !> Point-to-point exchange with the ranks that share data: scnt(r) numbers of sbuf (in
    !> rank order) to rank r, rcnt(r) numbers from rank r into rbuf (rank order); only the

@@ -37,7 +37,8 @@ module dx_par_contact
    use dx_par_rigid, only: par_rigid_centres
    use dx_par, only: par_rank, par_size, par_abort, par_allreduce, PAR_MAX, PAR_SUM, &
                      gather_plan_t, par_gather_setup, par_gather_values, par_gather_ordered, &
-                     par_wtime, par_alltoallv, par_allgatherv_real, par_sparse_exchange
+                     par_wtime, par_alltoallv, par_allgatherv_real, par_sparse_exchange, &
+                     par_allgather_probe
    implicit none
    private
    public :: par_contact_setup, par_contact_forces, par_contact_add, par_contact_work, &
@@ -321,7 +322,7 @@ contains
          nrec_sent = nrec_sent + n
          t0 = par_wtime()
          t_cont = t_cont + (t0 - t1)
-         call par_allgatherv_real(sb, rb, cnt=cnt)
+         call par_allgather_probe(sb, rb, cnt)
          t1 = par_wtime()
          t_comm = t_comm + (t1 - t0)
          nres_recv = nres_recv + size(rb) - size(sb)
