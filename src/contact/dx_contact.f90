@@ -136,7 +136,8 @@ contains
                            if (.not. allocated(p%mine)) allocate(p%mine(p%nnode))
                            p%mine = f%rank == cs%istrip
                         else if (cs%nstrip > 1) then
-                           call contact_strips(p, model%x, cs%nstrip, cs%istrip)
+                           call contact_strips(p, model%x, cs%nstrip, cs%istrip, &
+                                               cs%mine_node)
                         end if
                         margin = 0.25_wp*mean_extent(p, model%x)
                         margin = max(margin, 4.0_wp*vmax*dt_est)

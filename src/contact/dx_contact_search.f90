@@ -30,8 +30,8 @@ contains
       real(wp), intent(in), optional :: mass(:)
       real(wp), allocatable :: blo(:, :), bhi(:, :), snrm(:, :)
       real(wp) :: d1(3), d2(3)
-      real(wp) :: lo(3), hi(3), ext, h, vol, slo, shi
-      integer :: i, s, k, n, c, ic(3), jlo(3), jhi(3), i1, i2, i3, ncap, ncells, nc, a
+      real(wp) :: lo(3), hi(3), ext, h, vol, slo3(3), shi3(3)
+      integer :: i, s, k, n, c, ic(3), jlo(3), jhi(3), i1, i2, i3, ncap, ncells, nc
       integer, allocatable :: fill(:), cand(:), tmp(:)
       logical, allocatable :: act(:)
       logical :: ok
@@ -61,15 +61,16 @@ contains
       ! grid, so every strip finds the serial candidates of its nodes.
       allocate(act(p%nseg))
       act = .true.
-      if (allocated(p%mine)) then
-         a = max(1, p%strip_axis)
-         slo = huge(1.0_wp); shi = -huge(1.0_wp)
+      if (allocated(p%mine)) then    ! the box of this rank's slave nodes (any 3 axes)
+         slo3 = huge(1.0_wp); shi3 = -huge(1.0_wp)
          do i = 1, p%nnode
             if (.not. p%mine(i)) cycle
-            slo = min(slo, x(a, p%node(i)))
-            shi = max(shi, x(a, p%node(i)))
+            slo3 = min(slo3, x(:, p%node(i)))
+            shi3 = max(shi3, x(:, p%node(i)))
          end do
-         act = bhi(a, :) >= slo .and. blo(a, :) <= shi
+         do s = 1, p%nseg
+            act(s) = all(bhi(:, s) >= slo3) .and. all(blo(:, s) <= shi3)
+         end do
       end if
       lo = huge(1.0_wp); hi = -huge(1.0_wp)
       do s = 1, p%nseg
@@ -134,6 +135,7 @@ contains
       ! ---- unit normals of the segments (diagonal cross product)
       allocate(snrm(3, p%nseg))
       do s = 1, p%nseg
+         if (.not. act(s)) cycle      ! (only grid segments become candidates)
          associate (sg => p%seg(:, s))
             if (p%nsn(s) == 4) then
                d1 = x(:, sg(3)) - x(:, sg(1)); d2 = x(:, sg(4)) - x(:, sg(2))
@@ -212,7 +214,11 @@ contains
             a = [d1(2)*d2(3) - d1(3)*d2(2), d1(3)*d2(1) - d1(1)*d2(3), d1(1)*d2(2) - d1(2)*d2(1)]
             do k = 1, p%ssn(s)
                i = p%nloc(sg(k))
-               if (i > 0) p%nnrm(:, i) = p%nnrm(:, i) + a
+               if (i == 0) cycle
+               if (allocated(p%mine)) then    ! MPI runs: this rank's slave nodes only
+                  if (.not. p%mine(i)) cycle
+               end if
+               p%nnrm(:, i) = p%nnrm(:, i) + a
             end do
          end associate
       end do

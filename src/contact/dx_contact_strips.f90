@@ -9,6 +9,9 @@
 !> computes the slave nodes of its own strip (p%mine); the segments a node may touch lie
 !> within the search reach of the strip (the halo), which dx_contact_search finds.
 !> No MPI here: the strips depend on x only, so every rank computes all of them alike.
+!> MPI runs use them only when DYNX_PAR_CONTACT=strips; by default a rank computes the slave
+!> nodes it owns (owner-computes, the mask mine_node from dx_par_contact): no sort of the
+!> slave nodes at all, and the nodes a rank computes are its own (docs/design.md).
 module dx_contact_strips
    use dx_kinds, only: wp
    use dx_sort, only: sort_index
@@ -20,14 +23,21 @@ module dx_contact_strips
 contains
 
    !> Strips of pass p at x: p%mine(i) for the slave nodes of strip istrip of nstrip,
-   !> p%strip_axis the axis (1..3).
-   subroutine contact_strips(p, x, nstrip, istrip)
+   !> p%strip_axis the axis (1..3). mine_node (global node -> computed here), when given:
+   !> p%mine(i) = mine_node(p%node(i)) (owner-computes; p%strip_axis 0, x not read).
+   subroutine contact_strips(p, x, nstrip, istrip, mine_node)
       type(contact_pass_t), intent(inout) :: p
       real(wp), intent(in) :: x(:, :)
       integer, intent(in) :: nstrip, istrip
+      logical, intent(in), optional :: mine_node(:)
       integer, allocatable :: strip(:)
-      call strip_of(p, x, nstrip, strip)
       if (.not. allocated(p%mine)) allocate(p%mine(p%nnode))
+      if (present(mine_node)) then
+         p%strip_axis = 0
+         if (p%nnode > 0) p%mine = mine_node(p%node)
+         return
+      end if
+      call strip_of(p, x, nstrip, strip)
       p%mine = strip == istrip
    end subroutine contact_strips
 

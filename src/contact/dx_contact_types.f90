@@ -101,5 +101,8 @@ module dx_contact_types
       logical :: finished = .false.
       integer :: nstrip = 1                    !< MPI runs: strips (ranks) of the search
       integer :: istrip = 0                    !< this rank's strip, 0..nstrip-1
+      !> MPI runs, owner-computes (dx_par_contact): (nn) the slave nodes this rank computes
+      !> (the nodes it owns); unallocated: geometric strips (dx_contact_strips)
+      logical, allocatable :: mine_node(:)
    end type contact_set_t
 end module dx_contact_types

@@ -28,6 +28,7 @@ module dx_par
              gather_plan_t, par_gather_setup, par_gather_values, &
              PAR_MIN, PAR_MAX, par_bcast_text, par_minloc_flags, par_alltoallv
    public :: par_gather_setup_root, par_gather_values_root, par_bcast_real, par_minloc8
+   public :: par_allgatherv_real, par_sparse_exchange, par_allgather_probe   ! (contact)
 
    integer, parameter :: PAR_SUM = 1, PAR_MIN = 2, PAR_MAX = 3
    integer, parameter :: TAG_COUNT = 101, TAG_KEYS = 102, TAG_VALUES = 103
@@ -655,6 +656,131 @@ contains
       all_vals(:, 1:size(plan%keys)) = vv(:, plan%perm)
    end subroutine par_gather_values
 
+
+   !> Every rank's sbuf, concatenated in rank order into rbuf (MPI_Allgatherv). counts
+   !> (0:np-1, numbers per rank): given, or when absent exchanged first (MPI_Allgather) and
+   !> returned in cnt. Serial: rbuf = sbuf.
+   subroutine par_allgatherv_real(sbuf, rbuf, counts, cnt)
+      real(wp), intent(in) :: sbuf(:)
+      real(wp), allocatable, intent(out) :: rbuf(:)
+      integer, intent(in), optional :: counts(0:)
+      integer, allocatable, intent(out), optional :: cnt(:)
+      integer, allocatable :: c(:), d(:)
+      integer :: r, ierr
+      if (.not. mpi_on) then
+         rbuf = sbuf
+         if (present(cnt)) cnt = [size(sbuf)]
+         return
+      end if
+      allocate(c(0:nranks - 1), d(0:nranks - 1))
+      if (present(counts)) then
+         c = counts
+      else
+         call MPI_Allgather(size(sbuf), 1, MPI_INTEGER, c, 1, MPI_INTEGER, comm, ierr)
+         call check(ierr, 'MPI_Allgather (counts)')
+      end if
+      d(0) = 0
+      do r = 1, nranks - 1
+         d(r) = d(r - 1) + c(r - 1)
+      end do
+      allocate(rbuf(sum(c)))
+      call MPI_Allgatherv(sbuf, size(sbuf), MPI_DOUBLE_PRECISION, rbuf, c, d, &
+                          MPI_DOUBLE_PRECISION, comm, ierr)
+      call check(ierr, 'MPI_Allgatherv (real)')
+      if (present(cnt)) cnt = c
+   end subroutine par_allgatherv_real
+
+   !> Every rank's sbuf (any length) concatenated in rank order into rbuf, cnt(0:np-1) the
+   !> lengths: one message to each other rank (MPI_Isend), received with MPI_Probe and
+   !> MPI_Get_count, so the lengths need no collective of their own (one round, not two).
+   subroutine par_allgather_probe(sbuf, rbuf, cnt)
+      real(wp), intent(in), contiguous, asynchronous :: sbuf(:)
+      real(wp), allocatable, intent(out) :: rbuf(:)
+      integer, allocatable, intent(out) :: cnt(:)
+      integer, parameter :: TAG_PROBE = 105
+      type(MPI_Request), allocatable :: req(:)
+      type(MPI_Status) :: st
+      type :: part_t
+         real(wp), allocatable :: v(:)
+      end type part_t
+      type(part_t), allocatable :: part(:)
+      integer :: r, nq, ierr, n, a
+      if (.not. mpi_on) then
+         rbuf = sbuf
+         cnt = [size(sbuf)]
+         return
+      end if
+      allocate(req(nranks), part(0:nranks - 1), cnt(0:nranks - 1))
+      nq = 0
+      do r = 0, nranks - 1
+         if (r == my_rank) cycle
+         nq = nq + 1
+         call MPI_Isend(sbuf, size(sbuf), MPI_DOUBLE_PRECISION, r, TAG_PROBE, comm, &
+                        req(nq), ierr)
+         call check(ierr, 'MPI_Isend (probe gather)')
+      end do
+      do r = 0, nranks - 1
+         if (r == my_rank) then
+            part(r)%v = sbuf
+         else
+            call MPI_Probe(r, TAG_PROBE, comm, st, ierr)
+            call check(ierr, 'MPI_Probe (probe gather)')
+            call MPI_Get_count(st, MPI_DOUBLE_PRECISION, n, ierr)
+            call check(ierr, 'MPI_Get_count (probe gather)')
+            allocate(part(r)%v(n))
+            call MPI_Recv(part(r)%v, n, MPI_DOUBLE_PRECISION, r, TAG_PROBE, comm, &
+                          MPI_STATUS_IGNORE, ierr)
+            call check(ierr, 'MPI_Recv (probe gather)')
+         end if
+         cnt(r) = size(part(r)%v)
+      end do
+      call MPI_Waitall(nq, req(1:nq), MPI_STATUSES_IGNORE, ierr)
+      call check(ierr, 'MPI_Waitall (probe gather)')
+      allocate(rbuf(sum(cnt)))
+      a = 0
+      do r = 0, nranks - 1
+         rbuf(a + 1:a + cnt(r)) = part(r)%v
+         a = a + cnt(r)
+      end do
+   end subroutine par_allgather_probe
+
+   !> Point-to-point exchange with the ranks that share data: scnt(r) numbers of sbuf (in
+   !> rank order) to rank r, rcnt(r) numbers from rank r into rbuf (rank order); only the
+   !> pairs with a nonzero count send a message (MPI_Isend/MPI_Irecv, MPI_Waitall). Both
+   !> sides know the counts (a plan); this rank's own counts are ignored.
+   subroutine par_sparse_exchange(sbuf, scnt, rbuf, rcnt)
+      real(wp), intent(in), contiguous, asynchronous :: sbuf(:)
+      integer, intent(in) :: scnt(0:), rcnt(0:)
+      real(wp), intent(inout), contiguous, asynchronous :: rbuf(:)
+      type(MPI_Request), allocatable :: req(:)
+      integer, parameter :: TAG_SPARSE = 104
+      integer :: r, a, b, nq, ierr
+      if (.not. mpi_on) return
+      allocate(req(2*nranks))
+      nq = 0
+      a = 0
+      do r = 0, nranks - 1
+         if (rcnt(r) > 0 .and. r /= my_rank) then
+            nq = nq + 1
+            call MPI_Irecv(rbuf(a + 1:a + rcnt(r)), rcnt(r), MPI_DOUBLE_PRECISION, r, &
+                           TAG_SPARSE, comm, req(nq), ierr)
+            call check(ierr, 'MPI_Irecv (sparse exchange)')
+         end if
+         a = a + rcnt(r)
+      end do
+      b = 0
+      do r = 0, nranks - 1
+         if (scnt(r) > 0 .and. r /= my_rank) then
+            nq = nq + 1
+            call MPI_Isend(sbuf(b + 1:b + scnt(r)), scnt(r), MPI_DOUBLE_PRECISION, r, &
+                           TAG_SPARSE, comm, req(nq), ierr)
+            call check(ierr, 'MPI_Isend (sparse exchange)')
+         end if
+         b = b + scnt(r)
+      end do
+      call MPI_Waitall(nq, req(1:nq), MPI_STATUSES_IGNORE, ierr)
+      call check(ierr, 'MPI_Waitall (sparse exchange)')
+   end subroutine par_sparse_exchange
 
    !> Wall-clock seconds (MPI_Wtime under MPI, else the system clock).
    real(wp) function par_wtime()

@@ -37,7 +37,8 @@ module dx_par_contact
    use dx_par_rigid, only: par_rigid_centres
    use dx_par, only: par_rank, par_size, par_abort, par_allreduce, PAR_MAX, PAR_SUM, &
                      gather_plan_t, par_gather_setup, par_gather_values, par_gather_ordered, &
-                     par_wtime, par_alltoallv
+                     par_wtime, par_alltoallv, par_allgatherv_real, par_sparse_exchange, &
+                     par_allgather_probe
    implicit none
    private
    public :: par_contact_setup, par_contact_forces, par_contact_add, par_contact_work, &
@@ -56,6 +57,11 @@ module dx_par_contact
    integer, allocatable, save :: h_req(:), h_snd(:) !< halo: nodes received / sent
    integer, allocatable, save :: h_rcnt(:), h_scnt(:)   !< (0:np-1) their counts per rank
    integer(8), save :: nval_recv = 0                !< numbers received (x, v, work terms)
+   integer(8), save :: nres_recv = 0                !< numbers received (results)
+   !> the largest contact-node speed |v(n+1/2)| over the ranks, found with the work
+   !> exchange, for the next cycle's contact stage (v does not change in between)
+   real(wp), save :: vmax_next = 0.0_wp
+   logical, save :: have_vmax = .false.
    integer, allocatable, save :: l_loc(:), l_glob(:)   !< held contact nodes: local, global
    real(wp), allocatable, save :: cvold(:, :)       !< (3, nn global) v(n-1/2), contact nodes
    real(wp), save :: t_cont = 0.0_wp, t_comm = 0.0_wp
@@ -74,6 +80,7 @@ contains
       integer, intent(in) :: node_global(:)
       logical, intent(in) :: owned(:)
       logical, allocatable :: isc(:)
+      character(16) :: mode
       integer :: i
       if (.not. allocated(g%contact)) return
       g%contact%nstrip = par_size()
@@ -87,6 +94,15 @@ contains
       c_own = pack(l_loc, owned(l_loc))
       c_glob = node_global(c_own)
       call par_gather_setup(plan_c, c_glob)
+      ! owner-computes (default): this rank computes the slave nodes it owns, the same
+      ! nodes at every sort (no strips to find, and its slave nodes' x and v are its own);
+      ! DYNX_PAR_CONTACT=strips: the geometric strips of dx_contact_strips
+      call get_environment_variable('DYNX_PAR_CONTACT', mode, status=i)
+      if (i /= 0 .or. trim(mode) /= 'strips') then
+         allocate(g%contact%mine_node(g%nn))
+         g%contact%mine_node = .false.
+         g%contact%mine_node(c_glob) = .true.
+      end if
       block
          integer, allocatable :: ak(:)
          real(wp), allocatable :: av(:, :)
@@ -161,7 +177,7 @@ contains
          sb(6*i - 5:6*i - 3) = model%x(:, n)
          sb(6*i - 2:6*i) = model%v(:, n)
       end do
-      call par_alltoallv(sb, 6*h_scnt, rb, 6*h_rcnt)
+      call par_sparse_exchange(sb, 6*h_scnt, rb, 6*h_rcnt)   ! with the halo's ranks only
       do i = 1, size(h_req)
          n = h_req(i)
          g%x(:, n) = rb(6*i - 5:6*i - 3)
@@ -239,16 +255,22 @@ contains
       type(model_t), intent(inout) :: g
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: dtcrit
+      integer, parameter :: NR = NREC + 3
       real(wp) :: w2max, t0, t1, vmax
-      integer, allocatable :: keys(:), akeys(:)
-      real(wp), allocatable :: vals(:, :), avals(:, :)
-      integer :: i, j, k, n, off, q
+      integer, allocatable :: cnt(:)
+      real(wp), allocatable :: sb(:), rb(:)
+      integer :: i, j, k, n, off, q, m, pos, r
       logical :: due
       t0 = par_wtime()
       g%time = model%time
       g%cycle = model%cycle
-      vmax = contact_vmax(model%v, c_own)      ! the owners' largest speed, then the max
-      call par_allreduce(vmax, PAR_MAX)
+      if (have_vmax) then      ! from the last cycle's work exchange (v unchanged since)
+         vmax = vmax_next
+      else
+         vmax = contact_vmax(model%v, c_own)   ! the owners' largest speed, then the max
+         call par_allreduce(vmax, PAR_MAX)
+      end if
+      have_vmax = .false.
       ! rigid bodies in contact: their centres x_c(n) into g (dx_par_rigid)
       if (allocated(model%rigid)) call par_rigid_centres(model%rigid, g%rigid)
       call contact_prepare(g, dt_old, vmax, due)
@@ -262,7 +284,10 @@ contains
       call contact_search_nodes(g, dt_old, dtcrit, vmax, w2max)
       if (due .or. fresh) call halo_plan(g)
       fresh = .false.
-      ! this strip's results (slave nodes near or in contact), keyed by serial position
+      ! this rank's results (slave nodes near or in contact): after this rank's candidate
+      ! bound w2max, per node its serial position and NR numbers (segments, shape
+      ! functions, force, gap, tangential force); to every rank in one MPI_Allgatherv (and
+      ! the counts), each node's result then in its place
       associate (cs => g%contact)
          n = 0
          do i = 1, size(cs%iface)
@@ -273,8 +298,9 @@ contains
                end associate
             end do
          end do
-         allocate(keys(n), vals(NREC + 2, n))
-         n = 0
+         allocate(sb(1 + NR*n))
+         sb(1) = w2max
+         m = 1
          off = 0
          do i = 1, size(cs%iface)
             do j = 1, size(cs%iface(i)%pass)
@@ -283,10 +309,10 @@ contains
                      do k = 1, p%nnode
                         if (.not. p%mine(k)) cycle
                         if (p%rint(1, k) == 0 .and. p%rint(2, k) == 0) cycle
-                        n = n + 1
-                        keys(n) = off + k
-                        vals(1:2, n) = real(p%rint(:, k), wp)
-                        vals(3:, n) = p%rval(:, k)
+                        sb(m + 1) = real(off + k, wp)
+                        sb(m + 2:m + 3) = real(p%rint(:, k), wp)
+                        sb(m + 4:m + NR) = p%rval(:, k)
+                        m = m + NR
                      end do
                   end if
                   off = off + p%nnode
@@ -296,35 +322,41 @@ contains
          nrec_sent = nrec_sent + n
          t0 = par_wtime()
          t_cont = t_cont + (t0 - t1)
-         call par_gather_ordered(keys, vals, akeys, avals)
+         call par_allgather_probe(sb, rb, cnt)
          t1 = par_wtime()
          t_comm = t_comm + (t1 - t0)
-         ! every result into its slave node (the others: nothing to add)
-         q = 1
-         off = 0
-         do i = 1, size(cs%iface)
-            do j = 1, size(cs%iface(i)%pass)
-               associate (p => cs%iface(i)%pass(j))
-                  if (allocated(p%rint)) then
-                     do while (q <= size(akeys))
-                        if (akeys(q) > off + p%nnode) exit
-                        k = akeys(q) - off
-                        p%rint(:, k) = nint(avals(1:2, q))
-                        p%rval(:, k) = avals(3:, q)
-                        q = q + 1
-                     end do
-                  end if
-                  off = off + p%nnode
-               end associate
-            end do
+         nres_recv = nres_recv + size(rb) - size(sb)
+         ! the other ranks' results into their slave nodes (ascending keys per rank)
+         pos = 0
+         do r = 0, size(cnt) - 1
+            if (r /= par_rank()) then
+               w2max = max(w2max, rb(pos + 1))
+               q = pos + 1                 ! last number read
+               off = 0
+               do i = 1, size(cs%iface)
+                  do j = 1, size(cs%iface(i)%pass)
+                     associate (p => cs%iface(i)%pass(j))
+                        if (allocated(p%rint)) then
+                           do while (q < pos + cnt(r))
+                              k = nint(rb(q + 1)) - off
+                              if (k > p%nnode) exit
+                              p%rint(:, k) = nint(rb(q + 2:q + 3))
+                              p%rval(:, k) = rb(q + 4:q + NR)
+                              q = q + NR
+                           end do
+                        end if
+                        off = off + p%nnode
+                     end associate
+                  end do
+               end do
+            end if
+            pos = pos + cnt(r)
          end do
       end associate
+      ! the row sums of all results, added in the serial order (every rank alike); w2max
+      ! is now the largest candidate bound over the ranks
       call contact_assemble(g, w2max, .false.)
-      ! the candidates' bound (w2pot) is this strip's: the largest over the strips
-      t0 = par_wtime()
-      t_cont = t_cont + (t0 - t1)
-      call par_allreduce(w2max, PAR_MAX)
-      t_comm = t_comm + (par_wtime() - t0)
+      t_cont = t_cont + (par_wtime() - t1)
       call contact_dt(g%contact, w2max, dtcrit)
       ncycle = ncycle + 1
    end subroutine par_contact_forces
@@ -349,28 +381,52 @@ contains
       real(wp), intent(in) :: vold(:, :), dtavg
       character(*), intent(in) :: outdir
       type(error_t), allocatable :: error
-      integer, allocatable :: keys(:), akeys(:)
-      real(wp), allocatable :: vals(:, :), avals(:, :)
-      integer :: i, n
+      integer, allocatable :: cnt(:), d(:)
+      real(wp), allocatable :: sb(:), rb(:)
+      integer :: i, n, np, r, l, nd
       real(wp) :: t0
       t0 = par_wtime()
-      n = 0
-      do i = 1, size(c_own)
-         if (any(g%contact%fc(:, c_glob(i)) /= 0.0_wp)) n = n + 1
+      ! the nodes with a contact force are the same on every rank (fc is replicated): the
+      ! counts per owner are known, one MPI_Allgatherv (ascending global id per rank)
+      np = par_size()
+      allocate(cnt(0:np - 1), d(0:np - 1))
+      cnt = 0
+      do i = 1, size(c_all)
+         if (.not. any(g%contact%fc(:, c_all(i)) /= 0.0_wp)) cycle
+         cnt(c_owner(i)) = cnt(c_owner(i)) + 6
       end do
-      allocate(keys(n), vals(6, n))
-      n = 0
-      do i = 1, size(c_own)
-         if (.not. any(g%contact%fc(:, c_glob(i)) /= 0.0_wp)) cycle
-         n = n + 1
-         keys(n) = c_glob(i)
-         vals(1:3, n) = vold(:, c_own(i))
-         vals(4:6, n) = model%v(:, c_own(i))
+      cnt = cnt + 1                  ! first: the rank's largest contact-node speed
+      allocate(sb(cnt(par_rank())))
+      sb(1) = contact_vmax(model%v, c_own)
+      n = 1
+      do i = 1, size(c_all)
+         if (c_owner(i) /= par_rank()) cycle
+         if (.not. any(g%contact%fc(:, c_all(i)) /= 0.0_wp)) cycle
+         l = loc_of(c_all(i))
+         sb(n + 1:n + 3) = vold(:, l)
+         sb(n + 4:n + 6) = model%v(:, l)
+         n = n + 6
       end do
-      call par_gather_ordered(keys, vals, akeys, avals)
-      cvold(:, akeys) = avals(1:3, :)
-      g%v(:, akeys) = avals(4:6, :)
-      nval_recv = nval_recv + size(avals) - size(vals)
+      call par_allgatherv_real(sb, rb, counts=cnt)
+      d(0) = 0
+      do r = 1, np - 1
+         d(r) = d(r - 1) + cnt(r - 1)
+      end do
+      vmax_next = 0.0_wp
+      do r = 0, np - 1
+         vmax_next = max(vmax_next, rb(d(r) + 1))
+         d(r) = d(r) + 1
+      end do
+      have_vmax = .true.
+      do i = 1, size(c_all)
+         nd = c_all(i)
+         if (.not. any(g%contact%fc(:, nd) /= 0.0_wp)) cycle
+         r = c_owner(i)
+         cvold(:, nd) = rb(d(r) + 1:d(r) + 3)
+         g%v(:, nd) = rb(d(r) + 4:d(r) + 6)
+         d(r) = d(r) + 6
+      end do
+      nval_recv = nval_recv + size(rb) - size(sb)
       t_comm = t_comm + (par_wtime() - t0)
       call contact_work(g, cvold, dtavg, outdir, error)
       if (allocated(error)) call par_abort(error%message, error%code)   ! rank 0 alone
@@ -399,6 +455,12 @@ contains
       call log_info('dynx: MPI contact: '//str(size(c_all))//' contact nodes; numbers '// &
          'received per rank and cycle (x, v, work terms; without the results): mean '// &
          rstr(rv/real(par_size(), wp), 4)//', max '//rstr(rvm, 4))
+      rv = real(nres_recv, wp)/real(max(1, ncycle), wp)
+      rvm = rv
+      call par_allreduce(rv, PAR_SUM)
+      call par_allreduce(rvm, PAR_MAX)
+      call log_info('dynx: MPI contact: numbers received per rank and cycle (results): '// &
+         'mean '//rstr(rv/real(par_size(), wp), 4)//', max '//rstr(rvm, 4))
       call log_info('dynx: MPI contact: '//str(ncycle)//' cycles, per cycle: search + '// &
          'forces '//rstr(1.0e6_wp*t(1), 4)//' us (max over ranks '//rstr(1.0e6_wp*tm(1), 4)// &
          '), contact communication '//rstr(1.0e6_wp*t(2), 4)//' us (max '// &

@@ -438,7 +438,7 @@ contains
       integer :: i, j
       do i = 1, size(cs%iface)
          do j = 1, size(cs%iface(i)%pass)
-            call contact_strips(cs%iface(i)%pass(j), x, cs%nstrip, cs%istrip)
+            call contact_strips(cs%iface(i)%pass(j), x, cs%nstrip, cs%istrip, cs%mine_node)
          end do
       end do
    end subroutine contact_strips_all
