@@ -132,8 +132,18 @@ expect_err "a missing rank file" 4 "rank_00002.h5: no such file" \
 expect_err "a deck with an input error" 2 "deck.k:14:11: *MAT_ELASTIC: field RO:" \
     "$PART" tests/regression/bad_negative_density/deck.k -n 2 -o "$OUT/x"
 expect_err "-n 0" 2 "-n needs a positive integer" "$PART" "$deck" -n 0
-expect_err "more ranks than elements" 2 "cannot split 7 elements into 8 ranks" \
-    "$PART" tests/regression/patch_constant_strain/deck.k -n 8 -o "$OUT/x"
+# more ranks than elements: one element per rank, the last rank empty, files readable
+rm -rf "$OUT/empty"
+if "$PART" tests/regression/patch_constant_strain/deck.k -n 8 -o "$OUT/empty" \
+        >"$OUT/err.out" 2>"$OUT/err.txt" \
+   && "$PART" tests/regression/patch_constant_strain/deck.k -n 8 -o "$OUT/empty" --verify \
+        >>"$OUT/err.out" 2>>"$OUT/err.txt" \
+   && grep -q '^empty ranks (no elements): 1' "$OUT/empty/partition.txt" \
+   && [ -f "$OUT/empty/rank_00007.h5" ]; then
+    pass "7 elements on 8 ranks: exit 0, files verified, report lists 1 empty rank"
+else
+    fail "7 elements on 8 ranks: $(cat "$OUT/err.txt"; grep empty "$OUT/empty/partition.txt" 2>/dev/null)"
+fi
 echo "$np_ passed, $nf_ failed"
 [ $nf_ -eq 0 ] || exit 1
 exit 0
