@@ -2,7 +2,8 @@
 # make bench (MPI contact part): N elastic cubes in a box of stonewalls with
 # *CONTACT_AUTOMATIC_SINGLE_SURFACE (scripts/gen_contact_decks.py cubes; default N = 512:
 # 13,824 hexes, 28,672 contact nodes), 200 cycles, run serially (NP 1) and with
-# mpirun -np 2 (--oversubscribe), alternating, REPS times. From dynx's end-of-run lines:
+# mpirun -np 2 (--oversubscribe) with each --contact-split (owner, strips), alternating,
+# REPS times. From dynx's end-of-run lines:
 # serial contact time per cycle (bucket sorts, local search + forces); MPI: search + forces
 # per cycle (mean and max over the ranks, split into sorts/strips and local search/forces/
 # assembly), the contact communication per cycle, numbers received per rank and cycle, and
@@ -24,39 +25,45 @@ echo "### MPI contact (make bench, scripts/bench_par_contact.sh), $(date -u +%Y-
 echo ""
 echo "$N cubes, 200 cycles, times per cycle in microseconds (wall clock; shared machine: compare within a row pair only)."
 echo ""
-echo "| run | NP | contact nodes | sorts / strips [us] | local search + forces (+ assembly) [us] | contact communication [us] | numbers received per rank | slave nodes per strip | whole run [s] | bitwise |"
-echo "|---|---|---|---|---|---|---|---|---|---|"
+echo "| run | NP | split | contact nodes | sorts / strips [us] | local search + forces (+ assembly) [us] | contact communication [us] | numbers received per rank | slave nodes per rank | whole run [s] | bitwise |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|"
 } > $B/table.md
 r=1
 while [ $r -le "$REPS" ]; do
     rm -rf $B/s $B/p
     t0=$(date +%s.%N)
     bin/dynx -i $B/cubes.k -o $B/s --status 1 > $B/s.log 2>&1
+    t1s=$(date +%s.%N)
+    for split in owner strips; do
+    rm -rf $B/p
     t1=$(date +%s.%N)
-    mpirun $opts -np 2 bin/dynx -i $B/cubes.k -o $B/p --status 1 > $B/p.log 2>&1
+    mpirun $opts -np 2 bin/dynx -i $B/cubes.k -o $B/p --status 1 --contact-split $split > $B/p.log 2>&1
     t2=$(date +%s.%N)
     same=no
     cmp -s $B/s/glstat $B/p/glstat && h5diff -q $B/s/d3plot.h5 $B/p/d3plot.h5 >/dev/null 2>&1 && same=yes
-    python3 - $B/s.log $B/p.log "$r" "$t0" "$t1" "$t2" "$same" >> $B/table.md <<'PY'
+    python3 - $B/s.log $B/p.log "$r" "$t0" "$t1" "$t2" "$same" "$split" "$t1s" >> $B/table.md <<'PY'
 import re, sys
 s, p = open(sys.argv[1]).read(), open(sys.argv[2]).read()
 r, t0, t1, t2, same = sys.argv[3], float(sys.argv[4]), float(sys.argv[5]), float(sys.argv[6]), sys.argv[7]
+split, t1s = sys.argv[8], float(sys.argv[9])
 m = re.search(r'contact: \d+ interface\(s\), (\d+) contact nodes, (\d+) bucket sorts, wall time '
               r'search ([0-9.E+-]+) s, local search \+ forces ([0-9.E+-]+) s', s)
 ncyc = int(re.search(r'normal termination at cycle (\d+)', s).group(1)) + 1
 nn, srt, frc = m.group(1), float(m.group(3)), float(m.group(4))
-print('| %s | 1 | %s | %.0f | %.0f | - | - | - | %.2f | - |' % (r, nn, 1e6*srt/ncyc, 1e6*frc/ncyc, t1 - t0))
+if split == 'owner':
+    print('| %s | 1 | - | %s | %.0f | %.0f | - | - | - | %.2f | - |' % (r, nn, 1e6*srt/ncyc, 1e6*frc/ncyc, t1s - t0))
 m1 = re.search(r'per cycle: search \+ forces ([0-9.E+-]+) us \(max over ranks ([0-9.E+-]+)\), contact '
                r'communication ([0-9.E+-]+) us \(max ([0-9.E+-]+)\); of search \+ forces: bucket sorts '
                r'and strips ([0-9.E+-]+) us \(max ([0-9.E+-]+)\), local search, forces and assembly '
                r'([0-9.E+-]+) us \(max ([0-9.E+-]+)\)', p)
 m2 = re.search(r'numbers received per rank and cycle .*: mean ([0-9.E+-]+), max ([0-9.E+-]+)', p)
-m3 = re.findall(r'slave nodes per strip \(last sort, axis \d\):([ 0-9]+)', p)
+m3 = re.findall(r'slave nodes per rank \(last sort, strip axis \d\):([ 0-9]+)', p)
 g = [float(x) for x in m1.groups()]
-print('| %s | 2 | %s | %.0f (max %.0f) | %.0f (max %.0f) | %.0f (max %.0f) | %s | %s | %.2f | %s |'
-      % (r, nn, g[4], g[5], g[6], g[7], g[2], g[3], '%.0f (max %.0f)' % (float(m2.group(1)), float(m2.group(2))) if m2 else '-',
+print('| %s | 2 | %s | %s | %.0f (max %.0f) | %.0f (max %.0f) | %.0f (max %.0f) | %s | %s | %.2f | %s |'
+      % (r, split, nn, g[4], g[5], g[6], g[7], g[2], g[3], '%.0f (max %.0f)' % (float(m2.group(1)), float(m2.group(2))) if m2 else '-',
          ' / '.join(x.strip() for x in m3), t2 - t1, same))
 PY
+    done
     r=$((r + 1))
 done
 cat $B/table.md

@@ -8,6 +8,8 @@
 # tolerance. glstat prints 11 digits, so the final energies, work sums and momentum are also
 # compared as IEEE bit patterns (DYNX_ENERGY_BITS=1: one more serial run into
 # SERIAL_OUTDIR/bits). Exit 1 on any difference.
+# DYNX_MPI_ARGS: more dynx options for the MPI runs (e.g. --contact-split strips); their
+# output then goes to SERIAL_OUTDIR/npNP_TAG with TAG = DYNX_MPI_TAG (default: args).
 set -u
 deck=$1
 ref=$2
@@ -23,12 +25,15 @@ mkdir -p "$ref/bits"
 DYNX_ENERGY_BITS=1 timeout 300 bin/dynx -i "$deck" -o "$ref/bits" >"$ref/bits/stdout" 2>&1
 sbits=$(bits "$ref/bits/stdout")
 [ -n "$sbits" ] || { echo "serial run for the energy bits failed:"; tail -n 5 "$ref/bits/stdout"; }
+xargs_=${DYNX_MPI_ARGS:-}
+tag=""
+[ -n "$xargs_" ] && tag=_${DYNX_MPI_TAG:-args}
 for np in $nps; do
-    out=$ref/np$np
+    out=$ref/np$np$tag
     rm -rf "$out"
     mkdir -p "$out"
     t0=$(date +%s)
-    DYNX_ENERGY_BITS=1 timeout 300 $MPIRUN $opts -x DYNX_ENERGY_BITS -np "$np" bin/dynx -i "$deck" -o "$out" >"$out/stdout" 2>"$out/stderr"
+    DYNX_ENERGY_BITS=1 timeout 300 $MPIRUN $opts -x DYNX_ENERGY_BITS -np "$np" bin/dynx -i "$deck" -o "$out" $xargs_ >"$out/stdout" 2>"$out/stderr"
     rc=$?
     t1=$(date +%s)
     if [ $rc -ne 0 ]; then
@@ -51,6 +56,6 @@ for np in $nps; do
         res="$res d3plot.h5=DIFFERS"; fail=1
         h5diff "$ref/d3plot.h5" "$out/d3plot.h5" | head -5
     fi
-    echo "NP $np ($((t1 - t0)) s):$res"
+    echo "NP $np${xargs_:+ $xargs_} ($((t1 - t0)) s):$res"
 done
 exit $fail

@@ -23,6 +23,7 @@ program dynx
    use dx_par_engine, only: par_engine_setup, par_engine_global, par_engine_report, &
                             par_engine_together
    use dx_par_emc, only: par_emc_together
+   use dx_par_contact, only: par_contact_set_split
    implicit none
    character(:), allocatable :: deck, outdir, arg, val, rfile, rdeck, partdir
    type(model_t) :: model
@@ -74,6 +75,11 @@ program dynx
          call parse_raise(val, opts%ck%raise_cycle, opts%ck%raise_sig, opts%ck%raise_rank)
       case ('--ignore-unknown')
          ignore_unknown = .true.
+      case ('--contact-split')
+         i = i + 1; val = get_arg(i)
+         if (val /= 'owner' .and. val /= 'strips') &
+            call die_usage('--contact-split needs owner or strips, not '//val)
+         call par_contact_set_split(val)
       case default
          if (len(arg) > 2) then
             if (arg(1:2) == 'i=' .or. arg(1:2) == 'I=') then
@@ -207,6 +213,11 @@ contains
          '                       dynx itself at cycle N (tests of the signal path); MPI:', &
          '                       @R only on rank R (default every rank)', &
          '  --ignore-unknown     unknown keywords are warnings, not errors', &
+         '  --contact-split M    MPI runs with automatic contact: which rank computes a slave', &
+         '                       node: owner (default; the rank owning it) or strips (1-D', &
+         '                       strips of equal node count along the longest axis, rebuilt', &
+         '                       with the bucket sort; ParaDyn); the results are the', &
+         '                       same bits either way', &
          '  -h, --help           this text', &
          '', &
          'exit codes: 0 normal termination, 2 input error, 3 numerical failure in the run,', &

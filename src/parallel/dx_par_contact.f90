@@ -42,9 +42,12 @@ module dx_par_contact
    implicit none
    private
    public :: par_contact_setup, par_contact_forces, par_contact_add, par_contact_work, &
-             par_contact_report, contact_groups, write_contact_report
+             par_contact_report, contact_groups, write_contact_report, par_contact_set_split
 
    logical, save :: on = .false.
+   !> which rank computes a slave node: 'owner' (the rank owning it) or 'strips' (ParaDyn's
+   !> geometric strips); dynx --contact-split, else DYNX_PAR_CONTACT, else 'owner'
+   character(16), save :: split_mode = ''
    !> true until the first contact stage: it gathers every contact node's x and v and plans
    !> the halo even between sorts (a continued run: g's x is the deck's, the plan empty)
    logical, save :: fresh = .true.
@@ -69,6 +72,12 @@ module dx_par_contact
    integer(8), save :: nrec_sent = 0
 
 contains
+
+   !> dynx --contact-split M (M = owner or strips, checked by the caller)
+   subroutine par_contact_set_split(mode)
+      character(*), intent(in) :: mode
+      split_mode = mode
+   end subroutine par_contact_set_split
 
    !> Start of an MPI run with contact: g is the global model (serial numbering), model the
    !> rank's sub-model (local nodes 1..nloc with global ids node_global, owned(i) if this
@@ -96,9 +105,16 @@ contains
       call par_gather_setup(plan_c, c_glob)
       ! owner-computes (default): this rank computes the slave nodes it owns, the same
       ! nodes at every sort (no strips to find, and its slave nodes' x and v are its own);
-      ! DYNX_PAR_CONTACT=strips: the geometric strips of dx_contact_strips
-      call get_environment_variable('DYNX_PAR_CONTACT', mode, status=i)
-      if (i /= 0 .or. trim(mode) /= 'strips') then
+      ! strips (--contact-split strips or DYNX_PAR_CONTACT=strips): the geometric strips
+      ! of dx_contact_strips
+      mode = split_mode
+      if (len_trim(mode) == 0) then
+         call get_environment_variable('DYNX_PAR_CONTACT', mode, status=i)
+         if (i /= 0) mode = 'owner'
+      end if
+      if (trim(mode) /= 'strips') mode = 'owner'
+      split_mode = mode
+      if (trim(mode) == 'owner') then
          allocate(g%contact%mine_node(g%nn))
          g%contact%mine_node = .false.
          g%contact%mine_node(c_glob) = .true.
@@ -452,6 +468,8 @@ contains
       rvm = rv
       call par_allreduce(rv, PAR_SUM)
       call par_allreduce(rvm, PAR_MAX)
+      call log_info('dynx: MPI contact: slave nodes split by '//trim(split_mode)// &
+                    ' (--contact-split)')
       call log_info('dynx: MPI contact: '//str(size(c_all))//' contact nodes; numbers '// &
          'received per rank and cycle (x, v, work terms; without the results): mean '// &
          rstr(rv/real(par_size(), wp), 4)//', max '//rstr(rvm, 4))
@@ -477,7 +495,7 @@ contains
                   if (allocated(p%mine)) cnt(par_rank()) = count(p%mine)
                   call par_allreduce(cnt, PAR_SUM)
                   line = 'dynx: MPI contact: interface '//str(cs%iface(i)%label)//' pass '// &
-                         str(j)//': slave nodes per strip (last sort, axis '// &
+                         str(j)//': slave nodes per rank (last sort, strip axis '// &
                          str(p%strip_axis)//'):'
                   do np = 0, size(cnt) - 1
                      line = line//' '//str(cnt(np))
