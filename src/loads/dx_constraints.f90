@@ -9,7 +9,16 @@ module dx_constraints
    use dx_model, only: model_t
    implicit none
    private
-   public :: apply_spc, apply_prescribed, apply_rigidwalls
+   public :: apply_spc, apply_prescribed, apply_rigidwalls, add_wall_hits
+
+   !> The nodes the stonewalls corrected in one cycle (apply_rigidwalls), in wall order:
+   !> wall(i), k(i) = the wall and the position in its node list; val(1, i) the work term,
+   !> val(2:4, i) = m dv/dtavg.
+   type, public :: wall_hits_t
+      integer :: n = 0
+      integer, allocatable :: wall(:), k(:)
+      real(wp), allocatable :: val(:, :)
+   end type wall_hits_t
 contains
 
    !> Zero the constrained translational velocity components.
@@ -54,20 +63,24 @@ contains
       end do
    end subroutine apply_prescribed
 
-   !> Stonewalls: correct v so no slave node crosses its wall during the step; accumulate
-   !> the wall's resultant force (force on the wall = - sum m*dv/dtavg).
-   !> work: accumulates the work the walls do on the nodes, f.dtavg (v(n-1/2) + v(n+1/2))/2.
-   subroutine apply_rigidwalls(model, dt, dtavg, vold, v, work)
-      type(model_t), intent(inout) :: model
+   !> Stonewalls: correct v so no slave node crosses its wall during the step. Each node a
+   !> wall corrects is a hit, recorded in wall order (walls, then the wall's node list) with
+   !> its terms: the work the wall does on it, f.dtavg (v(n-1/2) + v(n+1/2))/2 = m dv.(v(n-1/2)
+   !> + v(n+1/2))/2, and m dv/dtavg (the force on the wall is minus their sum). add_wall_hits
+   !> sums them in that order. Terms and sums are separate steps so that an MPI run, whose
+   !> ranks compute the hits of the nodes they own with this same code, can add the gathered
+   !> terms in the serial order and get the serial bits (dx_par_engine).
+   subroutine apply_rigidwalls(model, dt, dtavg, vold, v, hits)
+      type(model_t), intent(in) :: model
       real(wp), intent(in) :: dt, dtavg
       real(wp), intent(in) :: vold(:, :)
       real(wp), intent(inout) :: v(:, :)
-      real(wp), intent(inout) :: work
+      type(wall_hits_t), intent(inout) :: hits
       integer :: w, k, nd
-      real(wp) :: dist, vn, dvn, vt(3), vtn, jt, fsum(3), dvel(3)
+      real(wp) :: dist, vn, dvn, vt(3), vtn, jt, dvel(3)
+      hits%n = 0
       if (.not. allocated(model%walls)) return
       do w = 1, size(model%walls)
-         fsum = 0.0_wp
          associate (wall => model%walls(w))
             do k = 1, size(wall%nodes)
                nd = wall%nodes(k)
@@ -89,11 +102,52 @@ contains
                   end if
                end if
                v(:, nd) = v(:, nd) + dvel
-               fsum = fsum - model%mass(nd)*dvel/dtavg
-               work = work + 0.5_wp*model%mass(nd)*dot_product(dvel, vold(:, nd) + v(:, nd))
+               call add_hit(w, k, 0.5_wp*model%mass(nd)*dot_product(dvel, vold(:, nd) + v(:, nd)), &
+                            model%mass(nd)*dvel/dtavg)
             end do
-            wall%force = fsum
          end associate
       end do
+   contains
+      subroutine add_hit(w, k, work, f)
+         integer, intent(in) :: w, k
+         real(wp), intent(in) :: work, f(3)
+         integer, allocatable :: iw(:), ik(:)
+         real(wp), allocatable :: vv(:, :)
+         integer :: m
+         if (.not. allocated(hits%wall)) allocate(hits%wall(16), hits%k(16), hits%val(4, 16))
+         if (hits%n == size(hits%wall)) then
+            m = 2*hits%n
+            allocate(iw(m), ik(m), vv(4, m))
+            iw(1:hits%n) = hits%wall(1:hits%n)
+            ik(1:hits%n) = hits%k(1:hits%n)
+            vv(:, 1:hits%n) = hits%val(:, 1:hits%n)
+            call move_alloc(iw, hits%wall)
+            call move_alloc(ik, hits%k)
+            call move_alloc(vv, hits%val)
+         end if
+         hits%n = hits%n + 1
+         hits%wall(hits%n) = w
+         hits%k(hits%n) = k
+         hits%val(1, hits%n) = work
+         hits%val(2:4, hits%n) = f
+      end subroutine add_hit
    end subroutine apply_rigidwalls
+
+   !> The serial sums of one cycle's hits: work += the work terms in hit order; each wall's
+   !> resultant force = - (its hits' m dv/dtavg summed in order), zero without hits.
+   subroutine add_wall_hits(model, hits, work)
+      type(model_t), intent(inout) :: model
+      type(wall_hits_t), intent(in) :: hits
+      real(wp), intent(inout) :: work
+      integer :: i, w
+      if (.not. allocated(model%walls)) return
+      do w = 1, size(model%walls)
+         model%walls(w)%force = 0.0_wp
+      end do
+      do i = 1, hits%n
+         w = hits%wall(i)
+         work = work + hits%val(1, i)
+         model%walls(w)%force = model%walls(w)%force - hits%val(2:4, i)
+      end do
+   end subroutine add_wall_hits
 end module dx_constraints

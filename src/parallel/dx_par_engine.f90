@@ -32,7 +32,8 @@ module dx_par_engine
    use dx_par, only: par_rank, par_size, par_abort, par_minloc, par_gather_ordered, &
                      par_allreduce, par_barrier, PAR_MAX, gather_plan_t, par_gather_setup, &
                      par_gather_values, par_wtime, PAR_SUM, par_bcast_text, &
-                     par_gather_setup_root, par_gather_values_root, par_bcast_real, par_minloc8
+                     par_gather_setup_root, par_gather_values_root, par_bcast_real, par_minloc8, &
+                     par_allgather_probe
    use dx_sort, only: sort_index
    use dx_par_model, only: par_model_t, par_model_build, par_fill_slots, par_exchange_forces, &
                            par_exchange_mass
@@ -40,8 +41,8 @@ module dx_par_engine
    use dx_rank_file, only: read_rank_file, write_rank_file, rank_file_name, deck_content_hash
    use dx_io_sys, only: sys_mkdir_p
    use dx_energy_sums, only: initial_kinetic, kinetic_energy, element_energies, &
-                             constraint_work, set_energy, constrained_nodes
-   use dx_constraints, only: apply_rigidwalls
+                             constraint_terms, set_energy, constrained_nodes
+   use dx_constraints, only: apply_rigidwalls, wall_hits_t
    use dx_par_loads, only: par_loads_setup, par_loads_take_mass
    use dx_hex8, only: hex8_mass_share
    use dx_par_rigid, only: par_rigid_setup
@@ -65,18 +66,29 @@ module dx_par_engine
    type(par_model_t), save :: pm                      !< this rank's sub-model plan
    integer, allocatable, save :: own(:)               !< owned local nodes
    integer, allocatable, save :: key_elem(:)          !< serial order key -> global element
-   integer, allocatable, save :: gcnodes(:)           !< constrained nodes (global)
-   integer, allocatable, save :: gcpos(:)             !< global node -> position in gcnodes
    logical, allocatable, save :: owned(:)             !< (nloc) this rank owns the node
-   real(wp), allocatable, save :: gvold(:, :), gvfree(:, :)
-   integer, allocatable, save :: bc_loc(:)            !< owned constrained or wall nodes
-   integer, allocatable, save :: lcpos(:)             !< local node -> position in cnodes
+   real(wp), allocatable, save :: gvold(:, :)
+   !> Work of the constraints and stonewalls (par_engine_constraints): the rank's
+   !> constrained nodes (the explicit loop's cnodes), the serial position of each owned one
+   !> (0: not owned), the map of each wall's local node list to its serial positions, and
+   !> the records of nonzero terms kept until a sum is needed
+   integer, allocatable, save :: lcn(:), lc_key(:)
+   real(wp), allocatable, save :: lc_term(:)
+   type :: int_list_t
+      integer, allocatable :: p(:)
+   end type int_list_t
+   type(int_list_t), allocatable, save :: wall_kg(:)
+   type(wall_hits_t), save :: hits
+   logical, save :: have_bc = .false.                 !< a constrained or wall node anywhere
+   real(wp), save :: key_mult = 1.0_wp                !< serial positions per (cycle, wall)
+   integer, parameter :: NREC_W = 7                   !< cycle, wall (0: constraint), position,
+                                                      !< work term, m dv/dtavg (walls)
+   real(wp), allocatable, save :: rec(:, :)           !< (NREC_W, nrec) kept records
+   integer, save :: nrec = 0
    integer, allocatable, save :: elem_loc(:, :)       !< (2, nel) piece and position
-   type(gather_plan_t), save :: plan_bc, plan_own, plan_elem
+   type(gather_plan_t), save :: plan_own, plan_elem
    integer, parameter :: NBUF_MAX = 32                !< cycles of work terms kept at most
    integer, save :: nbuf = 0
-   real(wp), allocatable, save :: buf(:, :, :)        !< (12, bc nodes, NBUF_MAX)
-   real(wp), save :: buf_dt(2, NBUF_MAX)              !< dt, dtavg of the kept cycles
    !> wall time in the force exchange, the dt reduction, the ordered gathers (sums, output)
    real(wp), save :: t_exch = 0.0_wp, t_dt = 0.0_wp, t_gath = 0.0_wp
    type(error_t), allocatable, save :: pending     !< a failure found here, not yet known to all
@@ -246,39 +258,42 @@ contains
          lel = ids(idx)
          lkey = [(serial_key(lel(j)), j = 1, n)]
       end block
-      call constrained_nodes(g, gcnodes)
-      allocate(gcpos(g%nn), gvfree(3, size(gcnodes)))
-      gcpos = 0
-      gcpos(gcnodes) = [(i, i = 1, size(gcnodes))]
-      gvfree = 0.0_wp
       block
-         logical, allocatable :: on_wall(:), bc(:)
-         integer, allocatable :: lc(:)
-         allocate(on_wall(g%nn), bc(pm%nloc), lcpos(model%nn))
-         on_wall = .false.
-         if (allocated(g%walls)) then
-            do k = 1, size(g%walls)
-               on_wall(g%walls(k)%nodes) = .true.
-            end do
-         end if
-         call constrained_nodes(model, lc)
-         lcpos = 0
-         lcpos(lc) = [(i, i = 1, size(lc))]
-         bc = on_wall(rp%nodes)
-         bc(lc) = .true.
-         bc_loc = pack([(i, i = 1, pm%nloc)], bc .and. owned)
-         allocate(buf(12, size(bc_loc), NBUF_MAX))
+         integer, allocatable :: gcnodes(:), gcpos(:)
+         integer :: nb, j, kmax
+         call constrained_nodes(g, gcnodes)
+         allocate(gcpos(g%nn))
+         gcpos = 0
+         gcpos(gcnodes) = [(i, i = 1, size(gcnodes))]
+         call constrained_nodes(model, lcn)          ! = the explicit loop's cnodes
+         allocate(lc_key(size(lcn)), lc_term(size(lcn)))
+         lc_key = 0
+         do i = 1, size(lcn)
+            if (lcn(i) <= pm%nloc) then
+               if (owned(lcn(i))) lc_key(i) = gcpos(pm%node_global(lcn(i)))
+            end if
+         end do
+         kmax = size(gcnodes)
+         nb = count(lc_key > 0)
          if (allocated(model%walls)) then     ! the rank's wall nodes, in wall order
+            allocate(wall_kg(size(model%walls)))
             do k = 1, size(model%walls)
-               model%walls(k)%nodes = pack(loc(g%walls(k)%nodes), loc(g%walls(k)%nodes) > 0)
+               associate (gn => g%walls(k)%nodes)
+                  model%walls(k)%nodes = pack(loc(gn), loc(gn) > 0)
+                  wall_kg(k)%p = pack([(j, j = 1, size(gn))], loc(gn) > 0)
+                  kmax = max(kmax, size(gn))
+                  nb = nb + size(gn)
+               end associate
             end do
          end if
+         call par_allreduce(nb, PAR_MAX)
+         have_bc = nb > 0
+         key_mult = real(kmax, wp) + 1.0_wp
+         allocate(rec(NREC_W, 64))
       end block
       if (root_only) then     ! ordered sums and output on rank 0 alone
-         call par_gather_setup_root(plan_bc, pm%node_global(bc_loc))
          call par_gather_setup_root(plan_own, pm%node_global(own))
       else
-         call par_gather_setup(plan_bc, pm%node_global(bc_loc))
          call par_gather_setup(plan_own, pm%node_global(own))
       end if
       block
@@ -455,9 +470,6 @@ contains
             if (allocated(g%spcs)) deallocate(g%spcs)
             if (allocated(g%prescribed)) deallocate(g%prescribed)
             if (allocated(gvold)) deallocate(gvold)
-            if (allocated(gvfree)) deallocate(gvfree)
-            if (allocated(gcpos)) deallocate(gcpos)
-            if (allocated(gcnodes)) deallocate(gcnodes)
          end if
       end if
       call mem_report()
@@ -503,7 +515,6 @@ contains
       if (allocated(g%mass)) node = node + 8*size(g%mass, kind=int64)
       if (allocated(g%node_label)) node = node + 4*size(g%node_label, kind=int64)
       if (allocated(gvold)) node = node + 8*size(gvold, kind=int64)
-      if (allocated(gcpos)) node = node + 4*size(gcpos, kind=int64)
       if (allocated(plan_own%keys)) node = node + 4*size(plan_own%keys, kind=int64)
       if (allocated(plan_own%perm)) node = node + 4*size(plan_own%perm, kind=int64)
    end subroutine global_bytes
@@ -734,32 +745,54 @@ contains
 
    !> Rigid walls and the work of constraint and wall forces. Each rank corrects its own
    !> wall nodes (the correction of a node depends on that node alone, and every holder of
-   !> a shared node has the same x, v and mass). The work sums are order-dependent, so the
-   !> owned constrained and wall nodes' x, v(n+1/2), v(n-1/2) and free velocity are kept
-   !> for up to NBUF_MAX cycles and, when a sum is needed (or the buffer is full), gathered
-   !> in one call and replayed cycle by cycle through the serial procedures on the global
-   !> model (constraint_work, apply_rigidwalls): the serial sums, bit for bit.
+   !> a shared node has the same x, v and mass) with the serial apply_rigidwalls, which also
+   !> gives each corrected node's work term; constraint_terms gives each constrained node's.
+   !> Both are the serial code on the serial numbers, so the terms of the nodes this rank
+   !> owns are the serial terms bit for bit. The sums are order-dependent: the owned terms
+   !> are kept (a constraint term of exactly +-0 is skipped: adding it to a sum that
+   !> started at +0 changes no bit; every wall hit is kept) for up to NBUF_MAX cycles and,
+   !> when a sum is needed (or the buffer is full), gathered on every rank and added in the
+   !> serial order (cycle, then node for wcon; cycle, wall, node for wrw). Only nodes the
+   !> constraints or walls act on travel: nothing per node and cycle otherwise.
    subroutine par_engine_constraints(model, vfree, vold, dt, dtavg, wcon, wrw, needed)
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: vfree(:, :), vold(:, :), dt, dtavg
       real(wp), intent(inout) :: wcon, wrw
       logical, intent(in) :: needed
-      real(wp) :: dummy
-      integer :: i, n
-      if (sum(plan_bc%counts) == 0) return     ! no constrained or wall node anywhere
+      integer :: i, w, k
+      if (.not. have_bc) return     ! no constrained or wall node anywhere
       nbuf = nbuf + 1
-      do i = 1, size(bc_loc)
-         n = bc_loc(i)
-         buf(1:3, i, nbuf) = model%x(:, n)
-         buf(4:6, i, nbuf) = model%v(:, n)
-         buf(7:9, i, nbuf) = vold(:, n)
-         buf(10:12, i, nbuf) = 0.0_wp
-         if (lcpos(n) > 0) buf(10:12, i, nbuf) = vfree(:, lcpos(n))
-      end do
-      buf_dt(:, nbuf) = [dt, dtavg]
-      dummy = 0.0_wp
-      if (allocated(model%walls)) call apply_rigidwalls(model, dt, dtavg, vold, model%v, dummy)
+      if (size(lcn) > 0) then
+         call constraint_terms(lcn, model%mass, vfree, vold, model%v, dtavg, lc_term)
+         do i = 1, size(lcn)
+            if (lc_key(i) > 0 .and. .not. (lc_term(i) == 0.0_wp)) &
+               call push([real(nbuf, wp), 0.0_wp, real(lc_key(i), wp), lc_term(i), 0.0_wp, &
+                          0.0_wp, 0.0_wp])
+         end do
+      end if
+      if (allocated(model%walls)) then
+         call apply_rigidwalls(model, dt, dtavg, vold, model%v, hits)
+         do i = 1, hits%n
+            w = hits%wall(i)
+            k = hits%k(i)
+            if (owned(model%walls(w)%nodes(k))) &
+               call push([real(nbuf, wp), real(w, wp), real(wall_kg(w)%p(k), wp), &
+                          hits%val(:, i)])
+         end do
+      end if
       if (needed .or. nbuf == NBUF_MAX) call flush_work(wcon, wrw)
+   contains
+      subroutine push(r)
+         real(wp), intent(in) :: r(NREC_W)
+         real(wp), allocatable :: t(:, :)
+         if (nrec == size(rec, 2)) then
+            allocate(t(NREC_W, 2*nrec))
+            t(:, 1:nrec) = rec(:, 1:nrec)
+            call move_alloc(t, rec)
+         end if
+         nrec = nrec + 1
+         rec(:, nrec) = r
+      end subroutine push
    end subroutine par_engine_constraints
 
    !> Before a restart dump: the kept cycles' work terms into wcon, wrw (the same additions
@@ -780,51 +813,45 @@ contains
       hash = deck_hash
    end subroutine par_engine_maps
 
-   !> Gather the kept cycles and add their work terms in serial order.
+   !> Gather the kept records on every rank and add their terms in the serial order; the
+   !> walls' resultant forces become those of the last kept cycle (the serial
+   !> add_wall_hits: zero, minus the hits' m dv/dtavg in wall order).
    subroutine flush_work(wcon, wrw)
       real(wp), intent(inout) :: wcon, wrw
-      real(wp), allocatable :: vals(:, :), gv(:, :)
-      integer :: c, i, nk
-      real(wp) :: t0, w(2)
+      real(wp), allocatable :: rb(:), sk(:)
+      integer, allocatable :: cnt(:), idx(:)
+      integer :: i, j, n, nw, w
+      real(wp) :: t0
       t0 = par_wtime()
-      nk = size(plan_bc%keys)
-      allocate(vals(12*nbuf, size(bc_loc)), gv(12*nbuf, nk))
-      do i = 1, size(bc_loc)
-         do c = 1, nbuf
-            vals(12*(c - 1) + 1:12*c, i) = buf(:, i, c)
-         end do
+      nw = 0
+      if (allocated(g%walls)) nw = size(g%walls)
+      call par_allgather_probe(reshape(rec(:, 1:nrec), [NREC_W*nrec]), rb, cnt)
+      n = size(rb)/NREC_W
+      allocate(sk(n))
+      do i = 1, n    ! (cycle, wall, position), wall 0 = the constraints
+         j = NREC_W*(i - 1)
+         sk(i) = ((rb(j + 1) - 1.0_wp)*real(nw + 1, wp) + rb(j + 2))*key_mult + rb(j + 3)
       end do
-      if (root_only) then     ! rank 0 replays the cycles, the others receive the sums
-         call par_gather_values_root(plan_bc, vals, gv)
-         if (par_rank() == 0) call replay()
-         w = [wcon, wrw]
-         call par_bcast_real(w, 0)
-         wcon = w(1)
-         wrw = w(2)
-      else
-         call par_gather_values(plan_bc, vals, gv)
-         call replay()
-      end if
-      nbuf = 0
-      t_gath = t_gath + (par_wtime() - t0)
-   contains
-      subroutine replay()
-      associate (keys => plan_bc%keys)
-         do c = 1, nbuf
-            g%x(:, keys) = gv(12*(c - 1) + 1:12*(c - 1) + 3, :)
-            g%v(:, keys) = gv(12*(c - 1) + 4:12*(c - 1) + 6, :)
-            gvold(:, keys) = gv(12*(c - 1) + 7:12*(c - 1) + 9, :)
-            do i = 1, nk
-               if (gcpos(keys(i)) > 0) gvfree(:, gcpos(keys(i))) = &
-                  gv(12*(c - 1) + 10:12*c, i)
-            end do
-            if (size(gcnodes) > 0) call constraint_work(gcnodes, g%mass, gvfree, gvold, &
-                                                        g%v, buf_dt(2, c), wcon)
-            if (allocated(g%walls)) call apply_rigidwalls(g, buf_dt(1, c), buf_dt(2, c), &
-                                                          gvold, g%v, wrw)
+      idx = [(i, i = 1, n)]
+      call sort_index(idx, sk)
+      if (nw > 0) then
+         do w = 1, nw
+            g%walls(w)%force = 0.0_wp
          end do
-      end associate
-      end subroutine replay
+      end if
+      do i = 1, n
+         j = NREC_W*(idx(i) - 1)
+         w = nint(rb(j + 2))
+         if (w == 0) then
+            wcon = wcon + rb(j + 4)
+         else
+            wrw = wrw + rb(j + 4)
+            if (nint(rb(j + 1)) == nbuf) g%walls(w)%force = g%walls(w)%force - rb(j + 5:j + 7)
+         end if
+      end do
+      nbuf = 0
+      nrec = 0
+      t_gath = t_gath + (par_wtime() - t0)
    end subroutine flush_work
 
    !> Energies and momentum of the step (when needed): nodal velocities and element

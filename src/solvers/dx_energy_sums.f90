@@ -11,8 +11,8 @@ module dx_energy_sums
    use dx_model, only: model_t, elem_block_t, energy_t
    implicit none
    private
-   public :: initial_kinetic, kinetic_energy, element_energies, constraint_work, set_energy, &
-             constrained_nodes, energy_bits
+   public :: initial_kinetic, kinetic_energy, element_energies, constraint_work, &
+             constraint_terms, set_energy, constrained_nodes, energy_bits
 
 contains
 
@@ -62,18 +62,33 @@ contains
 
    !> Work of the constraint reactions over one step, added to wcon node by node (cnodes in
    !> ascending order; vfree(:, i) is node cnodes(i)'s velocity before the constraints).
-   subroutine constraint_work(cnodes, mass, vfree, vold, v, dtavg, wcon)
+   subroutine constraint_work(cnodes, mass, vfree, vold, v, dtavg, wcon, terms)
       integer, intent(in) :: cnodes(:)
       real(wp), intent(in) :: mass(:), vfree(:, :), vold(:, :), v(:, :), dtavg
       real(wp), intent(inout) :: wcon
+      real(wp), intent(inout) :: terms(:)    !< work space, size(cnodes) at least
+      integer :: i
+      call constraint_terms(cnodes, mass, vfree, vold, v, dtavg, terms)
+      do i = 1, size(cnodes)
+         wcon = wcon + terms(i)
+      end do
+   end subroutine constraint_work
+
+   !> The term of each constrained node in the constraint work, m (v(n+1/2) - vfree).du/dtavg
+   !> with du = dtavg (v(n-1/2) + v(n+1/2))/2 (one node each: an MPI run computes the terms
+   !> of its owned nodes with this code and adds the gathered terms in the serial order).
+   subroutine constraint_terms(cnodes, mass, vfree, vold, v, dtavg, terms)
+      integer, intent(in) :: cnodes(:)
+      real(wp), intent(in) :: mass(:), vfree(:, :), vold(:, :), v(:, :), dtavg
+      real(wp), intent(inout) :: terms(:)
       real(wp) :: du(3)
       integer :: i, nd
       do i = 1, size(cnodes)
          nd = cnodes(i)
          du = 0.5_wp*dtavg*(vold(:, nd) + v(:, nd))
-         wcon = wcon + mass(nd)*dot_product(v(:, nd) - vfree(:, i), du)/dtavg
+         terms(i) = mass(nd)*dot_product(v(:, nd) - vfree(:, i), du)/dtavg
       end do
-   end subroutine constraint_work
+   end subroutine constraint_terms
 
    !> Store the energies and momentum of the current step in model%energy.
    subroutine set_energy(model, ke, eint, ehg, wext, erw)

@@ -18,7 +18,8 @@ module dx_explicit
    use dx_run_state, only: run_state_t
    use dx_hex8, only: hex8_block, hex8_volume, block_result_t, HEX_ERR_NEGVOL, hex8_mass_share
    use dx_loads, only: add_external_loads, has_external_loads
-   use dx_constraints, only: apply_spc, apply_prescribed, apply_rigidwalls
+   use dx_constraints, only: apply_spc, apply_prescribed, apply_rigidwalls, add_wall_hits, &
+                             wall_hits_t
    use dx_output, only: output_t
    use dx_checkpoint, only: checkpoint_t, checkpoint_stage, checkpoint_failure_dump, &
                             checkpoint_energy_band, checkpoint_par_dt
@@ -85,7 +86,8 @@ contains
       type(run_options_t), intent(in) :: opts
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
-      real(wp), allocatable :: vold(:, :), fext(:, :), vfree(:, :)
+      real(wp), allocatable :: vold(:, :), fext(:, :), vfree(:, :), cterms(:)
+      type(wall_hits_t) :: hits
       integer, allocatable :: cnodes(:)
       real(wp) :: dt, dtavg, dtcrit, t, t0wall, ke, eint, ehg, tend, wrig, epend
       integer :: b, i, ibmin, iemin
@@ -107,7 +109,7 @@ contains
       if (par) loads = par_loads_any()    ! the deck's loads, whatever this rank holds
       if (loads) allocate(fext(3, model%nn))
       call constrained_nodes(model, cnodes)
-      allocate(vfree(3, size(cnodes)))
+      allocate(vfree(3, size(cnodes)), cterms(size(cnodes)))
       do b = 1, size(model%blocks)   ! one-element-wide blocks get the element dt bound
          if (par) exit                 ! MPI: slot corners need their node's mass (below)
          call hex8_mass_share(model%blocks(b), &
@@ -233,9 +235,11 @@ contains
          if (par) then     ! MPI: walls on each rank; work sums in serial order when needed
             call par_engine_constraints(model, vfree, vold, dt, dtavg, wcon, wrw, need)
          else
-            call constraint_work(cnodes, model%mass, vfree, vold, model%v, dtavg, wcon)
-            if (allocated(model%walls)) call apply_rigidwalls(model, dt, dtavg, vold, &
-                                                              model%v, wrw)
+            call constraint_work(cnodes, model%mass, vfree, vold, model%v, dtavg, wcon, cterms)
+            if (allocated(model%walls)) then
+               call apply_rigidwalls(model, dt, dtavg, vold, model%v, hits)
+               call add_wall_hits(model, hits, wrw)
+            end if
          end if
          if (loads .and. par) then   ! MPI: terms kept, summed in serial order when needed
             call par_loads_work(fext, vold, model%v, dtavg, wext, need)
