@@ -102,36 +102,39 @@ contains
                   end if
                end if
                v(:, nd) = v(:, nd) + dvel
-               call add_hit(w, k, 0.5_wp*model%mass(nd)*dot_product(dvel, vold(:, nd) + v(:, nd)), &
+               call add_hit(hits, w, k, &
+                            0.5_wp*model%mass(nd)*dot_product(dvel, vold(:, nd) + v(:, nd)), &
                             model%mass(nd)*dvel/dtavg)
             end do
          end associate
       end do
-   contains
-      subroutine add_hit(w, k, work, f)
-         integer, intent(in) :: w, k
-         real(wp), intent(in) :: work, f(3)
-         integer, allocatable :: iw(:), ik(:)
-         real(wp), allocatable :: vv(:, :)
-         integer :: m
-         if (.not. allocated(hits%wall)) allocate(hits%wall(16), hits%k(16), hits%val(4, 16))
-         if (hits%n == size(hits%wall)) then
-            m = 2*hits%n
-            allocate(iw(m), ik(m), vv(4, m))
-            iw(1:hits%n) = hits%wall(1:hits%n)
-            ik(1:hits%n) = hits%k(1:hits%n)
-            vv(:, 1:hits%n) = hits%val(:, 1:hits%n)
-            call move_alloc(iw, hits%wall)
-            call move_alloc(ik, hits%k)
-            call move_alloc(vv, hits%val)
-         end if
-         hits%n = hits%n + 1
-         hits%wall(hits%n) = w
-         hits%k(hits%n) = k
-         hits%val(1, hits%n) = work
-         hits%val(2:4, hits%n) = f
-      end subroutine add_hit
    end subroutine apply_rigidwalls
+
+   !> Append one hit to hits (the arrays grow by doubling).
+   subroutine add_hit(hits, w, k, work, f)
+      type(wall_hits_t), intent(inout) :: hits
+      integer, intent(in) :: w, k
+      real(wp), intent(in) :: work, f(3)
+      integer, allocatable :: iw(:), ik(:)
+      real(wp), allocatable :: vv(:, :)
+      integer :: m
+      if (.not. allocated(hits%wall)) allocate(hits%wall(16), hits%k(16), hits%val(4, 16))
+      if (hits%n == size(hits%wall)) then
+         m = 2*hits%n
+         allocate(iw(m), ik(m), vv(4, m))
+         iw(1:hits%n) = hits%wall(1:hits%n)
+         ik(1:hits%n) = hits%k(1:hits%n)
+         vv(:, 1:hits%n) = hits%val(:, 1:hits%n)
+         call move_alloc(iw, hits%wall)
+         call move_alloc(ik, hits%k)
+         call move_alloc(vv, hits%val)
+      end if
+      hits%n = hits%n + 1
+      hits%wall(hits%n) = w
+      hits%k(hits%n) = k
+      hits%val(1, hits%n) = work
+      hits%val(2:4, hits%n) = f
+   end subroutine add_hit
 
    !> The serial sums of one cycle's hits: work += the work terms in hit order; each wall's
    !> resultant force = - (its hits' m dv/dtavg summed in order), zero without hits.
