@@ -3,11 +3,16 @@ module dx_strings
    use dx_kinds, only: wp
    implicit none
    private
-   public :: upper, lower, str, rstr
+   public :: upper, lower, str, rstr, string_t
 
    interface str
       module procedure str_int, str_int8
    end interface str
+   !> A string in an array of strings (file names and the like).
+   type :: string_t
+      character(:), allocatable :: s
+   end type string_t
+
 contains
    !> Upper-case copy of s (ASCII).
    pure function upper(s) result(u)

@@ -244,11 +244,17 @@ contains
       use dx_contact_types, only: contact_pass_t
       type(contact_pass_t), intent(in) :: p
       real(wp), intent(in) :: x(:, :)
-      integer :: s, n
+      integer :: s, k
+      real(wp) :: lo(3), hi(3)
       ext = 0.0_wp
       do s = 1, p%nseg
-         n = p%nsn(s)
-         ext = ext + maxval(maxval(x(:, p%seg(1:n, s)), dim=2) - minval(x(:, p%seg(1:n, s)), dim=2))
+         lo = x(:, p%seg(1, s))
+         hi = lo
+         do k = 2, p%nsn(s)
+            lo = min(lo, x(:, p%seg(k, s)))
+            hi = max(hi, x(:, p%seg(k, s)))
+         end do
+         ext = ext + maxval(hi - lo)
       end do
       ext = ext/real(max(1, p%nseg), wp)
    end function mean_extent

@@ -46,10 +46,15 @@ contains
       ! ---- grown segment boxes and the grid box
       allocate(blo(3, p%nseg), bhi(3, p%nseg))
       ext = 0.0_wp
-      do s = 1, p%nseg
-         n = p%nsn(s)
-         blo(:, s) = minval(x(:, p%seg(1:n, s)), dim=2)
-         bhi(:, s) = maxval(x(:, p%seg(1:n, s)), dim=2)
+      do s = 1, p%nseg     ! (explicit loops: x(:, p%seg(1:n, s)) made a temporary each)
+         d1 = x(:, p%seg(1, s))
+         d2 = d1
+         do k = 2, p%nsn(s)
+            d1 = min(d1, x(:, p%seg(k, s)))
+            d2 = max(d2, x(:, p%seg(k, s)))
+         end do
+         blo(:, s) = d1
+         bhi(:, s) = d2
          ext = ext + maxval(bhi(:, s) - blo(:, s))
          blo(:, s) = blo(:, s) - (margin + p%depth(s))
          bhi(:, s) = bhi(:, s) + (margin + p%depth(s))

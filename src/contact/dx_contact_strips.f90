@@ -2,19 +2,18 @@
 !> finite-element code", LLNL Engineering Thrust Area Report FY97, article 4 of shared/seed):
 !> the slave nodes of a contact pass are cut into NSTRIP 1-D strips along the coordinate
 !> direction in which they extend furthest, the cuts placed so that every strip holds the
-!> same number of slave nodes (+-1): the nodes are ordered by that coordinate (ties by slave
-!> index, so every rank finds the same strips from the same coordinates) and strip s takes
-!> positions s*n/NSTRIP .. (s+1)*n/NSTRIP-1. Rebuilt with the bucket sort (every BSORT
+!> same number of slave nodes (+-1): in the order of that coordinate (ties by slave index, so
+!> every rank finds the same strips from the same coordinates) strip s takes positions
+!> s*n/NSTRIP .. (s+1)*n/NSTRIP-1 (found by quickselect of the cuts, not a full sort). Rebuilt with the bucket sort (every BSORT
 !> cycles, or on motion), from the coordinates of that cycle. Each rank searches and
 !> computes the slave nodes of its own strip (p%mine); the segments a node may touch lie
 !> within the search reach of the strip (the halo), which dx_contact_search finds.
 !> No MPI here: the strips depend on x only, so every rank computes all of them alike.
-!> MPI runs use them only when DYNX_PAR_CONTACT=strips; by default a rank computes the slave
+!> MPI runs use them only with --contact-split strips (or DYNX_PAR_CONTACT=strips); by default a rank computes the slave
 !> nodes it owns (owner-computes, the mask mine_node from dx_par_contact): no sort of the
 !> slave nodes at all, and the nodes a rank computes are its own (docs/design.md).
 module dx_contact_strips
    use dx_kinds, only: wp
-   use dx_sort, only: sort_index
    use dx_contact_types, only: contact_pass_t
    implicit none
    private
@@ -41,7 +40,12 @@ contains
       p%mine = strip == istrip
    end subroutine contact_strips
 
-   !> The strip (0..nstrip-1) of every slave node of pass p at x; sets p%strip_axis.
+   !> The strip (0..nstrip-1) of every slave node of pass p at x; sets p%strip_axis. The node
+   !> at position i (1-based) of the order (coordinate, slave index) is in strip
+   !> floor((i-1) nstrip/n), so strip s holds positions q(s)+1 .. q(s+1), q(s) =
+   !> ceil(s n/nstrip). Only the cut positions are needed, not the whole order: successive
+   !> quickselects (Hoare 1961) on the shrinking right part give them in O(n) per cut
+   !> (expected), instead of a heap sort of all nodes at every bucket sort.
    subroutine strip_of(p, x, nstrip, strip)
       type(contact_pass_t), intent(inout) :: p
       real(wp), intent(in) :: x(:, :)
@@ -50,7 +54,7 @@ contains
       integer, allocatable :: idx(:)
       real(wp), allocatable :: c(:)
       real(wp) :: lo(3), hi(3)
-      integer :: i, n, a
+      integer :: i, n, a, s, q0, q1
       n = p%nnode
       allocate(strip(n), idx(n), c(n))
       if (n == 0) return
@@ -63,10 +67,67 @@ contains
       p%strip_axis = a
       c = x(a, p%node)
       idx = [(i, i = 1, n)]
-      call sort_index(idx, c)
-      do i = 1, n
-         strip(idx(i)) = int((int(i - 1, 8)*int(nstrip, 8))/int(n, 8))
+      q0 = 0
+      do s = 0, nstrip - 1
+         q1 = int((int(s + 1, 8)*int(n, 8) + int(nstrip - 1, 8))/int(nstrip, 8))
+         if (q1 > q0 .and. q1 < n) call select_rank(idx, c, q0 + 1, n, q1)
+         do i = q0 + 1, q1
+            strip(idx(i)) = s
+         end do
+         q0 = q1
       end do
    end subroutine strip_of
+
+   !> Reorder idx(l0:r0) so that idx(k) is the element of rank k (within l0..r0, in the
+   !> strict order (c, index)), the smaller ones before it and the larger after it
+   !> (quickselect, median-of-three pivot, Hoare partition).
+   subroutine select_rank(idx, c, l0, r0, k)
+      integer, intent(inout) :: idx(:)
+      real(wp), intent(in) :: c(:)
+      integer, intent(in) :: l0, r0, k
+      integer :: l, r, m, i, j, piv
+      l = l0
+      r = r0
+      do while (r > l)
+         m = l + (r - l)/2
+         if (before(idx(m), idx(l))) call swap(m, l)
+         if (before(idx(r), idx(l))) call swap(r, l)
+         if (before(idx(r), idx(m))) call swap(r, m)
+         piv = idx(m)
+         i = l
+         j = r
+         do
+            do while (before(idx(i), piv))
+               i = i + 1
+            end do
+            do while (before(piv, idx(j)))
+               j = j - 1
+            end do
+            if (i <= j) then
+               call swap(i, j)
+               i = i + 1
+               j = j - 1
+            end if
+            if (i > j) exit
+         end do
+         if (k <= j) then
+            r = j
+         else if (k >= i) then
+            l = i
+         else
+            exit
+         end if
+      end do
+   contains
+      logical function before(u, v)
+         integer, intent(in) :: u, v
+         before = c(u) < c(v) .or. (c(u) == c(v) .and. u < v)
+      end function before
+      subroutine swap(u, v)
+         integer, intent(in) :: u, v
+         integer :: t
+         t = idx(u); idx(u) = idx(v); idx(v) = t
+      end subroutine swap
+   end subroutine select_rank
 
 end module dx_contact_strips

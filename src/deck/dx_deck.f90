@@ -55,6 +55,7 @@ contains
       call read_deck_input(path, inp, error, ignore_unknown)
       if (allocated(error)) return
       model%deck_file = path
+      model%deck_files = inp%files
       call build_model(inp, model, error)
       if (.not. allocated(error)) call build_contact(inp, model, error)
       if (.not. allocated(error)) call build_emc(inp, model, error)

@@ -4,6 +4,7 @@
 !> (node_label, elem_label, parts(:)%label, ...) are kept for messages and output.
 module dx_model
    use dx_kinds, only: wp, nv_chunk
+   use dx_strings, only: string_t
    use dx_material, only: mat_holder_t
    use dx_curve, only: curve_t
    use dx_rigid_types, only: rigid_system_t
@@ -178,6 +179,9 @@ module dx_model
    type :: model_t
       character(:), allocatable :: title
       character(:), allocatable :: deck_file
+      !> every file the deck read (the deck and its includes, in order): the content hash
+      !> of the MPI rank files and dumps
+      type(string_t), allocatable :: deck_files(:)
       ! --- nodes
       integer :: nn = 0
       integer, allocatable :: node_label(:)

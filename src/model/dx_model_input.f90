@@ -4,6 +4,7 @@
 !> Filled by the keyword readers in src/deck/, consumed (and emptied) by build_model.
 module dx_model_input
    use dx_kinds, only: wp
+   use dx_strings, only: string_t
    use dx_model, only: part_t, section_t, hourglass_t, control_t
    use dx_material, only: mat_holder_t
    use dx_curve, only: curve_t
@@ -21,10 +22,6 @@ module dx_model_input
    integer, parameter :: IVEL_SET = 1   !< *INITIAL_VELOCITY
    integer, parameter :: IVEL_NODE = 2  !< *INITIAL_VELOCITY_NODE
    integer, parameter :: IVEL_GEN = 3   !< *INITIAL_VELOCITY_GENERATION
-
-   type :: string_t
-      character(:), allocatable :: s
-   end type string_t
 
    !> where a record came from: file index into model_input_t%files, line, keyword (no '*')
    type :: origin_t

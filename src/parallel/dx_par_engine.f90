@@ -138,7 +138,11 @@ contains
       call unsupported(model, error)
       if (allocated(error)) return
       if (me > 0) call log_set_quiet(.true.)
-      call deck_content_hash_of(deck, hash, error)    ! the parsed cards are freed on return
+      if (allocated(model%deck_files)) then       ! the files read_deck read
+         call deck_content_hash(model%deck_files, hash, error)
+      else
+         call deck_content_hash_of(deck, hash, error)
+      end if
       if (allocated(error)) return
       deck_hash = hash
       k = index(deck, '/', back=.true.)

@@ -17,6 +17,7 @@ program test_par_contact
                          contact_vmax, contact_prepare
    use dx_contact_types, only: contact_pass_t
    use dx_contact_strips, only: strip_of
+   use dx_sort, only: sort_index
    use dx_par_contact, only: contact_groups
    use dx_assert, only: check, check_close, assert_summary
    implicit none
@@ -80,6 +81,28 @@ contains
       end do
       call check(count(s1 == 0) + count(s1 == 1) + count(s1 == 2) + count(s1 == 3) == n, &
                  'strips: every node in one strip')
+      ! many ties (x rounded to 20 values): the cuts (quickselect) equal those of a full sort
+      ! by (coordinate, slave index), for NS = 1 .. 7, on the nodes in a shuffled slave order
+      x(1, :) = real(nint(20.0_wp*x(1, :)/10.0_wp), wp)
+      p%node = [(1 + mod(37*i, n), i = 0, n - 1)]
+      deallocate(s2)
+      do ns = 1, 7
+         call strip_of(p, x, ns, s1)
+         block
+            integer, allocatable :: idx(:)
+            real(wp), allocatable :: c(:)
+            c = x(1, p%node)
+            idx = [(i, i = 1, n)]
+            call sort_index(idx, c)
+            allocate(s2(n))
+            do i = 1, n
+               s2(idx(i)) = int((int(i - 1, 8)*int(ns, 8))/int(n, 8))
+            end do
+         end block
+         call check(all(s1 == s2), 'strips: quickselect cuts = full sort, 20 tied values, NS = '// &
+                    char(48 + ns))
+         deallocate(s2)
+      end do
    end subroutine test_strips
 
    !> contact_rod_impact with the striker moved 0.02 mm into the target (8 slave nodes in
