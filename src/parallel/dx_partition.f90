@@ -23,6 +23,7 @@ module dx_partition
    use dx_strings, only: str
    use dx_model, only: model_t, ETYPE_HEX8_SRI
    use dx_metis, only: metis_part_kway, METIS_RECURSIVE
+   use dx_contact_input, only: CT_SINGLE_SURFACE
    implicit none
    private
    public :: partition_t, rank_part_t, element_graph, condense_groups, partition_model, &
@@ -56,6 +57,8 @@ module dx_partition
       real(wp) :: balance = 1.0_wp           !< max(rank_wgt) / mean(rank_wgt)
       ! node -> ranks holding it (CSR over nodes; ranks ascending)
       integer, allocatable :: nr_ptr(:), nr_rank(:)
+      integer :: ncomp = 0                   !< connected components of the vertex graph
+      integer :: nprox = 0                   !< proximity edges added (vertex pairs)
    end type partition_t
 
    !> What one rank holds (the content of its rank file). Global indices are the dense
@@ -278,6 +281,181 @@ contains
       adjwgt = adjwgt(1:tot)
    end subroutine element_graph
 
+   !> Proximity edges for decks with automatic contact (ParaDyn's contact-aware partition,
+   !> shared/seed article 4, in the spirit of its super elements): a mesh of separate bodies
+   !> gives METIS a graph of separate components, which it may scatter over the ranks in
+   !> any geometric order, so a rank's contact nodes spread over the whole model and its
+   !> bucket grid, halo and sorts cover everything. When the graph has more than one
+   !> component, two elements of different components whose centroids lie within
+   !> 3 x the mean element extent get an edge of weight 1 (per element pair, summed per
+   !> vertex pair): METIS then keeps nearby bodies together and cuts between them only
+   !> where it must (a node-sharing edge weighs 1-4 per element pair, so bodies stay whole
+   !> before neighbours are kept together). No node is shared by such an edge, so the
+   !> exchange does not grow. Deterministic (cell order, element order).
+   subroutine add_proximity_edges(conn, x, vtx, nv, xadj, adjncy, adjwgt, ncomp, nprox)
+      integer, intent(in) :: conn(:, :), vtx(:), nv
+      real(wp), intent(in) :: x(:, :)
+      integer, allocatable, intent(inout) :: xadj(:), adjncy(:), adjwgt(:)
+      integer, intent(out) :: ncomp, nprox
+      integer, allocatable :: parent(:), comp(:), cptr(:), clst(:), pv(:), pw(:), nx(:), &
+                              na(:), nw(:), cnt(:), mark(:), nbw(:)
+      real(wp), allocatable :: xc(:, :)
+      real(wp) :: ext, lo(3), hi(3), d, h, hmin(3), hmax(3)
+      integer :: ne, e, f, v, w, k, j, n, ncell(3), ic(3), jc(3), c, i1, i2, i3, np_, cap, a, b
+      ne = size(conn, 2)
+      nprox = 0
+      ! components of the vertex graph (union-find over its edges)
+      allocate(parent(nv))
+      parent = [(v, v = 1, nv)]
+      do v = 1, nv
+         do k = xadj(v) + 1, xadj(v + 1)
+            a = find_root(parent, v)
+            b = find_root(parent, adjncy(k) + 1)
+            if (a /= b) parent(max(a, b)) = min(a, b)
+         end do
+      end do
+      allocate(comp(nv))
+      do v = 1, nv
+         comp(v) = find_root(parent, v)
+      end do
+      ncomp = count(comp == [(v, v = 1, nv)])
+      if (ncomp <= 1 .or. ne == 0) return
+      ! element centroids and the mean element extent
+      allocate(xc(3, ne))
+      ext = 0.0_wp
+      do e = 1, ne
+         hmin = x(:, conn(1, e)); hmax = hmin
+         xc(:, e) = 0.0_wp
+         do j = 1, size(conn, 1)
+            hmin = min(hmin, x(:, conn(j, e)))
+            hmax = max(hmax, x(:, conn(j, e)))
+            xc(:, e) = xc(:, e) + x(:, conn(j, e))
+         end do
+         xc(:, e) = xc(:, e)/real(size(conn, 1), wp)
+         ext = ext + maxval(hmax - hmin)
+      end do
+      d = 3.0_wp*ext/real(ne, wp)
+      if (.not. (d > 0.0_wp)) return
+      lo = minval(xc, dim=2)
+      hi = maxval(xc, dim=2)
+      ! cells of size h >= d (at most ~ne cells), elements by cell (CSR)
+      h = max(d, (product(max(hi - lo, d))/real(ne, wp))**(1.0_wp/3.0_wp))
+      ncell = max(1, int((hi - lo)/h) + 1)
+      allocate(cptr(product(ncell) + 1), clst(ne), nx(ne))
+      cptr = 0
+      do e = 1, ne
+         ic = min(ncell, int((xc(:, e) - lo)/h) + 1)
+         nx(e) = ic(1) + ncell(1)*((ic(2) - 1) + ncell(2)*(ic(3) - 1))
+         cptr(nx(e) + 1) = cptr(nx(e) + 1) + 1
+      end do
+      cptr(1) = 1
+      do c = 1, product(ncell)
+         cptr(c + 1) = cptr(c + 1) + cptr(c)
+      end do
+      allocate(cnt(product(ncell)))
+      cnt = 0
+      do e = 1, ne
+         clst(cptr(nx(e)) + cnt(nx(e))) = e
+         cnt(nx(e)) = cnt(nx(e)) + 1
+      end do
+      ! element pairs of different components within d: vertex pairs, both directions
+      cap = 1024
+      allocate(pv(cap), pw(cap))
+      np_ = 0
+      do e = 1, ne
+         v = vtx(e)
+         ic = min(ncell, int((xc(:, e) - lo)/h) + 1)
+         do i3 = max(1, ic(3) - 1), min(ncell(3), ic(3) + 1)
+            do i2 = max(1, ic(2) - 1), min(ncell(2), ic(2) + 1)
+               do i1 = max(1, ic(1) - 1), min(ncell(1), ic(1) + 1)
+                  jc = [i1, i2, i3]
+                  c = jc(1) + ncell(1)*((jc(2) - 1) + ncell(2)*(jc(3) - 1))
+                  do k = cptr(c), cptr(c + 1) - 1
+                     f = clst(k)
+                     w = vtx(f)
+                     if (comp(w) == comp(v)) cycle
+                     if (norm2(xc(:, f) - xc(:, e)) > d) cycle
+                     if (np_ == cap) then
+                        cap = 2*cap
+                        call grow(pv, cap)
+                        call grow(pw, cap)
+                     end if
+                     np_ = np_ + 1
+                     pv(np_) = v
+                     pw(np_) = w
+                  end do
+               end do
+            end do
+         end do
+      end do
+      if (np_ == 0) return
+      ! merge into the CSR: per vertex its old neighbours, then the new ones summed
+      allocate(na(nv + 1))
+      na = 0
+      do k = 1, np_
+         na(pv(k) + 1) = na(pv(k) + 1) + 1
+      end do
+      na(1) = 1
+      do v = 1, nv
+         na(v + 1) = na(v + 1) + na(v)
+      end do
+      allocate(nbw(np_))
+      deallocate(cnt, nx)
+      allocate(cnt(nv), mark(nv), nx(xadj(nv + 1) + np_), nw(xadj(nv + 1) + np_))
+      cnt = 0
+      do k = 1, np_
+         nbw(na(pv(k)) + cnt(pv(k))) = pw(k)
+         cnt(pv(k)) = cnt(pv(k)) + 1
+      end do
+      mark = 0
+      cnt = 0
+      n = 0
+      block
+         integer, allocatable :: newx(:), lst(:)
+         integer :: m, t
+         allocate(newx(nv + 1), lst(nv))
+         newx(1) = 0
+         do v = 1, nv
+            m = 0
+            do k = na(v), na(v + 1) - 1
+               w = nbw(k)
+               if (mark(w) /= v) then
+                  mark(w) = v
+                  cnt(w) = 0
+                  m = m + 1
+                  lst(m) = w
+               end if
+               cnt(w) = cnt(w) + 1
+            end do
+            call sort_int(lst(1:m))
+            nprox = nprox + m
+            ! old neighbours (other component: never among the new ones), then the new,
+            ! merged in ascending order
+            a = xadj(v) + 1
+            b = 1
+            do while (a <= xadj(v + 1) .or. b <= m)
+               if (b > m) then
+                  t = adjncy(a) + 1; j = adjwgt(a); a = a + 1
+               else if (a > xadj(v + 1)) then
+                  t = lst(b); j = cnt(lst(b)); b = b + 1
+               else if (adjncy(a) + 1 < lst(b)) then
+                  t = adjncy(a) + 1; j = adjwgt(a); a = a + 1
+               else
+                  t = lst(b); j = cnt(lst(b)); b = b + 1
+               end if
+               n = n + 1
+               nx(n) = t - 1
+               nw(n) = j
+            end do
+            newx(v + 1) = n
+         end do
+         xadj = newx
+      end block
+      adjncy = nx(1:n)
+      adjwgt = nw(1:n)
+      nprox = nprox/2
+   end subroutine add_proximity_edges
+
    subroutine grow(a, n)
       integer, allocatable, intent(inout) :: a(:)
       integer, intent(in) :: n
@@ -332,10 +510,13 @@ contains
 
    !> Partition elements with connectivity conn(nen, ne) over nn nodes into np ranks.
    !> ewgt: element weights; groups (CSR grp_ptr/grp_elem) stay whole on one rank.
-   subroutine partition_elements(conn, nn, ewgt, grp_ptr, grp_elem, np, part, error)
+   subroutine partition_elements(conn, nn, ewgt, grp_ptr, grp_elem, np, part, error, x)
       integer, intent(in) :: conn(:, :), nn, ewgt(:), grp_ptr(:), grp_elem(:), np
       type(partition_t), intent(out) :: part
       type(error_t), allocatable, intent(out) :: error
+      !> node coordinates (3, nn), given for decks with automatic contact: separate bodies
+      !> are joined by proximity edges (add_proximity_edges)
+      real(wp), intent(in), optional :: x(:, :)
       integer, allocatable :: vtx(:), vwgt(:), xadj(:), adjncy(:), adjwgt(:), vpart(:)
       integer :: nv, ne, e, n, k, r, i, j, q
       integer, allocatable :: mark(:)
@@ -355,6 +536,8 @@ contains
          call condense_groups(ne, ewgt, grp_ptr, grp_elem, vtx, nv, vwgt, error)
          if (allocated(error)) return
          call element_graph(conn, nn, vtx, nv, xadj, adjncy, adjwgt)
+         if (present(x)) call add_proximity_edges(conn, x, vtx, nv, xadj, adjncy, adjwgt, &
+                                                  part%ncomp, part%nprox)
          allocate(vpart(nv))
          if (nv < np) then
             ! more ranks than vertices (a one-element deck on 4 ranks; a contact pair holding
@@ -562,9 +745,27 @@ contains
       integer, allocatable :: conn(:, :), ewgt(:)
       call model_conn(model, conn)
       call elem_costs(model, ewgt)
-      call partition_elements(conn, model%nn, ewgt, grp_ptr, grp_elem, np, part, error)
+      if (has_auto_contact(model)) then   ! separate bodies joined by proximity edges
+         call partition_elements(conn, model%nn, ewgt, grp_ptr, grp_elem, np, part, error, &
+                                 model%x0)
+      else
+         call partition_elements(conn, model%nn, ewgt, grp_ptr, grp_elem, np, part, error)
+      end if
       if (has_rigid_elements(model)) part%wscale = RIGID_SCALE
    end subroutine partition_model
+
+   !> Whether the deck has an automatic or single-surface contact (split over the ranks by
+   !> slave node, so the element partition decides where its contact work is).
+   logical function has_auto_contact(model)
+      type(model_t), intent(in) :: model
+      integer :: i
+      has_auto_contact = .false.
+      if (.not. allocated(model%contact)) return
+      do i = 1, size(model%contact%iface)
+         if (model%contact%iface(i)%kind == CT_SINGLE_SURFACE .or. &
+             index(model%contact%iface(i)%name, 'AUTOMATIC') > 0) has_auto_contact = .true.
+      end do
+   end function has_auto_contact
 
    !> What rank r holds: its elements and nodes, shared-node lists per neighbour, and the
    !> boundary conditions and loads on its nodes. A segment load is computed by the lowest
@@ -729,6 +930,8 @@ contains
          count(part%rank_ne == 0), ' of ', part%np, ': '//rank_list(part%rank_ne == 0)
       write(unit, '(a,i0)') 'shared nodes (held by more than one rank): ', nshared_total
       write(unit, '(a,i0)') 'edge cut (weighted): ', part%edgecut
+      if (part%nprox > 0) write(unit, '(a,i0,a,i0,a)') 'proximity edges (automatic contact): ', &
+         part%nprox, ' between ', part%ncomp, ' separate bodies'
       if (allocated(part%ewgt)) then
          if (size(part%ewgt) > 0) write(unit, '(a,i0)') 'heaviest element weight: ', &
                                                         maxval(part%ewgt)

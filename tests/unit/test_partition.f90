@@ -18,6 +18,7 @@ program test_partition
    use dx_rank_file, only: write_rank_file, read_rank_file, rank_file_name, deck_content_hash
    use dx_io_sys, only: sys_mkdir_p
    use dx_assert, only: check, check_close, assert_summary
+   use dx_strings, only: str
    implicit none
    character(*), parameter :: TMP = 'build/test_partition'
    type(error_t), allocatable :: error
@@ -33,6 +34,7 @@ program test_partition
    call test_rank_files()
    call test_serial_order_emulation()
    call test_more_ranks_than_elements()
+   call test_proximity_edges()
    call assert_summary()
 
 contains
@@ -683,4 +685,56 @@ contains
                  '27 elements in 2 vertices on 3 ranks: group on rank 0, element 27 on 1, 2 empty')
       call check(part%edgecut == 19, '27 elements in 2 vertices on 3 ranks: edge cut 19')
    end subroutine test_more_ranks_than_elements
+   !> Proximity edges (automatic contact): 64 separate unit hexes on a 4 x 4 x 4 lattice of
+   !> pitch 1.5 (gap 0.5) are 64 components for METIS. With the node coordinates the
+   !> partitioner joins lattice neighbours (centroids within 3 x the element extent) and
+   !> NP = 2 cuts the lattice like one body: a plane cuts 16 of the 144 face-neighbour pairs;
+   !> checked: at most 24 cut, every rank holds 32 +- 2 bodies, no node shared, 64
+   !> components found, the proximity pairs reported, reproducible.
+   subroutine test_proximity_edges()
+      integer, allocatable :: conn(:, :), ewgt(:), gp(:), ge(:)
+      real(wp), allocatable :: x(:, :)
+      type(partition_t) :: part, part2
+      integer :: i, j, k, e, n, ncut, a, b
+      integer, parameter :: corner(3, 8) = reshape([0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, &
+                                                   0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1], [3, 8])
+      write(*, '(a)') 'proximity edges: 64 separate hexes on a lattice, NP = 2'
+      allocate(conn(8, 64), x(3, 512), ewgt(64))
+      ewgt = 1
+      e = 0
+      do k = 0, 3
+         do j = 0, 3
+            do i = 0, 3
+               e = e + 1
+               do n = 1, 8
+                  conn(n, e) = 8*(e - 1) + n
+                  x(:, 8*(e - 1) + n) = 1.5_wp*real([i, j, k], wp) + real(corner(:, n), wp)
+               end do
+            end do
+         end do
+      end do
+      gp = [1]
+      allocate(ge(0))
+      call partition_elements(conn, 512, ewgt, gp, ge, 2, part, error, x)
+      call check(.not. allocated(error), 'proximity: partition without error')
+      if (allocated(error)) return
+      call check(part%ncomp == 64, 'proximity: 64 separate bodies found (got '// &
+                 str(part%ncomp)//')')
+      call check(part%nprox > 0, 'proximity: proximity pairs added ('//str(part%nprox)//')')
+      call check(all(part%rank_nshared == 0), 'proximity: no node shared between ranks')
+      call check(abs(part%rank_ne(0) - 32) <= 2, 'proximity: 32 +- 2 bodies per rank (rank 0: '// &
+                 str(part%rank_ne(0))//')')
+      ncut = 0
+      do a = 1, 64
+         do b = a + 1, 64
+            if (abs(norm2(x(:, 8*(a - 1) + 1) - x(:, 8*(b - 1) + 1)) - 1.5_wp) < 1.0e-9_wp .and. &
+                part%epart(a) /= part%epart(b)) ncut = ncut + 1
+         end do
+      end do
+      call check(ncut <= 24, 'proximity: lattice neighbours on different ranks <= 24 (a plane: '// &
+                 '16; got '//str(ncut)//')')
+      call partition_elements(conn, 512, ewgt, gp, ge, 2, part2, error, x)
+      call check(all(part2%epart == part%epart), 'proximity: reproducible')
+   end subroutine test_proximity_edges
+
 end program test_partition
