@@ -200,6 +200,12 @@ contains
                   associate (p => f%pass(j))
                      fsum = 0.0_wp
                      do k = 1, p%nnode
+                        if (p%rint(1, k) == 0 .and. p%rint(2, k) == 0) then
+                           p%iseg(k) = 0          ! what pass_apply does with no result
+                           p%gap(k) = 0.0_wp
+                           p%ft(:, k) = 0.0_wp
+                           cycle
+                        end if
                         call pass_apply(p, k, cs%fc, fsum, cs%krow, f%nactive)
                      end do
                      if (j == 1) then
