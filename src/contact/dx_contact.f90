@@ -225,6 +225,8 @@ contains
             if (has_rigid) then
                if (model%rigid%node_body(nd) > 0) cycle   ! rigid nodes: body inertia below
             end if
+            ! (a node without stiffness adds 0 to a maximum that is >= 0: skipped)
+            if (cs%krow(nd) == 0.0_wp) cycle
             if (model%mass(nd) > 0.0_wp) w2max = max(w2max, cs%krow(nd)/model%mass(nd))
          end do
          if (has_rigid) &
@@ -276,8 +278,9 @@ contains
       logical :: done
       associate (cs => model%contact)
          w = 0.0_wp
-         do i = 1, size(cs%node)
+         do i = 1, size(cs%node)   ! (a node without contact force adds +-0: skipped)
             nd = cs%node(i)
+            if (all(cs%fc(:, nd) == 0.0_wp)) cycle
             w = w + dot_product(cs%fc(:, nd), vold(:, nd) + model%v(:, nd))
          end do
          cs%work = cs%work + 0.5_wp*dtavg*w
