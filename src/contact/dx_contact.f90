@@ -19,7 +19,7 @@ module dx_contact
    use dx_timer, only: wall_time
    use dx_model, only: model_t
    use dx_contact_types, only: contact_set_t
-   use dx_contact_search, only: bucket_sort
+   use dx_contact_search, only: bucket_sort, segment_box
    use dx_contact_penalty, only: pass_records, pass_node, pass_apply
    use dx_contact_strips, only: contact_strips
    use dx_rigid_contact, only: rigid_contact_w2, rigid_effective_mass
@@ -252,16 +252,11 @@ contains
       use dx_contact_types, only: contact_pass_t
       type(contact_pass_t), intent(in) :: p
       real(wp), intent(in) :: x(:, :)
-      integer :: s, k
+      integer :: s
       real(wp) :: lo(3), hi(3)
       ext = 0.0_wp
       do s = 1, p%nseg
-         lo = x(:, p%seg(1, s))
-         hi = lo
-         do k = 2, p%nsn(s)
-            lo = min(lo, x(:, p%seg(k, s)))
-            hi = max(hi, x(:, p%seg(k, s)))
-         end do
+         call segment_box(p, x, s, lo, hi)
          ext = ext + maxval(hi - lo)
       end do
       ext = ext/real(max(1, p%nseg), wp)

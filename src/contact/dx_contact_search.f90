@@ -15,7 +15,7 @@ module dx_contact_search
    use dx_contact_types, only: contact_pass_t
    implicit none
    private
-   public :: bucket_sort
+   public :: bucket_sort, segment_box
 
 contains
 
@@ -46,15 +46,8 @@ contains
       ! ---- grown segment boxes and the grid box
       allocate(blo(3, p%nseg), bhi(3, p%nseg))
       ext = 0.0_wp
-      do s = 1, p%nseg     ! (explicit loops: x(:, p%seg(1:n, s)) made a temporary each)
-         d1 = x(:, p%seg(1, s))
-         d2 = d1
-         do k = 2, p%nsn(s)
-            d1 = min(d1, x(:, p%seg(k, s)))
-            d2 = max(d2, x(:, p%seg(k, s)))
-         end do
-         blo(:, s) = d1
-         bhi(:, s) = d2
+      do s = 1, p%nseg
+         call segment_box(p, x, s, blo(:, s), bhi(:, s))
          ext = ext + maxval(bhi(:, s) - blo(:, s))
          blo(:, s) = blo(:, s) - (margin + p%depth(s))
          bhi(:, s) = bhi(:, s) + (margin + p%depth(s))
@@ -232,6 +225,22 @@ contains
          if (r > 0.0_wp) p%nnrm(:, i) = p%nnrm(:, i)/r
       end do
    end subroutine node_normals
+
+   !> The box of segment s at x (explicit loops over its 3-4 nodes: minval/maxval of
+   !> x(:, p%seg(1:n, s)) made an array temporary per segment).
+   pure subroutine segment_box(p, x, s, lo, hi)
+      type(contact_pass_t), intent(in) :: p
+      real(wp), intent(in) :: x(:, :)
+      integer, intent(in) :: s
+      real(wp), intent(out) :: lo(3), hi(3)
+      integer :: k
+      lo = x(:, p%seg(1, s))
+      hi = lo
+      do k = 2, p%nsn(s)
+         lo = min(lo, x(:, p%seg(k, s)))
+         hi = max(hi, x(:, p%seg(k, s)))
+      end do
+   end subroutine segment_box
 
    pure subroutine cell_range(p, blo, bhi, jlo, jhi)
       type(contact_pass_t), intent(in) :: p
