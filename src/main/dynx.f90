@@ -122,7 +122,7 @@ program dynx
       call par_finalize()
       stop
    end if
-   if (len(rfile) > 0) call par_restart_precheck(rfile, deck, error)   ! MPI: another NP or deck
+   if (len(rfile) > 0) call par_restart_precheck(rfile, deck, error, model%deck_files)   ! MPI
    if (allocated(error)) call die(error)
    call par_engine_setup(model, deck, outdir, partdir, error)   ! MPI run: the rank's part
    call par_agree(error)

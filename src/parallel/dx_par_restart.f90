@@ -33,7 +33,7 @@ module dx_par_restart
    use, intrinsic :: iso_fortran_env, only: int8, int64
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_INPUT, EXIT_IO
-   use dx_strings, only: str
+   use dx_strings, only: str, string_t
    use dx_model, only: model_t
    use dx_contact_types, only: contact_set_t
    use dx_contact_strips, only: contact_strips
@@ -128,7 +128,7 @@ contains
       character(16) :: hash
       character(:), allocatable :: part, prefix, old
       integer(int64) :: crc
-      integer :: me, np, code
+      integer :: me, np, code, k
       type(rs_file_t) :: rs
       me = par_rank()
       np = par_size()
@@ -136,6 +136,11 @@ contains
       part = par_restart_part_name(prefix, me)
       call par_engine_maps(gp, ng, hash)
       call swap_contact(model, gp)          ! the rank's contact state is in g (below)
+      if (allocated(model%walls) .and. allocated(gp%walls)) then
+         do k = 1, size(model%walls)       ! the serial wall forces (par_engine's flush)
+            model%walls(k)%force = gp%walls(k)%force
+         end do
+      end if
       call restart_write(model, part, kind, e)
       call swap_contact(model, gp)
       crc = -1
@@ -302,9 +307,12 @@ contains
    !> of another deck is an input error naming the dump (not the rank files, which would
    !> mismatch too). Rank 0 looks; a serial run needs nothing here (par_restart_read
    !> refuses a manifest).
-   subroutine par_restart_precheck(path, deck, error)
+   subroutine par_restart_precheck(path, deck, error, files)
       character(*), intent(in) :: path, deck
       type(error_t), allocatable, intent(out) :: error
+      !> the files the deck read (model%deck_files): hashed as they are, not by parsing the
+      !> deck again (which would refuse a deck run with --ignore-unknown)
+      type(string_t), intent(in), optional :: files(:)
       integer :: np
       np = par_size()
       if (np <= 1) return
@@ -328,8 +336,12 @@ contains
                'wrote it)', EXIT_INPUT)
             return
          end if
-         call read_deck_input(deck, inp, error)
-         if (.not. allocated(error)) call deck_content_hash(inp%files, hash, error)
+         if (present(files)) then
+            call deck_content_hash(files, hash, error)
+         else
+            call read_deck_input(deck, inp, error)
+            if (.not. allocated(error)) call deck_content_hash(inp%files, hash, error)
+         end if
          if (allocated(error)) return
          if (mhash /= hash) call set_error(error, 'restart file '//path//' is a dump of '// &
             'another deck (deck hash '//mhash//'; '//deck//' has '//hash//'). Give the deck '// &
