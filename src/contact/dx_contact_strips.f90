@@ -43,9 +43,9 @@ contains
    !> The strip (0..nstrip-1) of every slave node of pass p at x; sets p%strip_axis. The node
    !> at position i (1-based) of the order (coordinate, slave index) is in strip
    !> floor((i-1) nstrip/n), so strip s holds positions q(s)+1 .. q(s+1), q(s) =
-   !> ceil(s n/nstrip). Only the cut positions are needed, not the whole order: successive
-   !> quickselects (Hoare 1961) on the shrinking right part give them in O(n) per cut
-   !> (expected), instead of a heap sort of all nodes at every bucket sort.
+   !> ceil(s n/nstrip). Only the cut positions are needed, not the whole order: quickselects
+   !> (Hoare 1961) of the middle cut, then of the cuts on each side (O(n log nstrip)
+   !> expected), instead of a heap sort of all nodes at every bucket sort.
    subroutine strip_of(p, x, nstrip, strip)
       type(contact_pass_t), intent(inout) :: p
       real(wp), intent(in) :: x(:, :)
@@ -54,7 +54,8 @@ contains
       integer, allocatable :: idx(:)
       real(wp), allocatable :: c(:)
       real(wp) :: lo(3), hi(3)
-      integer :: i, n, a, s, q0, q1
+      integer, allocatable :: q(:)
+      integer :: i, n, a, s
       n = p%nnode
       allocate(strip(n), idx(n), c(n))
       if (n == 0) return
@@ -67,15 +68,39 @@ contains
       p%strip_axis = a
       c = x(a, p%node)
       idx = [(i, i = 1, n)]
-      q0 = 0
+      allocate(q(0:nstrip))
+      do s = 0, nstrip
+         q(s) = int((int(s, 8)*int(n, 8) + int(nstrip - 1, 8))/int(nstrip, 8))
+      end do
+      call cuts(1, n, 1, nstrip - 1)
       do s = 0, nstrip - 1
-         q1 = int((int(s + 1, 8)*int(n, 8) + int(nstrip - 1, 8))/int(nstrip, 8))
-         if (q1 > q0 .and. q1 < n) call select_rank(idx, c, q0 + 1, n, q1)
-         do i = q0 + 1, q1
+         do i = q(s) + 1, q(s + 1)
             strip(idx(i)) = s
          end do
-         q0 = q1
       end do
+   contains
+      !> idx(l:r) holds the elements of ranks l..r; make every cut q(s), s = slo..shi, a
+      !> boundary (idx(1:q(s)) the q(s) smallest): select the middle cut, then recurse on
+      !> both sides (O(n log nstrip) expected). A cut at l-1 or r is a boundary already.
+      recursive subroutine cuts(l, r, slo, shi)
+         integer, intent(in) :: l, r, slo, shi
+         integer :: sm, a, b
+         a = slo
+         b = shi
+         do while (a <= b)
+            if (q(a) >= l) exit
+            a = a + 1
+         end do
+         do while (b >= a)
+            if (q(b) < r) exit
+            b = b - 1
+         end do
+         if (a > b .or. r <= l) return
+         sm = (a + b)/2
+         call select_rank(idx, c, l, r, q(sm))
+         call cuts(l, q(sm) - 1, a, sm - 1)
+         call cuts(q(sm) + 1, r, sm + 1, b)
+      end subroutine cuts
    end subroutine strip_of
 
    !> Reorder idx(l0:r0) so that idx(k) is the element of rank k (within l0..r0, in the

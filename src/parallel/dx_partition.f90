@@ -23,6 +23,7 @@ module dx_partition
    use dx_strings, only: str
    use dx_model, only: model_t, ETYPE_HEX8_SRI
    use dx_metis, only: metis_part_kway, METIS_RECURSIVE
+   use dx_sort, only: sort_index
    use dx_contact_input, only: CT_SINGLE_SURFACE
    implicit none
    private
@@ -297,9 +298,9 @@ contains
       real(wp), intent(in) :: x(:, :)
       integer, allocatable, intent(inout) :: xadj(:), adjncy(:), adjwgt(:)
       integer, intent(out) :: ncomp, nprox
-      integer, allocatable :: parent(:), comp(:), cptr(:), clst(:), pv(:), pw(:), nx(:), &
+      integer, allocatable :: parent(:), comp(:), clst(:), pv(:), pw(:), nx(:), &
                               na(:), nw(:), cnt(:), mark(:), nbw(:)
-      real(wp), allocatable :: xc(:, :)
+      real(wp), allocatable :: xc(:, :), sk(:)
       real(wp) :: ext, lo(3), hi(3), d, h, hmin(3), hmax(3)
       integer :: ne, e, f, v, w, k, j, n, ncell(3), ic(3), jc(3), c, i1, i2, i3, np_, cap, a, b
       ne = size(conn, 2)
@@ -338,26 +339,24 @@ contains
       if (.not. (d > 0.0_wp)) return
       lo = minval(xc, dim=2)
       hi = maxval(xc, dim=2)
-      ! cells of size h >= d (at most ~ne cells), elements by cell (CSR)
-      h = max(d, (product(max(hi - lo, d))/real(ne, wp))**(1.0_wp/3.0_wp))
-      ncell = max(1, int((hi - lo)/h) + 1)
-      allocate(cptr(product(ncell) + 1), clst(ne), nx(ne))
-      cptr = 0
+      ! cells of size h = d, only the occupied ones: the elements ordered by cell key
+      ! (exact in a real while below 2**53; h grows only for absurd aspect ratios), a
+      ! neighbour cell's elements found by binary search; a far-away small body does not
+      ! coarsen the cells
+      h = d
+      do
+         ncell = max(1, int((hi - lo)/h) + 1)
+         if (product(real(ncell, wp)) < 2.0_wp**52) exit
+         h = 2.0_wp*h
+      end do
+      allocate(clst(ne), sk(ne))
       do e = 1, ne
          ic = min(ncell, int((xc(:, e) - lo)/h) + 1)
-         nx(e) = ic(1) + ncell(1)*((ic(2) - 1) + ncell(2)*(ic(3) - 1))
-         cptr(nx(e) + 1) = cptr(nx(e) + 1) + 1
+         sk(e) = cell_key(ic)
       end do
-      cptr(1) = 1
-      do c = 1, product(ncell)
-         cptr(c + 1) = cptr(c + 1) + cptr(c)
-      end do
-      allocate(cnt(product(ncell)))
-      cnt = 0
-      do e = 1, ne
-         clst(cptr(nx(e)) + cnt(nx(e))) = e
-         cnt(nx(e)) = cnt(nx(e)) + 1
-      end do
+      clst = [(e, e = 1, ne)]
+      call sort_index(clst, sk)
+      sk = sk(clst)
       ! element pairs of different components within d: vertex pairs, both directions
       cap = 1024
       allocate(pv(cap), pw(cap))
@@ -369,8 +368,8 @@ contains
             do i2 = max(1, ic(2) - 1), min(ncell(2), ic(2) + 1)
                do i1 = max(1, ic(1) - 1), min(ncell(1), ic(1) + 1)
                   jc = [i1, i2, i3]
-                  c = jc(1) + ncell(1)*((jc(2) - 1) + ncell(2)*(jc(3) - 1))
-                  do k = cptr(c), cptr(c + 1) - 1
+                  call key_range(cell_key(jc), c, n)
+                  do k = c, n
                      f = clst(k)
                      w = vtx(f)
                      if (comp(w) == comp(v)) cycle
@@ -400,7 +399,6 @@ contains
          na(v + 1) = na(v + 1) + na(v)
       end do
       allocate(nbw(np_))
-      deallocate(cnt, nx)
       allocate(cnt(nv), mark(nv), nx(xadj(nv + 1) + np_), nw(xadj(nv + 1) + np_))
       cnt = 0
       do k = 1, np_
@@ -454,6 +452,33 @@ contains
       adjncy = nx(1:n)
       adjwgt = nw(1:n)
       nprox = nprox/2
+   contains
+      real(wp) function cell_key(jc)
+         integer, intent(in) :: jc(3)
+         cell_key = real(jc(1), wp) + real(ncell(1), wp)*(real(jc(2) - 1, wp) + &
+                    real(ncell(2), wp)*real(jc(3) - 1, wp))
+      end function cell_key
+      !> positions i1..i2 of key in the sorted sk (i2 < i1: none)
+      subroutine key_range(key, i1, i2)
+         real(wp), intent(in) :: key
+         integer, intent(out) :: i1, i2
+         integer :: lo_, hi_, mid
+         lo_ = 1; hi_ = ne + 1          ! first position with sk >= key
+         do while (lo_ < hi_)
+            mid = (lo_ + hi_)/2
+            if (sk(mid) < key) then
+               lo_ = mid + 1
+            else
+               hi_ = mid
+            end if
+         end do
+         i1 = lo_
+         i2 = i1 - 1
+         do while (i2 < ne)
+            if (sk(i2 + 1) /= key) exit
+            i2 = i2 + 1
+         end do
+      end subroutine key_range
    end subroutine add_proximity_edges
 
    subroutine grow(a, n)

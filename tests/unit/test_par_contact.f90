@@ -18,6 +18,7 @@ program test_par_contact
    use dx_contact_types, only: contact_pass_t
    use dx_contact_strips, only: strip_of
    use dx_sort, only: sort_index
+   use dx_strings, only: str
    use dx_par_contact, only: contact_groups
    use dx_assert, only: check, check_close, assert_summary
    implicit none
@@ -50,7 +51,8 @@ contains
       type(contact_pass_t) :: p
       real(wp), allocatable :: x(:, :)
       integer, allocatable :: s1(:), s2(:)
-      integer :: i, ns, s, n
+      integer :: i, ns, s, n, k
+      integer, parameter :: NSS(12) = [1, 2, 3, 4, 5, 6, 7, 16, 64, 999, 1000, 1500]
       logical :: ordered
       real(wp) :: r
       n = 1000
@@ -86,7 +88,8 @@ contains
       x(1, :) = real(nint(20.0_wp*x(1, :)/10.0_wp), wp)
       p%node = [(1 + mod(37*i, n), i = 0, n - 1)]
       deallocate(s2)
-      do ns = 1, 7
+      do k = 1, 12
+         ns = NSS(k)
          call strip_of(p, x, ns, s1)
          block
             integer, allocatable :: idx(:)
@@ -100,7 +103,7 @@ contains
             end do
          end block
          call check(all(s1 == s2), 'strips: quickselect cuts = full sort, 20 tied values, NS = '// &
-                    char(48 + ns))
+                    str(ns))
          deallocate(s2)
       end do
    end subroutine test_strips
