@@ -4,14 +4,15 @@
 !> direction in which they extend furthest, the cuts placed so that every strip holds the
 !> same number of slave nodes (+-1): in the order of that coordinate (ties by slave index, so
 !> every rank finds the same strips from the same coordinates) strip s takes positions
-!> s*n/NSTRIP .. (s+1)*n/NSTRIP-1 (found by quickselect of the cuts, not a full sort). Rebuilt with the bucket sort (every BSORT
-!> cycles, or on motion), from the coordinates of that cycle. Each rank searches and
-!> computes the slave nodes of its own strip (p%mine); the segments a node may touch lie
-!> within the search reach of the strip (the halo), which dx_contact_search finds.
-!> No MPI here: the strips depend on x only, so every rank computes all of them alike.
-!> MPI runs use them only with --contact-split strips (or DYNX_PAR_CONTACT=strips); by default a rank computes the slave
-!> nodes it owns (owner-computes, the mask mine_node from dx_par_contact): no sort of the
-!> slave nodes at all, and the nodes a rank computes are its own (docs/design.md).
+!> s*n/NSTRIP .. (s+1)*n/NSTRIP-1 (the cuts found by quickselect, not a full sort). Rebuilt
+!> with the bucket sort (every BSORT cycles, or on motion), from that cycle's coordinates.
+!> Each rank searches and computes the slave nodes of its own strip (p%mine); the segments a
+!> node may touch lie within the search reach of the strip (the halo), which
+!> dx_contact_search finds. No MPI here: the strips depend on x only, so every rank computes
+!> all of them alike. MPI runs use them only with --contact-split strips (or
+!> DYNX_PAR_CONTACT=strips); by default a rank computes the slave nodes it owns
+!> (owner-computes, the mask mine_node from dx_par_contact): no sort of the slave nodes at
+!> all, and the nodes a rank computes are its own (docs/design.md).
 module dx_contact_strips
    use dx_kinds, only: wp
    use dx_contact_types, only: contact_pass_t

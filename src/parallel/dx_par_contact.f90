@@ -89,7 +89,6 @@ contains
       integer, intent(in) :: node_global(:)
       logical, intent(in) :: owned(:)
       logical, allocatable :: isc(:)
-      character(16) :: mode
       integer :: i
       if (.not. allocated(g%contact)) return
       g%contact%nstrip = par_size()
@@ -107,14 +106,9 @@ contains
       ! nodes at every sort (no strips to find, and its slave nodes' x and v are its own);
       ! strips (--contact-split strips or DYNX_PAR_CONTACT=strips): the geometric strips
       ! of dx_contact_strips
-      mode = split_mode
-      if (len_trim(mode) == 0) then
-         call get_environment_variable('DYNX_PAR_CONTACT', mode, status=i)
-         if (i /= 0) mode = 'owner'
-      end if
-      if (trim(mode) /= 'strips') mode = 'owner'
-      split_mode = mode
-      if (trim(mode) == 'owner') then
+      if (len_trim(split_mode) == 0) call get_environment_variable('DYNX_PAR_CONTACT', split_mode)
+      if (split_mode /= 'strips') split_mode = 'owner'
+      if (split_mode == 'owner') then
          allocate(g%contact%mine_node(g%nn))
          g%contact%mine_node = .false.
          g%contact%mine_node(c_glob) = .true.

@@ -27,8 +27,6 @@ module dx_par_engine
    use dx_strings, only: str, rstr
    use dx_log, only: log_info, log_set_quiet
    use dx_model, only: model_t, elem_block_t
-   use dx_model_input, only: model_input_t
-   use dx_deck, only: read_deck_input
    use dx_par, only: par_rank, par_size, par_abort, par_minloc, par_gather_ordered, &
                      par_allreduce, par_barrier, PAR_MAX, gather_plan_t, par_gather_setup, &
                      par_gather_values, par_wtime, PAR_SUM, par_bcast_text, &
@@ -138,11 +136,7 @@ contains
       call unsupported(model, error)
       if (allocated(error)) return
       if (me > 0) call log_set_quiet(.true.)
-      if (allocated(model%deck_files)) then       ! the files read_deck read
-         call deck_content_hash(model%deck_files, hash, error)
-      else
-         call deck_content_hash_of(deck, hash, error)
-      end if
+      call deck_content_hash(model%deck_files, hash, error)   ! the files read_deck read
       if (allocated(error)) return
       deck_hash = hash
       k = index(deck, '/', back=.true.)
@@ -327,18 +321,6 @@ contains
       end do
       on = .true.
    contains
-      !> The deck's content hash (every file it reads), as dynx-part records it.
-      subroutine deck_content_hash_of(deck, hash, error)
-         character(*), intent(in) :: deck
-         character(16), intent(out) :: hash
-         type(error_t), allocatable, intent(out) :: error
-         type(model_input_t) :: inp
-         hash = ''
-         call read_deck_input(deck, inp, error)
-         if (allocated(error)) return
-         call deck_content_hash(inp%files, hash, error)
-      end subroutine deck_content_hash_of
-
       !> Rank 0 only: partition the deck into dir as `dynx-part deck -n np -o dir` would.
       subroutine partition_here(model, np, hash, deck, dir, err)
          type(model_t), intent(in) :: model

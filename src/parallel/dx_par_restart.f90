@@ -44,8 +44,6 @@ module dx_par_restart
    use dx_par_agree, only: par_agree
    use dx_par_engine, only: par_engine_on, par_engine_maps
    use dx_par_plot, only: par_plot_resume, par_plot_from_serial
-   use dx_model_input, only: model_input_t
-   use dx_deck, only: read_deck_input
    use dx_rank_file, only: deck_content_hash
    implicit none
    private
@@ -312,7 +310,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       !> the files the deck read (model%deck_files): hashed as they are, not by parsing the
       !> deck again (which would refuse a deck run with --ignore-unknown)
-      type(string_t), intent(in), optional :: files(:)
+      type(string_t), intent(in) :: files(:)
       integer :: np
       np = par_size()
       if (np <= 1) return
@@ -325,7 +323,6 @@ contains
          character(:), allocatable :: mhash
          character(16) :: hash
          real(wp), allocatable :: crcs(:)
-         type(model_input_t) :: inp
          call inspect(path, mode, mnp, mhash, crcs, error)
          if (allocated(error)) return
          if (mode /= 1) return
@@ -336,12 +333,7 @@ contains
                'wrote it)', EXIT_INPUT)
             return
          end if
-         if (present(files)) then
-            call deck_content_hash(files, hash, error)
-         else
-            call read_deck_input(deck, inp, error)
-            if (.not. allocated(error)) call deck_content_hash(inp%files, hash, error)
-         end if
+         call deck_content_hash(files, hash, error)
          if (allocated(error)) return
          if (mhash /= hash) call set_error(error, 'restart file '//path//' is a dump of '// &
             'another deck (deck hash '//mhash//'; '//deck//' has '//hash//'). Give the deck '// &
