@@ -16,7 +16,7 @@ ALL_SRC := $(LIB_SRC) $(PROG_SRC)
 TEST_SRC := $(wildcard tests/unit/*.f90)
 # h5pfc moves archives (libdynx.a) after the -l flags; --no-as-needed keeps libmetis.so
 # linked so libdynx.a can resolve METIS symbols from it
-LIBS := -Wl,--no-as-needed -lmetis -llapack -lblas -lfftw3
+LIBS := -Wl,--no-as-needed -lmetis -llapack -lblas
 COMMON := -I/usr/include -ffree-line-length-132
 REL_FLAGS := $(COMMON) -O3 -march=native -funroll-loops
 # the element and material kernels work on fixed chunks of nv_chunk elements: their
@@ -108,6 +108,7 @@ regression: all bin/dynx-debug
 
 test: deps
 	@$(MAKE) --no-print-directory all debug bin/dynx-asan $(UNIT_TESTS) $(MPI_TESTS)
+	@python3 scripts/check_layers.py
 	@sh scripts/run_unit_tests.sh $(UNIT_TESTS)
 	@sh scripts/run_mpi_tests.sh $(MPI_TESTS)
 	@sh scripts/run_partition_tests.sh
