@@ -1,5 +1,6 @@
 #!/bin/sh
-# Install the Debian packages dynx needs, only those missing. Uses sudo when not root.
+# Install the Debian packages dynx needs, only those missing. Without root: print the exact
+# apt-get line and exit 2.
 set -e
 PKGS="gfortran make libopenmpi-dev openmpi-bin libhdf5-openmpi-dev hdf5-tools libmetis-dev \
 liblapack-dev libblas-dev libfftw3-dev gnuplot-nox python3 python3-numpy"
@@ -8,8 +9,13 @@ for p in $PKGS; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
 done
 [ -z "$missing" ] && exit 0
+line="apt-get install -y --no-install-recommends$missing"
+if [ "$(id -u)" -ne 0 ]; then
+    # without root: say exactly what to run, change nothing
+    echo "dynx: missing Debian packages:$missing" >&2
+    echo "dynx: as root, run:  apt-get update && $line" >&2
+    exit 2
+fi
 echo "dynx: installing missing Debian packages:$missing"
-SUDO=""
-[ "$(id -u)" -ne 0 ] && SUDO="sudo"
-$SUDO apt-get update -qq
-DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends $missing
+apt-get update -qq
+DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $missing
