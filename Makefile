@@ -12,7 +12,9 @@ FC := h5pfc
 SRC_DIRS := base linalg parallel model materials deck elements rigid contact loads io solvers
 LIB_SRC := $(foreach d,$(SRC_DIRS),$(wildcard src/$(d)/*.f90))
 PROG_SRC := src/main/dynx.f90 $(wildcard src/tools/*.f90)
-ALL_SRC := $(LIB_SRC) $(PROG_SRC)
+# the main program's own modules (dx_cli), linked into bin/dynx only
+MAIN_SRC := $(filter-out src/main/dynx.f90,$(wildcard src/main/*.f90))
+ALL_SRC := $(LIB_SRC) $(MAIN_SRC) $(PROG_SRC)
 TEST_SRC := $(wildcard tests/unit/*.f90)
 # h5pfc moves archives (libdynx.a) after the -l flags; --no-as-needed keeps libmetis.so
 # linked so libdynx.a can resolve METIS symbols from it
@@ -72,13 +74,13 @@ build/release/libdynx.a: $(REL_LIB_OBJ)
 build/debug/libdynx.a: $(DBG_LIB_OBJ)
 	ar rcs $@ $^
 
-bin/dynx: build/release/dynx.o build/release/libdynx.a | bin
+bin/dynx: build/release/dynx.o $(MAIN_SRC:src/main/%.f90=build/release/%.o) build/release/libdynx.a | bin
 	$(FC) $(REL_FLAGS) -o $@ $^ $(LIBS)
-bin/dynx-debug: build/debug/dynx.o build/debug/libdynx.a | bin
+bin/dynx-debug: build/debug/dynx.o $(MAIN_SRC:src/main/%.f90=build/debug/%.o) build/debug/libdynx.a | bin
 	$(FC) $(DBG_FLAGS) -o $@ $^ $(LIBS)
 build/asan/libdynx.a: $(patsubst %.f90,build/asan/%.o,$(notdir $(LIB_SRC)))
 	ar rcs $@ $^
-bin/dynx-asan: build/asan/dynx.o build/asan/libdynx.a | bin
+bin/dynx-asan: build/asan/dynx.o $(MAIN_SRC:src/main/%.f90=build/asan/%.o) build/asan/libdynx.a | bin
 	$(FC) $(ASAN_FLAGS) -o $@ $^ $(LIBS)
 bin/dynx-%: build/release/dynx_%.o build/release/libdynx.a | bin
 	$(FC) $(REL_FLAGS) -o $@ $^ $(LIBS)

@@ -1,0 +1,241 @@
+!> The dynx command line: options, usage text, the SLURM wall-clock limit, and the two ways
+!> the program stops on an error (a usage error before anything ran, or a run's error_t).
+!> Exit codes: 0 normal, 2 input error, 3 numerical failure in the run, 4 I/O failure,
+!> 5 stopped at a checkpoint (SIGTERM/SIGINT or wall-clock limit; a restart dump was written).
+module dx_cli
+   use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+   use dx_kinds, only: wp
+   use dx_error, only: error_t, EXIT_INPUT, exit_process
+   use dx_strings, only: rstr
+   use dx_log, only: log_info, log_error
+   use dx_io_sys, only: sys_epoch_seconds
+   use dx_timer, only: wall_time
+   use dx_signals, only: SIGTERM_NUM, SIGINT_NUM, SIGUSR1_NUM
+   use dx_explicit, only: run_options_t
+   use dx_par, only: par_init, par_finalize, par_rank, par_size, par_abort, par_barrier, &
+                     par_active
+   use dx_par_agree, only: par_agreed
+   use dx_par_engine, only: par_engine_together
+   use dx_par_emc, only: par_emc_together
+   use dx_par_contact, only: par_contact_set_split
+   implicit none
+   private
+   public :: cli_t, parse_cli, die, die_usage
+
+   !> What the command line asks for.
+   type :: cli_t
+      character(:), allocatable :: deck      !< -i: the keyword deck
+      character(:), allocatable :: outdir    !< -o: output directory
+      character(:), allocatable :: rfile     !< -r: restart dump
+      character(:), allocatable :: rdeck     !< -R: restart deck
+      character(:), allocatable :: partdir   !< --part: MPI rank files
+      logical :: check_only = .false.        !< --check
+      logical :: ignore_unknown = .false.    !< --ignore-unknown
+      type(run_options_t) :: opts            !< status lines, checkpoints, signals
+   end type cli_t
+
+contains
+
+   !> Read the command line into cli; a usage error stops the program with exit 2.
+   subroutine parse_cli(cli)
+      type(cli_t), intent(out) :: cli
+      character(:), allocatable :: arg, val
+      integer :: i, n, ios
+      cli%opts%ck%wall0 = wall_time()   ! the wall-clock limit counts from process start
+      cli%outdir = '.'
+      cli%deck = ''
+      cli%rfile = ''
+      cli%rdeck = ''
+      cli%partdir = ''
+      n = command_argument_count()
+      i = 0
+      do while (i < n)
+         i = i + 1
+         arg = get_arg(i)
+         select case (arg)
+         case ('-h', '--help')
+            call usage(); stop
+         case ('-i', '--input')
+            i = i + 1; cli%deck = get_arg(i)
+         case ('-o', '--outdir')
+            i = i + 1; cli%outdir = get_arg(i)
+         case ('--status')
+            i = i + 1; val = get_arg(i)
+            read(val, *, iostat=ios) cli%opts%nstatus
+            if (ios /= 0 .or. cli%opts%nstatus < 1) &
+               call die_usage('--status needs a positive integer')
+         case ('--check')
+            cli%check_only = .true.
+         case ('--part')
+            i = i + 1; cli%partdir = get_arg(i)
+         case ('-r', '--restart')
+            i = i + 1; cli%rfile = get_arg(i)
+         case ('-R', '--restart-deck')
+            i = i + 1; cli%rdeck = get_arg(i)
+         case ('--walltime')
+            i = i + 1; val = get_arg(i)
+            read(val, *, iostat=ios) cli%opts%ck%walltime
+            if (ios /= 0 .or. .not. (cli%opts%ck%walltime > 0.0_wp)) &
+               call die_usage('--walltime needs a positive number of seconds')
+         case ('--raise-at-cycle')
+            i = i + 1; val = get_arg(i)
+            call parse_raise(val, cli%opts%ck%raise_cycle, cli%opts%ck%raise_sig, &
+                             cli%opts%ck%raise_rank)
+         case ('--ignore-unknown')
+            cli%ignore_unknown = .true.
+         case ('--contact-split')
+            i = i + 1; val = get_arg(i)
+            if (val /= 'owner' .and. val /= 'strips') &
+               call die_usage('--contact-split needs owner or strips, not '//val)
+            call par_contact_set_split(val)
+         case default
+            if (len(arg) > 2) then
+               if (arg(1:2) == 'i=' .or. arg(1:2) == 'I=') then
+                  cli%deck = arg(3:); cycle
+               end if
+               if (arg(1:2) == 'r=' .or. arg(1:2) == 'R=') then
+                  cli%rfile = arg(3:); cycle
+               end if
+            end if
+            call die_usage('unknown argument '//arg)
+         end select
+      end do
+      if (len(cli%deck) == 0) call die_usage('no input deck: use -i deck.k (or i=deck.k)')
+      if (len(cli%rdeck) > 0 .and. len(cli%rfile) == 0 .and. .not. cli%check_only) &
+         call die_usage('-R (restart deck) needs -r dump.h5 (or --check)')
+      cli%opts%outdir = cli%outdir
+      cli%opts%ck%outdir = cli%outdir
+      cli%opts%ck%deck = cli%deck
+      call slurm_limit(cli%opts%ck%walltime)
+   end subroutine parse_cli
+
+   function get_arg(k) result(a)
+      integer, intent(in) :: k
+      character(:), allocatable :: a
+      integer :: l
+      if (k > command_argument_count()) call die_usage('missing value after the last option')
+      call get_command_argument(k, length=l)
+      allocate(character(l) :: a)
+      call get_command_argument(k, a)
+   end function get_arg
+
+   subroutine usage()
+      write(output_unit, '(a)') &
+         'usage: dynx -i deck.k [options]     (LS-DYNA style i=deck.k is accepted too)', &
+         '', &
+         'Runs an LS-DYNA style keyword deck with the explicit central-difference solver.', &
+         '', &
+         'options:', &
+         '  -i, --input FILE     the keyword deck', &
+         '  -o, --outdir DIR     output directory (default: current directory); holds', &
+         '                       d3plot.h5 + d3plot.xdmf (open in ParaView), glstat, nodout', &
+         '  --status N           number of status lines over the run (default 10)', &
+         '  --check              read and check the deck, print a summary, do not run', &
+         '  --part DIR           MPI runs: the rank files (dynx-part) are DIR/rank_R.h5', &
+         '                       (default: the output directory, else next to the deck;', &
+         '                       rank 0 partitions into the output directory if none)', &
+         '  -r, --restart FILE   continue the run from restart dump FILE (d3dumpNN.h5,', &
+         '                       runrsf.h5); give the same deck and -o as the first run', &
+         '  -R, --restart-deck F a small restart deck applied after the deck (new end time,', &
+         '                       output intervals, curves; docs/keywords.md)', &
+         '  --walltime S         write a restart dump and stop (exit 5) before S seconds of', &
+         '                       wall time (SLURM_JOB_END_TIME is read when set)', &
+         '  --raise-at-cycle N[:SIG][@R]  send SIG (TERM, INT, USR1; default TERM) to', &
+         '                       dynx itself at cycle N (tests of the signal path); MPI:', &
+         '                       @R only on rank R (default every rank)', &
+         '  --ignore-unknown     unknown keywords are warnings, not errors', &
+         '  --contact-split M    MPI runs with automatic contact: which rank computes a slave', &
+         '                       node: owner (default; the rank owning it) or strips (1-D', &
+         '                       strips of equal node count along the longest axis, rebuilt', &
+         '                       with the bucket sort; ParaDyn); the results are the', &
+         '                       same bits either way', &
+         '  -h, --help           this text', &
+         '', &
+         'exit codes: 0 normal termination, 2 input error, 3 numerical failure in the run,', &
+         '            4 I/O failure, 5 stopped with a restart dump (SIGTERM, SIGINT, walltime)', &
+         'signals: SIGTERM/SIGINT dump and stop (exit 5); SIGUSR1 dumps and goes on'
+   end subroutine usage
+
+   !> The wall-clock limit: the smaller of --walltime and what SLURM_JOB_END_TIME (Unix
+   !> seconds) leaves from now; 0 when neither is set.
+   subroutine slurm_limit(walltime)
+      real(wp), intent(inout) :: walltime
+      character(64) :: env
+      integer :: st, l
+      integer(8) :: tend
+      real(wp) :: left
+      call get_environment_variable('SLURM_JOB_END_TIME', env, length=l, status=st)
+      if (st /= 0 .or. l == 0) return
+      read(env, *, iostat=st) tend
+      if (st /= 0) then
+         call log_info('dynx: SLURM_JOB_END_TIME='//trim(env)//' is not a number; ignored')
+         return
+      end if
+      left = real(tend - sys_epoch_seconds(), wp)
+      if (left <= 0.0_wp) left = 1.0_wp
+      if (walltime <= 0.0_wp .or. left < walltime) walltime = left
+      call log_info('dynx: SLURM_JOB_END_TIME leaves '//rstr(left, 6)//' s')
+   end subroutine slurm_limit
+
+   !> --raise-at-cycle N[:SIG][@R]
+   subroutine parse_raise(vv, n, sig, rank)
+      character(*), intent(in) :: vv
+      integer, intent(out) :: n, sig, rank
+      integer :: k, ios
+      character(:), allocatable :: name, v
+      v = vv
+      rank = -1
+      k = index(v, '@')
+      if (k > 0) then
+         read(v(k + 1:), *, iostat=ios) rank
+         if (ios /= 0 .or. rank < 0) &
+            call die_usage('--raise-at-cycle N[:SIG]@R needs a rank R >= 0')
+         v = v(1:k - 1)
+      end if
+      k = index(v, ':')
+      name = 'TERM'
+      if (k > 0) name = v(k + 1:)
+      if (k == 0) k = len(v) + 1
+      read(v(1:k - 1), *, iostat=ios) n
+      if (ios /= 0 .or. n < 1) call die_usage('--raise-at-cycle needs N[:SIG] with N > 0')
+      select case (name)
+      case ('TERM', 'SIGTERM'); sig = SIGTERM_NUM
+      case ('INT', 'SIGINT'); sig = SIGINT_NUM
+      case ('USR1', 'SIGUSR1'); sig = SIGUSR1_NUM
+      case default
+         call die_usage('--raise-at-cycle: signal '//name//' is not one of TERM, INT, USR1')
+      end select
+   end subroutine parse_raise
+
+   !> A usage error: message, hint, exit 2 (under mpirun rank 0 alone speaks).
+   subroutine die_usage(msg)
+      character(*), intent(in) :: msg
+      type(error_t), allocatable :: e
+      ! under mpirun every rank gets here (before MPI_Init): start MPI so that rank 0 alone
+      ! speaks and no rank exits before it has (par_init does nothing in a serial run)
+      if (.not. par_active()) call par_init(e)
+      if (par_rank() == 0) then
+         call log_error(msg)
+         write(error_unit, '(a)') 'dynx: try dynx --help'
+         flush(error_unit)
+      end if
+      call par_barrier()
+      call par_finalize()
+      call exit_process(EXIT_INPUT)
+   end subroutine die_usage
+
+   !> Stop on err with its exit code.
+   subroutine die(err)
+      type(error_t), intent(in) :: err
+      ! a failure every rank knows (it wrote the last plot state): rank 0 reports, all exit
+      ! with the code; any other failure on one rank stops every rank (MPI_Abort)
+      if (par_size() > 1 .and. .not. (par_engine_together() .or. par_agreed() .or. &
+                                      par_emc_together())) &
+         call par_abort(err%message, err%code)
+      if (par_rank() == 0) call log_error(err%message)
+      flush(error_unit)
+      call par_barrier()       ! every rank stops together: none exits before rank 0 printed
+      call par_finalize()
+      call exit_process(err%code)
+   end subroutine die
+end module dx_cli
