@@ -10,8 +10,9 @@
 SHELL := /bin/sh
 FC := h5pfc
 SRC_DIRS := base linalg parallel model materials deck elements rigid contact loads io solvers
-LIB_SRC := $(foreach d,$(SRC_DIRS),$(wildcard src/$(d)/*.f90))
-PROG_SRC := src/main/dynx.f90 $(wildcard src/tools/*.f90)
+# src/tools/: dynx_*.f90 are the tool programs, dx_*.f90 their modules (in the library)
+LIB_SRC := $(foreach d,$(SRC_DIRS),$(wildcard src/$(d)/*.f90)) $(wildcard src/tools/dx_*.f90)
+PROG_SRC := src/main/dynx.f90 $(wildcard src/tools/dynx_*.f90)
 # the main program's own modules (dx_cli), linked into bin/dynx only
 MAIN_SRC := $(filter-out src/main/dynx.f90,$(wildcard src/main/*.f90))
 ALL_SRC := $(LIB_SRC) $(MAIN_SRC) $(PROG_SRC)
@@ -35,7 +36,7 @@ ASAN_FLAGS := $(DBG_FLAGS) -fsanitize=address,undefined -fno-omit-frame-pointer
 DEFAULT_DECK := decks/taylor_bar/deck.k
 OUT := out
 
-PROGS := bin/dynx $(patsubst src/tools/%.f90,bin/%,$(wildcard src/tools/*.f90))
+PROGS := bin/dynx $(patsubst src/tools/%.f90,bin/%,$(wildcard src/tools/dynx_*.f90))
 PROGS := $(subst _,-,$(PROGS))
 
 .PHONY: all deps run test unit regression bench studies clean debug fuzz restart-long kill9-sweep mpi-sweep
