@@ -150,6 +150,7 @@ fuzz: deps
 bench: deps
 	@$(MAKE) --no-print-directory all $(MPI_BENCH)
 	@sh scripts/bench.sh
+	@sh scripts/bench_compare.sh
 	@sh scripts/bench_shared_sum.sh
 	@sh scripts/bench_contact.sh
 	@sh scripts/bench_mpi.sh
