@@ -437,6 +437,7 @@ contains
       n = c_read(fd, buf, 255_c_size_t)
       if (c_close(fd) /= 0) continue
       if (n <= 0) return
+      deallocate(text)
       allocate(character(n) :: text)
       do i = 1, int(n)
          text(i:i) = buf(i)

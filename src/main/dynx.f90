@@ -24,6 +24,7 @@ program dynx
                             par_engine_together
    use dx_par_emc, only: par_emc_together
    use dx_par_contact, only: par_contact_set_split
+   use dx_out_lock, only: out_lock
    implicit none
    character(:), allocatable :: deck, outdir, arg, val, rfile, rdeck, partdir
    type(model_t) :: model
@@ -31,7 +32,7 @@ program dynx
    type(run_options_t) :: opts
    type(error_t), allocatable :: error
    logical :: check_only, ignore_unknown
-   integer :: i, n, ios
+   integer :: i, n, ios, lock_fd
 
    opts%ck%wall0 = wall_time()       ! the wall-clock limit counts from process start
    check_only = .false.
@@ -122,6 +123,9 @@ program dynx
       call par_finalize()
       stop
    end if
+   if (par_rank() == 0) call out_lock(outdir, 'dynx', lock_fd, error)   ! held until exit
+   call par_agree(error)
+   if (allocated(error)) call die(error)
    if (len(rfile) > 0) call par_restart_precheck(rfile, deck, error, model%deck_files)   ! MPI
    if (allocated(error)) call die(error)
    call par_engine_setup(model, deck, outdir, partdir, error)   ! MPI run: the rank's part
