@@ -315,6 +315,14 @@ contains
                   '(volume '//rstr(vol(e))//' <= 0; check the node order N1..N8)')
                return
             end if
+            ! zero volume within round-off of the element's size (1e-10 of the
+            ! cube of its bounding box: a flattened element whose nodes are not quite coplanar)
+            if (vol(e) <= 1.0e-10_wp*maxval(maxval(model%x0(:, conn(:, e)), dim=2) - &
+                                                 minval(model%x0(:, conn(:, e)), dim=2))**3) then
+               call set_error(error, w//'element '//str(lab)//' has zero volume at t = 0 '// &
+                  '(volume '//rstr(vol(e))//'; flat or collapsed: check its nodes N1..N8)')
+               return
+            end if
          end associate
       end do
       ! blocks: parts in deck order, elements of a part in deck order, nv_chunk at most
