@@ -113,7 +113,7 @@ test: deps
 	@sh scripts/run_partition_tests.sh
 	@sh scripts/run_regression.sh
 	@sh scripts/diskfull_check.sh
-	@python3 scripts/fuzz_decks.py --count 300 --seed 7 --jobs 2
+	@python3 scripts/fuzz_decks.py --count 300 --seed 7 --jobs 2 --restart-share 0.05
 	@python3 scripts/kill9_check.py --runs 20 --seed 7
 	@python3 scripts/kill9_sweep.py --endtim 0.009 --target d3dump02 --stride 7
 	@python3 scripts/kill9_sweep.py --workdir build/kill9_sweep_sample --stride 23
