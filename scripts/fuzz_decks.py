@@ -13,8 +13,16 @@ Mutations (1 to 3 stacked per input): byte flips, truncation, swapped fields, hu
 NaN / Inf / malformed numbers, deleted cards and keyword lines, duplicated and swapped
 lines, over-long lines, random keywords, *INCLUDE recursion (self-include, deep chains).
 
+Watchdog (issue 15): a mutant that runs longer than --watchdog seconds (default 10) counts
+as a hang and fails the campaign, even when it ends by itself before the kill (--timeout).
+
+Restart-file mutants (--restart-share, default 0.1 of the inputs): a restart dump of a short
+patch-test run (cycle 5 of 11) with flipped bytes, a zeroed block or truncated, continued with
+`dynx -i deck -r mutant.h5`: the run must end with exit 0 (the flipped bytes were outside
+what is read), or exit 2 / 4 with a message naming the dump; never a crash, a trap or a hang.
+
     python3 scripts/fuzz_decks.py --count 300 --seed 7 --jobs 2     (make test)
-    python3 scripts/fuzz_decks.py --count 10000 --jobs 2            (make fuzz)
+    python3 scripts/fuzz_decks.py --count 10000 --jobs 2            (make fuzz; N=...)
     python3 scripts/fuzz_decks.py --report docs/fuzz-report.md ...  (message classes table)
 
 The binary is bin/dynx-asan (debug + AddressSanitizer + UBSan) when present, else
@@ -177,6 +185,8 @@ def classify(rc, err):
             return False, 'crash (%s)' % b.strip(), '', first
     if rc == 124:
         return False, 'hang (timeout)', '', first
+    if rc == 125:
+        return False, 'hang (past the watchdog)', '', first
     if rc < 0 or rc >= 128:
         return False, 'signal %d' % (-rc if rc < 0 else rc - 128), '', first
     if rc == 0:
@@ -203,6 +213,44 @@ def message_class(m):
     return m[:110]
 
 
+def restart_base(workdir, dynx):
+    """(deck path, dump bytes): the patch test cut to 1e-3 s (11 cycles), dumped at cycle 5."""
+    src = os.path.join(ROOT, 'tests', 'regression', 'patch_constant_strain', 'deck.k')
+    with open(src) as f:
+        lines = f.read().split('\n')
+    k = lines.index('*CONTROL_TERMINATION')
+    lines[k + 1] = '    0.0010'
+    d = os.path.join(workdir, 'restart_base')
+    os.makedirs(d, exist_ok=True)
+    deck = os.path.join(d, 'deck.k')
+    with open(deck, 'w') as f:
+        f.write('\n'.join(lines))
+    subprocess.run([dynx, '-i', deck, '-o', os.path.join(d, 'out'), '--raise-at-cycle', '5:USR1'],
+                   capture_output=True, timeout=300)
+    with open(os.path.join(d, 'out', 'd3dump01.h5'), 'rb') as f:
+        return deck, f.read()
+
+
+def mutate_dump(rng, data):
+    b = bytearray(data)
+    kind = rng.choice(['flip', 'flip', 'flips', 'zero', 'truncate', 'garbage'])
+    if kind == 'flip':
+        b[rng.randrange(len(b))] ^= 1 << rng.randrange(8)
+    elif kind == 'flips':
+        for _ in range(rng.randint(2, 40)):
+            b[rng.randrange(len(b))] = rng.randrange(256)
+    elif kind == 'zero':
+        a = rng.randrange(len(b))
+        n = rng.randint(1, 4096)
+        b[a:a + n] = bytes(len(b[a:a + n]))
+    elif kind == 'truncate':
+        b = b[:rng.randrange(len(b))]
+    else:
+        a = rng.randrange(len(b))
+        b[a:a + 64] = bytes(rng.randrange(256) for _ in range(64))
+    return bytes(b), 'dump-' + kind
+
+
 def run_one(args, idx, name, text, files, base, workdir, dynx, timeout):
     d = os.path.join(workdir, 'c%06d' % idx)
     os.makedirs(d, exist_ok=True)
@@ -216,17 +264,29 @@ def run_one(args, idx, name, text, files, base, workdir, dynx, timeout):
     env['UBSAN_OPTIONS'] = 'print_stacktrace=1:halt_on_error=1'
     env['GFORTRAN_ERROR_BACKTRACE'] = '1'
     try:
-        cmd = [dynx, '--check', '-i', 'deck.k'] if base is None else \
-              [dynx, '--check', '-i', base, '-R', 'deck.k']
-        p = subprocess.run(['timeout', '-s', 'KILL', str(timeout)] + cmd, capture_output=True,
-                           env=env, cwd=d)
+        if base is None:
+            cmd = [dynx, '--check', '-i', 'deck.k']
+        elif name.startswith('restart-dump'):
+            os.rename(os.path.join(d, 'deck.k'), os.path.join(d, 'dump.h5'))
+            cmd = [dynx, '-i', base, '-o', 'out', '-r', 'dump.h5']
+        else:
+            cmd = [dynx, '--check', '-i', base, '-R', 'deck.k']
+        t0 = time.time()
+        p = subprocess.run(['timeout', '-s', 'KILL', str(max(timeout, args.watchdog + 1))] + cmd,
+                           capture_output=True, env=env, cwd=d)
         rc = p.returncode
+        if time.time() - t0 > args.watchdog and rc not in (137, -9):
+            rc = 125     # ended by itself, but past the watchdog: a hang all the same
         if rc == 137 or rc == -9:
             rc = 124
         err = p.stderr.decode('latin-1') + p.stdout.decode('latin-1')[-2000:]
     except Exception as e:   # pragma: no cover
         rc, err = 1, 'fuzz driver: %s' % e
     ok, outcome, cls, first = classify(rc, err)
+    if name.startswith('restart-dump') and not ok and outcome.startswith('exit 2 without'):
+        ok, outcome = True, 'exit 2'     # a dump's message names the dump, not a deck line
+    if name.startswith('restart-dump') and outcome == 'exit 4' and 'dump.h5' in err:
+        ok = True                        # a damaged dump is an I/O error naming it
     if ok:
         shutil.rmtree(d, ignore_errors=True)
     else:
@@ -244,6 +304,10 @@ def main():
     ap.add_argument('--seed', type=int, default=None)
     ap.add_argument('--jobs', type=int, default=2)
     ap.add_argument('--timeout', type=int, default=30)
+    ap.add_argument('--watchdog', type=float, default=10.0,
+                    help='a mutant running longer counts as a hang (seconds)')
+    ap.add_argument('--restart-share', type=float, default=0.1,
+                    help='share of the inputs that are mutated restart dumps')
     ap.add_argument('--dynx', default=None)
     ap.add_argument('--workdir', default=os.path.join(ROOT, 'build', 'fuzz'))
     ap.add_argument('--report', default=None, help='write the message-class table (markdown)')
@@ -265,7 +329,14 @@ def main():
     os.makedirs(args.workdir)
     t0 = time.time()
     cases = []
+    rdeck = rdump = None
+    if args.restart_share > 0:
+        rdeck, rdump = restart_base(args.workdir, dynx)
     for i in range(args.count):
+        if rdump is not None and rng.random() < args.restart_share:
+            data, tag = mutate_dump(rng, rdump)
+            cases.append((i, 'restart-dump:' + tag, data, {}, rdeck))
+            continue
         name, text, base = rng.choice(src)
         files, tags = {}, []
         for _ in range(rng.choice([1, 1, 1, 2, 3])):
@@ -291,7 +362,9 @@ def main():
     print('fuzz_decks: %d inputs (seed %d, %s, %d jobs) in %.1f s: %s' % (
         args.count, seed, os.path.basename(dynx), args.jobs, dt,
         ', '.join('%s %d' % kv for kv in sorted(outcomes.items()))))
-    print('fuzz_decks: %d of the inputs were restart decks (-R)' % sum(1 for c in cases if c[4]))
+    nd = sum(1 for c in cases if c[1].startswith('restart-dump'))
+    print('fuzz_decks: %d of the inputs were restart decks (-R), %d restart dumps (-r)' % (
+        sum(1 for c in cases if c[4]) - nd, nd))
     print('fuzz_decks: %d distinct exit-2 message classes' % len(classes))
     for idx, name, outcome, first in sorted(fails):
         print('  FAIL %06d %s: %s: %s (kept in %s/fail-%06d)' % (idx, name, outcome, first[:160],

@@ -4,11 +4,13 @@
 !>                    a second SIGTERM/SIGINT before that ends the process at once (_exit);
 !>   SIGUSR1:         write a restart dump at the end of the current cycle and go on
 !>                    (LS-DYNA's sense switch "sw3": write a restart file and continue).
+!>   SIGXFSZ:         ignored, so a file-size limit (ulimit -f) makes write(2) fail with
+!>                    EFBIG: an I/O error naming the file (exit 4), not a kill by signal.
 !> The handler only stores the signal number in a C int (the sig_atomic_t idiom); the
 !> solver polls it once per cycle. This is the only module-level mutable state of dynx
 !> besides the log settings.
 module dx_signals
-   use, intrinsic :: iso_c_binding, only: c_int, c_funptr, c_funloc
+   use, intrinsic :: iso_c_binding, only: c_int, c_funptr, c_funloc, c_intptr_t
    implicit none
    private
    public :: signals_install, signal_stop_requested, signal_dump_requested, signal_name, &
@@ -16,6 +18,7 @@ module dx_signals
              SIGINT_NUM, SIGTERM_NUM, SIGUSR1_NUM, signal_raise
 
    integer(c_int), parameter :: SIGINT_NUM = 2, SIGUSR1_NUM = 10, SIGTERM_NUM = 15
+   integer(c_int), parameter :: SIGXFSZ_NUM = 25
 
    integer(c_int), volatile, save :: stop_sig = 0    !< SIGTERM/SIGINT received (its number)
    integer(c_int), volatile, save :: dump_sig = 0    !< SIGUSR1 received, not yet served
@@ -51,12 +54,13 @@ contains
       end if
    end subroutine on_signal
 
-   !> Install the handler for SIGTERM, SIGINT and SIGUSR1.
+   !> Install the handler for SIGTERM, SIGINT and SIGUSR1; ignore SIGXFSZ.
    subroutine signals_install()
       type(c_funptr) :: old
       old = c_signal(SIGTERM_NUM, c_funloc(on_signal))
       old = c_signal(SIGINT_NUM, c_funloc(on_signal))
       old = c_signal(SIGUSR1_NUM, c_funloc(on_signal))
+      old = c_signal(SIGXFSZ_NUM, transfer(1_c_intptr_t, old))   ! SIG_IGN
    end subroutine signals_install
 
    !> The signal number of a pending stop request (0: none).

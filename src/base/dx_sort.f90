@@ -12,11 +12,6 @@ module dx_sort
       module procedure sort_index_int, sort_index_real
    end interface sort_index
 
-   abstract interface
-      logical function before_t(a, b)
-         integer, intent(in) :: a, b
-      end function before_t
-   end interface
 contains
    !> The four node numbers of a face in ascending order (insertion sort): a key under which
    !> the two elements sharing a face see the same face.
@@ -39,52 +34,60 @@ contains
    subroutine sort_index_int(idx, key)
       integer, intent(inout) :: idx(:)
       integer, intent(in) :: key(:)
-      call heap_sort(idx, before)
-   contains
-      logical function before(a, b)
-         integer, intent(in) :: a, b
-         before = key(a) < key(b) .or. (key(a) == key(b) .and. a < b)
-      end function before
+      call heap_sort(idx, ikey=key)
    end subroutine sort_index_int
 
    subroutine sort_index_real(idx, key)
       integer, intent(inout) :: idx(:)
       real(wp), intent(in) :: key(:)
-      call heap_sort(idx, before)
-   contains
-      logical function before(a, b)
-         integer, intent(in) :: a, b
-         before = key(a) < key(b) .or. (key(a) == key(b) .and. a < b)
-      end function before
+      call heap_sort(idx, rkey=key)
    end subroutine sort_index_real
 
-   !> Heap sort of idx under the strict order before(a, b).
-   subroutine heap_sort(idx, before)
+   !> The strict total order (key(a), a) < (key(b), b) on the integer or the real keys.
+   !> (A module procedure, not an internal one passed as an argument: no stack trampolines,
+   !> so the program needs no executable stack.)
+   pure logical function before(a, b, ikey, rkey)
+      integer, intent(in) :: a, b
+      integer, intent(in), optional :: ikey(:)
+      real(wp), intent(in), optional :: rkey(:)
+      if (present(ikey)) then
+         before = ikey(a) < ikey(b) .or. (ikey(a) == ikey(b) .and. a < b)
+      else
+         before = rkey(a) < rkey(b) .or. (rkey(a) == rkey(b) .and. a < b)
+      end if
+   end function before
+
+   !> Heap sort of idx under before(a, b) on ikey or rkey (exactly one present).
+   pure subroutine heap_sort(idx, ikey, rkey)
       integer, intent(inout) :: idx(:)
-      procedure(before_t) :: before
+      integer, intent(in), optional :: ikey(:)
+      real(wp), intent(in), optional :: rkey(:)
       integer :: n, i, t
       n = size(idx)
       do i = n/2, 1, -1
-         call sift(i, n)
+         call sift(idx, i, n, ikey, rkey)
       end do
       do i = n, 2, -1
          t = idx(1); idx(1) = idx(i); idx(i) = t
-         call sift(1, i - 1)
+         call sift(idx, 1, i - 1, ikey, rkey)
       end do
-   contains
-      subroutine sift(start, m)
-         integer, intent(in) :: start, m
-         integer :: r, c, tt
-         r = start
-         do while (2*r <= m)
-            c = 2*r
-            if (c < m) then
-               if (before(idx(c), idx(c + 1))) c = c + 1
-            end if
-            if (.not. before(idx(r), idx(c))) return
-            tt = idx(r); idx(r) = idx(c); idx(c) = tt
-            r = c
-         end do
-      end subroutine sift
    end subroutine heap_sort
+
+   pure subroutine sift(idx, start, m, ikey, rkey)
+      integer, intent(inout) :: idx(:)
+      integer, intent(in) :: start, m
+      integer, intent(in), optional :: ikey(:)
+      real(wp), intent(in), optional :: rkey(:)
+      integer :: r, c, tt
+      r = start
+      do while (2*r <= m)
+         c = 2*r
+         if (c < m) then
+            if (before(idx(c), idx(c + 1), ikey, rkey)) c = c + 1
+         end if
+         if (.not. before(idx(r), idx(c), ikey, rkey)) return
+         tt = idx(r); idx(r) = idx(c); idx(c) = tt
+         r = c
+      end do
+   end subroutine sift
 end module dx_sort

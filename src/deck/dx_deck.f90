@@ -21,7 +21,7 @@ module dx_deck
    use dx_read_emc, only: register_emc
    use dx_emc_build, only: build_emc
    use dx_model, only: model_t
-   use dx_model_input, only: model_input_t, input_init
+   use dx_model_input, only: model_input_t, input_init, input_finish
    use dx_model_build, only: build_model
    implicit none
    private
@@ -94,6 +94,7 @@ contains
             if (allocated(error)) return
          end associate
       end do
+      call input_finish(inp)
       deallocate(inp%files)
       allocate(inp%files(deck%nfiles))
       do k = 1, deck%nfiles

@@ -261,18 +261,20 @@ contains
       end if
    end subroutine read_ascii_db
 
-   !> node ids (or node set ids with _SET), 8 per card; zeros are skipped
+   !> node ids (or node set ids with _SET), 8 per card; zeros are skipped. The block's cards
+   !> are appended to the lists at once (card by card was quadratic in the card count).
    subroutine read_history(deck, blk, inp, error)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), ic, k, id
-      type(label_list_t) :: l
+      integer :: w(8), ic, k, id, n
+      type(label_list_t), allocatable :: l(:)
+      integer :: ids(8)
       w = std_widths(blk, 8)
+      allocate(l(blk%n))
       do ic = 1, blk%n
-         l = label_list_t()
-         allocate(l%ids(0))
+         n = 0
          do k = 1, 8
             call get_int(deck, blk, ic, k, w, 'ID'//str(k), 0, id, error)
             if (allocated(error)) return
@@ -280,14 +282,18 @@ contains
                call field_error(deck, blk, ic, k, w, 'ID'//str(k), 'must be >= 0', error)
                return
             end if
-            if (id > 0) l%ids = [l%ids, id]
+            if (id > 0) then
+               n = n + 1
+               ids(n) = id
+            end if
          end do
-         l%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
-         if (blk%base == 'DATABASE_HISTORY_NODE') then
-            inp%hist_nodes = [inp%hist_nodes, l]
-         else
-            inp%hist_node_sets = [inp%hist_node_sets, l]
-         end if
+         l(ic)%ids = ids(1:n)
+         l(ic)%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
       end do
+      if (blk%base == 'DATABASE_HISTORY_NODE') then
+         inp%hist_nodes = [inp%hist_nodes, l]
+      else
+         inp%hist_node_sets = [inp%hist_node_sets, l]
+      end if
    end subroutine read_history
 end module dx_read_controls

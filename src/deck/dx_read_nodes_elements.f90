@@ -11,7 +11,7 @@ module dx_read_nodes_elements
                             block_error, std_widths, data_start
    use dx_deck_registry, only: registry_t
    use dx_model, only: part_t, section_t, hourglass_t
-   use dx_model_input, only: model_input_t, add_node, add_element, origin
+   use dx_model_input, only: model_input_t, add_node, add_element, origin, input_add_part
    implicit none
    private
    public :: register_nodes_elements
@@ -210,8 +210,7 @@ contains
             call field_error(deck, blk, ic, 3, w, 'MID', 'a material id is required', error)
             return
          end if
-         inp%parts = [inp%parts, p]
-         inp%part_src = [inp%part_src, origin(blk%ifile, blk%cards(ic)%line, blk%name)]
+         call input_add_part(inp, p, origin(blk%ifile, blk%cards(ic)%line, blk%name))
          ic = ic + 1
       end do
    end subroutine read_part

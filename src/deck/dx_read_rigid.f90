@@ -16,7 +16,7 @@ module dx_read_rigid
    use dx_mat_factory, only: new_material
    use dx_mat_rigid, only: mat_rigid_t
    use dx_model, only: part_t
-   use dx_model_input, only: model_input_t, origin
+   use dx_model_input, only: model_input_t, origin, input_add_part
    use dx_rigid_types, only: inertia_in_t, nrb_in_t, extra_in_t, rmotion_in_t, rigid_origin_t
    use dx_load_body, only: body_load_in_t
    use dx_read_loads, only: read_motion_fields
@@ -257,8 +257,7 @@ contains
          if (allocated(error)) return
       end do
       q%src = rorigin(blk, 3)
-      inp%parts = [inp%parts, p]
-      inp%part_src = [inp%part_src, origin(blk%ifile, blk%cards(2)%line, blk%name)]
+      call input_add_part(inp, p, origin(blk%ifile, blk%cards(2)%line, blk%name))
       inp%rigid%inertias = [inp%rigid%inertias, q]
    end subroutine read_part_inertia
 

@@ -5,11 +5,15 @@
 !> Arrays are written in Fortran order: a Fortran (3,nn) array is an HDF5 dataset whose
 !> dimensions h5dump shows as (nn,3) (C order). h5_dims returns Fortran order.
 !> Module state: one flag remembering that h5open_f was called (the library is opened once
-!> per process and left open; HDF5 closes itself at exit).
+!> per process and left open). HDF5's own clean-up at exit is switched off (H5dont_atexit):
+!> dynx closes every file it writes, and after a failed write (a full disk) the library's
+!> exit handler flushed the broken file again and crashed (exit 139 instead of 4).
 module dx_h5
    use hdf5
+   use, intrinsic :: iso_c_binding, only: c_int
    use dx_kinds, only: wp, i8
    use dx_error, only: error_t, set_error, EXIT_IO
+   use dx_io_sys, only: sys_io_reason, sys_need_regular
    implicit none
    private
    public :: h5_file_t, h5_create, h5_open_read, h5_close, h5_flush, h5_create_group, &
@@ -42,6 +46,13 @@ module dx_h5
 
    logical, save :: lib_open = .false.
 
+   interface
+      function c_h5dont_atexit() bind(C, name='H5dont_atexit') result(r)
+         import :: c_int
+         integer(c_int) :: r
+      end function c_h5dont_atexit
+   end interface
+
 contains
 
    logical function h5_is_open(self)
@@ -57,13 +68,15 @@ contains
       character(:), allocatable :: fname
       fname = '?'
       if (allocated(f%name)) fname = f%name
-      call set_error(error, 'HDF5: '//op//' '''//obj//''' in '//fname//' failed', EXIT_IO)
+      call set_error(error, 'HDF5: '//op//' '''//obj//''' in '//fname//' failed'// &
+                     sys_io_reason(), EXIT_IO)
    end subroutine fail
 
    subroutine lib_init(error)
       type(error_t), allocatable, intent(out) :: error
       integer :: ierr
       if (lib_open) return
+      if (c_h5dont_atexit() < 0) continue   ! before the library starts (see the header)
       call h5open_f(ierr)
       if (ierr < 0) then
          call set_error(error, 'HDF5: h5open_f failed (cannot initialize the library)', EXIT_IO)
@@ -105,6 +118,8 @@ contains
          call set_error(error, 'cannot open '//path//': no such file', EXIT_IO)
          return
       end if
+      call sys_need_regular(path, path, error)   ! a FIFO would hang the open: exit 2
+      if (allocated(error)) return
       call h5fopen_f(path, H5F_ACC_RDONLY_F, f%id, ierr)
       if (ierr < 0) then
          f%id = -1
@@ -127,6 +142,8 @@ contains
          call set_error(error, 'cannot open '//path//': no such file', EXIT_IO)
          return
       end if
+      call sys_need_regular(path, path, error)   ! a FIFO would hang the open: exit 2
+      if (allocated(error)) return
       call h5fopen_f(path, H5F_ACC_RDWR_F, f%id, ierr)
       if (ierr < 0) then
          f%id = -1

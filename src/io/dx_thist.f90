@@ -3,13 +3,16 @@
 !> and coordinates of *DATABASE_HISTORY_NODE nodes).
 !> Format (docs/output-format.md): '#' header lines, the last one naming the columns, then
 !> whitespace-separated columns in es18.10e3 (10 significant digits, 3-digit exponent) so
-!> regression diffs are meaningful. Each line is written by one WRITE and flushed at once,
-!> so a killed run leaves only whole lines.
+!> regression diffs are meaningful. Each line goes to the file in one write(2) (dx_io_sys:
+!> a Fortran FLUSH does not report a failed write), so a killed run leaves only whole lines
+!> and a full disk is an error naming the file and the reason, the file cut back to its
+!> last whole line (no short line, no hole of NUL bytes).
 module dx_thist
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_IO
    use dx_model, only: model_t
-   use dx_io_sys, only: sys_truncate
+   use dx_io_sys, only: sys_truncate, sys_open_write, sys_write_all, sys_close_fd, &
+                        sys_ftruncate_fd
    implicit none
    private
    public :: thist_file_t, GLSTAT_COLUMNS, NODOUT_COLUMNS
@@ -21,9 +24,9 @@ module dx_thist
    character(*), parameter :: GLSTAT_FMT = '(es18.10e3, 1x, i10, 12(1x, es18.10e3))'
    character(*), parameter :: NODOUT_FMT = '(es18.10e3, 1x, i10, 12(1x, es18.10e3))'
 
-   !> One ASCII history file (newunit numbers are negative: a flag tells whether it is open).
+   !> One ASCII history file (unit: its file descriptor while opened).
    type :: thist_file_t
-      integer :: unit = 0
+      integer :: unit = -1
       logical :: opened = .false.
       character(:), allocatable :: path
       integer(8) :: bytes = 0          !< bytes written (a restart dump records it)
@@ -42,15 +45,9 @@ contains
       class(thist_file_t), intent(inout) :: self
       character(*), intent(in) :: path, what, title, columns
       type(error_t), allocatable, intent(out) :: error
-      integer :: ios
-      character(256) :: msg
       self%path = path
-      open(newunit=self%unit, file=path, status='replace', action='write', &
-           form='formatted', iostat=ios, iomsg=msg)
-      if (ios /= 0) then
-         call set_error(error, 'cannot open '//path//' for writing: '//trim(msg), EXIT_IO)
-         return
-      end if
+      call sys_open_write(path, .false., self%unit, error)
+      if (allocated(error)) return
       self%opened = .true.
       self%bytes = 0
       call put_line(self, '# dynx '//what, error)
@@ -68,10 +65,8 @@ contains
       character(*), intent(in) :: path, what, title, columns
       integer(8), intent(in) :: nbytes
       type(error_t), allocatable, intent(out) :: error
-      integer :: ios
       integer(8) :: sz
       logical :: there
-      character(256) :: msg
       inquire(file=path, exist=there, size=sz)
       if (.not. there) then
          call self%open(path, what, title, columns, error)
@@ -86,12 +81,8 @@ contains
       if (sz > nbytes) call sys_truncate(path, nbytes, error)
       if (allocated(error)) return
       self%path = path
-      open(newunit=self%unit, file=path, status='old', action='write', position='append', &
-           form='formatted', iostat=ios, iomsg=msg)
-      if (ios /= 0) then
-         call set_error(error, 'cannot open '//path//' for appending: '//trim(msg), EXIT_IO)
-         return
-      end if
+      call sys_open_write(path, .true., self%unit, error)
+      if (allocated(error)) return
       self%opened = .true.
       self%bytes = nbytes
    end subroutine thist_resume
@@ -104,17 +95,18 @@ contains
       s = trim(buf)
    end function itoa
 
-   !> Write one whole line and flush it.
+   !> Write one whole line; on failure cut the file back to its last whole line.
    subroutine put_line(self, line, error)
       class(thist_file_t), intent(inout) :: self
       character(*), intent(in) :: line
       type(error_t), allocatable, intent(out) :: error
-      integer :: ios
-      character(256) :: msg
-      write(self%unit, '(a)', iostat=ios, iomsg=msg) line
-      if (ios == 0) flush(self%unit, iostat=ios, iomsg=msg)
-      if (ios == 0) self%bytes = self%bytes + len(line) + 1
-      if (ios /= 0) call set_error(error, 'cannot write '//self%path//': '//trim(msg), EXIT_IO)
+      type(error_t), allocatable :: e
+      call sys_write_all(self%unit, line//new_line('a'), self%path, error)
+      if (allocated(error)) then
+         call sys_ftruncate_fd(self%unit, self%bytes, self%path, e)
+         return
+      end if
+      self%bytes = self%bytes + len(line) + 1
    end subroutine put_line
 
    !> One glstat line at model%time.
@@ -174,11 +166,9 @@ contains
    subroutine thist_close(self, error)
       class(thist_file_t), intent(inout) :: self
       type(error_t), allocatable, intent(out) :: error
-      integer :: ios
-      character(256) :: msg
       if (.not. self%opened) return
-      close(self%unit, iostat=ios, iomsg=msg)
+      call sys_close_fd(self%unit, .true., self%path, error)
       self%opened = .false.
-      if (ios /= 0) call set_error(error, 'cannot close '//self%path//': '//trim(msg), EXIT_IO)
+      self%unit = -1
    end subroutine thist_close
 end module dx_thist

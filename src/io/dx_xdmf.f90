@@ -2,12 +2,14 @@
 !> a temporal collection with one uniform Grid per complete state, hexahedral topology
 !> from /mesh/hex8, geometry from the state's current coordinates, nodal vectors and
 !> cell scalars/tensors from the state group. Rewritten after every state through a
-!> temporary file and rename(2), so a reader never sees a half-written file.
+!> temporary file and rename(2), so a reader never sees a half-written file. The text is
+!> built in memory and written with write(2) + fsync(2) (dx_io_sys): a full disk is an error
+!> naming the file and the reason, and the good file is never replaced by a short one.
 !> Dimensions: a Fortran (3,nn) dataset is (nn,3) in HDF5's C order, hence "nn 3".
 module dx_xdmf
    use dx_kinds, only: wp
-   use dx_error, only: error_t, set_error, EXIT_IO
-   use dx_io_sys, only: sys_rename
+   use dx_error, only: error_t
+   use dx_io_sys, only: sys_rename, sys_write_file
    implicit none
    private
    public :: xdmf_write, state_group
@@ -32,9 +34,8 @@ contains
       integer, intent(in) :: nn, ne
       real(wp), intent(in) :: times(:)
       type(error_t), allocatable, intent(out) :: error
-      integer :: u, ios, k
-      character(256) :: msg
-      character(:), allocatable :: tmp, g, snn, sne, mfile, sfile
+      integer :: k, nb
+      character(:), allocatable :: tmp, g, snn, sne, mfile, sfile, text
       character(32) :: buf
 
       tmp = path//'.tmp'
@@ -45,11 +46,8 @@ contains
       mfile = h5name
       sfile = h5name
       if (present(states_dir)) mfile = states_dir//'/mesh.h5'
-      open(newunit=u, file=tmp, status='replace', action='write', iostat=ios, iomsg=msg)
-      if (ios /= 0) then
-         call set_error(error, 'cannot open '//tmp//' for writing: '//trim(msg), EXIT_IO)
-         return
-      end if
+      allocate(character(4096 + 2400*size(times)) :: text)
+      nb = 0
       call put('<?xml version="1.0" ?>')
       call put('<!DOCTYPE Xdmf SYSTEM "Xdmf.dtd" []>')
       call put('<Xdmf xmlns:xi="http://www.w3.org/2001/XInclude" Version="3.0">')
@@ -85,24 +83,22 @@ contains
       call put('  </Grid>')
       call put(' </Domain>')
       call put('</Xdmf>')
-      if (allocated(error)) then
-         close(u, status='delete', iostat=ios)
-         return
-      end if
-      close(u, iostat=ios, iomsg=msg)
-      if (ios /= 0) then
-         call set_error(error, 'cannot close '//tmp//': '//trim(msg), EXIT_IO)
-         return
-      end if
-      call sys_rename(tmp, path, error)
+      call sys_write_file(tmp, text(1:nb), error)
+      if (.not. allocated(error)) call sys_rename(tmp, path, error)
 
    contains
 
       subroutine put(line)
          character(*), intent(in) :: line
-         if (allocated(error)) return
-         write(u, '(a)', iostat=ios, iomsg=msg) line
-         if (ios /= 0) call set_error(error, 'cannot write '//tmp//': '//trim(msg), EXIT_IO)
+         character(:), allocatable :: grown
+         if (nb + len(line) + 1 > len(text)) then     ! grow by doubling: linear in the text
+            allocate(character(2*len(text) + len(line) + 1) :: grown)
+            grown(1:nb) = text(1:nb)
+            call move_alloc(grown, text)
+         end if
+         text(nb + 1:nb + len(line)) = line
+         text(nb + len(line) + 1:nb + len(line) + 1) = new_line('a')
+         nb = nb + len(line) + 1
       end subroutine put
 
       subroutine item(dims, ntype, prec, dset, file)

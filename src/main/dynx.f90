@@ -17,11 +17,13 @@ program dynx
    use dx_par_agree, only: par_agree
    use dx_par_engine, only: par_engine_setup, par_engine_global, par_engine_report
    use dx_cli, only: cli_t, parse_cli, die
+   use dx_out_lock, only: out_lock
    implicit none
    type(cli_t) :: cli
    type(model_t) :: model
    type(output_t) :: out
    type(error_t), allocatable :: error
+   integer :: lock_fd
 
    call parse_cli(cli)
    associate (deck => cli%deck, outdir => cli%outdir, rfile => cli%rfile, &
@@ -50,6 +52,9 @@ program dynx
       call par_finalize()
       stop
    end if
+   if (par_rank() == 0) call out_lock(outdir, 'dynx', lock_fd, error)   ! held until exit
+   call par_agree(error)
+   if (allocated(error)) call die(error)
    if (len(rfile) > 0) call par_restart_precheck(rfile, deck, error, model%deck_files)   ! MPI
    if (allocated(error)) call die(error)
    call par_engine_setup(model, deck, outdir, partdir, error)   ! MPI run: the rank's part

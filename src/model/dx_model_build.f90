@@ -315,6 +315,14 @@ contains
                   '(volume '//rstr(vol(e))//' <= 0; check the node order N1..N8)')
                return
             end if
+            ! zero volume within round-off of the element's size (1e-10 of the
+            ! cube of its bounding box: a flattened element whose nodes are not quite coplanar)
+            if (vol(e) <= 1.0e-10_wp*maxval(maxval(model%x0(:, conn(:, e)), dim=2) - &
+                                                 minval(model%x0(:, conn(:, e)), dim=2))**3) then
+               call set_error(error, w//'element '//str(lab)//' has zero volume at t = 0 '// &
+                  '(volume '//rstr(vol(e))//'; flat or collapsed: check its nodes N1..N8)')
+               return
+            end if
          end associate
       end do
       ! blocks: parts in deck order, elements of a part in deck order, nv_chunk at most
@@ -760,7 +768,7 @@ contains
       type(maps_t), intent(in) :: mp
       character(*), intent(in) :: deck0
       type(error_t), allocatable, intent(out) :: error
-      integer :: i, k, j
+      integer :: i, k, j, nh
       integer, allocatable :: h(:), nodes(:)
       logical, allocatable :: seen(:)
       model%ctrl = inp%ctrl
@@ -781,15 +789,15 @@ contains
       model%db%glstat_dt = inp%glstat_dt
       model%db%nodout_dt = inp%nodout_dt
       model%rst = inp%rst
-      allocate(h(0), seen(model%nn))
+      allocate(h(model%nn), seen(model%nn))    ! each node once: at most nn (linear set-up)
       seen = .false.
+      nh = 0
       do i = 1, size(inp%hist_nodes)
          associate (l => inp%hist_nodes(i))
             do k = 1, size(l%ids)
                j = node_index(inp, mp, l%ids(k), l%src, 'ID'//str(k), error)
                if (allocated(error)) return
-               if (.not. seen(j)) h = [h, j]
-               seen(j) = .true.
+               if (.not. seen(j)) call add_hist(j)
             end do
          end associate
       end do
@@ -800,12 +808,12 @@ contains
                               error)
                if (allocated(error)) return
                do j = 1, size(nodes)
-                  if (.not. seen(nodes(j))) h = [h, nodes(j)]
-                  seen(nodes(j)) = .true.
+                  if (.not. seen(nodes(j))) call add_hist(nodes(j))
                end do
             end do
          end associate
       end do
+      h = h(1:nh)
       call move_alloc(h, model%db%hist_nodes)
       if (.not. inp%has_termination) then
          call set_error(error, deck0//': no *CONTROL_TERMINATION: the run would not end '// &
@@ -816,5 +824,12 @@ contains
          call set_error(error, at(inp, inp%term_src)//'ENDTIM <= 0 and ENDCYC <= 0: the run '// &
                         'would not end')
       end if
+   contains
+      subroutine add_hist(node)
+         integer, intent(in) :: node
+         nh = nh + 1
+         h(nh) = node
+         seen(node) = .true.
+      end subroutine add_hist
    end subroutine build_controls
 end module dx_model_build

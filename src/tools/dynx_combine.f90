@@ -11,10 +11,11 @@ program dynx_combine
    use dx_plot_part, only: plot_combine, plot_part_name
    use dx_plot_hdf5, only: plot_merge_states
    use dx_plot_states, only: state_file
+   use dx_out_lock, only: out_lock
    implicit none
    character(:), allocatable :: dir, arg
    type(error_t), allocatable :: error
-   integer :: n, l, i, nst
+   integer :: n, l, i, nst, lock_fd
    logical :: there
 
    dir = ''
@@ -40,6 +41,12 @@ program dynx_combine
       write(error_unit, '(a)') 'dynx-combine: error: no output directory given'
       write(error_unit, '(a)') 'dynx-combine: try dynx-combine --help'
       call exit_process(EXIT_INPUT)
+   end if
+   inquire(file=dir, exist=there)
+   if (there) call out_lock(dir, 'dynx-combine', lock_fd, error)   ! not while a run writes
+   if (allocated(error)) then
+      write(error_unit, '(a)') 'dynx-combine: error: '//error%message
+      call exit_process(error%code)
    end if
    inquire(file=plot_part_name(dir, 0), exist=there)
    if (.not. there) inquire(file=dir//'/'//state_file(0), exist=there)
@@ -85,7 +92,8 @@ contains
          'A serial run killed before its end leaves OUTDIR/d3plot.states/ (one file per', &
          'state): the tool merges those into OUTDIR/d3plot.h5 + d3plot.xdmf and removes them.', &
          '', &
-         'exit codes: 0 done, 2 usage error, 4 I/O error (missing, unreadable or foreign', &
+         'exit codes: 0 done, 2 usage error or OUTDIR busy (a dynx run still writes it;', &
+         '            the holder is named), 4 I/O error (missing, unreadable or foreign', &
          '            part file; the file is named)'
    end subroutine usage
 end program dynx_combine

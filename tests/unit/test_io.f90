@@ -10,7 +10,9 @@ program test_io
    use dx_h5, only: h5_file_t, h5_open_read, h5_close, h5_read, h5_read_attr, h5_dims
    use dx_compare, only: tol_table_t, compare_report_t, within_tol, compare_tables, &
                          compare_files, read_table, read_tolerances
-   use dx_io_sys, only: sys_mkdir_p
+   use dx_io_sys, only: sys_mkdir_p, sys_file_kind, sys_write_file, sys_strerror, &
+                        sys_flock_try, sys_read_small
+   use dx_sort, only: sort_index
    use dx_assert, only: check, check_close, assert_summary
    implicit none
    character(*), parameter :: TMP = 'build/test_io.tmp'
@@ -22,6 +24,8 @@ program test_io
    call test_lookup()
    call test_tables()
    call test_plot_roundtrip()
+   call test_sys()
+   call test_sort()
    call assert_summary()
 
 contains
@@ -340,4 +344,43 @@ contains
       call compare_files(TMP//'/a/glstat', TMP//'/nonexistent', tol, rep)
       call check(.not. rep%passed(), 'missing test file fails')
    end subroutine test_plot_roundtrip
+   !> The write(2) helpers, statx file kinds, strerror, flock (issue 15).
+   subroutine test_sys()
+      type(error_t), allocatable :: e
+      integer :: fd1, fd2
+      logical :: got1, got2
+      write(*, '(a)') 'system helpers'
+      call sys_write_file(TMP//'/w.txt', 'abc'//new_line('a'), e)
+      call check(.not. allocated(e), 'sys_write_file')
+      call check(sys_read_small(TMP//'/w.txt') == 'abc'//new_line('a'), 'read back')
+      call check(sys_file_kind(TMP//'/w.txt') == 'regular', 'kind regular')
+      call check(sys_file_kind(TMP) == 'directory', 'kind directory')
+      call check(sys_file_kind('/dev/zero') == 'device', 'kind device')
+      call check(sys_file_kind(TMP//'/none') == 'missing', 'kind missing')
+      call check(sys_strerror(28) == 'No space left on device', 'strerror ENOSPC')
+      call sys_write_file(TMP//'/no/such/dir/x', 'x', e)
+      call check(allocated(e), 'write into a missing folder fails')
+      if (allocated(e)) call check(index(e%message, 'No such file or directory') > 0, &
+                                   'the message has the OS reason')
+      call sys_flock_try(TMP//'/lock', fd1, got1, e)
+      call check(got1 .and. .not. allocated(e), 'first flock taken')
+      call sys_flock_try(TMP//'/lock', fd2, got2, e)   ! a second open file: refused
+      call check(.not. got2 .and. .not. allocated(e) .and. fd2 < 0, 'second flock refused')
+   end subroutine test_sys
+
+   !> sort_index: ascending keys, ties by index (the order every rank agrees on).
+   subroutine test_sort()
+      integer :: idx(6), ikey(6), k
+      real(wp) :: rkey(6)
+      write(*, '(a)') 'sort_index'
+      ikey = [3, 1, 3, 2, 1, 0]
+      idx = [(k, k = 6, 1, -1)]
+      call sort_index(idx, ikey)
+      call check(all(idx == [6, 2, 5, 4, 1, 3]), 'integer keys, ties by index')
+      rkey = [0.5_wp, -1.0_wp, 0.5_wp, 2.0_wp, -1.0_wp, 0.0_wp]
+      idx = [(k, k = 1, 6)]
+      call sort_index(idx, rkey)
+      call check(all(idx == [2, 5, 6, 1, 3, 4]), 'real keys, ties by index')
+
+   end subroutine test_sort
 end program test_io
