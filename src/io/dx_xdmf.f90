@@ -1,6 +1,7 @@
 !> XDMF 3 description of the HDF5 plot file (d3plot.h5) so ParaView/VisIt can read it:
-!> a temporal collection with one uniform Grid per complete state, hexahedral topology
-!> from /mesh/hex8, geometry from the state's current coordinates, nodal vectors and
+!> a temporal collection with one uniform Grid per complete state, the cells' topology
+!> (dx_plot_cells: one family's cell type or Mixed), geometry from the state's current
+!> coordinates, nodal vectors and
 !> cell scalars/tensors from the state group. Rewritten after every state through a
 !> temporary file and rename(2), so a reader never sees a half-written file.
 !> Dimensions: a Fortran (3,nn) dataset is (nn,3) in HDF5's C order, hence "nn 3".
@@ -8,6 +9,7 @@ module dx_xdmf
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_IO
    use dx_io_sys, only: sys_rename
+   use dx_plot_cells, only: cell_topo_t
    implicit none
    private
    public :: xdmf_write, state_group
@@ -26,15 +28,16 @@ contains
    !> Write the XDMF file path listing states 1..size(times) of h5name (relative name).
    !> With states_dir (a running job, dx_plot_states): the mesh is states_dir/mesh.h5 and
    !> state k is states_dir/NNNNNN.h5, each under the path it has in h5name.
-   subroutine xdmf_write(path, h5name, title, nn, ne, times, error, states_dir)
+   subroutine xdmf_write(path, h5name, title, nn, ne, topo, times, error, states_dir)
       character(*), intent(in) :: path, h5name, title
       character(*), intent(in), optional :: states_dir
       integer, intent(in) :: nn, ne
+      type(cell_topo_t), intent(in) :: topo     !< the cells (dx_plot_cells)
       real(wp), intent(in) :: times(:)
       type(error_t), allocatable, intent(out) :: error
       integer :: u, ios, k
       character(256) :: msg
-      character(:), allocatable :: tmp, g, snn, sne, mfile, sfile
+      character(:), allocatable :: tmp, g, snn, sne, mfile, sfile, cdims
       character(32) :: buf
 
       tmp = path//'.tmp'
@@ -42,6 +45,12 @@ contains
       snn = trim(buf)
       write(buf, '(i0)') ne
       sne = trim(buf)
+      write(buf, '(i0)') topo%w
+      cdims = sne//' '//trim(buf)
+      if (topo%nflat > 0) then
+         write(buf, '(i0)') topo%nflat
+         cdims = trim(buf)
+      end if
       mfile = h5name
       sfile = h5name
       if (present(states_dir)) mfile = states_dir//'/mesh.h5'
@@ -62,8 +71,8 @@ contains
          write(buf, '(es24.16e3)') times(k)
          call put('   <Grid Name="state'//g(9:)//'" GridType="Uniform">')
          call put('    <Time Value="'//trim(adjustl(buf))//'"/>')
-         call put('    <Topology TopologyType="Hexahedron" NumberOfElements="'//sne//'">')
-         call item(sne//' 8', 'Int', '4', '/mesh/hex8', mfile)
+         call put('    <Topology TopologyType="'//topo%xdmf//'" NumberOfElements="'//sne//'">')
+         call item(cdims, 'Int', '4', topo%dset, mfile)
          call put('    </Topology>')
          call put('    <Geometry GeometryType="XYZ">')
          call item(snn//' 3', 'Float', '8', g//'/coordinates', sfile)
