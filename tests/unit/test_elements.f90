@@ -4,15 +4,16 @@
 !> constant-strain patch test of ELFORM 10 (48 tetrahedra of a distorted 2x2x2 patch under
 !> a linear velocity field: stress = C:eps in every element and zero force on the interior
 !> node, to round-off), a rigid translation (no strain), the time step of the unit right
-!> tetrahedron (smallest altitude 1/sqrt(3) over c) and the dispatch through
-!> element_block_pass.
+!> tetrahedron (smallest altitude 1/sqrt(3) over c), the dispatch through element_block_pass,
+!> and the classification of *ELEMENT_SOLID cards with repeated nodes (degenerate solids,
+!> *CONTROL_SOLID ESORT).
 program test_elements
    use dx_kinds, only: wp, nv_chunk
    use dx_error, only: error_t
    use dx_model, only: elem_block_t, part_t
    use dx_mat_elastic, only: mat_elastic_t
    use dx_element_types, only: family_t, element_family, elem_volume, elem_moments, &
-                               elem_length, ETYPE_HEX8_1PT, ETYPE_TET4
+                               elem_length, solid_shape, ETYPE_HEX8_1PT, ETYPE_TET4
    use dx_element, only: element_block_pass, block_result_t
    use dx_assert, only: check, check_close, assert_summary
    implicit none
@@ -30,6 +31,7 @@ program test_elements
    call test_table(ETYPE_HEX8_1PT)
    call test_table(ETYPE_TET4)
    call test_degenerate_hex()
+   call test_solid_shape()
 
    ! ---- patch test: v = L x at the mid-step geometry gives the strain increment sym(L) dt
    lg = reshape([1.0_wp, 0.3_wp, -0.2_wp, 0.5_wp, -0.7_wp, 0.1_wp, 0.4_wp, 0.2_wp, 0.6_wp], &
@@ -146,6 +148,41 @@ contains
       call check_close(maxval(abs(m2h - m2t)), 0.0_wp, 1.0e-13_wp*maxval(abs(m2t)), 0.0_wp, &
                        'degenerate hex second moment = tet')
    end subroutine test_degenerate_hex
+
+   !> *ELEMENT_SOLID cards with repeated nodes: LS-DYNA's degenerate solids and ESORT.
+   subroutine test_solid_shape()
+      integer :: c(8), et, nen
+      logical :: ok
+      c = [1, 2, 3, 4, 5, 6, 7, 8]; et = ETYPE_HEX8_1PT
+      call solid_shape(0, c, et, nen, ok)
+      call check(ok .and. et == ETYPE_HEX8_1PT .and. nen == 8, 'card: hexahedron')
+      c = [1, 2, 3, 3, 5, 5, 5, 5]; et = ETYPE_HEX8_1PT
+      call solid_shape(0, c, et, nen, ok)
+      call check(ok .and. et == ETYPE_HEX8_1PT .and. nen == 8, &
+                 'card: degenerate tetrahedron stays a hexahedron (ESORT 0)')
+      c = [1, 2, 3, 3, 5, 5, 5, 5]; et = ETYPE_HEX8_1PT
+      call solid_shape(1, c, et, nen, ok)
+      call check(ok .and. et == ETYPE_TET4 .and. nen == 4 .and. all(c(1:4) == [1, 2, 3, 5]), &
+                 'card: ESORT 1 sorts the degenerate tetrahedron to ELFORM 10')
+      c = [1, 2, 3, 3, 5, 6, 7, 7]; et = ETYPE_HEX8_1PT
+      call solid_shape(2, c, et, nen, ok)
+      call check(ok .and. et == ETYPE_HEX8_1PT .and. nen == 8, &
+                 'card: pentahedron stays a hexahedron (no ELFORM 15)')
+      c = [1, 2, 3, 4, 5, 6, 7, 7]; et = ETYPE_HEX8_1PT
+      call solid_shape(1, c, et, nen, ok)
+      call check(.not. ok, 'card: other repeats are rejected')
+      c = [1, 2, 3, 4, 4, 4, 4, 4]; et = ETYPE_TET4
+      call solid_shape(0, c, et, nen, ok)
+      call check(ok .and. nen == 4 .and. all(c(1:4) == [1, 2, 3, 4]), &
+                 'card: ELFORM 10 tetrahedron N1 N2 N3 N4 N4 N4 N4 N4')
+      c = [1, 2, 3, 3, 4, 4, 4, 4]; et = ETYPE_TET4
+      call solid_shape(0, c, et, nen, ok)
+      call check(ok .and. nen == 4 .and. all(c(1:4) == [1, 2, 3, 4]), &
+                 'card: ELFORM 10 tetrahedron N1 N2 N3 N3 N4 N4 N4 N4')
+      c = [1, 2, 2, 2, 2, 2, 2, 2]; et = ETYPE_TET4
+      call solid_shape(0, c, et, nen, ok)
+      call check(.not. ok, 'card: ELFORM 10 with 2 distinct nodes is rejected')
+   end subroutine test_solid_shape
 
    pure function cross3(a, b) result(cc)
       real(wp), intent(in) :: a(3), b(3)
