@@ -25,7 +25,7 @@ REL_FLAGS := $(COMMON) -O3 -march=native -funroll-loops
 # the element and material kernels work on fixed chunks of nv_chunk elements: their
 # temporaries go on the stack (small, bounded); everything else keeps heap temporaries, so
 # model-sized arrays (1e5-1e6 nodes) never overflow the 8 MB default stack
-KERNEL_OBJ := $(addprefix build/release/,dx_hex8.o dx_hex8_geometry.o \
+KERNEL_OBJ := $(addprefix build/release/,dx_hex8.o dx_hex8_geometry.o dx_tet4.o \
               $(notdir $(patsubst %.f90,%.o,$(wildcard src/materials/*.f90))))
 $(KERNEL_OBJ): REL_FLAGS += -fstack-arrays
 DBG_FLAGS := $(COMMON) -O0 -g -std=f2008 -Wall -Wextra -Wimplicit-interface -fcheck=all \

@@ -6,6 +6,7 @@
                                      crossings still to remove; a new crossing fails make test)
   scripts/check_layers.py --counts   print the seam counts that docs/design.md reports
   scripts/check_layers.py --write-allowed   rewrite scripts/layers_allowed.txt from the tree
+  scripts/check_layers.py --update-doc      write the counts into docs/design.md
 
 A module's layer is the folder under src/ that holds its file (src/materials/eos counts as
 materials). `use` of a module in the same folder is always allowed. Intrinsic modules are
@@ -129,7 +130,7 @@ def count_lines(path):
         return sum(1 for _ in fh)
 
 
-def counts():
+def counts(out=print):
     """The seam counts docs/design.md reports, each with the rule that produces it."""
     srcs = sources()
     big = [(os.path.relpath(p, ROOT), count_lines(p)) for p in srcs if count_lines(p) > 800]
@@ -173,22 +174,45 @@ def counts():
         dup = m.group(1) if m else ('0' if 'no pairs' in r.stdout.lower() else '?')
     except (OSError, subprocess.SubprocessError):
         pass
-    print('modules over 800 lines: %d %s' % (len(big), ' '.join('%s(%d)' % b for b in big)))
-    print('main program lines: %d' % count_lines(main))
-    print('if-tests on the rank count or a parallel flag in src/solvers: %d' % par_if)
-    print('files outside src/elements naming hex/hex8: %d %s' % (len(hexfiles), ' '.join(hexfiles)))
-    print('module save variables (declarations before contains): %d in %d modules %s' % (
+    out('modules over 800 lines: %d %s' % (len(big), ' '.join('%s(%d)' % b for b in big)))
+    out('main program lines: %d' % count_lines(main))
+    out('if-tests on the rank count or a parallel flag in src/solvers: %d' % par_if)
+    out('files outside src/elements naming hex/hex8: %d %s' % (len(hexfiles), ' '.join(hexfiles)))
+    out('module save variables (declarations before contains): %d in %d modules %s' % (
         sum(saves.values()), len(saves), ' '.join('%s(%d)' % kv for kv in sorted(saves.items()))))
-    print('folder pairs that import each other: %d %s' % (
+    out('folder pairs that import each other: %d %s' % (
         len(folder_cycles()), ' '.join('%s<->%s' % c for c in folder_cycles())))
-    print('use statements crossing the layering: %d' % len({key(c) for c in crossings()}))
-    print('duplicates pairs in src (duplicates --repo src): %s' % dup)
+    out('use statements crossing the layering: %d' % len({key(c) for c in crossings()}))
+    out('duplicates pairs in src (duplicates --repo src): %s' % dup)
+
+
+BEGIN, END = '<!-- counts: scripts/check_layers.py --update-doc -->', '<!-- /counts -->'
+
+
+def update_doc(path):
+    """Rewrite the counts block of docs/design.md (between BEGIN and END) from the tree."""
+    lines = []
+    counts(lambda l: lines.append('- ' + l))
+    with open(path) as fh:
+        text = fh.read()
+    if BEGIN not in text or END not in text:
+        print('check_layers: %s has no counts block (%s ... %s)' % (path, BEGIN, END))
+        return 1
+    head, rest = text.split(BEGIN, 1)
+    _, tail = rest.split(END, 1)
+    with open(path + '.tmp', 'w') as fh:
+        fh.write(head + BEGIN + '\n' + '\n'.join(lines) + '\n' + END + tail)
+    os.replace(path + '.tmp', path)
+    print('check_layers: counts written to %s' % path)
+    return 0
 
 
 def main():
     if '--counts' in sys.argv:
         counts()
         return 0
+    if '--update-doc' in sys.argv:
+        return update_doc(os.path.join(ROOT, 'docs', 'design.md'))
     bad = crossings()
     keys = sorted({key(c) for c in bad})
     if '--write-allowed' in sys.argv:

@@ -1,7 +1,7 @@
 !> Contact build: resolves the *CONTACT_... records (dx_contact_input) against the built model
 !> into contact_set_t (dx_contact_types): slave and master surfaces from segment sets, parts,
 !> part sets, node sets or all parts; exterior faces of solid parts (faces used by exactly one
-!> element of the surface's parts, outward by the hex node order); segment-set segments
+!> element of the surface's parts, outward by the family's face node order); segment-set segments
 !> oriented outward by the element face they match; *DEFINE_BOX filters; the penalty stiffness
 !> of each segment k = SLSFAC*SF*K*A^2/V (LS-DYNA Theory Manual, "Standard penalty
 !> formulation"; Hallquist, Goudreau & Benson 1985, CMAME 51:107), K the bulk modulus and V the
@@ -14,7 +14,7 @@ module dx_contact_build
    use dx_vec3, only: cross
    use dx_error, only: error_t, set_error
    use dx_strings, only: str
-   use dx_model, only: model_t
+   use dx_model, only: model_t, family_t, element_family, MAX_NEN, MAX_FACES
    use dx_model_input, only: model_input_t
    use dx_label_map, only: label_map_t
    use dx_contact_input, only: contact_in_t, CT_NODES_TO_SURFACE, CT_SURFACE_TO_SURFACE, &
@@ -22,12 +22,8 @@ module dx_contact_build
    use dx_contact_types, only: contact_set_t, contact_iface_t, contact_pass_t
    implicit none
    private
-   public :: build_contact, hex_faces
-
-   !> the six faces of a hex8 in LS-DYNA node order, each numbered so that the right-hand
-   !> rule gives the outward normal of a positive-volume element
-   integer, parameter :: hex_faces(4, 6) = reshape([1, 4, 3, 2,  5, 6, 7, 8,  1, 2, 6, 5, &
-                                                    2, 3, 7, 6,  3, 4, 8, 7,  4, 1, 5, 8], [4, 6])
+   public :: build_contact, face_key
+   ! element faces (outward by the right-hand rule) come from the family table (dx_model)
 
    !> a surface: segments with their owning elements
    type :: surface_t
@@ -180,12 +176,13 @@ contains
       p%seg = s%seg(:, 1:s%nseg)
       p%nsn = s%nsn(1:s%nseg)
       p%exclude_owner = single
-      allocate(p%kseg(s%nseg), p%depth(s%nseg), p%area(s%nseg), p%owner(8, s%nseg))
+      allocate(p%kseg(s%nseg), p%depth(s%nseg), p%area(s%nseg), p%owner(MAX_NEN, s%nseg))
+      p%owner = 0
       do i = 1, s%nseg
          e = s%elem(i)
          b = model%elem_block(e)
          q = model%elem_pos(e)
-         p%owner(:, i) = model%blocks(b)%conn(:, q)
+         p%owner(1:size(model%blocks(b)%conn, 1), i) = model%blocks(b)%conn(:, q)
          v = model%blocks(b)%vol0(q)
          kb = model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%bulk
          a = seg_area(model%x0, s%seg(:, i), s%nsn(i))
@@ -278,18 +275,20 @@ contains
       type(surface_t), intent(out) :: s
       integer, allocatable :: key(:, :), fel(:), ffc(:), idx(:)
       integer :: e, nf, k, i, j, b, q, nd(4)
-      nf = 6*count(inpart(model%elem_part))
+      type(family_t) :: fam
+      nf = MAX_FACES*count(inpart(model%elem_part))
       allocate(key(4, nf), fel(nf), ffc(nf))
       nf = 0
       do e = 1, model%ne
          if (.not. inpart(model%elem_part(e))) cycle
          b = model%elem_block(e)
          q = model%elem_pos(e)
-         do k = 1, 6
-            nd = model%blocks(b)%conn(hex_faces(:, k), q)
+         fam = element_family(model%blocks(b)%etype)
+         do k = 1, fam%nfaces
+            nd = model%blocks(b)%conn(fam%faces(:, k), q)
             if (count_unique(nd) < 3) cycle
             nf = nf + 1
-            key(:, nf) = sort4(nd)
+            key(:, nf) = face_key(nd)
             fel(nf) = e
             ffc(nf) = k
          end do
@@ -310,7 +309,8 @@ contains
             b = model%elem_block(e)
             q = model%elem_pos(e)
             s%nseg = s%nseg + 1
-            call face_segment(model%blocks(b)%conn(hex_faces(:, ffc(idx(i))), q), &
+            fam = element_family(model%blocks(b)%etype)
+            call face_segment(model%blocks(b)%conn(fam%faces(:, ffc(idx(i))), q), &
                               s%seg(:, s%nseg), s%nsn(s%nseg))
             s%elem(s%nseg) = e
          end if
@@ -334,6 +334,24 @@ contains
       end do
       if (nsn == 3) sg(4) = sg(3)
    end subroutine face_segment
+
+   !> The key of a face or segment: its nodes sorted; a triangle (three distinct nodes,
+   !> whichever repeats) as its sorted nodes with the largest repeated, so a segment
+   !> n1 n2 n3 n3 and an element face of the same three nodes match. A quadrilateral's key
+   !> is sort4 of its nodes.
+   pure function face_key(nd) result(key)
+      integer, intent(in) :: nd(4)
+      integer :: key(4)
+      key = sort4(nd)
+      if (count_unique(nd) == 3) then
+         if (key(1) == key(2)) then
+            key(1:3) = key(2:4)
+         else if (key(2) == key(3)) then
+            key(2:3) = key(3:4)
+         end if
+         key(4) = key(3)
+      end if
+   end function face_key
 
    pure integer function count_unique(nd) result(n)
       integer, intent(in) :: nd(4)
@@ -403,6 +421,7 @@ contains
       type(surface_t), intent(out) :: s
       type(error_t), allocatable, intent(out) :: error
       integer :: k, j, i, e, b, q, f, ns, sg(4), nsn, nd(4), key(4)
+      type(family_t) :: fam
       integer, allocatable :: eptr(:), elist(:)
       character(:), allocatable :: at_set
       k = 0
@@ -435,15 +454,16 @@ contains
                ') repeats a node (used by *'//c%key//' at line '//str(c%line)//')')
             return
          end if
-         key = sort4(nd)
+         key = face_key(nd)
          s%elem(i) = 0
          do j = eptr(nd(1)), eptr(nd(1) + 1) - 1
             e = elist(j)
             b = model%elem_block(e)
             q = model%elem_pos(e)
-            do f = 1, 6
-               call face_segment(model%blocks(b)%conn(hex_faces(:, f), q), sg, nsn)
-               if (all(sort4(sg) == key)) then
+            fam = element_family(model%blocks(b)%etype)
+            do f = 1, fam%nfaces
+               call face_segment(model%blocks(b)%conn(fam%faces(:, f), q), sg, nsn)
+               if (all(face_key(sg) == key)) then
                   s%elem(i) = e
                   s%seg(:, i) = sg
                   s%nsn(i) = nsn
@@ -479,7 +499,7 @@ contains
       do e = 1, model%ne
          b = model%elem_block(e)
          q = model%elem_pos(e)
-         do k = 1, 8
+         do k = 1, size(model%blocks(b)%conn, 1)
             nd = model%blocks(b)%conn(k, q)
             if (any(model%blocks(b)%conn(1:k-1, q) == nd)) cycle
             eptr(nd + 1) = eptr(nd + 1) + 1
@@ -494,7 +514,7 @@ contains
       do e = 1, model%ne
          b = model%elem_block(e)
          q = model%elem_pos(e)
-         do k = 1, 8
+         do k = 1, size(model%blocks(b)%conn, 1)
             nd = model%blocks(b)%conn(k, q)
             if (any(model%blocks(b)%conn(1:k-1, q) == nd)) cycle
             elist(fill(nd)) = e

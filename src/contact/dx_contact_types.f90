@@ -30,7 +30,7 @@ module dx_contact_types
       real(wp), allocatable :: kseg(:)         !< (nseg) penalty stiffness f*K*A^2/V
       real(wp), allocatable :: depth(:)        !< (nseg) largest penetration taken as contact
       real(wp), allocatable :: area(:)         !< (nseg) initial area (VC friction limit)
-      integer, allocatable :: owner(:, :)      !< (8, nseg) nodes of the owning element
+      integer, allocatable :: owner(:, :)      !< (MAX_NEN, nseg) owning element nodes (0: none)
       logical :: exclude_owner = .false.       !< single surface: skip the node's own elements
       ! --- the slave nodes' own surface: a node only contacts segments facing it
       !     (n_node . n_seg < 0); none for node-set slaves

@@ -1,5 +1,6 @@
 !> Readers for the run controls and output requests: *CONTROL_TERMINATION, *CONTROL_TIMESTEP,
-!> *CONTROL_HOURGLASS, *CONTROL_BULK_VISCOSITY, *DATABASE_BINARY_D3PLOT, *DATABASE_GLSTAT,
+!> *CONTROL_HOURGLASS, *CONTROL_BULK_VISCOSITY, *CONTROL_SOLID (ESORT),
+!> *DATABASE_BINARY_D3PLOT, *DATABASE_GLSTAT,
 !> *DATABASE_NODOUT, *DATABASE_HISTORY_NODE, *DATABASE_HISTORY_NODE_SET.
 !> Layouts and defaults: LS-DYNA Keyword User's Manual, Vol. I (*CONTROL, *DATABASE).
 !> LS-DYNA reads a blank field as 0 and then applies the default, so a 0 in a field whose
@@ -26,6 +27,7 @@ contains
       call reg%add('CONTROL_TIMESTEP', read_timestep)
       call reg%add('CONTROL_HOURGLASS', read_control_hourglass)
       call reg%add('CONTROL_BULK_VISCOSITY', read_bulk_viscosity)
+      call reg%add('CONTROL_SOLID', read_control_solid)
       call reg%add('DATABASE_BINARY_D3PLOT', read_d3plot)
       call reg%add('DATABASE_GLSTAT', read_ascii_db)
       call reg%add('DATABASE_NODOUT', read_ascii_db)
@@ -166,6 +168,27 @@ contains
                           rstr(inp%ctrl%qh), error)
       end if
    end subroutine read_control_hourglass
+
+   !> ESORT FMATRX NIPTETS SWLOCL PSFAIL T10JTOL ICOH TET13K: ESORT (0: degenerate solids keep
+   !> their section's formulation; 1, 2: degenerate tetrahedra become ELFORM 10;
+   !> dx_element_types solid_shape); the other
+   !> fields and cards (solid-element options dynx has no use for) are read past.
+   subroutine read_control_solid(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: w(8)
+      w = std_widths(blk, 8)
+      call need_card(deck, blk, 'ESORT', error)
+      if (allocated(error)) return
+      call get_int(deck, blk, 1, 1, w, 'ESORT', 0, inp%ctrl%esort, error)
+      if (allocated(error)) return
+      if (inp%ctrl%esort < 0 .or. inp%ctrl%esort > 2) then
+         call field_error(deck, blk, 1, 1, w, 'ESORT', 'value '//str(inp%ctrl%esort)// &
+                          ' is not supported (supported: 0, 1, 2)', error)
+      end if
+   end subroutine read_control_solid
 
    !> Q1 Q2 TYPE BTYPE
    subroutine read_bulk_viscosity(deck, blk, inp, error)

@@ -244,10 +244,10 @@ contains
          call get_int(deck, blk, ic, 2, w, 'ELFORM', 1, s%elform, error)
          if (allocated(error)) return
          if (s%elform == 0) s%elform = 1
-         if (s%elform /= 1 .and. s%elform /= 2) then
+         if (s%elform /= 1 .and. s%elform /= 2 .and. s%elform /= 10) then
             call field_error(deck, blk, ic, 2, w, 'ELFORM', 'solid formulation '// &
                str(s%elform)//' is not supported (supported: 1 one-point, 2 selectively '// &
-               'reduced)', error)
+               'reduced, 10 one-point tetrahedron)', error)
             return
          end if
          call get_int(deck, blk, ic, 3, w, 'AET', 0, s%aet, error)

@@ -23,26 +23,14 @@ module dx_hex8
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_model, only: elem_block_t, part_t
    use dx_material, only: material_t
+   use dx_element_types, only: block_result_t, HEX_ERR_NEGVOL => ELEM_ERR_NEGVOL, &
+                               HEX_ERR_MATERIAL => ELEM_ERR_MATERIAL
    use dx_hex8_geometry, only: hex8_bvectors, hex8_bvectors_chunk, hex8_char_length, inv3, &
                                GAMMA_HG, XI_NODE
    implicit none
    private
-   public :: hex8_block, HEX_ERR_NEGVOL, HEX_ERR_MATERIAL, hex8_volume, hex8_mass_share
+   public :: hex8_block, hex8_volume, hex8_mass_share
 
-   integer, parameter :: HEX_ERR_NEGVOL = 1, HEX_ERR_MATERIAL = 2
-
-   !> results of one block pass
-   type, public :: block_result_t
-      real(wp) :: dt = huge_wp        !< smallest element time step (without TSSFAC)
-      integer :: imin = 0             !< its position in the block
-      integer :: ibad = 0             !< first element in error (position), 0 = none
-      integer :: errcode = 0
-      real(wp) :: deint = 0.0_wp      !< internal energy increment of the block
-      real(wp) :: dehg = 0.0_wp       !< hourglass energy increment of the block
-      !> internal power sigma:D V - q B.v at t(n) with v(n-1/2): the caller adds
-      !> (dt(n+1/2) - dt(n-1/2))/4 times it to report the energy at t(n) (see centred_work)
-      real(wp) :: pend = 0.0_wp
-   end type block_result_t
 
 contains
 

@@ -1,6 +1,9 @@
 !> Hex8 geometry on chunks of elements: the Flanagan-Belytschko uniform-strain gradient
 !> vectors B_iI = integral over V of dN_I/dx_i (closed form, exact for the trilinear hex),
-!> the volume V = sum_I x_I B_xI, the hourglass base vectors and the characteristic length.
+!> the volume V = sum_I x_I B_xI, the hourglass base vectors and the characteristic length;
+!> the exact volume (2x2x2 Gauss) and first/second moments (3x3x3 Gauss: x_i x_j det J has
+!> degree <= 4 in each natural coordinate; Hughes, The Finite Element Method, 1987, sec. 3.8)
+!> of one element, for the element-family table (dx_element_types).
 !> Ref: D.P. Flanagan, T. Belytschko, "A uniform strain hexahedron and quadrilateral with
 !> orthogonal hourglass control", IJNME 17 (1981) 679-706, eq. (79) and its node permutations.
 !> Node order: LS-DYNA's (1-4 bottom face counter-clockwise seen from outside... i.e. the
@@ -10,6 +13,7 @@ module dx_hex8_geometry
    implicit none
    private
    public :: hex8_bvectors, hex8_bvectors_chunk, hex8_char_length, inv3, GAMMA_HG, XI_NODE
+   public :: hex_volume, hex_moments
 
    !> natural coordinates of the 8 nodes
    real(wp), parameter :: XI_NODE(3, 8) = reshape([ &
@@ -134,4 +138,77 @@ contains
       ji(3,2) = -(j(1,1)*j(3,2) - j(1,2)*j(3,1))/det
       ji(3,3) = (j(1,1)*j(2,2) - j(1,2)*j(2,1))/det
    end subroutine inv3
+   !> Exact volume of the trilinear hexahedron with corner coordinates xe(3,8)
+   !> (LS-DYNA node order: 1-4 one face counter-clockwise seen from 5-8).
+   pure function hex_volume(xe) result(vol)
+      real(wp), intent(in) :: xe(3, 8)
+      real(wp) :: vol
+      real(wp), parameter :: xi(8) = [-1, 1, 1, -1, -1, 1, 1, -1]*1.0_wp
+      real(wp), parameter :: et(8) = [-1, -1, 1, 1, -1, -1, 1, 1]*1.0_wp
+      real(wp), parameter :: ze(8) = [-1, -1, -1, -1, 1, 1, 1, 1]*1.0_wp
+      real(wp), parameter :: g = 0.577350269189625764509148780502_wp
+      real(wp) :: jac(3, 3), dn(8, 3), a, b, c
+      integer :: ia, ib, ic, k
+      vol = 0.0_wp
+      do ia = -1, 1, 2
+         do ib = -1, 1, 2
+            do ic = -1, 1, 2
+               a = ia*g; b = ib*g; c = ic*g
+               dn(:, 1) = 0.125_wp*xi*(1 + et*b)*(1 + ze*c)
+               dn(:, 2) = 0.125_wp*et*(1 + xi*a)*(1 + ze*c)
+               dn(:, 3) = 0.125_wp*ze*(1 + xi*a)*(1 + et*b)
+               do k = 1, 3
+                  jac(:, k) = matmul(xe, dn(:, k))
+               end do
+               vol = vol + jac(1, 1)*(jac(2, 2)*jac(3, 3) - jac(3, 2)*jac(2, 3)) &
+                         - jac(1, 2)*(jac(2, 1)*jac(3, 3) - jac(3, 1)*jac(2, 3)) &
+                         + jac(1, 3)*(jac(2, 1)*jac(3, 2) - jac(3, 1)*jac(2, 2))
+            end do
+         end do
+      end do
+   end function hex_volume
+
+   !> Moments of the trilinear hexahedron with corners xe(3,8) (LS-DYNA node order); exact.
+   pure subroutine hex_moments(xe, xref, vol, m1, m2)
+      real(wp), intent(in) :: xe(3, 8), xref(3)
+      real(wp), intent(out) :: vol, m1(3), m2(3, 3)
+      real(wp), parameter :: xi(8) = [-1, 1, 1, -1, -1, 1, 1, -1]*1.0_wp
+      real(wp), parameter :: et(8) = [-1, -1, 1, 1, -1, -1, 1, 1]*1.0_wp
+      real(wp), parameter :: ze(8) = [-1, -1, -1, -1, 1, 1, 1, 1]*1.0_wp
+      real(wp), parameter :: gp(3) = [-0.774596669241483377035853079956_wp, 0.0_wp, &
+                                      0.774596669241483377035853079956_wp]
+      real(wp), parameter :: gw(3) = [5.0_wp/9.0_wp, 8.0_wp/9.0_wp, 5.0_wp/9.0_wp]
+      real(wp) :: jac(3, 3), dn(8, 3), sh(8), a, b, c, detj, wdet, r(3), xl(3, 8)
+      integer :: ia, ib, ic, k, j
+      do k = 1, 8
+         xl(:, k) = xe(:, k) - xref
+      end do
+      vol = 0.0_wp
+      m1 = 0.0_wp
+      m2 = 0.0_wp
+      do ia = 1, 3
+         do ib = 1, 3
+            do ic = 1, 3
+               a = gp(ia); b = gp(ib); c = gp(ic)
+               sh = 0.125_wp*(1 + xi*a)*(1 + et*b)*(1 + ze*c)
+               dn(:, 1) = 0.125_wp*xi*(1 + et*b)*(1 + ze*c)
+               dn(:, 2) = 0.125_wp*et*(1 + xi*a)*(1 + ze*c)
+               dn(:, 3) = 0.125_wp*ze*(1 + xi*a)*(1 + et*b)
+               do k = 1, 3
+                  jac(:, k) = matmul(xl, dn(:, k))
+               end do
+               detj = jac(1, 1)*(jac(2, 2)*jac(3, 3) - jac(3, 2)*jac(2, 3)) &
+                    - jac(1, 2)*(jac(2, 1)*jac(3, 3) - jac(3, 1)*jac(2, 3)) &
+                    + jac(1, 3)*(jac(2, 1)*jac(3, 2) - jac(3, 1)*jac(2, 2))
+               wdet = gw(ia)*gw(ib)*gw(ic)*detj
+               r = matmul(xl, sh)
+               vol = vol + wdet
+               m1 = m1 + wdet*r
+               do j = 1, 3
+                  m2(:, j) = m2(:, j) + wdet*r*r(j)
+               end do
+            end do
+         end do
+      end do
+   end subroutine hex_moments
 end module dx_hex8_geometry

@@ -1,6 +1,7 @@
 !> Plot states in HDF5 (d3plot.h5) plus its XDMF description (d3plot.xdmf), the dynx
 !> counterpart of LS-DYNA's *DATABASE_BINARY_D3PLOT. Layout (docs/output-format.md):
-!>   /mesh/coordinates (3,nn) f64, node_ids (nn), hex8 (8,ne) 0-based, element_ids (ne),
+!>   /mesh/coordinates (3,nn) f64, node_ids (nn), the cells (dx_plot_cells: one family's
+!>   (nen,ne) 0-based, or the XDMF Mixed list), element_ids (ne),
 !>   part_ids (ne); file attributes title, nstates
 !>   /states/NNNNNN/ (attribute time): coordinates, displacement, velocity (3,nn),
 !>   stress (6,ne) averaged over the integration points, von_mises, pressure = -tr(sig)/3,
@@ -26,6 +27,7 @@ module dx_plot_hdf5
    use dx_plot_states, only: STATES_DIR, state_file, states_write_mesh, states_write_state, &
                              states_have, states_clear, states_remove_all, file_remove
    use dx_io_sys, only: sys_fsync
+   use dx_plot_cells, only: cell_topo_t, model_cells, cells_topology, write_cells, read_cells
    implicit none
    private
    public :: plot_file_t, element_results, stress_invariants, element_average, &
@@ -38,6 +40,7 @@ module dx_plot_hdf5
       type(h5_file_t) :: h5
       integer :: nstates = 0
       integer :: nn = 0, ne = 0
+      type(cell_topo_t) :: topo      !< the cells as the XDMF describes them
       real(wp), allocatable :: times(:)
       character(:), allocatable :: xdmf_path, title, dir
       !> .true. while the run writes its states to d3plot.states/ (dx_plot_states) and
@@ -63,24 +66,14 @@ contains
       character(*), intent(in) :: dir
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: publish
-      integer, allocatable :: hex(:, :), ids(:), nlab(:), elab(:)
-      integer :: ib, i, e
+      integer, allocatable :: cells(:, :), ids(:), nlab(:), elab(:)
+      integer :: i, e
       character(:), allocatable :: title
       logical :: pub
 
-      allocate(hex(8, model%ne), ids(model%ne))
-      hex = 0
+      call model_cells(model, cells)
+      allocate(ids(model%ne))
       ids = 0
-      if (allocated(model%blocks)) then
-         do ib = 1, size(model%blocks)
-            associate (blk => model%blocks(ib))
-               do i = 1, blk%nel
-                  e = blk%elem(i)
-                  hex(:, e) = blk%conn(1:8, i) - 1
-               end do
-            end associate
-         end do
-      end if
       do e = 1, model%ne
          ids(e) = model%parts(model%elem_part(e))%label
       end do
@@ -93,22 +86,23 @@ contains
       if (allocated(model%title)) title = model%title
       pub = .true.
       if (present(publish)) pub = publish
-      call open_arrays(self, dir, title, model%x0, nlab, hex, elab, ids, pub, error)
+      call open_arrays(self, dir, title, model%x0, nlab, cells, elab, ids, pub, error)
    end subroutine plot_open
 
    !> plot_open on the mesh arrays (also used by plot_merge_states).
-   subroutine open_arrays(self, dir, title, x0, nlab, hex, elab, ids, publish, error)
+   subroutine open_arrays(self, dir, title, x0, nlab, cells, elab, ids, publish, error)
       class(plot_file_t), intent(inout) :: self
       character(*), intent(in) :: dir, title
       real(wp), intent(in) :: x0(:, :)
-      integer, intent(in) :: nlab(:), hex(:, :), elab(:), ids(:)
+      integer, intent(in) :: nlab(:), cells(:, :), elab(:), ids(:)
       logical, intent(in) :: publish
       type(error_t), allocatable, intent(out) :: error
       type(error_t), allocatable :: err2
       logical :: there
 
       self%nn = size(x0, 2)
-      self%ne = size(hex, 2)
+      self%ne = size(cells, 2)
+      self%topo = cells_topology(cells)
       self%nstates = 0
       if (allocated(self%times)) deallocate(self%times)
       allocate(self%times(16))
@@ -128,7 +122,7 @@ contains
          if (allocated(error)) exit work
          call h5_write(self%h5, '/mesh/node_ids', nlab, error)
          if (allocated(error)) exit work
-         call h5_write(self%h5, '/mesh/hex8', hex, error)
+         call write_cells(self%h5, cells, error)
          if (allocated(error)) exit work
          call h5_write(self%h5, '/mesh/element_ids', elab, error)
          if (allocated(error)) exit work
@@ -147,18 +141,18 @@ contains
          if (.not. publish) then
             ! plot_resume: the mesh file, unless the killed run's is there (never rewritten)
             inquire(file=dir//'/'//state_file(0), exist=there)
-            if (.not. there) call states_write_mesh(dir, x0, nlab, hex, elab, ids, &
+            if (.not. there) call states_write_mesh(dir, x0, nlab, cells, elab, ids, &
                                                     self%title, error)
             exit work
          end if
          ! an empty XDMF first: an older one must not list states of an older run; then
          ! the older run's files go, and the mesh file of this run is published
-         call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, &
+         call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, self%topo, &
                          self%times(1:0), error, states_dir=STATES_DIR)
          if (allocated(error)) exit work
          call file_remove(dir//'/'//H5NAME)
          call states_remove_all(dir)
-         call states_write_mesh(dir, x0, nlab, hex, elab, ids, self%title, error)
+         call states_write_mesh(dir, x0, nlab, cells, elab, ids, self%title, error)
          if (allocated(error)) exit work
          self%live = .true.
       end block work
@@ -178,11 +172,12 @@ contains
       type(plot_file_t) :: self
       type(h5_file_t) :: f
       type(error_t), allocatable :: err2
-      real(wp), allocatable :: x0(:), nlab(:), hex(:), elab(:), ids(:), x(:), d(:), v(:), &
+      real(wp), allocatable :: x0(:), nlab(:), elab(:), ids(:), x(:), d(:), v(:), &
                                stress(:), vm(:), pres(:), epsp(:), b(:)
       character(:), allocatable :: title, src, g
       real(wp) :: tk
       integer :: k, nn, ne
+      integer, allocatable :: cells(:, :)
       logical :: there
       nmerged = 0
       inquire(file=dir//'/'//H5NAME, exist=there)
@@ -196,6 +191,7 @@ contains
          if (.not. allocated(error)) call h5_read(f, '/states/times', x, error)
          if (.not. allocated(error)) call h5_read(f, '/mesh/node_ids', nlab, error)
          if (.not. allocated(error)) call h5_read(f, '/mesh/part_ids', ids, error)
+         if (.not. allocated(error)) call read_cells(f, size(ids), cells, error)
          if (.not. allocated(error)) call h5_read_attr(f, '/', 'title', title, error)
          if (allocated(error)) then
             call h5_close(f, err2)
@@ -209,7 +205,7 @@ contains
             return
          end if
          call xdmf_write(dir//'/'//XMFNAME, H5NAME, title, size(nlab), size(ids), &
-                         x(1:nmerged), error)
+                         cells_topology(cells), x(1:nmerged), error)
          if (allocated(error)) return
          call file_remove(dir//'/'//H5NAME//'.tmp')
          call states_remove_all(dir)
@@ -220,9 +216,9 @@ contains
       if (allocated(error)) return
       call h5_read(f, '/mesh/coordinates', x0, error)
       if (.not. allocated(error)) call h5_read(f, '/mesh/node_ids', nlab, error)
-      if (.not. allocated(error)) call h5_read(f, '/mesh/hex8', hex, error)
       if (.not. allocated(error)) call h5_read(f, '/mesh/element_ids', elab, error)
       if (.not. allocated(error)) call h5_read(f, '/mesh/part_ids', ids, error)
+      if (.not. allocated(error)) call read_cells(f, size(ids), cells, error)
       if (.not. allocated(error)) call h5_read_attr(f, '/', 'title', title, error)
       if (allocated(error)) then
          call h5_close(f, err2)
@@ -232,12 +228,12 @@ contains
       if (allocated(error)) return
       nn = size(nlab)
       ne = size(ids)
-      if (size(x0) /= 3*nn .or. size(hex) /= 8*ne .or. size(elab) /= ne) then
+      if (size(x0) /= 3*nn .or. size(elab) /= ne) then
          call set_error(error, src//': mesh datasets of inconsistent sizes', EXIT_IO)
          return
       end if
       call open_arrays(self, dir, title, reshape(x0, [3, nn]), nint(nlab), &
-                       reshape(nint(hex), [8, ne]), nint(elab), nint(ids), .false., error)
+                       cells, nint(elab), nint(ids), .false., error)
       if (allocated(error)) return
       do k = 1, huge(k) - 1
          src = dir//'/'//state_file(k)
@@ -303,7 +299,7 @@ contains
       type(h5_file_t) :: old
       real(wp), allocatable :: t(:), b(:), x(:, :), d(:, :), v(:, :), stress(:, :), vm(:), &
                                pres(:), epsp(:)
-      integer, allocatable :: failed(:)
+      integer, allocatable :: failed(:), cells(:, :)
       real(wp) :: tk
       integer :: ndisk, k, nn, ne
       logical :: there, from_states
@@ -335,7 +331,9 @@ contains
                   ' (another run''s file?)', EXIT_IO)
                exit work
             end if
-            call xdmf_write(dir//'/'//XMFNAME, H5NAME, self%title, nn, ne, t(1:nkeep), error)
+            call model_cells(model, cells)
+            call xdmf_write(dir//'/'//XMFNAME, H5NAME, self%title, nn, ne, &
+                            cells_topology(cells), t(1:nkeep), error)
             if (allocated(error)) exit work
          end if
          call self%open(model, dir, error, publish=.false.)
@@ -374,7 +372,8 @@ contains
             if (allocated(error)) exit work
          end if
          self%live = .true.
-         call xdmf_write(self%xdmf_path, H5NAME, self%title, nn, ne, self%times(1:nkeep), &
+         call xdmf_write(self%xdmf_path, H5NAME, self%title, nn, ne, self%topo, &
+                         self%times(1:nkeep), &
                          error, states_dir=STATES_DIR)
          if (allocated(error)) exit work
          call states_clear(dir, nkeep + 1)
@@ -564,7 +563,7 @@ contains
       if (present(xdmf)) then
          if (.not. xdmf) return
       end if
-      call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, &
+      call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, self%topo, &
                       self%times(1:k), error, states_dir=STATES_DIR)
    end subroutine write_arrays
 
@@ -586,7 +585,7 @@ contains
       if (allocated(error)) return
       call sys_rename(self%dir//'/'//H5NAME//'.tmp', self%dir//'/'//H5NAME, error)
       if (allocated(error)) return
-      call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, &
+      call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, self%topo, &
                       self%times(1:self%nstates), error)
       if (allocated(error)) return
       call states_remove_all(self%dir)

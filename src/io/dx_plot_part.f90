@@ -31,6 +31,7 @@ module dx_plot_part
    use dx_plot_states, only: file_remove, publish
    use dx_xdmf, only: xdmf_write, state_group
    use dx_plot_hdf5, only: stress_invariants
+   use dx_plot_cells, only: write_cells, read_cells, cells_topology, cell_topo_t
    implicit none
    private
    public :: plot_part_t, plot_part_name, plot_part_state_name, plot_part_count, plot_combine, &
@@ -118,11 +119,11 @@ contains
    !> dir by an earlier run are removed first; the file is written as NAME.tmp, closed,
    !> fsynced and renamed, and never written again.
    subroutine part_open(self, dir, rank, nprocs, stamp, title, nn, ne, nodes, x0, node_ids, &
-                        elems, hex, elem_ids, part_ids, error)
+                        elems, cells, elem_ids, part_ids, error)
       class(plot_part_t), intent(inout) :: self
       character(*), intent(in) :: dir, title
       integer, intent(in) :: rank, nprocs, stamp, nn, ne
-      integer, intent(in) :: nodes(:), node_ids(:), elems(:), hex(:, :), elem_ids(:), &
+      integer, intent(in) :: nodes(:), node_ids(:), elems(:), cells(:, :), elem_ids(:), &
                              part_ids(:)
       real(wp), intent(in) :: x0(:, :)
       type(error_t), allocatable, intent(out) :: error
@@ -169,7 +170,7 @@ contains
          if (allocated(error)) exit work
          call h5_write(f, '/mesh/elements', elems, error)
          if (allocated(error)) exit work
-         call h5_write(f, '/mesh/hex8', hex, error)
+         call write_cells(f, cells, error)
          if (allocated(error)) exit work
          call h5_write(f, '/mesh/element_ids', elem_ids, error)
          if (allocated(error)) exit work
@@ -303,7 +304,8 @@ contains
       real(wp), allocatable :: times(:), buf(:), x0(:, :), x(:, :), v(:, :), &
                                stress(:, :), vm(:), pres(:), epsp(:)
       integer, allocatable :: cnt_n(:), cnt_e(:), node_ids(:), &
-                              hex(:, :), elem_ids(:), part_ids(:), failed(:)
+                              cells(:, :), elem_ids(:), part_ids(:), failed(:), rc(:, :)
+      type(cell_topo_t) :: topo
       type :: idx_t
          integer, allocatable :: n(:), e(:)
       end type idx_t
@@ -320,7 +322,7 @@ contains
       if (allocated(error)) return
       deallocate(pf)
       allocate(pf(0:np - 1), idx(0:np - 1), cnt_n(nn), cnt_e(ne))
-      allocate(x0(3, nn), node_ids(nn), hex(8, ne), elem_ids(ne), part_ids(ne))
+      allocate(x0(3, nn), node_ids(nn), elem_ids(ne), part_ids(ne))
       cnt_n = 0
       cnt_e = 0
       nst = huge(nst)
@@ -365,9 +367,14 @@ contains
             call h5_read(pf(r), '/mesh/node_ids', buf, error)
             if (allocated(error)) exit work
             node_ids(idx(r)%n) = nint(buf)
-            call h5_read(pf(r), '/mesh/hex8', buf, error)
+            call read_cells(pf(r), size(idx(r)%e), rc, error)
             if (allocated(error)) exit work
-            hex(:, idx(r)%e) = reshape(nint(buf), [8, size(idx(r)%e)])
+            if (.not. allocated(cells)) allocate(cells(size(rc, 1), ne))
+            if (size(rc, 1) /= size(cells, 1)) then
+               call set_error(error, path//': cells of another element family', EXIT_IO)
+               exit work
+            end if
+            cells(:, idx(r)%e) = rc
             call h5_read(pf(r), '/mesh/element_ids', buf, error)
             if (allocated(error)) exit work
             elem_ids(idx(r)%e) = nint(buf)
@@ -421,7 +428,7 @@ contains
          if (allocated(error)) exit work
          call h5_write(out, '/mesh/node_ids', node_ids, error)
          if (allocated(error)) exit work
-         call h5_write(out, '/mesh/hex8', hex, error)
+         call write_cells(out, cells, error)
          if (allocated(error)) exit work
          call h5_write(out, '/mesh/element_ids', elem_ids, error)
          if (allocated(error)) exit work
@@ -439,7 +446,8 @@ contains
          ! out the file by its sequence of calls, so the same calls give the same bytes
          call h5_flush(out, error)
          if (allocated(error)) exit work
-         deallocate(hex, elem_ids, part_ids, node_ids)
+         topo = cells_topology(cells)
+         deallocate(cells, elem_ids, part_ids, node_ids)
          allocate(x(3, nn), v(3, nn), stress(6, ne), vm(ne), pres(ne), epsp(ne), failed(ne))
          do k = 1, nst
             g = state_group(k)
@@ -498,7 +506,7 @@ contains
          if (allocated(error)) exit work
          call sys_rename(dir//'/'//H5NAME//'.tmp', dir//'/'//H5NAME, error)
          if (allocated(error)) exit work
-         call xdmf_write(dir//'/'//XMFNAME, H5NAME, title, nn, ne, times, error)
+         call xdmf_write(dir//'/'//XMFNAME, H5NAME, title, nn, ne, topo, times, error)
          if (allocated(error)) exit work
          nstates_out = nst
       end block work

@@ -19,6 +19,7 @@ module dx_plot_states
    use dx_h5, only: h5_file_t, h5_create, h5_close, h5_create_group, h5_write, h5_write_attr
    use dx_io_sys, only: sys_rename, sys_fsync, sys_mkdir_p
    use dx_xdmf, only: state_group
+   use dx_plot_cells, only: write_cells
    implicit none
    private
    public :: STATES_DIR, state_file, states_write_mesh, states_write_state, states_have, &
@@ -63,10 +64,10 @@ contains
    end subroutine file_remove
 
    !> Write dir/d3plot.states/mesh.h5 (temp, close, fsync, rename).
-   subroutine states_write_mesh(dir, x0, nlab, hex, elab, ids, title, error)
+   subroutine states_write_mesh(dir, x0, nlab, cells, elab, ids, title, error)
       character(*), intent(in) :: dir, title
       real(wp), intent(in) :: x0(:, :)
-      integer, intent(in) :: nlab(:), hex(:, :), elab(:), ids(:)
+      integer, intent(in) :: nlab(:), cells(:, :), elab(:), ids(:)
       type(error_t), allocatable, intent(out) :: error
       type(h5_file_t) :: f
       type(error_t), allocatable :: err2
@@ -83,7 +84,7 @@ contains
          if (allocated(error)) exit work
          call h5_write(f, '/mesh/node_ids', nlab, error)
          if (allocated(error)) exit work
-         call h5_write(f, '/mesh/hex8', hex, error)
+         call write_cells(f, cells, error)
          if (allocated(error)) exit work
          call h5_write(f, '/mesh/element_ids', elab, error)
          if (allocated(error)) exit work

@@ -1,6 +1,7 @@
 !> XDMF 3 description of the HDF5 plot file (d3plot.h5) so ParaView/VisIt can read it:
-!> a temporal collection with one uniform Grid per complete state, hexahedral topology
-!> from /mesh/hex8, geometry from the state's current coordinates, nodal vectors and
+!> a temporal collection with one uniform Grid per complete state, the cells' topology
+!> (dx_plot_cells: one family's cell type or Mixed), geometry from the state's current
+!> coordinates, nodal vectors and
 !> cell scalars/tensors from the state group. Rewritten after every state through a
 !> temporary file and rename(2), so a reader never sees a half-written file. The text is
 !> built in memory and written with write(2) + fsync(2) (dx_io_sys): a full disk is an error
@@ -10,6 +11,7 @@ module dx_xdmf
    use dx_kinds, only: wp
    use dx_error, only: error_t
    use dx_io_sys, only: sys_rename, sys_write_file
+   use dx_plot_cells, only: cell_topo_t
    implicit none
    private
    public :: xdmf_write, state_group
@@ -28,14 +30,15 @@ contains
    !> Write the XDMF file path listing states 1..size(times) of h5name (relative name).
    !> With states_dir (a running job, dx_plot_states): the mesh is states_dir/mesh.h5 and
    !> state k is states_dir/NNNNNN.h5, each under the path it has in h5name.
-   subroutine xdmf_write(path, h5name, title, nn, ne, times, error, states_dir)
+   subroutine xdmf_write(path, h5name, title, nn, ne, topo, times, error, states_dir)
       character(*), intent(in) :: path, h5name, title
       character(*), intent(in), optional :: states_dir
       integer, intent(in) :: nn, ne
+      type(cell_topo_t), intent(in) :: topo     !< the cells (dx_plot_cells)
       real(wp), intent(in) :: times(:)
       type(error_t), allocatable, intent(out) :: error
       integer :: k, nb
-      character(:), allocatable :: tmp, g, snn, sne, mfile, sfile, text
+      character(:), allocatable :: tmp, g, snn, sne, mfile, sfile, text, cdims
       character(32) :: buf
 
       tmp = path//'.tmp'
@@ -43,6 +46,12 @@ contains
       snn = trim(buf)
       write(buf, '(i0)') ne
       sne = trim(buf)
+      write(buf, '(i0)') topo%w
+      cdims = sne//' '//trim(buf)
+      if (topo%nflat > 0) then
+         write(buf, '(i0)') topo%nflat
+         cdims = trim(buf)
+      end if
       mfile = h5name
       sfile = h5name
       if (present(states_dir)) mfile = states_dir//'/mesh.h5'
@@ -60,8 +69,8 @@ contains
          write(buf, '(es24.16e3)') times(k)
          call put('   <Grid Name="state'//g(9:)//'" GridType="Uniform">')
          call put('    <Time Value="'//trim(adjustl(buf))//'"/>')
-         call put('    <Topology TopologyType="Hexahedron" NumberOfElements="'//sne//'">')
-         call item(sne//' 8', 'Int', '4', '/mesh/hex8', mfile)
+         call put('    <Topology TopologyType="'//topo%xdmf//'" NumberOfElements="'//sne//'">')
+         call item(cdims, 'Int', '4', topo%dset, mfile)
          call put('    </Topology>')
          call put('    <Geometry GeometryType="XYZ">')
          call item(snn//' 3', 'Float', '8', g//'/coordinates', sfile)

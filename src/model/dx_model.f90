@@ -12,15 +12,18 @@ module dx_model
    use dx_contact_types, only: contact_set_t
    use dx_run_state, only: run_state_t, restart_ctrl_t
    use dx_emc_types, only: emc_system_t
+   use dx_element_types, only: family_t, element_family, elem_volume, elem_moments, elem_length, &
+                               etype_of_elform, solid_shape, MAX_NEN, MAX_FACE_NODES, &
+                               MAX_FACES, ETYPE_DEFAULT, ETYPES
    implicit none
    private
    public :: model_t, elem_block_t, part_t, section_t, hourglass_t, node_set_t, part_set_t, &
              segment_set_t, spc_t, prescribed_t, load_node_t, load_segment_t, rigidwall_t, &
-             control_t, database_t, energy_t, ETYPE_HEX8_1PT, ETYPE_HEX8_SRI
-
-   !> element formulations (ELFORM of *SECTION_SOLID)
-   integer, parameter :: ETYPE_HEX8_1PT = 1   !< one-point, uniform strain, hourglass control
-   integer, parameter :: ETYPE_HEX8_SRI = 2   !< 2x2x2 selectively reduced (mean dilatation)
+             control_t, database_t, energy_t
+   !> the element-family table (dx_element_types): what every consumer asks of a block's
+   !> element type (nodes, faces, edges, volume, moments, lumped mass, plot cell, weight)
+   public :: family_t, element_family, elem_volume, elem_moments, elem_length, etype_of_elform, &
+             solid_shape, MAX_NEN, MAX_FACE_NODES, MAX_FACES, ETYPES
 
    !> *SECTION_SOLID
    type :: section_t
@@ -56,11 +59,11 @@ module dx_model
    !> State arrays have the element index first (unit stride over elements).
    type :: elem_block_t
       integer :: ipart = 0          !< dense part index
-      integer :: etype = ETYPE_HEX8_1PT
+      integer :: etype = ETYPE_DEFAULT   !< element type: the family table's key
       integer :: nel = 0            !< elements in this block (<= nv_chunk)
       integer :: nip = 1            !< integration points per element
       integer :: nhv = 0            !< history variables per point (from the material)
-      integer, allocatable :: conn(:, :)     !< (8, nel) dense node indices
+      integer, allocatable :: conn(:, :)     !< (nen, nel) dense node indices (nen: family)
       integer, allocatable :: elem(:)        !< (nel) dense global element index
       real(wp), allocatable :: sig(:, :, :)  !< (nel, 6, nip) Cauchy stress
       real(wp), allocatable :: hv(:, :, :)   !< (nel, nhv, nip) material history
@@ -68,8 +71,8 @@ module dx_model
       real(wp), allocatable :: relvol(:)     !< (nel) current V/V0
       real(wp), allocatable :: eint(:)       !< (nel) internal energy (work of stress)
       real(wp), allocatable :: ehg(:)        !< (nel) hourglass energy
-      real(wp), allocatable :: ework(:, :)   !< (nel, 4) pending terms of the centred work (dx_hex8)
-      real(wp), allocatable :: phim(:)       !< (nel) own-mass share of one-element-wide blocks
+      real(wp), allocatable :: ework(:, :)   !< (nel, 4) pending terms of the centred work
+      real(wp), allocatable :: phim(:)       !< (nel) own-mass share (element dt bound)
       real(wp), allocatable :: hgs(:, :, :)  !< (nel, 3, 4) hourglass resisting forces (IHQ 4,5)
       logical, allocatable :: failed(:)      !< (nel) eroded elements carry no force
    end type elem_block_t
@@ -150,6 +153,7 @@ module dx_model
       real(wp) :: qh = 0.1_wp
       real(wp) :: q1 = 1.5_wp, q2 = 0.06_wp
       integer :: ibq = 1
+      integer :: esort = 0              !< *CONTROL_SOLID ESORT: >= 1 sorts degenerate tetrahedra
    end type control_t
 
    !> output requests

@@ -1,24 +1,25 @@
 !> Model build: turns the deck as read (model_input_t, labels) into the model the solver runs
 !> (model_t, dense indices). Resolves labels, reports duplicate ids and dangling references at
-!> the card that made them, rejects degenerate and inverted hexahedra, groups elements by part
+!> the card that made them, rejects degenerate and inverted solids, groups elements by part
 !> into blocks of at most nv_chunk elements, resolves hourglass and bulk viscosity settings per
 !> part, and expands initial velocities, constraints, loads and rigid walls onto nodes.
 !> Rigid bodies and body loads are built last (dx_rigid_build).
-!> Initial volume: exact trilinear hexahedron volume (2x2x2 Gauss integration of det J, exact
-!> for the trilinear map; equal to the Flanagan-Belytschko 1981 B-vector volume).
+!> Element type of a part: its section's ELFORM through the element-family table
+!> (dx_element_types), which also gives the nodes per element and the exact initial volume.
 module dx_model_build
    use dx_kinds, only: wp, nv_chunk
    use dx_vec3, only: cross
    use dx_error, only: error_t, set_error
    use dx_strings, only: str, rstr
    use dx_model, only: model_t, node_set_t, part_set_t, segment_set_t, spc_t, prescribed_t, &
-                       load_node_t, load_segment_t, rigidwall_t, ETYPE_HEX8_1PT, ETYPE_HEX8_SRI
+                       load_node_t, load_segment_t, rigidwall_t, family_t, element_family, &
+                       elem_volume, etype_of_elform, solid_shape, MAX_NEN
    use dx_model_input, only: model_input_t, origin_t, IVEL_SET, IVEL_NODE, IVEL_GEN
    use dx_label_map, only: label_map_t
    use dx_rigid_build, only: build_rigid, build_body_loads
    implicit none
    private
-   public :: build_model, hex_volume
+   public :: build_model
 
    !> label maps of one build
    type :: maps_t
@@ -229,50 +230,22 @@ contains
       end do
    end subroutine build_parts
 
-   !> Exact volume of the trilinear hexahedron with corner coordinates xe(3,8)
-   !> (LS-DYNA node order: 1-4 one face counter-clockwise seen from 5-8).
-   pure function hex_volume(xe) result(vol)
-      real(wp), intent(in) :: xe(3, 8)
-      real(wp) :: vol
-      real(wp), parameter :: xi(8) = [-1, 1, 1, -1, -1, 1, 1, -1]*1.0_wp
-      real(wp), parameter :: et(8) = [-1, -1, 1, 1, -1, -1, 1, 1]*1.0_wp
-      real(wp), parameter :: ze(8) = [-1, -1, -1, -1, 1, 1, 1, 1]*1.0_wp
-      real(wp), parameter :: g = 0.577350269189625764509148780502_wp
-      real(wp) :: jac(3, 3), dn(8, 3), a, b, c
-      integer :: ia, ib, ic, k
-      vol = 0.0_wp
-      do ia = -1, 1, 2
-         do ib = -1, 1, 2
-            do ic = -1, 1, 2
-               a = ia*g; b = ib*g; c = ic*g
-               dn(:, 1) = 0.125_wp*xi*(1 + et*b)*(1 + ze*c)
-               dn(:, 2) = 0.125_wp*et*(1 + xi*a)*(1 + ze*c)
-               dn(:, 3) = 0.125_wp*ze*(1 + xi*a)*(1 + et*b)
-               do k = 1, 3
-                  jac(:, k) = matmul(xe, dn(:, k))
-               end do
-               vol = vol + jac(1, 1)*(jac(2, 2)*jac(3, 3) - jac(3, 2)*jac(2, 3)) &
-                         - jac(1, 2)*(jac(2, 1)*jac(3, 3) - jac(3, 1)*jac(2, 3)) &
-                         + jac(1, 3)*(jac(2, 1)*jac(3, 2) - jac(3, 1)*jac(2, 2))
-            end do
-         end do
-      end do
-   end function hex_volume
-
    !> elements: references, degenerate and inverted checks, blocks by part
    subroutine build_elements(inp, model, mp, error)
       type(model_input_t), intent(in) :: inp
       type(model_t), intent(inout) :: model
       type(maps_t), intent(inout) :: mp
       type(error_t), allocatable, intent(out) :: error
-      integer :: ne, e, k, j, old, ip, nb, ib, nel, pos, nip, nhv, etype
-      integer, allocatable :: conn(:, :), npart(:), order(:), start(:), fill(:)
+      integer :: ne, e, k, j, old, ip, nb, ib, nel, pos, nip, nhv, etype, nen
+      integer, allocatable :: conn(:, :), npart(:), order(:), start(:), fill(:), etyp(:), grp(:)
+      type(family_t) :: fam
+      logical :: ok
       real(wp), allocatable :: vol(:)
       character(:), allocatable :: w
       ne = inp%ne
       model%ne = ne
-      allocate(conn(8, ne), vol(ne), model%elem_part(ne), model%elem_block(ne), &
-               model%elem_pos(ne))
+      allocate(conn(MAX_NEN, ne), vol(ne), etyp(ne), grp(ne), model%elem_part(ne), &
+               model%elem_block(ne), model%elem_pos(ne))
       model%elem_label = inp%elem_label(1:ne)
       call mp%elem%init(ne)
       do e = 1, ne
@@ -291,7 +264,7 @@ contains
                               str(inp%elem_pid(e))//' is not defined (*PART)')
                return
             end if
-            do k = 1, 8
+            do k = 1, MAX_NEN
                conn(k, e) = mp%node%get(inp%elem_conn(k, e))
                if (conn(k, e) == 0) then
                   call set_error(error, w//'element '//str(lab)//': field N'//str(k)// &
@@ -299,17 +272,29 @@ contains
                   return
                end if
             end do
-            do k = 2, 8
-               do j = 1, k - 1
-                  if (conn(k, e) == conn(j, e)) then
-                     call set_error(error, w//'element '//str(lab)//': node '// &
-                        str(inp%elem_conn(k, e))//' appears twice (N'//str(j)//' and N'// &
-                        str(k)//'): degenerate solid not supported')
-                     return
-                  end if
+            etype = etype_of_elform(model%sections(model%parts(model%elem_part(e))%isec)%elform)
+            call solid_shape(inp%ctrl%esort, conn(:, e), etype, nen, ok)
+            if (.not. ok) then
+               if (nen < MAX_NEN) then
+                  call set_error(error, w//'element '//str(lab)//': ELFORM '// &
+                     str(model%sections(model%parts(model%elem_part(e))%isec)%elform)// &
+                     ' needs '//str(nen)//' distinct nodes')
+                  return
+               end if
+               do k = 2, nen
+                  do j = 1, k - 1
+                     if (conn(k, e) == conn(j, e)) then
+                        call set_error(error, w//'element '//str(lab)//': node '// &
+                           str(inp%elem_conn(k, e))//' appears twice (N'//str(j)//' and N'// &
+                           str(k)//'): degenerate solid not supported (supported: '// &
+                           'tetrahedron N4=N3, N5=N6=N7=N8; pentahedron N4=N3, N8=N7)')
+                        return
+                     end if
+                  end do
                end do
-            end do
-            vol(e) = hex_volume(model%x0(:, conn(:, e)))
+            end if
+            etyp(e) = etype
+            vol(e) = elem_volume(etype, model%x0(:, conn(1:nen, e)))
             if (.not. (vol(e) > 0.0_wp)) then
                call set_error(error, w//'element '//str(lab)//' is inverted at t = 0 '// &
                   '(volume '//rstr(vol(e))//' <= 0; check the node order N1..N8)')
@@ -325,37 +310,43 @@ contains
             end if
          end associate
       end do
-      ! blocks: parts in deck order, elements of a part in deck order, nv_chunk at most
-      allocate(npart(size(model%parts)))
+      ! blocks: parts in deck order, elements of a part in deck order, nv_chunk at most; the
+      ! elements of a part that ESORT sorted to another family follow in their own blocks
+      ! (group 2*ip - 1: the section's family, 2*ip: sorted)
+      allocate(npart(2*size(model%parts)))
       npart = 0
       do e = 1, ne
-         npart(model%elem_part(e)) = npart(model%elem_part(e)) + 1
+         ip = model%elem_part(e)
+         grp(e) = 2*ip - 1
+         if (etyp(e) /= etype_of_elform(model%sections(model%parts(ip)%isec)%elform)) &
+            grp(e) = 2*ip
+         npart(grp(e)) = npart(grp(e)) + 1
       end do
-      allocate(start(size(model%parts) + 1), fill(size(model%parts)), order(ne))
+      allocate(start(size(npart) + 1), fill(size(npart)), order(ne))
       start(1) = 1
-      do ip = 1, size(model%parts)
+      do ip = 1, size(npart)
          start(ip + 1) = start(ip) + npart(ip)
       end do
       fill = 0
       do e = 1, ne
-         ip = model%elem_part(e)
+         ip = grp(e)
          order(start(ip) + fill(ip)) = e
          fill(ip) = fill(ip) + 1
       end do
       nb = sum((npart + nv_chunk - 1)/nv_chunk)
       allocate(model%blocks(nb))
       ib = 0
-      do ip = 1, size(model%parts)
+      do j = 1, size(npart)
+         if (npart(j) == 0) cycle
+         ip = (j + 1)/2
          associate (p => model%parts(ip))
-            if (model%sections(p%isec)%elform == 2) then
-               etype = ETYPE_HEX8_SRI; nip = 8
-            else
-               etype = ETYPE_HEX8_1PT; nip = 1
-            end if
+            etype = etyp(order(start(j)))
+            fam = element_family(etype)
+            nip = fam%nip
             nhv = model%mats(p%imat)%m%nhist()
-            pos = start(ip)
-            do while (pos < start(ip + 1))
-               nel = min(nv_chunk, start(ip + 1) - pos)
+            pos = start(j)
+            do while (pos < start(j + 1))
+               nel = min(nv_chunk, start(j + 1) - pos)
                ib = ib + 1
                associate (b => model%blocks(ib))
                   b%ipart = ip
@@ -364,7 +355,7 @@ contains
                   b%nip = nip
                   b%nhv = nhv
                   b%elem = order(pos:pos + nel - 1)
-                  b%conn = conn(:, b%elem)
+                  b%conn = conn(1:fam%nen, b%elem)
                   allocate(b%sig(nel, 6, nip), b%hv(nel, nhv, nip))
                   b%sig = 0.0_wp
                   b%hv = 0.0_wp
@@ -375,8 +366,8 @@ contains
                   b%ehg = 0.0_wp
                   allocate(b%ework(nel, 4), source=0.0_wp)
                   b%failed = .false.
-                  if (p%ihq == 4 .or. p%ihq == 5) then
-                     allocate(b%hgs(nel, 3, 4))
+                  if ((p%ihq == 4 .or. p%ihq == 5) .and. fam%hgmodes > 0) then
+                     allocate(b%hgs(nel, 3, fam%hgmodes))
                      b%hgs = 0.0_wp
                   end if
                   do k = 1, nel
@@ -389,6 +380,7 @@ contains
          end associate
       end do
    end subroutine build_elements
+
 
    !> node, part and segment sets
    subroutine build_sets(inp, model, mp, error)

@@ -16,6 +16,8 @@ module dx_model_input
    implicit none
    private
    public :: input_add_part, input_finish
+   !> node fields N1..N8 of an *ELEMENT_SOLID card (a family of fewer nodes repeats some)
+   integer, parameter, public :: SOLID_CARD_NODES = 8
    public :: model_input_t, string_t, origin_t, label_list_t, segment_list_t, spc_in_t, &
              motion_in_t, ivel_in_t, load_node_in_t, load_seg_in_t, wall_in_t, &
              IVEL_SET, IVEL_NODE, IVEL_GEN, add_node, add_element, origin, input_init
@@ -111,7 +113,7 @@ module dx_model_input
       ! --- solid elements (grown by add_element)
       integer :: ne = 0
       integer, allocatable :: elem_label(:), elem_pid(:)
-      integer, allocatable :: elem_conn(:, :)        !< (8, :) node labels
+      integer, allocatable :: elem_conn(:, :)        !< (SOLID_CARD_NODES, :) node labels
       integer, allocatable :: elem_src(:, :)         !< (2, :) ifile, line
       ! --- definitions (parts: grown by input_add_part, cut to nparts by input_finish)
       integer :: nparts = 0
@@ -168,7 +170,8 @@ contains
                inp%rigid%extras(0), inp%rigid%motions(0))
       allocate(inp%node_label(0), inp%x(3, 0), inp%node_tc(0), inp%node_rc(0), &
                inp%node_src(2, 0))
-      allocate(inp%elem_label(0), inp%elem_pid(0), inp%elem_conn(8, 0), inp%elem_src(2, 0))
+      allocate(inp%elem_label(0), inp%elem_pid(0), inp%elem_conn(SOLID_CARD_NODES, 0), &
+               inp%elem_src(2, 0))
    end subroutine input_init
 
    !> Append part p read at src (the arrays grow by doubling: 20 000 *PART blocks took
@@ -243,12 +246,13 @@ contains
    !> Append one *ELEMENT_SOLID record (capacity doubles).
    subroutine add_element(inp, label, pid, conn, ifile, line)
       type(model_input_t), intent(inout) :: inp
-      integer, intent(in) :: label, pid, conn(8), ifile, line
+      integer, intent(in) :: label, pid, conn(SOLID_CARD_NODES), ifile, line
       integer :: cap
       if (size(inp%elem_label) == 0) then
          cap = 1024
          deallocate(inp%elem_label, inp%elem_pid, inp%elem_conn, inp%elem_src)
-         allocate(inp%elem_label(cap), inp%elem_pid(cap), inp%elem_conn(8, cap), &
+         allocate(inp%elem_label(cap), inp%elem_pid(cap), &
+                  inp%elem_conn(SOLID_CARD_NODES, cap), &
                   inp%elem_src(2, cap))
       else if (inp%ne == size(inp%elem_label)) then
          cap = 2*size(inp%elem_label)

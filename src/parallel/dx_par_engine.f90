@@ -42,7 +42,7 @@ module dx_par_engine
                              constraint_terms, set_energy, constrained_nodes
    use dx_constraints, only: apply_rigidwalls, wall_hits_t
    use dx_par_loads, only: par_loads_setup, par_loads_take_mass
-   use dx_hex8, only: hex8_mass_share
+   use dx_element, only: element_mass_share
    use dx_par_rigid, only: par_rigid_setup
    use dx_par_contact, only: par_contact_setup, par_contact_report, contact_groups, &
                              write_contact_report
@@ -381,7 +381,7 @@ contains
       g%energy%mass = model%energy%mass
    end subroutine par_engine_mass
 
-   !> hex8_mass_share (the element dt bound of one-element-wide blocks) on the rank's
+   !> element_mass_share (the element dt bound of one-element-wide blocks) on the rank's
    !> blocks: their slot corners carry no mass (the mass is at the shared node), so each
    !> slot is given its node's mass and constraint flag, as the serial element sees them.
    subroutine par_engine_mass_share(model, cnodes)
@@ -399,7 +399,7 @@ contains
       con(pm%nloc + 1:pm%nloc + pm%nslot) = con(pm%slot_node)
       cext = pack([(i, i = 1, model%nn)], con)
       do b = 1, size(model%blocks)
-         call hex8_mass_share(model%blocks(b), &
+         call element_mass_share(model%blocks(b), &
             model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%ro, mext, cext)
       end do
       call trim_global(model)   ! the last set-up step of run_explicit (after a restart read)

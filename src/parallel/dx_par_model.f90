@@ -1,17 +1,17 @@
 !> A rank's sub-model for the MPI engine (first piece of step 5; docs/design.md): its element
 !> blocks are the pieces of the serial blocks it holds (serial block order, serial position
-!> order), so the unchanged hex8 kernels visit every interior node's contributions in the
+!> order), so the unchanged element kernels visit every interior node's contributions in the
 !> serial order. A corner whose node is shared gets its own "slot" node (index nloc + slot)
 !> in the block connectivity: the kernel's scatter then writes that single contribution into
 !> f(:, nloc + slot) (0 - c, exactly -c), and par_shared_sum adds all ranks' slots of a node
-!> in serial key order (scatter_keys: the serial loop `do k = 1, 8; do i = 1, nel` per
+!> in serial key order (scatter_keys: the serial loop `do k = 1, nen; do i = 1, nel` per
 !> block) - bit for bit the serial sum, with no change to the kernels. The nodal mass is
 !> scattered element-major (`do i; do k` in init_state), so it has its own keys and plan.
 !> Follows the fixed-order idea of OpenRadioss /PARITH/ON and ParaDyn's single shared-node
 !> exchange per cycle (LLNL Engineering Thrust Area Report FY97, article 4 of shared/seed).
 module dx_par_model
    use dx_kinds, only: wp, nv_chunk
-   use dx_model, only: model_t, elem_block_t
+   use dx_model, only: model_t, elem_block_t, MAX_NEN
    use dx_partition, only: rank_part_t
    use dx_par, only: shared_sum_t, par_shared_setup, par_shared_sum
    implicit none
@@ -72,8 +72,8 @@ contains
          if (any(here(model%blocks(b)%elem))) nb = nb + 1
       end do
       allocate(pm%blocks(nb), pm%block_serial(nb))
-      allocate(c_node(8*size(rp%elements)), c_fkey(8*size(rp%elements)), &
-               c_mkey(8*size(rp%elements)), pm%slot_node(8*size(rp%elements)))
+      allocate(c_node(MAX_NEN*size(rp%elements)), c_fkey(MAX_NEN*size(rp%elements)), &
+               c_mkey(MAX_NEN*size(rp%elements)), pm%slot_node(MAX_NEN*size(rp%elements)))
       nb = 0
       slot = 0
       do b = 1, size(model%blocks)
@@ -98,9 +98,9 @@ contains
                pb%failed = sb%failed(piece)
                if (allocated(sb%hgs)) pb%hgs = sb%hgs(piece, :, :)
                if (allocated(sb%ework)) pb%ework = sb%ework(piece, :)   ! a restart reads it
-               allocate(pb%conn(8, pb%nel))
+               allocate(pb%conn(size(sb%conn, 1), pb%nel))
                ! slots numbered corner-major as the force scatter visits them
-               do k = 1, 8
+               do k = 1, size(sb%conn, 1)
                   do j = 1, pb%nel
                      n = sb%conn(k, piece(j))
                      if (snum(n) > 0) then
@@ -110,9 +110,9 @@ contains
                         c_node(slot) = snum(n)
                         ! force: the serial scatter order (dx_partition scatter_keys),
                         ! formed here for the rank's corners only
-                        c_fkey(slot) = ((b - 1)*8 + k - 1)*nv_chunk + piece(j)
+                        c_fkey(slot) = ((b - 1)*MAX_NEN + k - 1)*nv_chunk + piece(j)
                         ! mass: element-major serial order (block, position, corner)
-                        c_mkey(slot) = ((b - 1)*nv_chunk + piece(j) - 1)*8 + k
+                        c_mkey(slot) = ((b - 1)*nv_chunk + piece(j) - 1)*MAX_NEN + k
                      else
                         pb%conn(k, j) = loc(n)
                      end if

@@ -19,6 +19,7 @@ module dx_par_plot
    use dx_io_sys, only: sys_mkdir_p, sys_epoch_seconds
    use dx_plot_hdf5, only: element_average, plot_merge_states
    use dx_plot_part, only: plot_part_t, plot_combine
+   use dx_plot_cells, only: cells_width, cell_column
    implicit none
    private
    public :: par_plot_setup, par_plot_write, par_plot_finish, par_plot_nstates, &
@@ -31,7 +32,7 @@ module dx_par_plot
    integer, allocatable, save :: khv(:)          !< per block: history index of eff. plastic strain
    logical, save :: finished = .false.
    !> the part's mesh until the file is created (first state): nodes, labels, elements
-   integer, allocatable, save :: m_nodes(:), m_nids(:), m_elems(:), m_hex(:, :), m_eids(:), &
+   integer, allocatable, save :: m_nodes(:), m_nids(:), m_elems(:), m_cells(:, :), m_eids(:), &
                                  m_pids(:)
    real(wp), allocatable, save :: m_x0(:, :)
    integer, save :: m_stamp = 0, m_nn = 0, m_ne = 0
@@ -49,7 +50,7 @@ contains
       integer, intent(in) :: nloc, node_global(:), slot_node(:), owned_nodes(:), elem_loc(:, :)
       character(*), intent(in) :: outdir
       type(error_t), allocatable, intent(out) :: error
-      integer, allocatable :: elems(:), hex(:, :), eids(:), pids(:), l2g(:)
+      integer, allocatable :: elems(:), cells(:, :), eids(:), pids(:), l2g(:)
       integer :: i, b, j, e, stamp, imat
       integer(8) :: clk
       character(:), allocatable :: title
@@ -63,13 +64,14 @@ contains
          khv(b) = model%mats(imat)%m%hv_eps_p
       end do
       l2g = [node_global(1:nloc), node_global(slot_node)]
-      allocate(elems(size(eloc, 2)), hex(8, size(eloc, 2)), eids(size(eloc, 2)), &
+      allocate(elems(size(eloc, 2)), cells(cells_width(g), size(eloc, 2)), eids(size(eloc, 2)), &
                pids(size(eloc, 2)))
       do i = 1, size(eloc, 2)
          b = eloc(1, i); j = eloc(2, i)
          e = model%blocks(b)%elem(j)
          elems(i) = e
-         hex(:, i) = l2g(model%blocks(b)%conn(1:8, j)) - 1
+         cells(:, i) = cell_column(size(cells, 1), model%blocks(b)%etype, &
+                                   l2g(model%blocks(b)%conn(:, j)) - 1)
          eids(i) = g%elem_label(e)
          pids(i) = g%parts(g%elem_part(e))%label
       end do
@@ -92,7 +94,7 @@ contains
       m_x0 = model%x0(:, own)
       m_nids = model%node_label(own)
       call move_alloc(elems, m_elems)
-      call move_alloc(hex, m_hex)
+      call move_alloc(cells, m_cells)
       call move_alloc(eids, m_eids)
       call move_alloc(pids, m_pids)
    end subroutine par_plot_setup
@@ -101,12 +103,12 @@ contains
    subroutine create_part(error)
       type(error_t), allocatable, intent(out) :: error
       call part%open(dir, par_rank(), par_size(), m_stamp, m_title, m_nn, m_ne, m_nodes, &
-                     m_x0, m_nids, m_elems, m_hex, m_eids, m_pids, error)
+                     m_x0, m_nids, m_elems, m_cells, m_eids, m_pids, error)
       call free_mesh()
    end subroutine create_part
 
    subroutine free_mesh()
-      if (allocated(m_nodes)) deallocate(m_nodes, m_x0, m_nids, m_elems, m_hex, m_eids, m_pids)
+      if (allocated(m_nodes)) deallocate(m_nodes, m_x0, m_nids, m_elems, m_cells, m_eids, m_pids)
    end subroutine free_mesh
 
    !> A restart of an MPI run: continue this rank's part after its first nkeep states (the

@@ -34,7 +34,7 @@ module dx_par_restart
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_INPUT, EXIT_IO
    use dx_strings, only: str, string_t
-   use dx_model, only: model_t
+   use dx_model, only: model_t, family_t, element_family
    use dx_contact_types, only: contact_set_t
    use dx_contact_strips, only: contact_strips
    use dx_restart, only: restart_write, restart_read
@@ -453,6 +453,7 @@ contains
       type(model_t), intent(inout) :: gp
       logical, intent(in) :: on
       integer :: b
+      type(family_t) :: fam
       do b = 1, size(gp%blocks)
          associate (blk => gp%blocks(b))
             if (on) then
@@ -460,9 +461,10 @@ contains
                                                       source=0.0_wp)
                if (.not. allocated(blk%hv)) allocate(blk%hv(blk%nel, blk%nhv, blk%nip), &
                                                      source=0.0_wp)
-               if (.not. allocated(blk%hgs) .and. (gp%parts(blk%ipart)%ihq == 4 .or. &
-                   gp%parts(blk%ipart)%ihq == 5)) allocate(blk%hgs(blk%nel, 3, 4), &
-                                                           source=0.0_wp)
+               fam = element_family(blk%etype)
+               if (.not. allocated(blk%hgs) .and. fam%hgmodes > 0 .and. &
+                   (gp%parts(blk%ipart)%ihq == 4 .or. gp%parts(blk%ipart)%ihq == 5)) &
+                  allocate(blk%hgs(blk%nel, 3, fam%hgmodes), source=0.0_wp)
             else
                if (allocated(blk%sig)) deallocate(blk%sig)
                if (allocated(blk%hv)) deallocate(blk%hv)

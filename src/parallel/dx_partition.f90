@@ -5,7 +5,7 @@
 !> Comput. 20(1), 1998).
 !>
 !> The element graph: one vertex per element, weighted by the element formulation's measured
-!> cost (COST_HEX8_1PT, COST_HEX8_SRI; docs/design.md), one edge between two elements that
+!> cost (the element family's weight; docs/design.md), one edge between two elements that
 !> share at least one node (METIS_MeshToDual with ncommon = 1), weighted by the number of
 !> nodes they share. Elements that share only an edge or a corner still put that node on two
 !> ranks, so they cost communication too; the face-only dual graph (ncommon = 4) would not
@@ -21,7 +21,7 @@ module dx_partition
    use dx_kinds, only: wp, nv_chunk
    use dx_error, only: error_t, set_error, EXIT_INPUT
    use dx_strings, only: str
-   use dx_model, only: model_t, ETYPE_HEX8_SRI
+   use dx_model, only: model_t, family_t, element_family, etype_of_elform, MAX_NEN
    use dx_metis, only: metis_part_kway, METIS_RECURSIVE
    use dx_sort, only: sort_index
    use dx_contact_input, only: CT_SINGLE_SURFACE
@@ -29,12 +29,11 @@ module dx_partition
    private
    public :: partition_t, rank_part_t, element_graph, condense_groups, partition_model, &
              partition_elements, rank_part, elem_costs, serial_order, write_report, face_elements, &
-             model_conn, scatter_keys, COST_HEX8_1PT, &
-             COST_HEX8_SRI, COST_RIGID, RIGID_SCALE
+             model_conn, scatter_keys, COST_RIGID, RIGID_SCALE
 
-   !> Element cost weights (integer, METIS needs integers): ELFORM 2 measured at about
-   !> 8x ELFORM 1 per element-cycle (docs/design.md, "Partition weights").
-   integer, parameter :: COST_HEX8_1PT = 1, COST_HEX8_SRI = 8
+   !> Element cost weights (integer, METIS needs integers): the element family's weight
+   !> (dx_element_types: ELFORM 2 measured at about 8x ELFORM 1 per element-cycle;
+   !> docs/design.md, "Partition weights").
    !> Elements of *MAT_RIGID parts have no stress update (the element pass skips them): in a
    !> deck that has them the deformable weights are scaled by RIGID_SCALE and a rigid
    !> element weighs COST_RIGID, i.e. 1/4 of ELFORM 1 (measured 0.27-0.34 serially, which
@@ -89,6 +88,7 @@ contains
       integer, allocatable, intent(out) :: ewgt(:)
       integer :: ib, sc
       logical :: rig
+      type(family_t) :: fam
       allocate(ewgt(model%ne))
       sc = 1
       if (has_rigid_elements(model)) sc = RIGID_SCALE
@@ -97,10 +97,9 @@ contains
             rig = model%mats(model%parts(b%ipart)%imat)%m%is_rigid
             if (rig) then
                ewgt(b%elem) = COST_RIGID
-            else if (b%etype == ETYPE_HEX8_SRI) then
-               ewgt(b%elem) = sc*COST_HEX8_SRI
             else
-               ewgt(b%elem) = sc*COST_HEX8_1PT
+               fam = element_family(b%etype)
+               ewgt(b%elem) = sc*fam%weight
             end if
          end associate
       end do
@@ -708,29 +707,39 @@ contains
 
 
    !> The order key of every element force contribution (corner k, element e): the serial
-   !> run adds them into f block by block, in the loop `do k = 1, 8; do i = 1, nel` of the
-   !> hex8 kernels, so key = ((block - 1)*8 + k - 1)*nv_chunk + position in the block.
-   !> Summing a node's contributions from 0 in key order gives the serial f bit for bit.
+   !> run adds them into f block by block, in the loop `do k = 1, nen; do i = 1, nel` of
+   !> the element kernels, so key = ((block - 1)*MAX_NEN + k - 1)*nv_chunk + position in the
+   !> block. Summing a node's contributions from 0 in key order gives the serial f bit for
+   !> bit. Corners past the family's nen get key -1.
    subroutine scatter_keys(model, keys)
       type(model_t), intent(in) :: model
       integer, allocatable, intent(out) :: keys(:, :)
       integer :: e, k
-      allocate(keys(8, model%ne))
+      allocate(keys(MAX_NEN, model%ne))
+      keys = -1
       do e = 1, model%ne
-         do k = 1, 8
-            keys(k, e) = ((model%elem_block(e) - 1)*8 + k - 1)*nv_chunk + model%elem_pos(e)
+         do k = 1, size(model%blocks(model%elem_block(e))%conn, 1)
+            keys(k, e) = ((model%elem_block(e) - 1)*MAX_NEN + k - 1)*nv_chunk + &
+                         model%elem_pos(e)
          end do
       end do
    end subroutine scatter_keys
 
-   !> Connectivity conn(8, ne) of a built model, in global element order.
+   !> Connectivity conn(MAX_NEN, ne) of a built model, in global element order; an element
+   !> of fewer nodes repeats its last node (as a degenerate solid's card does).
    subroutine model_conn(model, conn)
       type(model_t), intent(in) :: model
       integer, allocatable, intent(out) :: conn(:, :)
-      integer :: ib
-      allocate(conn(8, model%ne))
+      integer :: ib, nen, k
+      allocate(conn(MAX_NEN, model%ne))
       do ib = 1, size(model%blocks)
-         conn(:, model%blocks(ib)%elem) = model%blocks(ib)%conn
+         associate (b => model%blocks(ib))
+            nen = size(b%conn, 1)
+            conn(1:nen, b%elem) = b%conn
+            do k = nen + 1, MAX_NEN
+               conn(k, b%elem) = b%conn(nen, :)
+            end do
+         end associate
       end do
    end subroutine model_conn
 
@@ -915,6 +924,7 @@ contains
       type(partition_t), intent(in) :: part
       character(*), intent(in) :: deck, hash
       integer :: r, n, k, nshared_total
+      type(family_t) :: f1, f2
       integer, allocatable :: nnb(:)
       logical, allocatable :: adj(:, :)
       allocate(adj(0:part%np - 1, 0:part%np - 1), nnb(0:part%np - 1))
@@ -938,12 +948,14 @@ contains
          write(unit, '(a,i0,a,i0,a,i0,a)') 'ranks ', part%np, ', elements ', part%ne, &
             ', nodes ', part%nn, ' (element graph: elements sharing a node; METIS k-way)'
       end if
+      f1 = element_family(etype_of_elform(1))
+      f2 = element_family(etype_of_elform(2))
       if (part%wscale == 1) then
-         write(unit, '(a,i0,a,i0,a)') 'element cost weights: ELFORM 1 = ', COST_HEX8_1PT, &
-            ', ELFORM 2 = ', COST_HEX8_SRI, ' (measured per element-cycle ratio)'
+         write(unit, '(a,i0,a,i0,a)') 'element cost weights: ELFORM 1 = ', f1%weight, &
+            ', ELFORM 2 = ', f2%weight, ' (measured per element-cycle ratio)'
       else
          write(unit, '(a,i0,a,i0,a,i0,a)') 'element cost weights: ELFORM 1 = ', &
-            part%wscale*COST_HEX8_1PT, ', ELFORM 2 = ', part%wscale*COST_HEX8_SRI, &
+            part%wscale*f1%weight, ', ELFORM 2 = ', part%wscale*f2%weight, &
             ', rigid = ', COST_RIGID, ' (measured per element-cycle ratio)'
       end if
       write(unit, '(a)') '  rank   elements     weight      nodes     shared  neighbours'

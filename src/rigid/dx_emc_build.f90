@@ -6,13 +6,12 @@
 !> deviation |r_i - R|/R is the fit error, checked against TOL).
 module dx_emc_build
    use dx_kinds, only: wp
-   use dx_sort, only: sort4
    use dx_error, only: error_t, set_error
    use dx_strings, only: str, rstr
    use dx_log, only: log_info
-   use dx_model, only: model_t
+   use dx_model, only: model_t, family_t, element_family, MAX_FACES
    use dx_model_input, only: model_input_t
-   use dx_contact_build, only: hex_faces
+   use dx_contact_build, only: face_key
    use dx_dense_solve, only: dense_solve
    use dx_emc_types, only: emc_system_t, emc_facet_t, emc_sphere_in_t
    implicit none
@@ -121,7 +120,7 @@ contains
          ! the conserving solver advances free rigid bodies only
          do e = 1, model%ne
             associate (blk => model%blocks(model%elem_block(e)))
-               do k = 1, 8
+               do k = 1, size(blk%conn, 1)
                   nd = blk%conn(k, model%elem_pos(e))
                   if (model%rigid%node_body(nd) == 0) then
                      call set_error(error, at(inp, inp%emc%contacts(1)%ifile, &
@@ -200,6 +199,7 @@ contains
       type(model_t), intent(in) :: model
       type(emc_system_t), intent(inout) :: es
       integer :: nb, b, e, k, nf, i, j, m, np, nd(4), key(4), cnt
+      type(family_t) :: fam
       integer, allocatable :: fk(:, :), fn(:, :), fe(:), mark(:)
       type(emc_facet_t), allocatable :: fac(:)
       real(wp), allocatable :: sn(:, :)
@@ -216,14 +216,16 @@ contains
       do b = 1, nb
          associate (bd => model%rigid%bodies(b))
             nf = 0
-            allocate(fk(4, 6*model%ne), fn(4, 6*model%ne), fe(6*model%ne))
+            allocate(fk(4, MAX_FACES*model%ne), fn(4, MAX_FACES*model%ne), &
+                     fe(MAX_FACES*model%ne))
             do e = 1, model%ne
                if (model%elem_part(e) /= bd%ipart) cycle
-               do k = 1, 6
-                  nd = model%blocks(model%elem_block(e))%conn(hex_faces(:, k), model%elem_pos(e))
+               fam = element_family(model%blocks(model%elem_block(e))%etype)
+               do k = 1, fam%nfaces
+                  nd = model%blocks(model%elem_block(e))%conn(fam%faces(:, k), model%elem_pos(e))
                   nf = nf + 1
                   fn(:, nf) = nd
-                  fk(:, nf) = sort4(nd)
+                  fk(:, nf) = face_key(nd)
                   fe(nf) = e
                end do
             end do

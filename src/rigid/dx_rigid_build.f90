@@ -1,10 +1,11 @@
 !> Build of the rigid bodies and body loads: resolves the rigid-body keywords (labels) into
 !> model%rigid (dense) and *LOAD_BODY_* into model%body_loads. Runs at the end of build_model,
 !> when parts, blocks, sets, constraints, initial velocities and walls are known.
-!> Mass properties of a *MAT_RIGID part: exact volume integrals over its hexahedra
-!> (dx_rigid_mass) plus, as point masses, the lumped mass deformable elements and extra nodes
-!> bring to its nodes; a *CONSTRAINED_NODAL_RIGID_BODY takes the lumped nodal masses
-!> (rho V0/8 per hex node). *PART_INERTIA replaces mass, centre and inertia tensor.
+!> Mass properties of a *MAT_RIGID part: exact volume integrals over its elements (the
+!> element-family table's elem_moments) plus, as point masses, the lumped mass deformable
+!> elements and extra nodes bring to its nodes; a *CONSTRAINED_NODAL_RIGID_BODY takes the
+!> lumped nodal masses (rho V0 times the family's share per node). *PART_INERTIA replaces
+!> mass, centre and inertia tensor.
 !> Initial motion: the rigid motion (vc, omega) closest to the nodal initial velocities in the
 !> mass-weighted least-squares sense (exact when the nodal field is rigid, as
 !> *INITIAL_VELOCITY_GENERATION gives), or VTX..VRZ of *PART_INERTIA.
@@ -15,11 +16,11 @@ module dx_rigid_build
    use dx_strings, only: str, rstr
    use dx_log, only: log_warn
    use dx_label_map, only: label_map_t
-   use dx_model, only: model_t
+   use dx_model, only: model_t, family_t, element_family, elem_moments, elem_length
    use dx_model_input, only: model_input_t
    use dx_mat_rigid, only: mat_rigid_t, rigid_code
    use dx_rigid_types, only: rigid_system_t, rigid_body_t, rigid_motion_t, rigid_origin_t
-   use dx_rigid_mass, only: hex_moments, inertia_about, principal_axes
+   use dx_rigid_mass, only: inertia_about, principal_axes
    use dx_load_body, only: body_load_t
    implicit none
    private
@@ -56,14 +57,15 @@ contains
       end do
    end subroutine build_body_loads
 
-   !> Lumped nodal masses rho V0/8 (as the solver's init_state), and the part of them that
-   !> comes from rigid elements.
+   !> Lumped nodal masses rho V0 times the family's share (as the solver's init_state), and
+   !> the part of them that comes from rigid elements.
    subroutine lumped_masses(model, mass, mrig)
       type(model_t), intent(in) :: model
       real(wp), allocatable, intent(out) :: mass(:), mrig(:)
       integer :: b, i, k, nd
       real(wp) :: m
       logical :: rig
+      type(family_t) :: fam
       allocate(mass(model%nn), mrig(model%nn))
       mass = 0.0_wp
       mrig = 0.0_wp
@@ -71,11 +73,12 @@ contains
          associate (blk => model%blocks(b))
             m = model%mats(model%parts(blk%ipart)%imat)%m%ro
             rig = model%mats(model%parts(blk%ipart)%imat)%m%is_rigid
+            fam = element_family(blk%etype)   ! rho V0 times the family's share per node
             do i = 1, blk%nel
-               do k = 1, 8
+               do k = 1, fam%nen
                   nd = blk%conn(k, i)
-                  mass(nd) = mass(nd) + m*blk%vol0(i)/8.0_wp
-                  if (rig) mrig(nd) = mrig(nd) + m*blk%vol0(i)/8.0_wp
+                  mass(nd) = mass(nd) + m*blk%vol0(i)*fam%mass_share
+                  if (rig) mrig(nd) = mrig(nd) + m*blk%vol0(i)*fam%mass_share
                end do
             end do
          end associate
@@ -94,7 +97,7 @@ contains
       integer, allocatable :: body_of_part(:), nodes(:), inert(:)
       logical, allocatable :: inbody(:)
       integer :: nb, ip, b, k, i, e, nd, j, nrb
-      real(wp) :: vol, m1(3), m2(3, 3), rho, xe(3, 8)
+      real(wp) :: vol, m1(3), m2(3, 3), rho
       character(:), allocatable :: w
 
       ! PART_INERTIA must name a rigid part (checked before anything else)
@@ -169,8 +172,9 @@ contains
             do k = 1, size(model%blocks)
                if (model%blocks(k)%ipart /= ip) cycle
                do e = 1, model%blocks(k)%nel
-                  xe = model%x0(:, model%blocks(k)%conn(:, e))
-                  call hex_moments(xe, xref(:, b), vol, m1, m2)
+                  call elem_moments(model%blocks(k)%etype, &
+                                    model%x0(:, model%blocks(k)%conn(:, e)), xref(:, b), vol, &
+                                    m1, m2)
                   bm(b) = bm(b) + rho*vol
                   bm1(:, b) = bm1(:, b) + rho*m1
                   bm2(:, :, b) = bm2(:, :, b) + rho*m2
@@ -553,15 +557,14 @@ contains
       end do
    end subroutine solve6
 
-   !> Smallest stable step of the rigid elements, L/c with L = V/(largest face area) and
-   !> c = sqrt((K + 4G/3)/rho) from E and PR (used only when no deformable element sets dt).
+   !> Smallest stable step of the rigid elements, L/c with L the family's length (the
+   !> element-family table's elem_length) and c = sqrt((K + 4G/3)/rho) from E and PR (used
+   !> only when no deformable element sets dt).
    function rigid_element_step(model) result(dt)
       type(model_t), intent(in) :: model
       real(wp) :: dt
-      integer :: b, e, f
-      integer, parameter :: face(4, 6) = reshape([1, 2, 3, 4, 5, 6, 7, 8, 1, 2, 6, 5, &
-         2, 3, 7, 6, 3, 4, 8, 7, 4, 1, 5, 8], [4, 6])
-      real(wp) :: xe(3, 8), amax, c, a(3)
+      integer :: b, e
+      real(wp) :: c
       dt = huge(1.0_wp)
       do b = 1, size(model%blocks)
          associate (blk => model%blocks(b), &
@@ -569,14 +572,7 @@ contains
             if (.not. mt%is_rigid) cycle
             c = sqrt((mt%bulk + 4.0_wp*mt%shear/3.0_wp)/mt%ro)
             do e = 1, blk%nel
-               xe = model%x0(:, blk%conn(:, e))
-               amax = 0.0_wp
-               do f = 1, 6
-                  a = 0.5_wp*cross(xe(:, face(3, f)) - xe(:, face(1, f)), &
-                                   xe(:, face(4, f)) - xe(:, face(2, f)))
-                  amax = max(amax, norm2(a))
-               end do
-               dt = min(dt, blk%vol0(e)/amax/c)
+               dt = min(dt, elem_length(blk%etype, model%x0(:, blk%conn(:, e)), blk%vol0(e))/c)
             end do
          end associate
       end do

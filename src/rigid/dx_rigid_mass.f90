@@ -1,7 +1,6 @@
-!> Mass properties of rigid bodies: volume, first and second moments of trilinear hexahedra
-!> (3x3x3 Gauss-Legendre quadrature: the integrand x_i x_j det J is at most of degree 4 in each
-!> natural coordinate of a trilinear map, which the 3-point rule integrates exactly; Hughes,
-!> The Finite Element Method, 1987, sec. 3.8), point masses, the inertia tensor about the
+!> Mass properties of rigid bodies: the elements' volume, first and second moments come from
+!> the element-family table (dx_element_types, elem_moments), point masses, the inertia
+!> tensor about the
 !> centre of mass, and its principal axes by the cyclic Jacobi method (Golub & Van Loan,
 !> Matrix Computations, 4th ed., sec. 8.5).
 !> Inertia tensor: I = int rho (|r|^2 1 - r r^T) dV, r = x - x_c (positive products of
@@ -10,54 +9,9 @@ module dx_rigid_mass
    use dx_kinds, only: wp
    implicit none
    private
-   public :: hex_moments, inertia_about, principal_axes, rotation_about
+   public :: inertia_about, principal_axes, rotation_about
 
 contains
-
-   !> vol = int dV, m1 = int (x - xref) dV, m2 = int (x - xref)(x - xref)^T dV over the
-   !> trilinear hexahedron with corners xe(3,8) (LS-DYNA node order); exact.
-   pure subroutine hex_moments(xe, xref, vol, m1, m2)
-      real(wp), intent(in) :: xe(3, 8), xref(3)
-      real(wp), intent(out) :: vol, m1(3), m2(3, 3)
-      real(wp), parameter :: xi(8) = [-1, 1, 1, -1, -1, 1, 1, -1]*1.0_wp
-      real(wp), parameter :: et(8) = [-1, -1, 1, 1, -1, -1, 1, 1]*1.0_wp
-      real(wp), parameter :: ze(8) = [-1, -1, -1, -1, 1, 1, 1, 1]*1.0_wp
-      real(wp), parameter :: gp(3) = [-0.774596669241483377035853079956_wp, 0.0_wp, &
-                                      0.774596669241483377035853079956_wp]
-      real(wp), parameter :: gw(3) = [5.0_wp/9.0_wp, 8.0_wp/9.0_wp, 5.0_wp/9.0_wp]
-      real(wp) :: jac(3, 3), dn(8, 3), sh(8), a, b, c, detj, wdet, r(3), xl(3, 8)
-      integer :: ia, ib, ic, k, j
-      do k = 1, 8
-         xl(:, k) = xe(:, k) - xref
-      end do
-      vol = 0.0_wp
-      m1 = 0.0_wp
-      m2 = 0.0_wp
-      do ia = 1, 3
-         do ib = 1, 3
-            do ic = 1, 3
-               a = gp(ia); b = gp(ib); c = gp(ic)
-               sh = 0.125_wp*(1 + xi*a)*(1 + et*b)*(1 + ze*c)
-               dn(:, 1) = 0.125_wp*xi*(1 + et*b)*(1 + ze*c)
-               dn(:, 2) = 0.125_wp*et*(1 + xi*a)*(1 + ze*c)
-               dn(:, 3) = 0.125_wp*ze*(1 + xi*a)*(1 + et*b)
-               do k = 1, 3
-                  jac(:, k) = matmul(xl, dn(:, k))
-               end do
-               detj = jac(1, 1)*(jac(2, 2)*jac(3, 3) - jac(3, 2)*jac(2, 3)) &
-                    - jac(1, 2)*(jac(2, 1)*jac(3, 3) - jac(3, 1)*jac(2, 3)) &
-                    + jac(1, 3)*(jac(2, 1)*jac(3, 2) - jac(3, 1)*jac(2, 2))
-               wdet = gw(ia)*gw(ib)*gw(ic)*detj
-               r = matmul(xl, sh)
-               vol = vol + wdet
-               m1 = m1 + wdet*r
-               do j = 1, 3
-                  m2(:, j) = m2(:, j) + wdet*r*r(j)
-               end do
-            end do
-         end do
-      end do
-   end subroutine hex_moments
 
    !> Inertia tensor about xc of a body with mass m, first moment m1 = int rho (x - xref) dV
    !> and second moment m2 = int rho (x - xref)(x - xref)^T dV (parallel-axis shift).

@@ -2,7 +2,8 @@
 !> Manual UCRL-MA-107254, and Belytschko, Liu & Moran 2000, box 6.1):
 !>   f(n) = f_ext(n) - f_int(x(n), sigma(n)),  a(n) = f(n)/m,
 !>   v(n+1/2) = v(n-1/2) + (dt(n-1/2) + dt(n+1/2))/2 a(n),  x(n+1) = x(n) + dt(n+1/2) v(n+1/2),
-!> lumped mass (rho*V0/8 per hex node), dt(n+1/2) = TSSFAC * min over elements, energy balance
+!> lumped mass (rho*V0 times the family table's share per node), dt(n+1/2) = TSSFAC * min
+!> over elements, energy balance
 !> each cycle with the time-centred kinetic energy KE(n) = 1/2 m v(n-1/2).v(n+1/2) and the
 !> external and constraint work W += f(n).dtavg(n) (v(n-1/2) + v(n+1/2))/2, dtavg(n) =
 !> (dt(n-1/2) + dt(n+1/2))/2: KE(n) - KE(n-1) telescopes exactly into these sums for any
@@ -16,7 +17,8 @@ module dx_explicit
    use dx_timer, only: wall_time, peak_memory_kb
    use dx_model, only: model_t, elem_block_t
    use dx_run_state, only: run_state_t
-   use dx_hex8, only: hex8_block, hex8_volume, block_result_t, HEX_ERR_NEGVOL, hex8_mass_share
+   use dx_element, only: element_block_pass, block_result_t, ELEM_ERR_NEGVOL, &
+                         element_mass_share, family_t, element_family
    use dx_loads, only: add_external_loads, has_external_loads
    use dx_constraints, only: apply_spc, apply_prescribed, apply_rigidwalls, add_wall_hits, &
                              wall_hits_t
@@ -54,6 +56,7 @@ contains
       type(model_t), intent(inout) :: model
       integer :: b, i, k
       real(wp) :: m
+      type(family_t) :: fam
       allocate(model%x(3, model%nn), model%v(3, model%nn), model%f(3, model%nn))
       allocate(model%mass(model%nn))
       model%x = model%x0
@@ -63,9 +66,11 @@ contains
       do b = 1, size(model%blocks)
          associate (blk => model%blocks(b))
             m = model%mats(model%parts(blk%ipart)%imat)%m%ro
+            fam = element_family(blk%etype)   ! rho V0 times the family's share per node
             do i = 1, blk%nel
-               do k = 1, 8
-                  model%mass(blk%conn(k, i)) = model%mass(blk%conn(k, i)) + m*blk%vol0(i)/8.0_wp
+               do k = 1, fam%nen
+                  model%mass(blk%conn(k, i)) = model%mass(blk%conn(k, i)) + &
+                                               m*blk%vol0(i)*fam%mass_share
                end do
             end do
          end associate
@@ -112,7 +117,7 @@ contains
       allocate(vfree(3, size(cnodes)), cterms(size(cnodes)))
       do b = 1, size(model%blocks)   ! one-element-wide blocks get the element dt bound
          if (par) exit                 ! MPI: slot corners need their node's mass (below)
-         call hex8_mass_share(model%blocks(b), &
+         call element_mass_share(model%blocks(b), &
             model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%ro, model%mass, cnodes)
       end do
       if (par) call par_engine_mass_share(model, cnodes)
@@ -150,8 +155,8 @@ contains
             end if
             if (model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%is_rigid) cycle
             associate (blk => model%blocks(b), part => model%parts(model%blocks(b)%ipart))
-               call hex8_block(blk, model%mats(part%imat)%m, part, model%x, model%v, dt_old, &
-                               model%f, res)
+               call element_block_pass(blk, model%mats(part%imat)%m, part, model%x, model%v, &
+                                       dt_old, model%f, res)
                if (res%ibad /= 0) then
                   call element_failure(model, b, res, error)
                   if (par) then   ! every rank learns it at the dt reduction below
@@ -410,7 +415,7 @@ contains
       integer :: e
       character(:), allocatable :: what
       e = model%blocks(b)%elem(res%ibad)
-      if (res%errcode == HEX_ERR_NEGVOL) then
+      if (res%errcode == ELEM_ERR_NEGVOL) then
          what = 'negative volume'
       else
          what = 'material update failed'

@@ -13,7 +13,8 @@ program dynx_part
    use dx_model_build, only: build_model
    use dx_contact_build, only: build_contact
    use dx_emc_build, only: build_emc
-   use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report
+   use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report, &
+                           model_conn
    use dx_rank_file, only: write_rank_file, read_rank_file, rank_file_name, deck_content_hash
    use dx_io_sys, only: sys_mkdir_p
    use dx_par_contact, only: contact_groups, write_contact_report
@@ -113,10 +114,8 @@ contains
       type(rank_part_t), allocatable :: rps(:)
       integer, allocatable :: seen(:), conn(:, :), holder(:, :)
       integer :: r, k, q, kq, e, ib, j, nsh
-      allocate(rps(0:np - 1), seen(model%ne), conn(8, model%ne))
-      do ib = 1, size(model%blocks)
-         conn(:, model%blocks(ib)%elem) = model%blocks(ib)%conn
-      end do
+      allocate(rps(0:np - 1), seen(model%ne))
+      call model_conn(model, conn)
       seen = 0
       do r = 0, np - 1
          call read_rank_file(rank_file_name(outdir, r), hash, np, r, rps(r), error)

@@ -13,7 +13,8 @@ program mpi_par_model_test
    use dx_model, only: model_t
    use dx_deck, only: read_deck
    use dx_explicit, only: init_state
-   use dx_hex8, only: hex8_block, block_result_t
+   use dx_hex8, only: hex8_block
+   use dx_element_types, only: block_result_t
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part
    use dx_par_model, only: par_model_t, par_model_build, par_fill_slots, par_exchange_forces, &
                            par_exchange_mass

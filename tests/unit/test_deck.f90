@@ -5,7 +5,8 @@ program test_deck
    use dx_error, only: error_t, EXIT_INPUT
    use dx_assert, only: check, check_close, assert_summary
    use dx_log, only: log_set_quiet
-   use dx_model, only: model_t, ETYPE_HEX8_1PT, ETYPE_HEX8_SRI
+   use dx_model, only: model_t
+   use dx_element_types, only: ETYPE_HEX8_1PT, ETYPE_HEX8_SRI
    use dx_model_input, only: model_input_t
    use dx_deck, only: read_deck, read_deck_input
    use dx_mat_elastic, only: mat_elastic_t

@@ -8,7 +8,8 @@ program test_hex8
    use dx_model, only: elem_block_t, part_t
    use dx_mat_elastic, only: mat_elastic_t
    use dx_hex8_geometry, only: hex8_bvectors, inv3, XI_NODE, GAMMA_HG
-   use dx_hex8, only: hex8_block, block_result_t
+   use dx_hex8, only: hex8_block
+   use dx_element_types, only: block_result_t
    use dx_assert, only: check, check_close, assert_summary
    implicit none
    type(mat_elastic_t) :: mat

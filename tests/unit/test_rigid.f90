@@ -8,7 +8,8 @@
 !> deck's *MAT_RIGID CON1/CON2, prescribed rigid motion and merged mass (3900 to 1e-13).
 program test_rigid
    use dx_kinds, only: wp
-   use dx_rigid_mass, only: hex_moments, inertia_about, principal_axes, rotation_about
+   use dx_rigid_mass, only: inertia_about, principal_axes, rotation_about
+   use dx_element_types, only: elem_moments, ETYPE_HEX8_1PT
    use dx_assert, only: check, check_close, assert_summary
    use dx_error, only: error_t
    use dx_model, only: model_t
@@ -28,7 +29,7 @@ program test_rigid
    do k = 1, 8
       xe(:, k) = xe(:, k) + [10.0_wp, -3.0_wp, 2.0_wp]
    end do
-   call hex_moments(xe, [9.0_wp, -2.0_wp, 1.0_wp], vol, m1, m2)
+   call elem_moments(ETYPE_HEX8_1PT, xe, [9.0_wp, -2.0_wp, 1.0_wp], vol, m1, m2)
    call check_close(vol, h*(a*a + a*b + b*b)/3.0_wp, 0.0_wp, 1.0e-13_wp, 'frustum volume')
    xc = [9.0_wp, -2.0_wp, 1.0_wp] + m1/vol
    zc = h*(a*a + 2*a*b + 3*b*b)/(4*(a*a + a*b + b*b))

@@ -1,0 +1,58 @@
+!> The element seam: the one pass the explicit cycle calls per block (element_block_pass),
+!> dispatched once per block (never per element) on the block's element type to its family
+!> kernel, and the per-block set-up steps that depend on the family (mass share of the
+!> element time-step bound). The family facts (nodes, faces, edges, volume, moments, lumped
+!> mass, XDMF cell, partition weight), the pass result and the error codes are the table of
+!> dx_element_types, re-exported here.
+!> Families: hexahedron ELFORM 1 and 2 (dx_hex8: Flanagan & Belytschko 1981, IJNME
+!> 17:679-706; Hughes 1980, IJNME 15:1413-1418), tetrahedron ELFORM 10 (dx_tet4: one-point
+!> constant-strain tetrahedron; Zienkiewicz, Taylor & Zhu 2013, ch. 6).
+module dx_element
+   use dx_kinds, only: wp
+   use dx_model, only: elem_block_t, part_t
+   use dx_material, only: material_t
+   use dx_element_types, only: block_result_t, family_t, element_family, ELEM_ERR_NEGVOL, &
+                               ELEM_ERR_MATERIAL, ETYPE_TET4
+   use dx_hex8, only: hex8_block, hex8_mass_share
+   use dx_tet4, only: tet4_block
+   implicit none
+   private
+   public :: element_block_pass, element_mass_share, block_result_t, family_t, element_family
+   public :: ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL
+
+contains
+
+   !> One explicit pass over a block: x = x(n), v = v(n-1/2), dt_old = dt(n-1/2). Updates
+   !> stress/history to t(n), subtracts the internal force from f, returns the block's
+   !> smallest element step, energy increments and first error.
+   subroutine element_block_pass(blk, mat, part, x, v, dt_old, f, res)
+      type(elem_block_t), intent(inout) :: blk
+      class(material_t), intent(in) :: mat
+      type(part_t), intent(in) :: part
+      real(wp), intent(in) :: x(:, :), v(:, :)
+      real(wp), intent(in) :: dt_old
+      real(wp), intent(inout) :: f(:, :)
+      type(block_result_t), intent(out) :: res
+      select case (blk%etype)
+      case (ETYPE_TET4)
+         call tet4_block(blk, mat, part, x, v, dt_old, f, res)
+      case default
+         call hex8_block(blk, mat, part, x, v, dt_old, f, res)
+      end select
+   end subroutine element_block_pass
+
+   !> After the lumped masses are known: the family's own-mass share of the element time-step
+   !> bound (hexahedra of one-element-wide blocks; dx_hex8). mass, cnodes: the masses and
+   !> constrained nodes as the block's connectivity indexes them.
+   subroutine element_mass_share(blk, rho, mass, cnodes)
+      type(elem_block_t), intent(inout) :: blk
+      real(wp), intent(in) :: rho, mass(:)
+      integer, intent(in) :: cnodes(:)
+      select case (blk%etype)
+      case (ETYPE_TET4)
+         if (allocated(blk%phim)) deallocate(blk%phim)
+      case default
+         call hex8_mass_share(blk, rho, mass, cnodes)
+      end select
+   end subroutine element_mass_share
+end module dx_element

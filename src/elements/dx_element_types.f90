@@ -1,0 +1,255 @@
+!> The element-family table: every fact about an element family that code outside
+!> src/elements/ needs, keyed by the element type (etype) of a block. Nodes per element, faces
+!> (node lists, outward by the right-hand rule; a triangle repeats its third node, the
+!> *SET_SEGMENT convention) and edges, volume and first/second moments (rigid-body mass
+!> properties), the lumped-mass share of each node, the XDMF cell type and the partition cost
+!> weight. A new family adds a row here and a kernel behind dx_element's element_block_pass;
+!> consumers (model build, mass lumping, contact and rigid surfaces, rigid mass, plot writers,
+!> partitioner, MPI pieces) ask this table and never name a family.
+!> Uses base only (as the *_types modules of the physics folders), so dx_model can hold and
+!> re-export it.
+!> Hexahedron (ELFORM 1, 2): LS-DYNA node order; exact trilinear volume (2x2x2 Gauss, exact
+!> for the trilinear map) and moments (3x3x3 Gauss: x_i x_j det J has degree <= 4 in each
+!> natural coordinate; Hughes, The Finite Element Method, 1987, sec. 3.8).
+!> Tetrahedron (ELFORM 10): linear shape functions, closed-form volume det[x2-x1,x3-x1,x4-x1]/6
+!> and moments int x dV = V xbar, int x_i x_j dV = V/20 (sum_a x_ai x_aj + 16 xbar_i xbar_j)
+!> (the exact integral of a quadratic over a simplex: Zienkiewicz, Taylor & Zhu, The Finite
+!> Element Method: Its Basis and Fundamentals, 7th ed., 2013, eq. 6.29 / Table 6.3).
+!> Element error codes and the result record of one block pass live here too (dx_element).
+module dx_element_types
+   use dx_kinds, only: wp, huge_wp
+   use dx_vec3, only: cross
+   ! the hexahedron's volume and moments live in dx_hex8_geometry (a module of their own: not
+   ! inlined here, so their results keep the bits they had in dx_model_build / dx_rigid_mass)
+   use dx_hex8_geometry, only: hex_volume, hex_moments
+   implicit none
+   private
+   public :: family_t, element_family, elem_volume, elem_moments, elem_length, block_result_t
+   public :: ETYPE_HEX8_1PT, ETYPE_HEX8_SRI, ETYPE_TET4, ETYPE_DEFAULT
+   public :: MAX_NEN, MAX_FACE_NODES, MAX_FACES
+   public :: ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, etype_of_elform, ETYPES
+   public :: solid_shape
+
+   !> element types (the block's etype): LS-DYNA's *SECTION_SOLID ELFORM numbers
+   integer, parameter :: ETYPE_HEX8_1PT = 1   !< one-point, uniform strain, hourglass control
+   integer, parameter :: ETYPE_HEX8_SRI = 2   !< 2x2x2 selectively reduced (mean dilatation)
+   integer, parameter :: ETYPE_TET4 = 10      !< 4-node tetrahedron, one point, constant strain
+   integer, parameter :: ETYPE_DEFAULT = ETYPE_HEX8_1PT   !< a block built without a section
+   !> every element type, one per family first (lookups by nen or XDMF code take the first)
+   integer, parameter :: ETYPES(3) = [ETYPE_HEX8_1PT, ETYPE_TET4, ETYPE_HEX8_SRI]
+   integer, parameter :: MAX_NEN = 8          !< most nodes of any family (*ELEMENT_SOLID card)
+   integer, parameter :: MAX_FACE_NODES = 4   !< most nodes of a face (a segment)
+   integer, parameter :: MAX_FACES = 6        !< most faces of a family
+
+   !> element error codes of a block pass
+   integer, parameter :: ELEM_ERR_NEGVOL = 1, ELEM_ERR_MATERIAL = 2
+
+   !> one family: the facts its consumers need
+   type :: family_t
+      character(8) :: name = ''            !< plot connectivity dataset /mesh/<name>
+      character(16) :: xdmf = ''           !< XDMF TopologyType of a single-family mesh
+      integer :: xdmf_code = 0             !< XDMF cell code in a Mixed topology
+      integer :: nen = 0                   !< nodes per element (conn(nen, nel))
+      integer :: nip = 1                   !< integration points
+      integer :: nfaces = 0, nedges = 0
+      integer :: hgmodes = 0               !< hourglass modes (stiffness state per element)
+      integer :: faces(MAX_FACE_NODES, MAX_FACES) = 0   !< local face nodes, outward normal
+      integer :: edges(2, 12) = 0                       !< local edge end nodes
+      real(wp) :: mass_share = 0.0_wp      !< lumped mass of each node: rho V0 * mass_share
+      integer :: weight = 1                !< partition cost weight (measured ns/element-cycle)
+   end type family_t
+
+   !> results of one block pass
+   type :: block_result_t
+      real(wp) :: dt = huge_wp        !< smallest element time step (without TSSFAC)
+      integer :: imin = 0             !< its position in the block
+      integer :: ibad = 0             !< first element in error (position), 0 = none
+      integer :: errcode = 0
+      real(wp) :: deint = 0.0_wp      !< internal energy increment of the block
+      real(wp) :: dehg = 0.0_wp       !< hourglass energy increment of the block
+      !> internal power sigma:D V - q B.v at t(n) with v(n-1/2): the caller adds
+      !> (dt(n+1/2) - dt(n-1/2))/4 times it to report the energy at t(n) (see centred_work)
+      real(wp) :: pend = 0.0_wp
+   end type block_result_t
+
+   integer, parameter :: HEX_FACES(4, 6) = reshape([1, 4, 3, 2,  5, 6, 7, 8,  1, 2, 6, 5, &
+                                                    2, 3, 7, 6,  3, 4, 8, 7,  4, 1, 5, 8], [4, 6])
+   integer, parameter :: HEX_EDGES(2, 12) = reshape([1, 2,  2, 3,  3, 4,  4, 1,  5, 6,  6, 7, &
+                                                     7, 8,  8, 5,  1, 5,  2, 6,  3, 7,  4, 8], &
+                                                    [2, 12])
+   !> tetrahedron faces (positive volume: node 4 on the side of (x2-x1)x(x3-x1))
+   integer, parameter :: TET_FACES(4, 4) = reshape([1, 3, 2, 2,  1, 2, 4, 4,  2, 3, 4, 4, &
+                                                    1, 4, 3, 3], [4, 4])
+   integer, parameter :: TET_EDGES(2, 6) = reshape([1, 2,  2, 3,  3, 1,  1, 4,  2, 4,  3, 4], &
+                                                   [2, 6])
+
+contains
+
+   !> The family of element type etype (an unknown type gives nen = 0).
+   pure function element_family(etype) result(f)
+      integer, intent(in) :: etype
+      type(family_t) :: f
+      select case (etype)
+      case (ETYPE_HEX8_1PT, ETYPE_HEX8_SRI)
+         f%name = 'hex8'; f%xdmf = 'Hexahedron'; f%xdmf_code = 9
+         f%nen = 8; f%nfaces = 6; f%nedges = 12
+         f%faces(:, 1:6) = HEX_FACES
+         f%edges(:, 1:12) = HEX_EDGES
+         f%mass_share = 0.125_wp
+         f%hgmodes = 4
+         f%nip = 1; f%weight = 1
+         ! ELFORM 2 measured at about 8x ELFORM 1 per element-cycle (docs/design.md,
+         ! "Partition weights")
+         if (etype == ETYPE_HEX8_SRI) then
+            f%nip = 8; f%weight = 8
+         end if
+      case (ETYPE_TET4)
+         f%name = 'tet4'; f%xdmf = 'Tetrahedron'; f%xdmf_code = 6
+         f%nen = 4; f%nfaces = 4; f%nedges = 6
+         f%faces(:, 1:4) = TET_FACES
+         f%edges(:, 1:6) = TET_EDGES
+         f%mass_share = 0.25_wp
+         f%nip = 1; f%weight = 1
+      end select
+   end function element_family
+
+   !> Element type of a *SECTION_SOLID ELFORM (0: not supported).
+   pure integer function etype_of_elform(elform) result(etype)
+      integer, intent(in) :: elform
+      select case (elform)
+      case (2)
+         etype = ETYPE_HEX8_SRI
+      case (10)
+         etype = ETYPE_TET4
+      case default
+         etype = ETYPE_HEX8_1PT
+      end select
+   end function etype_of_elform
+
+   !> Element type and nodes of one *ELEMENT_SOLID card c(1:8) (dense nodes, in place) of a
+   !> part whose section gives etype; nen = nodes of the resulting family, ok = .false. for
+   !> repeated nodes the family does not accept. A family of fewer nodes than the card (the
+   !> tetrahedron, written N1 N2 N3 N4 N4 N4 N4 N4 or N1 N2 N3 N3 N4 N4 N4 N4) takes the
+   !> distinct nodes in the order they first appear. A hexahedron card with repeated nodes is
+   !> a degenerate hexahedron (LS-DYNA, *ELEMENT_SOLID): a tetrahedron N4=N3, N5=N6=N7=N8 or
+   !> a pentahedron N4=N3, N8=N7; it stays a hexahedron (exact volume and B vectors of the
+   !> collapsed trilinear map, mass rho V/8 per corner) unless *CONTROL_SOLID ESORT >= 1
+   !> sorts the tetrahedra to ELFORM 10 (LS-DYNA Keyword User's Manual, *CONTROL_SOLID).
+   !> ESORT would sort pentahedra to ELFORM 15, which dynx does not have: they stay
+   !> degenerate hexahedra.
+   pure subroutine solid_shape(esort, c, etype, nen, ok)
+      integer, intent(in) :: esort
+      integer, intent(inout) :: c(:)
+      integer, intent(inout) :: etype
+      integer, intent(out) :: nen
+      logical, intent(out) :: ok
+      type(family_t) :: fam
+      integer :: u(size(c)), k, m
+      m = 0
+      do k = 1, size(c)
+         if (m > 0) then
+            if (any(u(1:m) == c(k))) cycle
+         end if
+         m = m + 1
+         u(m) = c(k)
+      end do
+      fam = element_family(etype)
+      nen = fam%nen
+      ok = .true.
+      if (m == size(c) .and. nen == size(c)) return
+      if (nen < size(c)) then             ! a section of a smaller family
+         ok = m == nen
+         if (ok) c(1:nen) = u(1:nen)
+         return
+      end if
+      if (m == 4 .and. c(5) == c(6) .and. c(6) == c(7) .and. c(7) == c(8)) then
+         if (c(4) == c(3) .and. esort < 1) return          ! degenerate tetrahedron
+         if (esort >= 1) then                              ! sorted to ELFORM 10
+            etype = etype_of_elform(10)
+            fam = element_family(etype)
+            nen = fam%nen
+            c(1:nen) = u(1:nen)
+            return
+         end if
+      end if
+      if (m == 6 .and. c(4) == c(3) .and. c(8) == c(7)) return   ! degenerate pentahedron
+      ok = .false.
+   end subroutine solid_shape
+
+   !> Exact volume of one element of type etype with node coordinates xe(3, nen).
+   pure function elem_volume(etype, xe) result(vol)
+      integer, intent(in) :: etype
+      real(wp), intent(in) :: xe(:, :)
+      real(wp) :: vol
+      select case (etype)
+      case (ETYPE_TET4)
+         vol = tet_volume(xe)
+      case default
+         vol = hex_volume(xe)
+      end select
+   end function elem_volume
+
+   !> vol = int dV, m1 = int (x - xref) dV, m2 = int (x - xref)(x - xref)^T dV over one element
+   !> of type etype with node coordinates xe(3, nen); exact.
+   pure subroutine elem_moments(etype, xe, xref, vol, m1, m2)
+      integer, intent(in) :: etype
+      real(wp), intent(in) :: xe(:, :), xref(3)
+      real(wp), intent(out) :: vol, m1(3), m2(3, 3)
+      select case (etype)
+      case (ETYPE_TET4)
+         call tet_moments(xe, xref, vol, m1, m2)
+      case default
+         call hex_moments(xe, xref, vol, m1, m2)
+      end select
+   end subroutine elem_moments
+
+   !> Characteristic length of one element for its time step: V/A_max (largest face area by
+   !> the cross product of the face diagonals; a triangle face repeats a node) for the
+   !> hexahedron, LS-DYNA's choice for solids; the smallest altitude 3V/A_max for the
+   !> tetrahedron (LS-DYNA Theory Manual, "Time Step Control").
+   pure function elem_length(etype, xe, vol) result(l)
+      integer, intent(in) :: etype
+      real(wp), intent(in) :: xe(:, :), vol
+      real(wp) :: l
+      type(family_t) :: f
+      real(wp) :: amax, a(3)
+      integer :: k
+      f = element_family(etype)
+      amax = 0.0_wp
+      do k = 1, f%nfaces
+         a = 0.5_wp*cross(xe(:, f%faces(3, k)) - xe(:, f%faces(1, k)), &
+                          xe(:, f%faces(4, k)) - xe(:, f%faces(2, k)))
+         amax = max(amax, norm2(a))
+      end do
+      l = vol/amax
+      if (etype == ETYPE_TET4) l = 3.0_wp*l
+   end function elem_length
+
+   pure function tet_volume(xe) result(vol)
+      real(wp), intent(in) :: xe(:, :)
+      real(wp) :: vol
+      real(wp) :: a(3), b(3), c(3)
+      a = xe(:, 2) - xe(:, 1); b = xe(:, 3) - xe(:, 1); c = xe(:, 4) - xe(:, 1)
+      vol = (a(1)*(b(2)*c(3) - b(3)*c(2)) - a(2)*(b(1)*c(3) - b(3)*c(1)) &
+             + a(3)*(b(1)*c(2) - b(2)*c(1)))/6.0_wp
+   end function tet_volume
+
+   pure subroutine tet_moments(xe, xref, vol, m1, m2)
+      real(wp), intent(in) :: xe(:, :), xref(3)
+      real(wp), intent(out) :: vol, m1(3), m2(3, 3)
+      real(wp) :: xl(3, 4), xb(3)
+      integer :: k, i, j
+      do k = 1, 4
+         xl(:, k) = xe(:, k) - xref
+      end do
+      vol = tet_volume(xl)
+      xb = 0.25_wp*(xl(:, 1) + xl(:, 2) + xl(:, 3) + xl(:, 4))
+      m1 = vol*xb
+      do j = 1, 3
+         do i = 1, 3
+            m2(i, j) = vol/20.0_wp*(sum(xl(i, :)*xl(j, :)) + 16.0_wp*xb(i)*xb(j))
+         end do
+      end do
+   end subroutine tet_moments
+
+end module dx_element_types

@@ -1,0 +1,291 @@
+!> Tet4 element kernel over one element block (ELFORM 10 of *SECTION_SOLID): the 4-node
+!> linear tetrahedron with one integration point, constant strain (Zienkiewicz, Taylor & Zhu,
+!> The Finite Element Method: Its Basis and Fundamentals, 7th ed., 2013, sec. 6.2;
+!> Belytschko, Liu & Moran, Nonlinear Finite Elements for Continua and Structures, 2000,
+!> sec. 4.5). The gradient vectors B_I = int dN_I/dx dV = dV/dx_I are exact: with
+!> a = x2 - x1, b = x3 - x1, c = x4 - x1: 6V = a.(b x c), 6 B2 = b x c, 6 B3 = c x a,
+!> 6 B4 = a x b, B1 = -(B2 + B3 + B4). Constant strain, so no hourglass modes and no control.
+!> The cycle is dx_hex8's one-point pass with these B: strain increment and spin at the
+!> mid-step geometry, Jaumann rotation, one material dispatch per block, DYNA bulk viscosity
+!> with l = V**(1/3), the centred work of stress and viscosity (V is cubic in x, so Simpson's
+!> rule of centred_work is exact here as for the hexahedron), force scatter f_iI = sig_ij B_jI.
+!> Stable step: dt_e = L/(Q + sqrt(Q**2 + c**2)) as for the hexahedron, with L the smallest
+!> altitude of the tetrahedron, 3V/A_max = V/max_I |B_I| (|B_I| is a third of the area of the
+!> face opposite node I); LS-DYNA's length for tetrahedra (LS-DYNA Theory Manual, "Time Step
+!> Control", solid elements; Ansys LS-DYNA help, "Characteristic Length (LS-DYNA)").
+module dx_tet4
+   use, intrinsic :: iso_fortran_env, only: int64
+   use dx_kinds, only: wp, nv_chunk, huge_wp
+   use dx_model, only: elem_block_t, part_t
+   use dx_material, only: material_t
+   use dx_element_types, only: block_result_t, ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL
+   implicit none
+   private
+   public :: tet4_block, tet4_bvectors
+
+   integer, parameter :: NEN = 4
+
+contains
+
+   !> B vectors (nv, 4) per direction and volumes of n tetrahedra with node coordinates x,y,z.
+   pure subroutine tet4_bvectors(n, x, y, z, bx, by, bz, vol)
+      integer, intent(in) :: n
+      real(wp), dimension(:, :), intent(in) :: x, y, z
+      real(wp), dimension(:, :), intent(out) :: bx, by, bz
+      real(wp), intent(out) :: vol(:)
+      real(wp), parameter :: c6 = 1.0_wp/6.0_wp
+      real(wp) :: a1, a2, a3, b1, b2, b3, d1, d2, d3
+      integer :: i
+      do i = 1, n
+         a1 = x(i, 2) - x(i, 1); a2 = y(i, 2) - y(i, 1); a3 = z(i, 2) - z(i, 1)
+         b1 = x(i, 3) - x(i, 1); b2 = y(i, 3) - y(i, 1); b3 = z(i, 3) - z(i, 1)
+         d1 = x(i, 4) - x(i, 1); d2 = y(i, 4) - y(i, 1); d3 = z(i, 4) - z(i, 1)
+         bx(i, 2) = c6*(b2*d3 - b3*d2); by(i, 2) = c6*(b3*d1 - b1*d3)
+         bz(i, 2) = c6*(b1*d2 - b2*d1)
+         bx(i, 3) = c6*(d2*a3 - d3*a2); by(i, 3) = c6*(d3*a1 - d1*a3)
+         bz(i, 3) = c6*(d1*a2 - d2*a1)
+         bx(i, 4) = c6*(a2*b3 - a3*b2); by(i, 4) = c6*(a3*b1 - a1*b3)
+         bz(i, 4) = c6*(a1*b2 - a2*b1)
+         bx(i, 1) = -(bx(i, 2) + bx(i, 3) + bx(i, 4))
+         by(i, 1) = -(by(i, 2) + by(i, 3) + by(i, 4))
+         bz(i, 1) = -(bz(i, 2) + bz(i, 3) + bz(i, 4))
+         vol(i) = a1*bx(i, 2) + a2*by(i, 2) + a3*bz(i, 2)
+      end do
+   end subroutine tet4_bvectors
+
+   !> One explicit pass over a block of tetrahedra: x = x(n), v = v(n-1/2), dt_old =
+   !> dt(n-1/2). Updates stress/history to t(n) and subtracts the internal force from f.
+   subroutine tet4_block(blk, mat, part, x, v, dt_old, f, res)
+      type(elem_block_t), intent(inout) :: blk
+      class(material_t), intent(in) :: mat
+      type(part_t), intent(in) :: part
+      real(wp), intent(in) :: x(:, :), v(:, :)
+      real(wp), intent(in) :: dt_old
+      real(wp), intent(inout) :: f(:, :)
+      type(block_result_t), intent(out) :: res
+      real(wp), dimension(nv_chunk, NEN) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm
+      real(wp), dimension(nv_chunk, NEN) :: fx, fy, fz
+      real(wp), dimension(nv_chunk) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive
+      real(wp), dimension(nv_chunk) :: bv, vold, lcb, wo, wn, de, e1, e2, e3, e4
+      real(wp) :: lg(nv_chunk, 9), de6(nv_chunk, 6), so(nv_chunk, 6), sn(nv_chunk, 6)
+      real(wp) :: deps(blk%nel, 6)
+      real(wp) :: dtl, hdt, d1, d2, d3, d4, d5, d6
+      integer :: ierr(nv_chunk)
+      logical :: failed(nv_chunk)
+      integer :: i, k, n, nn
+      if (.not. allocated(blk%ework)) allocate(blk%ework(blk%nel, 4), source=0.0_wp)
+      n = blk%nel
+      hdt = 0.5_wp*dt_old
+      do k = 1, NEN
+         do i = 1, n
+            nn = blk%conn(k, i)
+            xe(i, k) = x(1, nn); ye(i, k) = x(2, nn); ze(i, k) = x(3, nn)
+            vx(i, k) = v(1, nn); vy(i, k) = v(2, nn); vz(i, k) = v(3, nn)
+            xm(i, k) = xe(i, k) - hdt*vx(i, k)
+            ym(i, k) = ye(i, k) - hdt*vy(i, k)
+            zm(i, k) = ze(i, k) - hdt*vz(i, k)
+         end do
+      end do
+      ! ---- mid-step B: velocity gradient times V, L_ij V = v_iI B_jI
+      call tet4_bvectors(n, xm, ym, zm, bx, by, bz, volm)
+      lg(1:n, :) = 0.0_wp
+      do k = 1, NEN
+         do i = 1, n
+            lg(i, 1) = lg(i, 1) + vx(i, k)*bx(i, k)
+            lg(i, 2) = lg(i, 2) + vy(i, k)*by(i, k)
+            lg(i, 3) = lg(i, 3) + vz(i, k)*bz(i, k)
+            lg(i, 4) = lg(i, 4) + vx(i, k)*by(i, k)
+            lg(i, 5) = lg(i, 5) + vy(i, k)*bx(i, k)
+            lg(i, 6) = lg(i, 6) + vy(i, k)*bz(i, k)
+            lg(i, 7) = lg(i, 7) + vz(i, k)*by(i, k)
+            lg(i, 8) = lg(i, 8) + vz(i, k)*bx(i, k)
+            lg(i, 9) = lg(i, 9) + vx(i, k)*bz(i, k)
+         end do
+      end do
+      do i = 1, n
+         ierr(i) = 0
+         if (.not. (volm(i) > 0.0_wp)) ierr(i) = ELEM_ERR_NEGVOL
+         if (.not. (volm(i) > 0.0_wp)) volm(i) = 1.0_wp
+         alive(i) = merge(0.0_wp, 1.0_wp, blk%failed(i))
+         dtl = dt_old/volm(i)
+         de6(i, 1) = lg(i, 1)*dtl
+         de6(i, 2) = lg(i, 2)*dtl
+         de6(i, 3) = lg(i, 3)*dtl
+         de6(i, 4) = 0.5_wp*(lg(i, 4) + lg(i, 5))*dtl
+         de6(i, 5) = 0.5_wp*(lg(i, 6) + lg(i, 7))*dtl
+         de6(i, 6) = 0.5_wp*(lg(i, 8) + lg(i, 9))*dtl
+         w12(i) = 0.5_wp*(lg(i, 4) - lg(i, 5))*dtl
+         w23(i) = 0.5_wp*(lg(i, 6) - lg(i, 7))*dtl
+         w31(i) = 0.5_wp*(lg(i, 8) - lg(i, 9))*dtl
+         trd(i) = (lg(i, 1) + lg(i, 2) + lg(i, 3))/volm(i)
+      end do
+      do k = 1, 6
+         deps(1:n, k) = de6(1:n, k)
+      end do
+      ! ---- geometry at t(n): forces, volume, time step; B(n).v(n-1/2) for the viscous work
+      call tet4_bvectors(n, xe, ye, ze, bx, by, bz, vol)
+      bv(1:n) = 0.0_wp
+      do k = 1, NEN
+         do i = 1, n
+            bv(i) = bv(i) + bx(i, k)*vx(i, k) + by(i, k)*vy(i, k) + bz(i, k)*vz(i, k)
+         end do
+      end do
+      do i = 1, n
+         vold(i) = blk%vol0(i)*blk%relvol(i)
+         if (.not. (vol(i) > 0.0_wp)) ierr(i) = ELEM_ERR_NEGVOL
+         if (.not. (vol(i) > 0.0_wp)) vol(i) = 1.0_wp
+         rv(i) = vol(i)/blk%vol0(i)
+         blk%relvol(i) = rv(i)
+         ein(i) = blk%eint(i)/blk%vol0(i)
+      end do
+      call cube_roots(n, vol, lcb)
+      ! ---- stress: Jaumann rotation by the spin increment (first order), then the material
+      do k = 1, 6
+         so(1:n, k) = blk%sig(1:n, k, 1)
+      end do
+      do i = 1, n
+         d1 = 2.0_wp*(w12(i)*so(i,4) - w31(i)*so(i,6))
+         d2 = 2.0_wp*(w23(i)*so(i,5) - w12(i)*so(i,4))
+         d3 = 2.0_wp*(w31(i)*so(i,6) - w23(i)*so(i,5))
+         d4 = w12(i)*(so(i,2) - so(i,1)) + w23(i)*so(i,6) - w31(i)*so(i,5)
+         d5 = w23(i)*(so(i,3) - so(i,2)) + w31(i)*so(i,4) - w12(i)*so(i,6)
+         d6 = w31(i)*(so(i,1) - so(i,3)) + w12(i)*so(i,5) - w23(i)*so(i,4)
+         so(i,1) = so(i,1) + d1; so(i,2) = so(i,2) + d2; so(i,3) = so(i,3) + d3
+         so(i,4) = so(i,4) + d4; so(i,5) = so(i,5) + d5; so(i,6) = so(i,6) + d6
+      end do
+      do k = 1, 6
+         blk%sig(1:n, k, 1) = so(1:n, k)
+      end do
+      call mat%update(n, dt_old, deps, rv, ein, blk%sig(:, :, 1), blk%hv(:, :, 1), ierr)
+      call mat%fails(n, blk%hv(:, :, 1), failed)
+      call mat%wave_speed(n, rv, blk%hv(:, :, 1), c)
+      do i = 1, n
+         if (failed(i) .and. .not. blk%failed(i)) blk%failed(i) = .true.
+      end do
+      do k = 1, 6
+         do i = 1, n
+            sn(i, k) = blk%sig(i, k, 1)
+            if (blk%failed(i)) blk%sig(i, k, 1) = 0.0_wp
+         end do
+      end do
+      ! ---- bulk viscosity and the centred work of stress and viscosity
+      do i = 1, n
+         q(i) = 0.0_wp
+         if (trd(i) < 0.0_wp) q(i) = mat%ro/rv(i)*lcb(i)*(part%q1*lcb(i)*trd(i)**2 &
+                                     - part%q2*c(i)*trd(i))
+         wo(i) = volm(i)*(so(i,1)*de6(i,1) + so(i,2)*de6(i,2) + so(i,3)*de6(i,3) &
+                 + 2.0_wp*(so(i,4)*de6(i,4) + so(i,5)*de6(i,5) + so(i,6)*de6(i,6)))
+         wn(i) = volm(i)*(sn(i,1)*de6(i,1) + sn(i,2)*de6(i,2) + sn(i,3)*de6(i,3) &
+                 + 2.0_wp*(sn(i,4)*de6(i,4) + sn(i,5)*de6(i,5) + sn(i,6)*de6(i,6)))
+      end do
+      e1(1:n) = blk%ework(1:n, 1); e2(1:n) = blk%ework(1:n, 2)
+      e3(1:n) = blk%ework(1:n, 3); e4(1:n) = blk%ework(1:n, 4)
+      do i = 1, n
+         call centred_work(e1(i), e2(i), e3(i), e4(i), dt_old, wo(i), wn(i), q(i), vol(i), &
+                           vold(i), bv(i), trd(i)*volm(i), de(i))
+      end do
+      blk%ework(1:n, 1) = e1(1:n); blk%ework(1:n, 2) = e2(1:n)
+      blk%ework(1:n, 3) = e3(1:n); blk%ework(1:n, 4) = e4(1:n)
+      res%deint = 0.0_wp
+      res%pend = 0.0_wp
+      res%dehg = 0.0_wp
+      do i = 1, n
+         de(i) = de(i)*alive(i)
+         blk%eint(i) = blk%eint(i) + de(i)
+         res%deint = res%deint + de(i)
+         res%pend = res%pend + alive(i)*(e4(i) - e2(i))
+         if (blk%failed(i)) alive(i) = 0.0_wp
+      end do
+      ! ---- internal force f_iI = (sig_ij - q delta_ij) B_jI, scattered (subtracted)
+      do k = 1, NEN
+         do i = 1, n
+            fx(i, k) = alive(i)*((sn(i,1) - q(i))*bx(i,k) + sn(i,4)*by(i,k) + sn(i,6)*bz(i,k))
+            fy(i, k) = alive(i)*(sn(i,4)*bx(i,k) + (sn(i,2) - q(i))*by(i,k) + sn(i,5)*bz(i,k))
+            fz(i, k) = alive(i)*(sn(i,6)*bx(i,k) + sn(i,5)*by(i,k) + (sn(i,3) - q(i))*bz(i,k))
+         end do
+      end do
+      do k = 1, NEN
+         do i = 1, n
+            nn = blk%conn(k, i)
+            f(1, nn) = f(1, nn) - fx(i, k)
+            f(2, nn) = f(2, nn) - fy(i, k)
+            f(3, nn) = f(3, nn) - fz(i, k)
+         end do
+      end do
+      call stable_time_step(blk, part, bx, by, bz, vol, trd, c, res)
+      do i = 1, n
+         if (ierr(i) /= 0) then
+            res%ibad = i
+            res%errcode = merge(ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, ierr(i) == ELEM_ERR_NEGVOL)
+            exit
+         end if
+      end do
+   end subroutine tet4_block
+
+   !> Smallest element step L/(Q + sqrt(Q**2 + c**2)), L = V/max_I |B_I| (the smallest
+   !> altitude), Q = Q2*c + Q1*L*|e_kk| (compression only); eroded elements do not count.
+   subroutine stable_time_step(blk, part, bx, by, bz, vol, trd, c, res)
+      type(elem_block_t), intent(in) :: blk
+      type(part_t), intent(in) :: part
+      real(wp), intent(in) :: bx(:, :), by(:, :), bz(:, :), vol(:), trd(:), c(:)
+      type(block_result_t), intent(inout) :: res
+      real(wp) :: lc, qb, trde, b2
+      integer :: i, k
+      do i = 1, blk%nel
+         b2 = 0.0_wp
+         do k = 1, NEN
+            b2 = max(b2, bx(i, k)**2 + by(i, k)**2 + bz(i, k)**2)
+         end do
+         lc = vol(i)/sqrt(b2)
+         qb = 0.0_wp
+         if (trd(i) < 0.0_wp) qb = part%q2*c(i) + part%q1*lc*abs(trd(i))
+         trde = lc/(qb + sqrt(qb*qb + c(i)*c(i)))
+         if (blk%failed(i)) trde = huge_wp
+         if (trde < res%dt) then
+            res%dt = trde; res%imin = i
+         end if
+      end do
+   end subroutine stable_time_step
+
+   !> l = x**(1/3) from exactly rounded operations (dx_hex8's cube_roots: the same bits in
+   !> every SIMD lane, so an element's result does not depend on its position in its block).
+   subroutine cube_roots(n, x, l)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: x(:)
+      real(wp), intent(out) :: l(:)
+      integer(int64), parameter :: CBRT_BIAS = 3071306043645493248_int64
+      real(wp) :: y, r, r3
+      integer :: i
+      do i = 1, n
+         y = max(x(i), 1.0e-90_wp)
+         r = transfer(int(real(transfer(y, 0_int64), wp)/3.0_wp, int64) + CBRT_BIAS, 1.0_wp)
+         r3 = r*r*r
+         r = r*(r3 + 2.0_wp*y)/(2.0_wp*r3 + y)
+         r3 = r*r*r
+         r = r*(r3 + 2.0_wp*y)/(2.0_wp*r3 + y)
+         r = r - (r*r*r - y)/(3.0_wp*r*r)
+         l(i) = merge(r, 0.0_wp, x(i) > 0.0_wp)
+      end do
+   end subroutine cube_roots
+
+   !> Internal-energy increment of one element (dx_hex8's centred_work: the work of the
+   !> stress and viscosity forces, the exact partner of the centred kinetic energy).
+   pure subroutine centred_work(s1, s2, s3, s4, dt, wo, wn, q, vol, vol_old, bvn, bvm, de)
+      real(wp), intent(inout) :: s1, s2, s3, s4
+      real(wp), intent(in) :: dt, wo, wn, q, vol, vol_old, bvn, bvm
+      real(wp), intent(out) :: de
+      real(wp) :: bvp, pn
+      de = 0.0_wp
+      pn = 0.0_wp
+      if (dt > 0.0_wp) then
+         bvp = 6.0_wp*(vol - vol_old)/dt - 4.0_wp*bvm - bvn
+         pn = wn/dt
+         de = 0.5_wp*(wo + wn) + 0.25_wp*(dt - s3)*(s4 - wo/dt) &
+              - (0.25_wp*(s3 + dt)*s1*bvp + 0.25_wp*(dt - s3)*s2 + 0.5_wp*dt*q*bvn)
+      end if
+      s1 = q
+      s2 = q*bvn
+      s3 = dt
+      s4 = pn
+   end subroutine centred_work
+end module dx_tet4
