@@ -14,6 +14,7 @@ cd "$(dirname "$0")/.." || exit 2
 DYNX=${1:-bin/dynx}
 DECK=decks/taylor_bar/deck.k
 work=build/diskfull
+umount "$work/mnt" 2>/dev/null     # left mounted by an interrupted earlier run
 rm -rf "$work"
 mkdir -p "$work"
 mode=ulimit

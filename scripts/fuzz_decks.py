@@ -261,6 +261,10 @@ def run_one(args, idx, name, text, files, base, workdir, dynx, timeout):
         f.write(text)
     env = dict(os.environ)
     env['ASAN_OPTIONS'] = 'detect_leaks=0:halt_on_error=1:abort_on_error=0'
+    if name.startswith('restart-dump'):
+        # a damaged dump's HDF5 metadata can ask the library for an absurd buffer: malloc
+        # returns NULL (as without the sanitizer) and HDF5 reports an error; ASan would abort
+        env['ASAN_OPTIONS'] += ':allocator_may_return_null=1'
     env['UBSAN_OPTIONS'] = 'print_stacktrace=1:halt_on_error=1'
     env['GFORTRAN_ERROR_BACKTRACE'] = '1'
     try:
@@ -282,6 +286,8 @@ def run_one(args, idx, name, text, files, base, workdir, dynx, timeout):
         err = p.stderr.decode('latin-1') + p.stdout.decode('latin-1')[-2000:]
     except Exception as e:   # pragma: no cover
         rc, err = 1, 'fuzz driver: %s' % e
+    # the NULL from the allocator (above) is announced by a warning; the rest is judged
+    err = re.sub(r'==\d+==WARNING: AddressSanitizer failed to allocate[^\n]*\n?', '', err)
     ok, outcome, cls, first = classify(rc, err)
     if name.startswith('restart-dump') and not ok and outcome.startswith('exit 2 without'):
         ok, outcome = True, 'exit 2'     # a dump's message names the dump, not a deck line

@@ -241,6 +241,7 @@ contains
       type(family_t) :: fam
       logical :: ok
       real(wp), allocatable :: vol(:)
+      real(wp) :: hb(3), hm
       character(:), allocatable :: w
       ne = inp%ne
       model%ne = ne
@@ -300,10 +301,13 @@ contains
                   '(volume '//rstr(vol(e))//' <= 0; check the node order N1..N8)')
                return
             end if
-            ! zero volume within round-off of the element's size (1e-10 of the
-            ! cube of its bounding box: a flattened element whose nodes are not quite coplanar)
-            if (vol(e) <= 1.0e-10_wp*maxval(maxval(model%x0(:, conn(:, e)), dim=2) - &
-                                                 minval(model%x0(:, conn(:, e)), dim=2))**3) then
+            ! zero volume within round-off: below 1e-12 of the cube of the element's largest
+            ! extent (a plate passes up to aspect 1e12, a needle up to 1e6). Half extents hb,
+            ! divided one at a time: no overflow for huge coordinates (vol > 0, so hm > 0).
+            hb = 0.5_wp*maxval(model%x0(:, conn(:, e)), dim=2) - &
+                 0.5_wp*minval(model%x0(:, conn(:, e)), dim=2)
+            hm = maxval(hb)
+            if (vol(e)/hm/hm/hm/8.0_wp <= 1.0e-12_wp) then
                call set_error(error, w//'element '//str(lab)//' has zero volume at t = 0 '// &
                   '(volume '//rstr(vol(e))//'; flat or collapsed: check its nodes N1..N8)')
                return
