@@ -187,8 +187,12 @@ contains
          kb = model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%bulk
          a = seg_area(model%x0, s%seg(:, i), s%nsn(i))
          p%area(i) = a
-         p%kseg(i) = sf*kb*a*a/v
-         p%depth(i) = 0.5_wp*v/a
+         p%kseg(i) = 0.0_wp        ! a collapsed face (zero area, as degenerate solids have)
+         p%depth(i) = 0.0_wp       ! or a zero-volume owner carries no contact stiffness
+         if (a > 0.0_wp .and. v > 0.0_wp) then
+            p%kseg(i) = sf*kb*a*a/v
+            p%depth(i) = 0.5_wp*v/a
+         end if
       end do
       if (present(own)) then
          p%nsseg = own%nseg
