@@ -186,9 +186,9 @@ contains
          if (allocated(error)) return
          call get_int(deck, blk, ic, 4, w, 'EOSID', 0, p%eosid, error)
          if (allocated(error)) return
-         if (p%eosid /= 0) then
-            call field_error(deck, blk, ic, 4, w, 'EOSID', 'equations of state are not '// &
-                             'supported (the supported materials take none)', error)
+         if (p%eosid < 0) then
+            call field_error(deck, blk, ic, 4, w, 'EOSID', 'equation of state id must be '// &
+                             '>= 0, got '//str(p%eosid), error)
             return
          end if
          call get_int(deck, blk, ic, 5, w, 'HGID', 0, p%hgid, error)
