@@ -87,7 +87,7 @@ contains
                   cycle
                end if
                call set_error(error, deck%files(blk%ifile)%s//':'//str(blk%line)// &
-                              ': unknown keyword *'//blk%name)
+                              ': unknown keyword *'//blk%name//unknown_model_hint(blk%name))
                return
             end if
             call reg%e(k)%read(deck, blk, inp, error)
