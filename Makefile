@@ -9,7 +9,7 @@
 #   make mpi-sweep     every regression deck serially and at NP 2, 3, 4: bitwise equal (about 15 min)
 SHELL := /bin/sh
 FC := h5pfc
-SRC_DIRS := base linalg parallel model materials deck elements rigid contact loads io solvers
+SRC_DIRS := base linalg parallel model materials materials/eos deck elements rigid contact loads io solvers
 # src/tools/: dynx_*.f90 are the tool programs, dx_*.f90 their modules (in the library)
 LIB_SRC := $(foreach d,$(SRC_DIRS),$(wildcard src/$(d)/*.f90)) $(wildcard src/tools/dx_*.f90)
 PROG_SRC := src/main/dynx.f90 $(wildcard src/tools/dynx_*.f90)
@@ -26,7 +26,7 @@ REL_FLAGS := $(COMMON) -O3 -march=native -funroll-loops
 # temporaries go on the stack (small, bounded); everything else keeps heap temporaries, so
 # model-sized arrays (1e5-1e6 nodes) never overflow the 8 MB default stack
 KERNEL_OBJ := $(addprefix build/release/,dx_hex8.o dx_hex8_geometry.o dx_tet4.o \
-              $(notdir $(patsubst %.f90,%.o,$(wildcard src/materials/*.f90))))
+              $(notdir $(patsubst %.f90,%.o,$(wildcard src/materials/*.f90 src/materials/eos/*.f90))))
 $(KERNEL_OBJ): REL_FLAGS += -fstack-arrays
 DBG_FLAGS := $(COMMON) -O0 -g -std=f2008 -Wall -Wextra -Wimplicit-interface -fcheck=all \
              -ffpe-trap=invalid,zero,overflow -fbacktrace -Wno-unused-dummy-argument \

@@ -6,8 +6,8 @@ module dx_error
    use, intrinsic :: iso_c_binding, only: c_int
    implicit none
    private
-   public :: error_t, set_error, EXIT_INPUT, EXIT_NUMERIC, EXIT_IO, EXIT_OK, exit_process, &
-             EXIT_CHECKPOINT
+   public :: error_t, set_error, set_field_error, EXIT_INPUT, EXIT_NUMERIC, EXIT_IO, EXIT_OK, &
+             exit_process, EXIT_CHECKPOINT
 
    integer, parameter :: EXIT_OK = 0, EXIT_INPUT = 2, EXIT_NUMERIC = 3, EXIT_IO = 4
    integer, parameter :: EXIT_CHECKPOINT = 5   !< clean stop with a restart dump
@@ -15,6 +15,8 @@ module dx_error
    type :: error_t
       character(:), allocatable :: message   !< full message, may span lines
       integer :: code = EXIT_INPUT           !< exit code the main program uses
+      character(:), allocatable :: field     !< the input field at fault (set_field_error)
+      character(:), allocatable :: detail    !< the message without the 'field NAME: ' prefix
    end type error_t
 
    interface
@@ -45,4 +47,15 @@ contains
       error%code = EXIT_INPUT
       if (present(code)) error%code = code
    end subroutine set_error
+
+   !> An error about one input field: message 'field NAME: what', with the name and the bare
+   !> text kept apart so a reader can point at the field's columns (dx_card) unparsed.
+   subroutine set_field_error(error, field, what, code)
+      type(error_t), allocatable, intent(inout) :: error
+      character(*), intent(in) :: field, what
+      integer, intent(in), optional :: code
+      call set_error(error, 'field '//field//': '//what, code)
+      error%field = field
+      error%detail = what
+   end subroutine set_field_error
 end module dx_error

@@ -9,7 +9,7 @@ module dx_deck
    use dx_deck_cards, only: deck_t, read_cards
    use dx_deck_registry, only: registry_t
    use dx_read_nodes_elements, only: register_nodes_elements
-   use dx_read_materials, only: register_materials
+   use dx_read_materials, only: register_materials, unknown_model_hint
    use dx_read_controls, only: register_controls
    use dx_read_sets, only: register_sets
    use dx_read_loads, only: register_loads
@@ -87,7 +87,7 @@ contains
                   cycle
                end if
                call set_error(error, deck%files(blk%ifile)%s//':'//str(blk%line)// &
-                              ': unknown keyword *'//blk%name)
+                              ': unknown keyword *'//blk%name//unknown_model_hint(blk%name))
                return
             end if
             call reg%e(k)%read(deck, blk, inp, error)

@@ -10,8 +10,8 @@ module dx_read_controls
    use dx_error, only: error_t
    use dx_strings, only: str, rstr
    use dx_log, only: log_warn
-   use dx_deck_cards, only: deck_t, block_t, get_int, get_real, field_error, block_error, &
-                            std_widths, check_max_cards
+   use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, get_int, field_error, &
+                            block_error, std_widths, check_max_cards
    use dx_deck_registry, only: registry_t
    use dx_model_input, only: model_input_t, origin, label_list_t
    implicit none
@@ -35,20 +35,6 @@ contains
       call reg%add('DATABASE_HISTORY_NODE_SET', read_history)
    end subroutine register_controls
 
-   !> error unless field k of card ic is blank or 0
-   subroutine must_be_zero(deck, blk, ic, k, w, fname, why, error)
-      type(deck_t), intent(in) :: deck
-      type(block_t), intent(in) :: blk
-      integer, intent(in) :: ic, k, w(:)
-      character(*), intent(in) :: fname, why
-      type(error_t), allocatable, intent(out) :: error
-      real(wp) :: v
-      call get_real(deck, blk, ic, k, w, fname, 0.0_wp, v, error)
-      if (allocated(error)) return
-      if (v /= 0.0_wp) call field_error(deck, blk, ic, k, w, fname, 'value '//rstr(v)// &
-                                        ' is not supported: '//why, error)
-   end subroutine must_be_zero
-
    subroutine need_card(deck, blk, what, error)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
@@ -63,80 +49,65 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8)
-      w = std_widths(blk, 8)
+      type(card_t) :: c
       call need_card(deck, blk, 'ENDTIM ENDCYC DTMIN ENDENG ENDMAS NOSOL', error)
       if (allocated(error)) return
       call check_max_cards(deck, blk, 1, error)
       if (allocated(error)) return
-      associate (c => inp%ctrl)
-         call get_real(deck, blk, 1, 1, w, 'ENDTIM', 0.0_wp, c%endtim, error)
-         if (allocated(error)) return
-         call get_int(deck, blk, 1, 2, w, 'ENDCYC', 0, c%endcyc, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, 1, 3, w, 'DTMIN', 0.0_wp, c%dtmin, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, 1, 4, w, 'ENDENG', 0.0_wp, c%endeng, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, 1, 5, w, 'ENDMAS', 0.0_wp, c%endmas, error)
-         if (allocated(error)) return
+      call deck_cursor(deck, blk, c)
+      associate (t => inp%ctrl)
+         call c%real('ENDTIM', 0.0_wp, t%endtim)
+         call c%int('ENDCYC', 0, t%endcyc)
+         call c%real('DTMIN', 0.0_wp, t%dtmin)
+         call c%real('ENDENG', 0.0_wp, t%endeng)
+         call c%real('ENDMAS', 0.0_wp, t%endmas)
          ! LS-DYNA: stop when the mass added by mass scaling (*CONTROL_TIMESTEP DT2MS < 0)
          ! reaches ENDMAS percent of the model's mass. dynx adds no mass, so it never acts.
-         if (c%endmas /= 0.0_wp) call log_warn(deck%files(blk%ifile)%s//':'// &
-            str(blk%cards(1)%line)//': *CONTROL_TERMINATION ENDMAS = '//rstr(c%endmas)// &
+         if (c%ok() .and. t%endmas /= 0.0_wp) call log_warn(deck%files(blk%ifile)%s//':'// &
+            str(blk%cards(1)%line)//': *CONTROL_TERMINATION ENDMAS = '//rstr(t%endmas)// &
             ' has no effect: it limits the mass added by mass scaling, and dynx adds none '// &
             '(DT2MS is not applied)')
       end associate
-      call must_be_zero(deck, blk, 1, 6, w, 'NOSOL', 'dynx always solves', error)
+      call c%zero('NOSOL', 'dynx always solves')
+      call c%done(error)
       if (allocated(error)) return
       inp%has_termination = .true.
       inp%term_src = origin(blk%ifile, blk%cards(1)%line, blk%name)
    end subroutine read_termination
 
-   !> DTINIT TSSFAC ISDO TSLIMT DT2MS LCTM ERODE MS1ST
+   !> DTINIT TSSFAC ISDO TSLIMT DT2MS LCTM ERODE MS1ST; card 2 (mass scaling) must be empty
    subroutine read_timestep(deck, blk, inp, error)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), k
+      integer :: k
+      type(card_t) :: c
       character(len=7), parameter :: card2(8) = ['DT2MSF ', 'DT2MSLC', 'IMSCL  ', 'UNUSED ', &
          'UNUSED ', 'RMSCL  ', 'EMSCL  ', 'IHDO   ']
-      w = std_widths(blk, 8)
       call need_card(deck, blk, 'DTINIT TSSFAC ISDO TSLIMT DT2MS LCTM ERODE MS1ST', error)
       if (allocated(error)) return
-      associate (c => inp%ctrl)
-         call get_real(deck, blk, 1, 1, w, 'DTINIT', 0.0_wp, c%dtinit, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, 1, 2, w, 'TSSFAC', 0.9_wp, c%tssfac, error)
-         if (allocated(error)) return
-         if (c%tssfac == 0.0_wp) c%tssfac = 0.9_wp
-         if (c%tssfac < 0.0_wp) then
-            call field_error(deck, blk, 1, 2, w, 'TSSFAC', 'time step curves (TSSFAC < 0) '// &
-                             'are not supported', error)
-            return
-         end if
-         call get_int(deck, blk, 1, 3, w, 'ISDO', 0, c%isdo, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, 1, 4, w, 'TSLIMT', 0.0_wp, c%tslimt, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, 1, 5, w, 'DT2MS', 0.0_wp, c%dt2ms, error)
-         if (allocated(error)) return
-         call get_int(deck, blk, 1, 6, w, 'LCTM', 0, inp%lctm, error)
-         if (allocated(error)) return
-         call get_int(deck, blk, 1, 7, w, 'ERODE', 0, c%erode, error)
-         if (allocated(error)) return
+      call deck_cursor(deck, blk, c)
+      associate (t => inp%ctrl)
+         call c%real('DTINIT', 0.0_wp, t%dtinit)
+         call c%real('TSSFAC', 0.9_wp, t%tssfac)
+         if (t%tssfac == 0.0_wp) t%tssfac = 0.9_wp
+         if (c%ok() .and. t%tssfac < 0.0_wp) call c%fail('TSSFAC', 'time step curves '// &
+                                                         '(TSSFAC < 0) are not supported')
+         call c%int('ISDO', 0, t%isdo)
+         call c%real('TSLIMT', 0.0_wp, t%tslimt)
+         call c%real('DT2MS', 0.0_wp, t%dt2ms)
+         call c%int('LCTM', 0, inp%lctm)
+         call c%int('ERODE', 0, t%erode)
       end associate
-      call must_be_zero(deck, blk, 1, 8, w, 'MS1ST', 'first-step-only mass scaling', error)
-      if (allocated(error)) return
-      ! card 2 (mass scaling variants) may be present but must be empty
-      call check_max_cards(deck, blk, 2, error)
-      if (allocated(error)) return
+      call c%zero('MS1ST', 'first-step-only mass scaling')
+      call c%max_cards(2)
+      call c%next()
       do k = 1, 8
-         call must_be_zero(deck, blk, 2, k, w, trim(card2(k)), &
-                           'card 2 options of *CONTROL_TIMESTEP', error)
-         if (allocated(error)) return
+         call c%zero(trim(card2(k)), 'card 2 options of *CONTROL_TIMESTEP')
       end do
+      call c%done(error)
+      if (allocated(error)) return
       inp%timestep_src = origin(blk%ifile, blk%cards(1)%line, blk%name)
    end subroutine read_timestep
 
@@ -146,27 +117,22 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8)
-      w = std_widths(blk, 8)
+      type(card_t) :: c
       call need_card(deck, blk, 'IHQ QH', error)
       if (allocated(error)) return
       call check_max_cards(deck, blk, 1, error)
       if (allocated(error)) return
-      call get_int(deck, blk, 1, 1, w, 'IHQ', 1, inp%ctrl%ihq, error)
-      if (allocated(error)) return
-      if (inp%ctrl%ihq == 0) inp%ctrl%ihq = 1
-      if (inp%ctrl%ihq < 1 .or. inp%ctrl%ihq > 5) then
-         call field_error(deck, blk, 1, 1, w, 'IHQ', 'hourglass type '//str(inp%ctrl%ihq)// &
-                          ' is not supported (supported: 1 to 5)', error)
-         return
-      end if
-      call get_real(deck, blk, 1, 2, w, 'QH', 0.1_wp, inp%ctrl%qh, error)
-      if (allocated(error)) return
-      if (inp%ctrl%qh == 0.0_wp) inp%ctrl%qh = 0.1_wp
-      if (inp%ctrl%qh < 0.0_wp) then
-         call field_error(deck, blk, 1, 2, w, 'QH', 'must be >= 0, got '// &
-                          rstr(inp%ctrl%qh), error)
-      end if
+      call deck_cursor(deck, blk, c)
+      associate (t => inp%ctrl)
+         call c%int('IHQ', 1, t%ihq)
+         if (t%ihq == 0) t%ihq = 1
+         if (c%ok() .and. (t%ihq < 1 .or. t%ihq > 5)) call c%fail('IHQ', 'hourglass type '// &
+            str(t%ihq)//' is not supported (supported: 1 to 5)')
+         call c%real('QH', 0.1_wp, t%qh)
+         if (t%qh == 0.0_wp) t%qh = 0.1_wp
+         if (c%ok() .and. t%qh < 0.0_wp) call c%fail('QH', 'must be >= 0, got '//rstr(t%qh))
+      end associate
+      call c%done(error)
    end subroutine read_control_hourglass
 
    !> ESORT FMATRX NIPTETS SWLOCL PSFAIL T10JTOL ICOH TET13K: ESORT (0: degenerate solids keep
@@ -196,33 +162,25 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8)
-      w = std_widths(blk, 8)
+      type(card_t) :: c
       call need_card(deck, blk, 'Q1 Q2 TYPE', error)
       if (allocated(error)) return
       call check_max_cards(deck, blk, 1, error)
       if (allocated(error)) return
-      associate (c => inp%ctrl)
-         call get_real(deck, blk, 1, 1, w, 'Q1', 1.5_wp, c%q1, error)
-         if (allocated(error)) return
-         if (c%q1 == 0.0_wp) c%q1 = 1.5_wp
-         call get_real(deck, blk, 1, 2, w, 'Q2', 0.06_wp, c%q2, error)
-         if (allocated(error)) return
-         if (c%q2 == 0.0_wp) c%q2 = 0.06_wp
-         if (c%q1 < 0.0_wp .or. c%q2 < 0.0_wp) then
-            call field_error(deck, blk, 1, merge(1, 2, c%q1 < 0.0_wp), w, &
-                             merge('Q1', 'Q2', c%q1 < 0.0_wp), 'must be >= 0', error)
-            return
-         end if
-         call get_int(deck, blk, 1, 3, w, 'TYPE', 1, c%ibq, error)
-         if (allocated(error)) return
-         if (c%ibq == 0) c%ibq = 1
-         if (c%ibq /= 1 .and. c%ibq /= -1 .and. c%ibq /= -2) then
-            call field_error(deck, blk, 1, 3, w, 'TYPE', 'bulk viscosity type '// &
-                             str(c%ibq)//' is not supported (supported: 1, -1, -2)', error)
-            return
-         end if
+      call deck_cursor(deck, blk, c)
+      associate (t => inp%ctrl)
+         call c%real('Q1', 1.5_wp, t%q1)
+         if (t%q1 == 0.0_wp) t%q1 = 1.5_wp
+         call c%real('Q2', 0.06_wp, t%q2)
+         if (t%q2 == 0.0_wp) t%q2 = 0.06_wp
+         if (c%ok() .and. t%q1 < 0.0_wp) call c%fail('Q1', 'must be >= 0')
+         if (c%ok() .and. t%q2 < 0.0_wp) call c%fail('Q2', 'must be >= 0')
+         call c%int('TYPE', 1, t%ibq)
+         if (t%ibq == 0) t%ibq = 1
+         if (c%ok() .and. t%ibq /= 1 .and. t%ibq /= -1 .and. t%ibq /= -2) call c%fail('TYPE', &
+            'bulk viscosity type '//str(t%ibq)//' is not supported (supported: 1, -1, -2)')
       end associate
+      call c%done(error)
    end subroutine read_bulk_viscosity
 
    !> DT LCDT BEAM NPLTC PSETID
@@ -231,26 +189,21 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), beam
-      w = std_widths(blk, 8)
+      integer :: beam
+      type(card_t) :: c
       call need_card(deck, blk, 'DT LCDT BEAM NPLTC PSETID', error)
       if (allocated(error)) return
       call check_max_cards(deck, blk, 1, error)
       if (allocated(error)) return
-      call get_real(deck, blk, 1, 1, w, 'DT', 0.0_wp, inp%d3plot_dt, error)
+      call deck_cursor(deck, blk, c)
+      call c%real('DT', 0.0_wp, inp%d3plot_dt)
+      call c%int('LCDT', 0, inp%d3plot_lcdt)
+      call c%int('BEAM', 0, beam)   ! beams only: no effect
+      call c%int('NPLTC', 0, inp%d3plot_npltc)
+      call c%zero('PSETID', 'output of a part subset')
+      if (c%ok() .and. inp%d3plot_dt < 0.0_wp) call c%fail('DT', 'must be >= 0')
+      call c%done(error)
       if (allocated(error)) return
-      call get_int(deck, blk, 1, 2, w, 'LCDT', 0, inp%d3plot_lcdt, error)
-      if (allocated(error)) return
-      call get_int(deck, blk, 1, 3, w, 'BEAM', 0, beam, error)   ! beams only: no effect
-      if (allocated(error)) return
-      call get_int(deck, blk, 1, 4, w, 'NPLTC', 0, inp%d3plot_npltc, error)
-      if (allocated(error)) return
-      call must_be_zero(deck, blk, 1, 5, w, 'PSETID', 'output of a part subset', error)
-      if (allocated(error)) return
-      if (inp%d3plot_dt < 0.0_wp) then
-         call field_error(deck, blk, 1, 1, w, 'DT', 'must be >= 0', error)
-         return
-      end if
       inp%d3plot_src = origin(blk%ifile, blk%cards(1)%line, blk%name)
    end subroutine read_d3plot
 
@@ -260,22 +213,19 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), binary
+      integer :: binary
       real(wp) :: dt
-      w = std_widths(blk, 8)
+      type(card_t) :: c
       call need_card(deck, blk, 'DT BINARY LCUR IOOPT', error)
       if (allocated(error)) return
       call check_max_cards(deck, blk, 1, error)
       if (allocated(error)) return
-      call get_real(deck, blk, 1, 1, w, 'DT', 0.0_wp, dt, error)
-      if (allocated(error)) return
-      if (dt < 0.0_wp) then
-         call field_error(deck, blk, 1, 1, w, 'DT', 'must be >= 0', error)
-         return
-      end if
-      call get_int(deck, blk, 1, 2, w, 'BINARY', 0, binary, error)   ! dynx writes ASCII
-      if (allocated(error)) return
-      call must_be_zero(deck, blk, 1, 3, w, 'LCUR', 'output interval curves', error)
+      call deck_cursor(deck, blk, c)
+      call c%real('DT', 0.0_wp, dt)
+      if (c%ok() .and. dt < 0.0_wp) call c%fail('DT', 'must be >= 0')
+      call c%int('BINARY', 0, binary)   ! dynx writes ASCII
+      call c%zero('LCUR', 'output interval curves')
+      call c%done(error)
       if (allocated(error)) return
       if (blk%base == 'DATABASE_GLSTAT') then
          inp%glstat_dt = dt

@@ -7,8 +7,8 @@ module dx_read_nodes_elements
    use dx_kinds, only: wp
    use dx_error, only: error_t
    use dx_strings, only: str
-   use dx_deck_cards, only: deck_t, block_t, get_int, get_real, field_error, card_error, &
-                            block_error, std_widths, data_start
+   use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, get_int, get_real, &
+                            field_error, card_error, block_error, std_widths, data_start
    use dx_deck_registry, only: registry_t
    use dx_model, only: part_t, section_t, hourglass_t
    use dx_model_input, only: model_input_t, add_node, add_element, origin, input_add_part
@@ -154,65 +154,49 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), ic, v, k
+      integer :: ic, v, k
       type(part_t) :: p
+      type(card_t) :: c
       character(len=6), parameter :: unsup(3) = ['GRAV  ', 'ADPOPT', 'TMID  ']
-      w = std_widths(blk, 8)
       if (blk%n < 2) then
          call block_error(deck, blk, 0, 'missing card 2 (PID SECID MID EOSID HGID GRAV '// &
                           'ADPOPT TMID)', error)
          return
       end if
+      call deck_cursor(deck, blk, c)
       ic = 1
       do while (ic <= blk%n)
          if (ic + 1 > blk%n) then
-            call card_error(deck, blk, ic, 'missing card 2 (PID SECID MID ...) after the '// &
-                            'heading card', error)
-            return
+            call c%fail_card(ic, 'missing card 2 (PID SECID MID ...) after the heading card')
+            exit
          end if
          p = part_t()
-         p%title = trim(adjustl(blk%cards(ic)%text(1:min(70, len(blk%cards(ic)%text)))))
+         call c%seek(ic)
+         p%title = c%text()
+         p%title = trim(adjustl(p%title(1:min(70, len(p%title)))))
          ic = ic + 1
-         call get_int(deck, blk, ic, 1, w, 'PID', 0, p%label, error)
-         if (allocated(error)) return
-         if (p%label <= 0) then
-            call field_error(deck, blk, ic, 1, w, 'PID', 'part id must be > 0, got '// &
-                             str(p%label), error)
-            return
-         end if
-         call get_int(deck, blk, ic, 2, w, 'SECID', 0, p%secid, error)
-         if (allocated(error)) return
-         call get_int(deck, blk, ic, 3, w, 'MID', 0, p%mid, error)
-         if (allocated(error)) return
-         call get_int(deck, blk, ic, 4, w, 'EOSID', 0, p%eosid, error)
-         if (allocated(error)) return
-         if (p%eosid /= 0) then
-            call field_error(deck, blk, ic, 4, w, 'EOSID', 'equations of state are not '// &
-                             'supported (the supported materials take none)', error)
-            return
-         end if
-         call get_int(deck, blk, ic, 5, w, 'HGID', 0, p%hgid, error)
-         if (allocated(error)) return
-         do k = 6, 8
-            call get_int(deck, blk, ic, k, w, trim(unsup(k-5)), 0, v, error)
-            if (allocated(error)) return
-            if (v /= 0) then
-               call field_error(deck, blk, ic, k, w, trim(unsup(k-5)), 'nonzero value '// &
-                                str(v)//' is not supported', error)
-               return
-            end if
+         call c%seek(ic)
+         call c%int('PID', 0, p%label)
+         if (c%ok() .and. p%label <= 0) call c%fail('PID', 'part id must be > 0, got '// &
+                                                    str(p%label))
+         call c%int('SECID', 0, p%secid)
+         call c%int('MID', 0, p%mid)
+         call c%int('EOSID', 0, p%eosid)
+         if (c%ok() .and. p%eosid < 0) call c%fail('EOSID', 'equation of state id must be '// &
+                                                   '>= 0, got '//str(p%eosid))
+         call c%int('HGID', 0, p%hgid)
+         do k = 1, 3
+            call c%int(trim(unsup(k)), 0, v)
+            if (c%ok() .and. v /= 0) call c%fail(trim(unsup(k)), 'nonzero value '//str(v)// &
+                                                 ' is not supported')
          end do
-         if (p%secid <= 0) then
-            call field_error(deck, blk, ic, 2, w, 'SECID', 'a section id is required', error)
-            return
-         end if
-         if (p%mid <= 0) then
-            call field_error(deck, blk, ic, 3, w, 'MID', 'a material id is required', error)
-            return
-         end if
+         if (c%ok() .and. p%secid <= 0) call c%fail('SECID', 'a section id is required')
+         if (c%ok() .and. p%mid <= 0) call c%fail('MID', 'a material id is required')
+         if (.not. c%ok()) exit
          call input_add_part(inp, p, origin(blk%ifile, blk%cards(ic)%line, blk%name))
          ic = ic + 1
       end do
+      call c%done(error)
    end subroutine read_part
 
    !> *SECTION_SOLID: SECID ELFORM AET per card (each after its title card with _TITLE).
@@ -221,46 +205,39 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), ic, step
+      integer :: ic, step
       type(section_t) :: s
-      w = std_widths(blk, 8)
+      type(card_t) :: c
       step = data_start(blk)
       if (blk%n < step) then
          call block_error(deck, blk, 0, 'missing card 1 (SECID ELFORM AET)', error)
          return
       end if
+      call deck_cursor(deck, blk, c)
       ic = step
       do while (ic <= blk%n)
          s = section_t()
          s%title = ''
          if (blk%opt_title) s%title = trim(adjustl(blk%cards(ic-1)%text))
-         call get_int(deck, blk, ic, 1, w, 'SECID', 0, s%label, error)
-         if (allocated(error)) return
-         if (s%label <= 0) then
-            call field_error(deck, blk, ic, 1, w, 'SECID', 'section id must be > 0, got '// &
-                             str(s%label), error)
-            return
-         end if
-         call get_int(deck, blk, ic, 2, w, 'ELFORM', 1, s%elform, error)
-         if (allocated(error)) return
+         call c%seek(ic)
+         call c%int('SECID', 0, s%label)
+         if (c%ok() .and. s%label <= 0) call c%fail('SECID', 'section id must be > 0, got '// &
+                                                    str(s%label))
+         call c%int('ELFORM', 1, s%elform)
          if (s%elform == 0) s%elform = 1
-         if (s%elform /= 1 .and. s%elform /= 2 .and. s%elform /= 10) then
-            call field_error(deck, blk, ic, 2, w, 'ELFORM', 'solid formulation '// &
-               str(s%elform)//' is not supported (supported: 1 one-point, 2 selectively '// &
-               'reduced, 10 one-point tetrahedron)', error)
-            return
-         end if
-         call get_int(deck, blk, ic, 3, w, 'AET', 0, s%aet, error)
-         if (allocated(error)) return
-         if (s%aet /= 0) then
-            call field_error(deck, blk, ic, 3, w, 'AET', 'ambient element types are not '// &
-                             'supported', error)
-            return
-         end if
+         if (c%ok() .and. s%elform /= 1 .and. s%elform /= 2 .and. s%elform /= 10) &
+            call c%fail('ELFORM', 'solid formulation '//str(s%elform)//' is not supported '// &
+                        '(supported: 1 one-point, 2 selectively reduced, 10 one-point '// &
+                        'tetrahedron)')
+         call c%int('AET', 0, s%aet)
+         if (c%ok() .and. s%aet /= 0) call c%fail('AET', 'ambient element types are not '// &
+                                                  'supported')
+         if (.not. c%ok()) exit
          inp%sections = [inp%sections, s]
          inp%section_src = [inp%section_src, origin(blk%ifile, blk%cards(ic)%line, blk%name)]
          ic = ic + step
       end do
+      call c%done(error)
    end subroutine read_section_solid
 
    !> *HOURGLASS: HGID IHQ QM IBQ Q1 Q2 QB/VDC QW; blank or zero values defer to *CONTROL_*.
@@ -269,47 +246,37 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), ic, step
+      integer :: ic, step
       type(hourglass_t) :: h
-      w = std_widths(blk, 8)
+      type(card_t) :: c
       step = data_start(blk)
       if (blk%n < step) then
          call block_error(deck, blk, 0, 'missing card 1 (HGID IHQ QM IBQ Q1 Q2 QB QW)', error)
          return
       end if
+      call deck_cursor(deck, blk, c)
       ic = step
       do while (ic <= blk%n)
          h = hourglass_t()
-         call get_int(deck, blk, ic, 1, w, 'HGID', 0, h%label, error)
-         if (allocated(error)) return
-         if (h%label <= 0) then
-            call field_error(deck, blk, ic, 1, w, 'HGID', 'hourglass id must be > 0, got '// &
-                             str(h%label), error)
-            return
-         end if
-         call get_int(deck, blk, ic, 2, w, 'IHQ', 0, h%ihq, error)
-         if (allocated(error)) return
-         if (h%ihq < 0 .or. h%ihq > 5) then
-            call field_error(deck, blk, ic, 2, w, 'IHQ', 'hourglass type '//str(h%ihq)// &
-                             ' is not supported (supported: 1 to 5)', error)
-            return
-         end if
-         call get_real(deck, blk, ic, 3, w, 'QM', -1.0_wp, h%qm, error)
-         if (allocated(error)) return
-         call get_int(deck, blk, ic, 4, w, 'IBQ', 0, h%ibq, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, ic, 5, w, 'Q1', -1.0_wp, h%q1, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, ic, 6, w, 'Q2', -1.0_wp, h%q2, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, ic, 7, w, 'QB', -1.0_wp, h%qb, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, ic, 8, w, 'QW', -1.0_wp, h%qw, error)
-         if (allocated(error)) return
+         call c%seek(ic)
+         call c%int('HGID', 0, h%label)
+         if (c%ok() .and. h%label <= 0) call c%fail('HGID', 'hourglass id must be > 0, got '// &
+                                                    str(h%label))
+         call c%int('IHQ', 0, h%ihq)
+         if (c%ok() .and. (h%ihq < 0 .or. h%ihq > 5)) call c%fail('IHQ', 'hourglass type '// &
+            str(h%ihq)//' is not supported (supported: 1 to 5)')
+         call c%real('QM', -1.0_wp, h%qm)
+         call c%int('IBQ', 0, h%ibq)
+         call c%real('Q1', -1.0_wp, h%q1)
+         call c%real('Q2', -1.0_wp, h%q2)
+         call c%real('QB', -1.0_wp, h%qb)
+         call c%real('QW', -1.0_wp, h%qw)
+         if (.not. c%ok()) exit
          inp%hourglasses = [inp%hourglasses, h]
          inp%hourglass_src = [inp%hourglass_src, origin(blk%ifile, blk%cards(ic)%line, &
                                                         blk%name)]
          ic = ic + step
       end do
+      call c%done(error)
    end subroutine read_hourglass
 end module dx_read_nodes_elements

@@ -157,16 +157,20 @@ contains
       if (allocated(error)) then
          msg = error%message
          fname = ''
-         k = index(msg, ':')
-         if (msg(1:min(6, len(msg))) == 'field ' .and. k > 7) fname = msg(7:k - 1)
+         if (allocated(error%field)) then
+            fname = error%field
+            msg = error%detail
+         end if
          select case (fname)
-         case ('RO'); call field_error(deck, blk, i0, 2, w, fname, msg(k + 2:), error)
-         case ('E'); call field_error(deck, blk, i0, 3, w, fname, msg(k + 2:), error)
-         case ('PR'); call field_error(deck, blk, i0, 4, w, fname, msg(k + 2:), error)
-         case ('CMO'); call field_error(deck, blk, i0 + 1, 1, w, fname, msg(k + 2:), error)
-         case ('CON1'); call field_error(deck, blk, i0 + 1, 2, w, fname, msg(k + 2:), error)
-         case ('CON2'); call field_error(deck, blk, i0 + 1, 3, w, fname, msg(k + 2:), error)
-         case default; call block_error(deck, blk, i0, msg, error)
+         case ('RO'); call field_error(deck, blk, i0, 2, w, fname, msg, error)
+         case ('E'); call field_error(deck, blk, i0, 3, w, fname, msg, error)
+         case ('PR'); call field_error(deck, blk, i0, 4, w, fname, msg, error)
+         case ('CMO'); call field_error(deck, blk, i0 + 1, 1, w, fname, msg, error)
+         case ('CON1'); call field_error(deck, blk, i0 + 1, 2, w, fname, msg, error)
+         case ('CON2'); call field_error(deck, blk, i0 + 1, 3, w, fname, msg, error)
+         case default
+            msg = error%message
+            call block_error(deck, blk, i0, msg, error)
          end select
          return
       end if

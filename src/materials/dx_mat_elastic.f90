@@ -4,9 +4,10 @@
 !> but only K = 0 (solid) is supported.
 module dx_mat_elastic
    use dx_kinds, only: wp
-   use dx_error, only: error_t, set_error
+   use dx_error, only: error_t, set_error, set_field_error
    use dx_strings, only: rstr
-   use dx_material, only: material_t
+   use dx_card, only: card_t
+   use dx_material, only: material_t, read_mid_ro
    implicit none
    private
    public :: mat_elastic_t, check_elastic_constants
@@ -15,6 +16,7 @@ module dx_mat_elastic
       real(wp) :: e = 0.0_wp, pr = 0.0_wp
       real(wp) :: da = 0.0_wp, db = 0.0_wp, k = 0.0_wp
    contains
+      procedure :: read_cards => elastic_read_cards
       procedure :: setup => elastic_setup
       procedure :: nhist => elastic_nhist
       procedure :: update => elastic_update
@@ -28,24 +30,37 @@ contains
       real(wp), intent(in) :: e, pr
       type(error_t), allocatable, intent(out) :: error
       if (.not. (self%ro > 0.0_wp)) then
-         call set_error(error, 'field RO: density must be > 0, got '//rstr(self%ro)); return
+         call set_field_error(error, 'RO', 'density must be > 0, got '//rstr(self%ro)); return
       end if
       if (.not. (e > 0.0_wp)) then
-         call set_error(error, 'field E: Young''s modulus must be > 0, got '//rstr(e)); return
+         call set_field_error(error, 'E', 'Young''s modulus must be > 0, got '//rstr(e)); return
       end if
       if (.not. (pr > -1.0_wp .and. pr < 0.5_wp)) then
-         call set_error(error, 'field PR: Poisson''s ratio must lie in (-1, 0.5), got '//rstr(pr))
+         call set_field_error(error, 'PR', 'Poisson''s ratio must lie in (-1, 0.5), got '//rstr(pr))
          return
       end if
       self%bulk = e/(3.0_wp*(1.0_wp - 2.0_wp*pr))
       self%shear = e/(2.0_wp*(1.0_wp + pr))
    end subroutine check_elastic_constants
 
+   !> Card 1: MID RO E PR DA DB K.
+   subroutine elastic_read_cards(self, c)
+      class(mat_elastic_t), intent(inout) :: self
+      type(card_t), intent(inout) :: c
+      call read_mid_ro(self, c)
+      call c%real('E', 0.0_wp, self%e)
+      call c%real('PR', 0.0_wp, self%pr)
+      call c%real('DA', 0.0_wp, self%da)
+      call c%real('DB', 0.0_wp, self%db)
+      call c%real('K', 0.0_wp, self%k)
+   end subroutine elastic_read_cards
+
    subroutine elastic_setup(self, error)
       class(mat_elastic_t), intent(inout) :: self
       type(error_t), allocatable, intent(out) :: error
       if (self%k /= 0.0_wp) then
-         call set_error(error, 'field K: the fluid option of *MAT_ELASTIC is not supported'); return
+         call set_field_error(error, 'K', 'the fluid option of *MAT_ELASTIC is not supported')
+         return
       end if
       call check_elastic_constants(self, self%e, self%pr, error)
    end subroutine elastic_setup

@@ -13,9 +13,10 @@
 !> elastic step costs no curve lookup and no square root.
 module dx_mat_piecewise_linear
    use dx_kinds, only: wp
-   use dx_error, only: error_t, set_error
+   use dx_error, only: error_t, set_error, set_field_error
    use dx_strings, only: rstr, str
-   use dx_material, only: material_t
+   use dx_card, only: card_t
+   use dx_material, only: material_t, read_mid_ro
    use dx_mat_elastic, only: check_elastic_constants
    use dx_curve, only: curve_t
    implicit none
@@ -35,6 +36,8 @@ module dx_mat_piecewise_linear
       type(curve_t) :: rate_curve
       logical :: has_rate_curve = .false.
    contains
+      procedure :: read_cards => pl_read_cards
+      procedure :: reads_curves => pl_reads_curves
       procedure :: setup => pl_setup
       procedure :: nhist => pl_nhist
       procedure :: update => pl_update
@@ -45,6 +48,44 @@ module dx_mat_piecewise_linear
 
 contains
 
+   !> Card 1: MID RO E PR SIGY ETAN FAIL TDEL; card 2: C P LCSS LCSR VP LCF;
+   !> cards 3, 4: EPS1-8, ES1-8.
+   subroutine pl_read_cards(self, c)
+      class(mat_piecewise_linear_t), intent(inout) :: self
+      type(card_t), intent(inout) :: c
+      integer :: k, lcf
+      call read_mid_ro(self, c)
+      call c%real('E', 0.0_wp, self%e)
+      call c%real('PR', 0.0_wp, self%pr)
+      call c%real('SIGY', 0.0_wp, self%sigy)
+      call c%real('ETAN', 0.0_wp, self%etan)
+      call c%real('FAIL', 1.0e21_wp, self%fail)
+      call c%real('TDEL', 0.0_wp, self%tdel)
+      if (self%fail == 0.0_wp) self%fail = 1.0e21_wp
+      call c%next()
+      call c%real('C', 0.0_wp, self%c)
+      call c%real('P', 0.0_wp, self%p)
+      call c%int('LCSS', 0, self%lcss)
+      call c%int('LCSR', 0, self%lcsr)
+      call c%real('VP', 0.0_wp, self%vp)
+      call c%int('LCF', 0, lcf)
+      if (c%ok() .and. lcf /= 0) call c%fail('LCF', 'failure strain curves are not supported')
+      call c%next()
+      do k = 1, 8
+         call c%real('EPS'//str(k), 0.0_wp, self%eps(k))
+      end do
+      call c%next()
+      do k = 1, 8
+         call c%real('ES'//str(k), 0.0_wp, self%es(k))
+      end do
+   end subroutine pl_read_cards
+
+   !> The parameter checks wait for the curves when LCSS or LCSR names one.
+   logical function pl_reads_curves(self)
+      class(mat_piecewise_linear_t), intent(in) :: self
+      pl_reads_curves = self%lcss /= 0 .or. self%lcsr /= 0
+   end function pl_reads_curves
+
    subroutine pl_resolve(self, curves, error)
       class(mat_piecewise_linear_t), intent(inout) :: self
       type(curve_t), intent(in) :: curves(:)
@@ -53,7 +94,7 @@ contains
       if (self%lcss /= 0) then
          k = findloc(curves(:)%label, self%lcss, dim=1)
          if (k == 0) then
-            call set_error(error, 'field LCSS: curve '//str(self%lcss)//' is not defined'); return
+            call set_field_error(error, 'LCSS', 'curve '//str(self%lcss)//' is not defined'); return
          end if
          self%hard = curves(k)
          self%bilinear = .false.
@@ -61,7 +102,7 @@ contains
       if (self%lcsr /= 0) then
          k = findloc(curves(:)%label, self%lcsr, dim=1)
          if (k == 0) then
-            call set_error(error, 'field LCSR: curve '//str(self%lcsr)//' is not defined'); return
+            call set_field_error(error, 'LCSR', 'curve '//str(self%lcsr)//' is not defined'); return
          end if
          self%rate_curve = curves(k)
          self%has_rate_curve = .true.
@@ -75,15 +116,17 @@ contains
       call check_elastic_constants(self, self%e, self%pr, error)
       if (allocated(error)) return
       if (self%tdel /= 0.0_wp) then
-         call set_error(error, 'field TDEL: element deletion by time step is not supported'); return
+         call set_field_error(error, 'TDEL', 'element deletion by time step is not supported')
+         return
       end if
       if (self%fail < 0.0_wp) then
-         call set_error(error, 'field FAIL: user failure subroutines (FAIL < 0) are not supported')
+         call set_field_error(error, 'FAIL', 'user failure subroutines (FAIL < 0) are not '// &
+                              'supported')
          return
       end if
       if (self%fail == 0.0_wp) self%fail = 1.0e21_wp
       if (self%vp /= 0.0_wp .and. self%vp /= 1.0_wp) then
-         call set_error(error, 'field VP: must be 0 or 1, got '//rstr(self%vp)); return
+         call set_field_error(error, 'VP', 'must be 0 or 1, got '//rstr(self%vp)); return
       end if
       if (self%c < 0.0_wp .or. self%p < 0.0_wp .or. &
           ((self%c > 0.0_wp) .neqv. (self%p > 0.0_wp))) then
@@ -91,7 +134,7 @@ contains
                         '(or both 0), got '//rstr(self%c)//', '//rstr(self%p)); return
       end if
       if (self%vp == 1.0_wp .and. self%has_rate_curve) then
-         call set_error(error, 'field LCSR: VP = 1 with a rate curve is not supported'); return
+         call set_field_error(error, 'LCSR', 'VP = 1 with a rate curve is not supported'); return
       end if
       if (self%bilinear .and. any(self%es /= 0.0_wp)) then
          ! EPS/ES pairs: the points up to the last with increasing EPS
@@ -110,20 +153,20 @@ contains
       end if
       if (self%bilinear) then
          if (.not. (self%sigy > 0.0_wp)) then
-            call set_error(error, 'field SIGY: yield stress must be > 0, got '//rstr(self%sigy))
+            call set_field_error(error, 'SIGY', 'yield stress must be > 0, got '//rstr(self%sigy))
             return
          end if
          if (self%etan < 0.0_wp .or. self%etan >= self%e) then
-            call set_error(error, 'field ETAN: tangent modulus must lie in [0, E), got '// &
+            call set_field_error(error, 'ETAN', 'tangent modulus must lie in [0, E), got '// &
                            rstr(self%etan)); return
          end if
          self%ep = self%e*self%etan/(self%e - self%etan)
       else
          if (size(self%hard%x) < 1) then
-            call set_error(error, 'field LCSS: the hardening curve has no points'); return
+            call set_field_error(error, 'LCSS', 'the hardening curve has no points'); return
          end if
          if (.not. (self%hard%eval_extrap(0.0_wp) > 0.0_wp)) then
-            call set_error(error, 'field LCSS: the initial yield stress of the curve must be '// &
+            call set_field_error(error, 'LCSS', 'the initial yield stress of the curve must be '// &
                            '> 0, got '//rstr(self%hard%eval_extrap(0.0_wp))); return
          end if
       end if

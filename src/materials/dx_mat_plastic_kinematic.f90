@@ -8,9 +8,10 @@
 !> History: 1 = effective plastic strain, 2..7 = back stress (Voigt).
 module dx_mat_plastic_kinematic
    use dx_kinds, only: wp
-   use dx_error, only: error_t, set_error
+   use dx_error, only: error_t, set_error, set_field_error
    use dx_strings, only: rstr
-   use dx_material, only: material_t
+   use dx_card, only: card_t
+   use dx_material, only: material_t, read_mid_ro
    use dx_mat_elastic, only: check_elastic_constants
    implicit none
    private
@@ -21,6 +22,7 @@ module dx_mat_plastic_kinematic
       real(wp) :: src = 0.0_wp, srp = 0.0_wp, fs = 0.0_wp, vp = 0.0_wp
       real(wp) :: ep = 0.0_wp       !< plastic hardening modulus (derived)
    contains
+      procedure :: read_cards => pk_read_cards
       procedure :: setup => pk_setup
       procedure :: nhist => pk_nhist
       procedure :: update => pk_update
@@ -29,21 +31,38 @@ module dx_mat_plastic_kinematic
 
 contains
 
+   !> Card 1: MID RO E PR SIGY ETAN BETA; card 2: SRC SRP FS VP.
+   subroutine pk_read_cards(self, c)
+      class(mat_plastic_kinematic_t), intent(inout) :: self
+      type(card_t), intent(inout) :: c
+      call read_mid_ro(self, c)
+      call c%real('E', 0.0_wp, self%e)
+      call c%real('PR', 0.0_wp, self%pr)
+      call c%real('SIGY', 0.0_wp, self%sigy)
+      call c%real('ETAN', 0.0_wp, self%etan)
+      call c%real('BETA', 0.0_wp, self%beta)
+      call c%next()
+      call c%real('SRC', 0.0_wp, self%src)
+      call c%real('SRP', 0.0_wp, self%srp)
+      call c%real('FS', 0.0_wp, self%fs)
+      call c%real('VP', 0.0_wp, self%vp)
+   end subroutine pk_read_cards
+
    subroutine pk_setup(self, error)
       class(mat_plastic_kinematic_t), intent(inout) :: self
       type(error_t), allocatable, intent(out) :: error
       call check_elastic_constants(self, self%e, self%pr, error)
       if (allocated(error)) return
       if (.not. (self%sigy > 0.0_wp)) then
-         call set_error(error, 'field SIGY: yield stress must be > 0, got '//rstr(self%sigy))
+         call set_field_error(error, 'SIGY', 'yield stress must be > 0, got '//rstr(self%sigy))
          return
       end if
       if (self%etan < 0.0_wp .or. self%etan >= self%e) then
-         call set_error(error, 'field ETAN: tangent modulus must lie in [0, E), got '// &
+         call set_field_error(error, 'ETAN', 'tangent modulus must lie in [0, E), got '// &
                         rstr(self%etan)); return
       end if
       if (self%beta < 0.0_wp .or. self%beta > 1.0_wp) then
-         call set_error(error, 'field BETA: must lie in [0, 1], got '//rstr(self%beta)); return
+         call set_field_error(error, 'BETA', 'must lie in [0, 1], got '//rstr(self%beta)); return
       end if
       if (self%src < 0.0_wp .or. self%srp < 0.0_wp .or. &
           ((self%src > 0.0_wp) .neqv. (self%srp > 0.0_wp))) then
@@ -51,7 +70,7 @@ contains
                         '(or both 0), got '//rstr(self%src)//', '//rstr(self%srp)); return
       end if
       if (self%vp /= 0.0_wp) then
-         call set_error(error, 'field VP: only VP = 0 (scale yield stress) is supported, got '// &
+         call set_field_error(error, 'VP', 'only VP = 0 (scale yield stress) is supported, got '// &
                         rstr(self%vp)); return
       end if
       self%ep = self%e*self%etan/(self%e - self%etan)

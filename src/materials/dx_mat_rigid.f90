@@ -7,7 +7,7 @@
 !> Hallquist, LS-DYNA Theory Manual, rigid bodies; LS-DYNA Keyword User's Manual Vol. II.
 module dx_mat_rigid
    use dx_kinds, only: wp
-   use dx_error, only: error_t, set_error
+   use dx_error, only: error_t, set_error, set_field_error
    use dx_strings, only: rstr, str
    use dx_material, only: material_t
    use dx_mat_elastic, only: check_elastic_constants
@@ -51,15 +51,17 @@ contains
       call check_elastic_constants(self, self%e, self%pr, error)
       if (allocated(error)) return
       if (self%cmo /= 0.0_wp .and. self%cmo /= 1.0_wp) then
-         call set_error(error, 'field CMO: only 0 (no constraints) and +1 (global CON1, CON2) '// &
+         call set_field_error(error, 'CMO', 'only 0 (no constraints) and +1 (global CON1, '// &
+                              'CON2) '// &
                         'are supported, got '//rstr(self%cmo)); return
       end if
       if (self%con1 < 0 .or. self%con1 > 7) then
-         call set_error(error, 'field CON1: translation constraint code must lie in 0..7, got '// &
+         call set_field_error(error, 'CON1', 'translation constraint code must lie in 0..7, '// &
+                              'got '// &
                         str(self%con1)); return
       end if
       if (self%con2 < 0 .or. self%con2 > 7) then
-         call set_error(error, 'field CON2: rotation constraint code must lie in 0..7, got '// &
+         call set_field_error(error, 'CON2', 'rotation constraint code must lie in 0..7, got '// &
                         str(self%con2)); return
       end if
    end subroutine rigid_setup

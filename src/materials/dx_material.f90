@@ -3,13 +3,23 @@
 !> Conventions: Voigt order xx,yy,zz,xy,yz,zx; tension positive; strain increments are
 !> tensor components (deps(:,4) = d_xy*dt, not engineering shear); stress arrives already
 !> rotated to the end of the step (Jaumann rate, done by the element).
+!> Each model reads its own *MAT_ card(s) through the card cursor (read_cards, dx_card), after
+!> the plug-in pattern of neko's run-time selectable types (ExtremeFLOW/neko, init(json)
+!> factories); the registry that maps keywords to models is dx_mat_factory.
+!> tangent: the consistent tangent d(sig_new)/d(deps) of one stress update; the default is
+!> central finite differences of update (Miehe 1996, "Numerical computation of algorithmic
+!> (consistent) tangent moduli in large-strain computational inelasticity", CMAME 134).
+!> An equation of state (dx_eos) is attached by the part (EOSID) to hydro models only.
 module dx_material
    use dx_kinds, only: wp
    use dx_error, only: error_t
+   use dx_strings, only: str
    use dx_curve, only: curve_t
+   use dx_card, only: card_t
+   use dx_eos, only: eos_t
    implicit none
    private
-   public :: material_t, mat_holder_t
+   public :: material_t, mat_holder_t, read_mid_ro, fd_step
 
    type, abstract :: material_t
       integer :: label = 0             !< material id (MID) from the deck
@@ -20,6 +30,7 @@ module dx_material
       real(wp) :: shear = 0.0_wp       !< elastic shear modulus G (set by setup)
       integer :: hv_eps_p = 0          !< history offset of effective plastic strain (0: none)
       logical :: is_rigid = .false.
+      class(eos_t), allocatable :: eos !< equation of state from the part's EOSID (hydro models)
    contains
       procedure(setup_i), deferred :: setup          !< check parameters, derive K, G, ...
       procedure(nhist_i), deferred :: nhist          !< history variables per integration point
@@ -27,6 +38,10 @@ module dx_material
       procedure :: wave_speed => default_wave_speed  !< dilatational wave speed per point
       procedure :: fails => default_fails            !< element erosion flag per point
       procedure :: resolve_curves => default_resolve !< look up curve labels after the deck is read
+      procedure :: read_cards => default_read_cards  !< its *MAT_ cards, through the card cursor
+      procedure :: reads_curves => default_reads_curves !< setup must wait for the curves
+      procedure :: takes_eos => default_takes_eos    !< may carry an equation of state
+      procedure :: tangent => fd_tangent             !< consistent tangent of one update
    end type material_t
 
    !> A holder so models can keep an array of polymorphic materials.
@@ -62,6 +77,77 @@ module dx_material
    end interface
 
 contains
+
+   !> Card 1 fields 1-2 of every *MAT_: MID (> 0) and RO.
+   subroutine read_mid_ro(self, c)
+      class(material_t), intent(inout) :: self
+      type(card_t), intent(inout) :: c
+      call c%int('MID', 0, self%label)
+      if (c%ok() .and. self%label <= 0) &
+         call c%fail('MID', 'material id must be > 0, got '//str(self%label))
+      call c%real('RO', 0.0_wp, self%ro)
+      self%title = c%title()
+   end subroutine read_mid_ro
+
+   !> A model without its own reader (its keyword is read elsewhere, as *MAT_RIGID is).
+   subroutine default_read_cards(self, c)
+      class(material_t), intent(inout) :: self
+      type(card_t), intent(inout) :: c
+      call c%fail_block(0, 'material type '//str(self%mtype)//' has no card reader')
+   end subroutine default_read_cards
+
+   !> Whether the parameter checks (setup) need the *DEFINE_CURVE data (default: no).
+   logical function default_reads_curves(self)
+      class(material_t), intent(in) :: self
+      default_reads_curves = .false.
+      if (.false.) default_reads_curves = self%label < 0
+   end function default_reads_curves
+
+   !> Whether the model may carry an equation of state (LS-DYNA: hydro models 9, 10, 11, 15).
+   logical function default_takes_eos(self)
+      class(material_t), intent(in) :: self
+      default_takes_eos = .false.
+      if (.false.) default_takes_eos = self%label < 0
+   end function default_takes_eos
+
+   !> Finite-difference step for the tangent at strain increment deps: h = eps**(1/3) times the
+   !> strain scale max(|deps|, 1e-4), the step that balances the round-off error of a central
+   !> difference (~eps |sig|/h) against its truncation error (~h**2 |sig'''|/6).
+   pure real(wp) function fd_step(deps)
+      real(wp), intent(in) :: deps(6)
+      fd_step = epsilon(1.0_wp)**(1.0_wp/3.0_wp)*max(maxval(abs(deps)), 1.0e-4_wp)
+   end function fd_step
+
+   !> Consistent tangent d(i,j) = d sig_i/d deps_j of one update of a single point from
+   !> (sig, hv) by deps (Voigt order; deps(4:6) tensor shear components, so an isotropic
+   !> elastic model gives d(4,4) = 2G), by central differences with step fd_step(deps);
+   !> relvol and eint are held fixed. ierr /= 0 when an update fails.
+   subroutine fd_tangent(self, dt, deps, relvol, eint, sig, hv, d, ierr)
+      class(material_t), intent(in) :: self
+      real(wp), intent(in) :: dt, deps(6), relvol, eint, sig(6), hv(:)
+      real(wp), intent(out) :: d(6, 6)
+      integer, intent(out) :: ierr
+      real(wp) :: h, dp(1, 6), sp(1, 6), sm(1, 6), hp(1, max(1, size(hv)))
+      integer :: j, ie(1)
+      h = fd_step(deps)
+      ierr = 0
+      ie = 0
+      do j = 1, 6
+         dp(1, :) = deps
+         dp(1, j) = deps(j) + h
+         sp(1, :) = sig
+         hp = 0.0_wp
+         hp(1, 1:size(hv)) = hv
+         call self%update(1, dt, dp, [relvol], [eint], sp, hp, ie)
+         dp(1, j) = deps(j) - h
+         sm(1, :) = sig
+         hp = 0.0_wp
+         hp(1, 1:size(hv)) = hv
+         call self%update(1, dt, dp, [relvol], [eint], sm, hp, ie)
+         d(:, j) = (sp(1, :) - sm(1, :))/(2.0_wp*h)
+      end do
+      ierr = ie(1)
+   end subroutine fd_tangent
 
    !> Dilatational wave speed sqrt((K + 4G/3)/rho) with rho = ro/relvol.
    subroutine default_wave_speed(self, nv, relvol, hv, c)

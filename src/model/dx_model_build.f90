@@ -12,8 +12,8 @@ module dx_model_build
    use dx_error, only: error_t, set_error
    use dx_strings, only: str, rstr
    use dx_model, only: model_t, node_set_t, part_set_t, segment_set_t, spc_t, prescribed_t, &
-                       load_node_t, load_segment_t, rigidwall_t, family_t, element_family, &
-                       elem_volume, etype_of_elform, solid_shape, MAX_NEN
+                       part_t, load_node_t, load_segment_t, rigidwall_t, family_t, &
+                       element_family, elem_volume, etype_of_elform, solid_shape, MAX_NEN
    use dx_model_input, only: model_input_t, origin_t, IVEL_SET, IVEL_NODE, IVEL_GEN
    use dx_label_map, only: label_map_t
    use dx_rigid_build, only: build_rigid, build_body_loads
@@ -202,6 +202,8 @@ contains
                               str(p%mid)//' is not defined (*MAT_...)')
                return
             end if
+            call attach_eos(inp, model, p, w, error)
+            if (allocated(error)) return
             p%ihq = c%ihq
             p%qh = c%qh
             p%q1 = c%q1
@@ -229,6 +231,78 @@ contains
          end associate
       end do
    end subroutine build_parts
+
+   !> EOSID of part p: the equation of state of its material. LS-DYNA attaches one only to
+   !> hydro models (types 9, 10, 11, 15; dynx has 9, *MAT_NULL), which need one on solids.
+   !> The material's bulk modulus becomes rho0 c0**2 of the EOS (hourglass and contact scales).
+   subroutine attach_eos(inp, model, p, w, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(inout) :: model
+      type(part_t), intent(in) :: p
+      character(*), intent(in) :: w
+      type(error_t), allocatable, intent(out) :: error
+      character(:), allocatable :: who
+      integer :: k
+      associate (m => model%mats(p%imat)%m)
+         who = w//'part '//str(p%label)//': field EOSID: material '//str(p%mid)//' (type '// &
+               str(m%mtype)//')'
+         if (p%eosid == 0) then
+            if (m%takes_eos()) call set_error(error, who//' needs an equation of state '// &
+                                              '(EOSID of an *EOS_ keyword)')
+            return
+         end if
+         if (.not. m%takes_eos()) then
+            call set_error(error, who//' cannot carry an equation of state (LS-DYNA attaches '// &
+                           'one to hydro types 9, 10, 11, 15 only; EOSID must be 0)')
+            return
+         end if
+         do k = size(inp%eoss), 1, -1
+            if (inp%eoss(k)%e%label == p%eosid) exit
+         end do
+         if (k == 0) then
+            call set_error(error, w//'part '//str(p%label)//': field EOSID: equation of '// &
+                           'state '//str(p%eosid)//' is not defined (*EOS_...)')
+            return
+         end if
+         if (allocated(m%eos)) then
+            if (m%eos%label /= p%eosid) call set_error(error, who//' is already used with '// &
+               'equation of state '//str(m%eos%label)//' (one material per equation of state)')
+            return
+         end if
+         allocate(m%eos, source=inp%eoss(k)%e)
+         m%bulk = m%ro*m%eos%sound_speed2(m%ro, 1.0_wp, m%eos%e0)
+      end associate
+   end subroutine attach_eos
+
+   !> Exact volume of the trilinear hexahedron with corner coordinates xe(3,8)
+   !> (LS-DYNA node order: 1-4 one face counter-clockwise seen from 5-8).
+   pure function hex_volume(xe) result(vol)
+      real(wp), intent(in) :: xe(3, 8)
+      real(wp) :: vol
+      real(wp), parameter :: xi(8) = [-1, 1, 1, -1, -1, 1, 1, -1]*1.0_wp
+      real(wp), parameter :: et(8) = [-1, -1, 1, 1, -1, -1, 1, 1]*1.0_wp
+      real(wp), parameter :: ze(8) = [-1, -1, -1, -1, 1, 1, 1, 1]*1.0_wp
+      real(wp), parameter :: g = 0.577350269189625764509148780502_wp
+      real(wp) :: jac(3, 3), dn(8, 3), a, b, c
+      integer :: ia, ib, ic, k
+      vol = 0.0_wp
+      do ia = -1, 1, 2
+         do ib = -1, 1, 2
+            do ic = -1, 1, 2
+               a = ia*g; b = ib*g; c = ic*g
+               dn(:, 1) = 0.125_wp*xi*(1 + et*b)*(1 + ze*c)
+               dn(:, 2) = 0.125_wp*et*(1 + xi*a)*(1 + ze*c)
+               dn(:, 3) = 0.125_wp*ze*(1 + xi*a)*(1 + et*b)
+               do k = 1, 3
+                  jac(:, k) = matmul(xe, dn(:, k))
+               end do
+               vol = vol + jac(1, 1)*(jac(2, 2)*jac(3, 3) - jac(3, 2)*jac(2, 3)) &
+                         - jac(1, 2)*(jac(2, 1)*jac(3, 3) - jac(3, 1)*jac(2, 3)) &
+                         + jac(1, 3)*(jac(2, 1)*jac(3, 2) - jac(3, 1)*jac(2, 2))
+            end do
+         end do
+      end do
+   end function hex_volume
 
    !> elements: references, degenerate and inverted checks, blocks by part
    subroutine build_elements(inp, model, mp, error)

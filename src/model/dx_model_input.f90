@@ -7,6 +7,7 @@ module dx_model_input
    use dx_strings, only: string_t
    use dx_model, only: part_t, section_t, hourglass_t, control_t
    use dx_material, only: mat_holder_t
+   use dx_eos, only: eos_holder_t
    use dx_curve, only: curve_t
    use dx_rigid_types, only: rigid_input_t
    use dx_load_body, only: body_load_in_t
@@ -125,6 +126,8 @@ module dx_model_input
       type(origin_t), allocatable :: hourglass_src(:)
       type(mat_holder_t), allocatable :: mats(:)
       type(origin_t), allocatable :: mat_src(:)
+      type(eos_holder_t), allocatable :: eoss(:)     !< *EOS_ (attached to parts by EOSID)
+      type(origin_t), allocatable :: eos_src(:)
       type(curve_t), allocatable :: curves(:)
       type(origin_t), allocatable :: curve_src(:)
       type(label_list_t), allocatable :: node_sets(:), part_sets(:)
@@ -165,7 +168,7 @@ contains
                inp%mat_src(0), inp%curves(0), inp%curve_src(0), inp%node_sets(0), &
                inp%part_sets(0), inp%segment_sets(0), inp%spcs(0), inp%motions(0), &
                inp%ivels(0), inp%node_loads(0), inp%seg_loads(0), inp%walls(0), &
-               inp%hist_nodes(0), inp%hist_node_sets(0))
+               inp%hist_nodes(0), inp%hist_node_sets(0), inp%eoss(0), inp%eos_src(0))
       allocate(inp%body_loads(0), inp%rigid%inertias(0), inp%rigid%nrbs(0), &
                inp%rigid%extras(0), inp%rigid%motions(0))
       allocate(inp%node_label(0), inp%x(3, 0), inp%node_tc(0), inp%node_rc(0), &

@@ -1,6 +1,9 @@
 !> Unit tests of the material models against closed-form answers
 !> (physics-references.md section 3.1: uniaxial stress, E = 200 GPa, sigma_y = 250 MPa,
 !> Et = 2 GPa: sigma(0.01) = 267.5 MPa in one step, within 1e-10 relative).
+!> The finite-difference tangent (material_t%tangent) against the analytic elastic tangent and
+!> the analytic consistent tangent of the radial return of *MAT_PLASTIC_KINEMATIC (Simo &
+!> Taylor 1985), and *EOS_LINEAR_POLYNOMIAL / *MAT_NULL against hand-calculated pressures.
 program test_materials
    use dx_kinds, only: wp
    use dx_error, only: error_t
@@ -9,6 +12,8 @@ program test_materials
    use dx_mat_plastic_kinematic, only: mat_plastic_kinematic_t
    use dx_mat_piecewise_linear, only: mat_piecewise_linear_t
    use dx_curve, only: curve_t
+   use dx_mat_null, only: mat_null_t
+   use dx_eos_linear_polynomial, only: eos_linear_polynomial_t
    use dx_assert, only: check, check_close, assert_summary
    implicit none
    type(mat_elastic_t) :: el
@@ -18,6 +23,8 @@ program test_materials
    type(curve_t) :: curves(1)
    real(wp) :: sig(1, 6), hv(1, 7), s, r, g
    real(wp), parameter :: e = 200.0e3_wp, sy = 250.0_wp, et = 2000.0_wp   ! MPa
+   real(wp) :: dfd(6, 6), dan(6, 6), de0(6), h, tol, smax
+   integer :: ierr
 
    ! ---- elastic: pure shear
    el%ro = 7.8e-9_wp; el%e = e; el%pr = 0.3_wp
@@ -113,9 +120,163 @@ program test_materials
    call check_close(r, 0.0_wp, 1.0e-9_wp*sy, 0.0_wp, 'mat24 VP=1 consistency')
    call check_close(sqrt(3.0_wp)*sig(1, 4), sy*(1.0_wp + (hv(1, 1)/1.0e-3_wp/40.0_wp)**0.2_wp), &
                     0.0_wp, 1.0e-10_wp, 'mat24 VP=1 stress on the rate-dependent yield surface')
+
+   ! ---- finite-difference tangent against the analytic elastic tangent. The update is linear
+   ! in deps, so the central difference has no truncation error: only round-off, each stress
+   ! rounded to ~eps*smax and the difference divided by 2h, bounded by 4*eps*smax/h
+   el%ro = 7.8e-9_wp; el%e = e; el%pr = 0.3_wp
+   call el%setup(err)
+   de0 = [1.0e-3_wp, -2.0e-4_wp, 3.0e-4_wp, 1.0e-4_wp, -5.0e-5_wp, 2.0e-4_wp]
+   sig = 0.0_wp
+   sig(1, :) = [100.0_wp, -20.0_wp, 5.0_wp, 30.0_wp, 0.0_wp, -10.0_wp]
+   call el%tangent(1.0_wp, de0, 1.0_wp, 0.0_wp, sig(1, :), hv(1, 1:0), dfd, ierr)
+   call elastic_matrix(el%bulk, el%shear, dan)
+   h = fd_h(de0)
+   smax = maxval(abs(sig)) + maxval(abs(dan))*(maxval(abs(de0)) + h)
+   tol = 4.0_wp*epsilon(1.0_wp)*smax/h
+   call check(ierr == 0, 'tangent: elastic update ok')
+   call check_close(maxval(abs(dfd - dan)), 0.0_wp, tol, 0.0_wp, &
+                    'FD tangent = analytic elastic tangent (round-off bound 4 eps smax/h)')
+
+   ! ---- at a yielded point of *MAT_PLASTIC_KINEMATIC (beta = 0.5, no rate effect): load past
+   ! yield, then the tangent of the next plastic step against the consistent tangent
+   pk = mat_plastic_kinematic_t()
+   pk%ro = 7.8e-9_wp; pk%e = e; pk%pr = 0.3_wp; pk%sigy = sy; pk%etan = et; pk%beta = 0.5_wp
+   call pk%setup(err)
+   sig = 0.0_wp; hv = 0.0_wp
+   call step(pk, [4.0e-3_wp, -1.2e-3_wp, -1.2e-3_wp, 5.0e-4_wp, 0.0_wp, 2.0e-4_wp], 1.0_wp, &
+             sig, hv)
+   call check(hv(1, 1) > 0.0_wp, 'mat3: the first step yields')
+   de0 = [1.0e-3_wp, -3.0e-4_wp, 2.0e-4_wp, 4.0e-4_wp, -1.0e-4_wp, 1.0e-4_wp]
+   call pk%tangent(1.0_wp, de0, 1.0_wp, 0.0_wp, sig(1, :), hv(1, :), dfd, ierr)
+   call pk_consistent(pk, sig(1, :), hv(1, :), de0, dan, tol)
+   h = fd_h(de0)
+   ! round-off as above plus the central-difference truncation h**2/6 |d3 sig/d deps3|
+   ! (pk_consistent returns the third-derivative scale in tol)
+   smax = maxval(abs(sig)) + maxval(abs(dan))*(maxval(abs(de0)) + h)
+   tol = 4.0_wp*epsilon(1.0_wp)*smax/h + h**2/6.0_wp*tol
+   call check(ierr == 0, 'tangent: plastic update ok')
+   call check_close(maxval(abs(dfd - dan)), 0.0_wp, tol, 0.0_wp, &
+                    'FD tangent = consistent elastic-plastic tangent at a yielded point')
+   call check(maxval(abs(dfd - dan)) < 1.0e-6_wp*maxval(abs(dan)), &
+              'FD tangent within 1e-6 of the largest modulus')
+   call check(abs(dan(1, 1) - (el%bulk + 4.0_wp*el%shear/3.0_wp)) > 1.0e3_wp, &
+              'the plastic tangent differs from the elastic one')
+
+   ! ---- *EOS_LINEAR_POLYNOMIAL by hand: C0..C6 = 1, 2, 3, 4, 5, 6, 7 (MPa), E = 0.5
+   call eos_checks()
+   ! ---- *MAT_NULL with C1 = K: uniform compression V = 0.99 from rest, p = K mu exactly
+   call null_checks()
    call assert_summary()
 
 contains
+
+   pure real(wp) function fd_h(de)
+      real(wp), intent(in) :: de(6)
+      fd_h = epsilon(1.0_wp)**(1.0_wp/3.0_wp)*max(maxval(abs(de)), 1.0e-4_wp)
+   end function fd_h
+
+   !> Isotropic elastic tangent in dynx's Voigt convention (tensor shear strains: D44 = 2G).
+   subroutine elastic_matrix(k, g, d)
+      real(wp), intent(in) :: k, g
+      real(wp), intent(out) :: d(6, 6)
+      integer :: i
+      d = 0.0_wp
+      d(1:3, 1:3) = k - 2.0_wp*g/3.0_wp
+      do i = 1, 6
+         d(i, i) = d(i, i) + 2.0_wp*g
+      end do
+   end subroutine elastic_matrix
+
+   !> Consistent tangent of pk_update's radial return (no rate effect), from (sig, hv) by de:
+   !> s_new = alpha + xi - a xi + b n with xi the trial relative stress, n = xi/|xi|,
+   !> a = 3G/(3G + Ep), b = sqrt(6) G yld/(3G + Ep); d s_new/d xi = (1-a) I + b (I - n n)/|xi|
+   !> and d xi/d e = 2G I_dev. c3 returns the scale of the third derivative, 6 b (2G)**3/|xi|**3.
+   subroutine pk_consistent(m, sig, hv, de, d, c3)
+      type(mat_plastic_kinematic_t), intent(in) :: m
+      real(wp), intent(in) :: sig(6), hv(:), de(6)
+      real(wp), intent(out) :: d(6, 6), c3
+      real(wp) :: g, xi(6), xn, n(6), a, b, yld, g1, g2, w(6)
+      integer :: i, j
+      g = m%shear
+      xi(1:3) = sig(1:3) - sum(sig(1:3))/3.0_wp + 2.0_wp*g*(de(1:3) - sum(de(1:3))/3.0_wp)
+      xi(4:6) = sig(4:6) + 2.0_wp*g*de(4:6)
+      xi = xi - hv(2:7)
+      w = [1.0_wp, 1.0_wp, 1.0_wp, 2.0_wp, 2.0_wp, 2.0_wp]
+      xn = sqrt(sum(w*xi**2))
+      n = xi/xn
+      yld = m%sigy + m%beta*m%ep*hv(1)
+      a = 3.0_wp*g/(3.0_wp*g + m%ep)
+      b = sqrt(6.0_wp)*g*yld/(3.0_wp*g + m%ep)
+      g1 = 2.0_wp*g*((1.0_wp - a) + b/xn)
+      g2 = 2.0_wp*g*b/xn
+      call elastic_matrix(m%bulk, 0.5_wp*g1, d)
+      do j = 1, 6
+         do i = 1, 6
+            d(i, j) = d(i, j) - g2*n(i)*n(j)*w(j)
+         end do
+      end do
+      c3 = 6.0_wp*b*(2.0_wp*g)**3/xn**3
+   end subroutine pk_consistent
+
+   subroutine eos_checks()
+      type(eos_linear_polynomial_t) :: q
+      real(wp) :: mu, p, ref, e1, p1, c2
+      q%c = [1.0_wp, 2.0_wp, 3.0_wp, 4.0_wp, 5.0_wp, 6.0_wp, 7.0_wp]
+      ! compression V = 0.8: mu = 0.25
+      mu = 0.25_wp
+      ref = 1.0_wp + 2.0_wp*mu + 3.0_wp*mu**2 + 4.0_wp*mu**3 + &
+            (5.0_wp + 6.0_wp*mu + 7.0_wp*mu**2)*0.5_wp
+      p = q%pressure(0.8_wp, 0.5_wp)
+      call check_close(p, ref, 0.0_wp, 4.0_wp*epsilon(1.0_wp), 'EOS p at mu = 0.25 (= 5.21875)')
+      call check_close(ref, 5.21875_wp, 0.0_wp, epsilon(1.0_wp), 'EOS hand value mu = 0.25')
+      ! tension V = 1.25: mu = -0.2, the C2 and C6 terms vanish
+      mu = -0.2_wp
+      ref = 1.0_wp + 2.0_wp*mu + 4.0_wp*mu**3 + (5.0_wp + 6.0_wp*mu)*0.5_wp
+      p = q%pressure(1.25_wp, 0.5_wp)
+      call check_close(p, ref, 1.0e-15_wp, 4.0_wp*epsilon(1.0_wp), &
+                       'EOS p at mu = -0.2 without C2, C6 (= 2.468)')
+      ! time-centred energy update, exact for a linear EOS: E1 = E* - (p0 + p1)/2 dV
+      call q%energy_update(0.8_wp, -0.2_wp, 0.5_wp, 1.0_wp, e1, p1)
+      call check_close(e1, 0.5_wp - 0.5_wp*(1.0_wp + p1)*(-0.2_wp), 0.0_wp, &
+                       8.0_wp*epsilon(1.0_wp), 'EOS energy update is time-centred')
+      call check_close(p1, q%pressure(0.8_wp, e1), 0.0_wp, 8.0_wp*epsilon(1.0_wp), &
+                       'EOS energy update: p1 = p(V1, E1)')
+      ! sound speed of the linear fluid C1 = K at rest: c**2 = K/rho0
+      q%c = 0.0_wp
+      q%c(1) = 2.2e3_wp
+      c2 = q%sound_speed2(1.0e-9_wp, 1.0_wp, 0.0_wp)
+      call check_close(c2, 2.2e12_wp, 0.0_wp, 4.0_wp*epsilon(1.0_wp), 'EOS c**2 = C1/rho0')
+   end subroutine eos_checks
+
+   subroutine null_checks()
+      type(mat_null_t) :: mn
+      real(wp) :: s(1, 6), hh(1, 4), d(1, 6), rv(1), ei(1), k
+      integer :: ie(1)
+      k = 2.2e3_wp
+      mn%ro = 1.0e-9_wp
+      allocate(eos_linear_polynomial_t :: mn%eos)
+      select type (q => mn%eos)
+      type is (eos_linear_polynomial_t)
+         q%c(1) = k
+      end select
+      call mn%setup(err)
+      call check(.not. allocated(err), 'mat9 setup')
+      s = 0.0_wp; hh = 0.0_wp; ie = 0
+      d(1, :) = [-1.0_wp/300.0_wp, -1.0_wp/300.0_wp, -1.0_wp/300.0_wp, 0.0_wp, 0.0_wp, 0.0_wp]
+      rv = 0.99_wp; ei = 0.0_wp
+      call mn%update(1, 1.0e-6_wp, d, rv, ei, s, hh, ie)
+      call check_close(-s(1, 1), k*(1.0_wp/0.99_wp - 1.0_wp), 0.0_wp, 4.0_wp*epsilon(1.0_wp), &
+                       'mat9 pressure = C1 mu')
+      call check_close(s(1, 4), 0.0_wp, 0.0_wp, 0.0_wp, 'mat9 no shear stress (MU = 0)')
+      call check_close(hh(1, 4), 0.5_wp*(-s(1, 1))*0.01_wp, 0.0_wp, 8.0_wp*epsilon(1.0_wp), &
+                       'mat9 energy: p/2 dV from rest')
+      mn%pc = -1.0_wp
+      s = 0.0_wp; hh = 0.0_wp
+      rv = 1.01_wp
+      call mn%update(1, 1.0e-6_wp, -d, rv, ei, s, hh, ie)
+      call check_close(-s(1, 1), -1.0_wp, 0.0_wp, 0.0_wp, 'mat9 tension cut off at PC')
+   end subroutine null_checks
 
    subroutine step(m, de, dt, sig, hv)
       class(material_t), intent(in) :: m
