@@ -6,7 +6,7 @@
 !> Thrust Area Report FY97, article 4 of shared/seed).
 !> The part file is created at the first plot state (from the mesh kept by par_plot_setup),
 !> or continued by par_plot_resume (a restart: states after the dump removed).
-!> Module state (allowed in parallel/): the rank's part file and its node/element maps.
+!> Module state (to move into domain_t, issue 14): the rank's part file and its node/element maps.
 module dx_par_plot
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_IO
@@ -39,10 +39,10 @@ module dx_par_plot
 
 contains
 
-   !> Prepare this rank's part file in outdir (created at the first state). node_global(l) is the global
-   !> node of local node l <= nloc; slot node nloc + s stands for local node slot_node(s);
-   !> own are the owned local nodes; elem_loc(:, i) = (block, position) of the rank's
-   !> elements. g is the global model (labels, parts, title).
+   !> Prepare this rank's part file in outdir (created at the first state). node_global(l) is
+   !> the global node of local node l <= nloc; slot node nloc + s stands for local node
+   !> slot_node(s); own are the owned local nodes; elem_loc(:, i) = (block, position) of the
+   !> rank's elements. g is the global model (labels, parts, title).
    subroutine par_plot_setup(model, g, nloc, node_global, slot_node, owned_nodes, elem_loc, &
                              outdir, error)
       type(model_t), intent(in) :: model, g

@@ -18,7 +18,7 @@
 !> the message, writes the last plot state and stops with the serial run's exit code.
 !> Fixed-order sums: the idea of OpenRadioss /PARITH/ON; single exchange per cycle: ParaDyn
 !> (Hoover et al., LLNL Engineering Thrust Area Report FY97, article 4 of shared/seed).
-!> Module state (allowed in parallel/): the global model, the rank's plan and maps.
+!> Module state (to move into domain_t, issue 14): the global model, the rank's plan and maps.
 module dx_par_engine
    use, intrinsic :: iso_fortran_env, only: int64
    use dx_kinds, only: wp, nv_chunk, huge_wp

@@ -22,7 +22,8 @@
 !>    rank 0) runs on the global model.
 !> Strips: Hoover et al., ParaDyn, LLNL Engineering Thrust Area Report FY97 (article 4 of
 !> shared/seed); the serial algorithm: Hallquist, Goudreau & Benson 1985, CMAME 51:107-137.
-!> Module state (allowed in parallel/): the gather plans and local maps of the contact nodes.
+!> Module state (to move into domain_t, issue 14): the gather plans and local maps of the
+!> contact nodes.
 module dx_par_contact
    use dx_kinds, only: wp
    use dx_error, only: error_t
