@@ -36,10 +36,9 @@ module dx_par_contact
    use dx_contact_input, only: CT_SINGLE_SURFACE
    use dx_partition, only: face_elements, model_conn, partition_t
    use dx_par_rigid, only: par_rigid_centres
-   use dx_par, only: par_rank, par_size, par_abort, par_allreduce, PAR_MAX, PAR_SUM, &
-                     gather_plan_t, par_gather_setup, par_gather_values, par_gather_ordered, &
-                     par_wtime, par_alltoallv, par_allgatherv_real, par_sparse_exchange, &
-                     par_allgather_probe
+   use dx_par, only: par_rank, par_size, par_abort, par_allreduce, PAR_MAX, PAR_SUM, par_wtime, &
+                     par_alltoallv, par_allgatherv_real, par_sparse_exchange, par_allgather_probe
+   use dx_par_plan, only: gather_plan_t, par_gather_setup, par_gather_values, par_gather_ordered
    implicit none
    private
    public :: par_contact_setup, par_contact_forces, par_contact_add, par_contact_work, &

@@ -18,7 +18,8 @@ module dx_par_emc
    use dx_kinds, only: wp
    use dx_strings, only: str, rstr
    use dx_log, only: log_info
-   use dx_par, only: par_rank, par_size, par_gather_ordered, par_wtime, par_allreduce, PAR_SUM
+   use dx_par, only: par_rank, par_size, par_wtime, par_allreduce, PAR_SUM
+   use dx_par_plan, only: par_gather_ordered
    use dx_emc_types, only: emc_system_t
    implicit none
    private

@@ -27,11 +27,11 @@ module dx_par_engine
    use dx_strings, only: str, rstr
    use dx_log, only: log_info, log_set_quiet
    use dx_model, only: model_t, elem_block_t
-   use dx_par, only: par_rank, par_size, par_abort, par_minloc, par_gather_ordered, &
-                     par_allreduce, par_barrier, PAR_MAX, gather_plan_t, par_gather_setup, &
-                     par_gather_values, par_wtime, PAR_SUM, par_bcast_text, &
-                     par_gather_setup_root, par_gather_values_root, par_bcast_real, par_minloc8, &
+   use dx_par, only: par_rank, par_size, par_abort, par_minloc, par_allreduce, par_barrier, &
+                     PAR_MAX, par_wtime, PAR_SUM, par_bcast_text, par_bcast_real, par_minloc8, &
                      par_allgather_probe
+   use dx_par_plan, only: par_gather_ordered, gather_plan_t, par_gather_setup, par_gather_values, &
+                          par_gather_setup_root, par_gather_values_root
    use dx_sort, only: sort_index
    use dx_par_model, only: par_model_t, par_model_build, par_fill_slots, par_exchange_forces, &
                            par_exchange_mass

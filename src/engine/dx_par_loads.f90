@@ -27,7 +27,8 @@
 module dx_par_loads
    use dx_kinds, only: wp
    use dx_model, only: model_t
-   use dx_par, only: gather_plan_t, par_gather_setup, par_gather_values, par_allreduce, PAR_MAX
+   use dx_par, only: par_allreduce, PAR_MAX
+   use dx_par_plan, only: gather_plan_t, par_gather_setup, par_gather_values
    use dx_par_model, only: par_model_t
    use dx_partition, only: rank_part_t
    use dx_loads, only: add_external_loads, has_external_loads

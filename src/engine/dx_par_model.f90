@@ -13,7 +13,7 @@ module dx_par_model
    use dx_kinds, only: wp, nv_chunk
    use dx_model, only: model_t, elem_block_t
    use dx_partition, only: rank_part_t
-   use dx_par, only: shared_sum_t, par_shared_setup, par_shared_sum
+   use dx_par_plan, only: shared_sum_t, par_shared_setup, par_shared_sum
    implicit none
    private
    public :: par_model_t, par_model_build, par_fill_slots, par_exchange_forces, &

@@ -40,7 +40,8 @@ module dx_par_restart
    use dx_restart, only: restart_write, restart_read
    use dx_restart_file, only: rs_file_t, rs_create, rs_commit, rs_open, rs_close, crc32_bytes
    use dx_h5, only: h5_write_attr, h5_read_attr
-   use dx_par, only: par_rank, par_size, par_abort, par_allreduce, par_gather_ordered, PAR_MAX
+   use dx_par, only: par_rank, par_size, par_abort, par_allreduce, PAR_MAX
+   use dx_par_plan, only: par_gather_ordered
    use dx_par_agree, only: par_agree
    use dx_par_engine, only: par_engine_on, par_engine_maps
    use dx_par_plot, only: par_plot_resume, par_plot_from_serial

@@ -20,7 +20,8 @@
 module dx_par_rigid
    use dx_kinds, only: wp
    use dx_model, only: model_t
-   use dx_par, only: gather_plan_t, par_gather_setup, par_gather_values, par_rank
+   use dx_par, only: par_rank
+   use dx_par_plan, only: gather_plan_t, par_gather_setup, par_gather_values
    use dx_par_model, only: par_model_t
    use dx_rigid_types, only: rigid_system_t
    use dx_rigid_solver, only: rigid_step
