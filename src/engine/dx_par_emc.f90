@@ -13,7 +13,8 @@
 !> Output, restart dumps (serial format) and the last plot state are written by rank 0;
 !> stop and dump requests are reduced over the ranks at every step (dx_checkpoint).
 !> A deck without *DYNX_CONSERVING_CONTACT, or a serial run, never calls this (on = .false.).
-!> Module state (to move into domain_t, issue 14): the slot ownership and the exchange counters.
+!> Module state (still; issue 14 moves it into the domain): the slot ownership and the
+!> exchange counters, read by the conserving contact kernel (dx_emc_contact).
 module dx_par_emc
    use dx_kinds, only: wp
    use dx_strings, only: str, rstr

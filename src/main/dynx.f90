@@ -11,7 +11,7 @@ program dynx
    use dx_deck, only: read_deck
    use dx_output, only: output_t
    use dx_explicit, only: run_options_t, run_explicit, init_state
-   use dx_par_restart, only: par_restart_read, par_restart_precheck
+   use dx_par_restart, only: par_restart_precheck
    use dx_restart_deck, only: apply_restart_deck
    use dx_signals, only: signals_install, SIGTERM_NUM, SIGINT_NUM, SIGUSR1_NUM
    use dx_io_sys, only: sys_epoch_seconds
@@ -20,27 +20,30 @@ program dynx
    use dx_par, only: par_init, par_finalize, par_size, par_rank, par_abort, par_barrier, &
                      par_active
    use dx_par_agree, only: par_agree, par_agreed
-   use dx_par_engine, only: par_engine_setup, par_engine_global, par_engine_report, &
-                            par_engine_together
+   use dx_domain, only: domain_t
+   use dx_domain_mpi, only: domain_create
    use dx_par_emc, only: par_emc_together
-   use dx_par_contact, only: par_contact_set_split
    implicit none
-   character(:), allocatable :: deck, outdir, arg, val, rfile, rdeck, partdir
-   type(model_t) :: model
+   character(:), allocatable :: deck, outdir, arg, val, rfile, rdeck, partdir, csplit
+   type(model_t), target :: model
+   type(model_t), pointer :: om            ! the model output is written from
+   class(domain_t), allocatable :: dom     ! what this rank owns; the stages of a cycle
    type(output_t) :: out
    type(run_options_t) :: opts
    type(error_t), allocatable :: error
-   logical :: check_only, ignore_unknown
-   integer :: i, n, ios
+   logical :: check_only, ignore_unknown, writer
+   integer :: i, n, ios, raise_rank
 
    opts%ck%wall0 = wall_time()       ! the wall-clock limit counts from process start
    check_only = .false.
    ignore_unknown = .false.
+   raise_rank = -1                   ! --raise-at-cycle: every rank raises
    outdir = '.'
    deck = ''
    rfile = ''
    rdeck = ''
    partdir = ''
+   csplit = ''                       ! --contact-split (MPI contact): DYNX_PAR_CONTACT, owner
    n = command_argument_count()
    i = 0
    do while (i < n)
@@ -72,14 +75,14 @@ program dynx
             call die_usage('--walltime needs a positive number of seconds')
       case ('--raise-at-cycle')
          i = i + 1; val = get_arg(i)
-         call parse_raise(val, opts%ck%raise_cycle, opts%ck%raise_sig, opts%ck%raise_rank)
+         call parse_raise(val, opts%ck%raise_cycle, opts%ck%raise_sig, raise_rank)
       case ('--ignore-unknown')
          ignore_unknown = .true.
       case ('--contact-split')
          i = i + 1; val = get_arg(i)
          if (val /= 'owner' .and. val /= 'strips') &
             call die_usage('--contact-split needs owner or strips, not '//val)
-         call par_contact_set_split(val)
+         csplit = val
       case default
          if (len(arg) > 2) then
             if (arg(1:2) == 'i=' .or. arg(1:2) == 'I=') then
@@ -105,6 +108,7 @@ program dynx
    call par_init(error)             ! MPI only when started by mpirun/srun
    if (allocated(error)) call die(error)
    if (par_rank() > 0) call log_set_quiet(.true.)   ! MPI: rank 0 prints info and warnings
+   opts%ck%raise_here = raise_rank < 0 .or. raise_rank == par_rank()
 
    call read_deck(deck, model, error, ignore_unknown)
    call par_agree(error)            ! MPI: a bad deck stops every rank together (dx_par_agree)
@@ -124,43 +128,39 @@ program dynx
    end if
    if (len(rfile) > 0) call par_restart_precheck(rfile, deck, error, model%deck_files)   ! MPI
    if (allocated(error)) call die(error)
-   call par_engine_setup(model, deck, outdir, partdir, error)   ! MPI run: the rank's part
+   call domain_create(model, deck, outdir, partdir, csplit, dom, error)   ! MPI run: the rank's part
    call par_agree(error)
    if (allocated(error)) call die(error)
-   call init_state(model)
+   call init_state(model, dom)
    if (len(rfile) > 0) then
-      call par_restart_read(model, rfile, error)   ! serial dump, or an MPI run's parts
+      call dom%read_restart(model, rfile, error)   ! serial dump, or an MPI run's parts
       if (allocated(error)) call die(error)
       call log_info('dynx: restart from '//rfile//' at cycle '//str(model%cycle)//', time '// &
                     rstr(model%time))
       if (len(rdeck) > 0) then
          call apply_restart_deck(rdeck, model, error)
-         if (.not. allocated(error) .and. par_size() > 1 .and. .not. allocated(model%emc)) &
-            call apply_restart_deck(rdeck, par_engine_global(), error)
+         call dom%output_target(model, om, writer)   ! MPI: the global model too
+         if (.not. allocated(error) .and. .not. associated(om, model)) &
+            call apply_restart_deck(rdeck, om, error)
          call par_agree(error)
          if (allocated(error)) call die(error)
          call log_info('dynx: restart deck '//rdeck//' applied')
       end if
-      if (par_size() == 1 .or. (par_rank() == 0 .and. allocated(model%emc))) then
-         call out%resume(model, outdir, error)   ! (MPI conserving solver: rank 0, whole model)
-      else if (par_rank() == 0) then  ! MPI: rank 0 writes the output (global model)
-         call out%resume(par_engine_global(), outdir, error)
-      end if
-   else if (par_size() > 1) then       ! an MPI run writes its output from rank 0
-      if (par_rank() == 0 .and. allocated(model%emc)) then   ! conserving solver: whole model
-         call out%open(model, outdir, error)
-      else if (par_rank() == 0) then
-         call out%open(par_engine_global(), outdir, error)
-      end if
-   else
-      call out%open(model, outdir, error)
+   end if
+   ! the model output is written from: this rank's (serial; MPI conserving solver: whole
+   ! model on rank 0), or the global model on rank 0 (MPI explicit)
+   call dom%output_target(model, om, writer)
+   if (writer .and. len(rfile) > 0) then
+      call out%resume(om, outdir, error)
+   else if (writer) then
+      call out%open(om, outdir, error)
    end if
    call par_agree(error)            ! MPI: rank 0 opened the output; its error stops all
    if (allocated(error)) call die(error)
    if (allocated(model%emc)) then
-      call run_emc(model, opts%ck, out, error)
+      call run_emc(model, dom, opts%ck, out, error)
    else
-      call run_explicit(model, opts, out, error)
+      call run_explicit(model, dom, opts, out, error)
    end if
    call log_summary()
    if (allocated(error)) then
@@ -173,7 +173,7 @@ program dynx
    end if
    call log_info('dynx: results in '//outdir//'/ (d3plot.h5, d3plot.xdmf'// &
       trim(merge(', glstat', '        ', model%db%glstat_dt > 0.0_wp))//')')
-   call par_engine_report()
+   call dom%report()
    call par_finalize()
 
 contains
@@ -257,7 +257,8 @@ contains
       k = index(v, '@')
       if (k > 0) then
          read(v(k + 1:), *, iostat=ios) rank
-         if (ios /= 0 .or. rank < 0) call die_usage('--raise-at-cycle N[:SIG]@R needs a rank R >= 0')
+         if (ios /= 0 .or. rank < 0) &
+            call die_usage('--raise-at-cycle N[:SIG]@R needs a rank R >= 0')
          v = v(1:k - 1)
       end if
       k = index(v, ':')
@@ -295,9 +296,10 @@ contains
       type(error_t), intent(in) :: err
       ! a failure every rank knows (it wrote the last plot state): rank 0 reports, all exit
       ! with the code; any other failure on one rank stops every rank (MPI_Abort)
-      if (par_size() > 1 .and. .not. (par_engine_together() .or. par_agreed() .or. &
-                                      par_emc_together())) &
-         call par_abort(err%message, err%code)
+      logical :: together
+      together = par_agreed() .or. par_emc_together()
+      if (allocated(dom)) together = together .or. dom%together()
+      if (par_size() > 1 .and. .not. together) call par_abort(err%message, err%code)
       if (par_rank() == 0) call log_error(err%message)
       flush(error_unit)
       call par_barrier()       ! every rank stops together: none exits before rank 0 printed
