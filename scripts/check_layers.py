@@ -79,8 +79,10 @@ def scan():
 
 
 def model_may_use(name, mods):
-    # model -> base, the abstract material type and the physics folders' *_types modules
-    return name == 'dx_material' or name.endswith('_types') or mods.get(name) == 'base'
+    # model -> base, the abstract material and equation-of-state types (the model holds
+    # class(material_t) and class(eos_t)) and the physics folders' *_types modules
+    return name in ('dx_material', 'dx_eos') or name.endswith('_types') or \
+        mods.get(name) == 'base'
 
 
 def crossings():

@@ -18,7 +18,7 @@ the run to glstat, nodout, XDMF and d3plot.h5 byte-equal to the uninterrupted ru
     python3 scripts/kill9_sweep.py --syscalls rename      the renames only
     python3 scripts/kill9_sweep.py --endtim 0.009 --target d3dump02 --stride 7
                                                           writes of the second dump (make test)
-Result (docs/design.md, "Crash-safe plot output"): 0 failures at all 763 kill points.
+Result (docs/history.md, "Crash-safe plot output"): 0 failures at all 763 kill points.
 """
 import argparse, os, re, shutil, subprocess, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))

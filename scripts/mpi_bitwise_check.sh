@@ -1,5 +1,5 @@
 #!/bin/sh
-# Serial and MPI runs agree bit for bit (docs/design.md, "ParaDyn step 5").
+# Serial and MPI runs agree bit for bit (docs/history.md, "ParaDyn step 5").
 #   sh scripts/mpi_bitwise_check.sh DECK SERIAL_OUTDIR [NP...]      (default NP: 1 2 3 4)
 # SERIAL_OUTDIR holds a serial run of DECK (bin/dynx -i DECK -o SERIAL_OUTDIR). For each NP,
 # runs `mpirun -np NP bin/dynx -i DECK -o SERIAL_OUTDIR/npNP` (--oversubscribe; as root also

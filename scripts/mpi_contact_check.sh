@@ -1,5 +1,5 @@
 #!/bin/sh
-# Contact decks in MPI runs (docs/design.md, "Parallel contact"):
+# Contact decks in MPI runs (docs/history.md, "Parallel contact"):
 #   sh scripts/mpi_contact_check.sh DECK SERIAL_OUTDIR MIN_FORCE [NP...]
 # 1. the serial run's rcforc shows contact: a slave resultant |f| >= MIN_FORCE on some line
 #    and some slave node in contact (so the bitwise comparison is not vacuous);

@@ -8,7 +8,7 @@
 !>    summed over its springs): an upper bound of the contact frequencies. Nodes of rigid
 !>    bodies use the body's mass and inertia instead (dx_rigid_contact).
 !>  contact_work: after the velocity update: work of the contact forces with the centred
-!>    weighting of docs/design.md, W += f_c(n).dtavg(n)(v(n-1/2) + v(n+1/2))/2; the sliding
+!>    weighting of docs/history.md, W += f_c(n).dtavg(n)(v(n-1/2) + v(n+1/2))/2; the sliding
 !>    interface energy is -W (stored penalty energy plus friction dissipation); writes rcforc.
 !> Algorithms: dx_contact_search (bucket sort), dx_contact_penalty (forces).
 module dx_contact

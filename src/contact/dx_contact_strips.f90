@@ -12,7 +12,7 @@
 !> all of them alike. MPI runs use them only with --contact-split strips (or
 !> DYNX_PAR_CONTACT=strips); by default a rank computes the slave nodes it owns
 !> (owner-computes, the mask mine_node from dx_par_contact): no sort of the slave nodes at
-!> all, and the nodes a rank computes are its own (docs/design.md).
+!> all, and the nodes a rank computes are its own (docs/history.md).
 module dx_contact_strips
    use dx_kinds, only: wp
    use dx_contact_types, only: contact_pass_t

@@ -98,7 +98,7 @@ contains
          f%mass_share = 0.125_wp
          f%hgmodes = 4
          f%nip = 1; f%weight = 1
-         ! ELFORM 2 measured at about 8x ELFORM 1 per element-cycle (docs/design.md,
+         ! ELFORM 2 measured at about 8x ELFORM 1 per element-cycle (docs/history.md,
          ! "Partition weights")
          if (etype == ETYPE_HEX8_SRI) then
             f%nip = 8; f%weight = 8

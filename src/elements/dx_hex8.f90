@@ -17,7 +17,7 @@
 !> Viscous hourglass coefficient a_h = QH*rho*c*V**(2/3)/4 (LS-DYNA Theory Manual, U);
 !> stiffness (IHQ 4,5): FB 1981's kappa = QH*(lambda + 2mu)*b_jJ*b_jJ/(3V) on the modal
 !> rates normalized by 1/sqrt(8), i.e. f_iI = k_h (gamma_aJ u_iJ) gamma_aI with
-!> k_h = QH*(K + 4G/3)*sum(B_jJ**2)/(24V) (docs/design.md, "Hourglass types").
+!> k_h = QH*(K + 4G/3)*sum(B_jJ**2)/(24V) (docs/history.md, "Hourglass types").
 module dx_hex8
    use, intrinsic :: iso_fortran_env, only: int64
    use dx_kinds, only: wp, nv_chunk, huge_wp
@@ -450,7 +450,7 @@ contains
          ! e feeds two sums (ehg, dehg): "+ 0" gives the product one use, so it is rounded
          ! alike in the vectorized body and the scalar remainder rather than fused (FMA) into
          ! one sum there and not here; an element's energy must not depend on its position
-         ! in the block, which MPI pieces change (docs/design.md)
+         ! in the block, which MPI pieces change (docs/history.md)
          e = e + 0.0_wp
          blk%ehg(i) = blk%ehg(i) + e
          dehg = dehg + e

@@ -2,7 +2,7 @@
 !> each rank and what the MPI engine reads back. The file holds the decomposition only; the
 !> engine re-reads the deck for the global definitions (materials, curves, controls), and
 !> the deck's content hash in the file guarantees both describe the same deck
-!> (docs/design.md, "Per-rank files"). Layout, format version 1:
+!> (docs/history.md, "Per-rank files"). Layout, format version 1:
 !>   attributes of /: format = 'dynx-rank-partition', version, nprocs, rank, ne_global,
 !>                    nn_global, deck_hash (16 hex digits), checksum (16 hex digits)
 !>   /elements /nodes /node_owner                       global 1-based indices, ascending

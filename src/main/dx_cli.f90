@@ -15,9 +15,8 @@ module dx_cli
    use dx_par, only: par_init, par_finalize, par_rank, par_size, par_abort, par_barrier, &
                      par_active
    use dx_par_agree, only: par_agreed
-   use dx_par_engine, only: par_engine_together
    use dx_par_emc, only: par_emc_together
-   use dx_par_contact, only: par_contact_set_split
+   use dx_domain, only: domain_t
    implicit none
    private
    public :: cli_t, parse_cli, die, die_usage
@@ -31,6 +30,8 @@ module dx_cli
       character(:), allocatable :: partdir   !< --part: MPI rank files
       logical :: check_only = .false.        !< --check
       logical :: ignore_unknown = .false.    !< --ignore-unknown
+      integer :: raise_rank = -1             !< --raise-at-cycle @R (-1: every rank raises)
+      character(:), allocatable :: csplit    !< --contact-split ('': DYNX_PAR_CONTACT, owner)
       type(run_options_t) :: opts            !< status lines, checkpoints, signals
    end type cli_t
 
@@ -47,6 +48,7 @@ contains
       cli%rfile = ''
       cli%rdeck = ''
       cli%partdir = ''
+      cli%csplit = ''
       n = command_argument_count()
       i = 0
       do while (i < n)
@@ -80,14 +82,14 @@ contains
          case ('--raise-at-cycle')
             i = i + 1; val = get_arg(i)
             call parse_raise(val, cli%opts%ck%raise_cycle, cli%opts%ck%raise_sig, &
-                             cli%opts%ck%raise_rank)
+                             cli%raise_rank)
          case ('--ignore-unknown')
             cli%ignore_unknown = .true.
          case ('--contact-split')
             i = i + 1; val = get_arg(i)
             if (val /= 'owner' .and. val /= 'strips') &
                call die_usage('--contact-split needs owner or strips, not '//val)
-            call par_contact_set_split(val)
+            cli%csplit = val
          case default
             if (len(arg) > 2) then
                if (arg(1:2) == 'i=' .or. arg(1:2) == 'I=') then
@@ -224,14 +226,16 @@ contains
       call exit_process(EXIT_INPUT)
    end subroutine die_usage
 
-   !> Stop on err with its exit code.
-   subroutine die(err)
+   !> Stop on err with its exit code (dom: the run's domain, once there is one).
+   subroutine die(err, dom)
       type(error_t), intent(in) :: err
+      class(domain_t), intent(in), optional :: dom
+      logical :: together
       ! a failure every rank knows (it wrote the last plot state): rank 0 reports, all exit
       ! with the code; any other failure on one rank stops every rank (MPI_Abort)
-      if (par_size() > 1 .and. .not. (par_engine_together() .or. par_agreed() .or. &
-                                      par_emc_together())) &
-         call par_abort(err%message, err%code)
+      together = par_agreed() .or. par_emc_together()
+      if (present(dom)) together = together .or. dom%together()
+      if (par_size() > 1 .and. .not. together) call par_abort(err%message, err%code)
       if (par_rank() == 0) call log_error(err%message)
       flush(error_unit)
       call par_barrier()       ! every rank stops together: none exits before rank 0 printed

@@ -274,36 +274,6 @@ contains
       end associate
    end subroutine attach_eos
 
-   !> Exact volume of the trilinear hexahedron with corner coordinates xe(3,8)
-   !> (LS-DYNA node order: 1-4 one face counter-clockwise seen from 5-8).
-   pure function hex_volume(xe) result(vol)
-      real(wp), intent(in) :: xe(3, 8)
-      real(wp) :: vol
-      real(wp), parameter :: xi(8) = [-1, 1, 1, -1, -1, 1, 1, -1]*1.0_wp
-      real(wp), parameter :: et(8) = [-1, -1, 1, 1, -1, -1, 1, 1]*1.0_wp
-      real(wp), parameter :: ze(8) = [-1, -1, -1, -1, 1, 1, 1, 1]*1.0_wp
-      real(wp), parameter :: g = 0.577350269189625764509148780502_wp
-      real(wp) :: jac(3, 3), dn(8, 3), a, b, c
-      integer :: ia, ib, ic, k
-      vol = 0.0_wp
-      do ia = -1, 1, 2
-         do ib = -1, 1, 2
-            do ic = -1, 1, 2
-               a = ia*g; b = ib*g; c = ic*g
-               dn(:, 1) = 0.125_wp*xi*(1 + et*b)*(1 + ze*c)
-               dn(:, 2) = 0.125_wp*et*(1 + xi*a)*(1 + ze*c)
-               dn(:, 3) = 0.125_wp*ze*(1 + xi*a)*(1 + et*b)
-               do k = 1, 3
-                  jac(:, k) = matmul(xe, dn(:, k))
-               end do
-               vol = vol + jac(1, 1)*(jac(2, 2)*jac(3, 3) - jac(3, 2)*jac(2, 3)) &
-                         - jac(1, 2)*(jac(2, 1)*jac(3, 3) - jac(3, 1)*jac(2, 3)) &
-                         + jac(1, 3)*(jac(2, 1)*jac(3, 2) - jac(3, 1)*jac(2, 2))
-            end do
-         end do
-      end do
-   end function hex_volume
-
    !> elements: references, degenerate and inverted checks, blocks by part
    subroutine build_elements(inp, model, mp, error)
       type(model_input_t), intent(in) :: inp

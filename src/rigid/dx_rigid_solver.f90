@@ -12,7 +12,7 @@
 !> the exact exponential map (Rodrigues) of its constrained angular velocity.
 !> Nodes follow the body, x_i(n+1) = x_c(n+1) + R(n+1) s_i; their mid-step velocities are the
 !> secants (x_i(n+1) - x_i(n))/dt, so the solver's x += dt v lands on them.
-!> Energy bookkeeping (docs/design.md): the body kinetic energy at t(n) is
+!> Energy bookkeeping (docs/history.md): the body kinetic energy at t(n) is
 !> 1/2 M vc(n-1/2).vc(n+1/2) + 1/2 L(n-1/2).I(n)^-1 L(n+1/2), which replaces the nodal
 !> kinetic energy of its nodes (ke_corr); constraint and prescribed-motion reactions do the
 !> work dP.(vc(n-1/2) + vc(n+1/2))/2 + dL.(w(n-1/2) + w(n+1/2))/2, like nodal constraints.

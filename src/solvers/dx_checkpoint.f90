@@ -13,9 +13,10 @@
 !> A numerical failure in the middle of a cycle writes a d3dump marked as not restartable.
 !> MPI runs (dx_par_restart): a signal may reach one rank or all, and each rank has its own
 !> clock, so the decision is collective: each rank's requests (stop signal, SIGUSR1, its
-!> wall-clock limit) ride in the cycle's dt reduction (checkpoint_par_dt: MINLOC plus the
-!> largest flag, one MPI_Allreduce, no extra synchronization) and every rank acts on the
-!> reduced flags at the same cycle boundary; dumps are per-rank parts plus a manifest.
+!> wall-clock limit) ride in the cycle's dt reduction (the domain's reduce_dt calls poll:
+!> MINLOC plus the largest flag, one MPI_Allreduce, no extra synchronization) and every rank
+!> acts on the reduced flags at the same cycle boundary; dumps and the last plot state are
+!> the domain's (MPI: per-rank parts plus a manifest).
 !> MPI runs of the conserving solver (ck%replicated: every rank holds the whole state): the
 !> requests are reduced once per step (checkpoint_requests, one MPI_Allreduce of 3 flags) and
 !> rank 0 writes the serial dump and the last plot state.
@@ -27,22 +28,18 @@ module dx_checkpoint
    use dx_timer, only: wall_time
    use dx_model, only: model_t
    use dx_output, only: output_t
-   use dx_restart, only: restart_write
-   use dx_par, only: par_rank, par_size, par_allreduce, PAR_MAX
-   use dx_par_engine, only: par_engine_on, par_engine_dt, par_engine_flush_work, &
-                            par_engine_plot, par_engine_plot_finish, par_engine_writer, &
-                            par_engine_fail
-   use dx_par_restart, only: par_restart_write
-   use dx_par_plot, only: par_plot_nstates
-   use dx_par_loads, only: par_loads_flush
+   use dx_par, only: par_allreduce, PAR_MAX
+   use dx_domain, only: domain_t, requests_t
    use dx_signals, only: signal_stop_requested, signal_dump_requested, signal_name, &
                          signal_raise
    implicit none
    private
    public :: checkpoint_t, checkpoint_stage, checkpoint_failure_dump, checkpoint_energy_band, &
-             checkpoint_par_dt, checkpoint_requests
+             checkpoint_requests
 
-   type :: checkpoint_t
+   !> Restart dumps, signals and the wall-clock limit of a run; the requests of every rank
+   !> (MPI: reduced with the cycle's dt, requests_t%coll) are acted on together.
+   type, extends(requests_t) :: checkpoint_t
       character(:), allocatable :: outdir       !< where dumps go (the output directory)
       character(:), allocatable :: deck         !< for the "continue with" message
       real(wp) :: walltime = 0.0_wp             !< seconds allowed from wall0 (0: no limit)
@@ -53,23 +50,24 @@ module dx_checkpoint
       real(wp) :: dump_est = -1.0_wp            !< MPI: estimated_dump_cost of the rank's model
       integer :: raise_cycle = 0                !< testing: raise raise_sig at this cycle
       integer :: raise_sig = 0                  !< (--raise-at-cycle N:SIG, real handler path)
-      integer :: raise_rank = -1                !< MPI: only this rank raises (-1: every rank)
-      integer :: coll(3) = 0                    !< MPI: stop signal, SIGUSR1, wall-clock limit
-                                                !< of any rank (from checkpoint_par_dt)
+      logical :: raise_here = .true.            !< MPI: this rank raises (--raise-at-cycle @R)
       logical :: replicated = .false.           !< MPI, conserving solver: every rank has the
                                                 !< whole state; rank 0 writes (dx_par_emc)
       logical :: endeng_hit = .false.           !< set by the solver ...
       real(wp) :: endeng_ratio = 1.0_wp         !< ... with the ratio, cycle and time
       integer :: endeng_cycle = 0
       real(wp) :: endeng_time = 0.0_wp
+   contains
+      procedure :: poll => checkpoint_poll
    end type checkpoint_t
 
 contains
 
    !> The per-cycle stage: periodic dumps, SIGUSR1, stop requests. stopped: the run must
    !> end now; error then carries the exit code and the message (with how to continue).
-   subroutine checkpoint_stage(ck, model, out, stopped, error)
+   subroutine checkpoint_stage(ck, dom, model, out, stopped, error)
       type(checkpoint_t), intent(inout) :: ck
+      class(domain_t), intent(inout) :: dom
       type(model_t), intent(inout), target :: model
       type(output_t), intent(inout) :: out
       logical, intent(out) :: stopped
@@ -77,15 +75,13 @@ contains
       real(wp) :: now, margin, est
       integer :: sig, nr
       character(:), allocatable :: path, why, comb
-      logical :: par, dumpreq, writer, coll
-      type(model_t), pointer :: om
+      logical :: dumpreq, writer, coll
 
       stopped = .false.
-      par = par_engine_on()
-      coll = par .or. ck%replicated     ! act on the reduced requests of every rank
-      if (par .and. ck%dump_est < 0.0_wp) ck%dump_est = estimated_dump_cost(model)
-      if (.not. ck%replicated .and. ck%raise_cycle > 0 .and. model%cycle == ck%raise_cycle .and. &
-          (ck%raise_rank < 0 .or. ck%raise_rank == par_rank())) call signal_raise(ck%raise_sig)
+      coll = ck%collective .or. ck%replicated     ! act on the reduced requests of every rank
+      if (ck%collective .and. ck%dump_est < 0.0_wp) ck%dump_est = estimated_dump_cost(model)
+      if (.not. ck%replicated .and. ck%raise_cycle > 0 .and. model%cycle == ck%raise_cycle &
+          .and. ck%raise_here) call signal_raise(ck%raise_sig)
       now = wall_time()
       if (ck%last >= 0.0_wp) then
          if (ck%cycle_cost == 0.0_wp) then
@@ -105,7 +101,7 @@ contains
             else
                path = ck%outdir//'/runrsf'//two(mod(model%run%nrunrsf - 1, nr) + 1)//'.h5'
             end if
-            call write_dump(ck, model, out, path, 'runrsf', error)
+            call write_dump(ck, dom, model, out, path, 'runrsf', error)
             if (allocated(error)) then
                stopped = .true.; return
             end if
@@ -114,7 +110,7 @@ contains
       if (model%rst%d3dump_cycl > 0) then
          if (mod(model%cycle, model%rst%d3dump_cycl) == 0) then
             call next_d3dump(ck, model, path)
-            call write_dump(ck, model, out, path, 'd3dump', error)
+            call write_dump(ck, dom, model, out, path, 'd3dump', error)
             if (allocated(error)) then
                stopped = .true.; return
             end if
@@ -128,7 +124,7 @@ contains
       end if
       if (dumpreq) then
          call next_d3dump(ck, model, path)
-         call write_dump(ck, model, out, path, 'signal', error)
+         call write_dump(ck, dom, model, out, path, 'signal', error)
          if (allocated(error)) then
             stopped = .true.; return
          end if
@@ -158,30 +154,24 @@ contains
       stopped = .true.
       comb = ''
       call next_d3dump(ck, model, path)
-      call write_dump(ck, model, out, path, 'signal', error)
+      call write_dump(ck, dom, model, out, path, 'signal', error)
       if (allocated(error)) return
-      om => model
-      writer = .true.
-      if (par) then      ! MPI: each rank its part of the last state; rank 0 combines
-         writer = par_engine_writer()
-         call par_engine_plot(model, error)
-         if (allocated(error)) call par_engine_fail(error)   ! this rank alone: stop all
-      else
-         writer = .not. ck%replicated .or. par_rank() == 0
-         if (writer) call out%write_plot(om, error)
-         if (allocated(error)) return
+      ! the last state (MPI: each rank its part; rank 0 combines the parts)
+      writer = dom%writer()
+      call dom%write_plot(model, out, error)
+      if (allocated(error)) then
+         call dom%fail(error)   ! MPI: this rank alone: stop all
+         return
       end if
       if (writer) call out%close(error)
       if (allocated(error)) then
-         if (par) call par_engine_fail(error)
+         call dom%fail(error)
          return
       end if
-      if (par) then      ! ENDENG: every rank formed the same ratio, so all stop together
-         call par_engine_plot_finish(error, failure=why == 'ENDENG')
-         if (allocated(error)) call par_engine_fail(error)
-         comb = ' (the '//str(par_size())//' ranks'' plot files combined into '// &
-                ck%outdir//'/d3plot.h5 + d3plot.xdmf: '//str(par_plot_nstates())//' states)'
-      end if
+      ! ENDENG: every rank formed the same ratio, so all stop together
+      call dom%plot_finish(error, why == 'ENDENG')
+      if (allocated(error)) call dom%fail(error)
+      comb = dom%plot_note(ck%outdir)
       if (why == 'ENDENG') then
          call set_error(error, 'energy ratio '//rstr(ck%endeng_ratio, 8)//' left the '// &
             'band 1 +- ENDENG/100 = '//rstr(model%ctrl%endeng/100.0_wp, 4)// &
@@ -193,21 +183,19 @@ contains
          call set_error(error, 'dynx: stopped by '//why//' at cycle '//str(model%cycle)// &
             ', time '//rstr(model%time)//'; restart dump '//path//' and the last plot '// &
             'state written'//comb//', all files closed.'//new_line('a')//'dynx: continue with: '// &
-            launcher(coll)//'dynx -i '//ck%deck//' -o '//ck%outdir//' -r '//path, &
+            dom%launcher(ck%outdir)//'dynx -i '//ck%deck//' -o '//ck%outdir//' -r '//path, &
             EXIT_CHECKPOINT)
       end if
    end subroutine checkpoint_stage
 
-   !> MPI runs, in place of par_engine_dt: this rank's stop signal, SIGUSR1 and wall-clock
-   !> limit folded into the cycle's dt reduction; ck%coll gets the largest over the ranks,
+   !> MPI runs, called by the domain's dt reduction: this rank's stop signal, SIGUSR1 and
+   !> wall-clock limit, folded into the reduction; ck%coll gets the largest over the ranks,
    !> which checkpoint_stage acts on at the end of the cycle (the same cycle on every rank).
-   subroutine checkpoint_par_dt(ck, dtcrit, dt_elem, error)
-      type(checkpoint_t), intent(inout) :: ck
-      real(wp), intent(inout) :: dtcrit
-      integer, intent(inout) :: dt_elem
-      type(error_t), allocatable, intent(inout) :: error
-      integer :: flags(3)
+   subroutine checkpoint_poll(self, flags)
+      class(checkpoint_t), intent(inout) :: self
+      integer, intent(out) :: flags(3)
       real(wp) :: est, now
+      associate (ck => self)
       flags = 0
       flags(1) = signal_stop_requested()
       if (signal_dump_requested()) flags(2) = 1
@@ -218,9 +206,8 @@ contains
          if (now - ck%wall0 + 3.0_wp*ck%cycle_cost + 2.0_wp*est >= ck%walltime) flags(3) = 1
       end if
       flags(2) = max(flags(2), ck%coll(2))       ! a request not yet served stays
-      call par_engine_dt(dtcrit, dt_elem, error, flags)
-      ck%coll = flags
-   end subroutine checkpoint_par_dt
+      end associate
+   end subroutine checkpoint_poll
 
    !> MPI runs of the conserving solver (ck%replicated), once per step before the
    !> checkpoint: --raise-at-cycle, then this rank's stop signal, SIGUSR1 and wall-clock
@@ -232,8 +219,8 @@ contains
       integer :: flags(3)
       real(wp) :: est, now
       if (.not. ck%replicated) return
-      if (ck%raise_cycle > 0 .and. model%cycle == ck%raise_cycle .and. &
-          (ck%raise_rank < 0 .or. ck%raise_rank == par_rank())) call signal_raise(ck%raise_sig)
+      if (ck%raise_cycle > 0 .and. model%cycle == ck%raise_cycle .and. ck%raise_here) &
+         call signal_raise(ck%raise_sig)
       flags = 0
       flags(1) = signal_stop_requested()
       if (signal_dump_requested()) flags(2) = 1
@@ -265,8 +252,9 @@ contains
 
    !> After a numerical failure in the middle of a cycle: a dump for inspection (marked not
    !> restartable). Returns its path ('' when it could not be written).
-   subroutine checkpoint_failure_dump(ck, model, out, path)
+   subroutine checkpoint_failure_dump(ck, dom, model, out, path)
       type(checkpoint_t), intent(inout) :: ck
+      class(domain_t), intent(inout) :: dom
       type(model_t), intent(inout) :: model
       type(output_t), intent(inout) :: out
       character(:), allocatable, intent(out) :: path
@@ -275,7 +263,7 @@ contains
          path = ''; return
       end if
       call next_d3dump(ck, model, path)
-      call write_dump(ck, model, out, path, 'failure', e)
+      call write_dump(ck, dom, model, out, path, 'failure', e)
       if (allocated(e)) path = ''
    end subroutine checkpoint_failure_dump
 
@@ -288,8 +276,9 @@ contains
    end subroutine next_d3dump
 
    !> Record the output sizes in the loop state and write the dump, timing it.
-   subroutine write_dump(ck, model, out, path, kind, error)
+   subroutine write_dump(ck, dom, model, out, path, kind, error)
       type(checkpoint_t), intent(inout) :: ck
+      class(domain_t), intent(inout) :: dom
       type(model_t), intent(inout) :: model
       type(output_t), intent(in) :: out
       character(*), intent(in) :: path, kind
@@ -297,14 +286,8 @@ contains
       real(wp) :: t0
       t0 = wall_time()
       call out%sizes(model%run%nplot, model%run%glstat_bytes, model%run%nodout_bytes)
-      if (par_engine_on()) then   ! every rank its part, rank 0 the manifest (rank 0's sizes)
-         model%run%nplot = par_plot_nstates()   ! the states in each rank's plot part
-         call par_engine_flush_work(model%run%wcon, model%run%wrw)
-         call par_loads_flush(model%run%wext)   ! kept external-work terms (dx_par_loads)
-         call par_restart_write(model, path, kind, error)
-      else if (.not. ck%replicated .or. par_rank() == 0) then   ! replicated: rank 0 writes
-         call restart_write(model, path, kind, error)
-      end if
+      ! MPI: every rank its part, rank 0 the manifest; replicated: rank 0 the serial dump
+      call dom%write_dump(model, path, kind, error)
       ck%dump_cost = max(ck%dump_cost, wall_time() - t0)
    end subroutine write_dump
 
@@ -321,14 +304,6 @@ contains
       end do
       c = 2.0_wp*(bytes/1.0e8_wp + 0.05_wp)
    end function estimated_dump_cost
-
-   !> 'mpirun -np N ' in an MPI run (the continue command needs the same N), else ''.
-   function launcher(par) result(s)
-      logical, intent(in) :: par
-      character(:), allocatable :: s
-      s = ''
-      if (par) s = 'mpirun -np '//str(par_size())//' '
-   end function launcher
 
    !> Two-digit (or wider) file number: 01, 02, ..., 99, 100.
    function two(k) result(s)

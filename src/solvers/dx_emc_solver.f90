@@ -32,6 +32,7 @@ module dx_emc_solver
                              emc_inv3, emc_same_plane, emc_pairs_pack, emc_pairs_unpack
    use dx_emc_types, only: EMC_PAIR_NI, EMC_PAIR_NR
    use dx_checkpoint, only: checkpoint_t, checkpoint_stage
+   use dx_domain, only: domain_t
    use dx_signals, only: signal_stop_requested, signal_dump_pending
    use dx_append_file, only: append_from
    use dx_par_emc, only: par_emc_on, par_emc_writer, par_emc_set_together, par_emc_report
@@ -559,8 +560,9 @@ contains
    !> Run the conserving solver to ENDTIM (or ENDCYC) with the step DT0, or continue it from
    !> the snapshot a restart dump restored (model%emc%snap%valid). Restart dumps, signals
    !> and the wall-clock limit as in the explicit loop (dx_checkpoint, called once per step).
-   subroutine run_emc(model, ck, out, error)
+   subroutine run_emc(model, dom, ck, out, error)
       type(model_t), intent(inout) :: model
+      class(domain_t), intent(inout) :: dom    !< serial (replicated under MPI: rank 0 writes)
       type(checkpoint_t), intent(inout) :: ck
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
@@ -660,7 +662,7 @@ contains
                call to_model(st, model)
                call to_snapshot()
             end if
-            call checkpoint_stage(ck, model, out, stopped, error)
+            call checkpoint_stage(ck, dom, model, out, stopped, error)
             if (stopped) then
                if (wr) close(u)
                es%snap%unit_open = .false.

@@ -8,6 +8,9 @@
 !> external and constraint work W += f(n).dtavg(n) (v(n-1/2) + v(n+1/2))/2, dtavg(n) =
 !> (dt(n-1/2) + dt(n+1/2))/2: KE(n) - KE(n-1) telescopes exactly into these sums for any
 !> time-step sequence, impulsive starts (cycle 0, dt(-1/2) = 0) included.
+!> The loop has one path for any number of ranks: each stage that depends on what a rank
+!> owns (shared nodes, contact, loads, walls, rigid bodies, energies, output, failures, the
+!> dt reduction) is a call into the run's domain (dx_domain; serial or MPI).
 module dx_explicit
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use dx_kinds, only: wp, huge_wp
@@ -17,28 +20,16 @@ module dx_explicit
    use dx_timer, only: wall_time, peak_memory_kb
    use dx_model, only: model_t, elem_block_t
    use dx_run_state, only: run_state_t
-   use dx_element, only: element_block_pass, block_result_t, ELEM_ERR_NEGVOL, &
-                         element_mass_share, family_t, element_family
-   use dx_loads, only: add_external_loads, has_external_loads
-   use dx_constraints, only: apply_spc, apply_prescribed, apply_rigidwalls, add_wall_hits, &
-                             wall_hits_t
+   use dx_element, only: element_block_pass, block_result_t, ELEM_ERR_NEGVOL, family_t, &
+                         element_family
+   use dx_loads, only: add_external_loads
+   use dx_constraints, only: apply_spc, apply_prescribed
    use dx_output, only: output_t
    use dx_checkpoint, only: checkpoint_t, checkpoint_stage, checkpoint_failure_dump, &
-                            checkpoint_energy_band, checkpoint_par_dt
-   use dx_contact, only: contact_forces, contact_work
-   use dx_rigid_solver, only: rigid_step, rigid_write_rbdout, rigid_close
-   use dx_energy_sums, only: initial_kinetic, kinetic_energy, element_energies, &
-                             constraint_work, set_energy, constrained_nodes, energy_bits
-   use dx_par_engine, only: par_engine_on, par_engine_fill, &
-                            par_engine_exchange, par_engine_constraints, &
-                            par_engine_energies, par_engine_initial, par_engine_output, &
-                            par_engine_fail, par_engine_mass, par_engine_global, &
-                            par_engine_mass_share, par_engine_defer, &
-                            par_engine_pending, par_engine_sync_failure, par_engine_plot, &
-                            par_engine_plot_finish, par_engine_writer
-   use dx_par_loads, only: par_loads_any, par_loads_shared, par_loads_work
-   use dx_par_rigid, only: par_rigid_step, par_rigid_writes
-   use dx_par_contact, only: par_contact_forces, par_contact_add, par_contact_work
+                            checkpoint_energy_band
+   use dx_rigid_solver, only: rigid_write_rbdout, rigid_close
+   use dx_energy_sums, only: initial_kinetic, kinetic_energy, constrained_nodes, energy_bits
+   use dx_domain, only: domain_t
    implicit none
    private
    public :: run_options_t, init_state, run_explicit
@@ -51,9 +42,11 @@ module dx_explicit
 
 contains
 
-   !> Allocate and initialize the nodal state: x = x0, v = v0, lumped mass.
-   subroutine init_state(model)
+   !> Allocate and initialize the nodal state: x = x0, v = v0, lumped mass (with dom: its
+   !> shared nodes' masses summed).
+   subroutine init_state(model, dom)
       type(model_t), intent(inout) :: model
+      class(domain_t), intent(inout), optional :: dom
       integer :: b, i, k
       real(wp) :: m
       type(family_t) :: fam
@@ -79,55 +72,47 @@ contains
       model%cycle = 0
       model%energy%mass = sum(model%mass)
       if (allocated(model%rigid)) model%energy%mass = model%energy%mass + model%rigid%mass_corr
-      if (par_engine_on()) call par_engine_mass(model)   ! MPI: shared nodes' mass summed
+      if (present(dom)) call dom%sum_mass(model)   ! MPI: shared nodes' mass summed
    end subroutine init_state
 
    !> Run the explicit time loop to ENDTIM/ENDCYC, writing output as the deck asks.
    !> Everything the loop carries from one cycle to the next is in model (x, v, time,
    !> cycle, element blocks, walls) and model%run (dt_old, work sums, next output times),
    !> so a restart dump restored into model (model%run%started) continues the run exactly.
-   subroutine run_explicit(model, opts, out, error)
+   subroutine run_explicit(model, dom, opts, out, error)
       type(model_t), intent(inout), target :: model
+      class(domain_t), intent(inout) :: dom
       type(run_options_t), intent(in) :: opts
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
-      real(wp), allocatable :: vold(:, :), fext(:, :), vfree(:, :), cterms(:)
-      type(wall_hits_t) :: hits
+      real(wp), allocatable :: vold(:, :), fext(:, :), vfree(:, :)
       integer, allocatable :: cnodes(:)
-      real(wp) :: dt, dtavg, dtcrit, t, t0wall, ke, eint, ehg, tend, wrig, epend
+      real(wp) :: dt, dtavg, dtcrit, t, t0wall, ke, tend, wrig
       integer :: b, i, ibmin, iemin
       logical :: loads, done, stopped, need
       type(block_result_t) :: res
       type(error_t), allocatable :: ioerr
       type(checkpoint_t) :: ck
       type(model_t), pointer :: om          ! the model output is written from
-      logical :: par, writer
+      logical :: writer
 
-      if (.not. allocated(model%x)) call init_state(model)
-      par = par_engine_on()               ! an MPI run on more than one rank
+      if (.not. allocated(model%x)) call init_state(model, dom)
       om => model
-      writer = .true.
-      if (par) writer = par_engine_writer()
+      writer = dom%writer()
       ck = opts%ck
       allocate(vold(3, model%nn))
-      loads = has_external_loads(model)
-      if (par) loads = par_loads_any()    ! the deck's loads, whatever this rank holds
+      loads = dom%has_loads(model)      ! the deck's loads, whatever this rank holds
       if (loads) allocate(fext(3, model%nn))
       call constrained_nodes(model, cnodes)
-      allocate(vfree(3, size(cnodes)), cterms(size(cnodes)))
-      do b = 1, size(model%blocks)   ! one-element-wide blocks get the element dt bound
-         if (par) exit                 ! MPI: slot corners need their node's mass (below)
-         call element_mass_share(model%blocks(b), &
-            model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%ro, model%mass, cnodes)
-      end do
-      if (par) call par_engine_mass_share(model, cnodes)
+      allocate(vfree(3, size(cnodes)))
+      call dom%mass_share(model, cnodes)  ! one-element-wide blocks get the element dt bound
       tend = model%ctrl%endtim
       if (tend <= 0.0_wp) tend = huge_wp
       if (.not. model%run%started) then
          model%run = run_state_t()
          model%run%started = .true.
          model%energy%initial = initial_kinetic(model%mass, model%v)
-         if (par) call par_engine_initial(model)
+         call dom%initial_energy(model)
          if (allocated(model%rigid)) model%energy%initial = model%energy%initial + &
                                                            model%rigid%ke0_corr
       else
@@ -146,25 +131,23 @@ contains
       do
          t = model%time
          ! ---- internal forces (element pass) and the critical step
-         if (par) call par_engine_fill(model)   ! shared nodes' x, v into their slots
+         call dom%fill(model)   ! shared nodes' x, v into their slots
          model%f = 0.0_wp
          dtcrit = huge_wp; ibmin = 0; iemin = 0
          do b = 1, size(model%blocks)
-            if (par) then      ! MPI: a failure kept on this rank skips the pass
-               if (par_engine_pending()) exit
-            end if
+            if (dom%pending()) exit    ! MPI: a failure kept on this rank skips the pass
             if (model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%is_rigid) cycle
             associate (blk => model%blocks(b), part => model%parts(model%blocks(b)%ipart))
                call element_block_pass(blk, model%mats(part%imat)%m, part, model%x, model%v, &
                                        dt_old, model%f, res)
                if (res%ibad /= 0) then
                   call element_failure(model, b, res, error)
-                  if (par) then   ! every rank learns it at the dt reduction below
-                     call par_engine_defer(error)
-                     exit
+                  call dom%defer(error)   ! MPI: every rank learns it at the dt reduction
+                  if (allocated(error)) then
+                     call finish(model, dom, out, ck, error)
+                     return
                   end if
-                  call finish(model, out, ck, error)
-                  return
+                  exit
                end if
                if (res%dt < dtcrit) then
                   dtcrit = res%dt; ibmin = b; iemin = res%imin
@@ -172,32 +155,22 @@ contains
             end associate
          end do
          if (ibmin > 0) model%dt_elem = model%blocks(ibmin)%elem(iemin)
-         if (allocated(model%rigid) .and. ibmin == 0 .and. .not. par) &
-            dtcrit = model%rigid%dtcrit           ! MPI runs: in par_engine_dt
-         if (par) then     ! global min, serial tie rule; the ranks' stop/dump requests with
-                           ! it; a failure on any rank stops all
-            call checkpoint_par_dt(ck, dtcrit, model%dt_elem, error)
-            if (allocated(error)) then
-               call finish(model, out, ck, error); return
-            end if
+         ! global min (serial tie rule); MPI: the ranks' stop/dump requests ride in it, and
+         ! a failure on any rank stops all
+         call dom%reduce_dt(model, dtcrit, ibmin, ck, error)
+         if (allocated(error)) then
+            call finish(model, dom, out, ck, error); return
          end if
-         ! ---- contact forces (only when the deck has *CONTACT; MPI runs: dx_par_contact)
-         if (allocated(model%contact)) then
-            if (par) then
-               call par_contact_forces(model, par_engine_global(), dt_old, dtcrit)
-            else
-               call contact_forces(model, dt_old, dtcrit)
-            end if
-         end if
+         ! ---- contact forces (only when the deck has *CONTACT)
+         if (allocated(model%contact)) call dom%contact_forces(model, dt_old, dtcrit)
          ! ---- external forces
          if (loads) then
             fext = 0.0_wp
             call add_external_loads(model, t, fext)
-            if (par) call par_loads_shared(model, t, fext)   ! shared nodes: serial chain
+            call dom%loads_shared(model, t, fext)   ! MPI: shared nodes, serial chain
          end if
-         ! ---- shared-node exchange (MPI runs): serial-order sums at shared nodes
-         if (par) call par_engine_exchange(model%f)
-         if (par .and. allocated(model%contact)) call par_contact_add(model, par_engine_global())
+         ! ---- shared-node exchange (MPI): serial-order sums at shared nodes, contact forces
+         call dom%exchange(model)
          if (loads) model%f = model%f + fext
          ! ---- time step
          dt = model%ctrl%tssfac*dtcrit
@@ -211,23 +184,18 @@ contains
             call set_error(error, 'time step '//rstr(dt)//' at cycle '//str(model%cycle)// &
                ', time '//rstr(t)//' is below the floor '//rstr(tsmin)//' (DTMIN*first step '// &
                rstr(dt_first)//'); controlling element '//str(elem_label(model)), EXIT_NUMERIC)
-            call finish(model, out, ck, error)
+            call finish(model, dom, out, ck, error)
             return
          end if
          dtavg = 0.5_wp*(dt_old + dt)
          ! ---- velocities: v(n+1/2) = v(n-1/2) + dtavg*f/m
          vold = model%v
          do i = 1, model%nn
-            if (model%mass(i) > 0.0_wp) model%v(:, i) = model%v(:, i) + dtavg*model%f(:, i)/model%mass(i)
+            if (model%mass(i) > 0.0_wp) &
+               model%v(:, i) = model%v(:, i) + dtavg*model%f(:, i)/model%mass(i)
          end do
          ! rigid bodies take their nodes' summed forces and overwrite their velocities
-         if (allocated(model%rigid)) then
-            if (par) then     ! MPI: bodies spanning ranks, on the gathered global model
-               call par_rigid_step(model, t, dt, dtavg, vold)
-            else
-               call rigid_step(model%rigid, model, t, dt, dtavg, vold)
-            end if
-         end if
+         if (allocated(model%rigid)) call dom%rigid_step(model, t, dt, dtavg, vold)
          ! ---- constraints (work of the reaction forces enters the external work)
          do i = 1, size(cnodes)
             vfree(:, i) = model%v(:, cnodes(i))
@@ -237,28 +205,13 @@ contains
          done = t >= tend .or. (model%ctrl%endcyc > 0 .and. model%cycle >= model%ctrl%endcyc)
          need = done .or. model%ctrl%endeng > 0.0_wp .or. (model%db%glstat_dt > 0.0_wp .and. &
                                                           t >= next_glstat)
-         if (par) then     ! MPI: walls on each rank; work sums in serial order when needed
-            call par_engine_constraints(model, vfree, vold, dt, dtavg, wcon, wrw, need)
-         else
-            call constraint_work(cnodes, model%mass, vfree, vold, model%v, dtavg, wcon, cterms)
-            if (allocated(model%walls)) then
-               call apply_rigidwalls(model, dt, dtavg, vold, model%v, hits)
-               call add_wall_hits(model, hits, wrw)
-            end if
-         end if
-         if (loads .and. par) then   ! MPI: terms kept, summed in serial order when needed
-            call par_loads_work(fext, vold, model%v, dtavg, wext, need)
-         else if (loads) then
-            do i = 1, model%nn
-               wext = wext + dot_product(fext(:, i), 0.5_wp*dtavg*(vold(:, i) + model%v(:, i)))
-            end do
-         end if
-         if (allocated(model%contact) .and. par) then
-            call par_contact_work(model, par_engine_global(), vold, dtavg, opts%outdir)
-         else if (allocated(model%contact)) then
-            call contact_work(model, vold, dtavg, opts%outdir, ioerr)
+         ! rigid walls; work sums (MPI: terms kept, summed in serial order when needed)
+         call dom%constraints(model, cnodes, vfree, vold, dt, dtavg, wcon, wrw, need)
+         if (loads) call dom%load_work(fext, vold, model%v, dtavg, wext, need)
+         if (allocated(model%contact)) then
+            call dom%contact_work(model, vold, dtavg, opts%outdir, ioerr)
             if (allocated(ioerr)) then
-               call move_alloc(ioerr, error); call finish(model, out, ck, error); return
+               call move_alloc(ioerr, error); call finish(model, dom, out, ck, error); return
             end if
          end if
          ! ---- energies at t(n)
@@ -270,34 +223,24 @@ contains
          end if
          if (.not. ieee_is_finite(ke)) then
             call nan_failure(model, error)
-            if (par) then       ! known to all at the next dt reduction
-               call par_engine_defer(error)
-            else
-               call finish(model, out, ck, error)
+            call dom%defer(error)      ! MPI: known to all at the next dt reduction
+            if (allocated(error)) then
+               call finish(model, dom, out, ck, error)
                return
             end if
          end if
          model%dt = dt
-         if (par) then     ! global sums, only when glstat, ENDENG or the end need them
-            call par_engine_energies(model, vold, wext + wcon + wrig, -wrw, &
-                                     0.25_wp*(dt - dt_old), need)
-         else
-            call element_energies(model%blocks, eint, ehg, epend)
-            eint = eint + 0.25_wp*(dt - dt_old)*epend   ! the part of W(n) booked next cycle
-            call set_energy(model, ke, eint, ehg, wext + wcon + wrig, -wrw)
-         end if
+         ! (MPI: global sums, only when glstat, ENDENG or the end need them)
+         call dom%energies(model, ke, vold, wext + wcon + wrig, -wrw, 0.25_wp*(dt - dt_old), &
+                           need)
          if (model%ctrl%endeng > 0.0_wp) call checkpoint_energy_band(ck, model, t)
          ! ---- output at t(n) (MPI runs: plot states per rank; histories by rank 0)
          if (t >= next_plot .or. done) then
-            if (par) then
-               call par_engine_plot(model, ioerr)
-            else
-               call out%write_plot(model, ioerr)
-            end if
+            call dom%write_plot(model, out, ioerr)
             if (allocated(ioerr)) then
                call move_alloc(ioerr, error)
-               if (par) call par_engine_fail(error)   ! this rank alone: stop every rank
-               call finish(model, out, ck, error); return
+               call dom%fail(error)   ! MPI: this rank alone: stop every rank
+               call finish(model, dom, out, ck, error); return
             end if
             if (model%db%d3plot_dt > 0.0_wp) then
                next_plot = next_output_time(next_plot, model%db%d3plot_dt, t)
@@ -306,34 +249,34 @@ contains
             end if
          end if
          if (model%db%glstat_dt > 0.0_wp .and. (t >= next_glstat .or. done)) then
-            if (par) call par_engine_output(model, .false., om, writer)
+            call dom%output_model(model, om, writer)   ! MPI: gathered to rank 0
             if (writer) call out%write_glstat(om, ioerr)
             if (allocated(ioerr)) then
                call move_alloc(ioerr, error)
-               if (par) call par_engine_fail(error)   ! rank 0 alone: stop every rank
-               call finish(model, out, ck, error); return
+               call dom%fail(error)   ! MPI: rank 0 alone: stop every rank
+               call finish(model, dom, out, ck, error); return
             end if
             next_glstat = next_output_time(next_glstat, model%db%glstat_dt, t)
          end if
          if (model%db%nodout_dt > 0.0_wp .and. (t >= next_nodout .or. done)) then
-            if (par) call par_engine_output(model, .false., om, writer)
+            call dom%output_model(model, om, writer)   ! MPI: gathered to rank 0
             if (writer) call out%write_nodout(om, ioerr)
             if (allocated(ioerr)) then
                call move_alloc(ioerr, error)
-               if (par) call par_engine_fail(error)   ! rank 0 alone: stop every rank
-               call finish(model, out, ck, error); return
+               call dom%fail(error)   ! MPI: rank 0 alone: stop every rank
+               call finish(model, dom, out, ck, error); return
             end if
             next_nodout = next_output_time(next_nodout, model%db%nodout_dt, t)
          end if
          if (allocated(model%rigid)) then
             if (model%rigid%rbdout_dt > 0.0_wp .and. &
                 (t >= model%rigid%next_rbdout .or. done)) then
-               if (.not. par .or. par_rigid_writes()) &     ! MPI: rank 0 writes rbdout
+               if (dom%rigid_writer()) &     ! MPI: rank 0 writes rbdout
                   call rigid_write_rbdout(model%rigid, opts%outdir, t, ioerr)
                if (allocated(ioerr)) then
                   call move_alloc(ioerr, error)
-                  if (par) call par_engine_fail(error)   ! rank 0 alone: stop every rank
-                  call finish(model, out, ck, error); return
+                  call dom%fail(error)   ! MPI: rank 0 alone: stop every rank
+                  call finish(model, dom, out, ck, error); return
                end if
                model%rigid%next_rbdout = next_output_time(model%rigid%next_rbdout, &
                                                           model%rigid%rbdout_dt, t)
@@ -347,10 +290,10 @@ contains
                next_status = huge_wp
             end if
          end if
-         if (done .and. par) then    ! a failure kept in the last cycle stops the run
-            call par_engine_sync_failure(error)
+         if (done) then    ! MPI: a failure kept in the last cycle stops the run
+            call dom%sync_failure(error)
             if (allocated(error)) then
-               call finish(model, out, ck, error); return
+               call finish(model, dom, out, ck, error); return
             end if
          end if
          if (done) exit
@@ -360,7 +303,7 @@ contains
          model%cycle = model%cycle + 1
          dt_old = dt
          ! ---- cycle boundary: restart dumps, signals, wall-clock limit, ENDENG
-         call checkpoint_stage(ck, model, out, stopped, error)
+         call checkpoint_stage(ck, dom, model, out, stopped, error)
          if (stopped) return
       end do
       end associate
@@ -375,10 +318,8 @@ contains
       if (allocated(model%rigid)) call rigid_close(model%rigid)
       if (writer) call out%close(ioerr)
       if (allocated(ioerr)) call move_alloc(ioerr, error)
-      if (par) then         ! MPI: rank 0 combines the per-rank plot files
-         call par_engine_plot_finish(ioerr)
-         if (allocated(ioerr) .and. .not. allocated(error)) call move_alloc(ioerr, error)
-      end if
+      call dom%plot_finish(ioerr, .false.)   ! MPI: rank 0 combines the per-rank plot files
+      if (allocated(ioerr) .and. .not. allocated(error)) call move_alloc(ioerr, error)
    end subroutine run_explicit
 
    !> The first output time on the grid next + k*interval (k >= 1) that lies after t.
@@ -439,34 +380,40 @@ contains
    end subroutine nan_failure
 
    !> After a failure: write the last state and close the files so the output stays readable.
-   subroutine finish(model, out, ck, error)
+   subroutine finish(model, dom, out, ck, error)
       type(model_t), intent(inout), target :: model
+      class(domain_t), intent(inout) :: dom
       type(output_t), intent(inout) :: out
       type(checkpoint_t), intent(inout) :: ck
       type(error_t), allocatable, intent(inout) :: error
       type(error_t), allocatable :: ioerr
-      character(:), allocatable :: dump
-      type(model_t), pointer :: om
+      character(:), allocatable :: dump, lost
       logical :: writer
-      om => model
-      writer = .true.
-      dump = ''
-      if (par_engine_on()) then    ! every rank gets here together (a failure all know)
-         writer = par_engine_writer()
-         call par_engine_plot(model, ioerr)      ! the last state: each rank its part
-      else
-         call checkpoint_failure_dump(ck, model, out, dump)
-         call out%write_plot(om, ioerr)
+      ! MPI: every rank gets here together (a failure all know); no failure dump
+      writer = dom%writer()
+      call checkpoint_failure_dump(ck, dom, model, out, dump)
+      call dom%write_plot(model, out, ioerr)   ! the last state (MPI: each rank its part)
+      ! the end message reports only what was written (a full disk: the states before it)
+      lost = ''
+      if (allocated(ioerr)) then
+         lost = ioerr%message
+         deallocate(ioerr)
       end if
-      if (allocated(ioerr)) deallocate(ioerr)
       if (allocated(model%rigid)) call rigid_close(model%rigid)
       if (writer) call out%close(ioerr)
+      if (allocated(ioerr) .and. len(lost) == 0) lost = ioerr%message
       if (allocated(ioerr)) deallocate(ioerr)
-      if (par_engine_on()) call par_engine_plot_finish(ioerr, failure=.true.)   ! rank 0 combines
+      call dom%plot_finish(ioerr, .true.)   ! MPI: rank 0 combines
       if (allocated(ioerr) .and. allocated(error)) error%message = error%message// &
          new_line('a')//'dynx: combining the plot files failed: '//ioerr%message
-      if (allocated(error)) error%message = error%message//new_line('a')// &
-         'dynx: the last state (time '//rstr(model%time)//') was written to the plot file'
+      if (allocated(error) .and. len(lost) == 0) then
+         error%message = error%message//new_line('a')// &
+            'dynx: the last state (time '//rstr(model%time)//') was written to the plot file'
+      else if (allocated(error)) then
+         error%message = error%message//new_line('a')//'dynx: the last state (time '// &
+            rstr(model%time)//') could not be written ('//lost//'); the plot file holds '// &
+            'the states written before it'
+      end if
       if (allocated(error) .and. len(dump) > 0) error%message = error%message// &
          new_line('a')//'dynx: state at the failure (for inspection, not restartable) in '//dump
    end subroutine finish

@@ -9,11 +9,12 @@ program mpi_fail_test
    use dx_error, only: error_t, set_error, EXIT_NUMERIC
    use dx_strings, only: str
    use dx_par, only: par_init, par_finalize, par_rank, par_size, par_allreduce, PAR_MIN
-   use dx_par_engine, only: par_engine_defer, par_engine_pending, par_engine_sync_failure, &
-                            par_engine_dt, par_engine_together
+   use dx_par_engine, only: par_engine_t, par_engine_defer, par_engine_pending, &
+                            par_engine_sync_failure, par_engine_dt, par_engine_together
    use dx_assert, only: check, assert_summary
    implicit none
    type(error_t), allocatable :: error, e
+   type(par_engine_t) :: eng           ! the engine's state (a component of the MPI domain)
    integer :: np, me, el
    real(wp) :: dt
 
@@ -22,19 +23,19 @@ program mpi_fail_test
    np = par_size()
    me = par_rank()
 
-   call par_engine_sync_failure(error)
-   call all_check(.not. allocated(error) .and. .not. par_engine_together(), &
+   call par_engine_sync_failure(eng, error)
+   call all_check(.not. allocated(error) .and. .not. par_engine_together(eng), &
                   'no failure: nothing reported')
 
    if (me == np - 1) then
       call set_error(e, 'non-finite velocity (NaN or Inf) at node 42 at cycle 7, time 1.5', &
                      EXIT_NUMERIC)
-      call par_engine_defer(e)
-      call all_check(.not. allocated(e) .and. par_engine_pending(), 'deferred: kept here')
+      call par_engine_defer(eng, e)
+      call all_check(.not. allocated(e) .and. par_engine_pending(eng), 'deferred: kept here')
    else
-      call all_check(.not. par_engine_pending(), 'other ranks hold nothing')
+      call all_check(.not. par_engine_pending(eng), 'other ranks hold nothing')
    end if
-   call par_engine_sync_failure(error)
+   call par_engine_sync_failure(eng, error)
    call all_check(allocated(error), 'last cycle: every rank knows the failure')
    if (allocated(error)) then
       call all_check(error%message == 'rank '//str(np - 1)//' of '//str(np)// &
@@ -43,17 +44,17 @@ program mpi_fail_test
       call all_check(error%code == EXIT_NUMERIC, 'exit code 3')
       deallocate(error)
    end if
-   call all_check(par_engine_together(), 'stop together (no MPI_Abort)')
+   call all_check(par_engine_together(eng), 'stop together (no MPI_Abort)')
 
    ! two failing ranks in a cycle: the dt reduction reports the lowest
    if (me == 0) then
       call set_error(e, 'negative volume in element 4711 (part 1) at cycle 9, time 2.0', &
                      EXIT_NUMERIC)
-      call par_engine_defer(e)
+      call par_engine_defer(eng, e)
    end if
    dt = 1.0e-3_wp*(me + 1)
    el = 0
-   call par_engine_dt(dt, el, error)
+   call par_engine_dt(eng, dt, el, error)
    call all_check(allocated(error) .and. dt < 0.0_wp, 'in a cycle: the dt MINLOC carries it')
    if (allocated(error)) then
       if (np > 1) then

@@ -8,8 +8,8 @@ program mpi_par_test
    use dx_kinds, only: wp
    use dx_error, only: error_t
    use dx_par, only: par_init, par_finalize, par_rank, par_size, par_allreduce, par_abort, &
-                     par_barrier, shared_sum_t, par_shared_setup, par_shared_sum, PAR_SUM, &
-                     PAR_MIN, PAR_MAX, par_minloc, par_gather_ordered, par_minloc_flags
+                     par_barrier, PAR_SUM, PAR_MIN, PAR_MAX, par_minloc, par_minloc_flags
+   use dx_par_plan, only: shared_sum_t, par_shared_setup, par_shared_sum, par_gather_ordered
    use dx_model, only: model_t
    use dx_partition, only: partition_t, rank_part_t, partition_elements, rank_part
    use dx_assert, only: check, assert_summary

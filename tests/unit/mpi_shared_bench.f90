@@ -12,9 +12,8 @@ program mpi_shared_bench
    use dx_kinds, only: wp, nv_chunk
    use dx_error, only: error_t
    use dx_par, only: par_init, par_finalize, par_rank, par_size, par_allreduce, par_wtime, &
-                     par_barrier, &
-                     shared_sum_t, par_shared_setup, par_shared_sum, par_shared_sum_plain, &
-                     PAR_MAX, PAR_SUM
+                     par_barrier, PAR_MAX, PAR_SUM
+   use dx_par_plan, only: shared_sum_t, par_shared_setup, par_shared_sum, par_shared_sum_plain
    use dx_partition, only: partition_t, partition_elements
    implicit none
    type(error_t), allocatable :: error

@@ -5,7 +5,7 @@
 !> Comput. 20(1), 1998).
 !>
 !> The element graph: one vertex per element, weighted by the element formulation's measured
-!> cost (the element family's weight; docs/design.md), one edge between two elements that
+!> cost (the element family's weight; docs/history.md), one edge between two elements that
 !> share at least one node (METIS_MeshToDual with ncommon = 1), weighted by the number of
 !> nodes they share. Elements that share only an edge or a corner still put that node on two
 !> ranks, so they cost communication too; the face-only dual graph (ncommon = 4) would not
@@ -33,12 +33,12 @@ module dx_partition
 
    !> Element cost weights (integer, METIS needs integers): the element family's weight
    !> (dx_element_types: ELFORM 2 measured at about 8x ELFORM 1 per element-cycle;
-   !> docs/design.md, "Partition weights").
+   !> docs/history.md, "Partition weights").
    !> Elements of *MAT_RIGID parts have no stress update (the element pass skips them): in a
    !> deck that has them the deformable weights are scaled by RIGID_SCALE and a rigid
    !> element weighs COST_RIGID, i.e. 1/4 of ELFORM 1 (measured 0.27-0.34 serially, which
    !> includes the rigid-body solver that an MPI run repeats on every rank whatever the
-   !> partition; docs/design.md, "Rigid bodies and loads under MPI"). Decks without rigid
+   !> partition; docs/history.md, "Rigid bodies and loads under MPI"). Decks without rigid
    !> parts keep the weights above (and their partitions).
    integer, parameter :: RIGID_SCALE = 4, COST_RIGID = 1
 

@@ -1,4 +1,4 @@
-!> Contact in MPI runs (ParaDyn, issue 6; docs/design.md, "Parallel contact"). Only a deck with
+!> Contact in MPI runs (ParaDyn, issue 6; docs/history.md, "Parallel contact"). Only a deck with
 !> *CONTACT reaches any of this; every other MPI run allocates and calls nothing here.
 !>  - dynx-part and the engine's own partitioner condense each local contact pair (the
 !>    non-automatic *CONTACT_SURFACE_TO_SURFACE / NODES_TO_SURFACE / ONE_WAY interfaces) into
@@ -22,7 +22,8 @@
 !>    rank 0) runs on the global model.
 !> Strips: Hoover et al., ParaDyn, LLNL Engineering Thrust Area Report FY97 (article 4 of
 !> shared/seed); the serial algorithm: Hallquist, Goudreau & Benson 1985, CMAME 51:107-137.
-!> Module state (allowed in parallel/): the gather plans and local maps of the contact nodes.
+!> No module state: the gather plans and local maps of the contact nodes are a par_contact_t,
+!> a component of the rank's domain (dx_domain_mpi).
 module dx_par_contact
    use dx_kinds, only: wp
    use dx_error, only: error_t
@@ -35,55 +36,52 @@ module dx_par_contact
    use dx_contact_input, only: CT_SINGLE_SURFACE
    use dx_partition, only: face_elements, model_conn, partition_t
    use dx_par_rigid, only: par_rigid_centres
-   use dx_par, only: par_rank, par_size, par_abort, par_allreduce, PAR_MAX, PAR_SUM, &
-                     gather_plan_t, par_gather_setup, par_gather_values, par_gather_ordered, &
-                     par_wtime, par_alltoallv, par_allgatherv_real, par_sparse_exchange, &
-                     par_allgather_probe
+   use dx_par, only: par_rank, par_size, par_abort, par_allreduce, PAR_MAX, PAR_SUM, par_wtime, &
+                     par_alltoallv, par_allgatherv_real, par_sparse_exchange, par_allgather_probe
+   use dx_par_plan, only: gather_plan_t, par_gather_setup, par_gather_values, par_gather_ordered
    implicit none
    private
-   public :: par_contact_setup, par_contact_forces, par_contact_add, par_contact_work, &
-             par_contact_report, contact_groups, write_contact_report, par_contact_set_split
+   public :: par_contact_t, par_contact_setup, par_contact_forces, par_contact_add, &
+             par_contact_work, par_contact_report, contact_groups, write_contact_report
 
-   logical, save :: on = .false.
-   !> which rank computes a slave node: 'owner' (the rank owning it) or 'strips' (ParaDyn's
-   !> geometric strips); dynx --contact-split, else DYNX_PAR_CONTACT, else 'owner'
-   character(16), save :: split_mode = ''
-   !> true until the first contact stage: it gathers every contact node's x and v and plans
-   !> the halo even between sorts (a continued run: g's x is the deck's, the plan empty)
-   logical, save :: fresh = .true.
-   type(gather_plan_t), save :: plan_c              !< the owned contact nodes, by global id
-   integer, allocatable, save :: c_own(:)           !< local index of each owned contact node
-   integer, allocatable, save :: c_glob(:)          !< its global index
-   integer, allocatable, save :: c_all(:)           !< every contact node (global, ascending)
-   integer, allocatable, save :: c_owner(:)         !< the rank owning each of c_all
-   integer, allocatable, save :: loc_of(:)          !< global node -> local index (0: none)
-   integer, allocatable, save :: h_req(:), h_snd(:) !< halo: nodes received / sent
-   integer, allocatable, save :: h_rcnt(:), h_scnt(:)   !< (0:np-1) their counts per rank
-   integer(8), save :: nval_recv = 0                !< numbers received (x, v, work terms)
-   integer(8), save :: nres_recv = 0                !< numbers received (results)
-   !> the largest contact-node speed |v(n+1/2)| over the ranks, found with the work
-   !> exchange, for the next cycle's contact stage (v does not change in between)
-   real(wp), save :: vmax_next = 0.0_wp
-   logical, save :: have_vmax = .false.
-   integer, allocatable, save :: l_loc(:), l_glob(:)   !< held contact nodes: local, global
-   real(wp), allocatable, save :: cvold(:, :)       !< (3, nn global) v(n-1/2), contact nodes
-   real(wp), save :: t_cont = 0.0_wp, t_comm = 0.0_wp
-   integer, save :: ncycle = 0
-   integer(8), save :: nrec_sent = 0
+   !> The contact stage's part of a rank's domain (a component of mpi_domain_t).
+   type :: par_contact_t
+      logical :: on = .false.
+      !> which rank computes a slave node: 'owner' (the rank owning it) or 'strips' (ParaDyn's
+      !> geometric strips); dynx --contact-split, else DYNX_PAR_CONTACT, else 'owner'
+      character(16) :: split_mode = ''
+      !> true until the first contact stage: it gathers every contact node's x and v and plans
+      !> the halo even between sorts (a continued run: g's x is the deck's, the plan empty)
+      logical :: fresh = .true.
+      type(gather_plan_t) :: plan_c              !< the owned contact nodes, by global id
+      integer, allocatable :: c_own(:)           !< local index of each owned contact node
+      integer, allocatable :: c_glob(:)          !< its global index
+      integer, allocatable :: c_all(:)           !< every contact node (global, ascending)
+      integer, allocatable :: c_owner(:)         !< the rank owning each of c_all
+      integer, allocatable :: loc_of(:)          !< global node -> local index (0: none)
+      integer, allocatable :: h_req(:), h_snd(:) !< halo: nodes received / sent
+      integer, allocatable :: h_rcnt(:), h_scnt(:)   !< (0:np-1) their counts per rank
+      integer(8) :: nval_recv = 0                !< numbers received (x, v, work terms)
+      integer(8) :: nres_recv = 0                !< numbers received (results)
+      !> the largest contact-node speed |v(n+1/2)| over the ranks, found with the work
+      !> exchange, for the next cycle's contact stage (v does not change in between)
+      real(wp) :: vmax_next = 0.0_wp
+      logical :: have_vmax = .false.
+      integer, allocatable :: l_loc(:), l_glob(:)   !< held contact nodes: local, global
+      real(wp), allocatable :: cvold(:, :)       !< (3, nn global) v(n-1/2), contact nodes
+      real(wp) :: t_cont = 0.0_wp, t_comm = 0.0_wp
+      integer :: ncycle = 0
+      integer(8) :: nrec_sent = 0
+   end type par_contact_t
 
 contains
-
-   !> dynx --contact-split M (M = owner or strips, checked by the caller)
-   subroutine par_contact_set_split(mode)
-      character(*), intent(in) :: mode
-      split_mode = mode
-   end subroutine par_contact_set_split
 
    !> Start of an MPI run with contact: g is the global model (serial numbering), model the
    !> rank's sub-model (local nodes 1..nloc with global ids node_global, owned(i) if this
    !> rank owns local node i). The contact state lives in g%contact from now on; model
    !> keeps an empty contact set as the marker that the deck has contact.
-   subroutine par_contact_setup(model, g, node_global, owned)
+   subroutine par_contact_setup(pc, model, g, node_global, owned)
+      type(par_contact_t), intent(inout) :: pc
       type(model_t), intent(inout) :: model
       type(model_t), intent(inout) :: g
       integer, intent(in) :: node_global(:)
@@ -97,38 +95,39 @@ contains
       allocate(isc(g%nn))
       isc = .false.
       isc(g%contact%node) = .true.
-      l_loc = pack([(i, i = 1, size(node_global))], isc(node_global))
-      l_glob = node_global(l_loc)
-      c_own = pack(l_loc, owned(l_loc))
-      c_glob = node_global(c_own)
-      call par_gather_setup(plan_c, c_glob)
+      pc%l_loc = pack([(i, i = 1, size(node_global))], isc(node_global))
+      pc%l_glob = node_global(pc%l_loc)
+      pc%c_own = pack(pc%l_loc, owned(pc%l_loc))
+      pc%c_glob = node_global(pc%c_own)
+      call par_gather_setup(pc%plan_c, pc%c_glob)
       ! owner-computes (default): this rank computes the slave nodes it owns, the same
       ! nodes at every sort (no strips to find, and its slave nodes' x and v are its own);
       ! strips (--contact-split strips or DYNX_PAR_CONTACT=strips): the geometric strips
       ! of dx_contact_strips
-      if (len_trim(split_mode) == 0) call get_environment_variable('DYNX_PAR_CONTACT', split_mode)
-      if (split_mode /= 'strips') split_mode = 'owner'
-      if (split_mode == 'owner') then
+      if (len_trim(pc%split_mode) == 0) &
+         call get_environment_variable('DYNX_PAR_CONTACT', pc%split_mode)
+      if (pc%split_mode /= 'strips') pc%split_mode = 'owner'
+      if (pc%split_mode == 'owner') then
          allocate(g%contact%mine_node(g%nn))
          g%contact%mine_node = .false.
-         g%contact%mine_node(c_glob) = .true.
+         g%contact%mine_node(pc%c_glob) = .true.
       end if
       block
          integer, allocatable :: ak(:)
          real(wp), allocatable :: av(:, :)
-         call par_gather_ordered(c_glob, reshape([(real(par_rank(), wp), i = 1, &
-                                 size(c_glob))], [1, size(c_glob)]), ak, av)
-         c_all = ak
-         c_owner = nint(av(1, :))
+         call par_gather_ordered(pc%c_glob, reshape([(real(par_rank(), wp), i = 1, &
+                                 size(pc%c_glob))], [1, size(pc%c_glob)]), ak, av)
+         pc%c_all = ak
+         pc%c_owner = nint(av(1, :))
       end block
-      allocate(loc_of(g%nn), h_rcnt(0:par_size() - 1), h_scnt(0:par_size() - 1))
-      loc_of = 0
-      loc_of(node_global) = [(i, i = 1, size(node_global))]
-      h_rcnt = 0
-      h_scnt = 0
-      allocate(h_req(0), h_snd(0))
-      allocate(cvold(3, g%nn))
-      cvold = 0.0_wp
+      allocate(pc%loc_of(g%nn), pc%h_rcnt(0:par_size() - 1), pc%h_scnt(0:par_size() - 1))
+      pc%loc_of = 0
+      pc%loc_of(node_global) = [(i, i = 1, size(node_global))]
+      pc%h_rcnt = 0
+      pc%h_scnt = 0
+      allocate(pc%h_req(0), pc%h_snd(0))
+      allocate(pc%cvold(3, g%nn))
+      pc%cvold = 0.0_wp
       ! a local pair (kept whole by the partitioner) is computed by the rank holding its
       ! elements, without strips: its surface nodes are that rank's own
       block
@@ -150,57 +149,60 @@ contains
       end block
       deallocate(model%contact)
       allocate(model%contact)
-      on = .true.
+      pc%on = .true.
    end subroutine par_contact_setup
 
    !> x(n) and v(n-1/2) of every contact node from their owners into g (sort cycles).
-   subroutine gather_xv(model, g)
+   subroutine gather_xv(pc, model, g)
+      type(par_contact_t), intent(inout) :: pc
       type(model_t), intent(in) :: model
       type(model_t), intent(inout) :: g
       real(wp), allocatable :: vals(:, :), gv(:, :)
       integer :: i
-      allocate(vals(6, size(c_own)), gv(6, size(plan_c%keys)))
-      do i = 1, size(c_own)
-         vals(1:3, i) = model%x(:, c_own(i))
-         vals(4:6, i) = model%v(:, c_own(i))
+      allocate(vals(6, size(pc%c_own)), gv(6, size(pc%plan_c%keys)))
+      do i = 1, size(pc%c_own)
+         vals(1:3, i) = model%x(:, pc%c_own(i))
+         vals(4:6, i) = model%v(:, pc%c_own(i))
       end do
-      call par_gather_values(plan_c, vals, gv)
-      g%x(:, plan_c%keys) = gv(1:3, :)
-      g%v(:, plan_c%keys) = gv(4:6, :)
-      nval_recv = nval_recv + 6*(size(plan_c%keys) - size(c_own))
+      call par_gather_values(pc%plan_c, vals, gv)
+      g%x(:, pc%plan_c%keys) = gv(1:3, :)
+      g%v(:, pc%plan_c%keys) = gv(4:6, :)
+      pc%nval_recv = pc%nval_recv + 6*(size(pc%plan_c%keys) - size(pc%c_own))
    end subroutine gather_xv
 
    !> x(n) and v(n-1/2) of the nodes this rank's strips need (between sorts): its own
    !> contact nodes copied, the others from their owners (MPI_Alltoallv over the halo plan).
-   subroutine halo_xv(model, g)
+   subroutine halo_xv(pc, model, g)
+      type(par_contact_t), intent(inout) :: pc
       type(model_t), intent(in) :: model
       type(model_t), intent(inout) :: g
       real(wp), allocatable :: sb(:), rb(:)
       integer :: i, n
-      do i = 1, size(c_own)
-         g%x(:, c_glob(i)) = model%x(:, c_own(i))
-         g%v(:, c_glob(i)) = model%v(:, c_own(i))
+      do i = 1, size(pc%c_own)
+         g%x(:, pc%c_glob(i)) = model%x(:, pc%c_own(i))
+         g%v(:, pc%c_glob(i)) = model%v(:, pc%c_own(i))
       end do
-      allocate(sb(6*size(h_snd)), rb(6*size(h_req)))
-      do i = 1, size(h_snd)
-         n = h_snd(i)
+      allocate(sb(6*size(pc%h_snd)), rb(6*size(pc%h_req)))
+      do i = 1, size(pc%h_snd)
+         n = pc%h_snd(i)
          sb(6*i - 5:6*i - 3) = model%x(:, n)
          sb(6*i - 2:6*i) = model%v(:, n)
       end do
-      call par_sparse_exchange(sb, 6*h_scnt, rb, 6*h_rcnt)   ! with the halo's ranks only
-      do i = 1, size(h_req)
-         n = h_req(i)
+      call par_sparse_exchange(sb, 6*pc%h_scnt, rb, 6*pc%h_rcnt)   ! with the halo's ranks only
+      do i = 1, size(pc%h_req)
+         n = pc%h_req(i)
          g%x(:, n) = rb(6*i - 5:6*i - 3)
          g%v(:, n) = rb(6*i - 2:6*i)
       end do
-      nval_recv = nval_recv + size(rb)
+      pc%nval_recv = pc%nval_recv + size(rb)
    end subroutine halo_xv
 
    !> After a sort: the nodes this rank's strips need until the next sort (its slave nodes,
    !> the nodes of their candidate segments and of the segments they are in contact with),
    !> requested from their owners: h_req (grouped by owner), h_snd (owned local nodes to
    !> send, grouped by requesting rank).
-   subroutine halo_plan(g)
+   subroutine halo_plan(pc, g)
+      type(par_contact_t), intent(inout) :: pc
       type(model_t), intent(in) :: g
       logical, allocatable :: need(:)
       integer, allocatable :: req(:), sglob(:), one(:)
@@ -241,26 +243,27 @@ contains
       allocate(req(0))
       do r = 0, np - 1
          if (r == me) then
-            h_rcnt(r) = 0
+            pc%h_rcnt(r) = 0
             cycle
          end if
-         sglob = pack(c_all, need(c_all) .and. c_owner == r)
-         h_rcnt(r) = size(sglob)
+         sglob = pack(pc%c_all, need(pc%c_all) .and. pc%c_owner == r)
+         pc%h_rcnt(r) = size(sglob)
          req = [req, sglob]
       end do
-      h_req = req
+      pc%h_req = req
       one = [(1, r = 0, np - 1)]
-      call par_alltoallv(h_rcnt, one, h_scnt, one)
+      call par_alltoallv(pc%h_rcnt, one, pc%h_scnt, one)
       if (allocated(sglob)) deallocate(sglob)
-      allocate(sglob(sum(h_scnt)))
-      call par_alltoallv(h_req, h_rcnt, sglob, h_scnt)
-      h_snd = loc_of(sglob)
+      allocate(sglob(sum(pc%h_scnt)))
+      call par_alltoallv(pc%h_req, pc%h_rcnt, sglob, pc%h_scnt)
+      pc%h_snd = pc%loc_of(sglob)
    end subroutine halo_plan
 
    !> The contact stage of an MPI run, before the shared-node exchange: search and results of
    !> this rank's strips, the results gathered, all of them added in the serial order on the
    !> global model, the contact step bound (dtcrit: the global element step on entry).
-   subroutine par_contact_forces(model, g, dt_old, dtcrit)
+   subroutine par_contact_forces(pc, model, g, dt_old, dtcrit)
+      type(par_contact_t), intent(inout) :: pc
       type(model_t), intent(in) :: model
       type(model_t), intent(inout) :: g
       real(wp), intent(in) :: dt_old
@@ -274,26 +277,26 @@ contains
       t0 = par_wtime()
       g%time = model%time
       g%cycle = model%cycle
-      if (have_vmax) then      ! from the last cycle's work exchange (v unchanged since)
-         vmax = vmax_next
+      if (pc%have_vmax) then      ! from the last cycle's work exchange (v unchanged since)
+         vmax = pc%vmax_next
       else
-         vmax = contact_vmax(model%v, c_own)   ! the owners' largest speed, then the max
+         vmax = contact_vmax(model%v, pc%c_own)   ! the owners' largest speed, then the max
          call par_allreduce(vmax, PAR_MAX)
       end if
-      have_vmax = .false.
+      pc%have_vmax = .false.
       ! rigid bodies in contact: their centres x_c(n) into g (dx_par_rigid)
       if (allocated(model%rigid)) call par_rigid_centres(model%rigid, g%rigid)
       call contact_prepare(g, dt_old, vmax, due)
-      if (due .or. fresh) then   ! a sort: every contact node's x (the strips, the grids)
-         call gather_xv(model, g)
+      if (due .or. pc%fresh) then   ! a sort: every contact node's x (the strips, the grids)
+         call gather_xv(pc, model, g)
       else                 ! between sorts: the halo of this rank's strips
-         call halo_xv(model, g)
+         call halo_xv(pc, model, g)
       end if
       t1 = par_wtime()
-      t_comm = t_comm + (t1 - t0)
+      pc%t_comm = pc%t_comm + (t1 - t0)
       call contact_search_nodes(g, dt_old, dtcrit, vmax, w2max)
-      if (due .or. fresh) call halo_plan(g)
-      fresh = .false.
+      if (due .or. pc%fresh) call halo_plan(pc, g)
+      pc%fresh = .false.
       ! this rank's results (slave nodes near or in contact): after this rank's candidate
       ! bound w2max, per node its serial position and NR numbers (segments, shape
       ! functions, force, gap, tangential force); to every rank in one MPI_Allgatherv (and
@@ -329,13 +332,13 @@ contains
                end associate
             end do
          end do
-         nrec_sent = nrec_sent + n
+         pc%nrec_sent = pc%nrec_sent + n
          t0 = par_wtime()
-         t_cont = t_cont + (t0 - t1)
+         pc%t_cont = pc%t_cont + (t0 - t1)
          call par_allgather_probe(sb, rb, cnt)
          t1 = par_wtime()
-         t_comm = t_comm + (t1 - t0)
-         nres_recv = nres_recv + size(rb) - size(sb)
+         pc%t_comm = pc%t_comm + (t1 - t0)
+         pc%nres_recv = pc%nres_recv + size(rb) - size(sb)
          ! the other ranks' results into their slave nodes (ascending keys per rank)
          pos = 0
          do r = 0, size(cnt) - 1
@@ -366,26 +369,28 @@ contains
       ! the row sums of all results, added in the serial order (every rank alike); w2max
       ! is now the largest candidate bound over the ranks
       call contact_assemble(g, w2max, .false.)
-      t_cont = t_cont + (par_wtime() - t1)
+      pc%t_cont = pc%t_cont + (par_wtime() - t1)
       call contact_dt(g%contact, w2max, dtcrit)
-      ncycle = ncycle + 1
+      pc%ncycle = pc%ncycle + 1
    end subroutine par_contact_forces
 
    !> After the shared-node exchange: f = (element sum) + contact force at every held
    !> contact node, as the serial contact_forces adds it.
-   subroutine par_contact_add(model, g)
+   subroutine par_contact_add(pc, model, g)
+      type(par_contact_t), intent(in) :: pc
       type(model_t), intent(inout) :: model
       type(model_t), intent(in) :: g
       integer :: i
-      do i = 1, size(l_loc)
-         model%f(:, l_loc(i)) = model%f(:, l_loc(i)) + g%contact%fc(:, l_glob(i))
+      do i = 1, size(pc%l_loc)
+         model%f(:, pc%l_loc(i)) = model%f(:, pc%l_loc(i)) + g%contact%fc(:, pc%l_glob(i))
       end do
    end subroutine par_contact_add
 
    !> After the velocity update: v(n-1/2) and v(n+1/2) of the nodes with a contact force
    !> (the others add an exact zero to the work) from their owners, then the serial
    !> contact_work on the global model (work, sliding energy; rcforc from rank 0).
-   subroutine par_contact_work(model, g, vold, dtavg, outdir)
+   subroutine par_contact_work(pc, model, g, vold, dtavg, outdir)
+      type(par_contact_t), intent(inout) :: pc
       type(model_t), intent(inout) :: model
       type(model_t), intent(inout) :: g
       real(wp), intent(in) :: vold(:, :), dtavg
@@ -401,18 +406,18 @@ contains
       np = par_size()
       allocate(cnt(0:np - 1), d(0:np - 1))
       cnt = 0
-      do i = 1, size(c_all)
-         if (.not. any(g%contact%fc(:, c_all(i)) /= 0.0_wp)) cycle
-         cnt(c_owner(i)) = cnt(c_owner(i)) + 6
+      do i = 1, size(pc%c_all)
+         if (.not. any(g%contact%fc(:, pc%c_all(i)) /= 0.0_wp)) cycle
+         cnt(pc%c_owner(i)) = cnt(pc%c_owner(i)) + 6
       end do
       cnt = cnt + 1                  ! first: the rank's largest contact-node speed
       allocate(sb(cnt(par_rank())))
-      sb(1) = contact_vmax(model%v, c_own)
+      sb(1) = contact_vmax(model%v, pc%c_own)
       n = 1
-      do i = 1, size(c_all)
-         if (c_owner(i) /= par_rank()) cycle
-         if (.not. any(g%contact%fc(:, c_all(i)) /= 0.0_wp)) cycle
-         l = loc_of(c_all(i))
+      do i = 1, size(pc%c_all)
+         if (pc%c_owner(i) /= par_rank()) cycle
+         if (.not. any(g%contact%fc(:, pc%c_all(i)) /= 0.0_wp)) cycle
+         l = pc%loc_of(pc%c_all(i))
          sb(n + 1:n + 3) = vold(:, l)
          sb(n + 4:n + 6) = model%v(:, l)
          n = n + 6
@@ -422,58 +427,59 @@ contains
       do r = 1, np - 1
          d(r) = d(r - 1) + cnt(r - 1)
       end do
-      vmax_next = 0.0_wp
+      pc%vmax_next = 0.0_wp
       do r = 0, np - 1
-         vmax_next = max(vmax_next, rb(d(r) + 1))
+         pc%vmax_next = max(pc%vmax_next, rb(d(r) + 1))
          d(r) = d(r) + 1
       end do
-      have_vmax = .true.
-      do i = 1, size(c_all)
-         nd = c_all(i)
+      pc%have_vmax = .true.
+      do i = 1, size(pc%c_all)
+         nd = pc%c_all(i)
          if (.not. any(g%contact%fc(:, nd) /= 0.0_wp)) cycle
-         r = c_owner(i)
-         cvold(:, nd) = rb(d(r) + 1:d(r) + 3)
+         r = pc%c_owner(i)
+         pc%cvold(:, nd) = rb(d(r) + 1:d(r) + 3)
          g%v(:, nd) = rb(d(r) + 4:d(r) + 6)
          d(r) = d(r) + 6
       end do
-      nval_recv = nval_recv + size(rb) - size(sb)
-      t_comm = t_comm + (par_wtime() - t0)
-      call contact_work(g, cvold, dtavg, outdir, error)
+      pc%nval_recv = pc%nval_recv + size(rb) - size(sb)
+      pc%t_comm = pc%t_comm + (par_wtime() - t0)
+      call contact_work(g, pc%cvold, dtavg, outdir, error)
       if (allocated(error)) call par_abort(error%message, error%code)   ! rank 0 alone
       model%energy%sliding = g%energy%sliding
    end subroutine par_contact_work
 
    !> End of the run (rank 0 logs): contact time per cycle and the slave nodes per strip.
-   subroutine par_contact_report(g)
+   subroutine par_contact_report(pc, g)
+      type(par_contact_t), intent(in) :: pc
       type(model_t), intent(in) :: g
       real(wp) :: t(4), tm(4), rv, rvm
       integer, allocatable :: cnt(:)
       integer :: i, j, np
       character(:), allocatable :: line
-      if (.not. on) return
+      if (.not. pc%on) return
       np = par_size()
-      t = [t_cont, t_comm, g%contact%t_search, g%contact%t_force - g%contact%t_search]/ &
-          real(max(1, ncycle), wp)
+      t = [pc%t_cont, pc%t_comm, g%contact%t_search, g%contact%t_force - g%contact%t_search]/ &
+          real(max(1, pc%ncycle), wp)
       tm = t
       call par_allreduce(tm, PAR_MAX)
       call par_allreduce(t, PAR_SUM)
       t = t/real(np, wp)
-      rv = real(nval_recv, wp)/real(max(1, ncycle), wp)
+      rv = real(pc%nval_recv, wp)/real(max(1, pc%ncycle), wp)
       rvm = rv
       call par_allreduce(rv, PAR_SUM)
       call par_allreduce(rvm, PAR_MAX)
-      call log_info('dynx: MPI contact: slave nodes split by '//trim(split_mode)// &
+      call log_info('dynx: MPI contact: slave nodes split by '//trim(pc%split_mode)// &
                     ' (--contact-split)')
-      call log_info('dynx: MPI contact: '//str(size(c_all))//' contact nodes; numbers '// &
+      call log_info('dynx: MPI contact: '//str(size(pc%c_all))//' contact nodes; numbers '// &
          'received per rank and cycle (x, v, work terms; without the results): mean '// &
          rstr(rv/real(par_size(), wp), 4)//', max '//rstr(rvm, 4))
-      rv = real(nres_recv, wp)/real(max(1, ncycle), wp)
+      rv = real(pc%nres_recv, wp)/real(max(1, pc%ncycle), wp)
       rvm = rv
       call par_allreduce(rv, PAR_SUM)
       call par_allreduce(rvm, PAR_MAX)
       call log_info('dynx: MPI contact: numbers received per rank and cycle (results): '// &
          'mean '//rstr(rv/real(par_size(), wp), 4)//', max '//rstr(rvm, 4))
-      call log_info('dynx: MPI contact: '//str(ncycle)//' cycles, per cycle: search + '// &
+      call log_info('dynx: MPI contact: '//str(pc%ncycle)//' cycles, per cycle: search + '// &
          'forces '//rstr(1.0e6_wp*t(1), 4)//' us (max over ranks '//rstr(1.0e6_wp*tm(1), 4)// &
          '), contact communication '//rstr(1.0e6_wp*t(2), 4)//' us (max '// &
          rstr(1.0e6_wp*tm(2), 4)//'); of search + forces: bucket sorts and strips '// &

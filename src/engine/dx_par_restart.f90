@@ -1,4 +1,4 @@
-!> Restart dumps of MPI runs (issue 7, last acceptance item; docs/design.md "Restart of MPI
+!> Restart dumps of MPI runs (issue 7, last acceptance item; docs/history.md "Restart of MPI
 !> runs"). A dump set of an NP-rank run is NP part files and one manifest:
 !>   <stem>.cycC.rankRRRRR.h5  each rank's sub-model state at cycle C, written by the
 !>                         serial writer (dx_restart: restart_write on the rank's model_t, so
@@ -40,20 +40,25 @@ module dx_par_restart
    use dx_restart, only: restart_write, restart_read
    use dx_restart_file, only: rs_file_t, rs_create, rs_commit, rs_open, rs_close, crc32_bytes
    use dx_h5, only: h5_write_attr, h5_read_attr
-   use dx_par, only: par_rank, par_size, par_abort, par_allreduce, par_gather_ordered, PAR_MAX
+   use dx_par, only: par_rank, par_size, par_abort, par_allreduce, PAR_MAX
+   use dx_par_plan, only: par_gather_ordered
    use dx_par_agree, only: par_agree
-   use dx_par_engine, only: par_engine_on, par_engine_maps
-   use dx_par_plot, only: par_plot_resume, par_plot_from_serial
+   use dx_par_engine, only: par_engine_t, par_engine_maps
+   use dx_par_plot, only: par_plot_t, par_plot_resume, par_plot_from_serial
    use dx_rank_file, only: deck_content_hash
    implicit none
    private
-   public :: par_restart_write, par_restart_read, par_restart_part_name, par_restart_precheck
+   public :: par_restart_write, par_restart_read, par_restart_part_name, par_restart_precheck, &
+             serial_restart_read, par_restart_parts_t
 
    !> Parts this rank wrote or read, by manifest (removed when a new set replaces them).
    type :: part_rec_t
       character(:), allocatable :: manifest, part
    end type part_rec_t
-   type(part_rec_t), allocatable, save :: known(:)
+   !> The dump parts of a rank's domain (a component of mpi_domain_t).
+   type :: par_restart_parts_t
+      type(part_rec_t), allocatable :: known(:)
+   end type par_restart_parts_t
 
 contains
 
@@ -89,20 +94,21 @@ contains
    end function dir_of
 
    !> Remember that part belongs to manifest; return the part it replaces ('' if none).
-   subroutine remember(manifest, part, old)
+   subroutine remember(parts, manifest, part, old)
+      type(par_restart_parts_t), intent(inout) :: parts
       character(*), intent(in) :: manifest, part
       character(:), allocatable, intent(out) :: old
       integer :: k
       old = ''
-      if (.not. allocated(known)) allocate(known(0))
-      do k = 1, size(known)
-         if (known(k)%manifest == manifest) then
-            old = known(k)%part
-            known(k)%part = part
+      if (.not. allocated(parts%known)) allocate(parts%known(0))
+      do k = 1, size(parts%known)
+         if (parts%known(k)%manifest == manifest) then
+            old = parts%known(k)%part
+            parts%known(k)%part = part
             return
          end if
       end do
-      known = [known, part_rec_t(manifest, part)]
+      parts%known = [parts%known, part_rec_t(manifest, part)]
    end subroutine remember
 
    !> Remove a file if it exists (superseded parts; failures do not matter).
@@ -115,7 +121,9 @@ contains
 
    !> Collective: every rank writes its part, then rank 0 the manifest path. On failure
    !> every rank returns an error (the failing rank's own message on that rank).
-   subroutine par_restart_write(model, path, kind, error)
+   subroutine par_restart_write(eng, parts, model, path, kind, error)
+      type(par_engine_t), intent(inout) :: eng
+      type(par_restart_parts_t), intent(inout) :: parts
       type(model_t), intent(inout) :: model
       character(*), intent(in) :: path, kind
       type(error_t), allocatable, intent(out) :: error
@@ -132,7 +140,7 @@ contains
       np = par_size()
       prefix = part_prefix(path, model%cycle)
       part = par_restart_part_name(prefix, me)
-      call par_engine_maps(gp, ng, hash)
+      call par_engine_maps(eng, gp, ng, hash)
       call swap_contact(model, gp)          ! the rank's contact state is in g (below)
       if (allocated(model%walls) .and. allocated(gp%walls)) then
          do k = 1, size(model%walls)       ! the serial wall forces (par_engine's flush)
@@ -183,14 +191,37 @@ contains
          end if
          return
       end if
-      call remember(path, part, old)           ! the new set is whole: drop the old part
+      call remember(parts, path, part, old)           ! the new set is whole: drop the old part
       if (len(old) > 0 .and. old /= part) call remove_file(old)
    end subroutine par_restart_write
 
-   !> Restore model from the dump path: serial runs read a serial dump (an MPI manifest is
-   !> refused), MPI runs read a manifest and their part, or a serial dump through the global
-   !> model. Errors that concern one rank stop every rank (par_abort) naming it.
-   subroutine par_restart_read(model, path, error)
+   !> A serial run: restore model from the serial dump path (an MPI manifest is refused).
+   subroutine serial_restart_read(model, path, error)
+      type(model_t), intent(inout) :: model
+      character(*), intent(in) :: path
+      type(error_t), allocatable, intent(out) :: error
+      integer :: mode, mnp
+      real(wp), allocatable :: crcs(:)
+      character(:), allocatable :: mhash, prefix
+      call inspect(path, mode, mnp, mhash, crcs, error, prefix)
+      if (allocated(error)) return
+      if (mode == 1) then
+         call set_error(error, 'restart file '//path//' is the manifest of a dump written '// &
+            'by an MPI run on '//str(mnp)//' ranks; continue it with the same number of '// &
+            'ranks: mpirun -np '//str(mnp)//' dynx -i '//model%deck_file//' -r '//path, &
+            EXIT_INPUT)
+         return
+      end if
+      call restart_read(model, path, error)
+   end subroutine serial_restart_read
+
+   !> An MPI run: restore model from the dump path, a manifest and this rank's part, or a
+   !> serial dump through the global model; the plot part (plot) continues. Errors that
+   !> concern one rank stop every rank (par_abort) naming it.
+   subroutine par_restart_read(eng, plot, parts, model, path, error)
+      type(par_engine_t), intent(inout) :: eng
+      type(par_restart_parts_t), intent(inout) :: parts
+      type(par_plot_t), intent(inout) :: plot
       type(model_t), intent(inout) :: model
       character(*), intent(in) :: path
       type(error_t), allocatable, intent(out) :: error
@@ -203,20 +234,7 @@ contains
       integer :: code
       np = par_size()
       me = par_rank()
-      if (.not. par_engine_on()) then
-         call inspect(path, mode, mnp, mhash, crcs, error, prefix)
-         if (allocated(error)) return
-         if (mode == 1) then
-            call set_error(error, 'restart file '//path//' is the manifest of a dump written '// &
-               'by an MPI run on '//str(mnp)//' ranks; continue it with the same number of '// &
-               'ranks: mpirun -np '//str(mnp)//' dynx -i '//model%deck_file//' -r '//path, &
-               EXIT_INPUT)
-            return
-         end if
-         call restart_read(model, path, error)
-         return
-      end if
-      call par_engine_maps(gp, ng, hash)
+      call par_engine_maps(eng, gp, ng, hash)
       ! rank 0 judges the dump set; its errors stop every rank
       mode = 0
       ! (errors: every rank reaches each par_agree, and all stop together: dx_par_agree)
@@ -244,7 +262,7 @@ contains
          call par_agree(error)
          if (allocated(error)) return
          part = par_restart_part_name(dir_of(path)//prefix, me)
-         call remember(path, part, old)
+         call remember(parts, path, part, old)
          call check_part(part, crcs(me + 1), error)
          if (allocated(error)) call part_error(error)
          call par_agree(error)
@@ -269,9 +287,9 @@ contains
       ! dump: the parts are filled from the serial d3plot.h5 first), before rank 0 replaces
       ! d3plot.h5 (out%resume in dynx.f90, after the barrier below)
       if (mode == 1) then
-         call par_plot_resume(model%run%nplot, error)
+         call par_plot_resume(plot, model%run%nplot, error)
       else
-         call par_plot_from_serial(model%run%nplot, error)
+         call par_plot_from_serial(plot, model%run%nplot, error)
       end if
       if (allocated(error)) then
          msg = 'restart from '//path//', plot part of rank '//str(me)//': '//error%message

@@ -3,7 +3,7 @@
 !> the MPI engine (src/parallel/dx_par_engine.f90) gathers the terms into the global model
 !> and calls the very same procedures, so both add the same numbers in the same order with
 !> the same machine code (no reassociation, no different FMA contraction): the parallel
-!> glstat is the serial one bit for bit (docs/design.md, "Fixed-order sums").
+!> glstat is the serial one bit for bit (docs/history.md, "Fixed-order sums").
 !> Energy balance: Hallquist, DYNA3D User's Manual (UCRL-MA-107254), and Belytschko, Liu &
 !> Moran 2000, section 6.2.3 (time-centred kinetic energy, work of constraint reactions).
 module dx_energy_sums

@@ -1,4 +1,4 @@
-!> The MPI engine (ParaDyn step 5; docs/design.md): what `mpirun -np NP bin/dynx` adds to the
+!> The MPI engine (ParaDyn step 5; docs/history.md): what `mpirun -np NP bin/dynx` adds to the
 !> serial explicit loop. Every rank reads the deck and builds the serial model, reads its rank
 !> file (dynx-part; or rank 0 partitions when none exists) and turns the model into its
 !> sub-model (dx_par_model: the pieces of the serial element blocks, its nodes, one slot node
@@ -18,7 +18,8 @@
 !> the message, writes the last plot state and stops with the serial run's exit code.
 !> Fixed-order sums: the idea of OpenRadioss /PARITH/ON; single exchange per cycle: ParaDyn
 !> (Hoover et al., LLNL Engineering Thrust Area Report FY97, article 4 of shared/seed).
-!> Module state (allowed in parallel/): the global model, the rank's plan and maps.
+!> No module state: the global model, the rank's plan and maps are a par_engine_t, a
+!> component of the rank's domain (dx_domain_mpi), passed to every procedure here.
 module dx_par_engine
    use, intrinsic :: iso_fortran_env, only: int64
    use dx_kinds, only: wp, nv_chunk, huge_wp
@@ -27,11 +28,11 @@ module dx_par_engine
    use dx_strings, only: str, rstr
    use dx_log, only: log_info, log_set_quiet
    use dx_model, only: model_t, elem_block_t
-   use dx_par, only: par_rank, par_size, par_abort, par_minloc, par_gather_ordered, &
-                     par_allreduce, par_barrier, PAR_MAX, gather_plan_t, par_gather_setup, &
-                     par_gather_values, par_wtime, PAR_SUM, par_bcast_text, &
-                     par_gather_setup_root, par_gather_values_root, par_bcast_real, par_minloc8, &
+   use dx_par, only: par_rank, par_size, par_abort, par_minloc, par_allreduce, par_barrier, &
+                     PAR_MAX, par_wtime, PAR_SUM, par_bcast_text, par_bcast_real, par_minloc8, &
                      par_allgather_probe
+   use dx_par_plan, only: par_gather_ordered, gather_plan_t, par_gather_setup, par_gather_values, &
+                          par_gather_setup_root, par_gather_values_root
    use dx_sort, only: sort_index
    use dx_par_model, only: par_model_t, par_model_build, par_fill_slots, par_exchange_forces, &
                            par_exchange_mass
@@ -41,17 +42,17 @@ module dx_par_engine
    use dx_energy_sums, only: initial_kinetic, kinetic_energy, element_energies, &
                              constraint_terms, set_energy, constrained_nodes
    use dx_constraints, only: apply_rigidwalls, wall_hits_t
-   use dx_par_loads, only: par_loads_setup, par_loads_take_mass
+   use dx_par_loads, only: par_loads_t, par_loads_setup, par_loads_take_mass
    use dx_element, only: element_mass_share
-   use dx_par_rigid, only: par_rigid_setup
-   use dx_par_contact, only: par_contact_setup, par_contact_report, contact_groups, &
-                             write_contact_report
-   use dx_par_plot, only: par_plot_setup, par_plot_write, par_plot_finish
+   use dx_par_rigid, only: par_rigid_t, par_rigid_setup
+   use dx_par_contact, only: par_contact_t, par_contact_setup, par_contact_report, &
+                             contact_groups, write_contact_report
+   use dx_par_plot, only: par_plot_t, par_plot_setup, par_plot_write, par_plot_finish
    use dx_par_agree, only: par_agree
    use dx_par_emc, only: par_emc_setup
    implicit none
    private
-   public :: par_engine_setup, par_engine_on, par_engine_mass, par_engine_initial, &
+   public :: par_engine_t, par_engine_setup, par_engine_on, par_engine_mass, par_engine_initial, &
              par_engine_fill, par_engine_dt, par_engine_exchange, par_engine_constraints, &
              par_engine_energies, par_engine_output, par_engine_fail, &
              par_engine_global, par_engine_report, par_engine_mass_share, par_engine_defer, &
@@ -59,70 +60,84 @@ module dx_par_engine
              par_engine_plot_finish, par_engine_together, par_engine_writer, &
              par_engine_flush_work, par_engine_maps
 
-   logical, save :: on = .false.
-   type(model_t), target, save :: g                  !< the global model (serial numbering)
-   type(par_model_t), save :: pm                      !< this rank's sub-model plan
-   integer, allocatable, save :: own(:)               !< owned local nodes
-   integer, allocatable, save :: key_elem(:)          !< serial order key -> global element
-   logical, allocatable, save :: owned(:)             !< (nloc) this rank owns the node
-   real(wp), allocatable, save :: gvold(:, :)
-   !> Work of the constraints and stonewalls (par_engine_constraints): the rank's
-   !> constrained nodes (the explicit loop's cnodes), the serial position of each owned one
-   !> (0: not owned), the map of each wall's local node list to its serial positions, and
-   !> the records of nonzero terms kept until a sum is needed
-   integer, allocatable, save :: lcn(:), lc_key(:)
-   real(wp), allocatable, save :: lc_term(:)
    type :: int_list_t
       integer, allocatable :: p(:)
    end type int_list_t
-   type(int_list_t), allocatable, save :: wall_kg(:)
-   type(wall_hits_t), save :: hits
-   logical, save :: have_bc = .false.                 !< a constrained or wall node anywhere
-   real(wp), save :: key_mult = 1.0_wp                !< serial positions per (cycle, wall)
    integer, parameter :: NREC_W = 7                   !< cycle, wall (0: constraint), position,
                                                       !< work term, m dv/dtavg (walls)
-   real(wp), allocatable, save :: rec(:, :)           !< (NREC_W, nrec) kept records
-   integer, save :: nrec = 0
-   integer, allocatable, save :: elem_loc(:, :)       !< (2, nel) piece and position
-   type(gather_plan_t), save :: plan_own, plan_elem
    integer, parameter :: NBUF_MAX = 32                !< cycles of work terms kept at most
-   integer, save :: nbuf = 0
-   !> wall time in the force exchange, the dt reduction, the ordered gathers (sums, output)
-   real(wp), save :: t_exch = 0.0_wp, t_dt = 0.0_wp, t_gath = 0.0_wp
-   type(error_t), allocatable, save :: pending     !< a failure found here, not yet known to all
-   logical, save :: together = .false.             !< a failure every rank knows (clean stop)
-   character(16), save :: deck_hash = ''              !< content hash of the deck (restart)
-   !> Rank 0 alone holds the global model's nodal state and forms the ordered sums (the
-   !> other ranks get the results by MPI_Bcast and free g after set-up): decks without
-   !> contact and rigid bodies, whose stages read g's nodal arrays on every rank.
-   logical, save :: root_only = .false.
-   logical, save :: trimmed = .false.
-   !> The dt reduction's key names its element: key = serial order key * kmult + element
-   !> (kmult = ne + 1 while that stays below 2**53, else 0 and the key_elem table is kept).
-   !> Each rank keys its own elements (lel ascending, lkey their serial order keys) and the
-   !> element of the last reduction (stale_*: a rank without deformable elements passes the
-   !> previous step's element on), so no rank holds a whole-model table for it.
-   integer(int64), save :: kmult = 0
    integer(int64), parameter :: KEY_NONE = 2_int64**53 - 1
-   integer, allocatable, save :: lel(:)
-   integer(int64), allocatable, save :: lkey(:)
-   integer, save :: stale_elem = 0
-   integer(int64), save :: stale_key = 0
+
+   !> The engine's part of a rank's domain (a component of mpi_domain_t): the global model,
+   !> the rank's plan and maps, the kept work terms, timers and the failure state.
+   type :: par_engine_t
+      logical :: on = .false.
+      type(model_t), pointer :: g => null()      !< the global model (serial numbering)
+      type(par_model_t) :: pm                    !< this rank's sub-model plan
+      integer, allocatable :: own(:)             !< owned local nodes
+      integer, allocatable :: key_elem(:)        !< serial order key -> global element
+      logical, allocatable :: owned(:)           !< (nloc) this rank owns the node
+      real(wp), allocatable :: gvold(:, :)
+      !> Work of the constraints and stonewalls (par_engine_constraints): the rank's
+      !> constrained nodes (the explicit loop's cnodes), the serial position of each owned
+      !> one (0: not owned), the map of each wall's local node list to its serial positions,
+      !> and the records of nonzero terms kept until a sum is needed
+      integer, allocatable :: lcn(:), lc_key(:)
+      real(wp), allocatable :: lc_term(:)
+      type(int_list_t), allocatable :: wall_kg(:)
+      type(wall_hits_t) :: hits
+      logical :: have_bc = .false.               !< a constrained or wall node anywhere
+      real(wp) :: key_mult = 1.0_wp              !< serial positions per (cycle, wall)
+      real(wp), allocatable :: rec(:, :)         !< (NREC_W, nrec) kept records
+      integer :: nrec = 0
+      integer, allocatable :: elem_loc(:, :)     !< (2, nel) piece and position
+      type(gather_plan_t) :: plan_own, plan_elem
+      integer :: nbuf = 0
+      !> wall time in the force exchange, the dt reduction, the ordered gathers
+      real(wp) :: t_exch = 0.0_wp, t_dt = 0.0_wp, t_gath = 0.0_wp
+      type(error_t), allocatable :: pending      !< a failure found here, not yet known to all
+      logical :: together = .false.              !< a failure every rank knows (clean stop)
+      character(16) :: deck_hash = ''            !< content hash of the deck (restart)
+      !> Rank 0 alone holds the global model's nodal state and forms the ordered sums (the
+      !> other ranks get the results by MPI_Bcast and free g after set-up): decks without
+      !> contact and rigid bodies, whose stages read g's nodal arrays on every rank.
+      logical :: root_only = .false.
+      logical :: trimmed = .false.
+      !> The dt reduction's key names its element: key = serial order key * kmult + element
+      !> (kmult = ne + 1 while that stays below 2**53, else 0 and the key_elem table is
+      !> kept). Each rank keys its own elements (lel ascending, lkey their serial order keys)
+      !> and the element of the last reduction (stale_*: a rank without deformable elements
+      !> passes the previous step's element on), so no rank holds a whole-model table for it.
+      integer(int64) :: kmult = 0
+      integer, allocatable :: lel(:)
+      integer(int64), allocatable :: lkey(:)
+      integer :: stale_elem = 0
+      integer(int64) :: stale_key = 0
+   end type par_engine_t
 
 contains
 
    !> True in an MPI run on more than one rank (after par_engine_setup).
-   logical function par_engine_on()
-      par_engine_on = on
+   logical function par_engine_on(eng)
+      type(par_engine_t), intent(in) :: eng
+      par_engine_on = eng%on
    end function par_engine_on
 
    !> Turn the serial model (read by every rank) into this rank's sub-model. The rank file is
    !> partdir/rank_R.h5 when partdir is given, else outdir/rank_R.h5, else rank_R.h5 next
    !> to the deck; when rank_00000.h5 is in none of them, rank 0 partitions the deck (as
-   !> dynx-part) into outdir first. Errors that concern one rank abort all ranks.
-   subroutine par_engine_setup(model, deck, outdir, partdir, error)
+   !> dynx-part) into outdir first. Errors that concern one rank abort all ranks. loads and
+   !> rigid, plot, contact: the domain's parts of the load, rigid-body, plot and contact
+   !> stages (dx_par_loads, dx_par_rigid, dx_par_plot, dx_par_contact).
+   subroutine par_engine_setup(eng, model, deck, outdir, partdir, loads, rigid, plot, contact, &
+                               error)
+      type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(inout) :: model
       character(*), intent(in) :: deck, outdir, partdir
+      type(par_loads_t), intent(inout) :: loads
+      type(par_rigid_t), intent(inout) :: rigid
+      type(par_plot_t), intent(inout) :: plot
+      type(par_contact_t), intent(inout) :: contact
       type(error_t), allocatable, intent(out) :: error
       type(rank_part_t) :: rp
       character(16) :: hash
@@ -138,7 +153,7 @@ contains
       if (me > 0) call log_set_quiet(.true.)
       call deck_content_hash(model%deck_files, hash, error)   ! the files read_deck read
       if (allocated(error)) return
-      deck_hash = hash
+      eng%deck_hash = hash
       k = index(deck, '/', back=.true.)
       deckdir = '.'
       if (k > 0) deckdir = deck(1:k - 1)
@@ -182,7 +197,7 @@ contains
       end if
       ! the global model keeps the serial numbering; the rank's model becomes local. The
       ! big arrays move into g (no second copy of the serial model on any rank).
-      root_only = .not. (allocated(model%contact) .or. allocated(model%rigid))
+      eng%root_only = .not. (allocated(model%contact) .or. allocated(model%rigid))
       block
          type(elem_block_t), allocatable :: tb(:)
          real(wp), allocatable :: tx0(:, :), tv0(:, :)
@@ -191,54 +206,59 @@ contains
          call move_alloc(model%x0, tx0)
          call move_alloc(model%v0, tv0)
          call move_alloc(model%node_label, tlab)
-         g = model
-         call move_alloc(tb, g%blocks)
-         call move_alloc(tx0, g%x0)
-         call move_alloc(tv0, g%v0)
-         call move_alloc(tlab, g%node_label)
+         allocate(eng%g)
+         eng%g = model
+         call move_alloc(tb, eng%g%blocks)
+         call move_alloc(tx0, eng%g%x0)
+         call move_alloc(tv0, eng%g%v0)
+         call move_alloc(tlab, eng%g%node_label)
       end block
-      allocate(g%x(3, g%nn), g%v(3, g%nn), g%f(3, g%nn), g%mass(g%nn))
-      g%x = g%x0
-      g%v = g%v0
-      g%f = 0.0_wp
-      g%mass = 0.0_wp
-      allocate(gvold(3, g%nn))
-      gvold = 0.0_wp
-      call par_model_build(g, rp, pm)
-      allocate(loc(g%nn))
+      allocate(eng%g%x(3, eng%g%nn), eng%g%v(3, eng%g%nn), eng%g%f(3, eng%g%nn), &
+               eng%g%mass(eng%g%nn))
+      eng%g%x = eng%g%x0
+      eng%g%v = eng%g%v0
+      eng%g%f = 0.0_wp
+      eng%g%mass = 0.0_wp
+      allocate(eng%gvold(3, eng%g%nn))
+      eng%gvold = 0.0_wp
+      call par_model_build(eng%g, rp, eng%pm)
+      allocate(loc(eng%g%nn))
       loc = 0
-      loc(rp%nodes) = [(i, i = 1, pm%nloc)]
-      model%nn = pm%nloc + pm%nslot
-      model%node_label = [g%node_label(rp%nodes), g%node_label(rp%nodes(pm%slot_node))]
-      model%x0 = reshape([g%x0(:, rp%nodes), g%x0(:, rp%nodes(pm%slot_node))], [3, model%nn])
-      model%v0 = reshape([g%v0(:, rp%nodes), g%v0(:, rp%nodes(pm%slot_node))], [3, model%nn])
-      call move_alloc(pm%blocks, model%blocks)
+      loc(rp%nodes) = [(i, i = 1, eng%pm%nloc)]
+      model%nn = eng%pm%nloc + eng%pm%nslot
+      model%node_label = [eng%g%node_label(rp%nodes), eng%g%node_label(rp%nodes(eng%pm%slot_node))]
+      model%x0 = reshape([eng%g%x0(:, rp%nodes), eng%g%x0(:, rp%nodes(eng%pm%slot_node))], &
+                         [3, model%nn])
+      model%v0 = reshape([eng%g%v0(:, rp%nodes), eng%g%v0(:, rp%nodes(eng%pm%slot_node))], &
+                         [3, model%nn])
+      call move_alloc(eng%pm%blocks, model%blocks)
       if (allocated(model%spcs)) then
-         model%spcs = g%spcs(rp%spcs)
+         model%spcs = eng%g%spcs(rp%spcs)
          do k = 1, size(model%spcs)
             model%spcs(k)%node = loc(model%spcs(k)%node)
          end do
       end if
       if (allocated(model%prescribed)) then
-         model%prescribed = g%prescribed(rp%prescribed)
+         model%prescribed = eng%g%prescribed(rp%prescribed)
          do k = 1, size(model%prescribed)
             model%prescribed(k)%node = loc(model%prescribed(k)%node)
          end do
       end if
-      owned = rp%node_owner == me
-      own = pack([(i, i = 1, pm%nloc)], owned)
-      call par_loads_setup(model, g, rp, pm, loc, owned)   ! external loads (dx_par_loads)
-      call par_rigid_setup(g, pm, owned)                   ! rigid bodies (dx_par_rigid)
-      if (allocated(g%contact)) call par_contact_setup(model, g, pm%node_global, owned)
-      kmult = int(g%ne, int64) + 1
-      if (real(size(g%blocks)*int(nv_chunk, int64) + 1, wp)*real(kmult, wp) >= &
-          real(KEY_NONE, wp)) kmult = 0
-      if (kmult == 0) then    ! a model too large for the key to carry the element
-         allocate(key_elem(size(g%blocks)*nv_chunk))
-         key_elem = 0
-         do k = 1, size(g%blocks)
-            key_elem((k - 1)*nv_chunk + 1:(k - 1)*nv_chunk + g%blocks(k)%nel) = &
-               g%blocks(k)%elem
+      eng%owned = rp%node_owner == me
+      eng%own = pack([(i, i = 1, eng%pm%nloc)], eng%owned)
+      call par_loads_setup(loads, model, eng%g, rp, eng%pm, loc, eng%owned)   ! external loads
+      call par_rigid_setup(rigid, eng%g, eng%pm, eng%owned)                   ! rigid bodies
+      if (allocated(eng%g%contact)) &
+         call par_contact_setup(contact, model, eng%g, eng%pm%node_global, eng%owned)
+      eng%kmult = int(eng%g%ne, int64) + 1
+      if (real(size(eng%g%blocks)*int(nv_chunk, int64) + 1, wp)*real(eng%kmult, wp) >= &
+          real(KEY_NONE, wp)) eng%kmult = 0
+      if (eng%kmult == 0) then    ! a model too large for the key to carry the element
+         allocate(eng%key_elem(size(eng%g%blocks)*nv_chunk))
+         eng%key_elem = 0
+         do k = 1, size(eng%g%blocks)
+            eng%key_elem((k - 1)*nv_chunk + 1:(k - 1)*nv_chunk + eng%g%blocks(k)%nel) = &
+               eng%g%blocks(k)%elem
          end do
       end if
       block
@@ -253,73 +273,73 @@ contains
          end do
          idx = [(j, j = 1, n)]
          call sort_index(idx, ids)
-         lel = ids(idx)
-         lkey = [(serial_key(lel(j)), j = 1, n)]
+         eng%lel = ids(idx)
+         eng%lkey = [(serial_key(eng, eng%lel(j)), j = 1, n)]
       end block
       block
          integer, allocatable :: gcnodes(:), gcpos(:)
          integer :: nb, j, kmax
-         call constrained_nodes(g, gcnodes)
-         allocate(gcpos(g%nn))
+         call constrained_nodes(eng%g, gcnodes)
+         allocate(gcpos(eng%g%nn))
          gcpos = 0
          gcpos(gcnodes) = [(i, i = 1, size(gcnodes))]
-         call constrained_nodes(model, lcn)          ! = the explicit loop's cnodes
-         allocate(lc_key(size(lcn)), lc_term(size(lcn)))
-         lc_key = 0
-         do i = 1, size(lcn)
-            if (lcn(i) <= pm%nloc) then
-               if (owned(lcn(i))) lc_key(i) = gcpos(pm%node_global(lcn(i)))
+         call constrained_nodes(model, eng%lcn)          ! = the explicit loop's cnodes
+         allocate(eng%lc_key(size(eng%lcn)), eng%lc_term(size(eng%lcn)))
+         eng%lc_key = 0
+         do i = 1, size(eng%lcn)
+            if (eng%lcn(i) <= eng%pm%nloc) then
+               if (eng%owned(eng%lcn(i))) eng%lc_key(i) = gcpos(eng%pm%node_global(eng%lcn(i)))
             end if
          end do
          kmax = size(gcnodes)
-         nb = count(lc_key > 0)
+         nb = count(eng%lc_key > 0)
          if (allocated(model%walls)) then     ! the rank's wall nodes, in wall order
-            allocate(wall_kg(size(model%walls)))
+            allocate(eng%wall_kg(size(model%walls)))
             do k = 1, size(model%walls)
-               associate (gn => g%walls(k)%nodes)
+               associate (gn => eng%g%walls(k)%nodes)
                   model%walls(k)%nodes = pack(loc(gn), loc(gn) > 0)
-                  wall_kg(k)%p = pack([(j, j = 1, size(gn))], loc(gn) > 0)
+                  eng%wall_kg(k)%p = pack([(j, j = 1, size(gn))], loc(gn) > 0)
                   kmax = max(kmax, size(gn))
                   nb = nb + size(gn)
                end associate
             end do
          end if
          call par_allreduce(nb, PAR_MAX)
-         have_bc = nb > 0
-         key_mult = real(kmax, wp) + 1.0_wp
-         allocate(rec(NREC_W, 64))
+         eng%have_bc = nb > 0
+         eng%key_mult = real(kmax, wp) + 1.0_wp
+         allocate(eng%rec(NREC_W, 64))
       end block
-      if (root_only) then     ! ordered sums and output on rank 0 alone
-         call par_gather_setup_root(plan_own, pm%node_global(own))
+      if (eng%root_only) then     ! ordered sums and output on rank 0 alone
+         call par_gather_setup_root(eng%plan_own, eng%pm%node_global(eng%own))
       else
-         call par_gather_setup(plan_own, pm%node_global(own))
+         call par_gather_setup(eng%plan_own, eng%pm%node_global(eng%own))
       end if
       block
          integer :: b, j, n
          integer, allocatable :: ek(:)
          n = sum([(model%blocks(b)%nel, b = 1, size(model%blocks))])
-         allocate(elem_loc(2, n), ek(n))
+         allocate(eng%elem_loc(2, n), ek(n))
          n = 0
          do b = 1, size(model%blocks)
             do j = 1, model%blocks(b)%nel
                n = n + 1
-               elem_loc(:, n) = [b, j]
+               eng%elem_loc(:, n) = [b, j]
                ek(n) = model%blocks(b)%elem(j)
             end do
          end do
-         call par_gather_setup_root(plan_elem, ek)   ! element energies: rank 0 sums them
+         call par_gather_setup_root(eng%plan_elem, ek)   ! element energies: rank 0 sums them
       end block
       ! plot states: each rank its own part file (no element data in g any more)
-      call par_plot_setup(model, g, pm%nloc, pm%node_global, pm%slot_node, own, elem_loc, &
-                          outdir, error)
+      call par_plot_setup(plot, model, eng%g, eng%pm%nloc, eng%pm%node_global, &
+                          eng%pm%slot_node, eng%own, eng%elem_loc, outdir, error)
       call par_agree(error)
       if (allocated(error)) return
-      do k = 1, size(g%blocks)
-         if (allocated(g%blocks(k)%sig)) deallocate(g%blocks(k)%sig)
-         if (allocated(g%blocks(k)%hv)) deallocate(g%blocks(k)%hv)
-         if (allocated(g%blocks(k)%hgs)) deallocate(g%blocks(k)%hgs)
+      do k = 1, size(eng%g%blocks)
+         if (allocated(eng%g%blocks(k)%sig)) deallocate(eng%g%blocks(k)%sig)
+         if (allocated(eng%g%blocks(k)%hv)) deallocate(eng%g%blocks(k)%hv)
+         if (allocated(eng%g%blocks(k)%hgs)) deallocate(eng%g%blocks(k)%hgs)
       end do
-      on = .true.
+      eng%on = .true.
    contains
       !> Rank 0 only: partition the deck into dir as `dynx-part deck -n np -o dir` would.
       subroutine partition_here(model, np, hash, deck, dir, err)
@@ -367,42 +387,45 @@ contains
 
    !> After init_state's element-major mass scatter: the mass exchange (serial order), slot
    !> masses to zero, and the global mass and its sum as the serial run forms it.
-   subroutine par_engine_mass(model)
+   subroutine par_engine_mass(eng, model)
+      type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(inout) :: model
       integer, allocatable :: keys(:)
       real(wp), allocatable :: vals(:, :)
-      call par_exchange_mass(pm, model%mass)
-      model%mass(pm%nloc + 1:) = 0.0_wp
-      call par_gather_ordered(pm%node_global(own), reshape(model%mass(own), [1, size(own)]), &
-                              keys, vals)
-      g%mass(keys) = vals(1, :)
-      model%energy%mass = sum(g%mass)
-      if (allocated(g%rigid)) model%energy%mass = model%energy%mass + g%rigid%mass_corr
-      g%energy%mass = model%energy%mass
+      call par_exchange_mass(eng%pm, model%mass)
+      model%mass(eng%pm%nloc + 1:) = 0.0_wp
+      call par_gather_ordered(eng%pm%node_global(eng%own), &
+                              reshape(model%mass(eng%own), [1, size(eng%own)]), keys, vals)
+      eng%g%mass(keys) = vals(1, :)
+      model%energy%mass = sum(eng%g%mass)
+      if (allocated(eng%g%rigid)) model%energy%mass = model%energy%mass + eng%g%rigid%mass_corr
+      eng%g%energy%mass = model%energy%mass
    end subroutine par_engine_mass
 
    !> element_mass_share (the element dt bound of one-element-wide blocks) on the rank's
    !> blocks: their slot corners carry no mass (the mass is at the shared node), so each
    !> slot is given its node's mass and constraint flag, as the serial element sees them.
-   subroutine par_engine_mass_share(model, cnodes)
+   subroutine par_engine_mass_share(eng, model, cnodes, loads)
+      type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(inout) :: model
+      type(par_loads_t), intent(inout) :: loads
       integer, intent(in) :: cnodes(:)
       real(wp), allocatable :: mext(:)
       logical, allocatable :: con(:)
       integer, allocatable :: cext(:)
       integer :: b, i
       mext = model%mass
-      mext(pm%nloc + 1:pm%nloc + pm%nslot) = model%mass(pm%slot_node)
+      mext(eng%pm%nloc + 1:eng%pm%nloc + eng%pm%nslot) = model%mass(eng%pm%slot_node)
       allocate(con(model%nn))
       con = .false.
       con(cnodes) = .true.
-      con(pm%nloc + 1:pm%nloc + pm%nslot) = con(pm%slot_node)
+      con(eng%pm%nloc + 1:eng%pm%nloc + eng%pm%nslot) = con(eng%pm%slot_node)
       cext = pack([(i, i = 1, model%nn)], con)
       do b = 1, size(model%blocks)
          call element_mass_share(model%blocks(b), &
             model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%ro, mext, cext)
       end do
-      call trim_global(model)   ! the last set-up step of run_explicit (after a restart read)
+      call trim_global(eng, model, loads)   ! the last set-up step (after a restart read)
    end subroutine par_engine_mass_share
 
    !> End of set-up (every rank, once): what of the global model g the run no longer needs
@@ -412,17 +435,19 @@ contains
    !> its own part plus the index maps of the dt reduction. Rank 0, the gather root, keeps
    !> the nodal state and the element energies it sums, and frees the rest of the elements'
    !> arrays. The sizes left are logged (mem_report).
-   subroutine trim_global(model)
+   subroutine trim_global(eng, model, loads)
+      type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(in) :: model
+      type(par_loads_t), intent(inout) :: loads
       integer :: k
-      if (trimmed) return
-      trimmed = .true.
+      if (eng%trimmed) return
+      eng%trimmed = .true.
       if (model%dt_elem > 0) then          ! a restart's element of the last reduction
-         stale_elem = model%dt_elem
-         stale_key = serial_key(stale_elem)
+         eng%stale_elem = model%dt_elem
+         eng%stale_key = serial_key(eng, eng%stale_elem)
       end if
-      do k = 1, size(g%blocks)
-         associate (b => g%blocks(k))
+      do k = 1, size(eng%g%blocks)
+         associate (b => eng%g%blocks(k))
             if (allocated(b%conn)) deallocate(b%conn)
             if (allocated(b%elem)) deallocate(b%elem)
             if (allocated(b%vol0)) deallocate(b%vol0)
@@ -440,37 +465,38 @@ contains
          end associate
       end do
       if (par_rank() > 0) then
-         if (allocated(g%elem_label)) deallocate(g%elem_label)
-         if (allocated(g%elem_part)) deallocate(g%elem_part)
-         if (allocated(g%elem_block)) deallocate(g%elem_block)   ! rank 0: energies' places
-         if (allocated(g%elem_pos)) deallocate(g%elem_pos)
-         if (root_only) then
-            call par_loads_take_mass()      ! the loads on shared nodes keep their masses
-            if (allocated(g%x)) deallocate(g%x)
-            if (allocated(g%v)) deallocate(g%v)
-            if (allocated(g%f)) deallocate(g%f)
-            if (allocated(g%mass)) deallocate(g%mass)
-            if (allocated(g%x0)) deallocate(g%x0)
-            if (allocated(g%v0)) deallocate(g%v0)
-            if (allocated(g%node_label)) deallocate(g%node_label)
-            if (allocated(g%spcs)) deallocate(g%spcs)
-            if (allocated(g%prescribed)) deallocate(g%prescribed)
-            if (allocated(gvold)) deallocate(gvold)
+         if (allocated(eng%g%elem_label)) deallocate(eng%g%elem_label)
+         if (allocated(eng%g%elem_part)) deallocate(eng%g%elem_part)
+         if (allocated(eng%g%elem_block)) deallocate(eng%g%elem_block)   ! rank 0: energies' places
+         if (allocated(eng%g%elem_pos)) deallocate(eng%g%elem_pos)
+         if (eng%root_only) then
+            call par_loads_take_mass(loads)      ! the loads on shared nodes keep their masses
+            if (allocated(eng%g%x)) deallocate(eng%g%x)
+            if (allocated(eng%g%v)) deallocate(eng%g%v)
+            if (allocated(eng%g%f)) deallocate(eng%g%f)
+            if (allocated(eng%g%mass)) deallocate(eng%g%mass)
+            if (allocated(eng%g%x0)) deallocate(eng%g%x0)
+            if (allocated(eng%g%v0)) deallocate(eng%g%v0)
+            if (allocated(eng%g%node_label)) deallocate(eng%g%node_label)
+            if (allocated(eng%g%spcs)) deallocate(eng%g%spcs)
+            if (allocated(eng%g%prescribed)) deallocate(eng%g%prescribed)
+            if (allocated(eng%gvold)) deallocate(eng%gvold)
          end if
       end if
-      call mem_report()
+      call mem_report(eng)
    end subroutine trim_global
 
    !> Bytes of the arrays this rank holds that are sized by the whole model (global
    !> elements: elem, global nodes: node), in g, the engine's maps and the gather plans.
-   subroutine global_bytes(elem, node)
+   subroutine global_bytes(eng, elem, node)
+      type(par_engine_t), intent(inout) :: eng
       integer(int64), intent(out) :: elem, node
       integer :: k
       elem = 0
       node = 0
-      if (allocated(g%blocks)) then
-         do k = 1, size(g%blocks)
-            associate (b => g%blocks(k))
+      if (allocated(eng%g%blocks)) then
+         do k = 1, size(eng%g%blocks)
+            associate (b => eng%g%blocks(k))
                if (allocated(b%conn)) elem = elem + 4*size(b%conn, kind=int64)
                if (allocated(b%elem)) elem = elem + 4*size(b%elem, kind=int64)
                if (allocated(b%sig)) elem = elem + 8*size(b%sig, kind=int64)
@@ -486,41 +512,42 @@ contains
             end associate
          end do
       end if
-      if (allocated(g%elem_label)) elem = elem + 4*size(g%elem_label, kind=int64)
-      if (allocated(g%elem_part)) elem = elem + 4*size(g%elem_part, kind=int64)
-      if (allocated(g%elem_block)) elem = elem + 4*size(g%elem_block, kind=int64)
-      if (allocated(g%elem_pos)) elem = elem + 4*size(g%elem_pos, kind=int64)
-      if (allocated(key_elem)) elem = elem + 4*size(key_elem, kind=int64)
-      if (allocated(plan_elem%keys)) elem = elem + 4*size(plan_elem%keys, kind=int64)
-      if (allocated(plan_elem%perm)) elem = elem + 4*size(plan_elem%perm, kind=int64)
-      if (allocated(g%x0)) node = node + 8*size(g%x0, kind=int64)
-      if (allocated(g%v0)) node = node + 8*size(g%v0, kind=int64)
-      if (allocated(g%x)) node = node + 8*size(g%x, kind=int64)
-      if (allocated(g%v)) node = node + 8*size(g%v, kind=int64)
-      if (allocated(g%f)) node = node + 8*size(g%f, kind=int64)
-      if (allocated(g%mass)) node = node + 8*size(g%mass, kind=int64)
-      if (allocated(g%node_label)) node = node + 4*size(g%node_label, kind=int64)
-      if (allocated(gvold)) node = node + 8*size(gvold, kind=int64)
-      if (allocated(plan_own%keys)) node = node + 4*size(plan_own%keys, kind=int64)
-      if (allocated(plan_own%perm)) node = node + 4*size(plan_own%perm, kind=int64)
+      if (allocated(eng%g%elem_label)) elem = elem + 4*size(eng%g%elem_label, kind=int64)
+      if (allocated(eng%g%elem_part)) elem = elem + 4*size(eng%g%elem_part, kind=int64)
+      if (allocated(eng%g%elem_block)) elem = elem + 4*size(eng%g%elem_block, kind=int64)
+      if (allocated(eng%g%elem_pos)) elem = elem + 4*size(eng%g%elem_pos, kind=int64)
+      if (allocated(eng%key_elem)) elem = elem + 4*size(eng%key_elem, kind=int64)
+      if (allocated(eng%plan_elem%keys)) elem = elem + 4*size(eng%plan_elem%keys, kind=int64)
+      if (allocated(eng%plan_elem%perm)) elem = elem + 4*size(eng%plan_elem%perm, kind=int64)
+      if (allocated(eng%g%x0)) node = node + 8*size(eng%g%x0, kind=int64)
+      if (allocated(eng%g%v0)) node = node + 8*size(eng%g%v0, kind=int64)
+      if (allocated(eng%g%x)) node = node + 8*size(eng%g%x, kind=int64)
+      if (allocated(eng%g%v)) node = node + 8*size(eng%g%v, kind=int64)
+      if (allocated(eng%g%f)) node = node + 8*size(eng%g%f, kind=int64)
+      if (allocated(eng%g%mass)) node = node + 8*size(eng%g%mass, kind=int64)
+      if (allocated(eng%g%node_label)) node = node + 4*size(eng%g%node_label, kind=int64)
+      if (allocated(eng%gvold)) node = node + 8*size(eng%gvold, kind=int64)
+      if (allocated(eng%plan_own%keys)) node = node + 4*size(eng%plan_own%keys, kind=int64)
+      if (allocated(eng%plan_own%perm)) node = node + 4*size(eng%plan_own%perm, kind=int64)
    end subroutine global_bytes
 
    !> One log line (rank 0) after set-up: the bytes of whole-model arrays on rank 0 and the
    !> largest on any other rank, per element and per node of the model, and the resident
    !> memory (VmRSS) of rank 0 and the largest of the others (docs/performance.md).
-   subroutine mem_report()
+   subroutine mem_report(eng)
+      type(par_engine_t), intent(inout) :: eng
       integer(int64) :: e, n, mine(4), oth(4)
-      call global_bytes(e, n)
+      call global_bytes(eng, e, n)
       mine = [e, n, current_memory_kb(), 0_int64]
       oth = mine
       if (par_rank() == 0) oth = 0
       call par_allreduce_i8max(oth)
       call log_info('dynx: MPI memory after set-up: whole-model arrays on rank 0: '// &
-         rstr(real(mine(1), wp)/max(1, g%ne), 4)//' B/element, '// &
-         rstr(real(mine(2), wp)/max(1, g%nn), 4)//' B/node; on the other ranks at most: '// &
-         rstr(real(oth(1), wp)/max(1, g%ne), 4)//' B/element, '// &
-         rstr(real(oth(2), wp)/max(1, g%nn), 4)//' B/node ('//str(g%ne)//' elements, '// &
-         str(g%nn)//' nodes); VmRSS rank 0 '//str(int(mine(3)))//' KiB, others at most '// &
+         rstr(real(mine(1), wp)/max(1, eng%g%ne), 4)//' B/element, '// &
+         rstr(real(mine(2), wp)/max(1, eng%g%nn), 4)//' B/node; on the other ranks at most: '// &
+         rstr(real(oth(1), wp)/max(1, eng%g%ne), 4)//' B/element, '// &
+         rstr(real(oth(2), wp)/max(1, eng%g%nn), 4)//' B/node ('//str(eng%g%ne)//' elements, '// &
+         str(eng%g%nn)//' nodes); VmRSS rank 0 '//str(int(mine(3)))//' KiB, others at most '// &
          str(int(oth(3)))//' KiB')
    end subroutine mem_report
 
@@ -534,33 +561,35 @@ contains
    end subroutine par_allreduce_i8max
 
    !> The initial kinetic energy of the global model.
-   subroutine par_engine_initial(model)
+   subroutine par_engine_initial(eng, model)
+      type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(inout) :: model
       integer, allocatable :: keys(:)
       real(wp), allocatable :: gv(:, :)
       real(wp) :: e0(1)
-      if (root_only) then     ! rank 0 sums, the others receive the sum
-         allocate(gv(3, size(plan_own%keys)))
-         call par_gather_values_root(plan_own, model%v(:, own), gv)
+      if (eng%root_only) then     ! rank 0 sums, the others receive the sum
+         allocate(gv(3, size(eng%plan_own%keys)))
+         call par_gather_values_root(eng%plan_own, model%v(:, eng%own), gv)
          e0 = 0.0_wp
          if (par_rank() == 0) then
-            g%v(:, plan_own%keys) = gv
-            e0(1) = initial_kinetic(g%mass, g%v)
+            eng%g%v(:, eng%plan_own%keys) = gv
+            e0(1) = initial_kinetic(eng%g%mass, eng%g%v)
          end if
          call par_bcast_real(e0, 0)
          model%energy%initial = e0(1)
          return
       end if
-      call par_gather_ordered(pm%node_global(own), model%v(:, own), keys, gv)
-      g%v(:, keys) = gv
-      model%energy%initial = initial_kinetic(g%mass, g%v)
+      call par_gather_ordered(eng%pm%node_global(eng%own), model%v(:, eng%own), keys, gv)
+      eng%g%v(:, keys) = gv
+      model%energy%initial = initial_kinetic(eng%g%mass, eng%g%v)
    end subroutine par_engine_initial
 
    !> Before the element pass: shared nodes' x and v into their slot nodes.
-   subroutine par_engine_fill(model)
+   subroutine par_engine_fill(eng, model)
+      type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(inout) :: model
-      call par_fill_slots(pm, model%x)
-      call par_fill_slots(pm, model%v)
+      call par_fill_slots(eng%pm, model%x)
+      call par_fill_slots(eng%pm, model%v)
    end subroutine par_engine_fill
 
    !> The global critical step and its element (the lowest serial order key among equal
@@ -569,7 +598,8 @@ contains
    !> the lowest failing rank's message (par_bcast_text), and dtcrit is not a step.
    !> flags (optional): stop/dump requests of this rank, folded into the same reduction
    !> (largest over the ranks; dx_checkpoint).
-   subroutine par_engine_dt(dtcrit, dt_elem, error, flags)
+   subroutine par_engine_dt(eng, dtcrit, dt_elem, error, flags)
+      type(par_engine_t), intent(inout) :: eng
       real(wp), intent(inout) :: dtcrit
       integer, intent(inout) :: dt_elem
       type(error_t), allocatable, intent(inout) :: error
@@ -578,63 +608,65 @@ contains
       real(wp) :: t0
       key = KEY_NONE
       if (dt_elem > 0 .and. dtcrit < huge_wp) then
-         key = elem_key(dt_elem)
-         if (kmult > 0) key = key*kmult + dt_elem
+         key = elem_key(eng, dt_elem)
+         if (eng%kmult > 0) key = key*eng%kmult + dt_elem
       end if
-      if (allocated(pending)) then
+      if (allocated(eng%pending)) then
          dtcrit = -1.0_wp
          key = par_rank()
       end if
       t0 = par_wtime()
       call par_minloc8(dtcrit, key, flags)
-      t_dt = t_dt + (par_wtime() - t0)
+      eng%t_dt = eng%t_dt + (par_wtime() - t0)
       if (dtcrit < 0.0_wp) then
-         call failure_known(int(key), error)
+         call failure_known(eng, int(key), error)
          return
       end if
       ! no deformable element anywhere: the rigid elements' step (as the serial ibmin == 0)
-      if (dtcrit >= huge_wp .and. allocated(g%rigid)) dtcrit = g%rigid%dtcrit
+      if (dtcrit >= huge_wp .and. allocated(eng%g%rigid)) dtcrit = eng%g%rigid%dtcrit
       if (key >= KEY_NONE) return
-      if (kmult > 0) then
-         dt_elem = int(mod(key, kmult))
-         stale_key = key/kmult
+      if (eng%kmult > 0) then
+         dt_elem = int(mod(key, eng%kmult))
+         eng%stale_key = key/eng%kmult
       else
-         if (key <= 0 .or. key > size(key_elem)) return
-         dt_elem = key_elem(key)
-         stale_key = key
+         if (key <= 0 .or. key > size(eng%key_elem)) return
+         dt_elem = eng%key_elem(key)
+         eng%stale_key = key
       end if
-      stale_elem = dt_elem
+      eng%stale_elem = dt_elem
    end subroutine par_engine_dt
 
    !> The serial order key (serial block - 1)*nv_chunk + position of global element e, from
    !> the global model's maps (set-up; rank 0 keeps them).
-   integer(int64) function serial_key(e)
+   integer(int64) function serial_key(eng, e)
+      type(par_engine_t), intent(in) :: eng
       integer, intent(in) :: e
-      serial_key = int(g%elem_block(e) - 1, int64)*nv_chunk + g%elem_pos(e)
+      serial_key = int(eng%g%elem_block(e) - 1, int64)*nv_chunk + eng%g%elem_pos(e)
    end function serial_key
 
    !> The serial order key of element e: one of this rank's elements, or the element the
    !> last reduction named (a rank whose element pass found no deformable element keeps it).
-   integer(int64) function elem_key(e)
+   integer(int64) function elem_key(eng, e)
+      type(par_engine_t), intent(in) :: eng
       integer, intent(in) :: e
       integer :: lo, hi, mid
       lo = 1
-      hi = size(lel)
+      hi = size(eng%lel)
       do while (lo <= hi)
          mid = (lo + hi)/2
-         if (lel(mid) == e) then
-            elem_key = lkey(mid)
+         if (eng%lel(mid) == e) then
+            elem_key = eng%lkey(mid)
             return
-         else if (lel(mid) < e) then
+         else if (eng%lel(mid) < e) then
             lo = mid + 1
          else
             hi = mid - 1
          end if
       end do
-      if (e == stale_elem) then
-         elem_key = stale_key
-      else if (allocated(g%elem_block)) then
-         elem_key = serial_key(e)
+      if (e == eng%stale_elem) then
+         elem_key = eng%stale_key
+      else if (allocated(eng%g%elem_block)) then
+         elem_key = serial_key(eng, e)
       else
          call par_abort('internal error: rank '//str(par_rank())//' has no order key for '// &
                         'element '//str(e)//' (dt reduction)', EXIT_INPUT)
@@ -644,10 +676,11 @@ contains
    !> A failure found on this rank alone, in the middle of a cycle: kept until the next dt
    !> reduction (or par_engine_sync_failure) makes it known to every rank. error is
    !> deallocated; the caller carries on with the cycle (its collectives included).
-   subroutine par_engine_defer(error)
+   subroutine par_engine_defer(eng, error)
+      type(par_engine_t), intent(inout) :: eng
       type(error_t), allocatable, intent(inout) :: error
-      if (.not. allocated(pending)) then
-         call move_alloc(error, pending)
+      if (.not. allocated(eng%pending)) then
+         call move_alloc(error, eng%pending)
       else if (allocated(error)) then
          deallocate(error)
       end if
@@ -655,24 +688,27 @@ contains
 
    !> Whether this rank holds a failure not yet known to the others (it then skips its
    !> element pass: its state is no longer meaningful).
-   logical function par_engine_pending()
-      par_engine_pending = allocated(pending)
+   logical function par_engine_pending(eng)
+      type(par_engine_t), intent(in) :: eng
+      par_engine_pending = allocated(eng%pending)
    end function par_engine_pending
 
    !> At the last cycle (no further dt reduction): one MINLOC on the failure flag alone.
-   subroutine par_engine_sync_failure(error)
+   subroutine par_engine_sync_failure(eng, error)
+      type(par_engine_t), intent(inout) :: eng
       type(error_t), allocatable, intent(inout) :: error
       real(wp) :: x
       integer :: key
       x = 0.0_wp
       key = par_rank()
-      if (allocated(pending)) x = -1.0_wp
+      if (allocated(eng%pending)) x = -1.0_wp
       call par_minloc(x, key)
-      if (x < 0.0_wp) call failure_known(key, error)
+      if (x < 0.0_wp) call failure_known(eng, key, error)
    end subroutine par_engine_sync_failure
 
    !> Every rank: the failure of rank root (its message and exit code), naming the rank.
-   subroutine failure_known(root, error)
+   subroutine failure_known(eng, root, error)
+      type(par_engine_t), intent(inout) :: eng
       integer, intent(in) :: root
       type(error_t), allocatable, intent(inout) :: error
       character(:), allocatable :: msg
@@ -680,19 +716,20 @@ contains
       msg = ''
       code = 0
       if (par_rank() == root) then
-         msg = pending%message
-         code = pending%code
+         msg = eng%pending%message
+         code = eng%pending%code
       end if
       call par_bcast_text(msg, code, root)
       if (allocated(error)) deallocate(error)
       call set_error(error, 'rank '//str(root)//' of '//str(par_size())//': '//msg, code)
-      together = .true.
+      eng%together = .true.
    end subroutine failure_known
 
    !> Whether the run stops on a failure every rank knows (then every rank writes the last
    !> state and exits with the code after MPI_Finalize, instead of MPI_Abort).
-   logical function par_engine_together()
-      par_engine_together = together
+   logical function par_engine_together(eng)
+      type(par_engine_t), intent(in) :: eng
+      par_engine_together = eng%together
    end function par_engine_together
 
    !> Whether this rank writes the global files (glstat, nodout, status lines): rank 0.
@@ -701,32 +738,37 @@ contains
    end function par_engine_writer
 
    !> A plot state: every rank appends its part (no communication).
-   subroutine par_engine_plot(model, error)
+   subroutine par_engine_plot(eng, plot, model, error)
+      type(par_engine_t), intent(inout) :: eng
+      type(par_plot_t), intent(inout) :: plot
       type(model_t), intent(in) :: model
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: t0
       t0 = par_wtime()
-      call par_plot_write(model, error)
-      t_gath = t_gath + (par_wtime() - t0)
+      call par_plot_write(plot, model, error)
+      eng%t_gath = eng%t_gath + (par_wtime() - t0)
    end subroutine par_engine_plot
 
    !> End of an MPI run, normal or not (every rank): part files closed, rank 0 combines
    !> them into d3plot.h5 + d3plot.xdmf. Call after rank 0 closed its output. failure:
    !> every rank stops on a failure it knows (it then exits without MPI_Abort).
-   subroutine par_engine_plot_finish(error, failure)
+   subroutine par_engine_plot_finish(eng, plot, error, failure)
+      type(par_engine_t), intent(inout) :: eng
+      type(par_plot_t), intent(inout) :: plot
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: failure
-      if (present(failure)) together = together .or. failure
-      call par_plot_finish(error)
+      if (present(failure)) eng%together = eng%together .or. failure
+      call par_plot_finish(plot, error)
    end subroutine par_engine_plot_finish
 
    !> The one shared-node exchange of the cycle: f at shared nodes becomes the serial sum.
-   subroutine par_engine_exchange(f)
+   subroutine par_engine_exchange(eng, f)
+      type(par_engine_t), intent(inout) :: eng
       real(wp), intent(inout) :: f(:, :)
       real(wp) :: t0
       t0 = par_wtime()
-      call par_exchange_forces(pm, f)
-      t_exch = t_exch + (par_wtime() - t0)
+      call par_exchange_forces(eng%pm, f)
+      eng%t_exch = eng%t_exch + (par_wtime() - t0)
    end subroutine par_engine_exchange
 
    !> Rigid walls and the work of constraint and wall forces. Each rank corrects its own
@@ -740,69 +782,73 @@ contains
    !> when a sum is needed (or the buffer is full), gathered on every rank and added in the
    !> serial order (cycle, then node for wcon; cycle, wall, node for wrw). Only nodes the
    !> constraints or walls act on travel: nothing per node and cycle otherwise.
-   subroutine par_engine_constraints(model, vfree, vold, dt, dtavg, wcon, wrw, needed)
+   subroutine par_engine_constraints(eng, model, vfree, vold, dt, dtavg, wcon, wrw, needed)
+      type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: vfree(:, :), vold(:, :), dt, dtavg
       real(wp), intent(inout) :: wcon, wrw
       logical, intent(in) :: needed
       integer :: i, w, k
-      if (.not. have_bc) return     ! no constrained or wall node anywhere
-      nbuf = nbuf + 1
-      if (size(lcn) > 0) then
-         call constraint_terms(lcn, model%mass, vfree, vold, model%v, dtavg, lc_term)
-         do i = 1, size(lcn)
-            if (lc_key(i) > 0 .and. .not. (lc_term(i) == 0.0_wp)) &
-               call push([real(nbuf, wp), 0.0_wp, real(lc_key(i), wp), lc_term(i), 0.0_wp, &
-                          0.0_wp, 0.0_wp])
+      if (.not. eng%have_bc) return     ! no constrained or wall node anywhere
+      eng%nbuf = eng%nbuf + 1
+      if (size(eng%lcn) > 0) then
+         call constraint_terms(eng%lcn, model%mass, vfree, vold, model%v, dtavg, eng%lc_term)
+         do i = 1, size(eng%lcn)
+            if (eng%lc_key(i) > 0 .and. .not. (eng%lc_term(i) == 0.0_wp)) &
+               call push([real(eng%nbuf, wp), 0.0_wp, real(eng%lc_key(i), wp), eng%lc_term(i), &
+                          0.0_wp, 0.0_wp, 0.0_wp])
          end do
       end if
       if (allocated(model%walls)) then
-         call apply_rigidwalls(model, dt, dtavg, vold, model%v, hits)
-         do i = 1, hits%n
-            w = hits%wall(i)
-            k = hits%k(i)
-            if (owned(model%walls(w)%nodes(k))) &
-               call push([real(nbuf, wp), real(w, wp), real(wall_kg(w)%p(k), wp), &
-                          hits%val(:, i)])
+         call apply_rigidwalls(model, dt, dtavg, vold, model%v, eng%hits)
+         do i = 1, eng%hits%n
+            w = eng%hits%wall(i)
+            k = eng%hits%k(i)
+            if (eng%owned(model%walls(w)%nodes(k))) &
+               call push([real(eng%nbuf, wp), real(w, wp), real(eng%wall_kg(w)%p(k), wp), &
+                          eng%hits%val(:, i)])
          end do
       end if
-      if (needed .or. nbuf == NBUF_MAX) call flush_work(wcon, wrw)
+      if (needed .or. eng%nbuf == NBUF_MAX) call flush_work(eng, wcon, wrw)
    contains
       subroutine push(r)
          real(wp), intent(in) :: r(NREC_W)
          real(wp), allocatable :: t(:, :)
-         if (nrec == size(rec, 2)) then
-            allocate(t(NREC_W, 2*nrec))
-            t(:, 1:nrec) = rec(:, 1:nrec)
-            call move_alloc(t, rec)
+         if (eng%nrec == size(eng%rec, 2)) then
+            allocate(t(NREC_W, 2*eng%nrec))
+            t(:, 1:eng%nrec) = eng%rec(:, 1:eng%nrec)
+            call move_alloc(t, eng%rec)
          end if
-         nrec = nrec + 1
-         rec(:, nrec) = r
+         eng%nrec = eng%nrec + 1
+         eng%rec(:, eng%nrec) = r
       end subroutine push
    end subroutine par_engine_constraints
 
    !> Before a restart dump: the kept cycles' work terms into wcon, wrw (the same additions
    !> in the same order as a later flush would make), so the dump holds the sums to date.
-   subroutine par_engine_flush_work(wcon, wrw)
+   subroutine par_engine_flush_work(eng, wcon, wrw)
+      type(par_engine_t), intent(inout) :: eng
       real(wp), intent(inout) :: wcon, wrw
-      if (nbuf > 0) call flush_work(wcon, wrw)
+      if (eng%nbuf > 0) call flush_work(eng, wcon, wrw)
    end subroutine par_engine_flush_work
 
    !> For restart dumps (dx_par_restart): the global model, the global node of each local
    !> node (slot nodes included) and the deck's content hash.
-   subroutine par_engine_maps(gp, node_global, hash)
+   subroutine par_engine_maps(eng, gp, node_global, hash)
+      type(par_engine_t), intent(inout) :: eng
       type(model_t), pointer, intent(out) :: gp
       integer, allocatable, intent(out) :: node_global(:)
       character(16), intent(out) :: hash
-      gp => g
-      node_global = [pm%node_global, pm%node_global(pm%slot_node)]
-      hash = deck_hash
+      gp => eng%g
+      node_global = [eng%pm%node_global, eng%pm%node_global(eng%pm%slot_node)]
+      hash = eng%deck_hash
    end subroutine par_engine_maps
 
    !> Gather the kept records on every rank and add their terms in the serial order; the
    !> walls' resultant forces become those of the last kept cycle (the serial
    !> add_wall_hits: zero, minus the hits' m dv/dtavg in wall order).
-   subroutine flush_work(wcon, wrw)
+   subroutine flush_work(eng, wcon, wrw)
+      type(par_engine_t), intent(inout) :: eng
       real(wp), intent(inout) :: wcon, wrw
       real(wp), allocatable :: rb(:), sk(:)
       integer, allocatable :: cnt(:), idx(:)
@@ -810,19 +856,19 @@ contains
       real(wp) :: t0
       t0 = par_wtime()
       nw = 0
-      if (allocated(g%walls)) nw = size(g%walls)
-      call par_allgather_probe(reshape(rec(:, 1:nrec), [NREC_W*nrec]), rb, cnt)
+      if (allocated(eng%g%walls)) nw = size(eng%g%walls)
+      call par_allgather_probe(reshape(eng%rec(:, 1:eng%nrec), [NREC_W*eng%nrec]), rb, cnt)
       n = size(rb)/NREC_W
       allocate(sk(n))
       do i = 1, n    ! (cycle, wall, position), wall 0 = the constraints
          j = NREC_W*(i - 1)
-         sk(i) = ((rb(j + 1) - 1.0_wp)*real(nw + 1, wp) + rb(j + 2))*key_mult + rb(j + 3)
+         sk(i) = ((rb(j + 1) - 1.0_wp)*real(nw + 1, wp) + rb(j + 2))*eng%key_mult + rb(j + 3)
       end do
       idx = [(i, i = 1, n)]
       call sort_index(idx, sk)
       if (nw > 0) then
          do w = 1, nw
-            g%walls(w)%force = 0.0_wp
+            eng%g%walls(w)%force = 0.0_wp
          end do
       end if
       do i = 1, n
@@ -832,12 +878,13 @@ contains
             wcon = wcon + rb(j + 4)
          else
             wrw = wrw + rb(j + 4)
-            if (nint(rb(j + 1)) == nbuf) g%walls(w)%force = g%walls(w)%force - rb(j + 5:j + 7)
+            if (nint(rb(j + 1)) == eng%nbuf) &
+               eng%g%walls(w)%force = eng%g%walls(w)%force - rb(j + 5:j + 7)
          end if
       end do
-      nbuf = 0
-      nrec = 0
-      t_gath = t_gath + (par_wtime() - t0)
+      eng%nbuf = 0
+      eng%nrec = 0
+      eng%t_gath = eng%t_gath + (par_wtime() - t0)
    end subroutine flush_work
 
    !> Energies and momentum of the step (when needed): nodal velocities and element
@@ -846,35 +893,36 @@ contains
    !> rigid bodies gather the nodal velocities to every rank (their stages read g's nodes).
    !> dfac = (dt(n+1/2) - dt(n-1/2))/4 weighs the element work still to be booked (epend,
    !> dx_energy_sums), gathered per element as alive*(ework(:,4) - ework(:,2)).
-   subroutine par_engine_energies(model, vold, wsum, erw, dfac, needed)
+   subroutine par_engine_energies(eng, model, vold, wsum, erw, dfac, needed)
+      type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: vold(:, :), wsum, erw, dfac
       logical, intent(in) :: needed
       real(wp), allocatable :: vals(:, :), gv(:, :)
-      real(wp) :: ke, eint, ehg, t0, epend, rec(13)
+      real(wp) :: ke, eint, ehg, t0, epend, erec(13)
       integer :: i, e
       logical :: root
       if (.not. needed) return
       t0 = par_wtime()
       root = par_rank() == 0
-      allocate(vals(6, size(own)), gv(6, size(plan_own%keys)))
-      do i = 1, size(own)
-         vals(1:3, i) = model%v(:, own(i))
-         vals(4:6, i) = vold(:, own(i))
+      allocate(vals(6, size(eng%own)), gv(6, size(eng%plan_own%keys)))
+      do i = 1, size(eng%own)
+         vals(1:3, i) = model%v(:, eng%own(i))
+         vals(4:6, i) = vold(:, eng%own(i))
       end do
-      if (root_only) then
-         call par_gather_values_root(plan_own, vals, gv)
+      if (eng%root_only) then
+         call par_gather_values_root(eng%plan_own, vals, gv)
       else
-         call par_gather_values(plan_own, vals, gv)
+         call par_gather_values(eng%plan_own, vals, gv)
       end if
-      if (root .or. .not. root_only) then
-         g%v(:, plan_own%keys) = gv(1:3, :)
-         gvold(:, plan_own%keys) = gv(4:6, :)
+      if (root .or. .not. eng%root_only) then
+         eng%g%v(:, eng%plan_own%keys) = gv(1:3, :)
+         eng%gvold(:, eng%plan_own%keys) = gv(4:6, :)
       end if
       deallocate(vals, gv)
-      allocate(vals(3, size(elem_loc, 2)), gv(3, size(plan_elem%keys)))
-      do i = 1, size(elem_loc, 2)
-         associate (pb => model%blocks(elem_loc(1, i)), j => elem_loc(2, i))
+      allocate(vals(3, size(eng%elem_loc, 2)), gv(3, size(eng%plan_elem%keys)))
+      do i = 1, size(eng%elem_loc, 2)
+         associate (pb => model%blocks(eng%elem_loc(1, i)), j => eng%elem_loc(2, i))
             vals(1, i) = pb%eint(j)
             vals(2, i) = pb%ehg(j)
             vals(3, i) = 0.0_wp
@@ -882,12 +930,12 @@ contains
                                                   (pb%ework(j, 4) - pb%ework(j, 2))
          end associate
       end do
-      call par_gather_values_root(plan_elem, vals, gv)
-      rec = 0.0_wp
+      call par_gather_values_root(eng%plan_elem, vals, gv)
+      erec = 0.0_wp
       if (root) then
-         do i = 1, size(plan_elem%keys)
-            e = plan_elem%keys(i)
-            associate (gb => g%blocks(g%elem_block(e)), p => g%elem_pos(e))
+         do i = 1, size(eng%plan_elem%keys)
+            e = eng%plan_elem%keys(i)
+            associate (gb => eng%g%blocks(eng%g%elem_block(e)), p => eng%g%elem_pos(e))
                gb%eint(p) = gv(1, i)
                gb%ehg(p) = gv(2, i)
                ! the global copy only reports: its ework carries the pending term in col. 4
@@ -896,33 +944,34 @@ contains
                end if
             end associate
          end do
-         ke = kinetic_energy(g%nn, g%mass, gvold, g%v)
-         if (allocated(g%rigid)) ke = ke + g%rigid%ke_corr   ! body KE (dx_par_rigid)
-         call element_energies(g%blocks, eint, ehg, epend)
+         ke = kinetic_energy(eng%g%nn, eng%g%mass, eng%gvold, eng%g%v)
+         if (allocated(eng%g%rigid)) ke = ke + eng%g%rigid%ke_corr   ! body KE (dx_par_rigid)
+         call element_energies(eng%g%blocks, eint, ehg, epend)
          eint = eint + dfac*epend
-         g%energy%initial = model%energy%initial
-         call set_energy(g, ke, eint, ehg, wsum, erw)
-         associate (en => g%energy)
-            rec = [en%kinetic, en%internal, en%hourglass, en%external_work, en%rigidwall, &
+         eng%g%energy%initial = model%energy%initial
+         call set_energy(eng%g, ke, eint, ehg, wsum, erw)
+         associate (en => eng%g%energy)
+            erec = [en%kinetic, en%internal, en%hourglass, en%external_work, en%rigidwall, &
                    en%sliding, en%total, en%initial, en%ratio, en%momentum, en%mass]
          end associate
       end if
-      call par_bcast_real(rec, 0)
+      call par_bcast_real(erec, 0)
       associate (en => model%energy)
-         en%kinetic = rec(1); en%internal = rec(2); en%hourglass = rec(3)
-         en%external_work = rec(4); en%rigidwall = rec(5); en%sliding = rec(6)
-         en%total = rec(7); en%initial = rec(8); en%ratio = rec(9)
-         en%momentum = rec(10:12); en%mass = rec(13)
+         en%kinetic = erec(1); en%internal = erec(2); en%hourglass = erec(3)
+         en%external_work = erec(4); en%rigidwall = erec(5); en%sliding = erec(6)
+         en%total = erec(7); en%initial = erec(8); en%ratio = erec(9)
+         en%momentum = erec(10:12); en%mass = erec(13)
       end associate
-      g%energy = model%energy
-      t_gath = t_gath + (par_wtime() - t0)
+      eng%g%energy = model%energy
+      eng%t_gath = eng%t_gath + (par_wtime() - t0)
    end subroutine par_engine_energies
 
    !> The global model for glstat and nodout at this step (nodal x, v, f gathered to rank 0,
    !> or to every rank for decks with contact or rigid bodies); writer is true on rank 0,
    !> which writes them. Plot states do not come here (par_engine_plot: per-rank part
    !> files); plot is kept for the interface and not used.
-   subroutine par_engine_output(model, plot, om, writer)
+   subroutine par_engine_output(eng, model, plot, om, writer)
+      type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(in) :: model
       logical, intent(in) :: plot
       type(model_t), pointer, intent(out) :: om
@@ -931,39 +980,41 @@ contains
       integer :: i
       real(wp) :: t0
       t0 = par_wtime()
-      g%time = model%time
-      g%cycle = model%cycle
-      g%dt = model%dt
-      g%dt_elem = model%dt_elem
-      g%energy = model%energy
-      g%run = model%run
-      allocate(vals(9, size(own)), gv(9, size(plan_own%keys)))
-      do i = 1, size(own)
-         vals(1:3, i) = model%x(:, own(i))
-         vals(4:6, i) = model%v(:, own(i))
-         vals(7:9, i) = model%f(:, own(i))
+      eng%g%time = model%time
+      eng%g%cycle = model%cycle
+      eng%g%dt = model%dt
+      eng%g%dt_elem = model%dt_elem
+      eng%g%energy = model%energy
+      eng%g%run = model%run
+      allocate(vals(9, size(eng%own)), gv(9, size(eng%plan_own%keys)))
+      do i = 1, size(eng%own)
+         vals(1:3, i) = model%x(:, eng%own(i))
+         vals(4:6, i) = model%v(:, eng%own(i))
+         vals(7:9, i) = model%f(:, eng%own(i))
       end do
-      if (root_only) then
-         call par_gather_values_root(plan_own, vals, gv)
+      if (eng%root_only) then
+         call par_gather_values_root(eng%plan_own, vals, gv)
       else
-         call par_gather_values(plan_own, vals, gv)
+         call par_gather_values(eng%plan_own, vals, gv)
       end if
-      if (par_rank() == 0 .or. .not. root_only) then
-         g%x(:, plan_own%keys) = gv(1:3, :)
-         g%v(:, plan_own%keys) = gv(4:6, :)
-         g%f(:, plan_own%keys) = gv(7:9, :)
+      if (par_rank() == 0 .or. .not. eng%root_only) then
+         eng%g%x(:, eng%plan_own%keys) = gv(1:3, :)
+         eng%g%v(:, eng%plan_own%keys) = gv(4:6, :)
+         eng%g%f(:, eng%plan_own%keys) = gv(7:9, :)
       end if
-      om => g
+      om => eng%g
       writer = par_rank() == 0
-      t_gath = t_gath + (par_wtime() - t0)
+      eng%t_gath = eng%t_gath + (par_wtime() - t0)
    end subroutine par_engine_output
 
    !> End of an MPI run: the time spent in communication (largest over the ranks).
-   subroutine par_engine_report()
+   subroutine par_engine_report(eng, contact)
+      type(par_engine_t), intent(inout) :: eng
+      type(par_contact_t), intent(in) :: contact
       real(wp) :: t(3), tavg(3)
-      if (.not. on) return
-      call par_contact_report(g)
-      t = [t_exch, t_dt, t_gath]
+      if (.not. eng%on) return
+      call par_contact_report(contact, eng%g)
+      t = [eng%t_exch, eng%t_dt, eng%t_gath]
       tavg = t
       call par_allreduce(t, PAR_MAX)
       call par_allreduce(tavg, PAR_SUM)
@@ -975,9 +1026,10 @@ contains
    end subroutine par_engine_report
 
    !> The global model (serial numbering) of an MPI run: what rank 0 opens the output with.
-   function par_engine_global() result(p)
+   function par_engine_global(eng) result(p)
+      type(par_engine_t), intent(in) :: eng
       type(model_t), pointer :: p
-      p => g
+      p => eng%g
    end function par_engine_global
 
    !> A failure on this rank alone that cannot wait (an I/O error): stop every rank, naming it.

@@ -1,4 +1,4 @@
-!> Rigid bodies in an MPI run (ParaDyn step 5; docs/design.md, "Rigid bodies and loads under
+!> Rigid bodies in an MPI run (ParaDyn step 5; docs/history.md, "Rigid bodies and loads under
 !> MPI"). A body's nodes may lie on several ranks. Every rank has built the serial model, so
 !> the bodies' mass properties (mass, centre, principal moments and axes, body coordinates:
 !> dx_rigid_build, from the whole deck) and their initial state are the same bits on every
@@ -16,50 +16,58 @@
 !> rbdout is written by rank 0 (dx_explicit). Rigid bodies in contact: f holds the contact
 !> force (dx_par_contact adds it before this stage), and the contact stage, which runs on
 !> the global model, reads the bodies' centres there (dx_rigid_contact): par_rigid_centres
-!> copies them in before it (docs/design.md, "Rigid bodies in contact under MPI").
+!> copies them in before it (docs/history.md, "Rigid bodies in contact under MPI").
 module dx_par_rigid
    use dx_kinds, only: wp
    use dx_model, only: model_t
-   use dx_par, only: gather_plan_t, par_gather_setup, par_gather_values, par_rank
+   use dx_par, only: par_rank
+   use dx_par_plan, only: gather_plan_t, par_gather_setup, par_gather_values
    use dx_par_model, only: par_model_t
    use dx_rigid_types, only: rigid_system_t
    use dx_rigid_solver, only: rigid_step
    implicit none
    private
-   public :: par_rigid_setup, par_rigid_step, par_rigid_writes, par_rigid_centres
+   public :: par_rigid_t, par_rigid_setup, par_rigid_step, par_rigid_writes, par_rigid_centres
 
-   type(model_t), pointer, save :: gp => null()   !< the engine's global model
-   integer, allocatable, save :: r_own(:)          !< owned local rigid nodes (gathered)
-   integer, allocatable, save :: r_loc(:), r_glob(:)   !< all local rigid nodes, global index
-   type(gather_plan_t), save :: plan_r
-   real(wp), allocatable, save :: gvold(:, :)       !< (3, global nn) v(n-1/2) of rigid nodes
+   !> The rigid-body stage's part of a rank's domain (a component of mpi_domain_t).
+   type :: par_rigid_t
+      type(model_t), pointer :: gp => null()     !< the engine's global model
+      integer, allocatable :: r_own(:)            !< owned local rigid nodes (gathered)
+      integer, allocatable :: r_loc(:), r_glob(:) !< all local rigid nodes, global index
+      type(gather_plan_t) :: plan_r
+      real(wp), allocatable :: gvold(:, :)        !< (3, global nn) v(n-1/2) of rigid nodes
+   end type par_rigid_t
 
 contains
 
    !> Called by par_engine_setup after par_model_build (nothing without rigid bodies).
-   subroutine par_rigid_setup(g, pm, owned)
+   subroutine par_rigid_setup(pr, g, pm, owned)
+      type(par_rigid_t), intent(inout) :: pr
       type(model_t), intent(inout), target :: g
       type(par_model_t), intent(in) :: pm
       logical, intent(in) :: owned(:)
       logical, allocatable :: rig(:)
       integer :: i
       if (.not. allocated(g%rigid)) return
-      gp => g
+      pr%gp => g
       rig = g%rigid%node_body(pm%node_global) > 0
-      r_own = pack([(i, i = 1, pm%nloc)], rig .and. owned)
-      r_loc = pack([(i, i = 1, pm%nloc)], rig)
-      r_glob = pm%node_global(r_loc)
-      call par_gather_setup(plan_r, pm%node_global(r_own))
-      allocate(gvold(3, g%nn))
-      gvold = 0.0_wp
+      pr%r_own = pack([(i, i = 1, pm%nloc)], rig .and. owned)
+      pr%r_loc = pack([(i, i = 1, pm%nloc)], rig)
+      pr%r_glob = pm%node_global(pr%r_loc)
+      call par_gather_setup(pr%plan_r, pm%node_global(pr%r_own))
+      allocate(pr%gvold(3, g%nn))
+      pr%gvold = 0.0_wp
    end subroutine par_rigid_setup
 
    !> The rigid-body stage of the cycle (in place of rigid_step in a serial run).
-   subroutine par_rigid_step(model, t, dt, dtavg, vold)
+   subroutine par_rigid_step(pr, model, t, dt, dtavg, vold)
+      type(par_rigid_t), intent(inout) :: pr
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: t, dt, dtavg, vold(:, :)
       real(wp), allocatable :: vals(:, :), gv(:, :)
       integer :: i, n
+      associate (r_own => pr%r_own, plan_r => pr%plan_r, gp => pr%gp, gvold => pr%gvold, &
+                 r_loc => pr%r_loc, r_glob => pr%r_glob)
       allocate(vals(9, size(r_own)), gv(9, size(plan_r%keys)))
       do i = 1, size(r_own)
          n = r_own(i)
@@ -78,6 +86,7 @@ contains
       ! the global model reports the momentum (set_energy) with the body correction
       gp%rigid%p_corr = model%rigid%p_corr
       gp%rigid%ke_corr = model%rigid%ke_corr
+      end associate
    end subroutine par_rigid_step
 
    !> True on the rank that writes rbdout (rank 0; every rank has the same body states).

@@ -1,4 +1,4 @@
-!> Plot output of an MPI run (ParaDyn step 5; docs/design.md, docs/output-format.md): each
+!> Plot output of an MPI run (ParaDyn step 5; docs/history.md, docs/output-format.md): each
 !> rank writes its owned nodes and its elements to its own part file (dx_plot_part) at every
 !> plot time, with no gather; at the end of the run (normal or after a failure) rank 0
 !> combines the parts into d3plot.h5 + d3plot.xdmf, equal to the serial run's files.
@@ -6,7 +6,8 @@
 !> Thrust Area Report FY97, article 4 of shared/seed).
 !> The part file is created at the first plot state (from the mesh kept by par_plot_setup),
 !> or continued by par_plot_resume (a restart: states after the dump removed).
-!> Module state (allowed in parallel/): the rank's part file and its node/element maps.
+!> No module state: the rank's part file and its node/element maps are a par_plot_t, a
+!> component of the rank's domain (dx_domain_mpi).
 module dx_par_plot
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_IO
@@ -22,30 +23,34 @@ module dx_par_plot
    use dx_plot_cells, only: cells_width, cell_column
    implicit none
    private
-   public :: par_plot_setup, par_plot_write, par_plot_finish, par_plot_nstates, &
+   public :: par_plot_t, par_plot_setup, par_plot_write, par_plot_finish, par_plot_nstates, &
              par_plot_resume, par_plot_from_serial
 
-   type(plot_part_t), save :: part
-   character(:), allocatable, save :: dir
-   integer, allocatable, save :: own(:)          !< owned local nodes
-   integer, allocatable, save :: eloc(:, :)      !< (2, nel): block and position of each element
-   integer, allocatable, save :: khv(:)          !< per block: history index of eff. plastic strain
-   logical, save :: finished = .false.
-   !> the part's mesh until the file is created (first state): nodes, labels, elements
-   integer, allocatable, save :: m_nodes(:), m_nids(:), m_elems(:), m_cells(:, :), m_eids(:), &
-                                 m_pids(:)
-   real(wp), allocatable, save :: m_x0(:, :)
-   integer, save :: m_stamp = 0, m_nn = 0, m_ne = 0
-   character(:), allocatable, save :: m_title
+   !> The plot stage's part of a rank's domain (a component of mpi_domain_t).
+   type :: par_plot_t
+      type(plot_part_t) :: part
+      character(:), allocatable :: dir
+      integer, allocatable :: own(:)          !< owned local nodes
+      integer, allocatable :: eloc(:, :)      !< (2, nel): block and position of each element
+      integer, allocatable :: khv(:)          !< per block: history index of eff. plastic strain
+      logical :: finished = .false.
+      !> the part's mesh until the file is created (first state): nodes, labels, elements
+      integer, allocatable :: m_nodes(:), m_nids(:), m_elems(:), m_cells(:, :), m_eids(:), &
+                              m_pids(:)
+      real(wp), allocatable :: m_x0(:, :)
+      integer :: m_stamp = 0, m_nn = 0, m_ne = 0
+      character(:), allocatable :: m_title
+   end type par_plot_t
 
 contains
 
-   !> Prepare this rank's part file in outdir (created at the first state). node_global(l) is the global
-   !> node of local node l <= nloc; slot node nloc + s stands for local node slot_node(s);
-   !> own are the owned local nodes; elem_loc(:, i) = (block, position) of the rank's
-   !> elements. g is the global model (labels, parts, title).
-   subroutine par_plot_setup(model, g, nloc, node_global, slot_node, owned_nodes, elem_loc, &
-                             outdir, error)
+   !> Prepare this rank's part file in outdir (created at the first state). node_global(l) is
+   !> the global node of local node l <= nloc; slot node nloc + s stands for local node
+   !> slot_node(s); own are the owned local nodes; elem_loc(:, i) = (block, position) of the
+   !> rank's elements. g is the global model (labels, parts, title).
+   subroutine par_plot_setup(pp, model, g, nloc, node_global, slot_node, owned_nodes, &
+                             elem_loc, outdir, error)
+      type(par_plot_t), intent(inout) :: pp
       type(model_t), intent(in) :: model, g
       integer, intent(in) :: nloc, node_global(:), slot_node(:), owned_nodes(:), elem_loc(:, :)
       character(*), intent(in) :: outdir
@@ -54,20 +59,21 @@ contains
       integer :: i, b, j, e, stamp, imat
       integer(8) :: clk
       character(:), allocatable :: title
-      dir = outdir
-      own = owned_nodes
-      eloc = elem_loc
-      finished = .false.
-      allocate(khv(size(model%blocks)))
+      pp%dir = outdir
+      pp%own = owned_nodes
+      pp%eloc = elem_loc
+      pp%finished = .false.
+      allocate(pp%khv(size(model%blocks)))
       do b = 1, size(model%blocks)
          imat = model%parts(model%blocks(b)%ipart)%imat
-         khv(b) = model%mats(imat)%m%hv_eps_p
+         pp%khv(b) = model%mats(imat)%m%hv_eps_p
       end do
       l2g = [node_global(1:nloc), node_global(slot_node)]
-      allocate(elems(size(eloc, 2)), cells(cells_width(g), size(eloc, 2)), eids(size(eloc, 2)), &
-               pids(size(eloc, 2)))
-      do i = 1, size(eloc, 2)
-         b = eloc(1, i); j = eloc(2, i)
+      allocate(elems(size(pp%eloc, 2)), cells(cells_width(g), size(pp%eloc, 2)), &
+               eids(size(pp%eloc, 2)), &
+               pids(size(pp%eloc, 2)))
+      do i = 1, size(pp%eloc, 2)
+         b = pp%eloc(1, i); j = pp%eloc(2, i)
          e = model%blocks(b)%elem(j)
          elems(i) = e
          cells(:, i) = cell_column(size(cells, 1), model%blocks(b)%etype, &
@@ -84,43 +90,48 @@ contains
       call par_allreduce(stamp, PAR_MAX)
       title = ''
       if (allocated(g%title)) title = g%title
-      call sys_mkdir_p(dir, error)
+      call sys_mkdir_p(pp%dir, error)
       if (allocated(error)) return
-      m_stamp = stamp
-      m_title = title
-      m_nn = g%nn
-      m_ne = g%ne
-      m_nodes = node_global(own)
-      m_x0 = model%x0(:, own)
-      m_nids = model%node_label(own)
-      call move_alloc(elems, m_elems)
-      call move_alloc(cells, m_cells)
-      call move_alloc(eids, m_eids)
-      call move_alloc(pids, m_pids)
+      pp%m_stamp = stamp
+      pp%m_title = title
+      pp%m_nn = g%nn
+      pp%m_ne = g%ne
+      pp%m_nodes = node_global(pp%own)
+      pp%m_x0 = model%x0(:, pp%own)
+      pp%m_nids = model%node_label(pp%own)
+      call move_alloc(elems, pp%m_elems)
+      call move_alloc(cells, pp%m_cells)
+      call move_alloc(eids, pp%m_eids)
+      call move_alloc(pids, pp%m_pids)
    end subroutine par_plot_setup
 
    !> Create the part file with its mesh (at the first state); the kept mesh is freed.
-   subroutine create_part(error)
+   subroutine create_part(pp, error)
+      type(par_plot_t), intent(inout) :: pp
       type(error_t), allocatable, intent(out) :: error
-      call part%open(dir, par_rank(), par_size(), m_stamp, m_title, m_nn, m_ne, m_nodes, &
-                     m_x0, m_nids, m_elems, m_cells, m_eids, m_pids, error)
-      call free_mesh()
+      call pp%part%open(pp%dir, par_rank(), par_size(), pp%m_stamp, pp%m_title, pp%m_nn, &
+                        pp%m_ne, pp%m_nodes, pp%m_x0, pp%m_nids, pp%m_elems, pp%m_cells, &
+                        pp%m_eids, pp%m_pids, error)
+      call free_mesh(pp)
    end subroutine create_part
 
-   subroutine free_mesh()
-      if (allocated(m_nodes)) deallocate(m_nodes, m_x0, m_nids, m_elems, m_cells, m_eids, m_pids)
+   subroutine free_mesh(pp)
+      type(par_plot_t), intent(inout) :: pp
+      if (allocated(pp%m_nodes)) deallocate(pp%m_nodes, pp%m_x0, pp%m_nids, pp%m_elems, &
+                                            pp%m_cells, pp%m_eids, pp%m_pids)
    end subroutine free_mesh
 
    !> A restart of an MPI run: continue this rank's part after its first nkeep states (the
    !> dump's plot-state count); states written after the dump are removed
    !> (dx_plot_part: plot_part_truncate). Every rank calls it, before the first state.
    !> nkeep = 0: nothing to keep, the part is created anew at the first state.
-   subroutine par_plot_resume(nkeep, error)
+   subroutine par_plot_resume(pp, nkeep, error)
+      type(par_plot_t), intent(inout) :: pp
       integer, intent(in) :: nkeep
       type(error_t), allocatable, intent(out) :: error
       if (nkeep <= 0) return
-      call part%resume(dir, par_rank(), nkeep, error)
-      call free_mesh()
+      call pp%part%resume(pp%dir, par_rank(), nkeep, error)
+      call free_mesh(pp)
    end subroutine par_plot_resume
 
    !> A serial run's dump continued on NP ranks: this rank's part is created and gets its
@@ -130,7 +141,8 @@ contains
    !> writer's values; the combine recomputes displacement and invariants from them as the
    !> serial writer did, so the bits agree. Every rank reads OUTDIR/d3plot.h5 (read-only),
    !> before rank 0 replaces it (out%resume).
-   subroutine par_plot_from_serial(nkeep, error)
+   subroutine par_plot_from_serial(pp, nkeep, error)
+      type(par_plot_t), intent(inout) :: pp
       integer, intent(in) :: nkeep
       type(error_t), allocatable, intent(out) :: error
       type(h5_file_t) :: f
@@ -142,21 +154,21 @@ contains
       logical :: there, merge_them
       character(:), allocatable :: gname, h5path
       if (nkeep <= 0) return
-      h5path = dir//'/d3plot.h5'
+      h5path = pp%dir//'/d3plot.h5'
       ! a serial run killed with -9 left its states in d3plot.states/ (no d3plot.h5 yet):
       ! rank 0 merges them first, as bin/dynx-combine would (an error is reported below,
       ! when d3plot.h5 cannot be read)
       if (par_rank() == 0) then
          inquire(file=h5path, exist=there)
          merge_them = .false.
-         if (.not. there) inquire(file=dir//'/d3plot.states/mesh.h5', exist=merge_them)
-         if (.not. there .and. merge_them) call plot_merge_states(dir, nmerged, err2)
+         if (.not. there) inquire(file=pp%dir//'/d3plot.states/mesh.h5', exist=merge_them)
+         if (.not. there .and. merge_them) call plot_merge_states(pp%dir, nmerged, err2)
          if (allocated(err2)) deallocate(err2)
       end if
       call par_barrier()
-      nodes = m_nodes
-      elems = m_elems
-      call create_part(error)
+      nodes = pp%m_nodes
+      elems = pp%m_elems
+      call create_part(pp, error)
       if (allocated(error)) return
       call h5_open_read(f, h5path, error)
       if (allocated(error)) return
@@ -175,21 +187,21 @@ contains
             gname = state_group(k)
             call h5_read_attr(f, gname, 'time', tk, error)
             if (allocated(error)) exit work
-            call get(gname//'/coordinates', 3*m_nn)
+            call get(gname//'/coordinates', 3*pp%m_nn)
             if (allocated(error)) exit work
-            x = reshape(buf, [3, m_nn])
-            call get(gname//'/velocity', 3*m_nn)
+            x = reshape(buf, [3, pp%m_nn])
+            call get(gname//'/velocity', 3*pp%m_nn)
             if (allocated(error)) exit work
-            v = reshape(buf, [3, m_nn])
-            call get(gname//'/stress', 6*m_ne)
+            v = reshape(buf, [3, pp%m_nn])
+            call get(gname//'/stress', 6*pp%m_ne)
             if (allocated(error)) exit work
-            stress = reshape(buf, [6, m_ne])
-            call get(gname//'/eff_plastic_strain', m_ne)
+            stress = reshape(buf, [6, pp%m_ne])
+            call get(gname//'/eff_plastic_strain', pp%m_ne)
             if (allocated(error)) exit work
             epsp = buf
-            call get(gname//'/failed', m_ne)
+            call get(gname//'/failed', pp%m_ne)
             if (allocated(error)) exit work
-            call part%write_state(tk, x(:, nodes), v(:, nodes), stress(:, elems), &
+            call pp%part%write_state(tk, x(:, nodes), v(:, nodes), stress(:, elems), &
                                   epsp(elems), nint(buf(elems)), error)
             if (allocated(error)) exit work
          end do
@@ -208,45 +220,48 @@ contains
    end subroutine par_plot_from_serial
 
    !> Append the rank's part of the plot state at model%time (no communication).
-   subroutine par_plot_write(model, error)
+   subroutine par_plot_write(pp, model, error)
+      type(par_plot_t), intent(inout) :: pp
       type(model_t), intent(in) :: model
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: stress(:, :), epsp(:)
       integer, allocatable :: failed(:)
       integer :: i, b
-      if (.not. part%active) then
-         call create_part(error)
+      if (.not. pp%part%active) then
+         call create_part(pp, error)
          if (allocated(error)) return
       end if
-      allocate(stress(6, size(eloc, 2)), epsp(size(eloc, 2)), failed(size(eloc, 2)))
-      do i = 1, size(eloc, 2)
-         b = eloc(1, i)
-         call element_average(model%blocks(b), eloc(2, i), khv(b), stress(:, i), epsp(i), &
+      allocate(stress(6, size(pp%eloc, 2)), epsp(size(pp%eloc, 2)), failed(size(pp%eloc, 2)))
+      do i = 1, size(pp%eloc, 2)
+         b = pp%eloc(1, i)
+         call element_average(model%blocks(b), pp%eloc(2, i), pp%khv(b), stress(:, i), epsp(i), &
                               failed(i))
       end do
-      call part%write_state(model%time, model%x(:, own), model%v(:, own), stress, epsp, &
+      call pp%part%write_state(model%time, model%x(:, pp%own), model%v(:, pp%own), stress, epsp, &
                             failed, error)
    end subroutine par_plot_write
 
    !> States this rank's part holds.
-   integer function par_plot_nstates()
-      par_plot_nstates = part%nstates
+   integer function par_plot_nstates(pp)
+      type(par_plot_t), intent(in) :: pp
+      par_plot_nstates = pp%part%nstates
    end function par_plot_nstates
 
    !> End of the run (every rank): close the part, then rank 0 combines the parts into
    !> d3plot.h5 + d3plot.xdmf. An error is returned on the rank that had it.
-   subroutine par_plot_finish(error)
+   subroutine par_plot_finish(pp, error)
+      type(par_plot_t), intent(inout) :: pp
       type(error_t), allocatable, intent(out) :: error
       integer :: n
-      if (finished) return
-      finished = .true.
-      call part%close(error)
+      if (pp%finished) return
+      pp%finished = .true.
+      call pp%part%close(error)
       call par_barrier()           ! every part closed before rank 0 reads them
       if (allocated(error)) return
       if (par_rank() /= 0) return
-      call plot_combine(dir, n, error)
+      call plot_combine(pp%dir, n, error)
       if (allocated(error)) return
       call log_info('dynx: combined '//str(n)//' plot states of '//str(par_size())// &
-                    ' ranks into '//dir//'/d3plot.h5 + d3plot.xdmf')
+                    ' ranks into '//pp%dir//'/d3plot.h5 + d3plot.xdmf')
    end subroutine par_plot_finish
 end module dx_par_plot

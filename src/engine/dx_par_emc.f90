@@ -13,12 +13,14 @@
 !> Output, restart dumps (serial format) and the last plot state are written by rank 0;
 !> stop and dump requests are reduced over the ranks at every step (dx_checkpoint).
 !> A deck without *DYNX_CONSERVING_CONTACT, or a serial run, never calls this (on = .false.).
-!> Module state (allowed in parallel/): the slot ownership and the exchange counters.
+!> Module state (still; issue 14 moves it into the domain): the slot ownership and the
+!> exchange counters, read by the conserving contact kernel (dx_emc_contact).
 module dx_par_emc
    use dx_kinds, only: wp
    use dx_strings, only: str, rstr
    use dx_log, only: log_info
-   use dx_par, only: par_rank, par_size, par_gather_ordered, par_wtime, par_allreduce, PAR_SUM
+   use dx_par, only: par_rank, par_size, par_wtime, par_allreduce, PAR_SUM
+   use dx_par_plan, only: par_gather_ordered
    use dx_emc_types, only: emc_system_t
    implicit none
    private

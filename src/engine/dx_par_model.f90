@@ -1,4 +1,4 @@
-!> A rank's sub-model for the MPI engine (first piece of step 5; docs/design.md): its element
+!> A rank's sub-model for the MPI engine (first piece of step 5; docs/history.md): its element
 !> blocks are the pieces of the serial blocks it holds (serial block order, serial position
 !> order), so the unchanged element kernels visit every interior node's contributions in the
 !> serial order. A corner whose node is shared gets its own "slot" node (index nloc + slot)
@@ -13,7 +13,7 @@ module dx_par_model
    use dx_kinds, only: wp, nv_chunk
    use dx_model, only: model_t, elem_block_t, MAX_NEN
    use dx_partition, only: rank_part_t
-   use dx_par, only: shared_sum_t, par_shared_setup, par_shared_sum
+   use dx_par_plan, only: shared_sum_t, par_shared_setup, par_shared_sum
    implicit none
    private
    public :: par_model_t, par_model_build, par_fill_slots, par_exchange_forces, &
