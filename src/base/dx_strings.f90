@@ -3,7 +3,7 @@ module dx_strings
    use dx_kinds, only: wp
    implicit none
    private
-   public :: upper, lower, str, rstr, string_t
+   public :: upper, lower, str, rstr, string_t, command_arg
 
    interface str
       module procedure str_int, str_int8
@@ -70,4 +70,17 @@ contains
       write(buf, fmt) x
       s = trim(adjustl(buf))
    end function rstr
+   !> The k-th command-line argument, whole ('' when there is none: k past the count).
+   function command_arg(k) result(a)
+      integer, intent(in) :: k
+      character(:), allocatable :: a
+      integer :: l
+      if (k < 1 .or. k > command_argument_count()) then
+         a = ''
+         return
+      end if
+      call get_command_argument(k, length=l)
+      allocate(character(l) :: a)
+      call get_command_argument(k, a)
+   end function command_arg
 end module dx_strings

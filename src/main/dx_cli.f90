@@ -6,7 +6,7 @@ module dx_cli
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use dx_kinds, only: wp
    use dx_error, only: error_t, EXIT_INPUT, exit_process
-   use dx_strings, only: rstr
+   use dx_strings, only: rstr, command_arg
    use dx_log, only: log_info, log_error
    use dx_io_sys, only: sys_epoch_seconds
    use dx_timer, only: wall_time
@@ -114,11 +114,8 @@ contains
    function get_arg(k) result(a)
       integer, intent(in) :: k
       character(:), allocatable :: a
-      integer :: l
       if (k > command_argument_count()) call die_usage('missing value after the last option')
-      call get_command_argument(k, length=l)
-      allocate(character(l) :: a)
-      call get_command_argument(k, a)
+      a = command_arg(k)
    end function get_arg
 
    subroutine usage()

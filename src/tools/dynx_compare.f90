@@ -9,6 +9,7 @@ program dynx_compare
    use dx_error, only: error_t
    use dx_compare, only: tol_table_t, compare_report_t, read_tolerances, compare_files
    use dx_io_sys, only: sys_exit
+   use dx_strings, only: command_arg
    implicit none
    type(tol_table_t) :: tol
    type(compare_report_t) :: report
@@ -60,10 +61,7 @@ contains
    function get_arg(k) result(s)
       integer, intent(in) :: k
       character(:), allocatable :: s
-      integer :: l
-      call get_command_argument(k, length=l)
-      allocate(character(l) :: s)
-      call get_command_argument(k, s)
+      s = command_arg(k)
    end function get_arg
 
    subroutine usage(msg)

@@ -5,7 +5,7 @@
 program dynx_part
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use dx_error, only: error_t, EXIT_INPUT, EXIT_IO, exit_process, set_error
-   use dx_strings, only: str
+   use dx_strings, only: str, command_arg
    use dx_log, only: log_info
    use dx_model, only: model_t
    use dx_model_input, only: model_input_t
@@ -199,11 +199,8 @@ contains
    function get_arg(k) result(a)
       integer, intent(in) :: k
       character(:), allocatable :: a
-      integer :: l
       if (k > command_argument_count()) call die_usage('missing value after the last option')
-      call get_command_argument(k, length=l)
-      allocate(character(l) :: a)
-      call get_command_argument(k, a)
+      a = command_arg(k)
    end function get_arg
 
    subroutine usage()
