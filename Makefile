@@ -111,16 +111,7 @@ regression: all bin/dynx-debug
 
 test: deps
 	@$(MAKE) --no-print-directory all debug bin/dynx-asan $(UNIT_TESTS) $(MPI_TESTS)
-	@python3 scripts/check_layers.py
-	@sh scripts/run_unit_tests.sh $(UNIT_TESTS)
-	@sh scripts/run_mpi_tests.sh $(MPI_TESTS)
-	@sh scripts/run_partition_tests.sh
-	@sh scripts/run_regression.sh
-	@sh scripts/diskfull_check.sh
-	@python3 scripts/fuzz_decks.py --count 300 --seed 7 --jobs 2 --restart-share 0.05
-	@python3 scripts/kill9_check.py --runs 20 --seed 7
-	@python3 scripts/kill9_sweep.py --endtim 0.009 --target d3dump02 --stride 7
-	@python3 scripts/kill9_sweep.py --workdir build/kill9_sweep_sample --stride 23
+	@sh scripts/test_suites.sh $(UNIT_TESTS) -- $(MPI_TESTS)
 
 # long interrupt-and-continue and kill -9 checks: every scene deck in decks/, every mode
 restart-long: deps
