@@ -1,0 +1,140 @@
+!> The steps of a dynx run that the main program strings together: start (signals, MPI),
+!> the --check stop, the output (restart read, restart deck, plot and history files opened
+!> or resumed), the integrator, and the end. Each step stops the program through dx_cli's
+!> die on an error every rank agrees on.
+module dx_launch
+   use dx_kinds, only: wp
+   use dx_error, only: error_t, EXIT_CHECKPOINT, exit_process
+   use dx_strings, only: str, rstr
+   use dx_log, only: log_info, log_summary, log_set_quiet
+   use dx_model, only: model_t
+   use dx_output, only: output_t
+   use dx_explicit, only: run_explicit
+   use dx_emc_solver, only: run_emc
+   use dx_par_restart, only: par_restart_precheck
+   use dx_restart_deck, only: apply_restart_deck
+   use dx_signals, only: signals_install
+   use dx_par, only: par_init, par_finalize, par_rank
+   use dx_par_agree, only: par_agree
+   use dx_domain, only: domain_t
+   use dx_out_lock, only: out_lock
+   use dx_cli, only: cli_t, die
+   implicit none
+   private
+   public :: launch_start, launch_check_only, launch_lock, launch_output, launch_run
+
+contains
+
+   !> Signals (before MPI_Init, so a SIGTERM during the start-up is a request too), MPI when
+   !> started by mpirun/srun; ranks > 0 print no info or warnings.
+   subroutine launch_start(cli)
+      type(cli_t), intent(inout) :: cli
+      type(error_t), allocatable :: error
+      ! polled once per cycle (MPI: folded into the dt reduction, every rank acts together)
+      if (.not. cli%check_only) call signals_install()
+      call par_init(error)
+      if (allocated(error)) call die(error)
+      if (par_rank() > 0) call log_set_quiet(.true.)
+      cli%opts%ck%raise_here = cli%raise_rank < 0 .or. cli%raise_rank == par_rank()
+   end subroutine launch_start
+
+   !> --check: the restart deck too when given, a summary, and the end of the program.
+   subroutine launch_check_only(cli, model)
+      type(cli_t), intent(in) :: cli
+      type(model_t), intent(inout) :: model
+      type(error_t), allocatable :: error
+      call log_info('dynx: read '//cli%deck//': '//str(model%nn)//' nodes, '// &
+         str(model%ne)//' elements, '//str(size(model%parts))//' parts, '// &
+         str(size(model%blocks))//' element blocks, end time '//rstr(model%ctrl%endtim))
+      if (.not. cli%check_only) return
+      if (len(cli%rdeck) > 0) then
+         call apply_restart_deck(cli%rdeck, model, error)
+         if (allocated(error)) call die(error)
+      end if
+      call log_info('dynx: deck check passed')
+      call log_summary()
+      call par_finalize()
+      stop
+   end subroutine launch_check_only
+
+   !> The output-folder lock (rank 0, held until the process ends) and the restart dump's
+   !> match with the deck (MPI runs: before the domain is built).
+   subroutine launch_lock(cli, model, lock_fd)
+      type(cli_t), intent(in) :: cli
+      type(model_t), intent(in) :: model
+      integer, intent(out) :: lock_fd
+      type(error_t), allocatable :: error
+      lock_fd = -1
+      if (par_rank() == 0) call out_lock(cli%outdir, 'dynx', lock_fd, error)
+      call par_agree(error)
+      if (allocated(error)) call die(error)
+      if (len(cli%rfile) > 0) call par_restart_precheck(cli%rfile, cli%deck, error, &
+                                                        model%deck_files)
+      if (allocated(error)) call die(error)
+   end subroutine launch_lock
+
+   !> A restart (dump, then restart deck) and the output files: opened, or resumed after a
+   !> restart, from the model the domain names (this rank's; MPI explicit: the global model
+   !> on rank 0).
+   subroutine launch_output(cli, model, dom, out)
+      type(cli_t), intent(in) :: cli
+      type(model_t), intent(inout), target :: model
+      class(domain_t), intent(inout) :: dom
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable :: error
+      type(model_t), pointer :: om
+      logical :: writer
+      if (len(cli%rfile) > 0) then
+         call dom%read_restart(model, cli%rfile, error)   ! serial dump, or an MPI run's parts
+         if (allocated(error)) call die(error, dom)
+         call log_info('dynx: restart from '//cli%rfile//' at cycle '//str(model%cycle)// &
+                       ', time '//rstr(model%time))
+         if (len(cli%rdeck) > 0) then
+            call apply_restart_deck(cli%rdeck, model, error)
+            call dom%output_target(model, om, writer)   ! MPI: the global model too
+            if (.not. allocated(error) .and. .not. associated(om, model)) &
+               call apply_restart_deck(cli%rdeck, om, error)
+            call par_agree(error)
+            if (allocated(error)) call die(error, dom)
+            call log_info('dynx: restart deck '//cli%rdeck//' applied')
+         end if
+      end if
+      call dom%output_target(model, om, writer)
+      if (writer .and. len(cli%rfile) > 0) then
+         call out%resume(om, cli%outdir, error)
+      else if (writer) then
+         call out%open(om, cli%outdir, error)
+      end if
+      call par_agree(error)            ! MPI: rank 0 opened the output; its error stops all
+      if (allocated(error)) call die(error, dom)
+   end subroutine launch_output
+
+   !> The integrator the deck asks for (the conserving rigid-body solver with
+   !> *DYNX_CONSERVING_CONTACT, else explicit), then the end: exit 5 after a checkpoint stop,
+   !> the error's code after a failure, else where the results are.
+   subroutine launch_run(cli, model, dom, out)
+      type(cli_t), intent(inout) :: cli
+      type(model_t), intent(inout), target :: model
+      class(domain_t), intent(inout) :: dom
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable :: error
+      if (allocated(model%emc)) then
+         call run_emc(model, dom, cli%opts%ck, out, error)
+      else
+         call run_explicit(model, dom, cli%opts, out, error)
+      end if
+      call log_summary()
+      if (allocated(error)) then
+         if (error%code == EXIT_CHECKPOINT) then
+            call log_info(error%message)
+            call par_finalize()
+            call exit_process(EXIT_CHECKPOINT)
+         end if
+         call die(error, dom)
+      end if
+      call log_info('dynx: results in '//cli%outdir//'/ (d3plot.h5, d3plot.xdmf'// &
+         trim(merge(', glstat', '        ', model%db%glstat_dt > 0.0_wp))//')')
+      call dom%report()
+      call par_finalize()
+   end subroutine launch_run
+end module dx_launch
