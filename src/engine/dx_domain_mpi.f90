@@ -15,8 +15,9 @@ module dx_domain_mpi
    use dx_output, only: output_t
    use dx_par, only: par_size
    use dx_domain, only: domain_t, serial_domain_t, requests_t
-   use dx_par_engine, only: par_engine_t, par_engine_setup, par_engine_on, par_engine_mass, &
-                            par_engine_mass_share, par_engine_initial, par_engine_writer, &
+   use dx_par_engine_setup, only: par_engine_setup, par_engine_mass_share
+   use dx_par_engine, only: par_engine_t, par_engine_on, par_engine_mass, &
+                            par_engine_initial, par_engine_writer, &
                             par_engine_fill, par_engine_pending, par_engine_defer, &
                             par_engine_dt, par_engine_global, par_engine_exchange, &
                             par_engine_constraints, par_engine_energies, par_engine_plot, &
