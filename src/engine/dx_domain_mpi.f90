@@ -36,7 +36,7 @@ module dx_domain_mpi
    public :: mpi_domain_t, domain_create
 
    !> This rank's part of an MPI run: the state of every stage (the conserving solver's
-   !> dx_par_emc still keeps its own module state).
+   !> split, emc, is in domain_t: its MPI run is a replicated serial domain).
    type, extends(domain_t) :: mpi_domain_t
       type(par_loads_t) :: loads        !< external loads on shared nodes, external work
       type(par_rigid_t) :: rigid        !< rigid bodies spanning ranks
@@ -91,11 +91,12 @@ contains
       allocate(md)
       md%contact%split_mode = split
       call par_engine_setup(md%eng, model, deck, outdir, partdir, md%loads, md%rigid, md%plot, &
-                            md%contact, error)
+                            md%contact, md%emc, error)
       if (par_engine_on(md%eng)) then
          call move_alloc(md, dom)
       else
          allocate(serial_domain_t :: dom)
+         dom%emc = md%emc              ! a conserving deck: the slave points' split (MPI)
       end if
    end subroutine domain_create
 

@@ -29,7 +29,7 @@ module dx_par_engine_setup
                              write_contact_report
    use dx_par_plot, only: par_plot_t, par_plot_setup
    use dx_par_agree, only: par_agree
-   use dx_par_emc, only: par_emc_setup
+   use dx_par_emc, only: par_emc_t, par_emc_setup
    use dx_par_engine, only: par_engine_t, serial_key, KEY_NONE, NREC_W
    implicit none
    private
@@ -42,9 +42,10 @@ contains
    !> to the deck; when rank_00000.h5 is in none of them, rank 0 partitions the deck (as
    !> dynx-part) into outdir first. Errors that concern one rank abort all ranks. loads and
    !> rigid, plot, contact: the domain's parts of the load, rigid-body, plot and contact
-   !> stages (dx_par_loads, dx_par_rigid, dx_par_plot, dx_par_contact).
+   !> stages (dx_par_loads, dx_par_rigid, dx_par_plot, dx_par_contact); emc: the conserving
+   !> solver's split of the slave points (dx_par_emc; a conserving deck stops there).
    subroutine par_engine_setup(eng, model, deck, outdir, partdir, loads, rigid, plot, contact, &
-                               error)
+                               emc, error)
       type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(inout) :: model
       character(*), intent(in) :: deck, outdir, partdir
@@ -52,6 +53,7 @@ contains
       type(par_rigid_t), intent(inout) :: rigid
       type(par_plot_t), intent(inout) :: plot
       type(par_contact_t), intent(inout) :: contact
+      type(par_emc_t), intent(inout) :: emc
       type(error_t), allocatable, intent(out) :: error
       type(rank_part_t) :: rp
       character(16) :: hash
@@ -106,7 +108,7 @@ contains
       call par_agree(error)             ! a missing or wrong rank file: every rank stops
       if (allocated(error)) return
       if (allocated(model%emc)) then   ! conserving solver: whole model, pairs split (dx_par_emc)
-         call par_emc_setup(model%emc, model%nn, rp%nodes, rp%node_owner)
+         call par_emc_setup(emc, model%emc, model%nn, rp%nodes, rp%node_owner)
          return
       end if
       ! the global model keeps the serial numbering; the rank's model becomes local. The
