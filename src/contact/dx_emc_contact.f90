@@ -26,22 +26,47 @@
 !> linear pair has the high-frequency spectral radius rho_inf and the energy falls by
 !> chi eps (<g1> - <g0>)(g1 - g0) >= 0 per step with the momenta exact (the energy-decaying
 !> momentum-conserving idea of Armero & Romero 2001, CMAME 190:2603-2649, on the gap).
-!> MPI (dx_par_emc): each rank searches and evaluates the pairs of the slave points it owns;
-!> the pairs and the per-pair contributions are gathered in serial order and added by the
-!> same loop as in a serial run (emc_contact_forces computes every pair's contribution
-!> first, then adds them in pair order), so the sums are the serial ones bit for bit.
+!> MPI (an emc_split_t the caller passes: dx_par_emc's par_emc_t): each rank searches and
+!> evaluates the pairs of the slave points it owns; the pairs and the per-pair contributions
+!> are gathered in serial order and added by the same loop as in a serial run
+!> (emc_contact_forces computes every pair's contribution first, then adds them in pair
+!> order), so the sums are the serial ones bit for bit. Without a split (or off): serial.
 module dx_emc_contact
    use dx_kinds, only: wp
    use dx_emc_types, only: emc_system_t, EMC_PAIR_NI, EMC_PAIR_NR
-   use dx_par_emc, only: par_emc_on, par_emc_mine, par_emc_slot, par_emc_gather
    implicit none
    private
    public :: emc_kin_t, emc_pair_t, emc_select_pairs, emc_contact_forces, emc_inv3, &
-             emc_same_plane, emc_pairs_pack, emc_pairs_unpack, &
+             emc_same_plane, emc_pairs_pack, emc_pairs_unpack, emc_split_t, emc_slot_range, &
              PAIR_FACET, PAIR_SPHERE_OUT, PAIR_SPHERE_IN
 
    integer, parameter :: PAIR_FACET = 1, PAIR_SPHERE_OUT = 2, PAIR_SPHERE_IN = 3
    integer, parameter :: NREC = 28   !< reals of one pair's contribution (pair_contribution)
+
+   !> The split of the slave points over the ranks (ParaDyn): which slots this rank
+   !> evaluates and the ordered gather of (key, values), given by the caller (the engine's
+   !> par_emc_t), so this kernel imports neither the engine nor MPI. Slots are the slave
+   !> points in serial loop order; off (on = .false.): every point is evaluated here.
+   type, abstract :: emc_split_t
+      logical :: on = .false.
+      integer, allocatable :: base(:)    !< (ndefs) first slot of each contact definition
+      logical, allocatable :: mine(:)    !< (nslots) this rank evaluates the slot
+   contains
+      procedure :: slot => split_slot
+      procedure :: is_mine => split_mine
+      procedure(gather_i), deferred :: gather   !< every rank's (key, values) in key order
+   end type emc_split_t
+
+   abstract interface
+      subroutine gather_i(self, keys, vals, all_keys, all_vals)
+         import :: emc_split_t, wp
+         class(emc_split_t), intent(inout) :: self
+         integer, intent(in) :: keys(:)
+         real(wp), intent(in) :: vals(:, :)
+         integer, allocatable, intent(out) :: all_keys(:)
+         real(wp), allocatable, intent(out) :: all_vals(:, :)
+      end subroutine gather_i
+   end interface
 
    !> kinematics of one body over the step. The geometry is formed from differences of the
    !> centres (xc0 + xl0 of one body minus the other's) plus the small increments dxc and
@@ -273,18 +298,20 @@ contains
    !> master sphere, kept when g(n) or g(n+1) < 0 and g(n) > -dpen (not through the body).
    !> MPI (dx_par_emc): each rank searches its own slave points; the pairs are gathered in
    !> the serial order (by slave point; a point's pairs are found by one rank, in order).
-   subroutine emc_select_pairs(es, k, pairs, npair)
+   subroutine emc_select_pairs(es, k, pairs, npair, sp)
       type(emc_system_t), intent(in) :: es
       type(emc_kin_t), intent(in) :: k(:)
       type(emc_pair_t), allocatable, intent(inout) :: pairs(:)
       integer, intent(out) :: npair
+      class(emc_split_t), intent(inout), optional :: sp   !< MPI: the rank's slave points
       integer :: id, sb, mb, i, i1, i2, f, q, nsp
       real(wp) :: g0, g1, nu(3), xp(3), rsm(3), rmm(3), dpen, xb(3), xb1(3), trav
       logical :: inside, dup, split
       type(emc_pair_t) :: p
       if (.not. allocated(pairs)) allocate(pairs(16))
       npair = 0
-      split = par_emc_on()
+      split = .false.
+      if (present(sp)) split = sp%on
       do id = 1, size(es%defs)
          sb = es%defs(id)%sb
          mb = es%defs(id)%mb
@@ -295,7 +322,7 @@ contains
          end if
          do i = i1, i2
             if (split) then
-               if (.not. par_emc_mine(es, id, i)) cycle
+               if (.not. sp%is_mine(es, id, i)) cycle
             end if
             p%def = id; p%sb = sb; p%mb = mb; p%src = i
             if (i == 0) then
@@ -342,7 +369,7 @@ contains
             end do
          end do
       end do
-      if (split) call gather_pairs(es, pairs, npair)
+      if (split) call gather_pairs(es, pairs, npair, sp)
    contains
       subroutine push(pp)
          type(emc_pair_t), intent(in) :: pp
@@ -393,21 +420,22 @@ contains
    !> MPI: every rank's pairs (pairs(1:npair)) into the full list in serial order, on every
    !> rank. Each pair travels as EMC_PAIR_NI integers (exact as reals) and EMC_PAIR_NR reals,
    !> keyed by its slave point's serial position.
-   subroutine gather_pairs(es, pairs, npair)
+   subroutine gather_pairs(es, pairs, npair, sp)
       type(emc_system_t), intent(in) :: es
       type(emc_pair_t), allocatable, intent(inout) :: pairs(:)
       integer, intent(inout) :: npair
+      class(emc_split_t), intent(inout) :: sp
       integer, allocatable :: ai(:, :), keys(:), akeys(:)
       real(wp), allocatable :: ar(:, :), v(:, :), av(:, :)
       integer :: i, n
       call emc_pairs_pack(pairs(1:npair), ai, ar)
       allocate(keys(npair), v(EMC_PAIR_NI + EMC_PAIR_NR, npair))
       do i = 1, npair
-         keys(i) = par_emc_slot(es, pairs(i)%def, pairs(i)%src)
+         keys(i) = sp%slot(es, pairs(i)%def, pairs(i)%src)
          v(1:EMC_PAIR_NI, i) = real(ai(:, i), wp)
          v(EMC_PAIR_NI + 1:, i) = ar(:, i)
       end do
-      call par_emc_gather(keys, v, akeys, av)
+      call sp%gather(keys, v, akeys, av)
       n = size(akeys)
       deallocate(ai, ar)
       allocate(ai(EMC_PAIR_NI, n), ar(EMC_PAIR_NR, n))
@@ -426,7 +454,7 @@ contains
    !> U(g(n+1)), upen0 = sum U(g(n)). Two passes: each pair's contribution (rec), then the
    !> sums in pair order. MPI (unless local): a rank evaluates the pairs of its slave points
    !> and the contributions are gathered by pair index before the sums.
-   subroutine emc_contact_forces(es, k, pairs, npair, fo, to, upen0, upen1, dissip, local)
+   subroutine emc_contact_forces(es, k, pairs, npair, fo, to, upen0, upen1, dissip, local, sp)
       type(emc_system_t), intent(in) :: es
       type(emc_kin_t), intent(in) :: k(:)
       type(emc_pair_t), intent(inout) :: pairs(:)
@@ -434,28 +462,30 @@ contains
       real(wp), intent(out) :: fo(:, :), to(:, :), upen0, upen1
       real(wp), intent(out), optional :: dissip   !< energy the dissipation takes this step
       logical, intent(in), optional :: local      !< MPI: every rank evaluates every pair
+      class(emc_split_t), intent(inout), optional :: sp   !< MPI: the rank's slave points
       integer :: ip, n
       real(wp) :: dis, rec(NREC, npair)
       real(wp), allocatable :: v(:, :), av(:, :)
       integer, allocatable :: keys(:), akeys(:)
       logical :: split, fric
-      split = par_emc_on()
+      split = .false.
+      if (present(sp)) split = sp%on
       if (present(local)) split = split .and. .not. local
       split = split .and. npair > 0     ! (every rank knows npair: nothing to gather)
       if (split) then
          n = 0
          do ip = 1, npair
-            if (par_emc_mine(es, pairs(ip)%def, pairs(ip)%src)) n = n + 1
+            if (sp%is_mine(es, pairs(ip)%def, pairs(ip)%src)) n = n + 1
          end do
          allocate(keys(n), v(NREC, n))
          n = 0
          do ip = 1, npair
-            if (.not. par_emc_mine(es, pairs(ip)%def, pairs(ip)%src)) cycle
+            if (.not. sp%is_mine(es, pairs(ip)%def, pairs(ip)%src)) cycle
             n = n + 1
             keys(n) = ip
             call pair_contribution(es, k, pairs(ip), v(:, n))
          end do
-         call par_emc_gather(keys, v, akeys, av)
+         call sp%gather(keys, v, akeys, av)
          rec(:, akeys) = av
       else
          do ip = 1, npair
@@ -536,4 +566,37 @@ contains
                        r(10:12), r(13:15), r(16:18), dfr)
       r(28) = dfr
    end subroutine pair_contribution
+
+   !> The slave points of definition id: i1..i2 index es%snodes (0..0: the sphere's centre).
+   pure subroutine emc_slot_range(es, id, i1, i2)
+      type(emc_system_t), intent(in) :: es
+      integer, intent(in) :: id
+      integer, intent(out) :: i1, i2
+      integer :: sb
+      sb = es%defs(id)%sb
+      if (es%sphere(sb)%r > 0.0_wp .and. es%sphere(sb)%side == 0) then
+         i1 = 0; i2 = 0
+      else
+         i1 = es%sn_ptr(sb); i2 = es%sn_ptr(sb + 1) - 1
+      end if
+   end subroutine emc_slot_range
+
+   !> The serial position of slave point src of definition id (slots in serial loop order).
+   integer function split_slot(self, es, id, src) result(s)
+      class(emc_split_t), intent(in) :: self
+      type(emc_system_t), intent(in) :: es
+      integer, intent(in) :: id, src
+      integer :: i1, i2
+      call emc_slot_range(es, id, i1, i2)
+      s = self%base(id) + (src - i1)
+   end function split_slot
+
+   !> This rank searches and evaluates slave point src of definition id (always when off).
+   logical function split_mine(self, es, id, src)
+      class(emc_split_t), intent(in) :: self
+      type(emc_system_t), intent(in) :: es
+      integer, intent(in) :: id, src
+      split_mine = .true.
+      if (self%on) split_mine = self%mine(self%slot(es, id, src))
+   end function split_mine
 end module dx_emc_contact

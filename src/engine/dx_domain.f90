@@ -27,6 +27,7 @@ module dx_domain
    use dx_restart, only: restart_write
    use dx_par_restart, only: serial_restart_read
    use dx_energy_sums, only: constraint_work, element_energies, set_energy
+   use dx_par_emc, only: par_emc_t, par_emc_together
    implicit none
    private
    public :: domain_t, serial_domain_t, requests_t
@@ -51,6 +52,7 @@ module dx_domain
 
    !> One rank's part of the model and the stages of a cycle over it.
    type, abstract :: domain_t
+      type(par_emc_t) :: emc    !< the conserving solver's split of the slave points (MPI)
    contains
       procedure(model_i), deferred :: sum_mass          !< after lumping: shared nodes' mass
       procedure(share_i), deferred :: mass_share        !< one-element-wide blocks' dt bound
@@ -253,7 +255,7 @@ module dx_domain
       procedure :: write_dump => s_write_dump
       procedure :: read_restart => s_read_restart
       procedure :: report => s_report
-      procedure :: together => s_false
+      procedure :: together => s_together
       procedure :: plot_note => s_plot_note
       procedure :: launcher => s_launcher
    end type serial_domain_t
@@ -293,6 +295,12 @@ contains
       class(serial_domain_t), intent(in) :: d
       s_false = .false.
    end function s_false
+
+   !> A failure every rank knows: the conserving solver's (replicated on every rank).
+   logical function s_together(d)
+      class(serial_domain_t), intent(in) :: d
+      s_together = par_emc_together(d%emc)
+   end function s_together
 
    !> A failure is acted on at once: error is left as it is.
    subroutine s_error_nothing(d, error)

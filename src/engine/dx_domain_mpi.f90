@@ -15,8 +15,9 @@ module dx_domain_mpi
    use dx_output, only: output_t
    use dx_par, only: par_size
    use dx_domain, only: domain_t, serial_domain_t, requests_t
-   use dx_par_engine, only: par_engine_t, par_engine_setup, par_engine_on, par_engine_mass, &
-                            par_engine_mass_share, par_engine_initial, par_engine_writer, &
+   use dx_par_engine_setup, only: par_engine_setup, par_engine_mass_share
+   use dx_par_engine, only: par_engine_t, par_engine_on, par_engine_mass, &
+                            par_engine_initial, par_engine_writer, &
                             par_engine_fill, par_engine_pending, par_engine_defer, &
                             par_engine_dt, par_engine_global, par_engine_exchange, &
                             par_engine_constraints, par_engine_energies, par_engine_plot, &
@@ -35,7 +36,7 @@ module dx_domain_mpi
    public :: mpi_domain_t, domain_create
 
    !> This rank's part of an MPI run: the state of every stage (the conserving solver's
-   !> dx_par_emc still keeps its own module state).
+   !> split, emc, is in domain_t: its MPI run is a replicated serial domain).
    type, extends(domain_t) :: mpi_domain_t
       type(par_loads_t) :: loads        !< external loads on shared nodes, external work
       type(par_rigid_t) :: rigid        !< rigid bodies spanning ranks
@@ -90,11 +91,12 @@ contains
       allocate(md)
       md%contact%split_mode = split
       call par_engine_setup(md%eng, model, deck, outdir, partdir, md%loads, md%rigid, md%plot, &
-                            md%contact, error)
+                            md%contact, md%emc, error)
       if (par_engine_on(md%eng)) then
          call move_alloc(md, dom)
       else
          allocate(serial_domain_t :: dom)
+         dom%emc = md%emc              ! a conserving deck: the slave points' split (MPI)
       end if
    end subroutine domain_create
 

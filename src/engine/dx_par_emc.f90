@@ -13,8 +13,9 @@
 !> Output, restart dumps (serial format) and the last plot state are written by rank 0;
 !> stop and dump requests are reduced over the ranks at every step (dx_checkpoint).
 !> A deck without *DYNX_CONSERVING_CONTACT, or a serial run, never calls this (on = .false.).
-!> Module state (still; issue 14 moves it into the domain): the slot ownership and the
-!> exchange counters, read by the conserving contact kernel (dx_emc_contact).
+!> No module state: the slot ownership and the exchange counters are a par_emc_t, a component
+!> of the rank's domain (dx_domain), which the solver passes to the conserving contact kernel
+!> (dx_emc_contact) as its emc_split_t.
 module dx_par_emc
    use dx_kinds, only: wp
    use dx_strings, only: str, rstr
@@ -22,24 +23,28 @@ module dx_par_emc
    use dx_par, only: par_rank, par_size, par_wtime, par_allreduce, PAR_SUM
    use dx_par_plan, only: par_gather_ordered
    use dx_emc_types, only: emc_system_t
+   use dx_emc_contact, only: emc_split_t, emc_slot_range
    implicit none
    private
-   public :: par_emc_setup, par_emc_on, par_emc_mine, par_emc_slot, par_emc_gather, &
-             par_emc_report, par_emc_set_together, par_emc_together, par_emc_writer
+   public :: par_emc_t, par_emc_setup, par_emc_on, par_emc_report, par_emc_set_together, &
+             par_emc_together, par_emc_writer
 
-   logical, save :: on = .false.
-   logical, save :: together = .false.      !< a failure every rank found (replicated Newton)
-   integer, allocatable, save :: base(:)    !< (ndefs) first slot of each contact definition
-   logical, allocatable, save :: mine(:)    !< (nslots) this rank evaluates the slot
-   !> counters: gathers, values sent by this rank, values received, wall time in the gathers
-   integer(8), save :: ngath = 0, nsent = 0, nrecv = 0
-   real(wp), save :: tgath = 0.0_wp
+   !> The conserving solver's split of the slave points over the ranks, with its counters.
+   type, extends(emc_split_t) :: par_emc_t
+      logical :: together = .false.      !< a failure every rank found (replicated Newton)
+      !> counters: gathers, values sent by this rank, values received, time in the gathers
+      integer(8) :: ngath = 0, nsent = 0, nrecv = 0
+      real(wp) :: tgath = 0.0_wp
+   contains
+      procedure :: gather => par_emc_gather
+   end type par_emc_t
 
 contains
 
    !> MPI run of a conserving deck: the slot ownership from the rank's part. nodes, owner:
    !> the rank file's global nodes and their owning ranks (rank_part_t).
-   subroutine par_emc_setup(es, nn, nodes, owner)
+   subroutine par_emc_setup(pe, es, nn, nodes, owner)
+      type(par_emc_t), intent(inout) :: pe
       type(emc_system_t), intent(in) :: es
       integer, intent(in) :: nn, nodes(:), owner(:)
       logical, allocatable :: owned(:)
@@ -50,34 +55,34 @@ contains
       allocate(owned(nn))
       owned = .false.
       owned(pack(nodes, owner == me)) = .true.
-      allocate(base(size(es%defs)))
+      allocate(pe%base(size(es%defs)))
       n = 0
       do id = 1, size(es%defs)
-         base(id) = n + 1
-         call slot_range(es, id, i1, i2)
+         pe%base(id) = n + 1
+         call emc_slot_range(es, id, i1, i2)
          n = n + (i2 - i1 + 1)
       end do
-      allocate(mine(n))
-      mine = .false.
+      allocate(pe%mine(n))
+      pe%mine = .false.
       do id = 1, size(es%defs)
          sb = es%defs(id)%sb
-         call slot_range(es, id, i1, i2)
+         call emc_slot_range(es, id, i1, i2)
          do i = i1, i2
-            s = base(id) + (i - i1)
+            s = pe%base(id) + (i - i1)
             if (i > 0) then
-               mine(s) = owned(es%sn_node(i))
+               pe%mine(s) = owned(es%sn_node(i))
             else if (es%sn_ptr(sb + 1) > es%sn_ptr(sb)) then
-               mine(s) = owned(es%sn_node(es%sn_ptr(sb)))   ! the sphere's first surface node
+               pe%mine(s) = owned(es%sn_node(es%sn_ptr(sb)))   ! the sphere's first surface node
             else
-               mine(s) = me == 0
+               pe%mine(s) = me == 0
             end if
          end do
       end do
       allocate(cnt(0:par_size() - 1))
       cnt = 0
-      cnt(me) = count(mine)
+      cnt(me) = count(pe%mine)
       call par_allreduce(cnt, PAR_SUM)
-      on = .true.
+      pe%on = .true.
       txt = ''
       do i = 0, par_size() - 1
          txt = txt//' '//str(cnt(i))
@@ -86,45 +91,16 @@ contains
                     ' slave points, per rank:'//txt)
    end subroutine par_emc_setup
 
-   !> The slave points of definition id: i1..i2 index es%snodes (0..0: the sphere's centre).
-   pure subroutine slot_range(es, id, i1, i2)
-      type(emc_system_t), intent(in) :: es
-      integer, intent(in) :: id
-      integer, intent(out) :: i1, i2
-      integer :: sb
-      sb = es%defs(id)%sb
-      if (es%sphere(sb)%r > 0.0_wp .and. es%sphere(sb)%side == 0) then
-         i1 = 0; i2 = 0
-      else
-         i1 = es%sn_ptr(sb); i2 = es%sn_ptr(sb + 1) - 1
-      end if
-   end subroutine slot_range
-
    !> True in an MPI run (NP > 1) of a conserving deck.
-   logical function par_emc_on()
-      par_emc_on = on
+   logical function par_emc_on(pe)
+      type(par_emc_t), intent(in) :: pe
+      par_emc_on = pe%on
    end function par_emc_on
-
-   !> The serial position of slave point src of definition id (slots in serial loop order).
-   integer function par_emc_slot(es, id, src) result(s)
-      type(emc_system_t), intent(in) :: es
-      integer, intent(in) :: id, src
-      integer :: i1, i2
-      call slot_range(es, id, i1, i2)
-      s = base(id) + (src - i1)
-   end function par_emc_slot
-
-   !> This rank searches and evaluates slave point src of definition id (always when off).
-   logical function par_emc_mine(es, id, src)
-      type(emc_system_t), intent(in) :: es
-      integer, intent(in) :: id, src
-      par_emc_mine = .true.
-      if (on) par_emc_mine = mine(par_emc_slot(es, id, src))
-   end function par_emc_mine
 
    !> Every rank's (key, values) in serial order (a stable sort by key: equal keys keep
    !> their rank-local order); counted for the report.
-   subroutine par_emc_gather(keys, vals, all_keys, all_vals)
+   subroutine par_emc_gather(self, keys, vals, all_keys, all_vals)
+      class(par_emc_t), intent(inout) :: self
       integer, intent(in) :: keys(:)
       real(wp), intent(in) :: vals(:, :)
       integer, allocatable, intent(out) :: all_keys(:)
@@ -132,35 +108,39 @@ contains
       real(wp) :: t0
       t0 = par_wtime()
       call par_gather_ordered(keys, vals, all_keys, all_vals)
-      tgath = tgath + (par_wtime() - t0)
-      ngath = ngath + 1
-      nsent = nsent + size(vals) + size(keys)
-      nrecv = nrecv + size(all_vals) + size(all_keys)
+      self%tgath = self%tgath + (par_wtime() - t0)
+      self%ngath = self%ngath + 1
+      self%nsent = self%nsent + size(vals) + size(keys)
+      self%nrecv = self%nrecv + size(all_vals) + size(all_keys)
    end subroutine par_emc_gather
 
    !> A failure every rank found at the same step (Newton, on identical data): a clean stop
    !> on every rank with the serial exit code, no MPI_Abort.
-   subroutine par_emc_set_together()
-      together = .true.
+   subroutine par_emc_set_together(pe)
+      type(par_emc_t), intent(inout) :: pe
+      pe%together = .true.
    end subroutine par_emc_set_together
 
-   logical function par_emc_together()
-      par_emc_together = on .and. together
+   logical function par_emc_together(pe)
+      type(par_emc_t), intent(in) :: pe
+      par_emc_together = pe%on .and. pe%together
    end function par_emc_together
 
    !> This rank writes the output (rank 0 of an MPI run; always in a serial run).
-   logical function par_emc_writer()
-      par_emc_writer = .not. on .or. par_rank() == 0
+   logical function par_emc_writer(pe)
+      type(par_emc_t), intent(in) :: pe
+      par_emc_writer = .not. pe%on .or. par_rank() == 0
    end function par_emc_writer
 
    !> The exchange counters of the run (log, rank 0): per step when nstep > 0.
-   subroutine par_emc_report(nstep)
+   subroutine par_emc_report(pe, nstep)
+      type(par_emc_t), intent(in) :: pe
       integer, intent(in) :: nstep
-      if (.not. on) return
-      call log_info('dynx: conserving solver MPI exchange (rank 0): '//str(int(ngath))// &
-         ' ordered gathers, '//str(int(nrecv))//' numbers received ('// &
-         rstr(real(nrecv, wp)/max(nstep, 1), 5)//' per step, '// &
-         rstr(real(ngath, wp)/max(nstep, 1), 5)//' gathers per step), '//str(int(nsent))// &
-         ' sent, '//rstr(tgath, 4)//' s in the gathers')
+      if (.not. pe%on) return
+      call log_info('dynx: conserving solver MPI exchange (rank 0): '//str(int(pe%ngath))// &
+         ' ordered gathers, '//str(int(pe%nrecv))//' numbers received ('// &
+         rstr(real(pe%nrecv, wp)/max(nstep, 1), 5)//' per step, '// &
+         rstr(real(pe%ngath, wp)/max(nstep, 1), 5)//' gathers per step), '//str(int(pe%nsent))// &
+         ' sent, '//rstr(pe%tgath, 4)//' s in the gathers')
    end subroutine par_emc_report
 end module dx_par_emc

@@ -15,7 +15,6 @@ module dx_cli
    use dx_par, only: par_init, par_finalize, par_rank, par_size, par_abort, par_barrier, &
                      par_active
    use dx_par_agree, only: par_agreed
-   use dx_par_emc, only: par_emc_together
    use dx_domain, only: domain_t
    implicit none
    private
@@ -230,7 +229,7 @@ contains
       logical :: together
       ! a failure every rank knows (it wrote the last plot state): rank 0 reports, all exit
       ! with the code; any other failure on one rank stops every rank (MPI_Abort)
-      together = par_agreed() .or. par_emc_together()
+      together = par_agreed()
       if (present(dom)) together = together .or. dom%together()
       if (par_size() > 1 .and. .not. together) call par_abort(err%message, err%code)
       if (par_rank() == 0) call log_error(err%message)

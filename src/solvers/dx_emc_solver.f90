@@ -29,7 +29,8 @@ module dx_emc_solver
    use dx_dense_solve, only: dense_solve
    use dx_emc_types, only: emc_system_t, EMC_LAGRANGE
    use dx_emc_contact, only: emc_kin_t, emc_pair_t, emc_select_pairs, emc_contact_forces, &
-                             emc_inv3, emc_same_plane, emc_pairs_pack, emc_pairs_unpack
+                             emc_inv3, emc_same_plane, emc_pairs_pack, emc_pairs_unpack, &
+                             emc_split_t
    use dx_emc_types, only: EMC_PAIR_NI, EMC_PAIR_NR
    use dx_checkpoint, only: checkpoint_t, checkpoint_stage
    use dx_domain, only: domain_t
@@ -177,7 +178,7 @@ contains
    end subroutine kinematics
 
    !> Residual of the midpoint equations; scale: momentum scale of the step.
-   subroutine residual(es, st, dt, y, pairs, npair, res, scale, upen1, dis, local)
+   subroutine residual(es, st, dt, y, pairs, npair, res, scale, upen1, dis, local, sp)
       type(emc_system_t), intent(in) :: es
       type(emc_state_t), intent(in) :: st
       real(wp), intent(in) :: dt, y(:)
@@ -186,6 +187,7 @@ contains
       real(wp), intent(out) :: res(:), scale, upen1
       real(wp), intent(out), optional :: dis
       logical, intent(in), optional :: local   !< MPI: evaluate the pairs on every rank
+      class(emc_split_t), intent(inout), optional :: sp   !< MPI: the rank's slave points
       type(emc_kin_t) :: k(st%nb)
       real(wp) :: rc(3, 3, st%nb), fo(3, st%nb), to(3, st%nb), upen0
       integer :: b, o, i, nb6
@@ -194,7 +196,7 @@ contains
          if (pairs(i)%il > 0) pairs(i)%lam = y(nb6 + pairs(i)%il)/dt
       end do
       call kinematics(st, dt, y, k, rc)
-      call emc_contact_forces(es, k, pairs, npair, fo, to, upen0, upen1, dis, local)
+      call emc_contact_forces(es, k, pairs, npair, fo, to, upen0, upen1, dis, local, sp)
       scale = tiny(1.0_wp)
       do b = 1, st%nb
          o = 6*(b - 1)
@@ -310,12 +312,13 @@ contains
 
    !> Newton iterations for one step of size dt from st; on success st advances to t + dt.
    !> Unknowns: (v1, W1) per body, then one impulse dt*lam per Lagrange pair.
-   subroutine emc_try_step(es, st, dt, rep, ok)
+   subroutine emc_try_step(es, st, dt, rep, ok, split)
       type(emc_system_t), intent(in) :: es
       type(emc_state_t), intent(inout) :: st
       real(wp), intent(in) :: dt
       type(newton_report_t), intent(out) :: rep
       logical, intent(out) :: ok
+      class(emc_split_t), intent(inout), optional :: split   !< MPI: the rank's slave points
       real(wp), allocatable :: y(:), yp(:), r(:), rp(:), jac(:, :), ysave(:)
       real(wp) :: scale, sp, rn, rn_old, h, upen1, ymag, rc(3, 3, st%nb), xold(3), dxl(3), dis
       type(emc_pair_t), allocatable :: pairs(:), cand(:)
@@ -336,7 +339,7 @@ contains
          ysave(6*b - 2:6*b) = st%w(:, b)
       end do
       call kinematics(st, dt, ysave, k, rc)
-      call emc_select_pairs(es, k, pairs, npair)
+      call emc_select_pairs(es, k, pairs, npair, split)
       nact = 0
       if (allocated(st%act)) nact = size(st%act)
       allocate(used(nact))
@@ -360,7 +363,7 @@ contains
          rn_old = huge(1.0_wp)
          ok = .false.
          do it = 1, es%maxit + 1
-            call residual(es, st, dt, y, pairs, npair, r, scale, upen1)
+            call residual(es, st, dt, y, pairs, npair, r, scale, upen1, sp=split)
             rn = maxval(abs(r))/scale
             rep%resid = rn
             if (.not. ieee_is_finite(rn)) exit
@@ -377,7 +380,7 @@ contains
                yp = y
                h = 1.0e-7_wp*max(abs(y(jc)), 1.0e-3_wp*ymag, 1.0e-300_wp)
                yp(jc) = y(jc) + h
-               call residual(es, st, dt, yp, pairs, npair, rp, sp, upen1)
+               call residual(es, st, dt, yp, pairs, npair, rp, sp, upen1, sp=split)
                jac(:, jc) = (rp - r)/h
             end do
             ! the compliance's derivative exactly: a forward difference loses it in the
@@ -419,7 +422,7 @@ contains
          npair = q
          ! contacts the converged step reaches that the predictor did not see
          call kinematics(st, dt, ysave, k, rc)
-         call emc_select_pairs(es, k, cand, ncand)
+         call emc_select_pairs(es, k, cand, ncand, split)
          call carry_gaps(es, st, k, cand, ncand, used)
          call drop_new_penetrated(es, cand, ncand)
          do i = 1, ncand
@@ -441,7 +444,8 @@ contains
             end do
             if (found) cycle
             cand(i)%il = 0
-            call residual(es, st, dt, ysave, cand(i:i), 1, rp, sp, upen1, local=.true.)
+            call residual(es, st, dt, ysave, cand(i:i), 1, rp, sp, upen1, local=.true., &
+                          sp=split)
             if (cand(i)%g1 >= 0.0_wp) cycle
             if (npair == size(pairs)) pairs = [pairs, pairs]
             npair = npair + 1
@@ -465,7 +469,7 @@ contains
       end do
       if (allocated(r)) deallocate(r)
       allocate(r(nb6 + nl))
-      call residual(es, st, dt, y, pairs, npair, r, scale, upen1, dis)
+      call residual(es, st, dt, y, pairs, npair, r, scale, upen1, dis, sp=split)
       call kinematics(st, dt, ysave, k, rc)
       do b = 1, st%nb
          xold = st%xc(:, b)
@@ -501,7 +505,7 @@ contains
    end subroutine emc_try_step
 
    !> One step of size dt, halved up to es%nfail times when Newton fails.
-   recursive subroutine emc_step(es, st, dt, level, rep, ok, ncut)
+   recursive subroutine emc_step(es, st, dt, level, rep, ok, ncut, split)
       type(emc_system_t), intent(in) :: es
       type(emc_state_t), intent(inout) :: st
       real(wp), intent(in) :: dt
@@ -509,16 +513,17 @@ contains
       type(newton_report_t), intent(out) :: rep
       logical, intent(out) :: ok
       integer, intent(inout) :: ncut
+      class(emc_split_t), intent(inout) :: split   !< MPI: the rank's slave points
       type(emc_state_t) :: save
       type(newton_report_t) :: r2
       save = st
-      call emc_try_step(es, st, dt, rep, ok)
+      call emc_try_step(es, st, dt, rep, ok, split)
       if (ok .or. level >= es%nfail) return
       st = save
       ncut = ncut + 1
-      call emc_step(es, st, 0.5_wp*dt, level + 1, rep, ok, ncut)
+      call emc_step(es, st, 0.5_wp*dt, level + 1, rep, ok, ncut, split)
       if (.not. ok) return
-      call emc_step(es, st, 0.5_wp*dt, level + 1, r2, ok, ncut)
+      call emc_step(es, st, 0.5_wp*dt, level + 1, r2, ok, ncut, split)
       rep%iters = rep%iters + r2%iters
       rep%resid = max(rep%resid, r2%resid)
       if (.not. ok) rep = r2
@@ -579,8 +584,8 @@ contains
       t0wall = wall_time()
       if (ck%wall0 <= 0.0_wp) ck%wall0 = t0wall
       outdir = ck%outdir
-      wr = par_emc_writer()              ! MPI: rank 0 writes emcstat and the plot states
-      ck%replicated = par_emc_on()       ! MPI: stop/dump requests reduced over the ranks
+      wr = par_emc_writer(dom%emc)              ! MPI: rank 0 writes emcstat and the plot states
+      ck%replicated = par_emc_on(dom%emc)       ! MPI: stop/dump requests reduced over the ranks
       u = -1
       associate (es => model%emc)
          call emc_init_state(model, st)
@@ -627,14 +632,14 @@ contains
          do while (t < tend*(1.0_wp - 1.0e-12_wp))
             if (model%ctrl%endcyc > 0 .and. cyc >= model%ctrl%endcyc) exit
             h = min(dt, tend - t)
-            call emc_step(es, st, h, 0, rep, ok, ncut)
+            call emc_step(es, st, h, 0, rep, ok, ncut, dom%emc)
             if (.not. ok) then
                call set_error(error, 'emc: step '//str(cyc + 1)//' at time '//rstr(t)// &
                   ' (dt '//rstr(h)//'): '//rep%msg//'; scaled residual '//rstr(rep%resid)// &
                   ' after '//str(rep%iters)//' iterations (tolerance '//rstr(es%rtol)// &
                   '; *DYNX_CONSERVING_CONTROL MAXIT, NFAIL); last converged state written', &
                   EXIT_NUMERIC)
-               call par_emc_set_together()     ! every rank failed at this step (same data)
+               call par_emc_set_together(dom%emc)     ! every rank failed at this step (same data)
                exit
             end if
             cyc = cyc + 1
@@ -681,7 +686,7 @@ contains
          call log_info('emc: max relative drift over the run: energy '//rstr(de)// &
             ', linear momentum '//rstr(dp)//', angular momentum '//rstr(dl))
          call log_info('emc: wall time '//rstr(wall_time() - t0wall, 4)//' s')
-         call par_emc_report(cyc)
+         call par_emc_report(dom%emc, cyc)
          call energy_bits_line()
       end associate
       if (allocated(ioerr) .and. .not. allocated(error)) call move_alloc(ioerr, error)
