@@ -6,7 +6,7 @@ program dynx
    use dx_strings, only: str, rstr
    use dx_log, only: log_info, log_summary, log_set_quiet
    use dx_model, only: model_t
-   use dx_deck, only: read_deck
+   use dx_deck_model, only: read_deck
    use dx_output, only: output_t
    use dx_explicit, only: run_explicit, init_state
    use dx_par_restart, only: par_restart_precheck
