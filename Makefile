@@ -9,7 +9,7 @@
 #   make mpi-sweep     every regression deck serially and at NP 2, 3, 4: bitwise equal (about 15 min)
 SHELL := /bin/sh
 FC := h5pfc
-SRC_DIRS := base linalg parallel model materials materials/eos deck elements rigid contact loads io engine solvers
+SRC_DIRS := base linalg parallel model materials materials/eos build deck elements rigid contact loads io engine solvers
 # src/tools/: dynx_*.f90 are the tool programs, dx_*.f90 their modules (in the library)
 LIB_SRC := $(foreach d,$(SRC_DIRS),$(wildcard src/$(d)/*.f90)) $(wildcard src/tools/dx_*.f90)
 PROG_SRC := src/main/dynx.f90 $(wildcard src/tools/dynx_*.f90)

@@ -1,6 +1,7 @@
 !> Entry point of the deck layer: read an LS-DYNA keyword deck into a model ready for the
 !> solver. Tokenizes the deck (dx_deck_cards), looks every keyword up in the registry and
-!> calls its reader (dx_read_* modules), then builds the model (dx_model_build).
+!> calls its reader (dx_read_* modules) into the model input; the build stage (src/build/,
+!> dx_build) turns that into the model (read then build: dx_deck_model).
 !> Supported keywords and fields: docs/keywords.md.
 module dx_deck
    use dx_error, only: error_t, set_error
@@ -16,16 +17,12 @@ module dx_deck
    use dx_read_curves, only: register_curves
    use dx_read_rigid, only: register_rigid
    use dx_read_contact, only: register_contact
-   use dx_contact_build, only: build_contact
    use dx_read_restart, only: register_restart
    use dx_read_emc, only: register_emc
-   use dx_emc_build, only: build_emc
-   use dx_model, only: model_t
    use dx_model_input, only: model_input_t, input_init, input_finish
-   use dx_model_build, only: build_model
    implicit none
    private
-   public :: read_deck, read_deck_input, new_registry
+   public :: read_deck_input, new_registry
 
 contains
 
@@ -43,23 +40,6 @@ contains
       call register_restart(reg)
       call register_emc(reg)
    end function new_registry
-
-   !> Read the deck at path into model (x0, v0, blocks, parts, ...; the solver allocates
-   !> x, v, f, mass). Unknown keywords are errors unless ignore_unknown (then warnings).
-   subroutine read_deck(path, model, error, ignore_unknown)
-      character(*), intent(in) :: path
-      type(model_t), intent(out) :: model
-      type(error_t), allocatable, intent(out) :: error
-      logical, intent(in), optional :: ignore_unknown
-      type(model_input_t) :: inp
-      call read_deck_input(path, inp, error, ignore_unknown)
-      if (allocated(error)) return
-      model%deck_file = path
-      model%deck_files = inp%files
-      call build_model(inp, model, error)
-      if (.not. allocated(error)) call build_contact(inp, model, error)
-      if (.not. allocated(error)) call build_emc(inp, model, error)
-   end subroutine read_deck
 
    !> Read the deck at path into the unresolved model input (no build).
    subroutine read_deck_input(path, inp, error, ignore_unknown)

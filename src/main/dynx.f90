@@ -4,7 +4,7 @@
 program dynx
    use dx_error, only: error_t
    use dx_model, only: model_t
-   use dx_deck, only: read_deck
+   use dx_deck_model, only: read_deck
    use dx_output, only: output_t
    use dx_explicit, only: init_state
    use dx_par_agree, only: par_agree

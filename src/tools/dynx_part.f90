@@ -10,9 +10,7 @@ program dynx_part
    use dx_model, only: model_t
    use dx_model_input, only: model_input_t
    use dx_deck, only: read_deck_input
-   use dx_model_build, only: build_model
-   use dx_contact_build, only: build_contact
-   use dx_emc_build, only: build_emc
+   use dx_build, only: build_model
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report, &
                            model_conn
    use dx_rank_file, only: write_rank_file, read_rank_file, rank_file_name, deck_content_hash
@@ -64,11 +62,7 @@ program dynx_part
    call read_deck_input(deck, inp, error, ignore_unknown)
    if (allocated(error)) call die(error)
    model%deck_file = deck
-   call build_model(inp, model, error)
-   if (allocated(error)) call die(error)
-   call build_contact(inp, model, error)     ! the contact pairs (kept whole below)
-   if (allocated(error)) call die(error)
-   call build_emc(inp, model, error)         ! the rest of dynx's checks (read_deck)
+   call build_model(inp, model, error)       ! as bin/dynx: model, contact pairs, emc
    if (allocated(error)) call die(error)
    call deck_content_hash(inp%files, hash, error)
    if (allocated(error)) call die(error)

@@ -11,7 +11,7 @@ program mpi_par_model_test
    use dx_error, only: error_t
    use dx_par, only: par_init, par_finalize, par_rank, par_size, par_allreduce, PAR_MAX
    use dx_model, only: model_t
-   use dx_deck, only: read_deck
+   use dx_deck_model, only: read_deck
    use dx_explicit, only: init_state
    use dx_hex8, only: hex8_block
    use dx_element_types, only: block_result_t

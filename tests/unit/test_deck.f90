@@ -8,7 +8,8 @@ program test_deck
    use dx_model, only: model_t
    use dx_element_types, only: ETYPE_HEX8_1PT, ETYPE_HEX8_SRI
    use dx_model_input, only: model_input_t
-   use dx_deck, only: read_deck, read_deck_input
+   use dx_deck, only: read_deck_input
+   use dx_deck_model, only: read_deck
    use dx_mat_elastic, only: mat_elastic_t
    use dx_mat_piecewise_linear, only: mat_piecewise_linear_t
    implicit none

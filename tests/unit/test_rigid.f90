@@ -13,7 +13,7 @@ program test_rigid
    use dx_assert, only: check, check_close, assert_summary
    use dx_error, only: error_t
    use dx_model, only: model_t
-   use dx_deck, only: read_deck
+   use dx_deck_model, only: read_deck
    implicit none
    real(wp), parameter :: a = 2.0_wp, b = 1.0_wp, h = 1.5_wp, rho = 3.0_wp
    real(wp), parameter :: pi = 3.14159265358979323846_wp

@@ -1,0 +1,109 @@
+!> Model build, shared pieces: the label maps of one build (maps_t) and the lookups that turn a
+!> deck label into a dense index or report the card that named it ("file:line: *KEY: field
+!> F: node 7 is not defined (*NODE)"). Used by dx_model_build and dx_build_loads.
+!> No keyword of its own; no paper.
+module dx_build_common
+   use dx_error, only: error_t, set_error
+   use dx_strings, only: str
+   use dx_model, only: model_t
+   use dx_model_input, only: model_input_t, origin_t
+   use dx_label_map, only: label_map_t
+   implicit none
+   private
+   public :: maps_t, at, at_line, set_nodes, curve_index, node_index, dense_segments
+
+   !> label maps of one build
+   type :: maps_t
+      type(label_map_t) :: node, elem, part, sec, mat, hg, curve, nset, pset, sset
+   end type maps_t
+
+contains
+
+   !> "file:line: *KEY: " of a record
+   function at(inp, src) result(s)
+      type(model_input_t), intent(in) :: inp
+      type(origin_t), intent(in) :: src
+      character(:), allocatable :: s
+      s = inp%files(src%ifile)%s//':'//str(src%line)//': *'//src%key//': '
+   end function at
+
+   function at_line(inp, isrc, key) result(s)
+      type(model_input_t), intent(in) :: inp
+      integer, intent(in) :: isrc(2)
+      character(*), intent(in) :: key
+      character(:), allocatable :: s
+      s = inp%files(isrc(1))%s//':'//str(isrc(2))//': *'//key//': '
+   end function at_line
+
+
+   !> dense node list of node set label id (0: error unless allow_all, then all nodes)
+   subroutine set_nodes(inp, model, mp, id, allow_all, src, what, nodes, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(in) :: model
+      type(maps_t), intent(in) :: mp
+      integer, intent(in) :: id
+      logical, intent(in) :: allow_all
+      type(origin_t), intent(in) :: src
+      character(*), intent(in) :: what
+      integer, allocatable, intent(out) :: nodes(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k, i
+      if (id == 0 .and. allow_all) then
+         nodes = [(i, i = 1, model%nn)]
+         return
+      end if
+      k = mp%nset%get(id)
+      if (k == 0) then
+         call set_error(error, at(inp, src)//'field '//what//': node set '//str(id)// &
+                        ' is not defined (*SET_NODE_LIST)')
+         return
+      end if
+      nodes = model%node_sets(k)%nodes
+   end subroutine set_nodes
+
+   integer function curve_index(inp, mp, lcid, src, what, error) result(k)
+      type(model_input_t), intent(in) :: inp
+      type(maps_t), intent(in) :: mp
+      integer, intent(in) :: lcid
+      type(origin_t), intent(in) :: src
+      character(*), intent(in) :: what
+      type(error_t), allocatable, intent(inout) :: error
+      k = mp%curve%get(lcid)
+      if (k == 0) call set_error(error, at(inp, src)//'field '//what//': curve '//str(lcid)// &
+                                 ' is not defined (*DEFINE_CURVE)')
+   end function curve_index
+
+   integer function node_index(inp, mp, nid, src, what, error) result(k)
+      type(model_input_t), intent(in) :: inp
+      type(maps_t), intent(in) :: mp
+      integer, intent(in) :: nid
+      type(origin_t), intent(in) :: src
+      character(*), intent(in) :: what
+      type(error_t), allocatable, intent(inout) :: error
+      k = mp%node%get(nid)
+      if (k == 0) call set_error(error, at(inp, src)//'field '//what//': node '//str(nid)// &
+                                 ' is not defined (*NODE)')
+   end function node_index
+
+   !> dense node indices of segments seg(4, n); error at the first undefined node
+   subroutine dense_segments(inp, mp, seg, src, dseg, error)
+      type(model_input_t), intent(in) :: inp
+      type(maps_t), intent(in) :: mp
+      integer, intent(in) :: seg(:, :)
+      type(origin_t), intent(in) :: src
+      integer, allocatable, intent(out) :: dseg(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i, k
+      allocate(dseg(4, size(seg, 2)))
+      do i = 1, size(seg, 2)
+         do k = 1, 4
+            dseg(k, i) = mp%node%get(seg(k, i))
+            if (dseg(k, i) == 0) then
+               call set_error(error, at(inp, src)//'segment '//str(i)//': node '// &
+                              str(seg(k, i))//' is not defined (*NODE)')
+               return
+            end if
+         end do
+      end do
+   end subroutine dense_segments
+end module dx_build_common
