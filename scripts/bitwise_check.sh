@@ -7,7 +7,8 @@
 # stdout, stderr, check.log, strace logs and mpirun's *.out/*.err are skipped (wall times,
 # paths, pids), and so are the interrupted runs under restart*/ (the cycle a signal or a
 # wall-clock limit hits depends on timing; their check scripts compare them bitwise with the
-# uninterrupted run), and the kill -9 runs under kill9/ (killed at the N-th system call);
+# uninterrupted run), and the kill -9 runs under kill9/ and killed/ (killed at the N-th system
+# call or after a wall time; mpi_plot_combine's serial reference ends where that kill fell);
 # every other file (glstat, nodout, rbdout, d3plot.h5,
 # d3plot.xdmf, rank parts, dumps) must be identical, HDF5 files up to the run stamp attribute.
 # Prints one line per differing or missing file and 'N identical, N differ'; exits 1 on any
@@ -20,7 +21,7 @@ same=0
 diff=0
 tmp=${TMPDIR:-/tmp}/dynx_bitwise.$$
 trap 'rm -f "$tmp"' EXIT INT TERM
-(cd "$base" && find . -type f ! -name stdout ! -name stderr ! -name check.log ! -name '*.log' ! -name '*.err' ! -name '*.out' ! -name strace.txt ! -path '*/restart*/*' ! -path '*/kill9/*' | sort) > "$tmp"
+(cd "$base" && find . -type f ! -name stdout ! -name stderr ! -name check.log ! -name '*.log' ! -name '*.err' ! -name '*.out' ! -name strace.txt ! -path '*/restart*/*' ! -path '*/kill9/*' ! -path '*/killed/*' ! -path '*/mpi_plot_combine/serial/*' ! -name box_serial.k | sort) > "$tmp"
 # HDF5 files whose only difference is the run stamp attribute (rank files, dumps)
 only_stamp_differs() {
     case "$1" in *.h5) ;; *) return 1 ;; esac
