@@ -78,6 +78,24 @@ contains
       k = 0
    end function find_kind
 
+   !> The registry row j of a *MAT_/*EOS_ block and its first data card i0; the block must
+   !> hold card 1 (fields named by card1) and no more cards than the row's model reads.
+   subroutine keyword_row(deck, blk, kinds, prefix, card1, j, i0, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_kind_t), intent(in) :: kinds(:)
+      character(*), intent(in) :: prefix, card1
+      integer, intent(out) :: j, i0
+      type(error_t), allocatable, intent(out) :: error
+      j = find_kind(kinds, prefix, blk%base)
+      i0 = data_start(blk)
+      if (blk%n < i0) then
+         call block_error(deck, blk, 0, 'missing card 1 ('//card1//')', error)
+         return
+      end if
+      call check_max_cards(deck, blk, i0 + kinds(j)%ncards - 1, error)
+   end subroutine keyword_row
+
    subroutine read_mat(deck, blk, inp, error)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
@@ -91,13 +109,7 @@ contains
       integer :: i0, n, k, j
       character(:), allocatable :: msg
       kinds = material_kinds()
-      j = find_kind(kinds, 'MAT_', blk%base)
-      i0 = data_start(blk)
-      if (blk%n < i0) then
-         call block_error(deck, blk, 0, 'missing card 1 (MID RO E PR ...)', error)
-         return
-      end if
-      call check_max_cards(deck, blk, i0 + kinds(j)%ncards - 1, error)
+      call keyword_row(deck, blk, kinds, 'MAT_', 'MID RO E PR ...', j, i0, error)
       if (allocated(error)) return
       call new_material(kinds(j)%mtype, m, error)
       if (allocated(error)) then
@@ -142,13 +154,7 @@ contains
       integer :: i0, n, k, j
       character(:), allocatable :: msg
       kinds = eos_kinds()
-      j = find_kind(kinds, 'EOS_', blk%base)
-      i0 = data_start(blk)
-      if (blk%n < i0) then
-         call block_error(deck, blk, 0, 'missing card 1 (EOSID ...)', error)
-         return
-      end if
-      call check_max_cards(deck, blk, i0 + kinds(j)%ncards - 1, error)
+      call keyword_row(deck, blk, kinds, 'EOS_', 'EOSID ...', j, i0, error)
       if (allocated(error)) return
       call new_eos(kinds(j)%mtype, e, error)
       if (allocated(error)) then
