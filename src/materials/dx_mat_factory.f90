@@ -15,6 +15,7 @@ module dx_mat_factory
    use dx_mat_rigid, only: mat_rigid_t
    use dx_eos, only: eos_t
    use dx_eos_linear_polynomial, only: eos_linear_polynomial_t
+   use dx_eos_gruneisen, only: eos_gruneisen_t
    implicit none
    private
    public :: model_kind_t, material_kinds, eos_kinds, new_material, new_eos, known_materials, &
@@ -47,7 +48,8 @@ contains
    !> The equation-of-state rows: a new equation of state is its module plus one row here.
    function eos_kinds() result(t)
       type(model_kind_t), allocatable :: t(:)
-      t = [eos_row('EOS_LINEAR_POLYNOMIAL', 1, 2, eos_linear_polynomial_t())]
+      t = [eos_row('EOS_LINEAR_POLYNOMIAL', 1, 2, eos_linear_polynomial_t()), &
+           eos_row('EOS_GRUNEISEN', 4, 2, eos_gruneisen_t())]
    end function eos_kinds
 
    function mat_row(keyword, mtype, ncards, generic, proto) result(r)
