@@ -109,6 +109,8 @@ def wave(a):
     xc = [sum(x0[conn[8 * e + j]][0] for j in range(8)) / 8 for e in range(ne)]
     sxx = [s[6 * e] for e in range(ne)]
     cl = math.sqrt(a.M / a.rho)
+    if a.us_fit:   # a shock: Us = C + S1 up (Rankine-Hugoniot: p = rho Us up)
+        cl = a.us_fit[0] + a.us_fit[1] * a.v
     sig = -a.rho * cl * a.v
     front = cl * t
     h = max(xc) / (ne - 0.5) if ne > 1 else 1.0
@@ -228,6 +230,8 @@ def main():
     p.add_argument('--v', type=float, default=1.0)
     p.add_argument('--tol-plateau', type=float, default=0.01)
     p.add_argument('--tol-front', type=float, default=3.0)
+    p.add_argument('--us-fit', type=float, nargs=2, metavar=('C', 'S1'),
+                   help='a shock of speed Us = C + S1 v instead of cL = sqrt(M/rho)')
     p.add_argument('--csv')
     p = sub.add_parser('patch'); p.add_argument('out')
     p.add_argument('--mode', choices=['strain', 'rotation'], required=True)

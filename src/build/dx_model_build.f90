@@ -251,6 +251,7 @@ contains
             return
          end if
          allocate(m%eos, source=inp%eoss(k)%e)
+         m%eos%rho0 = m%ro
          m%bulk = m%ro*m%eos%sound_speed2(m%ro, 1.0_wp, m%eos%e0)
       end associate
    end subroutine attach_eos

@@ -3,7 +3,8 @@
 !> Et = 2 GPa: sigma(0.01) = 267.5 MPa in one step, within 1e-10 relative).
 !> The finite-difference tangent (material_t%tangent) against the analytic elastic tangent and
 !> the analytic consistent tangent of the radial return of *MAT_PLASTIC_KINEMATIC (Simo &
-!> Taylor 1985), and *EOS_LINEAR_POLYNOMIAL / *MAT_NULL against hand-calculated pressures.
+!> Taylor 1985), *EOS_LINEAR_POLYNOMIAL / *MAT_NULL against hand-calculated pressures, and
+!> *EOS_GRUNEISEN against the Rankine-Hugoniot state p = rho0 Us up of its Us-up fit.
 program test_materials
    use dx_kinds, only: wp
    use dx_error, only: error_t
@@ -14,6 +15,7 @@ program test_materials
    use dx_curve, only: curve_t
    use dx_mat_null, only: mat_null_t
    use dx_eos_linear_polynomial, only: eos_linear_polynomial_t
+   use dx_eos_gruneisen, only: eos_gruneisen_t
    use dx_assert, only: check, check_close, assert_summary
    implicit none
    type(mat_elastic_t) :: el
@@ -167,6 +169,8 @@ program test_materials
    call eos_checks()
    ! ---- *MAT_NULL with C1 = K: uniform compression V = 0.99 from rest, p = K mu exactly
    call null_checks()
+   ! ---- *EOS_GRUNEISEN on the Hugoniot of a linear Us-up fit, its derivatives, mu = 0
+   call gruneisen_checks()
    call assert_summary()
 
 contains
@@ -313,4 +317,65 @@ contains
       sig = st; hv = ht
       s11 = st(1, 1)
    end function uniaxial
+   !> *EOS_GRUNEISEN. With S2 = S3 = 0 and a = 0 the compressed branch is built on the Hugoniot
+   !> of Us = C + S1 up: at eta = 1 - V = up/Us and E = p_H eta/2 (the Rankine-Hugoniot
+   !> energy per reference volume), p = p_H = rho0 Us up for any gamma0. Copper (Steinberg
+   !> UCRL-MA-106439: rho0 8.93 g/cm3, C 3.94 km/s, S1 1.489, gamma0 2.02; units g/cm3, km/s,
+   !> GPa): up from 0.1 to 3 km/s; the tolerance is round-off (a few ulps of ~20 operations).
+   subroutine gruneisen_checks()
+      type(eos_gruneisen_t) :: g
+      real(wp) :: up, us, eta, ph, eh, p, dpdmu, dpde, pp, pm, mu, v, hh, e1, p1
+      real(wp), parameter :: ups(4) = [0.1_wp, 0.5_wp, 1.0_wp, 3.0_wp], mus(2) = [0.15_wp, -0.1_wp]
+      integer :: i
+      g%rho0 = 8.93_wp; g%c = 3.94_wp; g%s1 = 1.489_wp; g%gamma0 = 2.02_wp
+      do i = 1, 4
+         up = ups(i)
+         us = g%c + g%s1*up
+         eta = up/us
+         ph = g%rho0*us*up
+         eh = 0.5_wp*ph*eta
+         p = g%pressure(1.0_wp - eta, eh)
+         call check_close(p, ph, 0.0_wp, 64.0_wp*epsilon(1.0_wp), &
+                          'Gruneisen p on the Hugoniot = rho0 Us up, up = '//trim(num(up)))
+      end do
+      ! the cold curve (E = 0) is the Hugoniot only when gamma0 = 0
+      g%gamma0 = 0.0_wp
+      up = 1.0_wp; us = g%c + g%s1*up; eta = up/us
+      call check_close(g%pressure(1.0_wp - eta, 0.0_wp), g%rho0*us*up, 0.0_wp, &
+                       64.0_wp*epsilon(1.0_wp), 'Gruneisen gamma0 = 0: p(V_H, 0) = rho0 Us up')
+      ! dp/dmu and dp/dE against central differences, all terms on (S2, S3, a, E)
+      g%gamma0 = 2.02_wp; g%s2 = 0.3_wp; g%s3 = -0.2_wp; g%a = 0.47_wp
+      do i = 1, 2
+         mu = mus(i)
+         v = 1.0_wp/(1.0_wp + mu)
+         hh = 1.0e-5_wp
+         call g%state(v, 0.8_wp, p, dpdmu, dpde)
+         pp = g%pressure(1.0_wp/(1.0_wp + mu + hh), 0.8_wp)
+         pm = g%pressure(1.0_wp/(1.0_wp + mu - hh), 0.8_wp)
+         call check_close(dpdmu, (pp - pm)/(2.0_wp*hh), 0.0_wp, 1.0e-8_wp, &
+                          'Gruneisen dp/dmu = central difference, mu = '//trim(num(mu)))
+         pp = g%pressure(v, 0.8_wp + hh)
+         pm = g%pressure(v, 0.8_wp - hh)
+         call check_close(dpde, (pp - pm)/(2.0_wp*hh), 0.0_wp, 1.0e-8_wp, &
+                          'Gruneisen dp/dE = central difference, mu = '//trim(num(mu)))
+      end do
+      ! the branches meet at mu = 0 with the same p and slope rho0 C**2 + a E
+      call g%state(1.0_wp/(1.0_wp + 1.0e-12_wp), 0.8_wp, p, dpdmu, dpde)
+      call check_close(dpdmu, g%rho0*g%c**2 + g%a*0.8_wp, 0.0_wp, 1.0e-10_wp, &
+                       'Gruneisen slope at mu = 0+ = rho0 C**2 + a E')
+      call g%state(1.0_wp/(1.0_wp - 1.0e-12_wp), 0.8_wp, pp, dpdmu, dpde)
+      call check_close(dpdmu, g%rho0*g%c**2 + g%a*0.8_wp, 0.0_wp, 1.0e-10_wp, &
+                       'Gruneisen slope at mu = 0- = rho0 C**2 + a E')
+      call check_close(p, pp, 1.0e-9_wp, 0.0_wp, 'Gruneisen p continuous at mu = 0')
+      ! p is linear in E: the time-centred energy update is exact
+      call g%energy_update(0.9_wp, -0.05_wp, 0.3_wp, 1.0_wp, e1, p1)
+      call check_close(e1, 0.3_wp - 0.5_wp*(1.0_wp + p1)*(-0.05_wp), 0.0_wp, &
+                       16.0_wp*epsilon(1.0_wp), 'Gruneisen energy update is time-centred')
+   end subroutine gruneisen_checks
+
+   function num(x) result(s)
+      real(wp), intent(in) :: x
+      character(24) :: s
+      write(s, '(g0.3)') x
+   end function num
 end program test_materials

@@ -27,10 +27,12 @@ module dx_eos
 
    type, abstract :: eos_t
       integer :: label = 0                  !< EOSID
-      integer :: eostype = 0                !< LS-DYNA EOS type number (1 linear polynomial)
+      integer :: eostype = 0                !< LS-DYNA EOS type number (1, 4, ...)
       character(:), allocatable :: title
       real(wp) :: e0 = 0.0_wp               !< initial internal energy per reference volume
       real(wp) :: v0 = 1.0_wp               !< initial relative volume
+      real(wp) :: rho0 = 0.0_wp             !< reference density: the material's RO, set when
+                                            !< the part attaches the equation of state
    contains
       procedure(read_i), deferred :: read_cards     !< its *EOS_ card(s), through the cursor
       procedure(state_i), deferred :: state         !< p, dp/dmu, dp/dE at (V, E)
