@@ -11,7 +11,7 @@ module dx_cli
    use dx_io_sys, only: sys_epoch_seconds
    use dx_timer, only: wall_time
    use dx_signals, only: SIGTERM_NUM, SIGINT_NUM, SIGUSR1_NUM
-   use dx_explicit, only: run_options_t
+   use dx_integrator, only: run_options_t
    use dx_par, only: par_init, par_finalize, par_rank, par_size, par_abort, par_barrier, &
                      par_active
    use dx_par_agree, only: par_agreed
