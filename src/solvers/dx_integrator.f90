@@ -20,7 +20,7 @@ module dx_integrator
    !> (glstat's) is checked every cycle; a warning once when |ratio - 1| > warn, a stop (exit
    !> 3, failure dump) when |ratio - 1| > stop - 1. --energy-guard WARN,STOP or off.
    type :: energy_guard_t
-      logical :: on = .false.
+      logical :: on = .true.
       real(wp) :: warn = 0.1_wp        !< band half-width around 1
       real(wp) :: stop = 2.0_wp        !< blow-up threshold on the ratio
       logical :: warned = .false.

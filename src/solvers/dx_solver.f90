@@ -86,10 +86,6 @@ contains
          if (allocated(error)) then
             call integ%close(model, dom, ck, out, END_FAILED, error); return
          end if
-         if (integ%energies) call guard_check(guard, model, integ%t, error)
-         if (allocated(error)) then   ! (MPI: every rank has the summed ratio)
-            call integ%close(model, dom, ck, out, END_FAILED, error); return
-         end if
          if (integ%histories) then
             call histories(model, dom, out, opts%outdir, integ%t, integ%done, ioerr)
             if (allocated(ioerr)) then
@@ -97,6 +93,12 @@ contains
                call dom%fail(error)   ! MPI: a rank alone: stop every rank
                call integ%close(model, dom, ck, out, END_FAILED, error); return
             end if
+         end if
+         ! ---- the energy guard, after this cycle's glstat record (MPI: every rank has the
+         ! summed ratio and stops with the others)
+         if (integ%energies) call guard_check(guard, model, integ%t, error)
+         if (allocated(error)) then
+            call integ%close(model, dom, ck, out, END_FAILED, error); return
          end if
          if ((integ%t >= next_status .or. integ%done) .and. writer .and. &
              integ%t /= t_line) then   ! (a conserving run's last call only notes the end)
@@ -140,30 +142,19 @@ contains
       logical :: writer
       om => model
       writer = dom%writer()
-      associate (next_plot => model%run%next_plot, next_glstat => model%run%next_glstat, &
-                 next_nodout => model%run%next_nodout)
-         if (t >= next_plot .or. done) then
-            call dom%write_plot(model, out, error)
-            if (allocated(error)) return
-            if (model%db%d3plot_dt > 0.0_wp) then
-               next_plot = next_output_time(next_plot, model%db%d3plot_dt, t)
-            else
-               next_plot = huge_wp
-            end if
+      if (t >= model%run%next_plot .or. done) then
+         call dom%write_plot(model, out, error)
+         if (allocated(error)) return
+         if (model%db%d3plot_dt > 0.0_wp) then
+            model%run%next_plot = next_output_time(model%run%next_plot, model%db%d3plot_dt, t)
+         else
+            model%run%next_plot = huge_wp
          end if
-         if (model%db%glstat_dt > 0.0_wp .and. (t >= next_glstat .or. done)) then
-            call dom%output_model(model, om, writer)   ! MPI: gathered to rank 0
-            if (writer) call out%write_glstat(om, error)
-            if (allocated(error)) return
-            next_glstat = next_output_time(next_glstat, model%db%glstat_dt, t)
-         end if
-         if (model%db%nodout_dt > 0.0_wp .and. (t >= next_nodout .or. done)) then
-            call dom%output_model(model, om, writer)   ! MPI: gathered to rank 0
-            if (writer) call out%write_nodout(om, error)
-            if (allocated(error)) return
-            next_nodout = next_output_time(next_nodout, model%db%nodout_dt, t)
-         end if
-      end associate
+      end if
+      call history_file(1)
+      if (allocated(error)) return
+      call history_file(2)
+      if (allocated(error)) return
       if (allocated(model%rigid)) then
          if (model%rigid%rbdout_dt > 0.0_wp .and. &
              (t >= model%rigid%next_rbdout .or. done)) then
@@ -173,6 +164,28 @@ contains
                                                        model%rigid%rbdout_dt, t)
          end if
       end if
+   contains
+      !> glstat (kind 1) or nodout (2) when due (MPI: the global model gathered to rank 0)
+      subroutine history_file(kind)
+         integer, intent(in) :: kind
+         real(wp) :: interval, next
+         if (kind == 1) then
+            interval = model%db%glstat_dt; next = model%run%next_glstat
+         else
+            interval = model%db%nodout_dt; next = model%run%next_nodout
+         end if
+         if (.not. (interval > 0.0_wp .and. (t >= next .or. done))) return
+         call dom%output_model(model, om, writer)
+         if (writer .and. kind == 1) call out%write_glstat(om, error)
+         if (writer .and. kind == 2) call out%write_nodout(om, error)
+         if (allocated(error)) return
+         next = next_output_time(next, interval, t)
+         if (kind == 1) then
+            model%run%next_glstat = next
+         else
+            model%run%next_nodout = next
+         end if
+      end subroutine history_file
    end subroutine histories
 
    !> The first output time on the grid next + k*interval (k >= 1) that lies after t.
@@ -206,7 +219,7 @@ contains
             rstr(guard%warn, 4)//', stop (exit 3) outside 1 +- '//rstr(guard%stop - 1.0_wp, 4)// &
             ' (--energy-guard WARN,STOP or off)')
       else
-         call log_info('dynx: energy guard off (--energy-guard=off)')
+         call log_info('dynx: energy guard off (--energy-guard off)')
       end if
    end subroutine guard_bounds
 
@@ -237,7 +250,7 @@ contains
             ' (energy guard: the run blew up; --energy-guard WARN,STOP or off)', EXIT_NUMERIC)
       else if (.not. guard%warned .and. abs(r - 1.0_wp) > guard%warn) then
          guard%warned = .true.
-         call log_warn('dynx: energy ratio '//rstr(r, 6)//' at cycle '//str(model%cycle)// &
+         call log_warn('energy ratio '//rstr(r, 6)//' at cycle '//str(model%cycle)// &
             ', time '//rstr(t)//' left 1 +- '//rstr(guard%warn, 4)//' (energy guard; '// &
             'further departures are not reported)')
       end if
