@@ -64,10 +64,12 @@ contains
       nc = 0
       if (allocated(inp%emc%contacts)) nc = size(inp%emc%contacts)
       if (nc == 0) then
-         if (inp%emc%imflag == 1) then
-            call set_error(error, at(inp, inp%emc%imp_ifile, inp%emc%imp_line, &
-               'CONTROL_IMPLICIT_GENERAL')//'field IMFLAG: the implicit solver of dynx is '// &
-               'the conserving rigid-body contact solver and needs *DYNX_CONSERVING_CONTACT')
+         if (inp%ctrl%imp%imflag == 1) then
+            call set_error(error, at(inp, inp%ctrl%imp%ifile, inp%ctrl%imp%line, &
+               'CONTROL_IMPLICIT_GENERAL')//'field IMFLAG: IMFLAG = 1 without '// &
+               '*DYNX_CONSERVING_CONTACT asks for the implicit Newton solver, which dynx '// &
+               'does not have yet (issue 20); the implicit solver of dynx is the conserving '// &
+               'rigid-body contact solver and needs *DYNX_CONSERVING_CONTACT')
          else if (allocated(inp%emc%spheres)) then
             if (size(inp%emc%spheres) > 0) call set_error(error, at(inp, &
                inp%emc%spheres(1)%ifile, inp%emc%spheres(1)%line, 'DYNX_RIGID_SPHERE')// &
@@ -77,7 +79,7 @@ contains
       end if
       key = 'DYNX_CONSERVING_CONTACT'
       associate (c1 => inp%emc%contacts(1))
-         if (inp%emc%imflag /= 1) then
+         if (inp%ctrl%imp%imflag /= 1) then
             call set_error(error, at(inp, c1%ifile, c1%line, key)//'needs the implicit '// &
                'solver: *CONTROL_IMPLICIT_GENERAL with IMFLAG = 1 and DT0 > 0')
             return
@@ -90,11 +92,11 @@ contains
       end associate
       allocate(model%emc)
       associate (es => model%emc)
-         es%dt = inp%emc%dt0
          es%maxit = inp%emc%maxit
          es%rtol = inp%emc%rtol
-         es%rho_inf = inp%emc%rho_inf
-         es%chi = (1.0_wp - es%rho_inf)/(2.0_wp*(1.0_wp + es%rho_inf))
+         associate (rho_inf => inp%ctrl%imp%rho_inf)   ! the step DT0: model%ctrl%imp
+            es%chi = (1.0_wp - rho_inf)/(2.0_wp*(1.0_wp + rho_inf))
+         end associate
          es%nfail = inp%emc%nfail
          es%out_dt = inp%emc%out_dt
          allocate(es%defs(nc))

@@ -41,7 +41,8 @@ contains
       if (blk%n < i0) call block_error(deck, blk, 0, 'missing card 1 ('//what//')', error)
    end subroutine need_card
 
-   !> IMFLAG (0 explicit, 1 implicit: the conserving rigid-body solver), DT0 (step size).
+   !> IMFLAG (0 explicit, 1 implicit: the conserving rigid-body solver; 2, explicit then
+   !> implicit springback, refused), DT0 (step size), into model%ctrl%imp (dx_solver chooses).
    subroutine read_implicit_general(deck, blk, inp, error)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
@@ -51,23 +52,28 @@ contains
       w = std_widths(blk, 8)
       i0 = data_start(blk)
       call need_card(deck, blk, i0, 'IMFLAG DT0 ...', error); if (allocated(error)) return
-      call get_int(deck, blk, i0, 1, w, 'IMFLAG', 0, inp%emc%imflag, error)
+      call get_int(deck, blk, i0, 1, w, 'IMFLAG', 0, inp%ctrl%imp%imflag, error)
       if (allocated(error)) return
-      if (inp%emc%imflag /= 0 .and. inp%emc%imflag /= 1) then
+      if (inp%ctrl%imp%imflag == 2) then
+         call field_error(deck, blk, i0, 1, w, 'IMFLAG', 'IMFLAG = 2 (explicit, then '// &
+            'implicit springback) is not supported; 0 (explicit) and 1 (implicit: the '// &
+            'conserving rigid-body solver with *DYNX_CONSERVING_CONTACT) are', error)
+         return
+      else if (inp%ctrl%imp%imflag /= 0 .and. inp%ctrl%imp%imflag /= 1) then
          call field_error(deck, blk, i0, 1, w, 'IMFLAG', 'only 0 (explicit) and 1 '// &
             '(implicit, conserving rigid-body solver) are supported, got '// &
-            str(inp%emc%imflag), error)
+            str(inp%ctrl%imp%imflag), error)
          return
       end if
-      call get_real(deck, blk, i0, 2, w, 'DT0', 0.0_wp, inp%emc%dt0, error)
+      call get_real(deck, blk, i0, 2, w, 'DT0', 0.0_wp, inp%ctrl%imp%dt0, error)
       if (allocated(error)) return
-      if (inp%emc%imflag == 1 .and. .not. (inp%emc%dt0 > 0.0_wp)) then
+      if (inp%ctrl%imp%imflag == 1 .and. .not. (inp%ctrl%imp%dt0 > 0.0_wp)) then
          call field_error(deck, blk, i0, 2, w, 'DT0', 'the implicit step size must be > 0', &
                           error)
          return
       end if
-      inp%emc%imp_ifile = blk%ifile
-      inp%emc%imp_line = blk%cards(i0)%line
+      inp%ctrl%imp%ifile = blk%ifile
+      inp%ctrl%imp%line = blk%cards(i0)%line
    end subroutine read_implicit_general
 
    !> IMASS GAMMA BETA TDYBIR TDYDTH TDYBUR IRATE ALPHA, with their LS-DYNA meaning: the
@@ -125,7 +131,7 @@ contains
          end if
          gamma = 0.5_wp - alpha
          beta = 0.25_wp*(1.0_wp - alpha)**2
-         inp%emc%rho_inf = (1.0_wp + alpha)/(1.0_wp - alpha)
+         inp%ctrl%imp%rho_inf = (1.0_wp + alpha)/(1.0_wp - alpha)
       else
          if (gamma == 0.0_wp) gamma = 0.5_wp
          if (beta == 0.0_wp) beta = 0.25_wp
@@ -141,25 +147,25 @@ contains
                rstr(beta), error); return
          end if
          if (gamma == 0.5_wp .and. beta == 0.25_wp) then
-            inp%emc%rho_inf = 1.0_wp
+            inp%ctrl%imp%rho_inf = 1.0_wp
          else
             ! roots of beta l^2 + b l + c = 0, the Newmark amplification at omega dt -> inf
             b = 0.5_wp + gamma - 2.0_wp*beta
             c = 0.5_wp - gamma + beta
             disc = b*b - 4.0_wp*beta*c
             if (disc < 0.0_wp) then
-               inp%emc%rho_inf = sqrt(c/beta)
+               inp%ctrl%imp%rho_inf = sqrt(c/beta)
             else
                r1 = (-b + sqrt(disc))/(2.0_wp*beta)
                r2 = (-b - sqrt(disc))/(2.0_wp*beta)
-               inp%emc%rho_inf = max(abs(r1), abs(r2))
+               inp%ctrl%imp%rho_inf = max(abs(r1), abs(r2))
             end if
-            inp%emc%rho_inf = min(inp%emc%rho_inf, 1.0_wp)
+            inp%ctrl%imp%rho_inf = min(inp%ctrl%imp%rho_inf, 1.0_wp)
          end if
       end if
-      inp%emc%gamma = gamma
-      inp%emc%beta = beta
-      inp%emc%alpha = alpha
+      inp%ctrl%imp%gamma = gamma
+      inp%ctrl%imp%beta = beta
+      inp%ctrl%imp%alpha = alpha
    end subroutine read_implicit_dynamics
 
    !> CID SPID MPID FORM EPS: a conserving contact between two rigid parts.

@@ -11,7 +11,7 @@ module dx_cli
    use dx_io_sys, only: sys_epoch_seconds
    use dx_timer, only: wall_time
    use dx_signals, only: SIGTERM_NUM, SIGINT_NUM, SIGUSR1_NUM
-   use dx_explicit, only: run_options_t
+   use dx_integrator, only: run_options_t, energy_guard_t
    use dx_par, only: par_init, par_finalize, par_rank, par_size, par_abort, par_barrier, &
                      par_active
    use dx_par_agree, only: par_agreed
@@ -84,12 +84,20 @@ contains
                              cli%raise_rank)
          case ('--ignore-unknown')
             cli%ignore_unknown = .true.
+         case ('--energy-guard')
+            i = i + 1; val = get_arg(i)
+            call parse_guard(val, cli%opts%guard)
          case ('--contact-split')
             i = i + 1; val = get_arg(i)
             if (val /= 'owner' .and. val /= 'strips') &
                call die_usage('--contact-split needs owner or strips, not '//val)
             cli%csplit = val
          case default
+            if (len(arg) > 15) then
+               if (arg(1:15) == '--energy-guard=') then
+                  call parse_guard(arg(16:), cli%opts%guard); cycle
+               end if
+            end if
             if (len(arg) > 2) then
                if (arg(1:2) == 'i=' .or. arg(1:2) == 'I=') then
                   cli%deck = arg(3:); cycle
@@ -142,6 +150,11 @@ contains
          '                       dynx itself at cycle N (tests of the signal path); MPI:', &
          '                       @R only on rank R (default every rank)', &
          '  --ignore-unknown     unknown keywords are warnings, not errors', &
+         '  --energy-guard W,S   dynx''s energy guard (not ENDENG): the energy ratio', &
+         '                       (glstat) is checked every cycle; a warning once when it', &
+         '                       leaves 1 +- W, a stop (exit 3, failure dump) when it', &
+         '                       leaves 1 +- (S - 1) (a blow-up); default 0.1,2; off: no', &
+         '                       checks (docs/errors.md, "Energy guard")', &
          '  --contact-split M    MPI runs with automatic contact: which rank computes a slave', &
          '                       node: owner (default; the rank owning it) or strips (1-D', &
          '                       strips of equal node count along the longest axis, rebuilt', &
@@ -174,6 +187,28 @@ contains
       if (walltime <= 0.0_wp .or. left < walltime) walltime = left
       call log_info('dynx: SLURM_JOB_END_TIME leaves '//rstr(left, 6)//' s')
    end subroutine slurm_limit
+
+   !> --energy-guard WARN,STOP or off (docs/errors.md, "Energy guard")
+   subroutine parse_guard(v, guard)
+      character(*), intent(in) :: v
+      type(energy_guard_t), intent(inout) :: guard
+      integer :: k, ios1, ios2
+      if (v == 'off') then
+         guard%on = .false.; return
+      end if
+      k = index(v, ',')
+      ios1 = 1; ios2 = 1
+      if (k > 1) then
+         read(v(1:k - 1), *, iostat=ios1) guard%warn
+         read(v(k + 1:), *, iostat=ios2) guard%stop
+      end if
+      if (ios1 /= 0 .or. ios2 /= 0) then
+         call die_usage('--energy-guard needs WARN,STOP (e.g. 0.1,2) or off, not '//v)
+      else if (.not. (guard%warn > 0.0_wp) .or. .not. (guard%stop > 1.0_wp + guard%warn)) then
+         call die_usage('--energy-guard WARN,STOP needs WARN > 0 and STOP > 1 + WARN, not '//v)
+      end if
+      guard%on = .true.
+   end subroutine parse_guard
 
    !> --raise-at-cycle N[:SIG][@R]
    subroutine parse_raise(vv, n, sig, rank)

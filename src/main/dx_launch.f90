@@ -9,8 +9,8 @@ module dx_launch
    use dx_log, only: log_info, log_summary, log_set_quiet
    use dx_model, only: model_t
    use dx_output, only: output_t
-   use dx_explicit, only: run_explicit
-   use dx_emc_solver, only: run_emc
+   use dx_integrator, only: integrator_t
+   use dx_solver, only: make_integrator, integrator_choice, run_driver
    use dx_par_restart, only: par_restart_precheck
    use dx_restart_deck, only: apply_restart_deck
    use dx_signals, only: signals_install
@@ -43,10 +43,13 @@ contains
       type(cli_t), intent(in) :: cli
       type(model_t), intent(inout) :: model
       type(error_t), allocatable :: error
+      character(:), allocatable :: name, why
       call log_info('dynx: read '//cli%deck//': '//str(model%nn)//' nodes, '// &
          str(model%ne)//' elements, '//str(size(model%parts))//' parts, '// &
          str(size(model%blocks))//' element blocks, end time '//rstr(model%ctrl%endtim))
       if (.not. cli%check_only) return
+      call integrator_choice(model, name, why)
+      call log_info('dynx: integrator: '//name//' ('//why//')')
       if (len(cli%rdeck) > 0) then
          call apply_restart_deck(cli%rdeck, model, error)
          if (allocated(error)) call die(error)
@@ -109,20 +112,18 @@ contains
       if (allocated(error)) call die(error, dom)
    end subroutine launch_output
 
-   !> The integrator the deck asks for (the conserving rigid-body solver with
-   !> *DYNX_CONSERVING_CONTACT, else explicit), then the end: exit 5 after a checkpoint stop,
-   !> the error's code after a failure, else where the results are.
+   !> The integrator the deck asks for (dx_solver's factory) run by the one driver, then the
+   !> end: exit 5 after a checkpoint stop, the error's code after a failure, else where the
+   !> results are.
    subroutine launch_run(cli, model, dom, out)
       type(cli_t), intent(inout) :: cli
       type(model_t), intent(inout), target :: model
       class(domain_t), intent(inout) :: dom
       type(output_t), intent(inout) :: out
       type(error_t), allocatable :: error
-      if (allocated(model%emc)) then
-         call run_emc(model, dom, cli%opts%ck, out, error)
-      else
-         call run_explicit(model, dom, cli%opts, out, error)
-      end if
+      class(integrator_t), allocatable :: integ
+      call make_integrator(model, integ)
+      call run_driver(integ, model, dom, cli%opts, out, error)
       call log_summary()
       if (allocated(error)) then
          if (error%code == EXIT_CHECKPOINT) then

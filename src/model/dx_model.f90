@@ -136,7 +136,21 @@ module dx_model
       real(wp) :: force(3) = 0.0_wp        !< resultant force on the wall, last cycle
    end type rigidwall_t
 
-   !> *CONTROL_TERMINATION, *CONTROL_TIMESTEP, *CONTROL_HOURGLASS, *CONTROL_BULK_VISCOSITY
+   !> *CONTROL_IMPLICIT_GENERAL and *CONTROL_IMPLICIT_DYNAMICS, with their LS-DYNA meaning:
+   !> IMFLAG (0 explicit, 1 implicit, 2 explicit then implicit springback), DT0 (the implicit
+   !> step), the Newmark GAMMA, BETA and the HHT ALPHA (Hilber, Hughes & Taylor 1977,
+   !> Earthq. Eng. Struct. Dyn. 5:283-292; LS-DYNA's sign, -1/3 <= ALPHA <= 0) and the
+   !> high-frequency spectral radius rho_inf they ask for (1: no numerical damping).
+   !> ifile, line: where IMFLAG was read (messages; line 0: no *CONTROL_IMPLICIT_GENERAL).
+   type :: implicit_ctrl_t
+      integer :: imflag = 0
+      real(wp) :: dt0 = 0.0_wp
+      real(wp) :: gamma = 0.5_wp, beta = 0.25_wp, alpha = 0.0_wp, rho_inf = 1.0_wp
+      integer :: ifile = 0, line = 0
+   end type implicit_ctrl_t
+
+   !> *CONTROL_TERMINATION, *CONTROL_TIMESTEP, *CONTROL_HOURGLASS, *CONTROL_BULK_VISCOSITY,
+   !> *CONTROL_IMPLICIT_GENERAL/_DYNAMICS (imp)
    type :: control_t
       real(wp) :: endtim = 0.0_wp
       integer :: endcyc = 0
@@ -154,6 +168,7 @@ module dx_model
       real(wp) :: q1 = 1.5_wp, q2 = 0.06_wp
       integer :: ibq = 1
       integer :: esort = 0              !< *CONTROL_SOLID ESORT: >= 1 sorts degenerate tetrahedra
+      type(implicit_ctrl_t) :: imp      !< the implicit controls (integrator choice, dx_solver)
    end type control_t
 
    !> output requests

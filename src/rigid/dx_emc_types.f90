@@ -34,16 +34,10 @@ module dx_emc_types
    type :: emc_input_t
       type(emc_contact_in_t), allocatable :: contacts(:)
       type(emc_sphere_in_t), allocatable :: spheres(:)
-      integer :: imflag = 0
-      real(wp) :: dt0 = 0.0_wp
-      integer :: imp_ifile = 0, imp_line = 0
       integer :: maxit = 20            !< Newton iterations per attempt
       real(wp) :: rtol = 1.0e-16_wp    !< residual tolerance relative to the momentum scale
       integer :: nfail = 0             !< 0: stop at a Newton failure; > 0: step cuts allowed
       real(wp) :: out_dt = 0.0_wp      !< emcstat interval (0: every step)
-      !> *CONTROL_IMPLICIT_DYNAMICS as read, and the high-frequency spectral radius they
-      !> ask for (1: the conserving midpoint rule)
-      real(wp) :: gamma = 0.5_wp, beta = 0.25_wp, alpha = 0.0_wp, rho_inf = 1.0_wp
    end type emc_input_t
 
    !> a planar facet of a rigid body, in the body (principal) frame: centroid, unit normal
@@ -105,12 +99,12 @@ module dx_emc_types
       integer, allocatable :: sn_node(:)                !< model node of each surface node
       type(emc_sphere_t), allocatable :: sphere(:)      !< (nb) r = 0: not spherical
       real(wp), allocatable :: w(:, :)                  !< (3, nb) body-frame angular velocity
-      real(wp) :: dt = 0.0_wp
       integer :: maxit = 20, nfail = 0
       real(wp) :: rtol = 1.0e-16_wp, out_dt = 0.0_wp
       !> algorithmic dissipation of the penalty pairs (dx_emc_contact): chi =
-      !> (1 - rho_inf)/(2 (1 + rho_inf)), 0 for the conserving midpoint rule
-      real(wp) :: rho_inf = 1.0_wp, chi = 0.0_wp
+      !> (1 - rho_inf)/(2 (1 + rho_inf)), 0 for the conserving midpoint rule (rho_inf and
+      !> the step DT0: model%ctrl%imp)
+      real(wp) :: chi = 0.0_wp
       real(wp) :: upen = 0.0_wp                         !< stored penalty energy at t(n)
       integer :: newton_total = 0, newton_max = 0, npairs = 0, ncuts = 0
       real(wp) :: resid_max = 0.0_wp

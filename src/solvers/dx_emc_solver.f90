@@ -15,33 +15,25 @@
 !> velocity update (v1 = v0 + dt F/m, W1 = J^-1 (cay^T J W0 + dt R1^T T)).
 !> *CONTROL_IMPLICIT_DYNAMICS damping: the contact's dissipative discrete gradient
 !> (dx_emc_contact; Armero & Romero 2001, CMAME 190:2603-2649); the energy it takes is
-!> booked (ediss) so that KE + U + ediss = E0. Restart dumps and stops: one checkpoint_stage
-!> per step (dx_checkpoint), the state in model%emc%snap (dx_emc_restart).
+!> booked (ediss) so that KE + U + ediss = E0. The run (emcstat, plot states, the snapshot
+!> for restart dumps): conserving_t in dx_emc_run, stepped by the run driver (dx_solver).
 module dx_emc_solver
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use dx_kinds, only: wp
-   use dx_error, only: error_t, set_error, EXIT_NUMERIC, EXIT_IO
-   use dx_strings, only: str, rstr
-   use dx_log, only: log_info
-   use dx_timer, only: wall_time
+   use dx_strings, only: str
    use dx_model, only: model_t
-   use dx_output, only: output_t
    use dx_dense_solve, only: dense_solve
    use dx_emc_types, only: emc_system_t, EMC_LAGRANGE
    use dx_emc_contact, only: emc_kin_t, emc_pair_t, emc_select_pairs, emc_contact_forces, &
-                             emc_inv3, emc_same_plane, emc_pairs_pack, emc_pairs_unpack, &
-                             emc_split_t
+                             emc_inv3, emc_same_plane, emc_split_t, emc_pairs_pack, &
+                             emc_pairs_unpack
    use dx_emc_types, only: EMC_PAIR_NI, EMC_PAIR_NR
-   use dx_checkpoint, only: checkpoint_t, checkpoint_stage
-   use dx_domain, only: domain_t
-   use dx_signals, only: signal_stop_requested, signal_dump_pending
-   use dx_append_file, only: append_from
-   use dx_par_emc, only: par_emc_on, par_emc_writer, par_emc_set_together, par_emc_report
-   use dx_checkpoint, only: checkpoint_requests
    implicit none
    private
-   public :: run_emc, emc_state_t, emc_init_state, emc_try_step, emc_energy, emc_momenta, &
-             cayley, newton_report_t
+   public :: emc_state_t, emc_init_state, emc_try_step, emc_step, emc_energy, emc_momenta, &
+             emc_to_model, cayley, newton_report_t
+   ! (for dx_emc_run's snapshot of the active pairs)
+   public :: emc_pairs_pack, emc_pairs_unpack, EMC_PAIR_NI, EMC_PAIR_NR
 
    !> compliance of a Lagrange constraint row (residual units: momentum per impulse)
    real(wp), parameter :: LAG_COMPLIANCE = 1.0e-12_wp
@@ -530,7 +522,7 @@ contains
    end subroutine emc_step
 
    !> Copy the state into the model's rigid bodies and nodes (x, v).
-   subroutine to_model(st, model)
+   subroutine emc_to_model(st, model)
       type(emc_state_t), intent(in) :: st
       type(model_t), intent(inout) :: model
       integer :: b, i, nd
@@ -548,222 +540,5 @@ contains
             end do
          end associate
       end do
-   end subroutine to_model
-
-   !> Whether this step boundary may write a restart dump or stop (checkpoint_stage): only
-   !> then are the model's nodes and the snapshot brought up to date.
-   logical function checkpoint_due(ck, model, cyc) result(due)
-      type(checkpoint_t), intent(in) :: ck
-      type(model_t), intent(in) :: model
-      integer, intent(in) :: cyc
-      due = ck%walltime > 0.0_wp .or. ck%raise_cycle == cyc .or. &
-            signal_stop_requested() /= 0 .or. signal_dump_pending() .or. any(ck%coll /= 0)
-      if (model%rst%d3dump_cycl > 0) due = due .or. mod(cyc, model%rst%d3dump_cycl) == 0
-      if (model%rst%runrsf_cycl > 0) due = due .or. mod(cyc, model%rst%runrsf_cycl) == 0
-   end function checkpoint_due
-
-   !> Run the conserving solver to ENDTIM (or ENDCYC) with the step DT0, or continue it from
-   !> the snapshot a restart dump restored (model%emc%snap%valid). Restart dumps, signals
-   !> and the wall-clock limit as in the explicit loop (dx_checkpoint, called once per step).
-   subroutine run_emc(model, dom, ck, out, error)
-      type(model_t), intent(inout) :: model
-      class(domain_t), intent(inout) :: dom    !< serial (replicated under MPI: rank 0 writes)
-      type(checkpoint_t), intent(inout) :: ck
-      type(output_t), intent(inout) :: out
-      type(error_t), allocatable, intent(out) :: error
-      type(emc_state_t) :: st
-      type(newton_report_t) :: rep
-      type(error_t), allocatable :: ioerr
-      real(wp) :: t, tend, dt, h, ke, e0, p0(3), l0(3), p(3), lt(3), ps, ls, ps0, ls0, &
-                  de, dp, dl, next_out, next_plot, t0wall
-      real(wp), allocatable :: lb(:, :)
-      integer :: u, ios, cyc, b, ncut, itmax, ittot
-      logical :: ok, stopped, wr
-      character(256) :: iomsg
-      character(:), allocatable :: outdir
-      t0wall = wall_time()
-      if (ck%wall0 <= 0.0_wp) ck%wall0 = t0wall
-      outdir = ck%outdir
-      wr = par_emc_writer(dom%emc)              ! MPI: rank 0 writes emcstat and the plot states
-      ck%replicated = par_emc_on(dom%emc)       ! MPI: stop/dump requests reduced over the ranks
-      u = -1
-      associate (es => model%emc)
-         call emc_init_state(model, st)
-         allocate(lb(3, st%nb))
-         tend = model%ctrl%endtim
-         dt = es%dt
-         if (es%snap%valid) then
-            call from_snapshot()
-            if (wr) call append_from(outdir//'/emcstat', es%snap%emcstat_bytes, u, error)
-            if (allocated(error)) return
-            call emc_momenta(st, p, lb, lt, ps, ls)
-            call log_info('emc: continuing at step '//str(cyc)//', time '//rstr(t))
-         else
-            if (wr) then
-               open(newunit=u, file=outdir//'/emcstat', status='replace', action='write', &
-                    iostat=ios, iomsg=iomsg)
-               if (ios /= 0) then
-                  call set_error(error, outdir//'/emcstat: cannot open: '//trim(iomsg), EXIT_IO)
-                  return
-               end if
-               write(u, '(a)') '# dynx emcstat: energy-momentum conserving rigid-body contact '// &
-                  '(docs/conserving-contact.md)'
-               write(u, '(a,i0,a,es24.16e3)') '# bodies ', st%nb, ' dt ', dt
-               write(u, '(a)') '# cycle time ke upen etot px py pz lx ly lz iters resid npair '// &
-                  '[per body: xc yc zc lx ly lz (about the origin)]'
-            end if
-            t = 0.0_wp
-            ke = emc_energy(st)
-            e0 = ke + st%upen
-            call emc_momenta(st, p0, lb, l0, ps0, ls0)
-            cyc = 0
-            p = p0; lt = l0
-            rep%iters = 0; rep%resid = 0.0_wp; rep%npair = 0
-            call write_line()
-            next_out = es%out_dt
-            next_plot = model%db%d3plot_dt
-            de = 0.0_wp; dp = 0.0_wp; dl = 0.0_wp
-            itmax = 0; ittot = 0; ncut = 0
-         end if
-         es%snap%unit = u
-         es%snap%unit_open = wr
-         call log_info('emc: conserving rigid-body solver, '//str(st%nb)//' bodies, dt '// &
-                       rstr(dt)//', end time '//rstr(tend))
-         do while (t < tend*(1.0_wp - 1.0e-12_wp))
-            if (model%ctrl%endcyc > 0 .and. cyc >= model%ctrl%endcyc) exit
-            h = min(dt, tend - t)
-            call emc_step(es, st, h, 0, rep, ok, ncut, dom%emc)
-            if (.not. ok) then
-               call set_error(error, 'emc: step '//str(cyc + 1)//' at time '//rstr(t)// &
-                  ' (dt '//rstr(h)//'): '//rep%msg//'; scaled residual '//rstr(rep%resid)// &
-                  ' after '//str(rep%iters)//' iterations (tolerance '//rstr(es%rtol)// &
-                  '; *DYNX_CONSERVING_CONTROL MAXIT, NFAIL); last converged state written', &
-                  EXIT_NUMERIC)
-               call par_emc_set_together(dom%emc)     ! every rank failed at this step (same data)
-               exit
-            end if
-            cyc = cyc + 1
-            t = t + h
-            itmax = max(itmax, rep%iters); ittot = ittot + rep%iters
-            ke = emc_energy(st)
-            call emc_momenta(st, p, lb, lt, ps, ls)
-            de = max(de, abs(ke + st%upen + st%ediss - e0)/max(e0, tiny(1.0_wp)))
-            dp = max(dp, norm2(p - p0)/max(ps0, tiny(1.0_wp)))
-            dl = max(dl, norm2(lt - l0)/max(ls0, ps0*1.0_wp, tiny(1.0_wp)))   ! floor: |p| x 1 m
-            if (t >= next_out*(1.0_wp - 1.0e-9_wp) .or. t >= tend*(1.0_wp - 1.0e-12_wp)) then
-               call write_line()
-               next_out = next_out + es%out_dt
-            end if
-            if (next_plot > 0.0_wp .and. t >= next_plot*(1.0_wp - 1.0e-9_wp)) then
-               next_plot = next_plot + model%db%d3plot_dt
-               call plot()
-               if (allocated(ioerr)) exit
-            end if
-            ! ---- restart dumps and stop requests, at this step boundary
-            model%time = t
-            model%cycle = cyc
-            call checkpoint_requests(ck, model)    ! MPI: every rank's requests, reduced
-            if (checkpoint_due(ck, model, cyc)) then
-               call to_model(st, model)
-               call to_snapshot()
-            end if
-            call checkpoint_stage(ck, dom, model, out, stopped, error)
-            if (stopped) then
-               if (wr) close(u)
-               es%snap%unit_open = .false.
-               return
-            end if
-         end do
-         if (wr) close(u)
-         es%snap%unit_open = .false.
-         call plot()
-         call log_info('emc: '//str(cyc)//' steps to time '//rstr(t)//', Newton iterations '// &
-            str(ittot)//' (max '//str(itmax)//' per step), step cuts '//str(ncut)// &
-            ', last scaled residual '//rstr(rep%resid))
-         if (es%chi > 0.0_wp) call log_info('emc: algorithmic dissipation (rho_inf '// &
-            rstr(es%rho_inf)//', chi '//rstr(es%chi)//'): '//rstr(st%ediss)// &
-            ' taken over the run, '//rstr(st%ediss/max(e0, tiny(1.0_wp)))//' of E0')
-         call log_info('emc: max relative drift over the run: energy '//rstr(de)// &
-            ', linear momentum '//rstr(dp)//', angular momentum '//rstr(dl))
-         call log_info('emc: wall time '//rstr(wall_time() - t0wall, 4)//' s')
-         call par_emc_report(dom%emc, cyc)
-         call energy_bits_line()
-      end associate
-      if (allocated(ioerr) .and. .not. allocated(error)) call move_alloc(ioerr, error)
-      if (wr) call out%close(ioerr)
-      if (allocated(ioerr) .and. .not. allocated(error)) call move_alloc(ioerr, error)
-   contains
-      !> DYNX_ENERGY_BITS=1: the final energies and momenta as IEEE-754 bit patterns (the
-      !> serial and MPI runs compared bitwise, scripts/mpi_bitwise_check.sh)
-      subroutine energy_bits_line()
-         character(8) :: env
-         character(17) :: hx
-         character(:), allocatable :: line
-         real(wp) :: v(9)
-         integer :: j, l, stat
-         call get_environment_variable('DYNX_ENERGY_BITS', env, length=l, status=stat)
-         if (stat /= 0 .or. l == 0) return
-         if (env(1:1) == '0') return
-         v = [ke, st%upen, st%ediss, p, lt]
-         line = 'dynx: energy bits (KE UPEN EDISS PX PY PZ LX LY LZ):'
-         do j = 1, size(v)
-            write(hx, '(1x,z16.16)') transfer(v(j), 0_8)
-            line = line//hx
-         end do
-         call log_info(line)
-      end subroutine energy_bits_line
-      subroutine write_line()
-         if (.not. wr) return
-         write(u, '(i10,4es25.16e3,6es25.16e3,i6,es10.2e3,i6)', advance='no') cyc, t, ke, &
-            st%upen, ke + st%upen, p, lt, rep%iters, rep%resid, rep%npair
-         do b = 1, st%nb
-            write(u, '(6es25.16e3)', advance='no') st%xc(:, b), lb(:, b)
-         end do
-         write(u, '(a)') ''
-      end subroutine write_line
-      subroutine plot()
-         call to_model(st, model)
-         model%time = t
-         model%cycle = cyc
-         if (wr) call out%write_plot(model, ioerr)
-      end subroutine plot
-      !> the state and loop variables into model%emc%snap (written by a dump)
-      subroutine to_snapshot()
-         associate (sn => model%emc%snap)
-            sn%xc = st%xc; sn%xcl = st%xcl; sn%v = st%v; sn%r = st%r; sn%w = st%w
-            sn%upen = st%upen
-            sn%ediss = st%ediss
-            if (allocated(st%act)) then
-               call emc_pairs_pack(st%act, sn%act_i, sn%act_r)
-            else
-               if (allocated(sn%act_i)) deallocate(sn%act_i, sn%act_r)
-               allocate(sn%act_i(EMC_PAIR_NI, 0), sn%act_r(EMC_PAIR_NR, 0))
-            end if
-            sn%t = t; sn%next_out = next_out; sn%next_plot = next_plot
-            sn%e0 = e0; sn%p0 = p0; sn%l0 = l0; sn%ps0 = ps0; sn%ls0 = ls0
-            sn%de = de; sn%dp = dp; sn%dl = dl; sn%resid = rep%resid
-            sn%cyc = cyc; sn%itmax = itmax; sn%ittot = ittot; sn%ncut = ncut
-            sn%iters = rep%iters; sn%npair = rep%npair
-         end associate
-      end subroutine to_snapshot
-      !> the state and loop variables from a restored snapshot
-      subroutine from_snapshot()
-         associate (sn => model%emc%snap)
-            st%xc = sn%xc; st%xcl = sn%xcl; st%v = sn%v; st%r = sn%r; st%w = sn%w
-            st%upen = sn%upen
-            st%ediss = sn%ediss
-            if (size(sn%act_i, 2) > 0) then
-               call emc_pairs_unpack(sn%act_i, sn%act_r, st%act)
-            else if (allocated(st%act)) then
-               deallocate(st%act)
-            end if
-            t = sn%t; next_out = sn%next_out; next_plot = sn%next_plot
-            e0 = sn%e0; p0 = sn%p0; l0 = sn%l0; ps0 = sn%ps0; ls0 = sn%ls0
-            de = sn%de; dp = sn%dp; dl = sn%dl
-            cyc = sn%cyc; itmax = sn%itmax; ittot = sn%ittot; ncut = sn%ncut
-            rep%iters = sn%iters; rep%resid = sn%resid; rep%npair = sn%npair
-            ke = emc_energy(st)
-         end associate
-      end subroutine from_snapshot
-   end subroutine run_emc
+   end subroutine emc_to_model
 end module dx_emc_solver

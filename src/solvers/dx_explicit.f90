@@ -16,7 +16,7 @@ module dx_explicit
    use dx_kinds, only: wp, huge_wp
    use dx_error, only: error_t, set_error, EXIT_NUMERIC
    use dx_strings, only: str, rstr
-   use dx_log, only: log_info, log_flush
+   use dx_log, only: log_info
    use dx_timer, only: wall_time, peak_memory_kb
    use dx_model, only: model_t, elem_block_t
    use dx_run_state, only: run_state_t
@@ -25,20 +25,28 @@ module dx_explicit
    use dx_loads, only: add_external_loads
    use dx_constraints, only: apply_spc, apply_prescribed
    use dx_output, only: output_t
-   use dx_checkpoint, only: checkpoint_t, checkpoint_stage, checkpoint_failure_dump, &
-                            checkpoint_energy_band
-   use dx_rigid_solver, only: rigid_write_rbdout, rigid_close
+   use dx_checkpoint, only: checkpoint_t, checkpoint_failure_dump, checkpoint_energy_band
+   use dx_rigid_solver, only: rigid_close, rigid_write_rbdout
    use dx_energy_sums, only: initial_kinetic, kinetic_energy, constrained_nodes, energy_bits
    use dx_domain, only: domain_t
+   use dx_integrator, only: integrator_t, run_options_t, END_FAILED, END_STOPPED
    implicit none
    private
-   public :: run_options_t, init_state, run_explicit
+   public :: explicit_t, init_state, elem_label, explicit_rbdout
 
-   type :: run_options_t
+   !> The explicit integrator: its work arrays for one cycle (the loop state is model%run).
+   type, extends(integrator_t) :: explicit_t
+      real(wp), allocatable :: vold(:, :), fext(:, :), vfree(:, :)
+      integer, allocatable :: cnodes(:)
+      logical :: loads = .false.
+      real(wp) :: t0wall = 0.0_wp
       character(:), allocatable :: outdir
-      integer :: nstatus = 10          !< status lines over the run
-      type(checkpoint_t) :: ck         !< restart dumps, signals, wall-clock limit
-   end type run_options_t
+   contains
+      procedure :: start => x_start
+      procedure :: step => x_step
+      procedure :: advance => x_advance
+      procedure :: close => x_close
+   end type explicit_t
 
 contains
 
@@ -75,39 +83,29 @@ contains
       if (present(dom)) call dom%sum_mass(model)   ! MPI: shared nodes' mass summed
    end subroutine init_state
 
-   !> Run the explicit time loop to ENDTIM/ENDCYC, writing output as the deck asks.
+   !> The explicit integrator's start: the nodal state (unless a restart restored it), the
+   !> loop state model%run (or the restored one), the work arrays of the cycle.
    !> Everything the loop carries from one cycle to the next is in model (x, v, time,
    !> cycle, element blocks, walls) and model%run (dt_old, work sums, next output times),
    !> so a restart dump restored into model (model%run%started) continues the run exactly.
-   subroutine run_explicit(model, dom, opts, out, error)
+   subroutine x_start(self, model, dom, opts, ck, out, error)
+      class(explicit_t), intent(inout) :: self
       type(model_t), intent(inout), target :: model
       class(domain_t), intent(inout) :: dom
       type(run_options_t), intent(in) :: opts
+      type(checkpoint_t), intent(inout) :: ck
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
-      real(wp), allocatable :: vold(:, :), fext(:, :), vfree(:, :)
-      integer, allocatable :: cnodes(:)
-      real(wp) :: dt, dtavg, dtcrit, t, t0wall, ke, tend, wrig
-      integer :: b, i, ibmin, iemin
-      logical :: loads, done, stopped, need
-      type(block_result_t) :: res
-      type(error_t), allocatable :: ioerr
-      type(checkpoint_t) :: ck
-      type(model_t), pointer :: om          ! the model output is written from
-      logical :: writer
-
       if (.not. allocated(model%x)) call init_state(model, dom)
-      om => model
-      writer = dom%writer()
-      ck = opts%ck
-      allocate(vold(3, model%nn))
-      loads = dom%has_loads(model)      ! the deck's loads, whatever this rank holds
-      if (loads) allocate(fext(3, model%nn))
-      call constrained_nodes(model, cnodes)
-      allocate(vfree(3, size(cnodes)))
-      call dom%mass_share(model, cnodes)  ! one-element-wide blocks get the element dt bound
-      tend = model%ctrl%endtim
-      if (tend <= 0.0_wp) tend = huge_wp
+      self%outdir = opts%outdir
+      allocate(self%vold(3, model%nn))
+      self%loads = dom%has_loads(model)      ! the deck's loads, whatever this rank holds
+      if (self%loads) allocate(self%fext(3, model%nn))
+      call constrained_nodes(model, self%cnodes)
+      allocate(self%vfree(3, size(self%cnodes)))
+      call dom%mass_share(model, self%cnodes)  ! one-element-wide blocks get the element dt bound
+      self%tend = model%ctrl%endtim
+      if (self%tend <= 0.0_wp) self%tend = huge_wp
       if (.not. model%run%started) then
          model%run = run_state_t()
          model%run%started = .true.
@@ -119,16 +117,30 @@ contains
          call log_info('dynx: continuing from cycle '//str(model%cycle)//', time '// &
                        rstr(model%time))
       end if
-      t0wall = wall_time()
-      if (ck%wall0 <= 0.0_wp) ck%wall0 = t0wall   ! main sets it at process start
-      call log_info('      cycle        time          dt  dt-element   wall [s]   left [s]')
-      done = .false.
+      self%t0wall = wall_time()
+      if (ck%wall0 <= 0.0_wp) ck%wall0 = self%t0wall   ! main sets it at process start
+   end subroutine x_start
+
+   !> One cycle of the explicit loop up to the state at t(n): forces, the step, v(n+1/2),
+   !> constraints, work sums and the energies (the positions: x_advance).
+   subroutine x_step(self, model, dom, ck, out, error)
+      class(explicit_t), intent(inout) :: self
+      type(model_t), intent(inout), target :: model
+      class(domain_t), intent(inout) :: dom
+      type(checkpoint_t), intent(inout) :: ck
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: dt, dtavg, dtcrit, t, ke, wrig, tend
+      integer :: b, i, ibmin, iemin
+      logical :: done, need
+      type(block_result_t) :: res
+      type(error_t), allocatable :: ioerr
+      tend = self%tend
       associate (dt_old => model%run%dt_old, dt_first => model%run%dt_first, &
                  tsmin => model%run%tsmin, wext => model%run%wext, wrw => model%run%wrw, &
-                 wcon => model%run%wcon, next_plot => model%run%next_plot, &
-                 next_glstat => model%run%next_glstat, next_nodout => model%run%next_nodout, &
-                 next_status => model%run%next_status)
-      do
+                 wcon => model%run%wcon, next_glstat => model%run%next_glstat, &
+                 vold => self%vold, fext => self%fext, vfree => self%vfree, &
+                 cnodes => self%cnodes, loads => self%loads)
          t = model%time
          ! ---- internal forces (element pass) and the critical step
          call dom%fill(model)   ! shared nodes' x, v into their slots
@@ -143,10 +155,7 @@ contains
                if (res%ibad /= 0) then
                   call element_failure(model, b, res, error)
                   call dom%defer(error)   ! MPI: every rank learns it at the dt reduction
-                  if (allocated(error)) then
-                     call finish(model, dom, out, ck, error)
-                     return
-                  end if
+                  if (allocated(error)) return
                   exit
                end if
                if (res%dt < dtcrit) then
@@ -158,9 +167,7 @@ contains
          ! global min (serial tie rule); MPI: the ranks' stop/dump requests ride in it, and
          ! a failure on any rank stops all
          call dom%reduce_dt(model, dtcrit, ibmin, ck, error)
-         if (allocated(error)) then
-            call finish(model, dom, out, ck, error); return
-         end if
+         if (allocated(error)) return
          ! ---- contact forces (only when the deck has *CONTACT)
          if (allocated(model%contact)) call dom%contact_forces(model, dt_old, dtcrit)
          ! ---- external forces
@@ -184,7 +191,6 @@ contains
             call set_error(error, 'time step '//rstr(dt)//' at cycle '//str(model%cycle)// &
                ', time '//rstr(t)//' is below the floor '//rstr(tsmin)//' (DTMIN*first step '// &
                rstr(dt_first)//'); controlling element '//str(elem_label(model)), EXIT_NUMERIC)
-            call finish(model, dom, out, ck, error)
             return
          end if
          dtavg = 0.5_wp*(dt_old + dt)
@@ -209,9 +215,9 @@ contains
          call dom%constraints(model, cnodes, vfree, vold, dt, dtavg, wcon, wrw, need)
          if (loads) call dom%load_work(fext, vold, model%v, dtavg, wext, need)
          if (allocated(model%contact)) then
-            call dom%contact_work(model, vold, dtavg, opts%outdir, ioerr)
+            call dom%contact_work(model, vold, dtavg, self%outdir, ioerr)
             if (allocated(ioerr)) then
-               call move_alloc(ioerr, error); call finish(model, dom, out, ck, error); return
+               call move_alloc(ioerr, error); return
             end if
          end if
          ! ---- energies at t(n)
@@ -224,128 +230,77 @@ contains
          if (.not. ieee_is_finite(ke)) then
             call nan_failure(model, error)
             call dom%defer(error)      ! MPI: known to all at the next dt reduction
-            if (allocated(error)) then
-               call finish(model, dom, out, ck, error)
-               return
-            end if
+            if (allocated(error)) return
          end if
          model%dt = dt
          ! (MPI: global sums, only when glstat, ENDENG or the end need them)
          call dom%energies(model, ke, vold, wext + wcon + wrig, -wrw, 0.25_wp*(dt - dt_old), &
                            need)
          if (model%ctrl%endeng > 0.0_wp) call checkpoint_energy_band(ck, model, t)
-         ! ---- output at t(n) (MPI runs: plot states per rank; histories by rank 0)
-         if (t >= next_plot .or. done) then
-            call dom%write_plot(model, out, ioerr)
-            if (allocated(ioerr)) then
-               call move_alloc(ioerr, error)
-               call dom%fail(error)   ! MPI: this rank alone: stop every rank
-               call finish(model, dom, out, ck, error); return
-            end if
-            if (model%db%d3plot_dt > 0.0_wp) then
-               next_plot = next_output_time(next_plot, model%db%d3plot_dt, t)
-            else
-               next_plot = huge_wp
-            end if
-         end if
-         if (model%db%glstat_dt > 0.0_wp .and. (t >= next_glstat .or. done)) then
-            call dom%output_model(model, om, writer)   ! MPI: gathered to rank 0
-            if (writer) call out%write_glstat(om, ioerr)
-            if (allocated(ioerr)) then
-               call move_alloc(ioerr, error)
-               call dom%fail(error)   ! MPI: rank 0 alone: stop every rank
-               call finish(model, dom, out, ck, error); return
-            end if
-            next_glstat = next_output_time(next_glstat, model%db%glstat_dt, t)
-         end if
-         if (model%db%nodout_dt > 0.0_wp .and. (t >= next_nodout .or. done)) then
-            call dom%output_model(model, om, writer)   ! MPI: gathered to rank 0
-            if (writer) call out%write_nodout(om, ioerr)
-            if (allocated(ioerr)) then
-               call move_alloc(ioerr, error)
-               call dom%fail(error)   ! MPI: rank 0 alone: stop every rank
-               call finish(model, dom, out, ck, error); return
-            end if
-            next_nodout = next_output_time(next_nodout, model%db%nodout_dt, t)
-         end if
-         if (allocated(model%rigid)) then
-            if (model%rigid%rbdout_dt > 0.0_wp .and. &
-                (t >= model%rigid%next_rbdout .or. done)) then
-               if (dom%rigid_writer()) &     ! MPI: rank 0 writes rbdout
-                  call rigid_write_rbdout(model%rigid, opts%outdir, t, ioerr)
-               if (allocated(ioerr)) then
-                  call move_alloc(ioerr, error)
-                  call dom%fail(error)   ! MPI: rank 0 alone: stop every rank
-                  call finish(model, dom, out, ck, error); return
-               end if
-               model%rigid%next_rbdout = next_output_time(model%rigid%next_rbdout, &
-                                                          model%rigid%rbdout_dt, t)
-            end if
-         end if
-         if ((t >= next_status .or. done) .and. writer) then
-            call status_line(model, t, dt, t0wall, tend)
-            if (tend < huge_wp) then
-               next_status = next_status + tend/real(max(1, opts%nstatus), wp)
-            else
-               next_status = huge_wp
-            end if
-         end if
-         if (done) then    ! MPI: a failure kept in the last cycle stops the run
-            call dom%sync_failure(error)
-            if (allocated(error)) then
-               call finish(model, dom, out, ck, error); return
-            end if
-         end if
-         if (done) exit
-         ! ---- positions
-         model%x = model%x + dt*model%v
-         model%time = t + dt
-         model%cycle = model%cycle + 1
-         dt_old = dt
-         ! ---- cycle boundary: restart dumps, signals, wall-clock limit, ENDENG
-         call checkpoint_stage(ck, dom, model, out, stopped, error)
-         if (stopped) return
-      end do
       end associate
+      self%t = t
+      self%dt = dt
+      self%done = done
+   end subroutine x_step
+
+   !> Positions x(n+1) = x(n) + dt(n+1/2) v(n+1/2): the cycle boundary.
+   subroutine x_advance(self, model, ck)
+      class(explicit_t), intent(inout) :: self
+      type(model_t), intent(inout) :: model
+      type(checkpoint_t), intent(inout) :: ck
+      model%x = model%x + self%dt*model%v
+      model%time = self%t + self%dt
+      model%cycle = model%cycle + 1
+      model%run%dt_old = self%dt
+   end subroutine x_advance
+
+   !> The end: the summary lines and the files closed; after a failure, finish.
+   subroutine x_close(self, model, dom, ck, out, how, error)
+      class(explicit_t), intent(inout) :: self
+      type(model_t), intent(inout), target :: model
+      class(domain_t), intent(inout) :: dom
+      type(checkpoint_t), intent(inout) :: ck
+      type(output_t), intent(inout) :: out
+      integer, intent(in) :: how
+      type(error_t), allocatable, intent(inout) :: error
+      type(error_t), allocatable :: ioerr
+      integer :: i
+      if (how == END_STOPPED) return
+      if (how == END_FAILED) then
+         call finish(model, dom, out, ck, error)
+         return
+      end if
       call log_info('dynx: normal termination at cycle '//str(model%cycle)//', time '// &
                     rstr(model%time)//', energy ratio '//rstr(model%energy%ratio, 8))
       call get_environment_variable('DYNX_ENERGY_BITS', length=i)   ! bitwise checks
       if (i > 0) call log_info(energy_bits(model%energy))   ! (MPI: rank 0 logs)
-      call log_info('dynx: wall time '//rstr(wall_time() - t0wall, 4)//' s, '// &
-         rstr(1.0e9_wp*(wall_time() - t0wall)/real(max(1, model%cycle), wp)/ &
+      call log_info('dynx: wall time '//rstr(wall_time() - self%t0wall, 4)//' s, '// &
+         rstr(1.0e9_wp*(wall_time() - self%t0wall)/real(max(1, model%cycle), wp)/ &
          real(max(1, model%ne), wp), 4)//' ns per element-cycle, peak memory '// &
          str(peak_memory_kb())//' KiB')
       if (allocated(model%rigid)) call rigid_close(model%rigid)
-      if (writer) call out%close(ioerr)
+      if (dom%writer()) call out%close(ioerr)
       if (allocated(ioerr)) call move_alloc(ioerr, error)
       call dom%plot_finish(ioerr, .false.)   ! MPI: rank 0 combines the per-rank plot files
       if (allocated(ioerr) .and. .not. allocated(error)) call move_alloc(ioerr, error)
-   end subroutine run_explicit
+   end subroutine x_close
 
-   !> The first output time on the grid next + k*interval (k >= 1) that lies after t.
-   pure real(wp) function next_output_time(next, interval, t) result(tn)
-      real(wp), intent(in) :: next, interval, t
-      tn = next + interval*real(max(1, ceiling((t - next)/interval + 1.0e-9_wp)), wp)
-   end function next_output_time
+   !> One rbdout record of the rigid bodies at time t (MPI: rank 0 writes).
+   subroutine explicit_rbdout(model, dom, outdir, t, error)
+      type(model_t), intent(inout) :: model
+      class(domain_t), intent(inout) :: dom
+      character(*), intent(in) :: outdir
+      real(wp), intent(in) :: t
+      type(error_t), allocatable, intent(out) :: error
+      if (dom%rigid_writer()) call rigid_write_rbdout(model%rigid, outdir, t, error)
+   end subroutine explicit_rbdout
 
+   !> The label of the element whose step controlled the last cycle (0: none).
    integer function elem_label(model)
       type(model_t), intent(in) :: model
       elem_label = 0
       if (model%dt_elem > 0) elem_label = model%elem_label(model%dt_elem)
    end function elem_label
-
-   subroutine status_line(model, t, dt, t0wall, tend)
-      type(model_t), intent(in) :: model
-      real(wp), intent(in) :: t, dt, t0wall, tend
-      character(100) :: line
-      real(wp) :: el, left
-      el = wall_time() - t0wall
-      left = 0.0_wp
-      if (t > 0.0_wp .and. tend < huge_wp) left = el*max(tend - t, 0.0_wp)/t
-      write(line, '(i11,2es12.4,i12,2f11.2)') model%cycle, t, dt, elem_label(model), el, left
-      call log_info(trim(line))
-      call log_flush()
-   end subroutine status_line
 
    !> A kernel flagged an element: name it, its part, the cycle and the time.
    subroutine element_failure(model, b, res, error)

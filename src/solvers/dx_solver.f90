@@ -1,0 +1,258 @@
+!> The integrator choice (make_integrator) and the one run driver (run_driver) that steps any
+!> integrator_t (dx_integrator) to the end: plot states and histories (glstat, nodout, rbdout)
+!> on model%run's grid, status lines, dynx's energy guard (issue 15), restart dumps, signals
+!> and the wall-clock limit (dx_checkpoint) at each cycle boundary, and the end.
+!> Which integrator runs (docs/design.md): *DYNX_CONSERVING_CONTACT (with
+!> *CONTROL_IMPLICIT_GENERAL IMFLAG = 1) the conserving rigid-body solver (dx_emc_solver),
+!> else the explicit central-difference loop (dx_explicit). IMFLAG = 1 without conserving
+!> contact (the implicit Newton solver) and IMFLAG = 2 are refused when the deck is built or
+!> read (exit 2).
+module dx_solver
+   use dx_kinds, only: wp, huge_wp
+   use dx_error, only: error_t, set_error, EXIT_NUMERIC
+   use dx_strings, only: str, rstr
+   use dx_log, only: log_info, log_warn, log_flush
+   use dx_timer, only: wall_time
+   use dx_model, only: model_t
+   use dx_output, only: output_t
+   use dx_checkpoint, only: checkpoint_t, checkpoint_stage, checkpoint_failure_dump
+   use dx_domain, only: domain_t
+   use dx_integrator, only: integrator_t, run_options_t, energy_guard_t, END_NORMAL, &
+                            END_FAILED, END_STOPPED
+   use dx_explicit, only: explicit_t, elem_label, explicit_rbdout
+   use dx_emc_run, only: conserving_t
+   implicit none
+   private
+   public :: make_integrator, integrator_choice, run_driver
+
+contains
+
+   !> The integrator the deck asks for, and why (one line for --check and the log).
+   subroutine integrator_choice(model, name, why)
+      type(model_t), intent(in) :: model
+      character(:), allocatable, intent(out) :: name, why
+      if (allocated(model%emc)) then
+         name = 'conserving rigid-body (Simo & Wong midpoint rule)'
+         why = '*DYNX_CONSERVING_CONTACT with *CONTROL_IMPLICIT_GENERAL IMFLAG = 1'
+      else if (model%ctrl%imp%imflag == 0 .and. model%ctrl%imp%line > 0) then
+         name = 'explicit central difference'
+         why = '*CONTROL_IMPLICIT_GENERAL IMFLAG = 0'
+      else
+         name = 'explicit central difference'
+         why = 'no *CONTROL_IMPLICIT_GENERAL'
+      end if
+   end subroutine integrator_choice
+
+   !> The integrator for the model (integrator_choice).
+   subroutine make_integrator(model, integ)
+      type(model_t), intent(in) :: model
+      class(integrator_t), allocatable, intent(out) :: integ
+      if (allocated(model%emc)) then
+         allocate(conserving_t :: integ)
+      else
+         allocate(explicit_t :: integ)
+      end if
+      call integrator_choice(model, integ%name, integ%why)
+   end subroutine make_integrator
+
+   !> Step integ from its start (or the restored state) to the end, writing the output the
+   !> deck asks for. error: a failure (its exit code), or EXIT_CHECKPOINT after a stop.
+   subroutine run_driver(integ, model, dom, opts, out, error)
+      class(integrator_t), intent(inout) :: integ
+      type(model_t), intent(inout), target :: model
+      class(domain_t), intent(inout) :: dom
+      type(run_options_t), intent(in) :: opts
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      type(checkpoint_t) :: ck
+      type(energy_guard_t) :: guard
+      type(error_t), allocatable :: ioerr
+      real(wp) :: t0wall, next_status, t_line
+      logical :: stopped, writer
+      ck = opts%ck
+      guard = opts%guard
+      call integ%start(model, dom, opts, ck, out, error)
+      if (allocated(error)) return
+      call log_info('dynx: integrator: '//integ%name//' ('//integ%why//')')
+      if (integ%energies) call guard_bounds(guard)
+      t0wall = wall_time()
+      writer = dom%writer()
+      next_status = model%run%next_status
+      t_line = -huge_wp
+      call log_info('      cycle        time          dt  dt-element   wall [s]   left [s]'// &
+                    '  energy ratio')
+      do
+         call integ%step(model, dom, ck, out, error)
+         if (allocated(error)) then
+            call integ%close(model, dom, ck, out, END_FAILED, error); return
+         end if
+         if (integ%histories) then
+            call histories(model, dom, out, opts%outdir, integ%t, integ%done, ioerr)
+            if (allocated(ioerr)) then
+               call move_alloc(ioerr, error)
+               call dom%fail(error)   ! MPI: a rank alone: stop every rank
+               call integ%close(model, dom, ck, out, END_FAILED, error); return
+            end if
+         end if
+         ! ---- the energy guard, after this cycle's glstat record (MPI: every rank has the
+         ! summed ratio and stops with the others)
+         if (integ%energies) call guard_check(guard, model, integ%t, error)
+         if (allocated(error)) then
+            call integ%close(model, dom, ck, out, END_FAILED, error); return
+         end if
+         if ((integ%t >= next_status .or. integ%done) .and. writer .and. &
+             integ%t /= t_line) then   ! (a conserving run's last call only notes the end)
+            call status_line(model, integ, t0wall)
+            t_line = integ%t
+            if (integ%tend < huge_wp) then
+               next_status = next_status + integ%tend/real(max(1, opts%nstatus), wp)
+            else
+               next_status = huge_wp
+            end if
+         end if
+         if (integ%histories) model%run%next_status = next_status
+         if (integ%done .and. integ%histories) then   ! MPI: a failure kept in the last cycle
+            call dom%sync_failure(error)
+            if (allocated(error)) then
+               call integ%close(model, dom, ck, out, END_FAILED, error); return
+            end if
+         end if
+         if (integ%done) exit
+         call integ%advance(model, ck)
+         ! ---- cycle boundary: restart dumps, signals, wall-clock limit, ENDENG
+         call checkpoint_stage(ck, dom, model, out, stopped, error)
+         if (stopped) then
+            call integ%close(model, dom, ck, out, END_STOPPED, error); return
+         end if
+      end do
+      call integ%close(model, dom, ck, out, END_NORMAL, error)
+   end subroutine run_driver
+
+   !> Plot states, glstat, nodout and rbdout at t(n) on model%run's grid (MPI runs: plot
+   !> states per rank; histories by rank 0).
+   subroutine histories(model, dom, out, outdir, t, done, error)
+      type(model_t), intent(inout), target :: model
+      class(domain_t), intent(inout) :: dom
+      type(output_t), intent(inout) :: out
+      character(*), intent(in) :: outdir
+      real(wp), intent(in) :: t
+      logical, intent(in) :: done
+      type(error_t), allocatable, intent(out) :: error
+      type(model_t), pointer :: om          ! the model output is written from
+      logical :: writer
+      om => model
+      writer = dom%writer()
+      if (t >= model%run%next_plot .or. done) then
+         call dom%write_plot(model, out, error)
+         if (allocated(error)) return
+         if (model%db%d3plot_dt > 0.0_wp) then
+            model%run%next_plot = next_output_time(model%run%next_plot, model%db%d3plot_dt, t)
+         else
+            model%run%next_plot = huge_wp
+         end if
+      end if
+      call history_file(1)
+      if (allocated(error)) return
+      call history_file(2)
+      if (allocated(error)) return
+      if (allocated(model%rigid)) then
+         if (model%rigid%rbdout_dt > 0.0_wp .and. &
+             (t >= model%rigid%next_rbdout .or. done)) then
+            call explicit_rbdout(model, dom, outdir, t, error)   ! MPI: rank 0 writes rbdout
+            if (allocated(error)) return
+            model%rigid%next_rbdout = next_output_time(model%rigid%next_rbdout, &
+                                                       model%rigid%rbdout_dt, t)
+         end if
+      end if
+   contains
+      !> glstat (kind 1) or nodout (2) when due (MPI: the global model gathered to rank 0)
+      subroutine history_file(kind)
+         integer, intent(in) :: kind
+         real(wp) :: interval, next
+         if (kind == 1) then
+            interval = model%db%glstat_dt; next = model%run%next_glstat
+         else
+            interval = model%db%nodout_dt; next = model%run%next_nodout
+         end if
+         if (.not. (interval > 0.0_wp .and. (t >= next .or. done))) return
+         call dom%output_model(model, om, writer)
+         if (writer .and. kind == 1) call out%write_glstat(om, error)
+         if (writer .and. kind == 2) call out%write_nodout(om, error)
+         if (allocated(error)) return
+         next = next_output_time(next, interval, t)
+         if (kind == 1) then
+            model%run%next_glstat = next
+         else
+            model%run%next_nodout = next
+         end if
+      end subroutine history_file
+   end subroutine histories
+
+   !> The first output time on the grid next + k*interval (k >= 1) that lies after t.
+   pure real(wp) function next_output_time(next, interval, t) result(tn)
+      real(wp), intent(in) :: next, interval, t
+      tn = next + interval*real(max(1, ceiling((t - next)/interval + 1.0e-9_wp)), wp)
+   end function next_output_time
+
+   subroutine status_line(model, integ, t0wall)
+      type(model_t), intent(in) :: model
+      class(integrator_t), intent(in) :: integ
+      real(wp), intent(in) :: t0wall
+      character(120) :: line
+      real(wp) :: el, left
+      el = wall_time() - t0wall
+      left = 0.0_wp
+      if (integ%t > 0.0_wp .and. integ%tend < huge_wp) &
+         left = el*max(integ%tend - integ%t, 0.0_wp)/integ%t
+      write(line, '(i11,2es12.4,i12,2f11.2)') model%cycle, integ%t, integ%dt, &
+         elem_label(model), el, left
+      if (integ%energies) write(line(71:), '(f14.6)') model%energy%ratio
+      call log_info(trim(line))
+      call log_flush()
+   end subroutine status_line
+
+   !> The guard's bounds in force, in the log at the start.
+   subroutine guard_bounds(guard)
+      type(energy_guard_t), intent(in) :: guard
+      if (guard%on) then
+         call log_info('dynx: energy guard: warning when the energy ratio leaves 1 +- '// &
+            rstr(guard%warn, 4)//', stop (exit 3) outside 1 +- '//rstr(guard%stop - 1.0_wp, 4)// &
+            ' (--energy-guard WARN,STOP or off)')
+      else
+         call log_info('dynx: energy guard off (--energy-guard off)')
+      end if
+   end subroutine guard_bounds
+
+   !> dynx's energy guard on the ratio (total energy)/(initial energy + external work) of
+   !> this cycle, glstat's. The ratio lags the energy put in by about a cycle (the kinetic
+   !> energy is time-centred, the work is booked at t(n)): a cycle whose external work
+   !> changes the denominator by more than 1 % (a load ramping up from rest: ratio 0 at
+   !> cycle 0) is not judged. MPI runs: the ratio is summed at the cycles that write glstat,
+   !> ENDENG and the end; the cycles between repeat it (not judged again).
+   subroutine guard_check(guard, model, t, error)
+      type(energy_guard_t), intent(inout) :: guard
+      type(model_t), intent(in) :: model
+      real(wp), intent(in) :: t
+      type(error_t), allocatable, intent(out) :: error
+      real(wp) :: r, den
+      logical :: steady
+      if (.not. guard%on) return
+      r = model%energy%ratio
+      den = model%energy%initial + model%energy%external_work
+      if (r == guard%r_prev .and. den == guard%den_prev) return   ! nothing new
+      steady = abs(den - guard%den_prev) <= 0.01_wp*abs(den)
+      guard%den_prev = den
+      guard%r_prev = r
+      if (.not. steady) return
+      if (abs(r - 1.0_wp) > guard%stop - 1.0_wp) then
+         call set_error(error, 'energy ratio '//rstr(r, 6)//' at cycle '//str(model%cycle)// &
+            ', time '//rstr(t)//' is outside 1 +- '//rstr(guard%stop - 1.0_wp, 4)// &
+            ' (energy guard: the run blew up; --energy-guard WARN,STOP or off)', EXIT_NUMERIC)
+      else if (.not. guard%warned .and. abs(r - 1.0_wp) > guard%warn) then
+         guard%warned = .true.
+         call log_warn('energy ratio '//rstr(r, 6)//' at cycle '//str(model%cycle)// &
+            ', time '//rstr(t)//' left 1 +- '//rstr(guard%warn, 4)//' (energy guard; '// &
+            'further departures are not reported)')
+      end if
+   end subroutine guard_check
+end module dx_solver
