@@ -19,14 +19,14 @@ module dx_plot_fields
    use dx_error, only: error_t, set_error, EXIT_IO
    use dx_strings, only: str
    use dx_h5, only: h5_file_t, h5_write, h5_read, h5_create_group, h5_write_attr, h5_read_attr
-   use dx_plot_cells, only: write_cells
+   use dx_plot_cells, only: write_cells, read_cells
    implicit none
    private
    public :: plot_field_t, PLOT_FIELDS, NSTATE_FIELDS, plot_state_t, CENTRE_NODE, CENTRE_CELL, &
              SRC_NODAL, SRC_ELEMENT, SRC_DERIVED, SRC_MESH, F_COORD, F_DISP, F_VEL, F_STRESS, &
              F_VM, F_PRES, F_EPSP, F_FAILED, field_in_part, xdmf_attribute_type, &
              plot_state_alloc, plot_state_derive, plot_state_write, plot_state_read, &
-             stress_invariants, plot_mesh_write
+             stress_invariants, plot_mesh_write, plot_mesh_read
 
    integer, parameter :: CENTRE_NODE = 1, CENTRE_CELL = 2
    integer, parameter :: SRC_NODAL = 1, SRC_ELEMENT = 2, SRC_DERIVED = 3, SRC_MESH = 4
@@ -218,4 +218,20 @@ contains
       if (allocated(error)) return
       call h5_write_attr(f, '/', 'title', title, error)
    end subroutine plot_mesh_write
+
+   !> Read the /mesh group of a plot file as plot_mesh_write wrote it (the numbers as
+   !> float64, flat, in Fortran order; the cells of ne elements).
+   subroutine plot_mesh_read(f, x0, nlab, cells, elab, ids, title, error)
+      type(h5_file_t), intent(in) :: f
+      real(wp), allocatable, intent(out) :: x0(:), nlab(:), elab(:), ids(:)
+      integer, allocatable, intent(out) :: cells(:, :)
+      character(:), allocatable, intent(out) :: title
+      type(error_t), allocatable, intent(out) :: error
+      call h5_read(f, '/mesh/coordinates', x0, error)
+      if (.not. allocated(error)) call h5_read(f, '/mesh/node_ids', nlab, error)
+      if (.not. allocated(error)) call h5_read(f, '/mesh/element_ids', elab, error)
+      if (.not. allocated(error)) call h5_read(f, '/mesh/part_ids', ids, error)
+      if (.not. allocated(error)) call read_cells(f, size(ids), cells, error)
+      if (.not. allocated(error)) call h5_read_attr(f, '/', 'title', title, error)
+   end subroutine plot_mesh_read
 end module dx_plot_fields

@@ -29,7 +29,7 @@ module dx_plot_hdf5
    use dx_io_sys, only: sys_fsync
    use dx_plot_cells, only: cell_topo_t, model_cells, cells_topology, read_cells
    use dx_plot_fields, only: plot_state_t, plot_state_alloc, plot_state_derive, plot_state_write, &
-                             plot_state_read, plot_mesh_write, stress_invariants, F_COORD, F_VEL, &
+                             plot_state_read, plot_mesh_write, plot_mesh_read, stress_invariants, F_COORD, F_VEL, &
                              F_STRESS, F_EPSP, F_FAILED
    implicit none
    private
@@ -179,16 +179,19 @@ contains
          if (allocated(error)) return
          call h5_read_attr(f, '/', 'nstates', nmerged, error)
          if (.not. allocated(error)) call h5_read(f, '/states/times', x, error)
-         if (.not. allocated(error)) call h5_read(f, '/mesh/node_ids', nlab, error)
-         if (.not. allocated(error)) call h5_read(f, '/mesh/part_ids', ids, error)
-         if (.not. allocated(error)) call read_cells(f, size(ids), cells, error)
-         if (.not. allocated(error)) call h5_read_attr(f, '/', 'title', title, error)
-         if (allocated(error)) then
-            call h5_close(f, err2)
-            return
-         end if
-         call h5_close(f, error)
+      else
+         src = dir//'/'//state_file(0)
+         call h5_open_read(f, src, error)
          if (allocated(error)) return
+      end if
+      if (.not. allocated(error)) call plot_mesh_read(f, x0, nlab, cells, elab, ids, title, error)
+      if (allocated(error)) then
+         call h5_close(f, err2)
+         return
+      end if
+      call h5_close(f, error)
+      if (allocated(error)) return
+      if (there) then
          if (size(x) < nmerged) then
             call set_error(error, src//': /states/times has '//str(size(x))// &
                            ' values, nstates is '//str(nmerged), EXIT_IO)
@@ -201,21 +204,6 @@ contains
          call states_remove_all(dir)
          return
       end if
-      src = dir//'/'//state_file(0)
-      call h5_open_read(f, src, error)
-      if (allocated(error)) return
-      call h5_read(f, '/mesh/coordinates', x0, error)
-      if (.not. allocated(error)) call h5_read(f, '/mesh/node_ids', nlab, error)
-      if (.not. allocated(error)) call h5_read(f, '/mesh/element_ids', elab, error)
-      if (.not. allocated(error)) call h5_read(f, '/mesh/part_ids', ids, error)
-      if (.not. allocated(error)) call read_cells(f, size(ids), cells, error)
-      if (.not. allocated(error)) call h5_read_attr(f, '/', 'title', title, error)
-      if (allocated(error)) then
-         call h5_close(f, err2)
-         return
-      end if
-      call h5_close(f, error)
-      if (allocated(error)) return
       nn = size(nlab)
       ne = size(ids)
       if (size(x0) /= 3*nn .or. size(elab) /= ne) then

@@ -42,6 +42,9 @@ module dx_plot_part
    character(*), parameter :: PART_FORMAT = 'dynx plot part'
    integer, parameter :: PART_VERSION = 2
    character(*), parameter :: H5NAME = 'd3plot.h5', XMFNAME = 'd3plot.xdmf'
+   !> The integer root attributes of a part file after format and version, in write order.
+   character(*), parameter :: HEADER(5) = [character(9) :: 'rank', 'nprocs', 'stamp', &
+                                           'nn_global', 'ne_global']
 
    !> One rank's open part file.
    type :: plot_part_t
@@ -132,6 +135,7 @@ contains
       type(error_t), allocatable :: err2
       type(h5_file_t) :: f
       character(:), allocatable :: path
+      integer :: hv(size(HEADER)), i
       path = plot_part_name(dir, rank)
       self%active = .false.
       self%dir = dir
@@ -150,16 +154,11 @@ contains
          if (allocated(error)) exit work
          call h5_write_attr(f, '/', 'version', PART_VERSION, error)
          if (allocated(error)) exit work
-         call h5_write_attr(f, '/', 'rank', rank, error)
-         if (allocated(error)) exit work
-         call h5_write_attr(f, '/', 'nprocs', nprocs, error)
-         if (allocated(error)) exit work
-         call h5_write_attr(f, '/', 'stamp', stamp, error)
-         if (allocated(error)) exit work
-         call h5_write_attr(f, '/', 'nn_global', nn, error)
-         if (allocated(error)) exit work
-         call h5_write_attr(f, '/', 'ne_global', ne, error)
-         if (allocated(error)) exit work
+         hv = [rank, nprocs, stamp, nn, ne]
+         do i = 1, size(HEADER)
+            call h5_write_attr(f, '/', trim(HEADER(i)), hv(i), error)
+            if (allocated(error)) exit work
+         end do
          call h5_write_attr(f, '/', 'title', title, error)
          if (allocated(error)) exit work
          call h5_create_group(f, '/mesh', error)
@@ -481,7 +480,7 @@ contains
       character(:), allocatable, intent(out) :: title
       type(error_t), allocatable, intent(out) :: error
       character(:), allocatable :: fmt
-      integer :: ver
+      integer :: ver, hv(size(HEADER)), i
       np = 0; stamp = 0; nn = 0; ne = 0
       title = ''
       call h5_read_attr(f, '/', 'format', fmt, error)
@@ -493,14 +492,11 @@ contains
                         str(PART_VERSION), EXIT_IO)
          return
       end if
-      call h5_read_attr(f, '/', 'nprocs', np, error)
-      if (allocated(error)) return
-      call h5_read_attr(f, '/', 'stamp', stamp, error)
-      if (allocated(error)) return
-      call h5_read_attr(f, '/', 'nn_global', nn, error)
-      if (allocated(error)) return
-      call h5_read_attr(f, '/', 'ne_global', ne, error)
-      if (allocated(error)) return
+      do i = 2, size(HEADER)
+         call h5_read_attr(f, '/', trim(HEADER(i)), hv(i), error)
+         if (allocated(error)) return
+      end do
+      np = hv(2); stamp = hv(3); nn = hv(4); ne = hv(5)
       call h5_read_attr(f, '/', 'title', title, error)
       if (allocated(error)) return
       if (np < 1 .or. nn < 0 .or. ne < 0) call set_error(error, path// &
