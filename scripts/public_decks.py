@@ -1,0 +1,460 @@
+#!/usr/bin/python3
+"""Run the public LS-DYNA deck corpus (tests/public/) through bin/dynx and classify each deck.
+
+    make public-decks                 (or: /usr/bin/python3 scripts/public_decks.py [options])
+
+For every deck listed in tests/public/index.tsv (path, source, licence, writer, what it models,
+expected outcome class):
+
+1. `bin/dynx --check -i DECK`: the strict read, exactly what a new user gets.
+2. `bin/dynx --check --ignore-unknown -i DECK`: the read with unknown keywords skipped; it tells
+   what stops the deck once the unknown keywords are dealt with, and its warnings list unknown
+   keywords past the first.
+3. The deck's keyword lines (with its *INCLUDE files) are scanned against the keywords dynx
+   documents (docs/keywords.md headings and the registry's add('NAME') calls): the tally of
+   unknown keywords over the corpus (keyword -> number of decks) comes from this scan joined with
+   what dynx itself reported, so it does not depend on dynx stopping at the first unknown keyword.
+4. When the strict check passes: a real run, capped with dynx's own `--walltime S` option (dynx
+   stops with a restart dump and exit 5 at the cap, so a long deck is a capped run, not a hang);
+   an outer timeout of S + 60 s catches a real hang.
+
+Classes (the issue-16 acceptance classes):
+- runs   exit 0 (normal termination) or 5 at the wall-time cap, and the physics check passes;
+- exit-2 exit 2 with a message that names the unsupported keyword/option, or the deck's own defect
+         (a missing include file);
+- wrong  a crash (any other exit code or a signal), a hang (outer timeout), exit 2 whose message
+         does not name a missing feature (a reader defect or a symptom), exit 3 (numerical failure)
+         on a deck LS-DYNA runs, or exit 0 with a failed physics check (nonsense energies).
+
+Physics check of a deck that runs (tolerances and where they come from):
+- glstat (when the deck asks for it): every value finite; the energy ratio (total / (initial +
+  external work)) within 1 +- 0.10 on every line once the total energy is non-zero, the usual
+  LS-DYNA acceptance band for an energy balance (the band dynx's energy guard warns at, issue 15);
+  hourglass energy at most 10 % of internal energy at the end (the common LS-DYNA guideline).
+  A deck that loads the model (initial velocity, loads, prescribed motion) must show a non-zero
+  total energy (a loaded model with zero energy throughout is the silent failure of issue 16).
+- An unloaded deck (no initial velocity, load or prescribed motion): analytic answer zero
+  motion, so kinetic energy (glstat) and displacement (d3plot.h5) must stay exactly 0.
+- No glstat: displacements in d3plot.h5 finite.
+
+Output: a table on stdout and the generated docs/public-decks.md (date, commit, table, unknown
+keyword tally, trend over runs). Not part of `make test`; the total run takes a few minutes.
+"""
+import argparse
+import datetime
+import math
+import os
+import re
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+CORPUS = os.path.join(ROOT, 'tests', 'public')
+INDEX = os.path.join(CORPUS, 'index.tsv')
+DOC = os.path.join(ROOT, 'docs', 'public-decks.md')
+TREND_BEGIN = '<!-- trend-begin -->'
+TREND_END = '<!-- trend-end -->'
+LOAD_PREFIXES = ('INITIAL_VELOCITY', 'LOAD_', 'BOUNDARY_PRESCRIBED_MOTION', 'CASE')
+NAMING = re.compile(r'unknown keyword|not supported|unsupported|not implemented|'
+                    r'cannot open|no such file|not found|does not exist|overflows its', re.I)
+
+
+def sh(cmd, cwd=None):
+    return subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          universal_newlines=True).stdout.strip()
+
+
+def read_index():
+    rows = []
+    with open(INDEX) as f:
+        header = f.readline().rstrip('\n').split('\t')
+        for line in f:
+            if not line.strip():
+                continue
+            rows.append(dict(zip(header, line.rstrip('\n').split('\t'))))
+    return rows
+
+
+def known_keywords():
+    """Keywords dynx documents or registers: (exact names, prefixes such as MAT_ families)."""
+    names = set()
+    with open(os.path.join(ROOT, 'docs', 'keywords.md')) as f:
+        for line in f:
+            if line.startswith('#'):
+                for tok in re.findall(r'`\*([A-Z0-9_]+)`', line):
+                    names.add(tok)
+                base = re.findall(r'`\*([A-Z0-9_]+)`', line)
+                for opt in re.findall(r'`(_[A-Z0-9_]+)`', line):   # `*X_NODE`, `_SET`
+                    if base and opt not in ('_TITLE', '_ID'):
+                        stem = base[0].rsplit('_', 1)[0]
+                        names.add(stem + opt)
+    srcdir = os.path.join(ROOT, 'src', 'deck')
+    for fn in os.listdir(srcdir):
+        if fn.endswith('.f90'):
+            with open(os.path.join(srcdir, fn), errors='replace') as f:
+                text = f.read()
+            names.update(re.findall(r"add\('([A-Z0-9_]+)'", text))
+            if fn == 'dx_deck_cards.f90':   # structure keywords the card reader handles itself
+                names.update(re.findall(r"case \('([A-Z_]+)'\)", text))
+                names.update(re.findall(r"name [=/]= '([A-Z_]+)'", text))
+    return names
+
+
+def is_known(kw, names):
+    cands = [kw]
+    for suf in ('_TITLE', '_ID'):
+        if kw.endswith(suf):
+            cands.append(kw[:-len(suf)])
+    return any(c in names for c in cands)
+
+
+def deck_keywords(path, seen=None, paths=None, main_dir=None, found=None):
+    """Keyword names of a deck and of its *INCLUDE files, in order; missing includes listed.
+
+    Include files are looked for as LS-DYNA does: beside the including file, in the main
+    deck's directory, then in every *INCLUDE_PATH / *INCLUDE_PATH_RELATIVE directory (relative
+    paths are relative to the main deck's directory). found maps include names to files."""
+    seen = set() if seen is None else seen
+    paths = [] if paths is None else paths
+    found = {} if found is None else found
+    main_dir = os.path.dirname(os.path.abspath(path)) if main_dir is None else main_dir
+    kws, missing = [], []
+    path = os.path.normpath(path)
+    if path in seen:
+        return kws, missing
+    seen.add(path)
+    here = os.path.dirname(path)
+    cur = None
+    with open(path, errors='replace') as f:
+        lines = f.read().splitlines()
+    for line in lines:
+        if line.startswith('*'):
+            cur = line[1:].split()[0].upper() if line[1:].split() else ''
+            kws.append(cur)
+            continue
+        if not line.strip() or line.startswith('$') or cur is None:
+            continue
+        if cur in ('INCLUDE_PATH', 'INCLUDE_PATH_RELATIVE'):
+            p = line.strip()
+            paths.append(p if os.path.isabs(p) else os.path.join(main_dir, p))
+        elif cur == 'INCLUDE':
+            name = line.strip()
+            for d in [here, main_dir] + paths:
+                cand = os.path.join(d, name)
+                if os.path.isfile(cand):
+                    found[name] = os.path.normpath(cand)
+                    found[os.path.basename(name)] = os.path.normpath(cand)
+                    k2, m2 = deck_keywords(cand, seen, paths, main_dir, found)
+                    kws += k2
+                    missing += m2
+                    break
+            else:
+                missing.append(name)
+    return kws, missing
+
+
+def run(cmd, cwd, timeout):
+    t0 = time.time()
+    try:
+        p = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                           universal_newlines=True, errors='replace', timeout=timeout)
+        return p.returncode, p.stdout, time.time() - t0
+    except subprocess.TimeoutExpired as e:
+        out = e.stdout if isinstance(e.stdout, str) else (e.stdout or b'').decode('utf8', 'replace')
+        return None, out, time.time() - t0
+
+
+def first_error(out):
+    """The message line that explains a stop: the first 'error:' line, else a line naming an
+    unknown keyword or a failure, else the last line; paths shown relative to tests/public/."""
+    raw = [l.strip() for l in out.splitlines() if l.strip()]
+    pick = next((l for l in raw if 'error:' in l.lower()), None)
+    if pick is None:
+        pick = next((l for l in raw if re.search(r'unknown keyword|not supported|cannot|missing',
+                                                 l, re.I) and 'warning' not in l.lower()), None)
+    if pick is None:
+        pick = raw[-1] if raw else ''
+    pick = re.sub(r'^(dynx: )?error: ', '', pick)
+    return pick.replace(CORPUS + os.sep, '')
+
+
+def reported_unknown(out):
+    return set(re.findall(r'unknown keyword \*([A-Za-z0-9_\-]+)', out))
+
+
+def read_glstat(path):
+    rows = []
+    with open(path) as f:
+        for line in f:
+            tok = line.split()
+            if len(tok) != 14:
+                continue
+            try:
+                rows.append([float(t) for t in tok])
+            except ValueError:
+                continue
+    return rows
+
+
+def d3plot_states(h5):
+    """State group names of a d3plot.h5 (h5ls, from hdf5-tools; no Python HDF5 module needed)."""
+    try:
+        out = subprocess.run(['h5ls', h5 + '/states'], stdout=subprocess.PIPE,
+                             stderr=subprocess.DEVNULL, universal_newlines=True).stdout
+    except OSError:
+        return None
+    return sorted(l.split()[0] for l in out.splitlines() if l.split() and
+                  l.split()[0].isdigit() and 'Group' in l)
+
+
+def h5_values(h5, dset):
+    """All numbers of one dataset, read with h5dump."""
+    try:
+        out = subprocess.run(['h5dump', '-y', '-w', '0', '-d', dset, h5], stdout=subprocess.PIPE,
+                             stderr=subprocess.DEVNULL, universal_newlines=True).stdout
+    except OSError:
+        return None
+    if 'DATA {' not in out:
+        return None
+    body = out.split('DATA {', 1)[1].split('}', 1)[0]
+    try:
+        return [float(t) for t in body.replace(',', ' ').split()]
+    except ValueError:
+        return None
+
+
+def physics_check(outdir, loaded):
+    """(ok, text) for a deck that ran."""
+    g = os.path.join(outdir, 'glstat')
+    notes = []
+    if os.path.isfile(g):
+        rows = read_glstat(g)
+        if not rows:
+            return False, 'glstat has no data line'
+        if not all(math.isfinite(v) for r in rows for v in r):
+            return False, 'glstat holds a non-finite value'
+        ke = [r[3] for r in rows]
+        ie = [r[4] for r in rows]
+        hg = [r[5] for r in rows]
+        tot = [r[8] for r in rows]
+        ratio = [r[9] for r in rows]
+        if not loaded:
+            if max(abs(v) for v in ke) != 0.0:
+                return False, 'unloaded model moves: max kinetic %.3g (analytic 0)' % max(ke)
+            notes.append('unloaded: kinetic energy 0 on %d lines (analytic 0)' % len(rows))
+        else:
+            if max(abs(v) for v in tot) == 0.0:
+                return False, 'loaded model with zero total energy throughout'
+            live = [q for q, t in zip(ratio, tot) if t != 0.0]
+            worst = max(abs(q - 1.0) for q in live) if live else 0.0
+            if worst > 0.10:
+                return False, 'energy ratio leaves 1 +- 0.10 (worst %.4f)' % (1 + worst)
+            notes.append('energy ratio within 1 +- %.2e on %d lines' % (worst, len(rows)))
+            if ie[-1] > 0 and hg[-1] > 0.10 * ie[-1]:
+                return False, 'hourglass energy %.3g > 10%% of internal %.3g' % (hg[-1], ie[-1])
+            notes.append('t=%.4g: KE %.4g IE %.4g HG %.3g' % (rows[-1][0], ke[-1], ie[-1], hg[-1]))
+    h5 = os.path.join(outdir, 'd3plot.h5')
+    if os.path.isfile(h5):
+        states = d3plot_states(h5)
+        if states is None:
+            notes.append('d3plot not checked (h5ls/h5dump missing or failed)')
+        else:
+            dmax = 0.0
+            for st in states:
+                vals = h5_values(h5, '/states/%s/displacement' % st)
+                if vals is None or not all(math.isfinite(v) for v in vals):
+                    return False, 'non-finite or unreadable displacement in state %s' % st
+                dmax = max([dmax] + [abs(v) for v in vals])
+            if not loaded and dmax != 0.0:
+                return False, 'unloaded model moves: max |u| %.3g (analytic 0)' % dmax
+            notes.append('d3plot: %d states, max |u| = %.4g%s' % (
+                len(states), dmax, ' (unloaded: analytic 0)' if not loaded else ''))
+    if not notes:
+        return False, 'no glstat and no d3plot.h5 to check'
+    return True, '; '.join(notes)
+
+
+def classify(deck, names, dynx, outroot, walltime, allow_run):
+    path = os.path.join(CORPUS, deck['path'])
+    cwd = os.path.dirname(path)
+    slug = deck['path'].replace('/', '__').rsplit('.', 1)[0]
+    out = os.path.join(outroot, slug)
+    os.makedirs(out, exist_ok=True)
+    found = {}
+    kws, missing = deck_keywords(path, found=found)
+    scan_unknown = sorted({k for k in kws if k and not is_known(k, names)})
+    loaded = any(k.startswith(LOAD_PREFIXES) for k in kws)
+    r = dict(deck=deck, scan_unknown=scan_unknown, missing=missing, loaded=loaded)
+    rc, txt, dt = run([dynx, '--check', '-i', path, '-o', os.path.join(out, 'check')], cwd, 120)
+    r['check_rc'], r['check_msg'] = rc, first_error(txt)
+    rc2, txt2, _ = run([dynx, '--check', '--ignore-unknown', '-i', path,
+                        '-o', os.path.join(out, 'scan')], cwd, 120)
+    r['scan_rc'], r['scan_msg'] = rc2, first_error(txt2)
+    r['dynx_unknown'] = sorted(reported_unknown(txt) | reported_unknown(txt2))
+    r['physics'] = ''
+    if rc is None:
+        r['cls'], r['why'] = 'wrong', 'hang: --check did not finish in 120 s'
+        return r
+    if rc == 2:
+        msg = r['check_msg']
+        m = re.search(r"cannot open file '([^']+)'", msg)
+        if m and os.path.basename(m.group(1)) in found:
+            r['cls'] = 'wrong'
+            r['why'] = ('reader defect: %s; LS-DYNA finds it as %s' % (
+                msg, os.path.relpath(found[os.path.basename(m.group(1))], CORPUS)))
+        elif NAMING.search(msg):
+            r['cls'], r['why'] = 'exit-2', msg
+        else:
+            r['cls'], r['why'] = 'wrong', 'exit 2 without naming a missing feature: ' + msg
+        return r
+    if rc != 0:
+        r['cls'], r['why'] = 'wrong', '--check exit %s: %s' % (rc, r['check_msg'])
+        return r
+    if not allow_run:
+        r['cls'], r['why'] = 'wrong', 'checked, run skipped (corpus time budget spent)'
+        return r
+    rdir = os.path.join(out, 'run')
+    rc, txt, dt = run([dynx, '-i', path, '-o', rdir, '--walltime', str(walltime)], cwd,
+                      walltime + 60)
+    r['run_rc'], r['run_s'] = rc, dt
+    if rc is None:
+        r['cls'], r['why'] = 'wrong', 'hang: no exit %d s after the --walltime cap' % 60
+    elif rc in (0, 5):
+        ok, note = physics_check(rdir, loaded)
+        r['physics'] = note
+        how = 'normal termination' if rc == 0 else 'stopped at the %d s wall-time cap' % walltime
+        r['cls'] = 'runs' if ok else 'wrong'
+        r['why'] = how + ('' if ok else '; physics check failed: ' + note)
+    elif rc == 3:
+        r['cls'], r['why'] = 'wrong', 'numerical failure (exit 3): ' + first_error(txt)
+    else:
+        r['cls'], r['why'] = 'wrong', 'run exit %s: %s' % (rc, first_error(txt))
+    return r
+
+
+def md_escape(s):
+    return s.replace('|', '\\|').replace('\n', ' ')
+
+
+def write_doc(results, tally, commit, date, elapsed, sources):
+    counts = {c: sum(1 for r in results if r['cls'] == c) for c in ('runs', 'exit-2', 'wrong')}
+    trend = []
+    if os.path.isfile(DOC):
+        with open(DOC) as f:
+            text = f.read()
+        if TREND_BEGIN in text and TREND_END in text:
+            body = text.split(TREND_BEGIN)[1].split(TREND_END)[0]
+            trend = [l for l in body.splitlines() if l.startswith('| 20')]
+    row = '| %s | `%s` | %d | %d | %d | %d |' % (date, commit, len(results), counts['runs'],
+                                                counts['exit-2'], counts['wrong'])
+    trend = [l for l in trend if '`%s`' % commit not in l] + [row]
+    L = []
+    L.append('# Public LS-DYNA deck corpus: results')
+    L.append('')
+    L.append('Generated by `make public-decks` (`scripts/public_decks.py`); do not edit by hand.')
+    L.append('Run of %s at commit `%s` (%d decks, %.0f s). The decks, their sources and'
+             % (date, commit, len(results), elapsed))
+    L.append('licences: `tests/public/index.tsv` (each source\'s licence file beside its decks).')
+    L.append('')
+    L.append('Classes: **runs** = exit 0 or stopped at the `--walltime` cap (exit 5) with the '
+             'physics check passed; **exit-2** = stops with exit 2 naming the unsupported keyword or '
+             'option (or the deck\'s own missing include); **wrong** = crash, hang, exit 2 whose '
+             'message does not name a missing feature, exit 3, or exit 0 with a failed physics '
+             'check. The real run is capped with dynx\'s own `--walltime` (no end-time option '
+             'exists); an outer timeout 60 s later catches hangs.')
+    L.append('')
+    L.append('**Tally: %d runs, %d exit-2, %d wrong** (of %d decks from %d sources).'
+             % (counts['runs'], counts['exit-2'], counts['wrong'], len(results), len(sources)))
+    L.append('')
+    L.append('| deck | writer | expected | class | strict `--check` (first message) | '
+             'with `--ignore-unknown` | unknown keywords (scan) |')
+    L.append('|---|---|---|---|---|---|---|')
+    for r in results:
+        d = r['deck']
+        scan = 'exit %s: %s' % (r['scan_rc'], r['scan_msg']) if r['scan_rc'] else 'reads'
+        L.append('| `%s` | %s | %s | **%s** | %s | %s | %d |' % (
+            d['path'], d['writer'], d['expected'], r['cls'], md_escape(r['why'][:200]),
+            md_escape(scan[:160]), len(r['scan_unknown'])))
+    L.append('')
+    phys = [r for r in results if r['physics']]
+    if phys:
+        L.append('Physics checks of the decks that ran:')
+        L.append('')
+        for r in phys:
+            L.append('- `%s`: %s' % (r['deck']['path'], r['physics']))
+        L.append('')
+    L.append('## Unknown keywords over the corpus')
+    L.append('')
+    L.append('Keyword -> number of decks that use it (the deck and its includes, scanned against '
+             '`docs/keywords.md` and the keyword registry; a keyword dynx itself reported as '
+             'unknown is marked *r*). This is the list of what to implement next, most used first.')
+    L.append('')
+    L.append('| keyword | decks | |')
+    L.append('|---|---|---|')
+    for kw, (n, rep) in tally:
+        L.append('| `*%s` | %d | %s |' % (kw, n, 'r' if rep else ''))
+    L.append('')
+    L.append('## Trend')
+    L.append('')
+    L.append(TREND_BEGIN)
+    L.append('| date | commit | decks | runs | exit-2 | wrong |')
+    L.append('|---|---|---|---|---|---|')
+    L.extend(trend)
+    L.append(TREND_END)
+    L.append('')
+    with open(DOC, 'w') as f:
+        f.write('\n'.join(L))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    ap.add_argument('--dynx', default=os.path.join(ROOT, 'bin', 'dynx'))
+    ap.add_argument('--walltime', type=int, default=30, help='cap of each real run (s)')
+    ap.add_argument('--budget', type=int, default=540,
+                    help='corpus time budget (s): past it, decks are checked but not run')
+    ap.add_argument('--out', default=os.path.join(ROOT, 'build', 'public-decks'))
+    ap.add_argument('--no-doc', action='store_true', help='do not rewrite docs/public-decks.md')
+    ap.add_argument('decks', nargs='*', help='only these index paths')
+    a = ap.parse_args()
+    if not os.access(a.dynx, os.X_OK):
+        print('public_decks: %s not found (make all first)' % a.dynx, file=sys.stderr)
+        return 2
+    names = known_keywords()
+    decks = read_index()
+    if a.decks:
+        decks = [d for d in decks if d['path'] in a.decks]
+    t0 = time.time()
+    results = []
+    print('%-58s %-7s %-6s  %s' % ('deck', 'expect', 'class', 'reason'))
+    for d in decks:
+        r = classify(d, names, a.dynx, a.out, a.walltime, time.time() - t0 < a.budget)
+        results.append(r)
+        print('%-58s %-7s %-6s  %s' % (d['path'][-58:], d['expected'], r['cls'], r['why'][:150]),
+              flush=True)
+        if r['physics']:
+            print('%-58s %-7s %-6s  physics: %s' % ('', '', '', r['physics']), flush=True)
+    elapsed = time.time() - t0
+    tally = {}
+    for r in results:
+        for kw in set(r['scan_unknown']) | set(r['dynx_unknown']):
+            n, rep = tally.get(kw, (0, False))
+            tally[kw] = (n + 1, rep or kw in r['dynx_unknown'])
+    tally = sorted(tally.items(), key=lambda kv: (-kv[1][0], kv[0]))
+    counts = {c: sum(1 for r in results if r['cls'] == c) for c in ('runs', 'exit-2', 'wrong')}
+    print('\n%d decks: %d runs, %d exit-2, %d wrong (%.0f s)' % (
+        len(results), counts['runs'], counts['exit-2'], counts['wrong'], elapsed))
+    print('unknown keywords (decks): ' + ', '.join('*%s %d' % (k, v[0]) for k, v in tally[:25]))
+    sources = {d['path'].split('/')[0] for d in decks}
+    if not a.no_doc and not a.decks:
+        commit = sh(['git', 'rev-parse', '--short', 'HEAD'], ROOT)
+        if sh(['git', 'status', '--porcelain', '--untracked-files=no', '--', 'src'], ROOT):
+            commit += '+dirty-src'
+        date = datetime.datetime.utcnow().strftime('%Y-%m-%d %H:%M UTC')
+        write_doc(results, tally, commit, date, elapsed, sources)
+        print('wrote %s' % os.path.relpath(DOC, ROOT))
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
