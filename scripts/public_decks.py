@@ -349,6 +349,10 @@ def classify(deck, names, dynx, outroot, walltime, allow_run):
     return r
 
 
+def matches(r):
+    return {'run': 'runs', 'exit2': 'exit-2'}.get(r['deck']['expected']) == r['cls']
+
+
 def md_escape(s):
     return s.replace('|', '\\|').replace('\n', ' ')
 
@@ -382,6 +386,10 @@ def write_doc(results, tally, commit, date, elapsed, sources):
     L.append('')
     L.append('**Tally: %d runs, %d exit-2, %d wrong** (of %d decks from %d sources).'
              % (counts['runs'], counts['exit-2'], counts['wrong'], len(results), len(sources)))
+    exp_run = [r for r in results if r['deck']['expected'] == 'run']
+    L.append('Decks whose physics dynx has (expected `run`): %d, running: %d. A class that '
+             'differs from the expected one is marked with a `!`.'
+             % (len(exp_run), sum(1 for r in exp_run if r['cls'] == 'runs')))
     L.append('')
     L.append('| deck | writer | expected | class | strict `--check` (first message) | '
              'with `--ignore-unknown` | unknown keywords (scan) |')
@@ -390,7 +398,8 @@ def write_doc(results, tally, commit, date, elapsed, sources):
         d = r['deck']
         scan = 'exit %s: %s' % (r['scan_rc'], r['scan_msg']) if r['scan_rc'] else 'reads'
         L.append('| `%s` | %s | %s | **%s** | %s | %s | %d |' % (
-            d['path'], d['writer'], d['expected'], r['cls'], md_escape(r['why'][:200]),
+            d['path'], d['writer'], d['expected'], r['cls'] + ('' if matches(r) else ' !'),
+            md_escape(r['why'][:200]),
             md_escape(scan[:160]), len(r['scan_unknown'])))
     L.append('')
     phys = [r for r in results if r['physics']]
@@ -446,7 +455,8 @@ def main():
     for d in decks:
         r = classify(d, names, a.dynx, a.out, a.walltime, time.time() - t0 < a.budget)
         results.append(r)
-        print('%-58s %-7s %-6s  %s' % (d['path'][-58:], d['expected'], r['cls'], r['why'][:150]),
+        print('%-58s %-7s %-7s %s' % (d['path'][-58:], d['expected'],
+                                       r['cls'] + ('' if matches(r) else '!'), r['why'][:150]),
               flush=True)
         if r['physics']:
             print('%-58s %-7s %-6s  physics: %s' % ('', '', '', r['physics']), flush=True)
