@@ -132,6 +132,7 @@ def deck_keywords(path, seen=None, paths=None, main_dir=None, found=None):
     for line in lines:
         if line.startswith('*'):
             cur = line[1:].split()[0].upper() if line[1:].split() else ''
+            cur = re.sub(r'^(CASE_(BEGIN|END))_\d+$', r'\1', cur)   # *CASE_BEGIN_n: one keyword
             kws.append(cur)
             continue
         if not line.strip() or line.startswith('$') or cur is None:
@@ -156,13 +157,16 @@ def deck_keywords(path, seen=None, paths=None, main_dir=None, found=None):
 
 
 def run(cmd, cwd, timeout):
+    """Run cmd in its own process group; on timeout kill the whole group (a hang)."""
     t0 = time.time()
+    p = subprocess.Popen(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                         universal_newlines=True, errors='replace', start_new_session=True)
     try:
-        p = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                           universal_newlines=True, errors='replace', timeout=timeout)
-        return p.returncode, p.stdout, time.time() - t0
-    except subprocess.TimeoutExpired as e:
-        out = e.stdout if isinstance(e.stdout, str) else (e.stdout or b'').decode('utf8', 'replace')
+        out, _ = p.communicate(timeout=timeout)
+        return p.returncode, out, time.time() - t0
+    except subprocess.TimeoutExpired:
+        os.killpg(p.pid, 9)
+        out, _ = p.communicate()
         return None, out, time.time() - t0
 
 
