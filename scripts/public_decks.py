@@ -419,10 +419,22 @@ def write_doc(results, tally, commit, date, elapsed, sources):
              '`docs/keywords.md` and the keyword registry; a keyword dynx itself reported as '
              'unknown is marked *r*). This is the list of what to implement next, most used first.')
     L.append('')
-    L.append('| keyword | decks | |')
+    L.append('| keyword | decks | reported by dynx |')
     L.append('|---|---|---|')
     for kw, (n, rep) in tally:
         L.append('| `*%s` | %d | %s |' % (kw, n, 'r' if rep else ''))
+    L.append('')
+    fam = {}
+    for kw, (n, rep) in tally:
+        f = kw.split('_')[0]
+        fam.setdefault(f, [0, 0])
+        fam[f][0] += 1
+    for r in results:
+        for f in {k.split('_')[0] for k in set(r['scan_unknown']) | set(r['dynx_unknown'])}:
+            fam[f][1] += 1
+    L.append('By family (distinct unknown keywords; decks using at least one of them): ' +
+             ', '.join('%s %d/%d' % (f, v[0], v[1])
+                       for f, v in sorted(fam.items(), key=lambda kv: (-kv[1][1], kv[0]))) + '.')
     L.append('')
     L.append('## Trend')
     L.append('')
