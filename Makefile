@@ -162,6 +162,7 @@ studies: deps
 
 # each deck of tests/public/index.tsv: --check, a --walltime-capped run, a physics check
 public-decks: all
+	@/usr/bin/python3 scripts/public_decks.py --self-test
 	@/usr/bin/python3 scripts/public_decks.py
 
 clean:

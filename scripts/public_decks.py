@@ -39,7 +39,12 @@ Physics check of a deck that runs (tolerances and where they come from):
 - No glstat: displacements in d3plot.h5 finite.
 
 Output: a table on stdout and the generated docs/public-decks.md (date, commit, table, unknown
-keyword tally, trend over runs). Not part of `make test`; the total run takes a few minutes.
+keyword tally, trend over runs). Not part of `make test`; the total run takes a few minutes at
+most (each real run is capped; past --budget seconds decks are only checked).
+
+`--self-test` runs the classifier against stub dynx programs (a crash, a hang, an exit 2 that
+names a symptom, a blow-up, a loaded model with zero energy, an unloaded model that moves...)
+and fails if any verdict is not the expected one; `make public-decks` runs it first.
 """
 import argparse
 import datetime
@@ -292,7 +297,7 @@ def physics_check(outdir, loaded):
     return True, '; '.join(notes)
 
 
-def classify(deck, names, dynx, outroot, walltime, allow_run):
+def classify(deck, names, dynx, outroot, walltime, allow_run, grace=60):
     path = os.path.join(CORPUS, deck['path'])
     cwd = os.path.dirname(path)
     slug = deck['path'].replace('/', '__').rsplit('.', 1)[0]
@@ -336,10 +341,10 @@ def classify(deck, names, dynx, outroot, walltime, allow_run):
         return r
     rdir = os.path.join(out, 'run')
     rc, txt, dt = run([dynx, '-i', path, '-o', rdir, '--walltime', str(walltime)], cwd,
-                      walltime + 60)
+                      walltime + grace)
     r['run_rc'], r['run_s'] = rc, dt
     if rc is None:
-        r['cls'], r['why'] = 'wrong', 'hang: no exit %d s after the --walltime cap' % 60
+        r['cls'], r['why'] = 'wrong', 'hang: no exit %d s after the --walltime cap' % grace
     elif rc in (0, 5):
         ok, note = physics_check(rdir, loaded)
         r['physics'] = note
@@ -448,6 +453,66 @@ def write_doc(results, tally, commit, date, elapsed, sources):
         f.write('\n'.join(L))
 
 
+STUB = r"""#!/usr/bin/python3
+import os, sys, time, signal
+mode = os.environ['PUBLIC_DECKS_STUB']
+a = sys.argv[1:]
+out = a[a.index('-o') + 1]
+if '--check' in a:
+    if mode == 'unknown':
+        print('dynx: error: deck.k:3: unknown keyword *FOO'); sys.exit(2)
+    if mode == 'symptom':
+        print('dynx: error: deck.k: deck has no elements (no *ELEMENT_SOLID cards)'); sys.exit(2)
+    sys.exit(0)
+if mode == 'crash':
+    os.kill(os.getpid(), signal.SIGSEGV)
+if mode == 'hang':
+    time.sleep(1000)
+os.makedirs(out, exist_ok=True)
+ratio = {'good': 1.0, 'blowup': 1.5, 'moving': 1.0, 'zero': 0.0}[mode]
+ke = 0.0 if mode in ('good', 'zero') else 2.0
+tot = 0.0 if mode == 'zero' else 5.0
+with open(os.path.join(out, 'glstat'), 'w') as f:
+    f.write('# glstat stub\n')
+    for i in range(3):
+        f.write(' '.join(['%.6e' % (i * 1e-3), str(i)] + ['%.6e' % v for v in
+                (1e-4, ke, tot - ke, 0.0, 0.0, 0.0, tot, ratio, 0.0, 0.0, 0.0, 0.0)]) + '\n')
+sys.exit(0)
+"""
+
+
+def self_test(names):
+    """The classifier against stub dynx programs (crash, hang, symptom, blow-up...): every
+    class and every physics-check verdict is exercised; exit 1 if one comes out wrong."""
+    import tempfile
+    tmp = tempfile.mkdtemp(prefix='public_decks_selftest_')
+    stub = os.path.join(tmp, 'dynx')
+    with open(stub, 'w') as f:
+        f.write(STUB)
+    os.chmod(stub, 0o755)
+    unloaded = {'path': 'lspp-mcp/impact.k', 'expected': 'run'}
+    loaded = {'path': 'pydyna/run/case-keywords/projectile.k', 'expected': 'run'}
+    cases = [('unknown', unloaded, 'exit-2'), ('symptom', unloaded, 'wrong'),
+             ('crash', unloaded, 'wrong'), ('hang', unloaded, 'wrong'),
+             ('good', unloaded, 'runs'), ('moving', unloaded, 'wrong'),
+             ('good', loaded, 'runs'),     # loaded deck, energy 5 conserved (ratio 1)
+             ('blowup', loaded, 'wrong'), ('zero', loaded, 'wrong'), ('moving', loaded, 'runs')]
+    bad = 0
+    for mode, deck, want in cases:
+        os.environ['PUBLIC_DECKS_STUB'] = mode
+        r = classify(deck, names, stub, os.path.join(tmp, mode), 1, True, grace=2)
+        got = r['cls']
+        ok = got == want
+        bad += not ok
+        print('self-test %-8s %-38s want %-6s got %-6s %s' % (
+            mode, deck['path'], want, got, 'ok' if ok else 'FAIL: ' + r['why']))
+    del os.environ['PUBLIC_DECKS_STUB']
+    import shutil
+    shutil.rmtree(tmp, ignore_errors=True)
+    print('self-test: %d of %d cases as expected' % (len(cases) - bad, len(cases)))
+    return 1 if bad else 0
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     ap.add_argument('--dynx', default=os.path.join(ROOT, 'bin', 'dynx'))
@@ -456,8 +521,12 @@ def main():
                     help='corpus time budget (s): past it, decks are checked but not run')
     ap.add_argument('--out', default=os.path.join(ROOT, 'build', 'public-decks'))
     ap.add_argument('--no-doc', action='store_true', help='do not rewrite docs/public-decks.md')
+    ap.add_argument('--self-test', action='store_true',
+                    help='check the classifier against stub dynx programs, then exit')
     ap.add_argument('decks', nargs='*', help='only these index paths')
     a = ap.parse_args()
+    if a.self_test:
+        return self_test(known_keywords())
     if not os.access(a.dynx, os.X_OK):
         print('public_decks: %s not found (make all first)' % a.dynx, file=sys.stderr)
         return 2
