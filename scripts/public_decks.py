@@ -21,7 +21,7 @@ expected outcome class):
 Classes (the issue-16 acceptance classes):
 - runs   exit 0 (normal termination) or 5 at the wall-time cap, and the physics check passes;
 - exit-2 exit 2 with a message that names the unsupported keyword/option, or the deck's own defect
-         (a missing include file);
+         (a missing include file, an undefined id, a value overflowing its field);
 - wrong  a crash (any other exit code or a signal), a hang (outer timeout), exit 2 whose message
          does not name a missing feature (a reader defect or a symptom), exit 3 (numerical failure)
          on a deck LS-DYNA runs, or exit 0 with a failed physics check (nonsense energies).
@@ -62,8 +62,10 @@ DOC = os.path.join(ROOT, 'docs', 'public-decks.md')
 TREND_BEGIN = '<!-- trend-begin -->'
 TREND_END = '<!-- trend-end -->'
 LOAD_PREFIXES = ('INITIAL_VELOCITY', 'LOAD_', 'BOUNDARY_PRESCRIBED_MOTION', 'CASE')
-NAMING = re.compile(r'unknown keyword|not supported|unsupported|not implemented|'
-                    r'cannot open|no such file|not found|does not exist|overflows its', re.I)
+# an exit-2 message that names what is missing: an unsupported keyword or option, or (in the
+# strict read, where every keyword is known) the deck's own defect
+NAMING = re.compile(r'unknown keyword|not supported|unsupported|not implemented|cannot open|'
+                    r'no such file|not found|does not exist|overflows its|is not defined', re.I)
 
 
 def sh(cmd, cwd=None):
@@ -391,7 +393,7 @@ def write_doc(results, tally, commit, date, elapsed, sources):
     L.append('')
     L.append('Classes: **runs** = exit 0 or stopped at the `--walltime` cap (exit 5) with the '
              'physics check passed; **exit-2** = stops with exit 2 naming the unsupported keyword or '
-             'option (or the deck\'s own missing include); **wrong** = crash, hang, exit 2 whose '
+             'option (or the deck\'s own defect: a missing include, an undefined id); **wrong** = crash, hang, exit 2 whose '
              'message does not name a missing feature, exit 3, or exit 0 with a failed physics '
              'check. The real run is capped with dynx\'s own `--walltime` (no end-time option '
              'exists); an outer timeout 60 s later catches hangs.')
