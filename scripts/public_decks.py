@@ -237,7 +237,24 @@ def h5_values(h5, dset):
 
 
 def physics_check(outdir, loaded):
-    """(ok, text) for a deck that ran."""
+    """(ok, text) for a deck that ran: every output directory under outdir that holds a glstat
+    or a d3plot.h5 is checked (a deck with *CASE may write one directory per case)."""
+    dirs = sorted(d for d, _, files in os.walk(outdir) if 'glstat' in files or 'd3plot.h5' in files)
+    if not dirs:
+        return False, 'no glstat and no d3plot.h5 to check'
+    notes = []
+    for d in dirs:
+        ok, note = physics_check_dir(d, loaded)
+        rel = os.path.relpath(d, outdir)
+        note = note if rel == '.' else '%s: %s' % (rel, note)
+        if not ok:
+            return False, note
+        notes.append(note)
+    return True, ' | '.join(notes)
+
+
+def physics_check_dir(outdir, loaded):
+    """(ok, text) for one output directory."""
     g = os.path.join(outdir, 'glstat')
     notes = []
     if os.path.isfile(g):
