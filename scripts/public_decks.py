@@ -85,7 +85,7 @@ def read_index():
 
 
 def known_keywords():
-    """Keywords dynx documents or registers: (exact names, prefixes such as MAT_ families)."""
+    """Keyword names dynx documents (docs/keywords.md headings) or registers (src/deck)."""
     names = set()
     with open(os.path.join(ROOT, 'docs', 'keywords.md')) as f:
         for line in f:
