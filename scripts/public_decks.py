@@ -106,6 +106,15 @@ def known_keywords():
             if fn == 'dx_deck_cards.f90':   # structure keywords the card reader handles itself
                 names.update(re.findall(r"case \('([A-Z_]+)'\)", text))
                 names.update(re.findall(r"name [=/]= '([A-Z_]+)'", text))
+    # material and EOS keywords come from the model registry rows, with their *MAT_nnn aliases
+    for fn in ('dx_mat_factory.f90',):
+        fp = os.path.join(ROOT, 'src', 'materials', fn)
+        if os.path.isfile(fp):
+            with open(fp, errors='replace') as f:
+                for kind, name, num in re.findall(r"(mat|eos)_row\('([A-Z0-9_]+)',\s*(\d+)",
+                                                  f.read()):
+                    names.add(name)
+                    names.add('%s_%03d' % (kind.upper(), int(num)))
     return names
 
 
