@@ -368,7 +368,7 @@ def classify(deck, names, dynx, outroot, walltime, allow_run, grace=60):
         r['cls'], r['why'] = 'wrong', '--check exit %s: %s' % (rc, r['check_msg'])
         return r
     if not allow_run:
-        r['cls'], r['why'] = 'wrong', 'checked, run skipped (corpus time budget spent)'
+        r['cls'], r['why'] = 'unrun', 'checked; run skipped: the corpus time budget is spent'
         return r
     rdir = os.path.join(out, 'run')
     rc, txt, dt = run([dynx, '-i', path, '-o', rdir, '--walltime', str(walltime)], cwd,
@@ -594,8 +594,10 @@ def main():
             tally[kw] = (n + 1, rep or kw in r['dynx_unknown'])
     tally = sorted(tally.items(), key=lambda kv: (-kv[1][0], kv[0]))
     counts = {c: sum(1 for r in results if r['cls'] == c) for c in ('runs', 'exit-2', 'wrong')}
-    print('\n%d decks: %d runs, %d exit-2, %d wrong (%.0f s)' % (
-        len(results), counts['runs'], counts['exit-2'], counts['wrong'], elapsed))
+    unrun = sum(1 for r in results if r['cls'] == 'unrun')
+    print('\n%d decks: %d runs, %d exit-2, %d wrong%s (%.0f s)' % (
+        len(results), counts['runs'], counts['exit-2'], counts['wrong'],
+        ', %d not run (time budget)' % unrun if unrun else '', elapsed))
     print('unknown keywords (decks): ' + ', '.join('*%s %d' % (k, v[0]) for k, v in tally[:25]))
     sources = {d['path'].split('/')[0] for d in decks}
     if not a.no_doc and not a.decks:
