@@ -483,6 +483,17 @@ def write_doc(results, tally, commit, date, elapsed, sources):
         for r in phys:
             L.append('- `%s`: %s' % (r['deck']['path'], r['physics']))
         L.append('')
+    L.append('## Sources')
+    L.append('')
+    L.append('| directory | repository | licence | decks |')
+    L.append('|---|---|---|---|')
+    for src in sorted(sources):
+        rows = [r['deck'] for r in results if r['deck']['path'].split('/')[0] == src]
+        m = re.match(r'(https://github\.com/[^/]+/[^/]+)', rows[0]['source'])
+        L.append('| `%s/` | %s | %s | %d |' % (src, m.group(1) if m else rows[0]['source'],
+                                               ', '.join(sorted({d['licence'] for d in rows})),
+                                               len(rows)))
+    L.append('')
     L.append('## Unknown keywords over the corpus')
     L.append('')
     L.append('Keyword -> number of decks that use it (the deck and its includes, scanned against '
