@@ -490,6 +490,25 @@ def write_doc(results, tally, commit, date, elapsed, sources):
         for r in phys:
             L.append('- `%s`: %s' % (r['deck']['path'], r['physics']))
         L.append('')
+    blockers = {}
+    for r in results:
+        if r['scan_rc'] and r['scan_rc'] != 0:
+            key = re.sub(r'^\S+?:\d+(:\d+)?: ', '', r['scan_msg'])
+            key = re.sub(r'^\S+\.k: ', '', key)
+            key = re.sub(r"'[^']*'", "'...'", re.sub(r'\b\d+\b', 'N', key))[:140]
+            blockers.setdefault(key, []).append(r['deck']['path'].split('/')[-1])
+    if blockers:
+        L.append('## What stops the decks once unknown keywords are skipped')
+        L.append('')
+        L.append('The first error of `--check --ignore-unknown` (numbers replaced by N), with the '
+                 'decks it stops: reader defects and unsupported options to fix after the '
+                 'keywords above.')
+        L.append('')
+        L.append('| message | decks |')
+        L.append('|---|---|')
+        for key, decks in sorted(blockers.items(), key=lambda kv: (-len(kv[1]), kv[0])):
+            L.append('| %s | %d: %s |' % (md_escape(key), len(decks), ', '.join(decks)))
+        L.append('')
     L.append('## Sources')
     L.append('')
     L.append('| directory | repository | licence | decks |')
