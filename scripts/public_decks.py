@@ -94,23 +94,21 @@ def read_index():
 def known_keywords():
     """Keyword names dynx documents (docs/keywords.md headings) or registers (src/deck)."""
     names = set()
+
+    def add_cell(text):
+        """`*X_A`, `_B` in a heading or a first table cell: *X_A and *X_B."""
+        full = re.findall(r'`\*([A-Z0-9_]+)`', text)
+        names.update(full)
+        for opt in re.findall(r'`(_[A-Z0-9_]+)`', text):
+            if full and opt not in ('_TITLE', '_ID'):
+                names.add(full[0].rsplit('_', 1)[0] + opt)
+
     with open(os.path.join(ROOT, 'docs', 'keywords.md')) as f:
-        section = ''
         for line in f:
-            if line.startswith('## '):
-                section = line
-            if 'Keyword index' in section and line.startswith('| `*'):
-                # the keyword index (one row per keyword dynx reads, checked against the
-                # registry by scripts/check_keywords_doc.py): the first cell's names
-                names.update(re.findall(r'`\*([A-Z0-9_]+)`', line.split('|')[1]))
             if line.startswith('#'):
-                for tok in re.findall(r'`\*([A-Z0-9_]+)`', line):
-                    names.add(tok)
-                base = re.findall(r'`\*([A-Z0-9_]+)`', line)
-                for opt in re.findall(r'`(_[A-Z0-9_]+)`', line):   # `*X_NODE`, `_SET`
-                    if base and opt not in ('_TITLE', '_ID'):
-                        stem = base[0].rsplit('_', 1)[0]
-                        names.add(stem + opt)
+                add_cell(line)
+            elif line.startswith('| `*'):      # a table row whose first cell names keywords
+                add_cell(line.split('|')[1])
     srcdir = os.path.join(ROOT, 'src', 'deck')
     for fn in os.listdir(srcdir):
         if fn.endswith('.f90'):
@@ -377,6 +375,8 @@ def classify(deck, names, dynx, outroot, walltime, allow_run, grace=60):
     # grouped --check listing names (the form the complete --check list of issue 16 may take)
     named = set(re.findall(r'\*([A-Za-z][A-Za-z0-9_\-]+)', txt + txt2)) & set(scan_unknown)
     r['dynx_unknown'] = sorted(reported_unknown(txt) | reported_unknown(txt2) | named)
+    # keywords dynx reads but does not honour (its notes: '*X ... accepted: dynx does not ...')
+    r['accepted'] = sorted(set(re.findall(r'\*([A-Z][A-Z0-9_]+)[^\n*]*\baccepted\b', txt + txt2)))
     r['physics'] = ''
     if rc is None:
         r['cls'], r['why'] = 'wrong', 'hang: --check did not finish in 120 s'
@@ -489,6 +489,15 @@ def write_doc(results, tally, commit, date, elapsed, sources):
         L.append('')
         for r in phys:
             L.append('- `%s`: %s' % (r['deck']['path'], r['physics']))
+        L.append('')
+    acc = {}
+    for r in results:
+        for kw in r.get('accepted', []):
+            acc[kw] = acc.get(kw, 0) + 1
+    if acc:
+        L.append('Read but not honoured (dynx accepts the request with a note, e.g. an output file '
+                 'it does not write): ' + ', '.join('`*%s` %d' % (k, n) for k, n in
+                                                    sorted(acc.items(), key=lambda kv: (-kv[1], kv[0]))) + '.')
         L.append('')
     blockers = {}
     for r in results:
