@@ -108,8 +108,7 @@ contains
          if (checking) then
             call found%add('', inp%out_notes(k)%s, inp%out_notes(k)%where)
          else
-            call log_info('dynx: note: '//inp%out_notes(k)%where//': '// &
-                          inp%out_notes(k)%s//' (accepted; dynx does not write this file)')
+            call log_info('dynx: note: '//inp%out_notes(k)%where//': '//inp%out_notes(k)%s)
          end if
       end do
       if (checking) then

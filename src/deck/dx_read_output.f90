@@ -55,17 +55,34 @@ contains
       end do
    end subroutine register_output
 
-   !> Note that the request of blk for file fname is accepted and not written.
-   subroutine add_out_note(deck, blk, inp, fname)
+   !> Note that the request of blk is accepted and not honoured: what (a file name, by
+   !> default 'dynx does not write <what>'), why (the reason when given).
+   subroutine add_out_note(deck, blk, inp, what, why)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
-      character(*), intent(in) :: fname
+      character(*), intent(in) :: what
+      character(*), intent(in), optional :: why
       type(out_note_t) :: n
-      n%s = fname//' (*'//blk%name//')'
+      if (present(why)) then
+         n%s = '*'//blk%name//' '//what//' accepted: '//why
+      else
+         n%s = '*'//blk%name//' accepted: dynx does not write '//what
+      end if
       n%where = deck%files(blk%ifile)%s//':'//str(blk%line)
       inp%out_notes = [inp%out_notes, n]
    end subroutine add_out_note
+
+   !> x as written in a note: an integral value without exponent
+   function num(x) result(t)
+      real(wp), intent(in) :: x
+      character(:), allocatable :: t
+      if (x == anint(x) .and. abs(x) < 1.0e9_wp) then
+         t = str(nint(x))
+      else
+         t = rstr(x)
+      end if
+   end function num
 
    !> A flag field NAME with allowed values lo..hi (0 = the default); ok otherwise
    subroutine flag(c, name, lo, hi, v)
@@ -283,14 +300,14 @@ contains
             if (len_trim(names(k, ic)) == 0) exit
             call c%real(trim(names(k, ic)), 0.0_wp, r)
             if (c%ok() .and. r /= 0.0_wp .and. r /= defs(k, ic)) &
-               nondef = nondef//' '//trim(names(k, ic))//'='//rstr(r)
+               nondef = nondef//' '//trim(names(k, ic))//'='//num(r)
          end do
          call c%next()
       end do
       call c%done(error)
       if (allocated(error)) return
-      if (len(nondef) > 0) call add_out_note(deck, blk, inp, 'd3plot extent'//nondef// &
-         ': d3plot.h5 holds the fields of docs/output-format.md')
+      if (len(nondef) > 0) call add_out_note(deck, blk, inp, nondef(2:), 'not honoured, '// &
+         'd3plot.h5 holds the fields of docs/output-format.md')
    end subroutine read_extent_binary
 
    !> IFORM (0 LS-DYNA d3plot, 1 ANSYS, 2 both) IBINARY (0 32-bit words, 1 64-bit): dynx
@@ -309,8 +326,8 @@ contains
       call flag(c, 'IBINARY', 0, 1, ibin)
       call c%done(error)
       if (allocated(error)) return
-      if (iform > 0) call add_out_note(deck, blk, inp, 'ANSYS result file (IFORM='// &
-                                       str(iform)//')')
+      if (iform > 0) call add_out_note(deck, blk, inp, 'IFORM='//str(iform), 'dynx does '// &
+                                       'not write the ANSYS result file (only d3plot.h5)')
    end subroutine read_db_format
 
    !> *DATABASE_<file>: DT BINARY LCUR IOOPT (ELOUT: OPTION1-4, history variables). DT = 0
