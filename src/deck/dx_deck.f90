@@ -8,7 +8,7 @@ module dx_deck
    use dx_strings, only: str
    use dx_log, only: log_warn, log_info
    use dx_deck_check, only: check_list_t, keyword_family, keyword_skippable
-   use dx_deck_cards, only: deck_t, read_cards
+   use dx_deck_cards, only: deck_t, read_cards, data_start
    use dx_deck_registry, only: registry_t
    use dx_read_nodes_elements, only: register_nodes_elements
    use dx_read_materials, only: register_materials, unknown_model_hint
@@ -19,7 +19,7 @@ module dx_deck
    use dx_read_rigid, only: register_rigid
    use dx_read_contact, only: register_contact
    use dx_read_restart, only: register_restart
-   use dx_read_emc, only: register_emc
+   use dx_read_emc, only: register_emc, emc_finish
    use dx_read_output, only: register_output
    use dx_model_input, only: model_input_t, input_init, input_finish
    implicit none
@@ -97,6 +97,14 @@ contains
                return
             end if
             call reg%e(k)%read(deck, blk, inp, error)
+            ! a blank line standing for the first data card is a card of defaults
+            ! (LS-DYNA): read again with it when the block had no data card else (the
+            ! reader stopped at the missing card before it read anything)
+            if (allocated(error) .and. blk%n < data_start(blk) .and. deck%trailing(ib) > 0) then
+               deallocate(error)
+               blk%n = min(data_start(blk), blk%n + deck%trailing(ib))
+               call reg%e(k)%read(deck, blk, inp, error)
+            end if
             if (allocated(error)) then
                if (.not. checking) return
                call add_reader_error(found, blk%name, error%message, where)
@@ -127,6 +135,7 @@ contains
          inp%files(k)%s = deck%files(k)%s
       end do
       if (allocated(deck%title)) inp%title = deck%title
+      call emc_finish(inp, error)
    end subroutine read_deck_input
 
    !> A reader's error as a --check finding: its first line without the file:line:col
