@@ -13,7 +13,7 @@ module dx_deck
    use dx_read_nodes_elements, only: register_nodes_elements
    use dx_read_materials, only: register_materials, unknown_model_hint
    use dx_read_controls, only: register_controls
-   use dx_read_sets, only: register_sets
+   use dx_read_sets, only: register_sets, sets_finish
    use dx_read_loads, only: register_loads
    use dx_read_curves, only: register_curves
    use dx_read_rigid, only: register_rigid
@@ -135,6 +135,8 @@ contains
          inp%files(k)%s = deck%files(k)%s
       end do
       if (allocated(deck%title)) inp%title = deck%title
+      call sets_finish(inp, error)
+      if (allocated(error)) return
       call emc_finish(inp, error)
    end subroutine read_deck_input
 
