@@ -9,7 +9,8 @@
 !>   *CONTROL_ACCURACY OSU INN PIDOSU IACC EXACC
 !>   *CONTROL_OUTPUT (5 cards of print and output flags)
 !>   *CONTROL_SOLUTION SOLN NLQ ISNAN LCINT LCACC NCDCF NOCOP
-!>   *CONTROL_PARALLEL NCPU NUMRHS CONST PARA; *CONTROL_MPP_IO_NODUMP; *CONTROL_UNITS
+!>   *CONTROL_PARALLEL NCPU NUMRHS CONST PARA; *CONTROL_MPP_IO_NODUMP; *CONTROL_UNITS;
+!>   *KEYWORD_ID (deck labels)
 !>   *DATABASE_EXTENT_BINARY (4 cards), *DATABASE_FORMAT IFORM IBINARY
 !>   *DATABASE_<ascii> DT BINARY LCUR IOOPT (ELOUT: + OPTION1-4) for the ASCII files dynx
 !>     does not write (elout, sleout, spcforc, bndout, jntforc, deforc, ncforc, nodfor,
@@ -50,6 +51,7 @@ contains
       call reg%add('DATABASE_FORMAT', read_db_format)
       call reg%add('DATABASE_BINARY_D3THDT', read_d3thdt)
       call reg%add('DATABASE_BINARY_D3PROP', read_d3prop)
+      call reg%add('KEYWORD_ID', read_keyword_id)
       do i = 1, size(ASCII_NOT_WRITTEN)
          call reg%add('DATABASE_'//trim(ASCII_NOT_WRITTEN(i)), read_ascii_not_written)
       end do
@@ -397,4 +399,16 @@ contains
       if (allocated(error)) return
       call add_out_note(deck, blk, inp, 'd3prop')
    end subroutine read_d3prop
+   !> *KEYWORD_ID: card 1 PROJECT NUM STAGE (labels of the deck, LS-DYNA R12+): a name
+   !> for the model, nothing the analysis uses; at most one card.
+   subroutine read_keyword_id(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      type(card_t) :: c
+      call deck_cursor(deck, blk, c)
+      call c%max_cards(1)
+      call c%done(error)
+   end subroutine read_keyword_id
 end module dx_read_output
