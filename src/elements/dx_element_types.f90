@@ -29,6 +29,8 @@ module dx_element_types
    public :: MAX_NEN, MAX_FACE_NODES, MAX_FACES
    public :: ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, etype_of_elform, ETYPES
    public :: solid_shape
+   public :: ES_WORK, ES_HGS, ES_PHIM, MAX_ES, ES_NAMES, ES_DUMP
+   public :: WORK_Q, WORK_QBV, WORK_DT, WORK_PN
 
    !> element types (the block's etype): LS-DYNA's *SECTION_SOLID ELFORM numbers
    integer, parameter :: ETYPE_HEX8_1PT = 1   !< one-point, uniform strain, hourglass control
@@ -44,6 +46,22 @@ module dx_element_types
    !> element error codes of a block pass
    integer, parameter :: ELEM_ERR_NEGVOL = 1, ELEM_ERR_MATERIAL = 2
 
+   !> Family state: one array es(nel, nes) per block (as hv is for the material), made of
+   !> named slots; a family lists the columns of each slot it has (family_t%es_ncol, 0: none)
+   !> and a block holds the slots it uses (elem_block_t%esc: first column, 0 = absent), so a
+   !> block pays only for what its part uses. Slot ids:
+   integer, parameter :: ES_HGS = 1    !< hourglass resisting forces (3, hgmodes) (IHQ 4, 5)
+   integer, parameter :: ES_WORK = 2   !< pending terms of the centred work (offsets WORK_*)
+   integer, parameter :: ES_PHIM = 3   !< own-mass share of the element dt bound (set-up)
+   integer, parameter :: MAX_ES = 3
+   !> restart dataset of each slot (the columns in order, flat; ES_DUMP: phim is derived at
+   !> start, not dumped); dumps write the slots in id order
+   character(8), parameter :: ES_NAMES(MAX_ES) = [character(8) :: 'hgs', 'ework', 'phim']
+   logical, parameter :: ES_DUMP(MAX_ES) = [.true., .true., .false.]
+   !> column offsets inside ES_WORK (dx_hex8's centred_work: q, q B.v, dt, sigma:D V of the
+   !> last pass)
+   integer, parameter :: WORK_Q = 0, WORK_QBV = 1, WORK_DT = 2, WORK_PN = 3
+
    !> one family: the facts its consumers need
    type :: family_t
       character(8) :: name = ''            !< plot connectivity dataset /mesh/<name>
@@ -57,6 +75,7 @@ module dx_element_types
       integer :: edges(2, 12) = 0                       !< local edge end nodes
       real(wp) :: mass_share = 0.0_wp      !< lumped mass of each node: rho V0 * mass_share
       integer :: weight = 1                !< partition cost weight (measured ns/element-cycle)
+      integer :: es_ncol(MAX_ES) = 0       !< columns of each family-state slot (0: none)
    end type family_t
 
    !> results of one block pass
@@ -97,6 +116,7 @@ contains
          f%edges(:, 1:12) = HEX_EDGES
          f%mass_share = 0.125_wp
          f%hgmodes = 4
+         f%es_ncol = [3*f%hgmodes, 4, 1]
          f%nip = 1; f%weight = 1
          ! ELFORM 2 measured at about 8x ELFORM 1 per element-cycle (docs/history.md,
          ! "Partition weights")
@@ -109,6 +129,7 @@ contains
          f%faces(:, 1:4) = TET_FACES
          f%edges(:, 1:6) = TET_EDGES
          f%mass_share = 0.25_wp
+         f%es_ncol = [0, 4, 0]
          f%nip = 1; f%weight = 1
       end select
    end function element_family

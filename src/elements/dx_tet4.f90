@@ -16,7 +16,7 @@
 module dx_tet4
    use, intrinsic :: iso_fortran_env, only: int64
    use dx_kinds, only: wp, nv_chunk, huge_wp
-   use dx_model, only: elem_block_t, part_t
+   use dx_model, only: elem_block_t, part_t, ES_WORK
    use dx_material, only: material_t
    use dx_element_types, only: block_result_t, ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL
    implicit none
@@ -72,8 +72,9 @@ contains
       real(wp) :: dtl, hdt, d1, d2, d3, d4, d5, d6
       integer :: ierr(nv_chunk)
       logical :: failed(nv_chunk)
-      integer :: i, k, n, nn
-      if (.not. allocated(blk%ework)) allocate(blk%ework(blk%nel, 4), source=0.0_wp)
+      integer :: i, k, n, nn, w
+      if (blk%esc(ES_WORK) == 0) call blk%es_add(ES_WORK, 4)
+      w = blk%esc(ES_WORK)
       n = blk%nel
       hdt = 0.5_wp*dt_old
       do k = 1, NEN
@@ -178,14 +179,14 @@ contains
          wn(i) = volm(i)*(sn(i,1)*de6(i,1) + sn(i,2)*de6(i,2) + sn(i,3)*de6(i,3) &
                  + 2.0_wp*(sn(i,4)*de6(i,4) + sn(i,5)*de6(i,5) + sn(i,6)*de6(i,6)))
       end do
-      e1(1:n) = blk%ework(1:n, 1); e2(1:n) = blk%ework(1:n, 2)
-      e3(1:n) = blk%ework(1:n, 3); e4(1:n) = blk%ework(1:n, 4)
+      e1(1:n) = blk%es(1:n, w); e2(1:n) = blk%es(1:n, w + 1)
+      e3(1:n) = blk%es(1:n, w + 2); e4(1:n) = blk%es(1:n, w + 3)
       do i = 1, n
          call centred_work(e1(i), e2(i), e3(i), e4(i), dt_old, wo(i), wn(i), q(i), vol(i), &
                            vold(i), bv(i), trd(i)*volm(i), de(i))
       end do
-      blk%ework(1:n, 1) = e1(1:n); blk%ework(1:n, 2) = e2(1:n)
-      blk%ework(1:n, 3) = e3(1:n); blk%ework(1:n, 4) = e4(1:n)
+      blk%es(1:n, w) = e1(1:n); blk%es(1:n, w + 1) = e2(1:n)
+      blk%es(1:n, w + 2) = e3(1:n); blk%es(1:n, w + 3) = e4(1:n)
       res%deint = 0.0_wp
       res%pend = 0.0_wp
       res%dehg = 0.0_wp

@@ -14,7 +14,9 @@ module dx_model
    use dx_emc_types, only: emc_system_t
    use dx_element_types, only: family_t, element_family, elem_volume, elem_moments, elem_length, &
                                etype_of_elform, solid_shape, MAX_NEN, MAX_FACE_NODES, &
-                               MAX_FACES, ETYPE_DEFAULT, ETYPES
+                               MAX_FACES, ETYPE_DEFAULT, ETYPES, ES_WORK, ES_HGS, ES_PHIM, &
+                               MAX_ES, ES_NAMES, ES_DUMP, WORK_Q, WORK_QBV, WORK_DT, &
+                               WORK_PN
    implicit none
    private
    public :: model_t, elem_block_t, part_t, section_t, hourglass_t, node_set_t, part_set_t, &
@@ -24,6 +26,9 @@ module dx_model
    !> element type (nodes, faces, edges, volume, moments, lumped mass, plot cell, weight)
    public :: family_t, element_family, elem_volume, elem_moments, elem_length, etype_of_elform, &
              solid_shape, MAX_NEN, MAX_FACE_NODES, MAX_FACES, ETYPES
+   !> the family-state slots of a block's es array (dx_element_types)
+   public :: ES_WORK, ES_HGS, ES_PHIM, MAX_ES, ES_NAMES, ES_DUMP, WORK_Q, WORK_QBV, &
+             WORK_DT, WORK_PN
 
    !> *SECTION_SOLID
    type :: section_t
@@ -71,10 +76,16 @@ module dx_model
       real(wp), allocatable :: relvol(:)     !< (nel) current V/V0
       real(wp), allocatable :: eint(:)       !< (nel) internal energy (work of stress)
       real(wp), allocatable :: ehg(:)        !< (nel) hourglass energy
-      real(wp), allocatable :: ework(:, :)   !< (nel, 4) pending terms of the centred work
-      real(wp), allocatable :: phim(:)       !< (nel) own-mass share (element dt bound)
-      real(wp), allocatable :: hgs(:, :, :)  !< (nel, 3, 4) hourglass resisting forces (IHQ 4,5)
+      !> (nel, nes) family state: the slots ES_* of the family table that this block uses
+      !> (centred-work terms, hourglass resisting forces, own-mass share), slot s in columns
+      !> esc(s) .. esc(s) + esn(s) - 1 (esc(s) = 0: absent)
+      real(wp), allocatable :: es(:, :)
+      integer :: esc(MAX_ES) = 0
+      integer :: esn(MAX_ES) = 0
       logical, allocatable :: failed(:)      !< (nel) eroded elements carry no force
+   contains
+      procedure :: es_add => block_es_add
+      procedure :: es_drop => block_es_drop
    end type elem_block_t
 
    type :: node_set_t
@@ -251,4 +262,48 @@ module dx_model
 
    ! keep nv_chunk visible to users of the model (block sizes)
    public :: nv_chunk
+
+contains
+
+   !> Give the block the family-state slot `slot` with ncol columns (zero), appended to es;
+   !> a slot the block has already is kept as it is.
+   subroutine block_es_add(blk, slot, ncol)
+      class(elem_block_t), intent(inout) :: blk
+      integer, intent(in) :: slot, ncol
+      real(wp), allocatable :: t(:, :)
+      integer :: nes
+      if (blk%esc(slot) > 0) return
+      nes = 0
+      if (allocated(blk%es)) nes = size(blk%es, 2)
+      allocate(t(blk%nel, nes + ncol), source=0.0_wp)
+      if (nes > 0) t(:, 1:nes) = blk%es
+      call move_alloc(t, blk%es)
+      blk%esc(slot) = nes + 1
+      blk%esn(slot) = ncol
+   end subroutine block_es_add
+
+   !> Remove the slot `slot` from the block's family state (the other slots keep their values).
+   subroutine block_es_drop(blk, slot)
+      class(elem_block_t), intent(inout) :: blk
+      integer, intent(in) :: slot
+      real(wp), allocatable :: t(:, :)
+      integer :: c, m, nes, s
+      c = blk%esc(slot)
+      if (c == 0) return
+      m = blk%esn(slot)
+      nes = size(blk%es, 2)
+      blk%esc(slot) = 0
+      blk%esn(slot) = 0
+      if (nes == m) then
+         deallocate(blk%es)
+         return
+      end if
+      allocate(t(blk%nel, nes - m))
+      t(:, 1:c - 1) = blk%es(:, 1:c - 1)
+      t(:, c:) = blk%es(:, c + m:)
+      call move_alloc(t, blk%es)
+      do s = 1, MAX_ES
+         if (blk%esc(s) > c) blk%esc(s) = blk%esc(s) - m
+      end do
+   end subroutine block_es_drop
 end module dx_model
