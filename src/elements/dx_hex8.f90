@@ -20,9 +20,9 @@
 !> k_h = QH*(K + 4G/3)*sum(B_jJ**2)/(24V) (docs/history.md, "Hourglass types").
 module dx_hex8
    use dx_kinds, only: wp, nv_chunk, huge_wp
-   use dx_model, only: elem_block_t, part_t, ES_WORK, ES_HGS, ES_PHIM
    use dx_material, only: material_t
-   use dx_element_types, only: block_result_t, HEX_ERR_NEGVOL => ELEM_ERR_NEGVOL, &
+   use dx_element_types, only: elem_block_t, part_t, ES_WORK, ES_HGS, ES_PHIM, block_result_t, &
+                               HEX_ERR_NEGVOL => ELEM_ERR_NEGVOL, &
                                HEX_ERR_MATERIAL => ELEM_ERR_MATERIAL
    use dx_solid_kernels, only: cube_roots, centred_work
    use dx_hex8_geometry, only: hex8_bvectors, hex8_bvectors_chunk, hex8_char_length, inv3, &

@@ -15,9 +15,8 @@
 !> Control", solid elements; Ansys LS-DYNA help, "Characteristic Length (LS-DYNA)").
 module dx_tet4
    use dx_kinds, only: wp, nv_chunk, huge_wp
-   use dx_model, only: elem_block_t, part_t, ES_WORK
    use dx_material, only: material_t
-   use dx_element_types, only: block_result_t, ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL
+   use dx_element_types, only: elem_block_t, part_t, ES_WORK, block_result_t, ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL
    use dx_solid_kernels, only: cube_roots, centred_work
    implicit none
    private

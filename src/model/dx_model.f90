@@ -12,16 +12,18 @@ module dx_model
    use dx_contact_types, only: contact_set_t
    use dx_run_state, only: run_state_t, restart_ctrl_t
    use dx_emc_types, only: emc_system_t
-   use dx_element_types, only: family_t, element_family, elem_volume, elem_moments, elem_length, &
+   use dx_element_types, only: elem_block_t, part_t, family_t, element_family, elem_volume, elem_moments, elem_length, &
                                etype_of_elform, solid_shape, MAX_NEN, MAX_FACE_NODES, &
                                MAX_FACES, ETYPE_DEFAULT, ETYPES, ES_WORK, ES_HGS, ES_PHIM, &
                                MAX_ES, ES_NAMES, ES_DUMP, WORK_Q, WORK_QBV, WORK_DT, &
                                WORK_PN
    implicit none
    private
-   public :: model_t, elem_block_t, part_t, section_t, hourglass_t, node_set_t, part_set_t, &
+   public :: model_t, section_t, hourglass_t, node_set_t, part_set_t, &
              segment_set_t, spc_t, prescribed_t, load_node_t, load_segment_t, rigidwall_t, &
              control_t, database_t, energy_t
+   !> the element block and the part (dx_element_types, the kernels' types; held here)
+   public :: elem_block_t, part_t
    !> the element-family table (dx_element_types): what every consumer asks of a block's
    !> element type (nodes, faces, edges, volume, moments, lumped mass, plot cell, weight)
    public :: family_t, element_family, elem_volume, elem_moments, elem_length, etype_of_elform, &
@@ -47,46 +49,6 @@ module dx_model
       real(wp) :: q1 = -1.0_wp, q2 = -1.0_wp
       real(wp) :: qb = -1.0_wp, qw = -1.0_wp
    end type hourglass_t
-
-   !> *PART with its resolved section, material and hourglass settings
-   type :: part_t
-      integer :: label = 0
-      character(:), allocatable :: title
-      integer :: secid = 0, mid = 0, eosid = 0, hgid = 0    !< labels as read
-      integer :: isec = 0, imat = 0, ihg = 0                !< dense indices (0: none)
-      integer :: ihq = 1           !< resolved hourglass type (LS-DYNA IHQ)
-      real(wp) :: qh = 0.1_wp      !< resolved hourglass coefficient
-      real(wp) :: q1 = 1.5_wp      !< resolved quadratic bulk viscosity coefficient
-      real(wp) :: q2 = 0.06_wp     !< resolved linear bulk viscosity coefficient
-   end type part_t
-
-   !> A group of at most nv_chunk elements of one part and one formulation.
-   !> State arrays have the element index first (unit stride over elements).
-   type :: elem_block_t
-      integer :: ipart = 0          !< dense part index
-      integer :: etype = ETYPE_DEFAULT   !< element type: the family table's key
-      integer :: nel = 0            !< elements in this block (<= nv_chunk)
-      integer :: nip = 1            !< integration points per element
-      integer :: nhv = 0            !< history variables per point (from the material)
-      integer, allocatable :: conn(:, :)     !< (nen, nel) dense node indices (nen: family)
-      integer, allocatable :: elem(:)        !< (nel) dense global element index
-      real(wp), allocatable :: sig(:, :, :)  !< (nel, 6, nip) Cauchy stress
-      real(wp), allocatable :: hv(:, :, :)   !< (nel, nhv, nip) material history
-      real(wp), allocatable :: vol0(:)       !< (nel) initial volume
-      real(wp), allocatable :: relvol(:)     !< (nel) current V/V0
-      real(wp), allocatable :: eint(:)       !< (nel) internal energy (work of stress)
-      real(wp), allocatable :: ehg(:)        !< (nel) hourglass energy
-      !> (nel, nes) family state: the slots ES_* of the family table that this block uses
-      !> (centred-work terms, hourglass resisting forces, own-mass share), slot s in columns
-      !> esc(s) .. esc(s) + esn(s) - 1 (esc(s) = 0: absent)
-      real(wp), allocatable :: es(:, :)
-      integer :: esc(MAX_ES) = 0
-      integer :: esn(MAX_ES) = 0
-      logical, allocatable :: failed(:)      !< (nel) eroded elements carry no force
-   contains
-      procedure :: es_add => block_es_add
-      procedure :: es_drop => block_es_drop
-   end type elem_block_t
 
    type :: node_set_t
       integer :: label = 0
@@ -262,48 +224,4 @@ module dx_model
 
    ! keep nv_chunk visible to users of the model (block sizes)
    public :: nv_chunk
-
-contains
-
-   !> Give the block the family-state slot `slot` with ncol columns (zero), appended to es;
-   !> a slot the block has already is kept as it is.
-   subroutine block_es_add(blk, slot, ncol)
-      class(elem_block_t), intent(inout) :: blk
-      integer, intent(in) :: slot, ncol
-      real(wp), allocatable :: t(:, :)
-      integer :: nes
-      if (blk%esc(slot) > 0) return
-      nes = 0
-      if (allocated(blk%es)) nes = size(blk%es, 2)
-      allocate(t(blk%nel, nes + ncol), source=0.0_wp)
-      if (nes > 0) t(:, 1:nes) = blk%es
-      call move_alloc(t, blk%es)
-      blk%esc(slot) = nes + 1
-      blk%esn(slot) = ncol
-   end subroutine block_es_add
-
-   !> Remove the slot `slot` from the block's family state (the other slots keep their values).
-   subroutine block_es_drop(blk, slot)
-      class(elem_block_t), intent(inout) :: blk
-      integer, intent(in) :: slot
-      real(wp), allocatable :: t(:, :)
-      integer :: c, m, nes, s
-      c = blk%esc(slot)
-      if (c == 0) return
-      m = blk%esn(slot)
-      nes = size(blk%es, 2)
-      blk%esc(slot) = 0
-      blk%esn(slot) = 0
-      if (nes == m) then
-         deallocate(blk%es)
-         return
-      end if
-      allocate(t(blk%nel, nes - m))
-      t(:, 1:c - 1) = blk%es(:, 1:c - 1)
-      t(:, c:) = blk%es(:, c + m:)
-      call move_alloc(t, blk%es)
-      do s = 1, MAX_ES
-         if (blk%esc(s) > c) blk%esc(s) = blk%esc(s) - m
-      end do
-   end subroutine block_es_drop
 end module dx_model
