@@ -244,15 +244,15 @@ contains
       blk%cards(blk%n)%line = lineno
    end subroutine add_card
 
-   !> Give blk's card list room for m cards, keeping its first blk%n (texts moved, not copied).
+   !> Give blk's card list room for m cards, keeping the first m stored (texts moved, not copied).
    subroutine resize_cards(blk, m)
       type(block_t), intent(inout) :: blk
       integer, intent(in) :: m
       type(card_line_t), allocatable :: t(:)
       integer :: i
       allocate(t(m))
-      do i = 1, min(blk%n, m)
-         call move_alloc(blk%cards(i)%text, t(i)%text)
+      do i = 1, min(size(blk%cards), m)     ! cards past blk%n: stripped blanks, if stored
+         if (allocated(blk%cards(i)%text)) call move_alloc(blk%cards(i)%text, t(i)%text)
          t(i)%line = blk%cards(i)%line
       end do
       call move_alloc(t, blk%cards)
@@ -312,8 +312,9 @@ contains
       case ('PARAMETER')
          call read_parameters(deck, blk, error)
       case default
-         ! kept until the deck is read: exact size, not the doubling's up to 2x slots
-         if (blk%n < size(blk%cards)) call resize_cards(blk, blk%n)
+         ! kept until the deck is read: exact size, not the doubling's up to 2x slots; the
+         ! stripped blank cards stay stored (dx_deck gives them back as cards of defaults)
+         if (blk%n + nblank < size(blk%cards)) call resize_cards(blk, blk%n + nblank)
          if (deck%nblocks == size(deck%blocks)) call grow_blocks(deck)
          deck%nblocks = deck%nblocks + 1
          call move_block(blk, deck%blocks(deck%nblocks))
