@@ -383,6 +383,17 @@ def classify(deck, names, dynx, outroot, walltime, allow_run, grace=60):
     # grouped --check listing names (the form the complete --check list of issue 16 may take)
     named = star_names(txt + txt2) & set(scan_unknown)
     r['dynx_unknown'] = sorted(reported_unknown(txt) | reported_unknown(txt2) | named)
+    # unsupported options and reader errors of known keywords: the '*X: ...' items of a grouped
+    # --check listing, else the first error of the --ignore-unknown read
+    items = set()
+    for l in (txt + '\n' + txt2).splitlines():
+        item = re.split(r'\s+first at\s', l.strip())[0].strip()
+        if item.startswith('*') and ':' in item and 'accepted' not in item:
+            items.add(item)
+    if not items and rc2 and rc2 != 0 and 'unknown keyword' not in r['scan_msg']:
+        items.add(re.sub(r'^\S+?:\d+(:\d+)?: ', '', r['scan_msg']))
+    r['option_items'] = sorted({re.sub(r"'[^']*'", "'...'", re.sub(r'\b\d+\b', 'N', i))[:160]
+                                for i in items})
     # keywords dynx reads but does not honour (its notes: '*X ... accepted: dynx does not ...')
     r['accepted'] = sorted(set(re.findall(r'\*([A-Z][A-Z0-9_]+)[^\n*]*\baccepted\b', txt + txt2)))
     r['physics'] = ''
@@ -513,17 +524,16 @@ def write_doc(results, tally, commit, date, elapsed, sources):
         L.append('')
     blockers = {}
     for r in results:
-        if r['scan_rc'] and r['scan_rc'] != 0:
-            key = re.sub(r'^\S+?:\d+(:\d+)?: ', '', r['scan_msg'])
+        for key in r.get('option_items', []):
             key = re.sub(r'^\S+\.k: ', '', key)
-            key = re.sub(r"'[^']*'", "'...'", re.sub(r'\b\d+\b', 'N', key))[:140]
             blockers.setdefault(key, []).append(r['deck']['path'].split('/')[-1])
     if blockers:
-        L.append('## What stops the decks once unknown keywords are skipped')
+        L.append('## Unsupported options and reader errors (besides unknown keywords)')
         L.append('')
-        L.append('The first error of `--check --ignore-unknown` (numbers replaced by N), with the '
-                 'decks it stops: reader defects and unsupported options to fix after the '
-                 'keywords above.')
+        L.append('Each `*KEYWORD: message` item of the `--check` listing (numbers replaced by N; '
+                 'with a dynx whose `--check` stops at the first error: the first error of '
+                 '`--check --ignore-unknown`), with the decks that have it: the unsupported '
+                 'options and reader defects to fix after the keywords above.')
         L.append('')
         L.append('| message | decks |')
         L.append('|---|---|')
