@@ -160,7 +160,7 @@ def deck_keywords(path, seen=None, paths=None, main_dir=None, found=None):
     for line in lines:
         if line.startswith('*'):
             cur = line[1:].split()[0].upper() if line[1:].split() else ''
-            cur = re.sub(r'^(CASE_(BEGIN|END))_\d+$', r'\1', cur)   # *CASE_BEGIN_n: one keyword
+            cur = norm_kw(cur)   # *CASE_BEGIN_n: one keyword
             kws.append(cur)
             continue
         if not line.strip() or line.startswith('$') or cur is None:
@@ -227,8 +227,17 @@ def first_error(out):
     return pick.replace(CORPUS + os.sep, '')
 
 
+def norm_kw(kw):
+    """*CASE_BEGIN_n / *CASE_END_n are one keyword each for the tally."""
+    return re.sub(r'^(CASE_(BEGIN|END))_\d+$', r'\1', kw.upper())
+
+
+def star_names(out):
+    return {norm_kw(k) for k in re.findall(r'\*([A-Za-z][A-Za-z0-9_\-]+)', out)}
+
+
 def reported_unknown(out):
-    return set(re.findall(r'unknown keyword \*([A-Za-z0-9_\-]+)', out))
+    return {norm_kw(k) for k in re.findall(r'unknown keyword \*([A-Za-z0-9_\-]+)', out)}
 
 
 def read_glstat(path):
@@ -366,15 +375,25 @@ def classify(deck, names, dynx, outroot, walltime, allow_run, grace=60):
     rc, txt, dt = run([dynx, '--check', '-i', path, '-o', os.path.join(out, 'check')], cwd, 120)
     r['check_rc'], r['check_msg'] = rc, first_error(txt)
     # issue 16 asks --check to list every unknown keyword at once: how many of the scan's does it?
-    r['check_listed'] = len(set(re.findall(r'\*([A-Za-z][A-Za-z0-9_\-]+)', txt))
-                            & set(scan_unknown))
+    r['check_listed'] = len(star_names(txt) & set(scan_unknown))
     rc2, txt2, _ = run([dynx, '--check', '--ignore-unknown', '-i', path,
                         '-o', os.path.join(out, 'scan')], cwd, 120)
     r['scan_rc'], r['scan_msg'] = rc2, first_error(txt2)
     # dynx's own list: 'unknown keyword *X' lines, and any *X of the scan's unknown list that a
     # grouped --check listing names (the form the complete --check list of issue 16 may take)
-    named = set(re.findall(r'\*([A-Za-z][A-Za-z0-9_\-]+)', txt + txt2)) & set(scan_unknown)
+    named = star_names(txt + txt2) & set(scan_unknown)
     r['dynx_unknown'] = sorted(reported_unknown(txt) | reported_unknown(txt2) | named)
+    # unsupported options and reader errors of known keywords: the '*X: ...' items of a grouped
+    # --check listing, else the first error of the --ignore-unknown read
+    items = set()
+    for l in (txt + '\n' + txt2).splitlines():
+        item = re.split(r'\s+first at\s', l.strip())[0].strip()
+        if item.startswith('*') and ':' in item and 'accepted' not in item:
+            items.add(item)
+    if not items and rc2 and rc2 != 0 and 'unknown keyword' not in r['scan_msg']:
+        items.add(re.sub(r'^\S+?:\d+(:\d+)?: ', '', r['scan_msg']))
+    r['option_items'] = sorted({re.sub(r"'[^']*'", "'...'", re.sub(r'\b\d+\b', 'N', i))[:160]
+                                for i in items})
     # keywords dynx reads but does not honour (its notes: '*X ... accepted: dynx does not ...')
     r['accepted'] = sorted(set(re.findall(r'\*([A-Z][A-Z0-9_]+)[^\n*]*\baccepted\b', txt + txt2)))
     r['physics'] = ''
@@ -505,17 +524,16 @@ def write_doc(results, tally, commit, date, elapsed, sources):
         L.append('')
     blockers = {}
     for r in results:
-        if r['scan_rc'] and r['scan_rc'] != 0:
-            key = re.sub(r'^\S+?:\d+(:\d+)?: ', '', r['scan_msg'])
+        for key in r.get('option_items', []):
             key = re.sub(r'^\S+\.k: ', '', key)
-            key = re.sub(r"'[^']*'", "'...'", re.sub(r'\b\d+\b', 'N', key))[:140]
             blockers.setdefault(key, []).append(r['deck']['path'].split('/')[-1])
     if blockers:
-        L.append('## What stops the decks once unknown keywords are skipped')
+        L.append('## Unsupported options and reader errors (besides unknown keywords)')
         L.append('')
-        L.append('The first error of `--check --ignore-unknown` (numbers replaced by N), with the '
-                 'decks it stops: reader defects and unsupported options to fix after the '
-                 'keywords above.')
+        L.append('Each `*KEYWORD: message` item of the `--check` listing (numbers replaced by N; '
+                 'with a dynx whose `--check` stops at the first error: the first error of '
+                 '`--check --ignore-unknown`), with the decks that have it: the unsupported '
+                 'options and reader defects to fix after the keywords above.')
         L.append('')
         L.append('| message | decks |')
         L.append('|---|---|')
