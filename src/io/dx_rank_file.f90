@@ -20,7 +20,7 @@ module dx_rank_file
                     h5_read_int_attrs
    use dx_checksum, only: checksum_t, checksum_file
    use dx_model_input, only: string_t
-   use dx_partition, only: rank_part_t
+   use dx_rank_part_types, only: rank_part_t
    use dx_kinds, only: wp
    implicit none
    private
