@@ -27,8 +27,17 @@ DECK = os.path.join(ROOT, 'src', 'deck')
 FACTORY = os.path.join(ROOT, 'src', 'materials', 'dx_mat_factory.f90')
 DOC = os.path.join(ROOT, 'docs', 'keywords.md')
 STRUCTURE = ['KEYWORD', 'TITLE', 'INCLUDE', 'PARAMETER', 'END']
-# the two dynamic registrations of register_materials (dx_read_materials.f90)
+# the dynamic registrations of register_materials (dx_read_materials.f90), read from the
+# material/EOS registry below
 DYNAMIC = ["trim(t(i)%keyword)", "'MAT_'//num", "'EOS_'//num"]
+
+
+def param_array(text, name):
+    """The strings of a character parameter array NAME(...) = [character(...) :: 'A', ...]."""
+    m = re.search(r'\b%s\s*\([^)]*\)\s*=\s*\[(.*?)\]' % re.escape(name), text, re.S)
+    if not m:
+        return None
+    return re.findall(r"'([A-Z0-9_]+)'", m.group(1))
 
 
 def strip_comment(line):
@@ -53,15 +62,21 @@ def registered():
             continue
         path = os.path.join(DECK, fn)
         with open(path) as f:
-            for no, line in enumerate(f, 1):
+            text = f.read()
+        for no, line in enumerate(text.split('\n'), 1):
                 code = strip_comment(line)
-                m = re.search(r'%add\(\s*(.*)$', code)
+                m = re.search(r'\breg%add\(\s*(.*)$', code)    # the registry (registry_t)
                 if not m or fn == 'dx_deck_registry.f90':
                     continue
                 arg = m.group(1)
                 lit = re.match(r"'([A-Z0-9_]+)'\s*,", arg)
+                # 'PREFIX_'//trim(TABLE(i)): one keyword per string of the parameter TABLE
+                tab = re.match(r"'([A-Z0-9_]*)'\s*//\s*trim\(\s*(\w+)\(\w+\)\s*\)\s*,", arg)
+                items = param_array(text, tab.group(2)) if tab else None
                 if lit:
                     names.add(lit.group(1))
+                elif items:
+                    names.update(tab.group(1) + x for x in items)
                 elif not any(arg.startswith(d) for d in DYNAMIC):
                     problems.append('%s:%d: cannot read the keyword name of: %s'
                                     % (os.path.relpath(path, ROOT), no, code.strip()))

@@ -9,7 +9,7 @@ module dx_append_file
    use dx_strings, only: str
    implicit none
    private
-   public :: unit_bytes, append_from, cut_back
+   public :: unit_bytes, append_from, cut_back, dump_bytes
 
 contains
 
@@ -24,6 +24,17 @@ contains
       inquire(unit=unit, size=n, iostat=ios)
       if (ios /= 0 .or. n < 0) n = 0
    end function unit_bytes
+
+   !> The size a restart dump records for a component's file: its bytes now when it is open
+   !> on unit, else the size it was continued from (resume; 0 for a file never opened).
+   function dump_bytes(open, unit, resume) result(n)
+      logical, intent(in) :: open
+      integer, intent(in) :: unit
+      integer(8), intent(in) :: resume
+      integer(8) :: n
+      n = resume
+      if (open) n = unit_bytes(unit)
+   end function dump_bytes
 
    !> Open path for appending after cutting it back to its first nbytes bytes.
    !> A file shorter than nbytes (or missing) is not this run's: an I/O error.

@@ -232,7 +232,7 @@ contains
       type(surface_t), intent(out) :: s
       type(error_t), allocatable, intent(out) :: error
       logical, allocatable :: inpart(:)
-      integer :: k, j
+      integer :: k
       allocate(inpart(size(model%parts)))
       inpart = .false.
       select case (typ)
@@ -240,30 +240,19 @@ contains
          call segset_surface(inp, model, c, id, fname, s, error)
          return
       case (2)
-         k = 0
-         do j = 1, size(model%part_sets)
-            if (model%part_sets(j)%label == id) k = j
-         end do
-         if (k == 0) then
-            call set_error(error, where(inp, c)//'field '//fname//': part set '//str(id)// &
-                           ' is not defined (*SET_PART_LIST)')
-            return
-         end if
-         inpart(model%part_sets(k)%parts) = .true.
+         k = last_index(model%part_sets(:)%label, id)
+         if (k == 0) call set_error(error, where(inp, c)//'field '//fname//': part set '// &
+                                    str(id)//' is not defined (*SET_PART_LIST)')
+         if (k > 0) inpart(model%part_sets(k)%parts) = .true.
       case (3)
-         k = 0
-         do j = 1, size(model%parts)
-            if (model%parts(j)%label == id) k = j
-         end do
-         if (k == 0) then
-            call set_error(error, where(inp, c)//'field '//fname//': part '//str(id)// &
-                           ' is not defined (*PART)')
-            return
-         end if
-         inpart(k) = .true.
+         k = last_index(model%parts(:)%label, id)
+         if (k == 0) call set_error(error, where(inp, c)//'field '//fname//': part '// &
+                                    str(id)//' is not defined (*PART)')
+         if (k > 0) inpart(k) = .true.
       case (5)
          inpart = .true.
       end select
+      if (allocated(error)) return
       call part_surface(model, inpart, s)
       if (s%nseg == 0) then
          call set_error(error, where(inp, c)//'field '//fname//': '// &
@@ -271,6 +260,16 @@ contains
             ' has no solid elements (empty contact surface)')
       end if
    end subroutine side_surface
+
+   !> The last position of label id in labels (0: none).
+   pure integer function last_index(labels, id) result(k)
+      integer, intent(in) :: labels(:), id
+      integer :: j
+      k = 0
+      do j = 1, size(labels)
+         if (labels(j) == id) k = j
+      end do
+   end function last_index
 
    !> Exterior faces of the elements of the marked parts: faces used by exactly one of them.
    subroutine part_surface(model, inpart, s)
@@ -428,10 +427,7 @@ contains
       type(family_t) :: fam
       integer, allocatable :: eptr(:), elist(:)
       character(:), allocatable :: at_set
-      k = 0
-      do j = 1, size(model%segment_sets)
-         if (model%segment_sets(j)%label == id) k = j
-      end do
+      k = last_index(model%segment_sets(:)%label, id)
       if (k == 0) then
          call set_error(error, where(inp, c)//'field '//fname//': segment set '//str(id)// &
                         ' is not defined (*SET_SEGMENT)')
@@ -535,11 +531,8 @@ contains
       character(*), intent(in) :: fname
       integer, allocatable, intent(out) :: nodes(:)
       type(error_t), allocatable, intent(out) :: error
-      integer :: j, k
-      k = 0
-      do j = 1, size(model%node_sets)
-         if (model%node_sets(j)%label == id) k = j
-      end do
+      integer :: k
+      k = last_index(model%node_sets(:)%label, id)
       if (k == 0) then
          call set_error(error, where(inp, c)//'field '//fname//': node set '//str(id)// &
                         ' is not defined (*SET_NODE_LIST)')
@@ -557,13 +550,8 @@ contains
       integer, intent(in) :: id
       character(*), intent(in) :: fname
       type(error_t), allocatable, intent(inout) :: error
-      integer :: j
       k = 0
-      if (allocated(inp%contact%boxes)) then
-         do j = 1, size(inp%contact%boxes)
-            if (inp%contact%boxes(j)%label == id) k = j
-         end do
-      end if
+      if (allocated(inp%contact%boxes)) k = last_index(inp%contact%boxes(:)%label, id)
       if (k == 0) call set_error(error, where(inp, c)//'field '//fname//': box '//str(id)// &
                                  ' is not defined (*DEFINE_BOX)')
    end function find_box

@@ -220,12 +220,8 @@ contains
       do k = 1, size(inp%rigid%extras)
          associate (r => inp%rigid%extras(k))
             w = at(inp, r%src)
-            b = find_body(rs, r%pid)
-            if (b == 0) then
-               call set_error(error, w//'field PID: part '//str(r%pid)//' is not a rigid '// &
-                  'body (*MAT_RIGID part or *CONSTRAINED_NODAL_RIGID_BODY)')
-               return
-            end if
+            b = find_body(rs, r%pid, w, error)
+            if (allocated(error)) return
             if (r%is_set) then
                j = nset_map%get(r%id)
                if (j == 0) then
@@ -296,12 +292,8 @@ contains
       do k = 1, size(inp%rigid%motions)
          associate (r => inp%rigid%motions(k))
             w = at(inp, r%src)
-            b = find_body(rs, r%pid)
-            if (b == 0) then
-               call set_error(error, w//'field PID: part '//str(r%pid)//' is not a rigid '// &
-                  'body (*MAT_RIGID part or *CONSTRAINED_NODAL_RIGID_BODY)')
-               return
-            end if
+            b = find_body(rs, r%pid, w, error)
+            if (allocated(error)) return
             j = curve_map%get(r%lcid)
             if (j == 0) then
                call set_error(error, w//'field LCID: curve '//str(r%lcid)//' is not defined '// &
@@ -371,13 +363,18 @@ contains
       call move_alloc(rs, model%rigid)
    end subroutine build_rigid
 
-   integer function find_body(rs, label) result(b)
+   !> The body of part label; none is an input error at w (field PID).
+   integer function find_body(rs, label, w, error) result(b)
       type(rigid_system_t), intent(in) :: rs
       integer, intent(in) :: label
+      character(*), intent(in) :: w
+      type(error_t), allocatable, intent(inout) :: error
       do b = 1, size(rs%bodies)
          if (rs%bodies(b)%label == label) return
       end do
       b = 0
+      call set_error(error, w//'field PID: part '//str(label)//' is not a rigid '// &
+                     'body (*MAT_RIGID part or *CONSTRAINED_NODAL_RIGID_BODY)')
    end function find_body
 
    !> "file:line: *KEY: " of the card that made body b

@@ -16,7 +16,7 @@ module dx_contact_restart
    use dx_strings, only: str
    use dx_restart_file, only: rs_file_t
    use dx_contact_types, only: contact_set_t
-   use dx_append_file, only: unit_bytes
+   use dx_append_file, only: dump_bytes
    implicit none
    private
    public :: contact_dump, contact_restore
@@ -27,7 +27,6 @@ contains
       type(rs_file_t), intent(inout) :: rs
       type(contact_set_t), intent(in) :: cs
       integer :: i, j
-      integer(8) :: bytes
       character(:), allocatable :: p
       call rs%put('contact_ninterfaces', size(cs%iface))
       call rs%put('contact_label', cs%iface(:)%label)
@@ -51,37 +50,19 @@ contains
       end do
       call rs%put('contact_work', cs%work)
       call rs%put('contact_next_rcforc', cs%next_rcforc)
-      bytes = cs%rcforc_resume
-      if (cs%rcforc_open) bytes = unit_bytes(cs%rcforc_unit)
-      call rs%put('contact_rcforc_bytes', bytes)
+      call rs%put('contact_rcforc_bytes', dump_bytes(cs%rcforc_open, cs%rcforc_unit, &
+                                                     cs%rcforc_resume))
    end subroutine contact_dump
 
    subroutine contact_restore(rs, cs)
       type(rs_file_t), intent(inout) :: rs
       type(contact_set_t), intent(inout) :: cs
-      integer :: i, j, n, nc
-      integer, allocatable :: labels(:), strip(:)
+      integer :: i, j, nc
+      integer, allocatable :: strip(:)
       real(wp) :: sort(5)
       character(:), allocatable :: p
-      n = -1
-      call rs%get('contact_ninterfaces', n)
-      if (.not. rs%ok()) return
-      if (n /= size(cs%iface)) then
-         call set_error(rs%err, 'restart file '//rs%path//' holds '//str(n)// &
-            ' contact interfaces, this deck has '//str(size(cs%iface))// &
-            ' (is it a dump of this deck?)', EXIT_INPUT)
-         return
-      end if
-      allocate(labels(n))
-      labels = 0
-      call rs%get('contact_label', labels)
-      if (rs%ok()) then
-         if (any(labels /= cs%iface(:)%label)) then
-            call set_error(rs%err, 'restart file '//rs%path//': its contact interfaces '// &
-               'have other ids than in this deck (is it a dump of this deck?)', EXIT_INPUT)
-            return
-         end if
-      end if
+      if (.not. rs%same_labels('contact_ninterfaces', 'contact_label', cs%iface(:)%label, &
+                               'contact interfaces', 'have other ids')) return
       do i = 1, size(cs%iface)
          do j = 1, size(cs%iface(i)%pass)
             p = 'contact'//str(i)//'_pass'//str(j)//'_'
@@ -105,11 +86,7 @@ contains
                if (nc > 0) then
                   ps%cand = 0
                   call rs%get(p//'cand', ps%cand)
-                  if (rs%ok()) then
-                     if (any(ps%cand < 1 .or. ps%cand > ps%nseg)) call set_error(rs%err, &
-                        'restart file '//rs%path//': dataset '//p//'cand names segments '// &
-                        'this deck does not have', EXIT_INPUT)
-                  end if
+                  call check_segments(rs, ps%cand, 1, ps%nseg, p//'cand')
                end if
                if (allocated(ps%nnrm)) call rs%get(p//'nnrm', ps%nnrm)
                call rs%get(p//'ft', ps%ft)
@@ -124,11 +101,7 @@ contains
                   ps%mine = strip(2:) == 1
                   deallocate(strip)
                end if
-               if (rs%ok()) then
-                  if (any(ps%iseg < 0 .or. ps%iseg > ps%nseg)) call set_error(rs%err, &
-                     'restart file '//rs%path//': dataset '//p//'iseg names segments '// &
-                     'this deck does not have', EXIT_INPUT)
-               end if
+               call check_segments(rs, ps%iseg, 0, ps%nseg, p//'iseg')
             end associate
             if (.not. rs%ok()) return
          end do
@@ -140,4 +113,14 @@ contains
       cs%rcforc_open = .false.
       cs%finished = .false.
    end subroutine contact_restore
+
+   !> Segment indices read from dataset name must lie in lo..nseg (an input error if not).
+   subroutine check_segments(rs, idx, lo, nseg, name)
+      type(rs_file_t), intent(inout) :: rs
+      integer, intent(in) :: idx(:), lo, nseg
+      character(*), intent(in) :: name
+      if (.not. rs%ok()) return
+      if (any(idx < lo .or. idx > nseg)) call set_error(rs%err, 'restart file '//rs%path// &
+         ': dataset '//name//' names segments this deck does not have', EXIT_INPUT)
+   end subroutine check_segments
 end module dx_contact_restart

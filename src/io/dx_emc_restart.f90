@@ -15,7 +15,7 @@ module dx_emc_restart
    use dx_strings, only: str
    use dx_restart_file, only: rs_file_t
    use dx_emc_types, only: emc_system_t, EMC_PAIR_NI, EMC_PAIR_NR
-   use dx_append_file, only: unit_bytes
+   use dx_append_file, only: dump_bytes
    implicit none
    private
    public :: emc_dump, emc_restore
@@ -27,7 +27,6 @@ contains
       type(rs_file_t), intent(inout) :: rs
       type(emc_system_t), intent(in) :: es
       integer :: nact
-      integer(8) :: bytes
       associate (s => es%snap)
          call rs%put('emc_nbodies', size(s%xc, 2))
          call rs%put('emc_xc', s%xc)
@@ -45,9 +44,7 @@ contains
          call rs%put('emc_reals', [s%upen, s%t, s%next_out, s%next_plot, s%e0, s%p0, s%l0, &
                                    s%ps0, s%ls0, s%de, s%dp, s%dl, s%resid, s%ediss])
          call rs%put('emc_ints', [s%cyc, s%itmax, s%ittot, s%ncut, s%iters, s%npair])
-         bytes = 0
-         if (s%unit_open) bytes = unit_bytes(s%unit)
-         call rs%put('emc_emcstat_bytes', bytes)
+         call rs%put('emc_emcstat_bytes', dump_bytes(s%unit_open, s%unit, 0_8))
       end associate
    end subroutine emc_dump
 
@@ -59,6 +56,7 @@ contains
       integer, allocatable :: ai(:)
       real(wp) :: reals(18)
       nb = -1
+      nact = 0
       call rs%get('emc_nbodies', nb)
       if (.not. rs%ok()) return
       if (nb /= size(es%sphere)) then
@@ -74,7 +72,6 @@ contains
          call rs%get('emc_v', s%v)
          call rs%get('emc_r', s%r)
          call rs%get('emc_w', s%w)
-         nact = 0
          call rs%get('emc_nact', nact)
          if (.not. rs%ok()) return
          if (nact < 0 .or. nact > 100000000) then

@@ -13,13 +13,14 @@ module dx_h5
    use dx_error, only: error_t
    use dx_h5_file, only: h5_file_t, h5_create, h5_open_read, h5_close, h5_flush, &
                          h5_create_group, h5_write_attr, h5_read_attr, h5_open_rw, h5_delete, &
-                         fail => h5_fail
+                         h5_write_int_attrs, h5_read_int_attrs, h5_close_keep, fail => h5_fail
    implicit none
    private
    public :: h5_file_t, h5_create, h5_open_read, h5_close, h5_flush, h5_create_group, &
              h5_write, h5_write_attr, h5_create_extendible, h5_append, h5_exists, h5_dims, &
              h5_read, h5_read_attr, h5_list, H5_GROUP, H5_DATASET, H5_OTHER, &
-             h5_open_rw, h5_delete, h5_set_extent
+             h5_open_rw, h5_delete, h5_set_extent, h5_write_int_attrs, h5_read_int_attrs, &
+             h5_close_keep
 
    integer, parameter :: H5_GROUP = 1, H5_DATASET = 2, H5_OTHER = 3
    integer, parameter :: NAME_LEN = 256

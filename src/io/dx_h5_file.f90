@@ -17,7 +17,8 @@ module dx_h5_file
    implicit none
    private
    public :: h5_file_t, h5_create, h5_open_read, h5_close, h5_flush, h5_create_group, &
-             h5_write_attr, h5_read_attr, h5_open_rw, h5_delete, h5_fail
+             h5_write_attr, h5_read_attr, h5_open_rw, h5_delete, h5_fail, h5_write_int_attrs, &
+             h5_read_int_attrs, h5_close_keep
 
    !> An open HDF5 file (id < 0: not open).
    type :: h5_file_t
@@ -156,6 +157,16 @@ contains
       f%id = -1
       if (ierr < 0) call h5_fail(f, error, 'close file', '/')
    end subroutine h5_close
+
+   !> Close f after its writes or reads: with an error already pending (error allocated) it is
+   !> closed quietly and that error kept, else a close failure is the error.
+   subroutine h5_close_keep(f, error)
+      type(h5_file_t), intent(inout) :: f
+      type(error_t), allocatable, intent(inout) :: error
+      type(error_t), allocatable :: e
+      call h5_close(f, e)
+      if (allocated(e) .and. .not. allocated(error)) call move_alloc(e, error)
+   end subroutine h5_close_keep
 
    !> Flush all buffers of the file to disk (H5F_SCOPE_GLOBAL).
    subroutine h5_flush(f, error)
@@ -353,6 +364,33 @@ contains
       if (ierr < 0 .and. .not. allocated(error)) &
          call h5_fail(f, error, 'close string type of attribute '//name//' of', objpath)
    end subroutine close_string_type
+
+   !> Set the integer attributes names(i) = vals(i) of objpath, in order (stops at an error).
+   subroutine h5_write_int_attrs(f, objpath, names, vals, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: objpath, names(:)
+      integer, intent(in) :: vals(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i
+      do i = 1, size(names)
+         call attr_write_int(f, objpath, trim(names(i)), vals(i), error)
+         if (allocated(error)) return
+      end do
+   end subroutine h5_write_int_attrs
+
+   !> Read the integer attributes names(:) of objpath into vals (stops at an error).
+   subroutine h5_read_int_attrs(f, objpath, names, vals, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: objpath, names(:)
+      integer, intent(out) :: vals(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i
+      vals = 0
+      do i = 1, size(names)
+         call attr_read_int(f, objpath, trim(names(i)), vals(i), error)
+         if (allocated(error)) return
+      end do
+   end subroutine h5_read_int_attrs
 
    !> Set a fixed-length string attribute (at least one character) of the object at objpath.
    subroutine attr_write_str(f, objpath, name, val, error)

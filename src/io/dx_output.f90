@@ -35,15 +35,6 @@ module dx_output
 
 contains
 
-   !> Create dir if missing and open the files the deck asks for.
-   subroutine output_open(self, model, dir, error)
-      class(output_t), intent(inout) :: self
-      type(model_t), intent(in) :: model
-      character(*), intent(in) :: dir
-      type(error_t), allocatable, intent(out) :: error
-      call output_start(self, model, dir, .false., error)
-   end subroutine output_open
-
    !> Reopen the files of an interrupted run in dir at the restart point recorded in
    !> model%run (plot states, glstat and nodout bytes): what was written after the dump is
    !> dropped, and output continues exactly as the uninterrupted run would have written it.
@@ -52,28 +43,30 @@ contains
       type(model_t), intent(in) :: model
       character(*), intent(in) :: dir
       type(error_t), allocatable, intent(out) :: error
-      call output_start(self, model, dir, .true., error)
+      call output_open(self, model, dir, error, resume=.true.)
    end subroutine output_resume
 
-   !> output_open (resume = .false.) and output_resume (.true.): the same files, each
-   !> started anew or continued at the restart point.
-   subroutine output_start(self, model, dir, resume, error)
+   !> Create dir if missing and open the files the deck asks for; resume = .true.
+   !> (output_resume): continue each at the restart point instead of starting it anew.
+   subroutine output_open(self, model, dir, error, resume)
       class(output_t), intent(inout) :: self
       type(model_t), intent(in) :: model
       character(*), intent(in) :: dir
-      logical, intent(in) :: resume
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: resume
       type(error_t), allocatable :: err2
       character(:), allocatable :: title
-      logical :: nodes
+      logical :: nodes, cont
 
+      cont = .false.
+      if (present(resume)) cont = resume
       self%dir = trim(dir)
       self%nplot = 0
       title = ''
       if (allocated(model%title)) title = model%title
       call sys_mkdir_p(self%dir, error)
       if (allocated(error)) return
-      if (resume) then
+      if (cont) then
          call self%plot%resume(model, self%dir, model%run%nplot, error)
          self%nplot = self%plot%nstates
       else
@@ -82,7 +75,7 @@ contains
       if (allocated(error)) return
 
       self%glstat_on = model%db%glstat_dt > 0
-      if (self%glstat_on .and. resume) then
+      if (self%glstat_on .and. cont) then
          call self%glstat%resume(self%dir//'/glstat', 'glstat', title, GLSTAT_COLUMNS, &
                                  model%run%glstat_bytes, error)
       else if (self%glstat_on) then
@@ -92,7 +85,7 @@ contains
       if (allocated(model%db%hist_nodes)) nodes = size(model%db%hist_nodes) > 0
       self%nodout_on = model%db%nodout_dt > 0 .and. nodes
       if (self%nodout_on .and. .not. allocated(error)) then
-         if (resume) then
+         if (cont) then
             call self%nodout%resume(self%dir//'/nodout', 'nodout', title, NODOUT_COLUMNS, &
                                     model%run%nodout_bytes, error)
          else
@@ -100,7 +93,7 @@ contains
          end if
       end if
       if (allocated(error)) call self%close(err2)   ! keep the first error
-   end subroutine output_start
+   end subroutine output_open
 
    !> What a restart dump records about the output: plot states, glstat and nodout bytes.
    subroutine output_sizes(self, nplot, glstat_bytes, nodout_bytes)

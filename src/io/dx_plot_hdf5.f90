@@ -19,7 +19,7 @@ module dx_plot_hdf5
    use dx_model, only: model_t, elem_block_t
    use dx_h5, only: h5_file_t, h5_create, h5_close, h5_flush, h5_create_group, h5_write, &
                     h5_write_attr, h5_create_extendible, h5_append, h5_open_read, h5_read, &
-                    h5_read_attr
+                    h5_read_attr, h5_close_keep
    use dx_error, only: set_error, EXIT_IO
    use dx_io_sys, only: sys_rename
    use dx_strings, only: str
@@ -185,11 +185,7 @@ contains
          if (allocated(error)) return
       end if
       if (.not. allocated(error)) call plot_mesh_read(f, x0, nlab, cells, elab, ids, title, error)
-      if (allocated(error)) then
-         call h5_close(f, err2)
-         return
-      end if
-      call h5_close(f, error)
+      call h5_close_keep(f, error)
       if (allocated(error)) return
       if (there) then
          if (size(x) < nmerged) then

@@ -26,7 +26,7 @@ module dx_plot_part
    use dx_strings, only: str
    use dx_h5, only: h5_file_t, h5_create, h5_open_read, h5_close, h5_flush, &
                     h5_create_group, h5_write, h5_write_attr, h5_read_attr, h5_read, &
-                    h5_create_extendible, h5_append
+                    h5_create_extendible, h5_append, h5_write_int_attrs, h5_read_int_attrs
    use dx_io_sys, only: sys_rename, sys_mkdir_p
    use dx_plot_states, only: file_remove, publish
    use dx_xdmf, only: xdmf_write, state_group
@@ -132,10 +132,8 @@ contains
                              part_ids(:)
       real(wp), intent(in) :: x0(:, :)
       type(error_t), allocatable, intent(out) :: error
-      type(error_t), allocatable :: err2
       type(h5_file_t) :: f
       character(:), allocatable :: path
-      integer :: hv(size(HEADER)), i
       path = plot_part_name(dir, rank)
       self%active = .false.
       self%dir = dir
@@ -154,11 +152,8 @@ contains
          if (allocated(error)) exit work
          call h5_write_attr(f, '/', 'version', PART_VERSION, error)
          if (allocated(error)) exit work
-         hv = [rank, nprocs, stamp, nn, ne]
-         do i = 1, size(HEADER)
-            call h5_write_attr(f, '/', trim(HEADER(i)), hv(i), error)
-            if (allocated(error)) exit work
-         end do
+         call h5_write_int_attrs(f, '/', HEADER, [rank, nprocs, stamp, nn, ne], error)
+         if (allocated(error)) exit work
          call h5_write_attr(f, '/', 'title', title, error)
          if (allocated(error)) exit work
          call h5_create_group(f, '/mesh', error)
@@ -177,10 +172,6 @@ contains
          if (allocated(error)) exit work
          call h5_write(f, '/mesh/part_ids', part_ids, error)
       end block work
-      if (allocated(error)) then
-         call h5_close(f, err2)
-         return
-      end if
       call publish(f, path, error)
       if (allocated(error)) return
       self%active = .true.
@@ -217,7 +208,6 @@ contains
       type(plot_state_t), intent(in) :: st
       type(error_t), allocatable, intent(out) :: error
       type(h5_file_t) :: f
-      type(error_t), allocatable :: err2
       character(:), allocatable :: path
       integer :: k
       k = self%nstates + 1
@@ -231,10 +221,6 @@ contains
          if (allocated(error)) exit work
          call plot_state_write(f, state_group(k), st, error, part=.true.)
       end block work
-      if (allocated(error)) then
-         call h5_close(f, err2)
-         return
-      end if
       call publish(f, path, error)
       if (allocated(error)) return
       self%nstates = k
@@ -480,7 +466,7 @@ contains
       character(:), allocatable, intent(out) :: title
       type(error_t), allocatable, intent(out) :: error
       character(:), allocatable :: fmt
-      integer :: ver, hv(size(HEADER)), i
+      integer :: ver, hv(size(HEADER) - 1)
       np = 0; stamp = 0; nn = 0; ne = 0
       title = ''
       call h5_read_attr(f, '/', 'format', fmt, error)
@@ -492,11 +478,9 @@ contains
                         str(PART_VERSION), EXIT_IO)
          return
       end if
-      do i = 2, size(HEADER)
-         call h5_read_attr(f, '/', trim(HEADER(i)), hv(i), error)
-         if (allocated(error)) return
-      end do
-      np = hv(2); stamp = hv(3); nn = hv(4); ne = hv(5)
+      call h5_read_int_attrs(f, '/', HEADER(2:), hv, error)
+      if (allocated(error)) return
+      np = hv(1); stamp = hv(2); nn = hv(3); ne = hv(4)
       call h5_read_attr(f, '/', 'title', title, error)
       if (allocated(error)) return
       if (np < 1 .or. nn < 0 .or. ne < 0) call set_error(error, path// &

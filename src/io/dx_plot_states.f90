@@ -16,7 +16,7 @@ module dx_plot_states
    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_IO
-   use dx_h5, only: h5_file_t, h5_create, h5_close, h5_create_group
+   use dx_h5, only: h5_file_t, h5_create, h5_close_keep, h5_create_group
    use dx_io_sys, only: sys_rename, sys_fsync, sys_mkdir_p
    use dx_xdmf, only: state_group
    use dx_plot_fields, only: plot_state_t, plot_state_write, plot_mesh_write
@@ -70,7 +70,6 @@ contains
       integer, intent(in) :: nlab(:), cells(:, :), elab(:), ids(:)
       type(error_t), allocatable, intent(out) :: error
       type(h5_file_t) :: f
-      type(error_t), allocatable :: err2
       character(:), allocatable :: p
       call sys_mkdir_p(dir//'/'//STATES_DIR, error)
       if (allocated(error)) return
@@ -78,10 +77,6 @@ contains
       call h5_create(f, p//'.tmp', error)
       if (allocated(error)) return
       call plot_mesh_write(f, x0, nlab, cells, elab, ids, title, error)
-      if (allocated(error)) then
-         call h5_close(f, err2)
-         return
-      end if
       call publish(f, p, error)
    end subroutine states_write_mesh
 
@@ -92,26 +87,22 @@ contains
       type(plot_state_t), intent(in) :: st
       type(error_t), allocatable, intent(out) :: error
       type(h5_file_t) :: f
-      type(error_t), allocatable :: err2
       character(:), allocatable :: p
       p = dir//'/'//state_file(k)
       call h5_create(f, p//'.tmp', error)
       if (allocated(error)) return
       call h5_create_group(f, '/states', error)
       if (.not. allocated(error)) call plot_state_write(f, state_group(k), st, error)
-      if (allocated(error)) then
-         call h5_close(f, err2)
-         return
-      end if
       call publish(f, p, error)
    end subroutine states_write_state
 
-   !> Close f (written as p.tmp), sync it to disk and rename it to p.
+   !> Close f (written as p.tmp), sync it to disk and rename it to p; after an error in its
+   !> writes (error allocated) only close it (the .tmp is never renamed; the error is kept).
    subroutine publish(f, p, error)
       type(h5_file_t), intent(inout) :: f
       character(*), intent(in) :: p
-      type(error_t), allocatable, intent(out) :: error
-      call h5_close(f, error)
+      type(error_t), allocatable, intent(inout) :: error
+      call h5_close_keep(f, error)
       if (allocated(error)) return
       call sys_fsync(p//'.tmp', error)
       if (allocated(error)) return

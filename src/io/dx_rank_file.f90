@@ -16,7 +16,8 @@ module dx_rank_file
    use dx_error, only: error_t, set_error, EXIT_INPUT, EXIT_IO
    use dx_strings, only: str
    use dx_h5, only: h5_file_t, h5_create, h5_open_read, h5_close, h5_create_group, h5_write, &
-                    h5_write_attr, h5_read, h5_read_attr
+                    h5_write_attr, h5_read, h5_read_attr, h5_write_int_attrs, &
+                    h5_read_int_attrs
    use dx_checksum, only: checksum_t, checksum_file
    use dx_model_input, only: string_t
    use dx_rank_part_types, only: rank_part_t
@@ -123,7 +124,7 @@ contains
       type(error_t), allocatable :: err2
       type(h5_file_t) :: f
       type(iarr_t) :: arr(NSETS)
-      integer :: k, hv(size(HEADER))
+      integer :: k
       call to_arrays(rp, arr)
       call h5_create(f, path, error)
       if (allocated(error)) return
@@ -140,11 +141,9 @@ contains
          if (allocated(error)) exit work
          call h5_write_attr(f, '/', 'version', RANK_FILE_VERSION, error)
          if (allocated(error)) exit work
-         hv = [rp%np, rp%rank, rp%ne_global, rp%nn_global]
-         do k = 1, size(HEADER)
-            call h5_write_attr(f, '/', trim(HEADER(k)), hv(k), error)
-            if (allocated(error)) exit work
-         end do
+         call h5_write_int_attrs(f, '/', HEADER, [rp%np, rp%rank, rp%ne_global, rp%nn_global], &
+                                 error)
+         if (allocated(error)) exit work
          call h5_write_attr(f, '/', 'deck_hash', deck_hash, error)
          if (allocated(error)) exit work
          call h5_write_attr(f, '/', 'checksum', payload_checksum(RANK_FILE_VERSION, rp%np, &
@@ -185,10 +184,8 @@ contains
                '; rerun dynx-part', EXIT_INPUT)
             exit work
          end if
-         do k = 1, size(HEADER)
-            call h5_read_attr(f, '/', trim(HEADER(k)), hv(k), error)
-            if (allocated(error)) exit work
-         end do
+         call h5_read_int_attrs(f, '/', HEADER, hv, error)
+         if (allocated(error)) exit work
          rp%np = hv(1); rp%rank = hv(2); rp%ne_global = hv(3); rp%nn_global = hv(4)
          call h5_read_attr(f, '/', 'deck_hash', fhash, error)
          if (allocated(error)) exit work

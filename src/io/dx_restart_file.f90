@@ -46,6 +46,7 @@ module dx_restart_file
       generic :: get => get_r0, get_r1, get_r2, get_r3, get_i0, get_i1, get_i8, get_l1
       procedure :: has => rs_has
       procedure :: ok => rs_ok
+      procedure :: same_labels => rs_same_labels
    end type rs_file_t
 
    integer(int64), save :: table(0:255)
@@ -158,6 +159,37 @@ contains
       call h5_exists(rs%h5, '/'//name, rs_has, e)
       if (allocated(e)) rs_has = .false.
    end function rs_has
+
+   !> Whether the dump's component has the deck's records: its count dataset count_name and
+   !> labels dataset label_name against labels. Otherwise an input error: "holds N <what>,
+   !> this deck has M" or "its <what> <differ>" (differ: how the labels disagree).
+   logical function rs_same_labels(rs, count_name, label_name, labels, what, differ) result(same)
+      class(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: count_name, label_name, what, differ
+      integer, intent(in) :: labels(:)
+      integer, allocatable :: l(:)
+      integer :: n
+      same = .false.
+      n = -1
+      call rs%get(count_name, n)
+      if (.not. rs%ok()) return
+      if (n /= size(labels)) then
+         call set_error(rs%err, 'restart file '//rs%path//' holds '//str(n)//' '//what// &
+            ', this deck has '//str(size(labels))//' (is it a dump of this deck?)', EXIT_INPUT)
+         return
+      end if
+      allocate(l(n))
+      l = 0
+      call rs%get(label_name, l)
+      if (rs%ok()) then
+         if (any(l /= labels)) then
+            call set_error(rs%err, 'restart file '//rs%path//': its '//what//' '//differ// &
+               ' than in this deck (is it a dump of this deck?)', EXIT_INPUT)
+            return
+         end if
+      end if
+      same = .true.
+   end function rs_same_labels
 
    ! ------------------------------------------------------------------ writing
    !> The one writer: a flat float64 array plus its CRC-32.

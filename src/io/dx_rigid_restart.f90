@@ -14,7 +14,7 @@ module dx_rigid_restart
    use dx_strings, only: str
    use dx_restart_file, only: rs_file_t
    use dx_rigid_types, only: rigid_system_t, rigid_body_t
-   use dx_append_file, only: unit_bytes
+   use dx_append_file, only: dump_bytes
    implicit none
    private
    public :: rigid_dump, rigid_restore
@@ -60,7 +60,6 @@ contains
       real(wp), allocatable :: a3(:, :), a33(:, :, :)
       real(wp), pointer :: p(:), q(:, :)
       integer :: nb, b, k
-      integer(8) :: bytes
       nb = size(rig%bodies)
       call rs%put('rigid_nbodies', nb)
       call rs%put('rigid_label', rig%bodies(:)%label)
@@ -82,9 +81,8 @@ contains
       if (nmotions(rig) > 0) call rs%put('rigid_motion_disp', motion_disp(rig))
       call rs%put('rigid_sums', [rig%ke_corr, rig%ke0_corr, rig%p_corr, rig%mass_corr, &
                                  rig%work, rig%next_rbdout])
-      bytes = rig%rbdout_resume
-      if (rig%rbdout_open) bytes = unit_bytes(rig%rbdout_unit)
-      call rs%put('rigid_rbdout_bytes', bytes)
+      call rs%put('rigid_rbdout_bytes', dump_bytes(rig%rbdout_open, rig%rbdout_unit, &
+                                                   rig%rbdout_resume))
    end subroutine rigid_dump
 
    subroutine rigid_restore(rs, rig)
@@ -93,27 +91,11 @@ contains
       real(wp), allocatable :: a3(:, :), a33(:, :, :), disp(:)
       real(wp), pointer :: p(:), q(:, :)
       real(wp) :: sums(8)
-      integer, allocatable :: labels(:)
       integer :: nb, b, k, m
-      nb = -1
-      call rs%get('rigid_nbodies', nb)
-      if (.not. rs%ok()) return
-      if (nb /= size(rig%bodies)) then
-         call set_error(rs%err, 'restart file '//rs%path//' holds '//str(nb)// &
-            ' rigid bodies, this deck has '//str(size(rig%bodies))// &
-            ' (is it a dump of this deck?)', EXIT_INPUT)
-         return
-      end if
-      allocate(labels(nb), a3(3, nb), a33(3, 3, nb))
-      labels = 0
-      call rs%get('rigid_label', labels)
-      if (rs%ok()) then
-         if (any(labels /= rig%bodies(:)%label)) then
-            call set_error(rs%err, 'restart file '//rs%path//': its rigid bodies are '// &
-               'other parts than in this deck (is it a dump of this deck?)', EXIT_INPUT)
-            return
-         end if
-      end if
+      nb = size(rig%bodies)
+      if (.not. rs%same_labels('rigid_nbodies', 'rigid_label', rig%bodies(:)%label, &
+                               'rigid bodies', 'are other parts')) return
+      allocate(a3(3, nb), a33(3, 3, nb))
       a3 = 0.0_wp; a33 = 0.0_wp
       do k = 1, size(VEC_NAMES)
          call rs%get('rigid_'//trim(VEC_NAMES(k)), a3)

@@ -190,15 +190,6 @@ contains
          ' node-rank pairs)')
    end subroutine verify_files
 
-   !> The value of the option at i: the next argument (i moves to it); none is a usage error.
-   function option_value(i) result(a)
-      integer, intent(inout) :: i
-      character(:), allocatable :: a
-      i = i + 1
-      if (i > command_argument_count()) call die_usage('missing value after the last option')
-      a = command_arg(i)
-   end function option_value
-
    subroutine usage()
       write(output_unit, '(a)') &
          'usage: dynx-part deck.k -n NP [-o DIR] [--ignore-unknown] [--verify]', &
@@ -232,4 +223,13 @@ contains
       write(error_unit, '(a)') 'dynx-part: error: '//err%message
       call exit_process(err%code)
    end subroutine die
+
+   !> The value of the option at i: the next argument (i moves to it); none is a usage error.
+   function option_value(i) result(a)
+      integer, intent(inout) :: i
+      character(:), allocatable :: a
+      i = i + 1
+      if (i > command_argument_count()) call die_usage('missing value after the last option')
+      a = command_arg(i)
+   end function option_value
 end program dynx_part
