@@ -75,7 +75,7 @@ contains
             call reg%lookup(blk%name, k, blk%base, blk%opt_title, blk%opt_id)
             if (k == 0) then
                if (checking) then
-                  call found%add(blk%name, '*'//blk%name, where)
+                  call found%record(blk%name, '*'//blk%name, where)
                   cycle
                end if
                if (ignore .and. keyword_skippable(blk%name)) then
@@ -114,7 +114,7 @@ contains
       end do
       do k = 1, size(inp%out_notes)
          if (checking) then
-            call found%add('', inp%out_notes(k)%s, inp%out_notes(k)%where)
+            call found%record('', inp%out_notes(k)%s, inp%out_notes(k)%where)
          else
             call log_info('dynx: note: '//inp%out_notes(k)%where//': '//inp%out_notes(k)%s)
          end if
@@ -156,6 +156,6 @@ contains
          where = first(1:k - 1)
          first = first(k + 2:)
       end if
-      call found%add(name, first, where)
+      call found%record(name, first, where)
    end subroutine add_reader_error
 end module dx_deck

@@ -32,7 +32,7 @@ module dx_deck_check
       integer :: n = 0
       type(finding_t), allocatable :: f(:)
    contains
-      procedure :: add => list_add
+      procedure :: record => list_add
       procedure :: report => list_report
       procedure :: nproblems => list_nproblems
    end type check_list_t
