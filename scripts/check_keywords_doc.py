@@ -27,7 +27,7 @@ DECK = os.path.join(ROOT, 'src', 'deck')
 FACTORY = os.path.join(ROOT, 'src', 'materials', 'dx_mat_factory.f90')
 DOC = os.path.join(ROOT, 'docs', 'keywords.md')
 STRUCTURE = ['KEYWORD', 'TITLE', 'INCLUDE', 'INCLUDE_PATH', 'INCLUDE_PATH_RELATIVE', 'PARAMETER',
-             'END']
+             'PARAMETER_EXPRESSION', 'END']
 # the two dynamic registrations of register_materials (dx_read_materials.f90)
 DYNAMIC = ["trim(t(i)%keyword)", "'MAT_'//num", "'EOS_'//num"]
 

@@ -27,6 +27,7 @@ program test_deck
    call test_families()
    call test_reader_defects()
    call test_generated_sets()
+   call test_parameter_expression()
    call test_full_deck()
    call test_blocks()
    call test_materials()
@@ -339,6 +340,43 @@ contains
       if (k > 0) call check(size(inp%node_sets(k)%ids) == 2 .and. &
          all(inp%node_sets(k)%ids == [1, 3]), 'node set 6 = ALL - DNODE 2 = 1, 3')
    end subroutine test_generated_sets
+
+   !> *PARAMETER_EXPRESSION: precedence, functions, integer truncation, errors.
+   subroutine test_parameter_expression()
+      type(model_input_t) :: inp
+      type(error_t), allocatable :: err
+      call write_file('pe.k', '*KEYWORD'//nl//'*PARAMETER'//nl//'R t0      1.0e-3'//nl// &
+         '*PARAMETER_EXPRESSION'//nl// &
+         'R tend    2.0*t0 + &t0/2'//nl// &
+         'R ang     atan(1.0)*4 - pi'//nl// &
+         'I n       7/2'//nl// &
+         'R p       -2**2 + 2**3**2 + (1+1)^2'//nl// &
+         'R tend2,  max(tend, 1.0d-4) * sqrt(4.0) / n'//nl// &
+         '*CONTROL_TERMINATION'//nl//'&tend2,&n,&ang,,&p')
+      call read_deck_input(dir//'/pe.k', inp, err)
+      call check(.not. allocated(err), 'parameter expressions read')
+      if (allocated(err)) print '(a)', '    '//err%message
+      if (allocated(err)) return
+      ! tend = 2.5e-3; tend2 = 2.5e-3*2/3; n = int(3.5) = 3; ang = 0; p = -4 + 512 + 4
+      call check_close(inp%ctrl%endtim, 2.5e-3_wp*2.0_wp/3.0_wp, 0.0_wp, 1.0e-15_wp, &
+                       'expression: params, max, sqrt, integer parameter')
+      call check(inp%ctrl%endcyc == 3, 'expression: I parameter truncated (7/2 = 3)')
+      call check_close(inp%ctrl%dtmin, 0.0_wp, 1.0e-15_wp, 0.0_wp, 'expression: atan(1)*4 = pi')
+      call check_close(inp%ctrl%endmas, 512.0_wp, 0.0_wp, 0.0_wp, &
+                       'expression: -2**2 = -4, 2**3**2 = 512 (right-assoc), (1+1)^2 = 4')
+      call write_file('pe2.k', '*KEYWORD'//nl//'*PARAMETER_EXPRESSION'//nl// &
+                      'R a       2*nothere')
+      call read_deck_input(dir//'/pe2.k', inp, err)
+      call check(allocated(err), 'expression: undefined parameter is an error')
+      if (allocated(err)) call check_has(err%message, 'pe2.k:3: *PARAMETER_EXPRESSION: field '// &
+         'EXPRESSION of A: parameter ''NOTHERE'' is not defined', 'expression: error message')
+      call write_file('pe3.k', '*KEYWORD'//nl//'*PARAMETER_EXPRESSION'//nl// &
+                      'R a       foo(2) + 1')
+      call read_deck_input(dir//'/pe3.k', inp, err)
+      call check(allocated(err), 'expression: unknown function is an error')
+      if (allocated(err)) call check_has(err%message, 'unknown function ''FOO''', &
+                                         'expression: unknown function message')
+   end subroutine test_parameter_expression
 
    function full_deck() result(s)
       character(:), allocatable :: s
