@@ -14,7 +14,7 @@ module dx_deck
    use dx_read_materials, only: register_materials, unknown_model_hint
    use dx_read_controls, only: register_controls
    use dx_read_sets, only: register_sets, sets_finish
-   use dx_read_loads, only: register_loads
+   use dx_read_loads, only: register_loads, loads_finish
    use dx_read_curves, only: register_curves
    use dx_read_rigid, only: register_rigid
    use dx_read_contact, only: register_contact
@@ -136,6 +136,8 @@ contains
       end do
       if (allocated(deck%title)) inp%title = deck%title
       call sets_finish(inp, error)
+      if (allocated(error)) return
+      call loads_finish(inp, error)
       if (allocated(error)) return
       call emc_finish(inp, error)
    end subroutine read_deck_input
