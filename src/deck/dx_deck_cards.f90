@@ -233,24 +233,31 @@ contains
       end if
    end subroutine next_token
 
+   !> Append a card; the card list grows by doubling while the block is read (linear time)
+   !> and is cut to its exact size when the block is kept (finish_block: resize_cards).
    subroutine add_card(blk, line, lineno)
       type(block_t), intent(inout) :: blk
       character(*), intent(in) :: line
       integer, intent(in) :: lineno
-      type(card_line_t), allocatable :: t(:)
-      integer :: i
-      if (blk%n == size(blk%cards)) then
-         allocate(t(2*size(blk%cards)))
-         do i = 1, blk%n
-            call move_alloc(blk%cards(i)%text, t(i)%text)
-            t(i)%line = blk%cards(i)%line
-         end do
-         call move_alloc(t, blk%cards)
-      end if
+      if (blk%n == size(blk%cards)) call resize_cards(blk, 2*size(blk%cards))
       blk%n = blk%n + 1
       blk%cards(blk%n)%text = line
       blk%cards(blk%n)%line = lineno
    end subroutine add_card
+
+   !> Give blk's card list room for m cards, keeping the first m stored (texts moved, not copied).
+   subroutine resize_cards(blk, m)
+      type(block_t), intent(inout) :: blk
+      integer, intent(in) :: m
+      type(card_line_t), allocatable :: t(:)
+      integer :: i
+      allocate(t(m))
+      do i = 1, min(size(blk%cards), m)     ! cards past blk%n: stripped blanks, if stored
+         if (allocated(blk%cards(i)%text)) call move_alloc(blk%cards(i)%text, t(i)%text)
+         t(i)%line = blk%cards(i)%line
+      end do
+      call move_alloc(t, blk%cards)
+   end subroutine resize_cards
 
    !> A finished block: handle *TITLE, *INCLUDE, *PARAMETER here, keep the others.
    recursive subroutine finish_block(deck, blk, depth, error)
@@ -308,6 +315,9 @@ contains
       case ('PARAMETER_EXPRESSION')
          call read_parameter_expressions(deck, blk, error)
       case default
+         ! kept until the deck is read: exact size, not the doubling's up to 2x slots; the
+         ! stripped blank cards stay stored (dx_deck gives them back as cards of defaults)
+         if (blk%n + nblank < size(blk%cards)) call resize_cards(blk, blk%n + nblank)
          if (deck%nblocks == size(deck%blocks)) call grow_blocks(deck)
          deck%nblocks = deck%nblocks + 1
          call move_block(blk, deck%blocks(deck%nblocks))

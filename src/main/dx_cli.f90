@@ -1,7 +1,8 @@
 !> The dynx command line: options, usage text, the SLURM wall-clock limit, and the two ways
 !> the program stops on an error (a usage error before anything ran, or a run's error_t).
 !> Exit codes: 0 normal, 2 input error, 3 numerical failure in the run, 4 I/O failure,
-!> 5 stopped at a checkpoint (SIGTERM/SIGINT or wall-clock limit; a restart dump was written).
+!> 5 stopped at a checkpoint (SIGTERM/SIGINT/SIGUSR2 or wall-clock limit; a restart dump was
+!> written; --check: stopped by such a signal before the check ended, nothing written).
 module dx_cli
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use dx_kinds, only: wp
@@ -10,7 +11,7 @@ module dx_cli
    use dx_log, only: log_info, log_error
    use dx_io_sys, only: sys_epoch_seconds
    use dx_timer, only: wall_time
-   use dx_signals, only: SIGTERM_NUM, SIGINT_NUM, SIGUSR1_NUM
+   use dx_signals, only: SIGTERM_NUM, SIGINT_NUM, SIGUSR1_NUM, SIGUSR2_NUM
    use dx_integrator, only: run_options_t, energy_guard_t
    use dx_par, only: par_init, par_finalize, par_rank, par_size, par_abort, par_barrier, &
                      par_active
@@ -182,7 +183,7 @@ contains
          '                       output intervals, curves; docs/keywords.md)', &
          '  --walltime S         write a restart dump and stop (exit 5) before S seconds of', &
          '                       wall time (SLURM_JOB_END_TIME is read when set)', &
-         '  --raise-at-cycle N[:SIG][@R]  send SIG (TERM, INT, USR1; default TERM) to', &
+         '  --raise-at-cycle N[:SIG][@R]  send SIG (TERM, INT, USR1, USR2; default TERM) to', &
          '                       dynx itself at cycle N (tests of the signal path); MPI:', &
          '                       @R only on rank R (default every rank)', &
          '  --ignore-unknown     skip unknown output requests and performance controls', &
@@ -200,8 +201,10 @@ contains
          '  -h, --help           this text', &
          '', &
          'exit codes: 0 normal termination, 2 input error, 3 numerical failure in the run,', &
-         '            4 I/O failure, 5 stopped with a restart dump (SIGTERM, SIGINT, walltime)', &
-         'signals: SIGTERM/SIGINT dump and stop (exit 5); SIGUSR1 dumps and goes on'
+         '            4 I/O failure, 5 stopped with a restart dump (SIGTERM, SIGINT, SIGUSR2,', &
+         '            walltime)', &
+         'signals: SIGTERM/SIGINT/SIGUSR2 dump and stop (exit 5); SIGUSR1 dumps and goes on;', &
+         '         under mpirun send SIGUSR2 (mpirun forwards it; it kills the job on SIGTERM)'
    end subroutine usage
 
    !> The wall-clock limit: the smaller of --walltime and what SLURM_JOB_END_TIME (Unix
@@ -272,8 +275,9 @@ contains
       case ('TERM', 'SIGTERM'); sig = SIGTERM_NUM
       case ('INT', 'SIGINT'); sig = SIGINT_NUM
       case ('USR1', 'SIGUSR1'); sig = SIGUSR1_NUM
+      case ('USR2', 'SIGUSR2'); sig = SIGUSR2_NUM
       case default
-         call die_usage('--raise-at-cycle: signal '//name//' is not one of TERM, INT, USR1')
+         call die_usage('--raise-at-cycle: signal '//name//' is not one of TERM, INT, USR1, USR2')
       end select
    end subroutine parse_raise
 

@@ -5,7 +5,7 @@ program test_deck
    use dx_error, only: error_t, EXIT_INPUT
    use dx_assert, only: check, check_close, assert_summary
    use dx_log, only: log_set_quiet
-   use dx_model, only: model_t
+   use dx_model, only: model_t, ES_HGS
    use dx_element_types, only: ETYPE_HEX8_1PT, ETYPE_HEX8_SRI
    use dx_model_input, only: model_input_t
    use dx_deck, only: read_deck_input
@@ -425,7 +425,7 @@ contains
       call check(all(m%blocks(1)%conn(:, 1) == [1, 2, 3, 4, 5, 6, 7, 8]), &
                  'full: two-card element layout')
       call check_close(m%blocks(1)%vol0(1), 1.0_wp, 1e-14_wp, 0.0_wp, 'full: vol0')
-      call check(allocated(m%blocks(1)%hgs), 'full: hgs allocated for IHQ 5')
+      call check(m%blocks(1)%esc(ES_HGS) > 0, 'full: hgs slot for IHQ 5')
       call check(m%parts(1)%ihq == 5, 'full: part IHQ from *HOURGLASS')
       call check_close(m%parts(1)%qh, 0.05_wp, 0.0_wp, 1e-14_wp, 'full: part QH')
       call check_close(m%parts(1)%q1, 1.5_wp, 0.0_wp, 1e-14_wp, 'full: part Q1 default')
@@ -501,7 +501,7 @@ contains
                  'blocks: ELFORM 2')
       call check(m%elem_block(130) == 2 .and. m%elem_pos(130) == 2, 'blocks: elem maps')
       call check(m%elem_label(130) == 229, 'blocks: labels')
-      call check(.not. allocated(m%blocks(1)%hgs), 'blocks: no hgs for IHQ 1')
+      call check(m%blocks(1)%esc(ES_HGS) == 0, 'blocks: no hgs slot for IHQ 1')
       call check(size(m%blocks(1)%hv, 2) == m%blocks(1)%nhv .and. m%blocks(1)%nhv > 0, &
                  'blocks: history sized by the material')
       call check_close(sum(m%blocks(1)%vol0) + sum(m%blocks(2)%vol0), 130.0_wp, 1e-9_wp, &
