@@ -291,6 +291,13 @@ contains
          if (allocated(error)) return
          r%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
          if (ic + 1 > blk%n) then
+            ! the last record's card 2 left blank (stripped as layout: a blank line before
+            ! the next keyword) is a card of defaults in LS-DYNA; without a rotation
+            ! (OMEGA = 0) none of its fields matters
+            if (r%omega == 0.0_wp) then
+               inp%ivels = [inp%ivels, r]
+               exit
+            end if
             call card_error(deck, blk, ic, 'missing card 2 (XC YC ZC NX NY NZ PHASE IRIGID)', &
                             error)
             return

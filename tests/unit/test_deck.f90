@@ -278,6 +278,8 @@ contains
       call check(keyword_family('SECTION_SHELL') == 'section', 'family: section')
       call check(keyword_family('ELEMENT_SHELL') == 'element', 'family: element')
       call check(keyword_family('CONTACT_TIED_NODES_TO_SURFACE') == 'contact', 'family: contact')
+      call check(keyword_family('CONTACT_FORCE_TRANSDUCER_PENALTY_ID') == 'output', &
+                 'family: a force transducer is output (it applies no force)')
       call check(keyword_family('BOUNDARY_SPC_SET') == 'constraint', 'family: constraint')
       call check(keyword_family('INITIAL_STRESS_SOLID') == 'initial condition', &
                  'family: initial condition')
