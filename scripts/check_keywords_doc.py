@@ -26,7 +26,8 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 DECK = os.path.join(ROOT, 'src', 'deck')
 FACTORY = os.path.join(ROOT, 'src', 'materials', 'dx_mat_factory.f90')
 DOC = os.path.join(ROOT, 'docs', 'keywords.md')
-STRUCTURE = ['KEYWORD', 'TITLE', 'INCLUDE', 'PARAMETER', 'END']
+STRUCTURE = ['KEYWORD', 'TITLE', 'INCLUDE', 'INCLUDE_PATH', 'INCLUDE_PATH_RELATIVE', 'PARAMETER',
+             'PARAMETER_EXPRESSION', 'END']
 # the dynamic registrations of register_materials (dx_read_materials.f90), read from the
 # material/EOS registry below
 DYNAMIC = ["trim(t(i)%keyword)", "'MAT_'//num", "'EOS_'//num"]

@@ -14,7 +14,7 @@ module dx_deck
    use dx_read_materials, only: register_materials, unknown_model_hint
    use dx_read_controls, only: register_controls
    use dx_read_sets, only: register_sets, sets_finish
-   use dx_read_loads, only: register_loads
+   use dx_read_loads, only: register_loads, loads_finish
    use dx_read_curves, only: register_curves
    use dx_read_rigid, only: register_rigid
    use dx_read_contact, only: register_contact
@@ -75,7 +75,7 @@ contains
             call reg%lookup(blk%name, k, blk%base, blk%opt_title, blk%opt_id)
             if (k == 0) then
                if (checking) then
-                  call found%add(blk%name, '*'//blk%name, where)
+                  call found%record(blk%name, '*'//blk%name, where)
                   cycle
                end if
                if (ignore .and. keyword_skippable(blk%name)) then
@@ -114,7 +114,7 @@ contains
       end do
       do k = 1, size(inp%out_notes)
          if (checking) then
-            call found%add('', inp%out_notes(k)%s, inp%out_notes(k)%where)
+            call found%record('', inp%out_notes(k)%s, inp%out_notes(k)%where)
          else
             call log_info('dynx: note: '//inp%out_notes(k)%where//': '//inp%out_notes(k)%s)
          end if
@@ -137,6 +137,8 @@ contains
       if (allocated(deck%title)) inp%title = deck%title
       call sets_finish(inp, error)
       if (allocated(error)) return
+      call loads_finish(inp, error)
+      if (allocated(error)) return
       call emc_finish(inp, error)
    end subroutine read_deck_input
 
@@ -156,6 +158,6 @@ contains
          where = first(1:k - 1)
          first = first(k + 2:)
       end if
-      call found%add(name, first, where)
+      call found%record(name, first, where)
    end subroutine add_reader_error
 end module dx_deck

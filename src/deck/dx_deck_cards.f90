@@ -14,6 +14,7 @@ module dx_deck_cards
    use dx_strings, only: upper, str, rstr
    use dx_model_input, only: string_t
    use dx_io_sys, only: sys_file_kind
+   use dx_deck_expr, only: eval_expression
    use dx_card, only: card_line_t, block_t, param_t, card_t, open_card, std_widths, data_start, &
                       block_title, ncards, card_is_blank, field_text, find_param, field_int, &
                       field_real, field_str, error_at_field, error_at_card, error_at_block, &
@@ -311,6 +312,8 @@ contains
          end do
       case ('PARAMETER')
          call read_parameters(deck, blk, error)
+      case ('PARAMETER_EXPRESSION')
+         call read_parameter_expressions(deck, blk, error)
       case default
          ! kept until the deck is read: exact size, not the doubling's up to 2x slots; the
          ! stripped blank cards stay stored (dx_deck gives them back as cards of defaults)
@@ -408,11 +411,10 @@ contains
       type(deck_t), intent(inout) :: deck
       type(block_t), intent(in) :: blk
       type(error_t), allocatable, intent(out) :: error
-      integer :: ic, k, col, w(8), j
+      integer :: ic, k, col, w(8)
       character(:), allocatable :: ptxt, vtxt, name
       character :: kind
       type(param_t) :: p
-      type(param_t), allocatable :: t(:)
       real(wp) :: v
       w = std_widths(blk, 8)
       do ic = 1, blk%n
@@ -446,22 +448,80 @@ contains
                p%value = v
                p%text = ''
             end if
-            ! a redefinition replaces the earlier value
-            j = find_param(deck%params(1:deck%nparams), name)
-            if (j > 0) then
-               deck%params(j) = p
-            else
-               if (deck%nparams == size(deck%params)) then
-                  allocate(t(2*size(deck%params)))
-                  t(1:deck%nparams) = deck%params(1:deck%nparams)
-                  call move_alloc(t, deck%params)
-               end if
-               deck%nparams = deck%nparams + 1
-               deck%params(deck%nparams) = p
-            end if
+            call add_param(deck, p)
          end do
       end do
    end subroutine read_parameters
+
+   !> Define parameter p; a redefinition replaces the earlier value.
+   subroutine add_param(deck, p)
+      type(deck_t), intent(inout) :: deck
+      type(param_t), intent(in) :: p
+      type(param_t), allocatable :: t(:)
+      integer :: j
+      j = find_param(deck%params(1:deck%nparams), p%name)
+      if (j > 0) then
+         deck%params(j) = p
+      else
+         if (deck%nparams == size(deck%params)) then
+            allocate(t(2*size(deck%params)))
+            t(1:deck%nparams) = deck%params(1:deck%nparams)
+            call move_alloc(t, deck%params)
+         end if
+         deck%nparams = deck%nparams + 1
+         deck%params(deck%nparams) = p
+      end if
+   end subroutine add_param
+
+   !> *PARAMETER_EXPRESSION: one parameter per card, PRMR (columns 1-10: type R or I, then
+   !> the name; 20 in long format) and EXPRESSION (the rest of the card, dx_deck_expr) in
+   !> the parameters defined before it. A card whose PRMR field holds a comma is free
+   !> format: PRMR up to the first comma, the expression after it.
+   subroutine read_parameter_expressions(deck, blk, error)
+      type(deck_t), intent(inout) :: deck
+      type(block_t), intent(in) :: blk
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ic, w, k
+      character(:), allocatable :: line, ptxt, etxt, msg
+      character :: kind
+      type(param_t) :: p
+      real(wp) :: v
+      w = 10
+      if (blk%long) w = 20
+      do ic = 1, blk%n
+         line = blk%cards(ic)%text
+         if (len_trim(line) == 0) cycle
+         k = index(line(1:min(w, len(line))), ',')
+         if (k > 0) then
+            ptxt = line(1:k - 1)
+            etxt = line(k + 1:)
+         else
+            ptxt = line(1:min(w, len(line)))
+            etxt = ''
+            if (len(line) > w) etxt = line(w + 1:)
+         end if
+         ptxt = trim(adjustl(ptxt))
+         kind = ' '
+         if (len(ptxt) > 0) kind = upper(ptxt(1:1))
+         p%name = ''
+         if (len(ptxt) > 1) p%name = upper(trim(adjustl(ptxt(2:))))
+         if (index('RI', kind) == 0 .or. len(p%name) == 0) then
+            call card_error(deck, blk, ic, 'field PRMR: expected R or I followed by the '// &
+                            'parameter name, got '''//ptxt//'''', error)
+            return
+         end if
+         call eval_expression(etxt, deck%params(1:deck%nparams), v, msg)
+         if (len(msg) > 0) then
+            call card_error(deck, blk, ic, 'field EXPRESSION of '//p%name//': '//msg, error)
+            return
+         end if
+         if (kind == 'I') v = aint(v)   ! evaluated in floating point, then truncated
+         p%kind = kind
+         p%value = v
+         p%text = ''
+         call add_param(deck, p)
+      end do
+   end subroutine read_parameter_expressions
 
    ! ----------------------------------------------------------------------------------------
    ! the deck's view of the dx_card field readers: the file name and *PARAMETER table of deck

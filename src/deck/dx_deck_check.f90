@@ -32,19 +32,22 @@ module dx_deck_check
       integer :: n = 0
       type(finding_t), allocatable :: f(:)
    contains
-      procedure :: add => list_add
+      procedure :: record => list_add
       procedure :: report => list_report
       procedure :: nproblems => list_nproblems
    end type check_list_t
 
    !> keyword prefixes and their families; the first match wins (specific ones first)
-   character(len=16), parameter :: PREFIX(33) = [character(len=16) :: &
+   !> (*CONTACT_FORCE_TRANSDUCER measures contact forces for output and applies none)
+   character(len=25), parameter :: PREFIX(34) = [character(len=25) :: &
+      'CONTACT_FORCE_TRANSDUCER', &
       'CONTROL_OUTPUT', 'CONTROL_MPP_IO', 'CONTROL_MPP', 'CONTROL_PARALLEL', 'CONTROL_CPU', &
       'DATABASE', 'CONTROL', 'LOAD', 'BOUNDARY', 'CONSTRAINED', 'RIGIDWALL', 'CONTACT', &
       'INITIAL', 'MAT', 'EOS', 'HOURGLASS', 'SECTION', 'ELEMENT', 'NODE', 'PART', 'SET', &
       'DEFINE', 'PARAMETER', 'CASE', 'INCLUDE', 'KEYWORD', 'TITLE', 'COMMENT', 'DAMPING', &
       'INTEGRATION', 'USER', 'MODULE', 'END']
-   integer, parameter :: PFAM(33) = [1, 1, 2, 2, 2, &
+   integer, parameter :: PFAM(34) = [1, &
+      1, 1, 2, 2, 2, &
       1, 3, 4, 5, 5, 5, 6, &
       7, 8, 8, 9, 9, 10, 10, 11, 12, &
       13, 14, 15, 16, 16, 16, 16, 17, &

@@ -65,7 +65,6 @@ contains
          ! by mass scaling (*CONTROL_TIMESTEP DT2MS) reaches it. dynx adds no mass (DT2MS
          ! /= 0 is an error), so it never acts: a value other than 0 and the default 1e8
          ! (which LS-PrePost writes) draws a warning that it has no effect.
-         if (c%ok() .and. t%endmas < 0.0_wp) call c%fail('ENDMAS', 'must be >= 0')
          if (c%ok() .and. t%endmas /= 0.0_wp .and. t%endmas /= 1.0e8_wp) &
             call log_warn(deck%files(blk%ifile)%s//':'// &
             str(blk%cards(1)%line)//': *CONTROL_TERMINATION ENDMAS = '//rstr(t%endmas)// &

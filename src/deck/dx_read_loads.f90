@@ -6,7 +6,7 @@
 !> velocities on solids, follower forces, ...) give an error naming the field.
 module dx_read_loads
    use dx_kinds, only: wp
-   use dx_error, only: error_t
+   use dx_error, only: error_t, set_error
    use dx_strings, only: str, rstr
    use dx_deck_cards, only: deck_t, block_t, get_int, get_real, field_error, block_error, &
                             card_error, std_widths, data_start, check_max_cards
@@ -16,7 +16,7 @@ module dx_read_loads
                              IVEL_GEN
    implicit none
    private
-   public :: register_loads, read_motion_fields
+   public :: register_loads, loads_finish, read_motion_fields
 
 contains
 
@@ -30,7 +30,8 @@ contains
       call reg%add('INITIAL_VELOCITY', read_initial_velocity)
       call reg%add('INITIAL_VELOCITY_NODE', read_initial_velocity_node)
       call reg%add('INITIAL_VELOCITY_GENERATION', read_initial_velocity_generation)
-      call reg%add('LOAD_NODE_POINT', read_load_node)
+      call reg%add('LOAD_NODE_POINT', read_load_node, id=.true.)
+      call reg%add('LOAD_NODE_SET', read_load_node, id=.true.)
       call reg%add('LOAD_SEGMENT', read_load_segment, id=.true.)
       call reg%add('LOAD_SEGMENT_SET', read_load_segment, id=.true.)
       call reg%add('RIGIDWALL_PLANAR', read_rigidwall_planar, id=.true.)
@@ -290,6 +291,13 @@ contains
          if (allocated(error)) return
          r%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
          if (ic + 1 > blk%n) then
+            ! the last record's card 2 left blank (stripped as layout: a blank line before
+            ! the next keyword) is a card of defaults in LS-DYNA; without a rotation
+            ! (OMEGA = 0) none of its fields matters
+            if (r%omega == 0.0_wp) then
+               inp%ivels = [inp%ivels, r]
+               exit
+            end if
             call card_error(deck, blk, ic, 'missing card 2 (XC YC ZC NX NY NZ PHASE IRIGID)', &
                             error)
             return
@@ -326,11 +334,13 @@ contains
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
       integer :: w(8), ic, k
+      logical :: is_set
       type(load_node_in_t) :: l
       w = std_widths(blk, 8)
-      do ic = 1, blk%n
+      is_set = blk%base == 'LOAD_NODE_SET'
+      do ic = data_start(blk), blk%n
          l = load_node_in_t()
-         call positive_id(deck, blk, ic, 1, w, 'NID', l%nid, error)
+         call positive_id(deck, blk, ic, 1, w, merge('NSID', 'NID ', is_set), l%nid, error)
          if (allocated(error)) return
          call get_int(deck, blk, ic, 2, w, 'DOF', 0, l%dof, error)
          if (allocated(error)) return
@@ -351,9 +361,42 @@ contains
             if (allocated(error)) return
          end do
          l%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
-         inp%node_loads = [inp%node_loads, l]
+         if (is_set) then
+            inp%node_set_loads = [inp%node_set_loads, l]   ! nid holds NSID: loads_finish
+         else
+            inp%node_loads = [inp%node_loads, l]
+         end if
       end do
    end subroutine read_load_node
+
+   !> After the whole deck (sets resolved): each *LOAD_NODE_SET card becomes the same load
+   !> on every node of its set, in the set's order (LS-DYNA: each node carries SF x curve).
+   subroutine loads_finish(inp, error)
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i, j, k
+      type(load_node_in_t) :: l
+      do i = 1, size(inp%node_set_loads)
+         l = inp%node_set_loads(i)
+         j = 0
+         do k = size(inp%node_sets), 1, -1
+            if (inp%node_sets(k)%label == l%nid) then
+               j = k; exit
+            end if
+         end do
+         if (j == 0) then
+            call set_error(error, inp%files(l%src%ifile)%s//':'//str(l%src%line)//': *'// &
+               l%src%key//': field NSID: node set '//str(l%nid)//' is not defined')
+            return
+         end if
+         do k = 1, size(inp%node_sets(j)%ids)
+            l%nid = inp%node_sets(j)%ids(k)
+            inp%node_loads = [inp%node_loads, l]
+         end do
+      end do
+      deallocate(inp%node_set_loads)
+      allocate(inp%node_set_loads(0))
+   end subroutine loads_finish
 
    !> *LOAD_SEGMENT: LCID SF AT N1 N2 N3 N4 (N5 must be blank: no higher-order segments);
    !> *LOAD_SEGMENT_SET: SSID LCID SF AT

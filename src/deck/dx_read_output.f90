@@ -29,17 +29,11 @@ module dx_read_output
    private
    public :: register_output, add_out_note
 
-   !> ASCII database keywords dynx accepts without writing their file (name = file name)
-   character(len=8), parameter :: ASCII_NOT_WRITTEN(12) = [character(len=8) :: &
-      'ELOUT', 'SLEOUT', 'SPCFORC', 'BNDOUT', 'JNTFORC', 'DEFORC', 'NCFORC', 'NODFOR', &
-      'SECFORC', 'RWFORC', 'MATSUM', 'TPRINT']
-
 contains
 
    !> Add the keywords of this module to the registry.
    subroutine register_output(reg)
       type(registry_t), intent(inout) :: reg
-      integer :: i
       call reg%add('CONTROL_ENERGY', read_energy)
       call reg%add('CONTROL_ACCURACY', read_accuracy)
       call reg%add('CONTROL_OUTPUT', read_control_output)
@@ -52,9 +46,19 @@ contains
       call reg%add('DATABASE_BINARY_D3THDT', read_d3thdt)
       call reg%add('DATABASE_BINARY_D3PROP', read_d3prop)
       call reg%add('KEYWORD_ID', read_keyword_id)
-      do i = 1, size(ASCII_NOT_WRITTEN)
-         call reg%add('DATABASE_'//trim(ASCII_NOT_WRITTEN(i)), read_ascii_not_written)
-      end do
+      ! the ASCII databases dynx does not write yet (the file is named after the keyword)
+      call reg%add('DATABASE_ELOUT', read_ascii_not_written)
+      call reg%add('DATABASE_SLEOUT', read_ascii_not_written)
+      call reg%add('DATABASE_SPCFORC', read_ascii_not_written)
+      call reg%add('DATABASE_BNDOUT', read_ascii_not_written)
+      call reg%add('DATABASE_JNTFORC', read_ascii_not_written)
+      call reg%add('DATABASE_DEFORC', read_ascii_not_written)
+      call reg%add('DATABASE_NCFORC', read_ascii_not_written)
+      call reg%add('DATABASE_NODFOR', read_ascii_not_written)
+      call reg%add('DATABASE_SECFORC', read_ascii_not_written)
+      call reg%add('DATABASE_RWFORC', read_ascii_not_written)
+      call reg%add('DATABASE_MATSUM', read_ascii_not_written)
+      call reg%add('DATABASE_TPRINT', read_ascii_not_written)
    end subroutine register_output
 
    !> Note that the request of blk is accepted and not honoured: what (a file name, by

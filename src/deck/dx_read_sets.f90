@@ -209,6 +209,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(label_map_t) :: nmap
       logical, allocatable :: mask(:)
+      integer, allocatable :: plab(:)
       integer :: ig, is, i, j, k, e, n
       type(label_list_t) :: s
       logical :: add
@@ -312,7 +313,8 @@ contains
                s%ids = pack(inp%node_label(1:inp%nn), mask)
                inp%node_sets = [inp%node_sets, s]
             else
-               s%ids = pack(inp%parts(1:inp%nparts)%label, mask)
+               plab = inp%parts(1:inp%nparts)%label
+               s%ids = pack(plab, mask)
                inp%part_sets = [inp%part_sets, s]
             end if
             deallocate(mask)

@@ -160,6 +160,7 @@ module dx_model_input
       type(motion_in_t), allocatable :: motions(:)
       type(ivel_in_t), allocatable :: ivels(:)
       type(load_node_in_t), allocatable :: node_loads(:)
+      type(load_node_in_t), allocatable :: node_set_loads(:)  !< *LOAD_NODE_SET (nid = NSID)
       type(load_seg_in_t), allocatable :: seg_loads(:)
       type(wall_in_t), allocatable :: walls(:)
       type(body_load_in_t), allocatable :: body_loads(:)   !< *LOAD_BODY_X/Y/Z
@@ -193,7 +194,7 @@ contains
                inp%part_sets(0), inp%segment_sets(0), inp%spcs(0), inp%motions(0), &
                inp%ivels(0), inp%node_loads(0), inp%seg_loads(0), inp%walls(0), &
                inp%hist_nodes(0), inp%hist_node_sets(0), inp%eoss(0), inp%eos_src(0), &
-               inp%out_notes(0), inp%set_gens(0))
+               inp%out_notes(0), inp%set_gens(0), inp%node_set_loads(0))
       allocate(inp%body_loads(0), inp%rigid%inertias(0), inp%rigid%nrbs(0), &
                inp%rigid%extras(0), inp%rigid%motions(0))
       allocate(inp%node_label(0), inp%x(3, 0), inp%node_tc(0), inp%node_rc(0), &

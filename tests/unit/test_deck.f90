@@ -10,6 +10,7 @@ program test_deck
    use dx_model_input, only: model_input_t
    use dx_deck, only: read_deck_input
    use dx_deck_model, only: read_deck
+   use dx_deck_check, only: keyword_family, keyword_skippable
    use dx_mat_elastic, only: mat_elastic_t
    use dx_mat_piecewise_linear, only: mat_piecewise_linear_t
    implicit none
@@ -23,6 +24,10 @@ program test_deck
    call test_include()
    call test_field_errors()
    call test_unknown_keyword()
+   call test_families()
+   call test_reader_defects()
+   call test_generated_sets()
+   call test_parameter_expression()
    call test_full_deck()
    call test_blocks()
    call test_materials()
@@ -257,6 +262,123 @@ contains
          call check(err%code == 2, 'check: exit code 2')
       end if
    end subroutine test_unknown_keyword
+
+   !> The family of a keyword from its name, and which families --ignore-unknown may skip.
+   subroutine test_families()
+      call check(keyword_family('DATABASE_MATSUM') == 'output', 'family: *DATABASE_ output')
+      call check(keyword_family('CONTROL_OUTPUT') == 'output', 'family: *CONTROL_OUTPUT output')
+      call check(keyword_family('CONTROL_MPP_DECOMPOSITION_AUTOMATIC') == 'performance', &
+                 'family: *CONTROL_MPP_ performance')
+      call check(keyword_family('CONTROL_SHELL') == 'control', 'family: *CONTROL_SHELL control')
+      call check(keyword_family('LOAD_NODE_SET') == 'load', 'family: load')
+      call check(keyword_family('CASE_BEGIN_1') == 'case', 'family: *CASE_BEGIN_1 case')
+      call check(keyword_family('CASE') == 'case', 'family: *CASE case')
+      call check(keyword_family('MAT_JOHNSON_COOK') == 'material', 'family: material')
+      call check(keyword_family('MATSUM') == 'other', 'family: MATSUM is not MAT_')
+      call check(keyword_family('SECTION_SHELL') == 'section', 'family: section')
+      call check(keyword_family('ELEMENT_SHELL') == 'element', 'family: element')
+      call check(keyword_family('CONTACT_TIED_NODES_TO_SURFACE') == 'contact', 'family: contact')
+      call check(keyword_family('CONTACT_FORCE_TRANSDUCER_PENALTY_ID') == 'output', &
+                 'family: a force transducer is output (it applies no force)')
+      call check(keyword_family('BOUNDARY_SPC_SET') == 'constraint', 'family: constraint')
+      call check(keyword_family('INITIAL_STRESS_SOLID') == 'initial condition', &
+                 'family: initial condition')
+      call check(keyword_family('DYNX_NO_SUCH') == 'other', 'family: other')
+      call check(keyword_skippable('DATABASE_ELOUT') .and. keyword_skippable('CONTROL_PARALLEL') &
+                 .and. keyword_skippable('CONTROL_OUTPUT'), 'skippable: output, performance')
+      call check(.not. (keyword_skippable('LOAD_NODE_SET') .or. keyword_skippable('CASE') .or. &
+                 keyword_skippable('CONTROL_SHELL') .or. keyword_skippable('DEFINE_BOX') .or. &
+                 keyword_skippable('DYNX_FOO')), 'not skippable: load, case, control, define, other')
+   end subroutine test_families
+
+   !> A blank line standing for a card; an *INCLUDE of comments only; *INCLUDE_PATH_RELATIVE;
+   !> *KEYWORD tokens; RCFORC DT = 0.
+   subroutine test_reader_defects()
+      type(model_input_t) :: inp
+      type(error_t), allocatable :: err
+      call execute_command_line('mkdir -p '//dir//'/sub')
+      call write_file('sub/inc1.k', '*CONTROL_TERMINATION'//nl//'2.5e-3')
+      call write_file('rd.k', '*KEYWORD 100m NCPU=4'//nl//'*INCLUDE_PATH_RELATIVE'//nl// &
+         'sub'//nl//'*INCLUDE'//nl//'$ gone.k'//nl//'*INCLUDE'//nl//'inc1.k'//nl// &
+         '*CONTROL_SOLID'//nl//''//nl//'*CONTROL_BULK_VISCOSITY'//nl//''//nl//''//nl// &
+         '*DATABASE_RCFORC'//nl//'0.0')
+      call read_deck_input(dir//'/rd.k', inp, err)
+      call check(.not. allocated(err), 'reader defects: deck read')
+      if (allocated(err)) print '(a)', '    '//err%message
+      call check_close(inp%ctrl%endtim, 2.5e-3_wp, 0.0_wp, 0.0_wp, &
+                       'include found through *INCLUDE_PATH_RELATIVE')
+      call check(inp%ctrl%esort == 0, 'blank *CONTROL_SOLID card: ESORT 0')
+      call check_close(inp%ctrl%q1, 1.5_wp, 0.0_wp, 0.0_wp, 'blank bulk viscosity card: Q1 1.5')
+      call check_close(inp%contact%rcforc_dt, 0.0_wp, 0.0_wp, 0.0_wp, 'RCFORC DT = 0 accepted')
+      ! a missing include file still names the including line
+      call write_file('rd2.k', '*KEYWORD'//nl//'*INCLUDE_PATH'//nl//dir//'/sub'//nl// &
+                      '*INCLUDE'//nl//'nowhere.k')
+      call read_deck_input(dir//'/rd2.k', inp, err)
+      call check(allocated(err), 'missing include is an error')
+      if (allocated(err)) call check_has(err%message, 'rd2.k:5: *INCLUDE: cannot open file', &
+                                         'missing include: names the including line')
+   end subroutine test_reader_defects
+
+   !> *SET_PART_LIST_GENERATE over part labels; *SET_NODE_GENERAL ALL then DNODE.
+   subroutine test_generated_sets()
+      type(model_input_t) :: inp
+      type(error_t), allocatable :: err
+      integer :: k
+      call write_file('gs.k', '*KEYWORD'//nl//'*SET_PART_LIST_GENERATE'//nl//'5'//nl// &
+         '2,3,7,7'//nl//'*SET_NODE_GENERAL'//nl//'6'//nl//'ALL'//nl//'DNODE,2'//nl// &
+         '*PART'//nl//'a'//nl//'1,1,1'//nl//'*PART'//nl//'b'//nl//'3,1,1'//nl// &
+         '*PART'//nl//'c'//nl//'7,1,1'//nl//'*NODE'//nl//'1,0,0,0'//nl//'2,1,0,0'//nl// &
+         '3,2,0,0')
+      call read_deck_input(dir//'/gs.k', inp, err)
+      call check(.not. allocated(err), 'generated sets: deck read')
+      if (allocated(err)) print '(a)', '    '//err%message
+      if (allocated(err)) return
+      k = findloc(inp%part_sets%label, 5, 1)
+      call check(k > 0, 'part set 5 generated')
+      if (k > 0) call check(size(inp%part_sets(k)%ids) == 2 .and. &
+         all(inp%part_sets(k)%ids == [3, 7]), 'part set 5 = parts 3, 7 (2..3 and 7..7)')
+      k = findloc(inp%node_sets%label, 6, 1)
+      call check(k > 0, 'node set 6 generated')
+      if (k > 0) call check(size(inp%node_sets(k)%ids) == 2 .and. &
+         all(inp%node_sets(k)%ids == [1, 3]), 'node set 6 = ALL - DNODE 2 = 1, 3')
+   end subroutine test_generated_sets
+
+   !> *PARAMETER_EXPRESSION: precedence, functions, integer truncation, errors.
+   subroutine test_parameter_expression()
+      type(model_input_t) :: inp
+      type(error_t), allocatable :: err
+      call write_file('pe.k', '*KEYWORD'//nl//'*PARAMETER'//nl//'R t0      1.0e-3'//nl// &
+         '*PARAMETER_EXPRESSION'//nl// &
+         'R tend    2.0*t0 + &t0/2'//nl// &
+         'R ang     atan(1.0)*4 - pi'//nl// &
+         'I n       7/2'//nl// &
+         'R p       -2**2 + 2**3**2 + (1+1)^2'//nl// &
+         'R tend2,  max(tend, 1.0d-4) * sqrt(4.0) / n'//nl// &
+         '*CONTROL_TERMINATION'//nl//'&tend2,&n,&ang,,&p')
+      call read_deck_input(dir//'/pe.k', inp, err)
+      call check(.not. allocated(err), 'parameter expressions read')
+      if (allocated(err)) print '(a)', '    '//err%message
+      if (allocated(err)) return
+      ! tend = 2.5e-3; tend2 = 2.5e-3*2/3; n = int(3.5) = 3; ang = 0; p = -4 + 512 + 4
+      call check_close(inp%ctrl%endtim, 2.5e-3_wp*2.0_wp/3.0_wp, 0.0_wp, 1.0e-15_wp, &
+                       'expression: params, max, sqrt, integer parameter')
+      call check(inp%ctrl%endcyc == 3, 'expression: I parameter truncated (7/2 = 3)')
+      call check_close(inp%ctrl%dtmin, 0.0_wp, 1.0e-15_wp, 0.0_wp, 'expression: atan(1)*4 = pi')
+      call check_close(inp%ctrl%endmas, 512.0_wp, 0.0_wp, 0.0_wp, &
+                       'expression: -2**2 = -4, 2**3**2 = 512 (right-assoc), (1+1)^2 = 4')
+      call write_file('pe2.k', '*KEYWORD'//nl//'*PARAMETER_EXPRESSION'//nl// &
+                      'R a       2*nothere')
+      call read_deck_input(dir//'/pe2.k', inp, err)
+      call check(allocated(err), 'expression: undefined parameter is an error')
+      if (allocated(err)) call check_has(err%message, 'pe2.k:3: *PARAMETER_EXPRESSION: field '// &
+         'EXPRESSION of A: parameter ''NOTHERE'' is not defined', 'expression: error message')
+      call write_file('pe3.k', '*KEYWORD'//nl//'*PARAMETER_EXPRESSION'//nl// &
+                      'R a       foo(2) + 1')
+      call read_deck_input(dir//'/pe3.k', inp, err)
+      call check(allocated(err), 'expression: unknown function is an error')
+      if (allocated(err)) call check_has(err%message, 'unknown function ''FOO''', &
+                                         'expression: unknown function message')
+   end subroutine test_parameter_expression
 
    function full_deck() result(s)
       character(:), allocatable :: s
