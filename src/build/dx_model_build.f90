@@ -12,7 +12,7 @@ module dx_model_build
    use dx_error, only: error_t, set_error
    use dx_strings, only: str, rstr
    use dx_model, only: model_t, part_t, family_t, element_family, elem_volume, etype_of_elform, &
-                       solid_shape, MAX_NEN
+                       solid_shape, MAX_NEN, ES_WORK, ES_HGS
    use dx_model_input, only: model_input_t, origin_t
    use dx_label_map, only: label_map_t
    use dx_build_common, only: maps_t, at, at_line, set_nodes, curve_index, node_index, &
@@ -21,12 +21,14 @@ module dx_model_build
    use dx_rigid_build, only: build_rigid, build_body_loads
    implicit none
    private
-   public :: build_model
+   public :: build_model_data
 
 contains
 
-   !> Build model from inp (inp's materials and curves are moved into model).
-   subroutine build_model(inp, model, error)
+   !> Build the model data from inp: nodes, parts, blocks, sets, constraints, loads, controls
+   !> and rigid bodies; not the contact pairs nor the conserving rigid contact (dx_build:
+   !> build_model does all three). inp's materials and curves are moved into model.
+   subroutine build_model_data(inp, model, error)
       type(model_input_t), intent(inout) :: inp
       type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
@@ -65,7 +67,7 @@ contains
       call build_body_loads(inp, model, mp%curve, error)
       if (allocated(error)) return
       call build_rigid(inp, model, mp%node, mp%part, mp%nset, mp%curve, deck0, error)
-   end subroutine build_model
+   end subroutine build_model_data
 
    subroutine build_nodes(inp, model, mp, error)
       type(model_input_t), intent(in) :: inp
@@ -394,12 +396,12 @@ contains
                   b%relvol = 1.0_wp
                   b%eint = 0.0_wp
                   b%ehg = 0.0_wp
-                  allocate(b%ework(nel, 4), source=0.0_wp)
                   b%failed = .false.
-                  if ((p%ihq == 4 .or. p%ihq == 5) .and. fam%hgmodes > 0) then
-                     allocate(b%hgs(nel, 3, fam%hgmodes))
-                     b%hgs = 0.0_wp
-                  end if
+                  ! family state: the centred-work terms; the hourglass resisting forces
+                  ! of a stiffness hourglass type (IHQ 4, 5)
+                  if (fam%es_ncol(ES_WORK) > 0) call b%es_add(ES_WORK, fam%es_ncol(ES_WORK))
+                  if ((p%ihq == 4 .or. p%ihq == 5) .and. fam%es_ncol(ES_HGS) > 0) &
+                     call b%es_add(ES_HGS, fam%es_ncol(ES_HGS))
                   do k = 1, nel
                      model%elem_block(b%elem(k)) = ib
                      model%elem_pos(b%elem(k)) = k

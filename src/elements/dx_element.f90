@@ -9,9 +9,8 @@
 !> constant-strain tetrahedron; Zienkiewicz, Taylor & Zhu 2013, ch. 6).
 module dx_element
    use dx_kinds, only: wp
-   use dx_model, only: elem_block_t, part_t
    use dx_material, only: material_t
-   use dx_element_types, only: block_result_t, family_t, element_family, ELEM_ERR_NEGVOL, &
+   use dx_element_types, only: elem_block_t, part_t, ES_PHIM, block_result_t, family_t, element_family, ELEM_ERR_NEGVOL, &
                                ELEM_ERR_MATERIAL, ETYPE_TET4
    use dx_hex8, only: hex8_block, hex8_mass_share
    use dx_tet4, only: tet4_block
@@ -50,7 +49,7 @@ contains
       integer, intent(in) :: cnodes(:)
       select case (blk%etype)
       case (ETYPE_TET4)
-         if (allocated(blk%phim)) deallocate(blk%phim)
+         call blk%es_drop(ES_PHIM)
       case default
          call hex8_mass_share(blk, rho, mass, cnodes)
       end select

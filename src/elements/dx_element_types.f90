@@ -15,7 +15,10 @@
 !> and moments int x dV = V xbar, int x_i x_j dV = V/20 (sum_a x_ai x_aj + 16 xbar_i xbar_j)
 !> (the exact integral of a quadratic over a simplex: Zienkiewicz, Taylor & Zhu, The Finite
 !> Element Method: Its Basis and Fundamentals, 7th ed., 2013, eq. 6.29 / Table 6.3).
-!> Element error codes and the result record of one block pass live here too (dx_element).
+!> Element error codes and the result record of one block pass live here too (dx_element),
+!> and the element block and the part the kernels work on (elem_block_t with its family state
+!> es, part_t): the model holds and re-exports them, so src/elements/ never imports src/model/
+!> (no folder pair imports each other).
 module dx_element_types
    use dx_kinds, only: wp, huge_wp
    use dx_vec3, only: cross
@@ -29,6 +32,9 @@ module dx_element_types
    public :: MAX_NEN, MAX_FACE_NODES, MAX_FACES
    public :: ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, etype_of_elform, ETYPES
    public :: solid_shape
+   public :: ES_WORK, ES_HGS, ES_PHIM, MAX_ES, ES_NAMES, ES_DUMP
+   public :: WORK_Q, WORK_QBV, WORK_DT, WORK_PN
+   public :: elem_block_t, part_t
 
    !> element types (the block's etype): LS-DYNA's *SECTION_SOLID ELFORM numbers
    integer, parameter :: ETYPE_HEX8_1PT = 1   !< one-point, uniform strain, hourglass control
@@ -44,6 +50,22 @@ module dx_element_types
    !> element error codes of a block pass
    integer, parameter :: ELEM_ERR_NEGVOL = 1, ELEM_ERR_MATERIAL = 2
 
+   !> Family state: one array es(nel, nes) per block (as hv is for the material), made of
+   !> named slots; a family lists the columns of each slot it has (family_t%es_ncol, 0: none)
+   !> and a block holds the slots it uses (elem_block_t%esc: first column, 0 = absent), so a
+   !> block pays only for what its part uses. Slot ids:
+   integer, parameter :: ES_HGS = 1    !< hourglass resisting forces (3, hgmodes) (IHQ 4, 5)
+   integer, parameter :: ES_WORK = 2   !< pending terms of the centred work (offsets WORK_*)
+   integer, parameter :: ES_PHIM = 3   !< own-mass share of the element dt bound (set-up)
+   integer, parameter :: MAX_ES = 3
+   !> restart dataset of each slot (the columns in order, flat; ES_DUMP: phim is derived at
+   !> start, not dumped); dumps write the slots in id order
+   character(8), parameter :: ES_NAMES(MAX_ES) = [character(8) :: 'hgs', 'ework', 'phim']
+   logical, parameter :: ES_DUMP(MAX_ES) = [.true., .true., .false.]
+   !> column offsets inside ES_WORK (dx_hex8's centred_work: q, q B.v, dt, sigma:D V of the
+   !> last pass)
+   integer, parameter :: WORK_Q = 0, WORK_QBV = 1, WORK_DT = 2, WORK_PN = 3
+
    !> one family: the facts its consumers need
    type :: family_t
       character(8) :: name = ''            !< plot connectivity dataset /mesh/<name>
@@ -57,6 +79,7 @@ module dx_element_types
       integer :: edges(2, 12) = 0                       !< local edge end nodes
       real(wp) :: mass_share = 0.0_wp      !< lumped mass of each node: rho V0 * mass_share
       integer :: weight = 1                !< partition cost weight (measured ns/element-cycle)
+      integer :: es_ncol(MAX_ES) = 0       !< columns of each family-state slot (0: none)
    end type family_t
 
    !> results of one block pass
@@ -71,6 +94,46 @@ module dx_element_types
       !> (dt(n+1/2) - dt(n-1/2))/4 times it to report the energy at t(n) (see centred_work)
       real(wp) :: pend = 0.0_wp
    end type block_result_t
+
+   !> *PART with its resolved section, material and hourglass settings
+   type :: part_t
+      integer :: label = 0
+      character(:), allocatable :: title
+      integer :: secid = 0, mid = 0, eosid = 0, hgid = 0    !< labels as read
+      integer :: isec = 0, imat = 0, ihg = 0                !< dense indices (0: none)
+      integer :: ihq = 1           !< resolved hourglass type (LS-DYNA IHQ)
+      real(wp) :: qh = 0.1_wp      !< resolved hourglass coefficient
+      real(wp) :: q1 = 1.5_wp      !< resolved quadratic bulk viscosity coefficient
+      real(wp) :: q2 = 0.06_wp     !< resolved linear bulk viscosity coefficient
+   end type part_t
+
+   !> A group of at most nv_chunk elements of one part and one formulation.
+   !> State arrays have the element index first (unit stride over elements).
+   type :: elem_block_t
+      integer :: ipart = 0          !< dense part index
+      integer :: etype = ETYPE_DEFAULT   !< element type: the family table's key
+      integer :: nel = 0            !< elements in this block (<= nv_chunk)
+      integer :: nip = 1            !< integration points per element
+      integer :: nhv = 0            !< history variables per point (from the material)
+      integer, allocatable :: conn(:, :)     !< (nen, nel) dense node indices (nen: family)
+      integer, allocatable :: elem(:)        !< (nel) dense global element index
+      real(wp), allocatable :: sig(:, :, :)  !< (nel, 6, nip) Cauchy stress
+      real(wp), allocatable :: hv(:, :, :)   !< (nel, nhv, nip) material history
+      real(wp), allocatable :: vol0(:)       !< (nel) initial volume
+      real(wp), allocatable :: relvol(:)     !< (nel) current V/V0
+      real(wp), allocatable :: eint(:)       !< (nel) internal energy (work of stress)
+      real(wp), allocatable :: ehg(:)        !< (nel) hourglass energy
+      !> (nel, nes) family state: the slots ES_* of the family table that this block uses
+      !> (centred-work terms, hourglass resisting forces, own-mass share), slot s in columns
+      !> esc(s) .. esc(s) + esn(s) - 1 (esc(s) = 0: absent)
+      real(wp), allocatable :: es(:, :)
+      integer :: esc(MAX_ES) = 0
+      integer :: esn(MAX_ES) = 0
+      logical, allocatable :: failed(:)      !< (nel) eroded elements carry no force
+   contains
+      procedure :: es_add => block_es_add
+      procedure :: es_drop => block_es_drop
+   end type elem_block_t
 
    integer, parameter :: HEX_FACES(4, 6) = reshape([1, 4, 3, 2,  5, 6, 7, 8,  1, 2, 6, 5, &
                                                     2, 3, 7, 6,  3, 4, 8, 7,  4, 1, 5, 8], [4, 6])
@@ -97,6 +160,7 @@ contains
          f%edges(:, 1:12) = HEX_EDGES
          f%mass_share = 0.125_wp
          f%hgmodes = 4
+         f%es_ncol = [3*f%hgmodes, 4, 1]
          f%nip = 1; f%weight = 1
          ! ELFORM 2 measured at about 8x ELFORM 1 per element-cycle (docs/history.md,
          ! "Partition weights")
@@ -109,6 +173,7 @@ contains
          f%faces(:, 1:4) = TET_FACES
          f%edges(:, 1:6) = TET_EDGES
          f%mass_share = 0.25_wp
+         f%es_ncol = [0, 4, 0]
          f%nip = 1; f%weight = 1
       end select
    end function element_family
@@ -252,4 +317,45 @@ contains
       end do
    end subroutine tet_moments
 
+   !> Give the block the family-state slot `slot` with ncol columns (zero), appended to es;
+   !> a slot the block has already is kept as it is.
+   subroutine block_es_add(blk, slot, ncol)
+      class(elem_block_t), intent(inout) :: blk
+      integer, intent(in) :: slot, ncol
+      real(wp), allocatable :: t(:, :)
+      integer :: nes
+      if (blk%esc(slot) > 0) return
+      nes = 0
+      if (allocated(blk%es)) nes = size(blk%es, 2)
+      allocate(t(blk%nel, nes + ncol), source=0.0_wp)
+      if (nes > 0) t(:, 1:nes) = blk%es
+      call move_alloc(t, blk%es)
+      blk%esc(slot) = nes + 1
+      blk%esn(slot) = ncol
+   end subroutine block_es_add
+
+   !> Remove the slot `slot` from the block's family state (the other slots keep their values).
+   subroutine block_es_drop(blk, slot)
+      class(elem_block_t), intent(inout) :: blk
+      integer, intent(in) :: slot
+      real(wp), allocatable :: t(:, :)
+      integer :: c, m, nes, s
+      c = blk%esc(slot)
+      if (c == 0) return
+      m = blk%esn(slot)
+      nes = size(blk%es, 2)
+      blk%esc(slot) = 0
+      blk%esn(slot) = 0
+      if (nes == m) then
+         deallocate(blk%es)
+         return
+      end if
+      allocate(t(blk%nel, nes - m))
+      t(:, 1:c - 1) = blk%es(:, 1:c - 1)
+      t(:, c:) = blk%es(:, c + m:)
+      call move_alloc(t, blk%es)
+      do s = 1, MAX_ES
+         if (blk%esc(s) > c) blk%esc(s) = blk%esc(s) - m
+      end do
+   end subroutine block_es_drop
 end module dx_element_types

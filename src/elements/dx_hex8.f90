@@ -19,12 +19,12 @@
 !> rates normalized by 1/sqrt(8), i.e. f_iI = k_h (gamma_aJ u_iJ) gamma_aI with
 !> k_h = QH*(K + 4G/3)*sum(B_jJ**2)/(24V) (docs/history.md, "Hourglass types").
 module dx_hex8
-   use, intrinsic :: iso_fortran_env, only: int64
    use dx_kinds, only: wp, nv_chunk, huge_wp
-   use dx_model, only: elem_block_t, part_t
    use dx_material, only: material_t
-   use dx_element_types, only: block_result_t, HEX_ERR_NEGVOL => ELEM_ERR_NEGVOL, &
+   use dx_element_types, only: elem_block_t, part_t, ES_WORK, ES_HGS, ES_PHIM, block_result_t, &
+                               HEX_ERR_NEGVOL => ELEM_ERR_NEGVOL, &
                                HEX_ERR_MATERIAL => ELEM_ERR_MATERIAL
+   use dx_solid_kernels, only: cube_roots, centred_work
    use dx_hex8_geometry, only: hex8_bvectors, hex8_bvectors_chunk, hex8_char_length, inv3, &
                                GAMMA_HG, XI_NODE
    implicit none
@@ -33,39 +33,6 @@ module dx_hex8
 
 
 contains
-
-   !> l(1:n) = x(1:n)**(1/3) from exactly rounded operations only, so a vectorized loop
-   !> gives every element the same bits in every lane and in the scalar remainder. (pow not:
-   !> gfortran pre-includes glibc's math-vector-fortran.h, and the vector body then calls
-   !> libmvec's SIMD pow, the remainder scalar libm pow; an element's result depended on its
-   !> position in its block, and an MPI rank's piece of a block changes positions.)
-   !> Start: the bit pattern of x divided by 3 plus the exponent bias term (the classic
-   !> cbrt start, as in FreeBSD's s_cbrt.c; within 3.3 % here), done through a double so the
-   !> loop vectorizes; then two steps of Halley's iteration l <- l (l^3 + 2x)/(2 l^3 + x)
-   !> (cubic convergence; Traub 1964, Iterative Methods for the Solution of Equations,
-   !> sec. 8.4) and one Newton step: within 3 ulp of the correctly rounded cube root on
-   !> 1e-90..1e90 (2e5 random samples; pow(x, 1/3) is itself off by up to 16 ulp at
-   !> 1e+-40, 1/3 not being a double). Valid for volumes in 1e-90..1e90 (any consistent
-   !> units); x <= 0 gives 0. One loop without calls, so it vectorizes; integer/real
-   !> conversions, +, *, / are exact or correctly rounded in every lane.
-   subroutine cube_roots(n, x, l)
-      integer, intent(in) :: n
-      real(wp), intent(in) :: x(:)
-      real(wp), intent(out) :: l(:)
-      integer(int64), parameter :: CBRT_BIAS = 3071306043645493248_int64   ! 715094163*2**32
-      real(wp) :: y, r, r3
-      integer :: i
-      do i = 1, n
-         y = max(x(i), 1.0e-90_wp)
-         r = transfer(int(real(transfer(y, 0_int64), wp)/3.0_wp, int64) + CBRT_BIAS, 1.0_wp)
-         r3 = r*r*r
-         r = r*(r3 + 2.0_wp*y)/(2.0_wp*r3 + y)
-         r3 = r*r*r
-         r = r*(r3 + 2.0_wp*y)/(2.0_wp*r3 + y)
-         r = r - (r*r*r - y)/(3.0_wp*r*r)
-         l(i) = merge(r, 0.0_wp, x(i) > 0.0_wp)
-      end do
-   end subroutine cube_roots
 
    !> Volumes of the elements of a block at coordinates x(3,nn).
    subroutine hex8_volume(blk, x, vol)
@@ -97,7 +64,7 @@ contains
       real(wp), intent(inout) :: f(:, :)
       type(block_result_t), intent(out) :: res
       ! blocks built elsewhere than dx_model_build (tests, restart) may lack it
-      if (.not. allocated(blk%ework)) allocate(blk%ework(blk%nel, 4), source=0.0_wp)
+      if (blk%esc(ES_WORK) == 0) call blk%es_add(ES_WORK, 4)
       select case (blk%nip)
       case (1)
          call hex8_1pt(blk, mat, part, x, v, dt_old, f, res)
@@ -143,8 +110,9 @@ contains
       real(wp) :: dtl, hdt, d1, d2, d3, d4, d5, d6, l1, l2, l3, l4, l5, l6, l7, l8, l9
       integer :: ierr(nv_chunk)
       logical :: failed(nv_chunk)
-      integer :: i, k, n, nn
+      integer :: i, k, n, nn, w
       n = blk%nel
+      w = blk%esc(ES_WORK)
       ! ---- gather, and the mid-step geometry x(n-1/2) = x(n) - dt/2 v(n-1/2) of the strain
       ! increment and spin
       hdt = 0.5_wp*dt_old
@@ -256,14 +224,14 @@ contains
          wn(i) = volm(i)*(sn(i,1)*de6(i,1) + sn(i,2)*de6(i,2) + sn(i,3)*de6(i,3) &
                  + 2.0_wp*(sn(i,4)*de6(i,4) + sn(i,5)*de6(i,5) + sn(i,6)*de6(i,6)))
       end do
-      e1(1:n) = blk%ework(1:n, 1); e2(1:n) = blk%ework(1:n, 2)
-      e3(1:n) = blk%ework(1:n, 3); e4(1:n) = blk%ework(1:n, 4)
+      e1(1:n) = blk%es(1:n, w); e2(1:n) = blk%es(1:n, w + 1)
+      e3(1:n) = blk%es(1:n, w + 2); e4(1:n) = blk%es(1:n, w + 3)
       do i = 1, n
          call centred_work(e1(i), e2(i), e3(i), e4(i), dt_old, wo(i), wn(i), q(i), vol(i), &
                            vold(i), bv(i), trd(i)*volm(i), de(i))
       end do
-      blk%ework(1:n, 1) = e1(1:n); blk%ework(1:n, 2) = e2(1:n)
-      blk%ework(1:n, 3) = e3(1:n); blk%ework(1:n, 4) = e4(1:n)
+      blk%es(1:n, w) = e1(1:n); blk%es(1:n, w + 1) = e2(1:n)
+      blk%es(1:n, w + 2) = e3(1:n); blk%es(1:n, w + 3) = e4(1:n)
       res%deint = 0.0_wp
       res%pend = 0.0_wp
       do i = 1, n
@@ -318,7 +286,7 @@ contains
       real(wp), intent(out) :: dehg
       real(wp), dimension(nv_chunk, 4) :: qx, qy, qz, hx, hy, hz
       real(wp) :: g(nv_chunk, 4, 8), ax, ay, az, rvol, coef(nv_chunk), e(nv_chunk), m, kx, ky, kz
-      integer :: i, a, k
+      integer :: i, a, k, h
       if (part%ihq == 1) then
          ! DYNA's viscous form on the constant base vectors Gamma (unrolled: +-1 constants)
          call hourglass_gamma_viscous(blk, mat, part, n, dt, vx, vy, vz, lcb, rv, c, alive, &
@@ -371,17 +339,19 @@ contains
             e(i) = 0.0_wp
          end do
          do k = 1, 4
+            ! the resisting forces of mode k: es columns h, h+1, h+2 (x, y, z)
+            h = blk%esc(ES_HGS) + 3*(k - 1)
             do i = 1, n
                ! corotate the stored resisting forces, then add the stiffness increment; the
                ! energy is the trapezoid of the old and new force (exact spring energy)
-               kx = blk%hgs(i, 1, k) + w12(i)*blk%hgs(i, 2, k) - w31(i)*blk%hgs(i, 3, k)
-               ky = blk%hgs(i, 2, k) - w12(i)*blk%hgs(i, 1, k) + w23(i)*blk%hgs(i, 3, k)
-               kz = blk%hgs(i, 3, k) + w31(i)*blk%hgs(i, 1, k) - w23(i)*blk%hgs(i, 2, k)
+               kx = blk%es(i, h) + w12(i)*blk%es(i, h + 1) - w31(i)*blk%es(i, h + 2)
+               ky = blk%es(i, h + 1) - w12(i)*blk%es(i, h) + w23(i)*blk%es(i, h + 2)
+               kz = blk%es(i, h + 2) + w31(i)*blk%es(i, h) - w23(i)*blk%es(i, h + 1)
                hx(i, k) = kx + coef(i)*qx(i, k)
                hy(i, k) = ky + coef(i)*qy(i, k)
                hz(i, k) = kz + coef(i)*qz(i, k)
-               blk%hgs(i, 1, k) = hx(i, k); blk%hgs(i, 2, k) = hy(i, k)
-               blk%hgs(i, 3, k) = hz(i, k)
+               blk%es(i, h) = hx(i, k); blk%es(i, h + 1) = hy(i, k)
+               blk%es(i, h + 2) = hz(i, k)
                e(i) = e(i) + 0.5_wp*dt*((kx + hx(i, k))*qx(i, k) + (ky + hy(i, k))*qy(i, k) &
                       + (kz + hz(i, k))*qz(i, k))
             end do
@@ -492,36 +462,6 @@ contains
       end do
    end subroutine bdotv
 
-   !> Internal-energy increment de of one element at this pass: the work of its stress and
-   !> bulk-viscosity nodal forces f(n) in the central-difference balance, W(n) =
-   !> dtavg(n) f(n).(v(n-1/2) + v(n+1/2))/2, the exact partner of the centred kinetic energy
-   !> 1/2 m v(n-1/2).v(n+1/2) (dx_explicit) for any time-step sequence. W(n) is completed at
-   !> the next pass, when v(n+1/2) and dt(n+1/2) are known: the half with v(n-1/2) is booked
-   !> now with dt(n-1/2)/2 and corrected then to dtavg(n)/2. With a constant step this is the
-   !> trapezoid (sigma(n-1) + sigma(n)):D V dt. The stress power uses the mid-step D V
-   !> (wo, wn = dt sigma_old:D V, dt sigma_new:D V); the viscosity force q B(x(n)) uses
-   !> bvn = B(n).v(n-1/2) and B(n-1).v(n-1/2) from Simpson's rule, exact for the cubic V(x):
-   !> V(n) - V(n-1) = dt/6 (B(n-1) + 4 B(n-1/2) + B(n)).v(n-1/2), bvm = B(n-1/2).v(n-1/2).
-   !> s1..s4 = q, q bvn, dt, sigma:D V of the last pass (the element's ework row).
-   pure subroutine centred_work(s1, s2, s3, s4, dt, wo, wn, q, vol, vol_old, bvn, bvm, de)
-      real(wp), intent(inout) :: s1, s2, s3, s4
-      real(wp), intent(in) :: dt, wo, wn, q, vol, vol_old, bvn, bvm
-      real(wp), intent(out) :: de
-      real(wp) :: bvp, pn
-      de = 0.0_wp
-      pn = 0.0_wp
-      if (dt > 0.0_wp) then
-         bvp = 6.0_wp*(vol - vol_old)/dt - 4.0_wp*bvm - bvn
-         pn = wn/dt
-         de = 0.5_wp*(wo + wn) + 0.25_wp*(dt - s3)*(s4 - wo/dt) &
-              - (0.25_wp*(s3 + dt)*s1*bvp + 0.25_wp*(dt - s3)*s2 + 0.5_wp*dt*q*bvn)
-      end if
-      s1 = q
-      s2 = q*bvn
-      s3 = dt
-      s4 = pn
-   end subroutine centred_work
-
    !> After the lumped masses are known: the element's own share of its nodes' mass,
    !> phim = (1/8) sum_I (rho V0/8)/m_I (1 for a free element, 1/2 inside a one-element-wide
    !> bar, 1/8 inside a mesh); a node with a constrained translation (SPC, prescribed motion:
@@ -544,8 +484,11 @@ contains
                phi(i) = phi(i) + rho*blk%vol0(i)/(64.0_wp*mass(nd))
          end do
       end do
-      if (allocated(blk%phim)) deallocate(blk%phim)
-      if (any(phi >= 0.5_wp)) blk%phim = phi
+      call blk%es_drop(ES_PHIM)
+      if (any(phi >= 0.5_wp)) then
+         call blk%es_add(ES_PHIM, 1)
+         blk%es(:, blk%esc(ES_PHIM)) = phi
+      end if
    end subroutine hex8_mass_share
 
    !> Smallest element step L/(Q + sqrt(Q**2 + c**2)), L = V/A_max, Q = Q2*c + Q1*L*|e_kk|
@@ -562,14 +505,15 @@ contains
       real(wp), intent(in) :: bx(:, :), by(:, :), bz(:, :), trd(:), c(:)
       type(block_result_t), intent(inout) :: res
       real(wp) :: lc(size(xe, 1)), qb, trde, bb
-      integer :: i, n
+      integer :: i, n, ip
       n = blk%nel
       call hex8_char_length(n, size(xe, 1), xe, ye, ze, vol, lc)
-      if (allocated(blk%phim)) then
+      ip = blk%esc(ES_PHIM)
+      if (ip > 0) then
          do i = 1, n
-            if (blk%phim(i) >= 0.5_wp) then
+            if (blk%es(i, ip) >= 0.5_wp) then
                bb = sum(bx(i, 1:8)**2 + by(i, 1:8)**2 + bz(i, 1:8)**2)
-               lc(i) = min(lc(i), 2.0_wp*vol(i)/sqrt(8.0_wp*blk%phim(i)*bb))
+               lc(i) = min(lc(i), 2.0_wp*vol(i)/sqrt(8.0_wp*blk%es(i, ip)*bb))
             end if
          end do
       end if
@@ -616,8 +560,9 @@ contains
       real(wp) :: jwg(8, blk%nel), wm(blk%nel), dtl, rho, a, pend, trp, pm, ein_sum
       integer :: ierr(blk%nel)
       logical :: failed(blk%nel), fpt(blk%nel)
-      integer :: i, k, n, nn, ip
+      integer :: i, k, n, nn, ip, w
       n = blk%nel
+      w = blk%esc(ES_WORK)
       allocate(dng(3, 8, 8, n))
       call shape_derivs(dn)
       do k = 1, 8
@@ -712,13 +657,13 @@ contains
       do i = 1, n
          rho = mat%ro/rv(i)
          q(i) = bulk_viscosity(part, rho, lcb(i), trd(i), c(i))
-         call centred_work(blk%ework(i, 1), blk%ework(i, 2), blk%ework(i, 3), blk%ework(i, 4), &
+         call centred_work(blk%es(i, w), blk%es(i, w + 1), blk%es(i, w + 2), blk%es(i, w + 3), &
                            dt_old, wold(i), wnew(i), q(i), vol(i), blk%vol0(i)*relv_old(i), &
                            bv(i), trd(i)*volm(i), a)
          a = alive(i)*a
          blk%eint(i) = blk%eint(i) + a
          ein_sum = ein_sum + a
-         pend = pend + alive(i)*(blk%ework(i, 4) - blk%ework(i, 2))
+         pend = pend + alive(i)*(blk%es(i, w + 3) - blk%es(i, w + 1))
          if (fpt(i)) blk%failed(i) = .true.
          if (blk%failed(i)) then
             alive(i) = 0.0_wp

@@ -14,11 +14,10 @@
 !> face opposite node I); LS-DYNA's length for tetrahedra (LS-DYNA Theory Manual, "Time Step
 !> Control", solid elements; Ansys LS-DYNA help, "Characteristic Length (LS-DYNA)").
 module dx_tet4
-   use, intrinsic :: iso_fortran_env, only: int64
    use dx_kinds, only: wp, nv_chunk, huge_wp
-   use dx_model, only: elem_block_t, part_t
    use dx_material, only: material_t
-   use dx_element_types, only: block_result_t, ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL
+   use dx_element_types, only: elem_block_t, part_t, ES_WORK, block_result_t, ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL
+   use dx_solid_kernels, only: cube_roots, centred_work
    implicit none
    private
    public :: tet4_block, tet4_bvectors
@@ -72,8 +71,9 @@ contains
       real(wp) :: dtl, hdt, d1, d2, d3, d4, d5, d6
       integer :: ierr(nv_chunk)
       logical :: failed(nv_chunk)
-      integer :: i, k, n, nn
-      if (.not. allocated(blk%ework)) allocate(blk%ework(blk%nel, 4), source=0.0_wp)
+      integer :: i, k, n, nn, w
+      if (blk%esc(ES_WORK) == 0) call blk%es_add(ES_WORK, 4)
+      w = blk%esc(ES_WORK)
       n = blk%nel
       hdt = 0.5_wp*dt_old
       do k = 1, NEN
@@ -178,14 +178,14 @@ contains
          wn(i) = volm(i)*(sn(i,1)*de6(i,1) + sn(i,2)*de6(i,2) + sn(i,3)*de6(i,3) &
                  + 2.0_wp*(sn(i,4)*de6(i,4) + sn(i,5)*de6(i,5) + sn(i,6)*de6(i,6)))
       end do
-      e1(1:n) = blk%ework(1:n, 1); e2(1:n) = blk%ework(1:n, 2)
-      e3(1:n) = blk%ework(1:n, 3); e4(1:n) = blk%ework(1:n, 4)
+      e1(1:n) = blk%es(1:n, w); e2(1:n) = blk%es(1:n, w + 1)
+      e3(1:n) = blk%es(1:n, w + 2); e4(1:n) = blk%es(1:n, w + 3)
       do i = 1, n
          call centred_work(e1(i), e2(i), e3(i), e4(i), dt_old, wo(i), wn(i), q(i), vol(i), &
                            vold(i), bv(i), trd(i)*volm(i), de(i))
       end do
-      blk%ework(1:n, 1) = e1(1:n); blk%ework(1:n, 2) = e2(1:n)
-      blk%ework(1:n, 3) = e3(1:n); blk%ework(1:n, 4) = e4(1:n)
+      blk%es(1:n, w) = e1(1:n); blk%es(1:n, w + 1) = e2(1:n)
+      blk%es(1:n, w + 2) = e3(1:n); blk%es(1:n, w + 3) = e4(1:n)
       res%deint = 0.0_wp
       res%pend = 0.0_wp
       res%dehg = 0.0_wp
@@ -246,46 +246,4 @@ contains
          end if
       end do
    end subroutine stable_time_step
-
-   !> l = x**(1/3) from exactly rounded operations (dx_hex8's cube_roots: the same bits in
-   !> every SIMD lane, so an element's result does not depend on its position in its block).
-   subroutine cube_roots(n, x, l)
-      integer, intent(in) :: n
-      real(wp), intent(in) :: x(:)
-      real(wp), intent(out) :: l(:)
-      integer(int64), parameter :: CBRT_BIAS = 3071306043645493248_int64
-      real(wp) :: y, r, r3
-      integer :: i
-      do i = 1, n
-         y = max(x(i), 1.0e-90_wp)
-         r = transfer(int(real(transfer(y, 0_int64), wp)/3.0_wp, int64) + CBRT_BIAS, 1.0_wp)
-         r3 = r*r*r
-         r = r*(r3 + 2.0_wp*y)/(2.0_wp*r3 + y)
-         r3 = r*r*r
-         r = r*(r3 + 2.0_wp*y)/(2.0_wp*r3 + y)
-         r = r - (r*r*r - y)/(3.0_wp*r*r)
-         l(i) = merge(r, 0.0_wp, x(i) > 0.0_wp)
-      end do
-   end subroutine cube_roots
-
-   !> Internal-energy increment of one element (dx_hex8's centred_work: the work of the
-   !> stress and viscosity forces, the exact partner of the centred kinetic energy).
-   pure subroutine centred_work(s1, s2, s3, s4, dt, wo, wn, q, vol, vol_old, bvn, bvm, de)
-      real(wp), intent(inout) :: s1, s2, s3, s4
-      real(wp), intent(in) :: dt, wo, wn, q, vol, vol_old, bvn, bvm
-      real(wp), intent(out) :: de
-      real(wp) :: bvp, pn
-      de = 0.0_wp
-      pn = 0.0_wp
-      if (dt > 0.0_wp) then
-         bvp = 6.0_wp*(vol - vol_old)/dt - 4.0_wp*bvm - bvn
-         pn = wn/dt
-         de = 0.5_wp*(wo + wn) + 0.25_wp*(dt - s3)*(s4 - wo/dt) &
-              - (0.25_wp*(s3 + dt)*s1*bvp + 0.25_wp*(dt - s3)*s2 + 0.5_wp*dt*q*bvn)
-      end if
-      s1 = q
-      s2 = q*bvn
-      s3 = dt
-      s4 = pn
-   end subroutine centred_work
 end module dx_tet4

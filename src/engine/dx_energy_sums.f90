@@ -8,7 +8,7 @@
 !> Moran 2000, section 6.2.3 (time-centred kinetic energy, work of constraint reactions).
 module dx_energy_sums
    use dx_kinds, only: wp
-   use dx_model, only: model_t, elem_block_t, energy_t
+   use dx_model, only: model_t, elem_block_t, energy_t, ES_WORK, WORK_PN, WORK_QBV
    implicit none
    private
    public :: initial_kinetic, kinetic_energy, element_energies, constraint_work, &
@@ -40,7 +40,7 @@ contains
       real(wp), intent(out) :: eint, ehg
       real(wp), intent(out), optional :: epend  !< sum of the work still to be booked (ework 4 - 2)
       real(wp) :: pb
-      integer :: b, i
+      integer :: b, i, w
       eint = 0.0_wp; ehg = 0.0_wp
       do b = 1, size(blocks)
          eint = eint + sum(blocks(b)%eint)
@@ -49,11 +49,12 @@ contains
       if (present(epend)) then
          epend = 0.0_wp
          do b = 1, size(blocks)
-            if (.not. allocated(blocks(b)%ework)) cycle
+            w = blocks(b)%esc(ES_WORK)
+            if (w == 0) cycle
             pb = 0.0_wp
             do i = 1, blocks(b)%nel
                pb = pb + merge(0.0_wp, 1.0_wp, blocks(b)%failed(i))* &
-                         (blocks(b)%ework(i, 4) - blocks(b)%ework(i, 2))
+                         (blocks(b)%es(i, w + WORK_PN) - blocks(b)%es(i, w + WORK_QBV))
             end do
             epend = epend + pb
          end do

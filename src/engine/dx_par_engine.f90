@@ -27,7 +27,7 @@ module dx_par_engine
    use dx_error, only: error_t, set_error, EXIT_INPUT
    use dx_strings, only: str, rstr
    use dx_log, only: log_info
-   use dx_model, only: model_t
+   use dx_model, only: model_t, ES_WORK, WORK_PN, WORK_QBV
    use dx_par, only: par_rank, par_size, par_abort, par_minloc, par_allreduce, &
                      PAR_MAX, par_wtime, PAR_SUM, par_bcast_text, par_bcast_real, par_minloc8, &
                      par_allgather_probe
@@ -497,8 +497,8 @@ contains
             vals(1, i) = pb%eint(j)
             vals(2, i) = pb%ehg(j)
             vals(3, i) = 0.0_wp
-            if (allocated(pb%ework)) vals(3, i) = merge(0.0_wp, 1.0_wp, pb%failed(j))* &
-                                                  (pb%ework(j, 4) - pb%ework(j, 2))
+            if (pb%esc(ES_WORK) > 0) vals(3, i) = merge(0.0_wp, 1.0_wp, pb%failed(j))* &
+               (pb%es(j, pb%esc(ES_WORK) + WORK_PN) - pb%es(j, pb%esc(ES_WORK) + WORK_QBV))
          end associate
       end do
       call par_gather_values_root(eng%plan_elem, vals, gv)
@@ -510,8 +510,9 @@ contains
                gb%eint(p) = gv(1, i)
                gb%ehg(p) = gv(2, i)
                ! the global copy only reports: its ework carries the pending term in col. 4
-               if (allocated(gb%ework)) then
-                  gb%ework(p, 4) = gv(3, i); gb%ework(p, 2) = 0.0_wp
+               if (gb%esc(ES_WORK) > 0) then
+                  gb%es(p, gb%esc(ES_WORK) + WORK_PN) = gv(3, i)
+                  gb%es(p, gb%esc(ES_WORK) + WORK_QBV) = 0.0_wp
                end if
             end associate
          end do

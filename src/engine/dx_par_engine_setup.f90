@@ -13,7 +13,7 @@ module dx_par_engine_setup
    use dx_error, only: error_t, set_error, EXIT_INPUT
    use dx_strings, only: str, rstr
    use dx_log, only: log_info, log_set_quiet
-   use dx_model, only: model_t, elem_block_t
+   use dx_model, only: model_t, elem_block_t, ES_HGS, ES_PHIM
    use dx_par, only: par_rank, par_size, par_allreduce, PAR_MAX
    use dx_par_plan, only: par_gather_setup, par_gather_setup_root
    use dx_sort, only: sort_index
@@ -253,7 +253,7 @@ contains
       do k = 1, size(eng%g%blocks)
          if (allocated(eng%g%blocks(k)%sig)) deallocate(eng%g%blocks(k)%sig)
          if (allocated(eng%g%blocks(k)%hv)) deallocate(eng%g%blocks(k)%hv)
-         if (allocated(eng%g%blocks(k)%hgs)) deallocate(eng%g%blocks(k)%hgs)
+         call eng%g%blocks(k)%es_drop(ES_HGS)
       end do
       eng%on = .true.
    contains
@@ -351,14 +351,15 @@ contains
             if (allocated(b%elem)) deallocate(b%elem)
             if (allocated(b%vol0)) deallocate(b%vol0)
             if (allocated(b%relvol)) deallocate(b%relvol)
-            if (allocated(b%phim)) deallocate(b%phim)
-            if (allocated(b%hgs)) deallocate(b%hgs)
+            call b%es_drop(ES_PHIM)
+            call b%es_drop(ES_HGS)
             if (allocated(b%sig)) deallocate(b%sig)
             if (allocated(b%hv)) deallocate(b%hv)
             if (par_rank() > 0) then          ! rank 0 sums the element energies
                if (allocated(b%eint)) deallocate(b%eint)
                if (allocated(b%ehg)) deallocate(b%ehg)
-               if (allocated(b%ework)) deallocate(b%ework)
+               if (allocated(b%es)) deallocate(b%es)
+               b%esc = 0; b%esn = 0
                if (allocated(b%failed)) deallocate(b%failed)
             end if
          end associate
@@ -404,9 +405,7 @@ contains
                if (allocated(b%relvol)) elem = elem + 8*size(b%relvol, kind=int64)
                if (allocated(b%eint)) elem = elem + 8*size(b%eint, kind=int64)
                if (allocated(b%ehg)) elem = elem + 8*size(b%ehg, kind=int64)
-               if (allocated(b%ework)) elem = elem + 8*size(b%ework, kind=int64)
-               if (allocated(b%phim)) elem = elem + 8*size(b%phim, kind=int64)
-               if (allocated(b%hgs)) elem = elem + 8*size(b%hgs, kind=int64)
+               if (allocated(b%es)) elem = elem + 8*size(b%es, kind=int64)
                if (allocated(b%failed)) elem = elem + 4*size(b%failed, kind=int64)
             end associate
          end do

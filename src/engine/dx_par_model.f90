@@ -96,8 +96,9 @@ contains
                pb%eint = sb%eint(piece)
                pb%ehg = sb%ehg(piece)
                pb%failed = sb%failed(piece)
-               if (allocated(sb%hgs)) pb%hgs = sb%hgs(piece, :, :)
-               if (allocated(sb%ework)) pb%ework = sb%ework(piece, :)   ! a restart reads it
+               ! the family state (a restart reads it): every slot of the serial block
+               if (allocated(sb%es)) pb%es = sb%es(piece, :)
+               pb%esc = sb%esc; pb%esn = sb%esn
                allocate(pb%conn(size(sb%conn, 1), pb%nel))
                ! slots numbered corner-major as the force scatter visits them
                do k = 1, size(sb%conn, 1)

@@ -34,7 +34,7 @@ module dx_par_restart
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_INPUT, EXIT_IO
    use dx_strings, only: str, string_t
-   use dx_model, only: model_t, family_t, element_family
+   use dx_model, only: model_t, family_t, element_family, MAX_ES, ES_HGS, ES_DUMP
    use dx_contact_types, only: contact_set_t
    use dx_contact_strips, only: contact_strips
    use dx_restart, only: restart_write, restart_read
@@ -480,13 +480,13 @@ contains
                if (.not. allocated(blk%hv)) allocate(blk%hv(blk%nel, blk%nhv, blk%nip), &
                                                      source=0.0_wp)
                fam = element_family(blk%etype)
-               if (.not. allocated(blk%hgs) .and. fam%hgmodes > 0 .and. &
+               if (fam%es_ncol(ES_HGS) > 0 .and. &
                    (gp%parts(blk%ipart)%ihq == 4 .or. gp%parts(blk%ipart)%ihq == 5)) &
-                  allocate(blk%hgs(blk%nel, 3, fam%hgmodes), source=0.0_wp)
+                  call blk%es_add(ES_HGS, fam%es_ncol(ES_HGS))
             else
                if (allocated(blk%sig)) deallocate(blk%sig)
                if (allocated(blk%hv)) deallocate(blk%hv)
-               if (allocated(blk%hgs)) deallocate(blk%hgs)
+               call blk%es_drop(ES_HGS)
             end if
          end associate
       end do
@@ -499,7 +499,7 @@ contains
       type(model_t), intent(in) :: gp
       integer, intent(in) :: ng(:)
       type(model_t), intent(inout) :: model
-      integer :: b, j, e, p, k
+      integer :: b, j, e, p, k, s
       model%x(:, 1:size(ng)) = gp%x(:, ng)
       model%v(:, 1:size(ng)) = gp%v(:, ng)
       do b = 1, size(model%blocks)
@@ -513,8 +513,11 @@ contains
                   blk%relvol(j) = gb%relvol(p)
                   blk%eint(j) = gb%eint(p)
                   blk%ehg(j) = gb%ehg(p)
-                  if (allocated(blk%hgs)) blk%hgs(j, :, :) = gb%hgs(p, :, :)
-                  if (allocated(blk%ework)) blk%ework(j, :) = gb%ework(p, :)
+                  do s = 1, MAX_ES     ! the dumped family-state slots both blocks hold
+                     if (blk%esc(s) > 0 .and. gb%esc(s) > 0 .and. ES_DUMP(s)) &
+                        blk%es(j, blk%esc(s):blk%esc(s) + blk%esn(s) - 1) = &
+                           gb%es(p, gb%esc(s):gb%esc(s) + gb%esn(s) - 1)
+                  end do
                   blk%failed(j) = gb%failed(p)
                end associate
             end do

@@ -25,6 +25,7 @@ module dx_partition
    use dx_model, only: model_t, family_t, element_family, etype_of_elform, MAX_NEN
    use dx_metis, only: metis_part_kway, METIS_RECURSIVE
    use dx_contact_input, only: CT_SINGLE_SURFACE
+   use dx_rank_part_types, only: rank_part_t   ! what one rank holds (re-exported)
    use dx_partition_graph, only: node_elements, condense_groups, element_graph, &
                                  add_proximity_edges, sort_int
    implicit none
@@ -62,25 +63,6 @@ module dx_partition
       integer :: ncomp = 0                   !< connected components of the vertex graph
       integer :: nprox = 0                   !< proximity edges added (vertex pairs)
    end type partition_t
-
-   !> What one rank holds (the content of its rank file). Global indices are the dense
-   !> 1-based indices of the serial model, ascending.
-   type :: rank_part_t
-      integer :: rank = 0, np = 1, ne_global = 0, nn_global = 0
-      integer, allocatable :: elements(:)    !< global element indices, ascending
-      integer, allocatable :: nodes(:)       !< global node indices, ascending
-      integer, allocatable :: node_owner(:)  !< (size(nodes)) owning rank of each node
-      integer, allocatable :: nbr(:)         !< neighbour ranks, ascending
-      integer, allocatable :: nbr_ptr(:)     !< (size(nbr)+1) offsets into nbr_nodes
-      integer, allocatable :: nbr_nodes(:)   !< nodes shared with each neighbour, ascending
-      integer, allocatable :: spcs(:)        !< indices into model%spcs on local nodes
-      integer, allocatable :: prescribed(:)  !< indices into model%prescribed
-      integer, allocatable :: node_loads(:)  !< indices into model%node_loads
-      integer, allocatable :: seg_loads(:)   !< indices into model%seg_loads computed here
-      integer, allocatable :: wall_ptr(:)    !< (nwalls+1) offsets into wall_nodes
-      integer, allocatable :: wall_nodes(:)  !< local slave nodes of each rigid wall
-      integer, allocatable :: hist_nodes(:)  !< indices into model%db%hist_nodes
-   end type rank_part_t
 
 contains
 

@@ -18,7 +18,7 @@ module dx_restart
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_INPUT
    use dx_strings, only: str
-   use dx_model, only: model_t
+   use dx_model, only: model_t, MAX_ES, ES_NAMES, ES_DUMP
    use dx_restart_file, only: rs_file_t, rs_create, rs_commit, rs_open, rs_close
    use dx_rigid_restart, only: rigid_dump, rigid_restore
    use dx_contact_restart, only: contact_dump, contact_restore
@@ -224,7 +224,7 @@ contains
    subroutine dump_blocks(rs, model)
       type(rs_file_t), intent(inout) :: rs
       type(model_t), intent(in) :: model
-      integer :: b
+      integer :: b, s, c
       character(:), allocatable :: p
       do b = 1, size(model%blocks)
          p = 'block'//str(b)//'_'
@@ -235,8 +235,11 @@ contains
             call rs%put(p//'relvol', blk%relvol)
             call rs%put(p//'eint', blk%eint)
             call rs%put(p//'ehg', blk%ehg)
-            if (allocated(blk%hgs)) call rs%put(p//'hgs', blk%hgs)
-            if (allocated(blk%ework)) call rs%put(p//'ework', blk%ework)
+            do s = 1, MAX_ES      ! the family state, one dataset per slot (hgs, ework)
+               c = blk%esc(s)
+               if (c > 0 .and. ES_DUMP(s)) &
+                  call rs%put(p//trim(ES_NAMES(s)), blk%es(:, c:c + blk%esn(s) - 1))
+            end do
             call rs%put(p//'failed', blk%failed)
          end associate
       end do
@@ -245,7 +248,7 @@ contains
    subroutine restore_blocks(rs, model)
       type(rs_file_t), intent(inout) :: rs
       type(model_t), intent(inout) :: model
-      integer :: b
+      integer :: b, s, c
       integer, allocatable :: elem(:)
       character(:), allocatable :: p
       do b = 1, size(model%blocks)
@@ -263,8 +266,11 @@ contains
             call rs%get(p//'relvol', blk%relvol)
             call rs%get(p//'eint', blk%eint)
             call rs%get(p//'ehg', blk%ehg)
-            if (allocated(blk%hgs)) call rs%get(p//'hgs', blk%hgs)
-            if (allocated(blk%ework)) call rs%get(p//'ework', blk%ework)
+            do s = 1, MAX_ES
+               c = blk%esc(s)
+               if (c > 0 .and. ES_DUMP(s)) &
+                  call rs%get(p//trim(ES_NAMES(s)), blk%es(:, c:c + blk%esn(s) - 1))
+            end do
             call rs%get(p//'failed', blk%failed)
          end associate
       end do

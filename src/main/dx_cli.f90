@@ -7,7 +7,7 @@ module dx_cli
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use dx_kinds, only: wp
    use dx_error, only: error_t, EXIT_INPUT, exit_process
-   use dx_strings, only: rstr, command_arg
+   use dx_strings, only: rstr, command_arg, lower
    use dx_log, only: log_info, log_error
    use dx_io_sys, only: sys_epoch_seconds
    use dx_timer, only: wall_time
@@ -107,6 +107,16 @@ contains
                   cli%rfile = arg(3:); cycle
                end if
             end if
+            ! LS-DYNA's own command-line tokens: ncpu= (dynx runs on the ranks mpirun
+            ! starts, one thread each) and memory= / memory2= (dynx allocates what the
+            ! deck needs): accepted with a note, they change nothing
+            if (lskey(arg, 'ncpu=') .or. lskey(arg, 'memory=') .or. &
+                lskey(arg, 'memory2=')) then
+               call check_ls_token(arg)
+               call log_info('dynx: note: '//arg//' accepted and not needed (dynx runs '// &
+                  'on the MPI ranks mpirun starts and allocates what the deck needs)')
+               cycle
+            end if
             call die_usage('unknown argument '//arg)
          end select
       end do
@@ -119,6 +129,29 @@ contains
       call slurm_limit(cli%opts%ck%walltime)
    end subroutine parse_cli
 
+   !> whether arg starts with the LS-DYNA token key (case-insensitive, e.g. 'ncpu=')
+   logical function lskey(arg, key)
+      character(*), intent(in) :: arg, key
+      lskey = .false.
+      if (len(arg) > len(key)) lskey = lower(arg(1:len(key))) == key
+   end function lskey
+
+   !> ncpu=N (N may be negative: LS-DYNA's consistency flag) and memory=N[m|M|g|G]: a
+   !> value that is no number is a usage error.
+   subroutine check_ls_token(arg)
+      character(*), intent(in) :: arg
+      character(:), allocatable :: v
+      integer :: k, n, ios
+      k = index(arg, '=')
+      v = arg(k + 1:)
+      if (len(v) > 1) then
+         if (index('mMgGkK', v(len(v):len(v))) > 0) v = v(1:len(v) - 1)
+      end if
+      read(v, *, iostat=ios) n
+      if (ios /= 0 .or. verify(v, '+-0123456789') /= 0) &
+         call die_usage(arg(1:k)//' needs an integer (LS-DYNA syntax), not '//arg(k + 1:))
+   end subroutine check_ls_token
+
    function get_arg(k) result(a)
       integer, intent(in) :: k
       character(:), allocatable :: a
@@ -128,7 +161,8 @@ contains
 
    subroutine usage()
       write(output_unit, '(a)') &
-         'usage: dynx -i deck.k [options]     (LS-DYNA style i=deck.k is accepted too)', &
+         'usage: dynx -i deck.k [options]     (LS-DYNA style i=deck.k is accepted too,', &
+         '                                    and ncpu=N, memory=N: noted, not needed)', &
          '', &
          'Runs an LS-DYNA style keyword deck with the explicit central-difference solver.', &
          '', &
@@ -137,7 +171,9 @@ contains
          '  -o, --outdir DIR     output directory (default: current directory); holds', &
          '                       d3plot.h5 + d3plot.xdmf (open in ParaView), glstat, nodout', &
          '  --status N           number of status lines over the run (default 10)', &
-         '  --check              read and check the deck, print a summary, do not run', &
+         '  --check              read and check the deck, print a summary, do not run; lists', &
+         '                       every unknown keyword and unsupported option at once,', &
+         '                       grouped by family, and exits 2 if there is any', &
          '  --part DIR           MPI runs: the rank files (dynx-part) are DIR/rank_R.h5', &
          '                       (default: the output directory, else next to the deck;', &
          '                       rank 0 partitions into the output directory if none)', &
@@ -150,7 +186,8 @@ contains
          '  --raise-at-cycle N[:SIG][@R]  send SIG (TERM, INT, USR1, USR2; default TERM) to', &
          '                       dynx itself at cycle N (tests of the signal path); MPI:', &
          '                       @R only on rank R (default every rank)', &
-         '  --ignore-unknown     unknown keywords are warnings, not errors', &
+         '  --ignore-unknown     skip unknown output requests and performance controls', &
+         '                       with a warning (any other unknown keyword still stops)', &
          '  --energy-guard W,S   dynx''s energy guard (not ENDENG): the energy ratio', &
          '                       (glstat) is checked every cycle; a warning once when it', &
          '                       leaves 1 +- W, a stop (exit 3, failure dump) when it', &

@@ -25,7 +25,7 @@ program dynx
    call signals_install()           ! first: a SIGTERM during start-up is a request, not a kill
    call parse_cli(cli)
    call launch_start(cli)
-   call read_deck(cli%deck, model, error, cli%ignore_unknown)
+   call read_deck(cli%deck, model, error, cli%ignore_unknown, cli%check_only)
    call par_agree(error)            ! MPI: a bad deck stops every rank together
    if (allocated(error)) call die(error)
    call launch_check_only(cli, model)           ! --check ends here

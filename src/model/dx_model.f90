@@ -12,18 +12,25 @@ module dx_model
    use dx_contact_types, only: contact_set_t
    use dx_run_state, only: run_state_t, restart_ctrl_t
    use dx_emc_types, only: emc_system_t
-   use dx_element_types, only: family_t, element_family, elem_volume, elem_moments, elem_length, &
+   use dx_element_types, only: elem_block_t, part_t, family_t, element_family, elem_volume, elem_moments, elem_length, &
                                etype_of_elform, solid_shape, MAX_NEN, MAX_FACE_NODES, &
-                               MAX_FACES, ETYPE_DEFAULT, ETYPES
+                               MAX_FACES, ETYPE_DEFAULT, ETYPES, ES_WORK, ES_HGS, ES_PHIM, &
+                               MAX_ES, ES_NAMES, ES_DUMP, WORK_Q, WORK_QBV, WORK_DT, &
+                               WORK_PN
    implicit none
    private
-   public :: model_t, elem_block_t, part_t, section_t, hourglass_t, node_set_t, part_set_t, &
+   public :: model_t, section_t, hourglass_t, node_set_t, part_set_t, &
              segment_set_t, spc_t, prescribed_t, load_node_t, load_segment_t, rigidwall_t, &
              control_t, database_t, energy_t
+   !> the element block and the part (dx_element_types, the kernels' types; held here)
+   public :: elem_block_t, part_t
    !> the element-family table (dx_element_types): what every consumer asks of a block's
    !> element type (nodes, faces, edges, volume, moments, lumped mass, plot cell, weight)
    public :: family_t, element_family, elem_volume, elem_moments, elem_length, etype_of_elform, &
              solid_shape, MAX_NEN, MAX_FACE_NODES, MAX_FACES, ETYPES
+   !> the family-state slots of a block's es array (dx_element_types)
+   public :: ES_WORK, ES_HGS, ES_PHIM, MAX_ES, ES_NAMES, ES_DUMP, WORK_Q, WORK_QBV, &
+             WORK_DT, WORK_PN
 
    !> *SECTION_SOLID
    type :: section_t
@@ -42,40 +49,6 @@ module dx_model
       real(wp) :: q1 = -1.0_wp, q2 = -1.0_wp
       real(wp) :: qb = -1.0_wp, qw = -1.0_wp
    end type hourglass_t
-
-   !> *PART with its resolved section, material and hourglass settings
-   type :: part_t
-      integer :: label = 0
-      character(:), allocatable :: title
-      integer :: secid = 0, mid = 0, eosid = 0, hgid = 0    !< labels as read
-      integer :: isec = 0, imat = 0, ihg = 0                !< dense indices (0: none)
-      integer :: ihq = 1           !< resolved hourglass type (LS-DYNA IHQ)
-      real(wp) :: qh = 0.1_wp      !< resolved hourglass coefficient
-      real(wp) :: q1 = 1.5_wp      !< resolved quadratic bulk viscosity coefficient
-      real(wp) :: q2 = 0.06_wp     !< resolved linear bulk viscosity coefficient
-   end type part_t
-
-   !> A group of at most nv_chunk elements of one part and one formulation.
-   !> State arrays have the element index first (unit stride over elements).
-   type :: elem_block_t
-      integer :: ipart = 0          !< dense part index
-      integer :: etype = ETYPE_DEFAULT   !< element type: the family table's key
-      integer :: nel = 0            !< elements in this block (<= nv_chunk)
-      integer :: nip = 1            !< integration points per element
-      integer :: nhv = 0            !< history variables per point (from the material)
-      integer, allocatable :: conn(:, :)     !< (nen, nel) dense node indices (nen: family)
-      integer, allocatable :: elem(:)        !< (nel) dense global element index
-      real(wp), allocatable :: sig(:, :, :)  !< (nel, 6, nip) Cauchy stress
-      real(wp), allocatable :: hv(:, :, :)   !< (nel, nhv, nip) material history
-      real(wp), allocatable :: vol0(:)       !< (nel) initial volume
-      real(wp), allocatable :: relvol(:)     !< (nel) current V/V0
-      real(wp), allocatable :: eint(:)       !< (nel) internal energy (work of stress)
-      real(wp), allocatable :: ehg(:)        !< (nel) hourglass energy
-      real(wp), allocatable :: ework(:, :)   !< (nel, 4) pending terms of the centred work
-      real(wp), allocatable :: phim(:)       !< (nel) own-mass share (element dt bound)
-      real(wp), allocatable :: hgs(:, :, :)  !< (nel, 3, 4) hourglass resisting forces (IHQ 4,5)
-      logical, allocatable :: failed(:)      !< (nel) eroded elements carry no force
-   end type elem_block_t
 
    type :: node_set_t
       integer :: label = 0

@@ -5,7 +5,7 @@ program test_deck
    use dx_error, only: error_t, EXIT_INPUT
    use dx_assert, only: check, check_close, assert_summary
    use dx_log, only: log_set_quiet
-   use dx_model, only: model_t
+   use dx_model, only: model_t, ES_HGS
    use dx_element_types, only: ETYPE_HEX8_1PT, ETYPE_HEX8_SRI
    use dx_model_input, only: model_input_t
    use dx_deck, only: read_deck_input
@@ -225,16 +225,37 @@ contains
    subroutine test_unknown_keyword()
       type(model_input_t) :: inp
       type(error_t), allocatable :: err
-      call write_file('u.k', '*KEYWORD'//nl//'*FOO_BAR'//nl//'1,2,3'//nl// &
+      call write_file('u.k', '*KEYWORD'//nl//'*DATABASE_FOO_BAR'//nl//'1,2,3'//nl// &
                       '*CONTROL_TERMINATION'//nl//'1.0')
       call read_deck_input(dir//'/u.k', inp, err)
       call check(allocated(err), 'unknown keyword is an error')
-      if (allocated(err)) call check_has(err%message, 'u.k:2: unknown keyword *FOO_BAR', &
+      if (allocated(err)) call check_has(err%message, 'u.k:2: unknown keyword *DATABASE_FOO_BAR', &
                                          'unknown keyword message')
+      if (allocated(err)) call check_has(err%message, 'dynx --check lists every', &
+                                         'unknown keyword: hint to --check')
       call log_set_quiet(.true.)
       call read_deck_input(dir//'/u.k', inp, err, ignore_unknown=.true.)
-      call check(.not. allocated(err), 'unknown keyword ignored on request')
+      call check(.not. allocated(err), 'unknown output keyword ignored on request')
       call check_close(inp%ctrl%endtim, 1.0_wp, 0.0_wp, 0.0_wp, 'reading goes on after it')
+      ! a load, a material, a *CASE are never skipped: the deck would be another problem
+      call write_file('u2.k', '*KEYWORD'//nl//'*LOAD_FOO_BAR'//nl//'1,2,3'//nl// &
+                      '*CONTROL_TERMINATION'//nl//'1.0'//nl//'*CASE_BEGIN_1'//nl// &
+                      '*LOAD_FOO_BAR'//nl//'1,2,3'//nl//'*DATABASE_FOO_BAR'//nl//'1')
+      call read_deck_input(dir//'/u2.k', inp, err, ignore_unknown=.true.)
+      call check(allocated(err), 'unknown load keyword not skipped by ignore_unknown')
+      if (allocated(err)) call check_has(err%message, 'u2.k:2: unknown keyword *LOAD_FOO_BAR: '// &
+         'a load keyword is not skipped', 'unknown load: message names the family')
+      ! --check: all of them at once, grouped, with first use and count
+      call read_deck_input(dir//'/u2.k', inp, err, check=.true.)
+      call check(allocated(err), 'check: findings are an error')
+      if (allocated(err)) then
+         call check_has(err%message, '3 unknown keyword(s)', 'check: count of findings')
+         call check_has(err%message, 'load:', 'check: load family heading')
+         call check_has(err%message, 'u2.k:2  (2 times)', 'check: first use and count')
+         call check_has(err%message, '*CASE_BEGIN_1', 'check: case keyword listed')
+         call check_has(err%message, 'output:', 'check: output family heading')
+         call check(err%code == 2, 'check: exit code 2')
+      end if
    end subroutine test_unknown_keyword
 
    function full_deck() result(s)
@@ -284,7 +305,7 @@ contains
       call check(all(m%blocks(1)%conn(:, 1) == [1, 2, 3, 4, 5, 6, 7, 8]), &
                  'full: two-card element layout')
       call check_close(m%blocks(1)%vol0(1), 1.0_wp, 1e-14_wp, 0.0_wp, 'full: vol0')
-      call check(allocated(m%blocks(1)%hgs), 'full: hgs allocated for IHQ 5')
+      call check(m%blocks(1)%esc(ES_HGS) > 0, 'full: hgs slot for IHQ 5')
       call check(m%parts(1)%ihq == 5, 'full: part IHQ from *HOURGLASS')
       call check_close(m%parts(1)%qh, 0.05_wp, 0.0_wp, 1e-14_wp, 'full: part QH')
       call check_close(m%parts(1)%q1, 1.5_wp, 0.0_wp, 1e-14_wp, 'full: part Q1 default')
@@ -360,7 +381,7 @@ contains
                  'blocks: ELFORM 2')
       call check(m%elem_block(130) == 2 .and. m%elem_pos(130) == 2, 'blocks: elem maps')
       call check(m%elem_label(130) == 229, 'blocks: labels')
-      call check(.not. allocated(m%blocks(1)%hgs), 'blocks: no hgs for IHQ 1')
+      call check(m%blocks(1)%esc(ES_HGS) == 0, 'blocks: no hgs slot for IHQ 1')
       call check(size(m%blocks(1)%hv, 2) == m%blocks(1)%nhv .and. m%blocks(1)%nhv > 0, &
                  'blocks: history sized by the material')
       call check_close(sum(m%blocks(1)%vol0) + sum(m%blocks(2)%vol0), 130.0_wp, 1e-9_wp, &

@@ -5,7 +5,7 @@
 program test_hex8
    use dx_kinds, only: wp, nv_chunk
    use dx_error, only: error_t
-   use dx_model, only: elem_block_t, part_t
+   use dx_model, only: elem_block_t, part_t, ES_HGS
    use dx_mat_elastic, only: mat_elastic_t
    use dx_hex8_geometry, only: hex8_bvectors, inv3, XI_NODE, GAMMA_HG
    use dx_hex8, only: hex8_block
@@ -112,7 +112,7 @@ program test_hex8
       call make_cube()
       part%ihq = ihq
       if (ihq >= 4) then
-         allocate(blk%hgs(1, 3, 4)); blk%hgs = 0.0_wp
+         call blk%es_add(ES_HGS, 12)
       end if
       do i = 1, 8
          v(:, i) = [GAMMA_HG(1, i), 0.0_wp, 0.0_wp]
@@ -131,7 +131,7 @@ program test_hex8
    ! spring's k (gamma.u)**2/2 exactly (trapezoid of old and new force)
    call make_cube()
    part%ihq = 4
-   allocate(blk%hgs(1, 3, 4)); blk%hgs = 0.0_wp
+   call blk%es_add(ES_HGS, 12)
    do i = 1, 8
       v(:, i) = [GAMMA_HG(1, i), 0.0_wp, 0.0_wp]
    end do
@@ -246,7 +246,7 @@ contains
       blk%relvol = 1.0_wp
       blk%elem = [(i, i = 1, nel)]
       if (hq >= 4) then
-         allocate(blk%hgs(nel, 3, 4)); blk%hgs = 0.0_wp
+         call blk%es_add(ES_HGS, 12)
       end if
       part = part_t()
       part%ihq = hq; part%qh = 0.1_wp; part%q1 = 0.0_wp; part%q2 = 0.0_wp

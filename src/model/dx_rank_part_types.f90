@@ -1,0 +1,28 @@
+!> What one MPI rank holds of the serial model: the content of its rank file (written and
+!> read by io/dx_rank_file, made by engine/dx_partition). A type of its own below both, so
+!> io does not import the engine (architecture.md: a type the layers share lives in a
+!> module that uses only base).
+module dx_rank_part_types
+   implicit none
+   private
+   public :: rank_part_t
+
+   !> What one rank holds (the content of its rank file). Global indices are the dense
+   !> 1-based indices of the serial model, ascending.
+   type :: rank_part_t
+      integer :: rank = 0, np = 1, ne_global = 0, nn_global = 0
+      integer, allocatable :: elements(:)    !< global element indices, ascending
+      integer, allocatable :: nodes(:)       !< global node indices, ascending
+      integer, allocatable :: node_owner(:)  !< (size(nodes)) owning rank of each node
+      integer, allocatable :: nbr(:)         !< neighbour ranks, ascending
+      integer, allocatable :: nbr_ptr(:)     !< (size(nbr)+1) offsets into nbr_nodes
+      integer, allocatable :: nbr_nodes(:)   !< nodes shared with each neighbour, ascending
+      integer, allocatable :: spcs(:)        !< indices into model%spcs on local nodes
+      integer, allocatable :: prescribed(:)  !< indices into model%prescribed
+      integer, allocatable :: node_loads(:)  !< indices into model%node_loads
+      integer, allocatable :: seg_loads(:)   !< indices into model%seg_loads computed here
+      integer, allocatable :: wall_ptr(:)    !< (nwalls+1) offsets into wall_nodes
+      integer, allocatable :: wall_nodes(:)  !< local slave nodes of each rigid wall
+      integer, allocatable :: hist_nodes(:)  !< indices into model%db%hist_nodes
+   end type rank_part_t
+end module dx_rank_part_types
