@@ -138,10 +138,14 @@ mpi-sweep: deps
 
 # the deck-reader and restart-dump fuzzer through the sanitized debug build: N mutants
 # (default 1e4; the issue-15 campaign is make fuzz N=100000), a mutant over 10 s is a hang
+# (bin/dynx-asan: the debug flags, -ffpe-trap=invalid,zero,overflow included, plus the
+# sanitizers); SEED= repeats a campaign, JOBS= parallel runs (default 2)
 N ?= 10000
+JOBS ?= 2
+SEED ?=
 fuzz: deps
 	@$(MAKE) --no-print-directory bin/dynx-asan
-	@python3 scripts/fuzz_decks.py --count $(N) --jobs 2 --watchdog 10
+	@python3 scripts/fuzz_decks.py --count $(N) --jobs $(JOBS) --watchdog 10 $(if $(SEED),--seed $(SEED))
 
 bench: deps
 	@$(MAKE) --no-print-directory all $(MPI_BENCH)

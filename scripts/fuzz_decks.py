@@ -180,6 +180,8 @@ def classify(rc, err):
             break
     bad = ('AddressSanitizer', 'runtime error', 'Fortran runtime error', 'Backtrace',
            'Error termination', 'LeakSanitizer', 'SUMMARY: ', 'Segmentation', 'Program received')
+    if 'SIGFPE' in err or 'Floating-point exception' in err:
+        return False, 'trap (SIGFPE)', '', first      # -ffpe-trap=invalid,zero,overflow
     for b in bad:
         if b in err:
             return False, 'crash (%s)' % b.strip(), '', first
@@ -317,6 +319,8 @@ def main():
     ap.add_argument('--dynx', default=None)
     ap.add_argument('--workdir', default=os.path.join(ROOT, 'build', 'fuzz'))
     ap.add_argument('--report', default=None, help='write the message-class table (markdown)')
+    ap.add_argument('--progress', type=int, default=1000,
+                    help='a progress line every N inputs (0: none)')
     args = ap.parse_args()
     dynx = args.dynx
     args.workdir = os.path.abspath(args.workdir)
@@ -334,43 +338,79 @@ def main():
     shutil.rmtree(args.workdir, ignore_errors=True)
     os.makedirs(args.workdir)
     t0 = time.time()
-    cases = []
     rdeck = rdump = None
     if args.restart_share > 0:
         rdeck, rdump = restart_base(args.workdir, dynx)
-    for i in range(args.count):
-        if rdump is not None and rng.random() < args.restart_share:
-            data, tag = mutate_dump(rng, rdump)
-            cases.append((i, 'restart-dump:' + tag, data, {}, rdeck))
-            continue
-        name, text, base = rng.choice(src)
-        files, tags = {}, []
-        for _ in range(rng.choice([1, 1, 1, 2, 3])):
-            text, tag = mutate(rng, text, files)
-            tags.append(tag)
-        cases.append((i, name + ':' + '+'.join(tags), text, files, base))
+    ncount = collections.Counter()
+
+    def gen():
+        """The inputs in order, made one at a time (the same sequence for a seed as a list
+        would give; a 100,000-mutant campaign never holds more than a window of them)."""
+        for i in range(args.count):
+            if rdump is not None and rng.random() < args.restart_share:
+                data, tag = mutate_dump(rng, rdump)
+                ncount['dump'] += 1
+                yield (i, 'restart-dump:' + tag, data, {}, rdeck)
+                continue
+            name, text, base = rng.choice(src)
+            files, tags = {}, []
+            for _ in range(rng.choice([1, 1, 1, 2, 3])):
+                text, tag = mutate(rng, text, files)
+                tags.append(tag)
+            if base:
+                ncount['rdeck'] += 1
+            yield (i, name + ':' + '+'.join(tags), text, files, base)
+
     outcomes = collections.Counter()
     classes = collections.OrderedDict()
     fails = []
+    window = 8 * max(1, args.jobs)
     with cf.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as ex:
-        futs = [ex.submit(run_one, args, i, n, t, f, b, args.workdir, dynx, args.timeout)
-                for i, n, t, f, b in cases]
-        for fu in cf.as_completed(futs):
-            idx, name, ok, outcome, cls, first = fu.result()
-            outcomes[outcome] += 1
-            if not ok:
-                fails.append((idx, name, outcome, first))
-            elif cls:
-                if cls not in classes:
-                    classes[cls] = [0, first, name]
-                classes[cls][0] += 1
+        pending = set()
+        it = gen()
+        done_all = False
+        while pending or not done_all:
+            while not done_all and len(pending) < window:
+                try:
+                    i, n, t, f, b = next(it)
+                except StopIteration:
+                    done_all = True
+                    break
+                pending.add(ex.submit(run_one, args, i, n, t, f, b, args.workdir, dynx,
+                                      args.timeout))
+            if not pending:
+                break
+            finished, pending = cf.wait(pending, return_when=cf.FIRST_COMPLETED)
+            for fu in finished:
+                idx, name, ok, outcome, cls, first = fu.result()
+                outcomes[outcome] += 1
+                ndone = sum(outcomes.values())
+                if args.progress > 0 and ndone % args.progress == 0:
+                    el = time.time() - t0
+                    print('fuzz_decks: progress %d of %d in %.0f s (%.2f inputs/s), %d failures'
+                          ' so far: %s' % (ndone, args.count, el, ndone / max(el, 1e-9),
+                                           len(fails) + (0 if ok else 1),
+                                           ', '.join('%s %d' % kv for kv in
+                                                     sorted(outcomes.items()))), flush=True)
+                if not ok:
+                    fails.append((idx, name, outcome, first))
+                elif cls:
+                    if cls not in classes:
+                        classes[cls] = [0, first, name]
+                    classes[cls][0] += 1
     dt = time.time() - t0
-    print('fuzz_decks: %d inputs (seed %d, %s, %d jobs) in %.1f s: %s' % (
-        args.count, seed, os.path.basename(dynx), args.jobs, dt,
+    print('fuzz_decks: %d inputs (seed %d, %s, %d jobs) in %.1f s (%.2f inputs/s): %s' % (
+        args.count, seed, os.path.basename(dynx), args.jobs, dt, args.count / max(dt, 1e-9),
         ', '.join('%s %d' % kv for kv in sorted(outcomes.items()))))
-    nd = sum(1 for c in cases if c[1].startswith('restart-dump'))
+    ncrash = sum(v for k, v in outcomes.items() if k.startswith('crash') or
+                 k.startswith('signal') or (k.startswith('exit') and k not in
+                                             ('exit 0', 'exit 2', 'exit 4')))
+    nhang = sum(v for k, v in outcomes.items() if k.startswith('hang'))
+    ntrap = sum(v for k, v in outcomes.items() if k.startswith('trap'))
+    print('fuzz_decks: %d crashes, %d hangs (watchdog %g s), %d traps (floating-point)' % (
+        ncrash, nhang, args.watchdog, ntrap))
     print('fuzz_decks: %d of the inputs were restart decks (-R), %d restart dumps (-r)' % (
-        sum(1 for c in cases if c[4]) - nd, nd))
+        ncount['rdeck'], ncount['dump']))
     print('fuzz_decks: %d distinct exit-2 message classes' % len(classes))
     for idx, name, outcome, first in sorted(fails):
         print('  FAIL %06d %s: %s: %s (kept in %s/fail-%06d)' % (idx, name, outcome, first[:160],
