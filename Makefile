@@ -7,6 +7,8 @@
 #   make restart-long  interrupt-and-continue on every scene deck, 20 kill -9 on the full Taylor impact
 #   make kill9-sweep   kill -9 at every write/rename/fsync/unlink of a short run (plot crash safety)
 #   make mpi-sweep     every regression deck serially and at NP 2, 3, 4: bitwise equal (about 15 min)
+#   make public-decks  the public LS-DYNA deck corpus (tests/public/): runs / exit 2 / wrong table,
+#                      written to docs/public-decks.md (a few minutes; not part of make test)
 SHELL := /bin/sh
 FC := h5pfc
 SRC_DIRS := base linalg parallel model materials materials/eos build deck elements rigid contact loads io engine solvers
@@ -39,7 +41,7 @@ OUT := out
 PROGS := bin/dynx $(patsubst src/tools/%.f90,bin/%,$(wildcard src/tools/dynx_*.f90))
 PROGS := $(subst _,-,$(PROGS))
 
-.PHONY: all deps run test unit regression bench studies clean debug fuzz restart-long kill9-sweep mpi-sweep
+.PHONY: all deps run test unit regression bench studies clean debug fuzz restart-long kill9-sweep mpi-sweep public-decks
 all: $(PROGS)
 
 deps:
@@ -157,6 +159,11 @@ studies: deps
 	@sh scripts/studies_contact.sh
 	@/usr/bin/python3 scripts/studies_emc.py
 	@sh scripts/studies_scenes.sh
+
+# each deck of tests/public/index.tsv: --check, a --walltime-capped run, a physics check
+public-decks: all
+	@/usr/bin/python3 scripts/public_decks.py --self-test
+	@/usr/bin/python3 scripts/public_decks.py
 
 clean:
 	rm -rf build bin out

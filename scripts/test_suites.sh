@@ -33,6 +33,7 @@ suite() {   # name, command...
     [ "$f" -gt 0 ] && bad="$bad $name"
 }
 suite layers python3 scripts/check_layers.py
+suite keywords-doc python3 scripts/check_keywords_doc.py
 # shellcheck disable=SC2086
 suite unit sh scripts/run_unit_tests.sh $unit
 # shellcheck disable=SC2086

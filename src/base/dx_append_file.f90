@@ -6,9 +6,10 @@
 module dx_append_file
    use dx_error, only: error_t, set_error, EXIT_IO
    use dx_io_sys, only: sys_truncate
+   use dx_strings, only: str
    implicit none
    private
-   public :: unit_bytes, append_from
+   public :: unit_bytes, append_from, cut_back
 
 contains
 
@@ -38,13 +39,8 @@ contains
       unit = -1
       sz = -1
       inquire(file=path, exist=there, size=sz)
-      if (.not. there .or. sz < nbytes) then
-         call set_error(error, 'cannot continue '//path//': it has '//itoa(max(sz, 0_8))// &
-            ' bytes, the restart dump expects at least '//itoa(nbytes)// &
-            ' (missing, or another run''s file?)', EXIT_IO)
-         return
-      end if
-      if (sz > nbytes) call sys_truncate(path, nbytes, error)
+      if (.not. there) sz = -1
+      call cut_back(path, sz, nbytes, 'missing, or another run''s file?', error)
       if (allocated(error)) return
       open(newunit=unit, file=path, status='old', action='write', position='append', &
            form='formatted', iostat=ios, iomsg=msg)
@@ -52,11 +48,19 @@ contains
                                    trim(msg), EXIT_IO)
    end subroutine append_from
 
-   pure function itoa(i) result(s)
-      integer(8), intent(in) :: i
-      character(:), allocatable :: s
-      character(24) :: buf
-      write(buf, '(i0)') i
-      s = trim(buf)
-   end function itoa
+   !> Cut the file path of sz bytes back to its first nbytes (the lines a killed run wrote
+   !> after the dump go); shorter than nbytes (sz < 0: missing) is an I/O error naming the
+   !> sizes and the hint.
+   subroutine cut_back(path, sz, nbytes, hint, error)
+      character(*), intent(in) :: path, hint
+      integer(8), intent(in) :: sz, nbytes
+      type(error_t), allocatable, intent(out) :: error
+      if (sz < nbytes) then
+         call set_error(error, 'cannot continue '//path//': it has '//str(max(sz, 0_8))// &
+            ' bytes, the restart dump expects at least '//str(nbytes)//' ('//hint//')', &
+            EXIT_IO)
+      else if (sz > nbytes) then
+         call sys_truncate(path, nbytes, error)
+      end if
+   end subroutine cut_back
 end module dx_append_file

@@ -24,7 +24,12 @@ module dx_card
    public :: card_line_t, block_t, param_t, card_t, open_card, find_param, std_widths, &
              data_start, block_title, ncards, card_is_blank, field_text, field_int, &
              field_real, field_str, error_at_field, error_at_card, error_at_block, where_card, &
-             max_cards_check
+             max_cards_check, REAL_FIELD_MAX
+
+   !> The largest magnitude of a real field: huge/1e6 (1.8E+302), so a value times a few
+   !> factors of the model (areas, moduli, counts) stays finite; Inf (an overflowing
+   !> '1e309') is rejected too. Coordinates have a tighter bound (dx_read_nodes_elements).
+   real(wp), parameter :: REAL_FIELD_MAX = huge(1.0_wp)*1.0e-6_wp
 
    !> one data card: raw text and line number (the file is the block's)
    type :: card_line_t
@@ -442,11 +447,15 @@ contains
       if (is_param_ref(t)) then
          call param_value(params, t, val, msg)
          if (len(msg) > 0) call error_at_field(file, blk, ic, k, w, fname, msg, error)
-         return
+         return                      ! (the *PARAMETER value passed the range check below)
       end if
       call parse_real(t, val, ok)
       if (.not. ok) then
          call error_at_field(file, blk, ic, k, w, fname, bad_number_msg(blk, ic, k, w, t), error)
+      else if (.not. ieee_is_finite(val) .or. abs(val) > REAL_FIELD_MAX) then
+         call error_at_field(file, blk, ic, k, w, fname, 'value '//t//' is out of range: '// &
+            'a real field must not exceed '//rstr(REAL_FIELD_MAX, 2)//' in magnitude (the '// &
+            'largest double / 1e6; larger values overflow in the computation)', error)
       else
          call check_boundaries(file, blk, ic, k, w, fname, error)
       end if
@@ -667,8 +676,7 @@ contains
       read(buf(1:nb), *, iostat=ios) val
       call ieee_set_flag(ieee_overflow, .false.)
       if (halt) call ieee_set_halting_mode(ieee_overflow, .true.)
-      ok = ios == 0
-      if (ok) ok = ieee_is_finite(val)
+      ok = ios == 0                  ! an overflow to Inf is the caller's range error
    end subroutine parse_real
 
    ! ----------------------------------------------------------------------------------------

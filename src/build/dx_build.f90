@@ -7,7 +7,7 @@ module dx_build
    use dx_error, only: error_t
    use dx_model, only: model_t
    use dx_model_input, only: model_input_t
-   use dx_model_build, only: build_model_data => build_model
+   use dx_model_build, only: build_model_data
    use dx_contact_build, only: build_contact
    use dx_emc_build, only: build_emc
    implicit none

@@ -21,12 +21,14 @@ module dx_model_build
    use dx_rigid_build, only: build_rigid, build_body_loads
    implicit none
    private
-   public :: build_model
+   public :: build_model_data
 
 contains
 
-   !> Build model from inp (inp's materials and curves are moved into model).
-   subroutine build_model(inp, model, error)
+   !> Build the model data from inp: nodes, parts, blocks, sets, constraints, loads, controls
+   !> and rigid bodies; not the contact pairs nor the conserving rigid contact (dx_build:
+   !> build_model does all three). inp's materials and curves are moved into model.
+   subroutine build_model_data(inp, model, error)
       type(model_input_t), intent(inout) :: inp
       type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
@@ -65,7 +67,7 @@ contains
       call build_body_loads(inp, model, mp%curve, error)
       if (allocated(error)) return
       call build_rigid(inp, model, mp%node, mp%part, mp%nset, mp%curve, deck0, error)
-   end subroutine build_model
+   end subroutine build_model_data
 
    subroutine build_nodes(inp, model, mp, error)
       type(model_input_t), intent(in) :: inp

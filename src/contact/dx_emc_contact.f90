@@ -31,6 +31,17 @@
 !> are gathered in serial order and added by the same loop as in a serial run
 !> (emc_contact_forces computes every pair's contribution first, then adds them in pair
 !> order), so the sums are the serial ones bit for bit. Without a split (or off): serial.
+!> Missed contact (tunnelling, issue 15): the pairs are taken at the mid configuration, so a
+!> step much longer than the flight time to a wall lets a slave point pass through the
+!> master with no pair and no force. emc_find_tunnel checks each accepted step: a slave
+!> point whose straight path from x(n) to x(n+1) in the master's body frame crosses a master
+!> facet from its outer side (the crossing point inside the facet polygon) to deeper than
+!> half the facet's smallest edge (where the pair selection no longer takes it), or passes
+!> through a master sphere (both ends outside, the closest point of the path inside), with
+!> no pair of that point and that master in the step. The caller warns (the swept-path idea of
+!> continuous collision detection: Ericson 2005, Real-Time Collision Detection, sec. 5.3
+!> and 9.5; Wriggers 2006, Computational Contact Mechanics, sec. 10.4, on contact missed by
+!> large steps in implicit schemes).
 module dx_emc_contact
    use dx_kinds, only: wp
    use dx_emc_types, only: emc_system_t, EMC_PAIR_NI, EMC_PAIR_NR
@@ -38,7 +49,7 @@ module dx_emc_contact
    private
    public :: emc_kin_t, emc_pair_t, emc_select_pairs, emc_contact_forces, emc_inv3, &
              emc_same_plane, emc_pairs_pack, emc_pairs_unpack, emc_split_t, emc_slot_range, &
-             PAIR_FACET, PAIR_SPHERE_OUT, PAIR_SPHERE_IN
+             emc_find_tunnel, PAIR_FACET, PAIR_SPHERE_OUT, PAIR_SPHERE_IN
 
    integer, parameter :: PAIR_FACET = 1, PAIR_SPHERE_OUT = 2, PAIR_SPHERE_IN = 3
    integer, parameter :: NREC = 28   !< reals of one pair's contribution (pair_contribution)
@@ -383,6 +394,95 @@ contains
          pairs(npair) = pp
       end subroutine push
    end subroutine emc_select_pairs
+
+   !> Tunnelling over the accepted step with kinematics k and pairs(1:npair) (module
+   !> header): the first slave point (definition id, slave index src into es%snodes, 0: a
+   !> sphere centre) that crossed a master facet (facet > 0) or went through a master
+   !> sphere (facet = 0) with no pair; id = 0 when none did. Every rank holds all the
+   !> pairs (MPI), so every rank finds the same point.
+   subroutine emc_find_tunnel(es, k, pairs, npair, id, src, facet)
+      type(emc_system_t), intent(in) :: es
+      type(emc_kin_t), intent(in) :: k(:)
+      type(emc_pair_t), intent(in) :: pairs(:)
+      integer, intent(in) :: npair
+      integer, intent(out) :: id, src, facet
+      integer :: jd, sb, mb, i, i1, i2, f, j, jn, q
+      real(wp) :: s(3), rs, xb(3), xb1(3), trav, d0, d1, xq(3), e(3), c(3), sd, tq, dm
+      logical :: inside, paired
+      id = 0; src = 0; facet = 0
+      do jd = 1, size(es%defs)
+         sb = es%defs(jd)%sb
+         mb = es%defs(jd)%mb
+         if (es%sphere(mb)%r > 0.0_wp .and. es%sphere(mb)%side /= 0) cycle  ! inner side
+         if (es%sphere(sb)%r > 0.0_wp .and. es%sphere(sb)%side == 0) then
+            i1 = 0; i2 = 0
+         else
+            i1 = es%sn_ptr(sb); i2 = es%sn_ptr(sb + 1) - 1
+         end if
+         do i = i1, i2
+            if (i == 0) then
+               s = es%sphere(sb)%c; rs = es%sphere(sb)%r
+            else
+               s = es%snodes(:, i); rs = 0.0_wp
+            end if
+            ! the slave point in the master's body frame at t(n) and t(n+1)
+            xb = matmul(transpose(k(mb)%r0), rel0(k(sb), k(mb)) + matmul(k(sb)%r0, s))
+            xb1 = matmul(transpose(k(mb)%r1), rel0(k(sb), k(mb)) + (k(sb)%dxc - k(mb)%dxc) + &
+                         matmul(k(sb)%r1, s))
+            trav = norm2(xb1 - xb)
+            if (es%sphere(mb)%r > 0.0_wp) then
+               associate (sm => es%sphere(mb))
+                  d0 = norm2(xb - sm%c) - rs - sm%r
+                  d1 = norm2(xb1 - sm%c) - rs - sm%r
+                  if (d0 < 0.0_wp .or. d1 < 0.0_wp .or. trav == 0.0_wp) cycle
+                  tq = dot_product(sm%c - xb, xb1 - xb)/(trav*trav)
+                  if (tq <= 0.0_wp .or. tq >= 1.0_wp) cycle
+                  dm = norm2(xb + tq*(xb1 - xb) - sm%c) - rs - sm%r
+                  if (dm >= 0.0_wp) cycle
+               end associate
+               paired = .false.
+               do q = 1, npair
+                  if (pairs(q)%def == jd .and. pairs(q)%src == i) paired = .true.
+               end do
+               if (.not. paired) then
+                  id = jd; src = i; facet = 0; return
+               end if
+               cycle
+            end if
+            do f = es%fac_ptr(mb), es%fac_ptr(mb + 1) - 1
+               associate (fc => es%facets(f))
+                  d0 = dot_product(fc%n, xb - fc%c) - rs
+                  d1 = dot_product(fc%n, xb1 - fc%c) - rs
+                  ! from the outer side to deeper behind the plane than a new pair is ever
+                  ! taken (facet_depth, half the smallest edge): not a graze at an edge, where
+                  ! the mid configuration projects into a neighbour facet and the next step
+                  ! takes the contact
+                  if (.not. (d0 >= 0.0_wp .and. d1 < -facet_depth(es, f))) cycle
+                  ! where the path meets the facet plane, and whether that is on the facet
+                  sd = d0/(d0 - d1)
+                  xq = xb + sd*(xb1 - xb)
+                  inside = .true.
+                  do j = 1, fc%np
+                     jn = mod(j, fc%np) + 1
+                     e = fc%p(:, jn) - fc%p(:, j)
+                     c = cross(e, xq - fc%p(:, j))
+                     if (dot_product(c, fc%n) < -1.0e-12_wp*dot_product(e, e)) inside = .false.
+                  end do
+                  if (.not. inside) cycle
+               end associate
+               ! any pair of the point with this master is contact (near an edge the mid
+               ! configuration may project into the neighbour facet of the one crossed)
+               paired = .false.
+               do q = 1, npair
+                  if (pairs(q)%def == jd .and. pairs(q)%src == i) paired = .true.
+               end do
+               if (.not. paired) then
+                  id = jd; src = i; facet = f; return
+               end if
+            end do
+         end do
+      end do
+   end subroutine emc_find_tunnel
 
    pure real(wp) function fc_rad(es, f)
       type(emc_system_t), intent(in) :: es

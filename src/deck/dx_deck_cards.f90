@@ -1,8 +1,10 @@
 !> LS-DYNA keyword deck tokenizer and field reader.
 !> Reads a deck (and its *INCLUDE files) into keyword blocks: keyword name, format (standard
 !> 10-column or long 20-column fields), and the data cards with their file and line. Handles
-!> '$' comments, *KEYWORD [LONG=Y|S], *END, the '+'/'-' keyword suffixes, *INCLUDE (paths
-!> relative to the including file, depth limit 20), *TITLE, *PARAMETER (R/I/C, 4 pairs per
+!> '$' comments, *KEYWORD [LONG=Y|S] (other tokens such as a memory size or NCPU=
+!> ignored), *END, the '+'/'-' keyword suffixes, *INCLUDE (paths relative to the including
+!> file, then the *INCLUDE_PATH / *INCLUDE_PATH_RELATIVE directories; depth limit 20; an
+!> *INCLUDE whose name lines are all comments is skipped), *TITLE, *PARAMETER (R/I/C, 4 pairs per
 !> card) and '&name' / '-&name' references, and comma-separated free format.
 !> Reference: LS-DYNA Keyword User's Manual, Vol. I, "General card format" and *KEYWORD,
 !> *INCLUDE, *PARAMETER. Fields and messages: dx_card (file:line:col, the card and a caret).
@@ -34,6 +36,10 @@ module dx_deck_cards
       integer :: nparams = 0
       character(:), allocatable :: title
       logical :: long = .false.             !< *KEYWORD LONG=Y seen
+      !> blank cards stripped from the end of each block (a blank line may stand for a
+      !> card of defaults: dx_deck gives one back when a block has no data card else)
+      integer, allocatable :: trailing(:)
+      type(string_t), allocatable :: paths(:)   !< *INCLUDE_PATH(_RELATIVE) directories
    end type deck_t
 
 contains
@@ -43,7 +49,7 @@ contains
       character(*), intent(in) :: path
       type(deck_t), intent(out) :: deck
       type(error_t), allocatable, intent(out) :: error
-      allocate(deck%files(4), deck%blocks(64), deck%params(8))
+      allocate(deck%files(4), deck%blocks(64), deck%params(8), deck%trailing(64), deck%paths(0))
       call read_file(path, deck, 0, 0, 0, error)
    end subroutine read_cards
 
@@ -226,24 +232,31 @@ contains
       end if
    end subroutine next_token
 
+   !> Append a card; the card list grows by doubling while the block is read (linear time)
+   !> and is cut to its exact size when the block is kept (finish_block: resize_cards).
    subroutine add_card(blk, line, lineno)
       type(block_t), intent(inout) :: blk
       character(*), intent(in) :: line
       integer, intent(in) :: lineno
-      type(card_line_t), allocatable :: t(:)
-      integer :: i
-      if (blk%n == size(blk%cards)) then
-         allocate(t(2*size(blk%cards)))
-         do i = 1, blk%n
-            call move_alloc(blk%cards(i)%text, t(i)%text)
-            t(i)%line = blk%cards(i)%line
-         end do
-         call move_alloc(t, blk%cards)
-      end if
+      if (blk%n == size(blk%cards)) call resize_cards(blk, 2*size(blk%cards))
       blk%n = blk%n + 1
       blk%cards(blk%n)%text = line
       blk%cards(blk%n)%line = lineno
    end subroutine add_card
+
+   !> Give blk's card list room for m cards, keeping the first m stored (texts moved, not copied).
+   subroutine resize_cards(blk, m)
+      type(block_t), intent(inout) :: blk
+      integer, intent(in) :: m
+      type(card_line_t), allocatable :: t(:)
+      integer :: i
+      allocate(t(m))
+      do i = 1, min(size(blk%cards), m)     ! cards past blk%n: stripped blanks, if stored
+         if (allocated(blk%cards(i)%text)) call move_alloc(blk%cards(i)%text, t(i)%text)
+         t(i)%line = blk%cards(i)%line
+      end do
+      call move_alloc(t, blk%cards)
+   end subroutine resize_cards
 
    !> A finished block: handle *TITLE, *INCLUDE, *PARAMETER here, keep the others.
    recursive subroutine finish_block(deck, blk, depth, error)
@@ -251,20 +264,31 @@ contains
       type(block_t), intent(inout) :: blk
       integer, intent(in) :: depth
       type(error_t), allocatable, intent(out) :: error
-      integer :: i
+      integer :: i, nblank
       character(:), allocatable :: fname
-      ! trailing blank cards are layout, not data
+      ! trailing blank cards are layout, not data (but see deck%trailing)
+      nblank = 0
       do while (blk%n > 0)
          if (len_trim(blk%cards(blk%n)%text) > 0) exit
          blk%n = blk%n - 1
+         nblank = nblank + 1
       end do
       select case (blk%name)
       case ('TITLE')
          if (blk%n >= 1) deck%title = trim(blk%cards(1)%text(1:min(80, len(blk%cards(1)%text))))
+      case ('INCLUDE_PATH', 'INCLUDE_PATH_RELATIVE')
+         ! directories searched for *INCLUDE files not found next to the including file;
+         ! _RELATIVE: relative to the directory of the input deck (LS-DYNA manual)
+         do i = 1, blk%n
+            fname = trim(adjustl(blk%cards(i)%text))
+            if (len(fname) == 0) cycle
+            if (blk%name == 'INCLUDE_PATH_RELATIVE') fname = resolve_path(deck%files(1)%s, fname)
+            deck%paths = [deck%paths, string_t(fname)]
+         end do
       case ('INCLUDE')
-         if (blk%n == 0) then
-            call block_error(deck, blk, 0, 'missing card 1 (FILENAME)', error); return
-         end if
+         ! an *INCLUDE whose file-name lines are all comments (or blank) names no file:
+         ! LS-DYNA skips it
+         if (blk%n == 0) return
          i = 0
          do while (i < blk%n)
             i = i + 1
@@ -281,16 +305,20 @@ contains
                   ' (does a file include itself?)')
                return
             end if
-            call read_file(resolve_path(deck%files(blk%ifile)%s, fname), deck, depth + 1, &
-                           blk%ifile, blk%cards(i)%line, error)
+            call read_file(include_path(deck, deck%files(blk%ifile)%s, fname), deck, &
+                           depth + 1, blk%ifile, blk%cards(i)%line, error)
             if (allocated(error)) return
          end do
       case ('PARAMETER')
          call read_parameters(deck, blk, error)
       case default
+         ! kept until the deck is read: exact size, not the doubling's up to 2x slots; the
+         ! stripped blank cards stay stored (dx_deck gives them back as cards of defaults)
+         if (blk%n + nblank < size(blk%cards)) call resize_cards(blk, blk%n + nblank)
          if (deck%nblocks == size(deck%blocks)) call grow_blocks(deck)
          deck%nblocks = deck%nblocks + 1
          call move_block(blk, deck%blocks(deck%nblocks))
+         deck%trailing(deck%nblocks) = nblank
       end select
    end subroutine finish_block
 
@@ -301,6 +329,30 @@ contains
       ends_with_plus = .false.
       if (n >= 2) ends_with_plus = s(n-1:n) == ' +'
    end function ends_with_plus
+
+   !> The file an *INCLUDE names: next to the including file (or absolute); if no such file
+   !> exists, the first *INCLUDE_PATH directory that holds it; else the first guess (whose
+   !> open error names it).
+   function include_path(deck, parent, name) result(p)
+      type(deck_t), intent(in) :: deck
+      character(*), intent(in) :: parent, name
+      character(:), allocatable :: p, q
+      logical :: there
+      integer :: i
+      p = resolve_path(parent, name)
+      if (name(1:1) == '/') return
+      inquire(file=p, exist=there)
+      if (there) return
+      do i = 1, size(deck%paths)
+         q = deck%paths(i)%s
+         if (q(len(q):len(q)) /= '/') q = q//'/'
+         inquire(file=q//name, exist=there)
+         if (there) then
+            p = q//name
+            return
+         end if
+      end do
+   end function include_path
 
    !> name relative to the directory of the including file, unless absolute
    pure function resolve_path(parent, name) result(p)
@@ -329,12 +381,15 @@ contains
    subroutine grow_blocks(deck)
       type(deck_t), intent(inout) :: deck
       type(block_t), allocatable :: t(:)
+      integer, allocatable :: tr(:)
       integer :: i
-      allocate(t(2*size(deck%blocks)))
+      allocate(t(2*size(deck%blocks)), tr(2*size(deck%blocks)))
       do i = 1, deck%nblocks
          call move_block(deck%blocks(i), t(i))
       end do
+      tr(1:deck%nblocks) = deck%trailing(1:deck%nblocks)
       call move_alloc(t, deck%blocks)
+      call move_alloc(tr, deck%trailing)
    end subroutine grow_blocks
 
    subroutine grow_files(deck)

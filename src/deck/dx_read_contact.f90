@@ -262,7 +262,8 @@ contains
          error)
    end subroutine read_control_contact
 
-   !> *DATABASE_RCFORC: DT BINARY LCUR IOOPT (DT used).
+   !> *DATABASE_RCFORC: DT BINARY LCUR IOOPT (DT used; 0 means no rcforc file, as in
+   !> LS-DYNA).
    subroutine read_rcforc(deck, blk, inp, error)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
@@ -278,8 +279,9 @@ contains
       if (allocated(error)) return
       call get_real(deck, blk, 1, 1, w, 'DT', 0.0_wp, inp%contact%rcforc_dt, error)
       if (allocated(error)) return
-      if (.not. (inp%contact%rcforc_dt > 0.0_wp)) call field_error(deck, blk, 1, 1, w, 'DT', &
-         'output interval must be > 0, got '//rstr(inp%contact%rcforc_dt), error)
+      if (.not. (inp%contact%rcforc_dt >= 0.0_wp)) call field_error(deck, blk, 1, 1, w, 'DT', &
+         'output interval must be >= 0 (0: no rcforc file), got '// &
+         rstr(inp%contact%rcforc_dt), error)
    end subroutine read_rcforc
 
    !> *DEFINE_BOX: BOXID XMN XMX YMN YMX ZMN ZMX.

@@ -61,9 +61,13 @@ contains
          call c%real('DTMIN', 0.0_wp, t%dtmin)
          call c%real('ENDENG', 0.0_wp, t%endeng)
          call c%real('ENDMAS', 0.0_wp, t%endmas)
-         ! LS-DYNA: stop when the mass added by mass scaling (*CONTROL_TIMESTEP DT2MS < 0)
-         ! reaches ENDMAS percent of the model's mass. dynx adds no mass, so it never acts.
-         if (c%ok() .and. t%endmas /= 0.0_wp) call log_warn(deck%files(blk%ifile)%s//':'// &
+         ! ENDMAS (percent; default 1e8, in effect off): LS-DYNA stops when the mass added
+         ! by mass scaling (*CONTROL_TIMESTEP DT2MS) reaches it. dynx adds no mass (DT2MS
+         ! /= 0 is an error), so it never acts: a value other than 0 and the default 1e8
+         ! (which LS-PrePost writes) draws a warning that it has no effect.
+         if (c%ok() .and. t%endmas < 0.0_wp) call c%fail('ENDMAS', 'must be >= 0')
+         if (c%ok() .and. t%endmas /= 0.0_wp .and. t%endmas /= 1.0e8_wp) &
+            call log_warn(deck%files(blk%ifile)%s//':'// &
             str(blk%cards(1)%line)//': *CONTROL_TERMINATION ENDMAS = '//rstr(t%endmas)// &
             ' has no effect: it limits the mass added by mass scaling, and dynx adds none '// &
             '(DT2MS is not applied)')
@@ -75,7 +79,10 @@ contains
       inp%term_src = origin(blk%ifile, blk%cards(1)%line, blk%name)
    end subroutine read_termination
 
-   !> DTINIT TSSFAC ISDO TSLIMT DT2MS LCTM ERODE MS1ST; card 2 (mass scaling) must be empty
+   !> DTINIT TSSFAC ISDO TSLIMT DT2MS LCTM ERODE MS1ST; card 2 (mass scaling) must be empty.
+   !> ISDO and TSLIMT act on shells only (dynx has none): accepted. DT2MS /= 0 (mass
+   !> scaling) and ERODE /= 0 (deletion of solids whose step falls below DTMIN) would change
+   !> the results and are not implemented: one error naming both when both are set.
    subroutine read_timestep(deck, blk, inp, error)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
@@ -83,6 +90,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: k
       type(card_t) :: c
+      character(:), allocatable :: why
       character(len=7), parameter :: card2(8) = ['DT2MSF ', 'DT2MSLC', 'IMSCL  ', 'UNUSED ', &
          'UNUSED ', 'RMSCL  ', 'EMSCL  ', 'IHDO   ']
       call need_card(deck, blk, 'DTINIT TSSFAC ISDO TSLIMT DT2MS LCTM ERODE MS1ST', error)
@@ -94,11 +102,22 @@ contains
          if (t%tssfac == 0.0_wp) t%tssfac = 0.9_wp
          if (c%ok() .and. t%tssfac < 0.0_wp) call c%fail('TSSFAC', 'time step curves '// &
                                                          '(TSSFAC < 0) are not supported')
-         call c%int('ISDO', 0, t%isdo)
+         call c%int('ISDO', 0, t%isdo, min=0, max=3)
          call c%real('TSLIMT', 0.0_wp, t%tslimt)
          call c%real('DT2MS', 0.0_wp, t%dt2ms)
          call c%int('LCTM', 0, inp%lctm)
          call c%int('ERODE', 0, t%erode)
+         if (c%ok() .and. (t%dt2ms /= 0.0_wp .or. t%erode /= 0)) then
+            why = ''
+            if (t%erode /= 0) why = '; ERODE = '//str(t%erode)//': the deletion of solid '// &
+               'elements whose time step falls below DTMIN is not implemented (issue 18)'
+            if (t%dt2ms /= 0.0_wp) then
+               call c%fail('DT2MS', 'DT2MS = '//rstr(t%dt2ms)//': mass scaling is not '// &
+                  'implemented; dynx would run at the natural time step'//why)
+            else
+               call c%fail('ERODE', why(3:))
+            end if
+         end if
       end associate
       call c%zero('MS1ST', 'first-step-only mass scaling')
       call c%max_cards(2)
@@ -135,25 +154,40 @@ contains
       call c%done(error)
    end subroutine read_control_hourglass
 
-   !> ESORT FMATRX NIPTETS SWLOCL PSFAIL T10JTOL ICOH TET13K: ESORT (0: degenerate solids keep
-   !> their section's formulation; 1, 2: degenerate tetrahedra become ELFORM 10;
-   !> dx_element_types solid_shape); the other
-   !> fields and cards (solid-element options dynx has no use for) are read past.
+   !> Card 1 ESORT FMATRX NIPTETS SWLOCL PSFAIL T10JTOL ICOH TET13K; card 2 PM1-PM10
+   !> (node permutation of 10-node tetrahedra, 8 columns each); card 3 (TET13V).
+   !> ESORT (0: degenerate solids keep their section's formulation; 1, 2: degenerate
+   !> tetrahedra become ELFORM 10; dx_element_types solid_shape). FMATRX (how the
+   !> deformation gradient is computed for materials that use it: dynx's are hypoelastic),
+   !> NIPTETS (ELFORM 4 tetrahedra), SWLOCL (output), T10JTOL, ICOH (cohesive elements),
+   !> TET13K and the permutation act on element types dynx does not have: accepted.
+   !> PSFAIL (erosion of the solids of a part set on a negative volume) would change the
+   !> results and is not implemented: an error.
    subroutine read_control_solid(deck, blk, inp, error)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8)
-      w = std_widths(blk, 8)
+      type(card_t) :: c
+      integer :: v
+      real(wp) :: r
       call need_card(deck, blk, 'ESORT', error)
       if (allocated(error)) return
-      call get_int(deck, blk, 1, 1, w, 'ESORT', 0, inp%ctrl%esort, error)
-      if (allocated(error)) return
-      if (inp%ctrl%esort < 0 .or. inp%ctrl%esort > 2) then
-         call field_error(deck, blk, 1, 1, w, 'ESORT', 'value '//str(inp%ctrl%esort)// &
-                          ' is not supported (supported: 0, 1, 2)', error)
-      end if
+      call deck_cursor(deck, blk, c)
+      call c%max_cards(3)
+      call c%int('ESORT', 0, inp%ctrl%esort)
+      if (c%ok() .and. (inp%ctrl%esort < 0 .or. inp%ctrl%esort > 2)) call c%fail('ESORT', &
+         'value '//str(inp%ctrl%esort)//' is not supported (supported: 0, 1, 2)')
+      call c%int('FMATRX', 0, v, min=0, max=2)
+      call c%int('NIPTETS', 0, v, min=0)
+      call c%int('SWLOCL', 0, v, min=0, max=2)
+      call c%int('PSFAIL', 0, v)
+      if (c%ok() .and. v /= 0) call c%fail('PSFAIL', 'the erosion of solids with a '// &
+         'negative volume (part set '//str(v)//') is not implemented')
+      call c%real('T10JTOL', 0.0_wp, r)
+      call c%real('ICOH', 0.0_wp, r)
+      call c%real('TET13K', 0.0_wp, r)
+      call c%done(error)
    end subroutine read_control_solid
 
    !> Q1 Q2 TYPE BTYPE
@@ -183,25 +217,43 @@ contains
       call c%done(error)
    end subroutine read_bulk_viscosity
 
-   !> DT LCDT BEAM NPLTC PSETID
+   !> Card 1 DT LCDT BEAM NPLTC PSETID; optional card 2 IOOPT RATE CUTOFF WINDOW TYPE PSET.
+   !> LCDT (a plot-interval curve) and PSETID (a part subset) are not implemented: errors.
+   !> IOOPT (how LCDT is used) matters only with LCDT, RATE CUTOFF WINDOW PSET only with a
+   !> filter TYPE 1 or 2 (Butterworth filtering of the plotted element data), which dynx
+   !> does not implement: TYPE /= 0 is an error, the other fields are then unused and
+   !> accepted (LS-DYNA Keyword User's Manual, *DATABASE_BINARY_D3PLOT).
    subroutine read_d3plot(deck, blk, inp, error)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: beam
+      integer :: beam, psetid, ioopt, ftype, pset
+      real(wp) :: rate, cutoff, window
       type(card_t) :: c
       call need_card(deck, blk, 'DT LCDT BEAM NPLTC PSETID', error)
       if (allocated(error)) return
-      call check_max_cards(deck, blk, 1, error)
-      if (allocated(error)) return
       call deck_cursor(deck, blk, c)
+      call c%max_cards(2)
       call c%real('DT', 0.0_wp, inp%d3plot_dt)
       call c%int('LCDT', 0, inp%d3plot_lcdt)
-      call c%int('BEAM', 0, beam)   ! beams only: no effect
+      if (c%ok() .and. inp%d3plot_lcdt /= 0) call c%fail('LCDT', 'plot interval curves '// &
+         'are not implemented: give the interval DT (or NPLTC)')
+      call c%int('BEAM', 0, beam)   ! discrete elements and beams only: no effect on solids
       call c%int('NPLTC', 0, inp%d3plot_npltc)
-      call c%zero('PSETID', 'output of a part subset')
+      call c%int('PSETID', 0, psetid)
+      if (c%ok() .and. psetid /= 0) call c%fail('PSETID', 'value '//str(psetid)// &
+         ' is not supported: output of a part subset (d3plot.h5 holds every part)')
       if (c%ok() .and. inp%d3plot_dt < 0.0_wp) call c%fail('DT', 'must be >= 0')
+      call c%next()
+      call c%int('IOOPT', 0, ioopt, min=0, max=3)
+      call c%real('RATE', 0.0_wp, rate, min=0.0_wp)
+      call c%real('CUTOFF', 0.0_wp, cutoff, min=0.0_wp)
+      call c%real('WINDOW', 0.0_wp, window, min=0.0_wp)
+      call c%int('TYPE', 0, ftype, min=0, max=2)
+      if (c%ok() .and. ftype /= 0) call c%fail('TYPE', 'filtering of the plotted element '// &
+         'data (TYPE = '//str(ftype)//') is not implemented: set TYPE = 0')
+      call c%int('PSET', 0, pset, min=0)
       call c%done(error)
       if (allocated(error)) return
       inp%d3plot_src = origin(blk%ifile, blk%cards(1)%line, blk%name)

@@ -9,7 +9,7 @@
 !> formulation: docs/conserving-contact.md (Simo & Wong 1991; Laursen & Chawla 1997).
 module dx_read_emc
    use dx_kinds, only: wp
-   use dx_error, only: error_t
+   use dx_error, only: error_t, set_error
    use dx_strings, only: str, rstr
    use dx_deck_cards, only: deck_t, block_t, get_int, get_real, field_error, block_error, &
                             std_widths, data_start
@@ -18,7 +18,7 @@ module dx_read_emc
    use dx_emc_types, only: emc_contact_in_t, emc_sphere_in_t, EMC_PENALTY, EMC_LAGRANGE
    implicit none
    private
-   public :: register_emc
+   public :: register_emc, emc_finish
 
 contains
 
@@ -67,7 +67,9 @@ contains
       end if
       call get_real(deck, blk, i0, 2, w, 'DT0', 0.0_wp, inp%ctrl%imp%dt0, error)
       if (allocated(error)) return
-      if (inp%ctrl%imp%imflag == 1 .and. .not. (inp%ctrl%imp%dt0 > 0.0_wp)) then
+      ! DT0 = 0 with IMFLAG = 1 is judged after the whole deck (emc_finish): without
+      ! *DYNX_CONSERVING_CONTACT the IMFLAG message (build) says what is missing
+      if (.not. (inp%ctrl%imp%dt0 >= 0.0_wp)) then
          call field_error(deck, blk, i0, 2, w, 'DT0', 'the implicit step size must be > 0', &
                           error)
          return
@@ -297,4 +299,19 @@ contains
          call field_error(deck, blk, i0, 4, w, 'OUTDT', 'must be >= 0', error); return
       end if
    end subroutine read_emc_control
+   !> After the whole deck: IMFLAG = 1 for the conserving solver (*DYNX_CONSERVING_CONTACT
+   !> present) needs DT0 > 0; without it the build names IMFLAG (the Newton solver of issue
+   !> 20), so a DT0 of 0 there is not the first thing to say.
+   subroutine emc_finish(inp, error)
+      type(model_input_t), intent(in) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: nc
+      nc = 0
+      if (allocated(inp%emc%contacts)) nc = size(inp%emc%contacts)
+      if (inp%ctrl%imp%imflag /= 1 .or. nc == 0) return
+      if (inp%ctrl%imp%dt0 > 0.0_wp) return
+      call set_error(error, inp%files(inp%ctrl%imp%ifile)%s//':'//str(inp%ctrl%imp%line)// &
+         ': *CONTROL_IMPLICIT_GENERAL: field DT0: the implicit step size must be > 0 '// &
+         '(the conserving solver of *DYNX_CONSERVING_CONTACT steps by DT0)')
+   end subroutine emc_finish
 end module dx_read_emc

@@ -6,7 +6,7 @@
 module dx_read_nodes_elements
    use dx_kinds, only: wp
    use dx_error, only: error_t
-   use dx_strings, only: str
+   use dx_strings, only: str, rstr
    use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, get_int, get_real, &
                             field_error, card_error, block_error, std_widths, data_start
    use dx_deck_registry, only: registry_t
@@ -51,6 +51,11 @@ contains
          end if
          do k = 1, 3
             call get_real(deck, blk, ic, 1 + k, w, xyz(k), 0.0_wp, x(k), error)
+            if (allocated(error)) return
+            ! element volumes are cubes of coordinate differences: (2e100)**3 = 8e300
+            if (abs(x(k)) > 1.0e100_wp) call field_error(deck, blk, ic, 1 + k, w, xyz(k), &
+               'coordinate '//rstr(x(k), 3)//' is out of range (|x| <= 1E+100: a volume '// &
+               'is a cube of coordinates and must stay finite)', error)
             if (allocated(error)) return
          end do
          call get_int(deck, blk, ic, 5, w, 'TC', 0, tc, error)

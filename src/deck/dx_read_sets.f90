@@ -1,17 +1,25 @@
-!> Readers for *SET_NODE_LIST, *SET_PART_LIST (SID DA1..DA4 SOLVER, then ids 8 per card,
-!> zeros skipped) and *SET_SEGMENT (SID DA1..DA4, then N1 N2 N3 N4 A1..A4 per segment;
-!> N4 blank or equal to N3 makes a triangle), each with the _TITLE option.
-!> LS-DYNA Keyword User's Manual, Vol. I, *SET.
+!> Readers for *SET_NODE_LIST (alias *SET_NODE), *SET_PART_LIST (alias *SET_PART) (SID
+!> DA1..DA4 SOLVER, then ids 8 per card, zeros skipped), *SET_SEGMENT (SID DA1..DA4, then
+!> N1 N2 N3 N4 A1..A4 per segment; N4 blank or equal to N3 makes a triangle), and the
+!> generated sets: *SET_NODE_LIST_GENERATE / *SET_PART_LIST_GENERATE (SID ..., then
+!> B1BEG B1END .. B4BEG B4END: every defined id in the ranges) and *SET_NODE_GENERAL
+!> (SID ..., then OPTION E1..E7 cards: ALL; NODE, PART, BOX, SET add the nodes given, of
+!> the parts' elements, inside the *DEFINE_BOX boxes, of the node sets; DNODE, DPART,
+!> DBOX, DSET remove them; applied in card order), each with the _TITLE option. Generated
+!> sets are resolved after the whole deck (sets_finish): nodes, parts and boxes may come
+!> later in the deck. LS-DYNA Keyword User's Manual, Vol. I, *SET.
 module dx_read_sets
-   use dx_error, only: error_t
-   use dx_strings, only: str
-   use dx_deck_cards, only: deck_t, block_t, get_int, field_error, block_error, &
+   use dx_error, only: error_t, set_error
+   use dx_strings, only: str, upper
+   use dx_deck_cards, only: deck_t, block_t, get_int, get_text, field_error, block_error, &
                             std_widths, data_start
    use dx_deck_registry, only: registry_t
-   use dx_model_input, only: model_input_t, origin, label_list_t, segment_list_t
+   use dx_model_input, only: model_input_t, origin, origin_t, label_list_t, segment_list_t, &
+                             set_gen_in_t, set_step_in_t
+   use dx_label_map, only: label_map_t
    implicit none
    private
-   public :: register_sets
+   public :: register_sets, sets_finish
 
 contains
 
@@ -21,6 +29,11 @@ contains
       call reg%add('SET_NODE_LIST', read_set_list, title=.true.)
       call reg%add('SET_PART_LIST', read_set_list, title=.true.)
       call reg%add('SET_SEGMENT', read_set_segment, title=.true.)
+      call reg%add('SET_NODE', read_set_list, title=.true.)
+      call reg%add('SET_PART', read_set_list, title=.true.)
+      call reg%add('SET_NODE_LIST_GENERATE', read_set_generate, title=.true.)
+      call reg%add('SET_PART_LIST_GENERATE', read_set_generate, title=.true.)
+      call reg%add('SET_NODE_GENERAL', read_set_general, title=.true.)
    end subroutine register_sets
 
    subroutine read_set_list(deck, blk, inp, error)
@@ -34,7 +47,7 @@ contains
       character(:), allocatable :: what
       w = std_widths(blk, 8)
       i0 = data_start(blk)
-      what = merge('NID', 'PID', blk%base == 'SET_NODE_LIST')
+      what = merge('NID', 'PID', is_node_set(blk%base))
       if (blk%n < i0) then
          call block_error(deck, blk, 0, 'missing card 1 (SID DA1 DA2 DA3 DA4 SOLVER)', error)
          return
@@ -64,12 +77,257 @@ contains
       end do
       s%ids = ids(1:n)
       s%src = origin(blk%ifile, blk%cards(i0)%line, blk%name)
-      if (blk%base == 'SET_NODE_LIST') then
+      if (is_node_set(blk%base)) then
          inp%node_sets = [inp%node_sets, s]
       else
          inp%part_sets = [inp%part_sets, s]
       end if
    end subroutine read_set_list
+
+   pure logical function is_node_set(base)
+      character(*), intent(in) :: base
+      is_node_set = base(1:min(8, len(base))) == 'SET_NODE'
+   end function is_node_set
+
+   !> Card 1 SID (DA1..DA4 SOLVER read past); error when missing or SID <= 0.
+   subroutine read_sid(deck, blk, i0, sid, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      integer, intent(in) :: i0
+      integer, intent(out) :: sid
+      type(error_t), allocatable, intent(out) :: error
+      integer :: w(8)
+      w = std_widths(blk, 8)
+      sid = 0
+      if (blk%n < i0) then
+         call block_error(deck, blk, 0, 'missing card 1 (SID DA1 DA2 DA3 DA4 SOLVER)', error)
+         return
+      end if
+      call get_int(deck, blk, i0, 1, w, 'SID', 0, sid, error)
+      if (allocated(error)) return
+      if (sid <= 0) call field_error(deck, blk, i0, 1, w, 'SID', 'set id must be > 0, got '// &
+                                     str(sid), error)
+   end subroutine read_sid
+
+   !> *SET_NODE_LIST_GENERATE / *SET_PART_LIST_GENERATE: B1BEG B1END ... B4BEG B4END.
+   subroutine read_set_generate(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: w(8), i0, ic, k, b, e, n
+      integer, allocatable :: ids(:)
+      type(set_gen_in_t) :: g
+      w = std_widths(blk, 8)
+      i0 = data_start(blk)
+      call read_sid(deck, blk, i0, g%label, error)
+      if (allocated(error)) return
+      allocate(ids(8*(blk%n - i0)))
+      n = 0
+      do ic = i0 + 1, blk%n
+         do k = 1, 7, 2
+            call get_int(deck, blk, ic, k, w, 'B'//str((k+1)/2)//'BEG', 0, b, error)
+            if (allocated(error)) return
+            call get_int(deck, blk, ic, k + 1, w, 'B'//str((k+1)/2)//'END', 0, e, error)
+            if (allocated(error)) return
+            if (b == 0 .and. e == 0) cycle
+            if (b <= 0 .or. e < b) then
+               call field_error(deck, blk, ic, k + 1, w, 'B'//str((k+1)/2)//'END', &
+                  'a range needs 0 < BEG <= END, got '//str(b)//', '//str(e), error)
+               return
+            end if
+            ids(n + 1:n + 2) = [b, e]
+            n = n + 2
+         end do
+      end do
+      g%nodes = is_node_set(blk%base)
+      g%src = origin(blk%ifile, blk%cards(i0)%line, blk%name)
+      allocate(g%steps(1))
+      g%steps(1)%op = 'RANGE'
+      g%steps(1)%ids = ids(1:n)
+      g%steps(1)%src = g%src
+      inp%set_gens = [inp%set_gens, g]
+   end subroutine read_set_generate
+
+   !> *SET_NODE_GENERAL: cards OPTION E1 .. E7 after card 1.
+   subroutine read_set_general(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: w(8), i0, ic, k, n, id
+      integer :: ids(7)
+      character(:), allocatable :: op
+      type(set_gen_in_t) :: g
+      type(set_step_in_t) :: st
+      w = std_widths(blk, 8)
+      i0 = data_start(blk)
+      call read_sid(deck, blk, i0, g%label, error)
+      if (allocated(error)) return
+      allocate(g%steps(0))
+      do ic = i0 + 1, blk%n
+         call get_text(deck, blk, ic, 1, w, op)
+         op = upper(op)
+         select case (op)
+         case ('ALL', 'NODE', 'PART', 'BOX', 'SET', 'DNODE', 'DPART', 'DBOX', 'DSET')
+         case ('')
+            cycle
+         case default
+            call field_error(deck, blk, ic, 1, w, 'OPTION', 'option '''//op//''' is not '// &
+               'supported (supported: ALL, NODE, PART, BOX, SET, DNODE, DPART, DBOX, DSET)', &
+               error)
+            return
+         end select
+         n = 0
+         do k = 2, 8
+            call get_int(deck, blk, ic, k, w, 'E'//str(k - 1), 0, id, error)
+            if (allocated(error)) return
+            if (id < 0) then
+               call field_error(deck, blk, ic, k, w, 'E'//str(k - 1), 'must be >= 0', error)
+               return
+            end if
+            if (id > 0) then
+               n = n + 1
+               ids(n) = id
+            end if
+         end do
+         st%op = op
+         st%ids = ids(1:n)
+         st%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
+         g%steps = [g%steps, st]
+      end do
+      g%nodes = .true.
+      g%src = origin(blk%ifile, blk%cards(i0)%line, blk%name)
+      inp%set_gens = [inp%set_gens, g]
+   end subroutine read_set_general
+
+   !> After the whole deck: each generated set becomes a node or part set list (ids in
+   !> node or part order), its steps applied in card order. An id that names no node,
+   !> part, box or set is an error at its card.
+   subroutine sets_finish(inp, error)
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      type(label_map_t) :: nmap
+      logical, allocatable :: mask(:)
+      integer :: ig, is, i, j, k, e, n
+      type(label_list_t) :: s
+      logical :: add
+      character(:), allocatable :: op
+      if (size(inp%set_gens) == 0) return
+      call nmap%init(inp%nn)
+      do i = 1, inp%nn
+         call nmap%insert(inp%node_label(i), i, j)   ! a duplicate: the build names it
+      end do
+      do ig = 1, size(inp%set_gens)
+         associate (g => inp%set_gens(ig))
+            if (g%nodes) then
+               allocate(mask(inp%nn))
+            else
+               allocate(mask(inp%nparts))
+            end if
+            mask = .false.
+            do is = 1, size(g%steps)
+               associate (st => g%steps(is))
+                  op = trim(st%op)
+                  add = op(1:1) /= 'D'
+                  if (.not. add) op = op(2:)
+                  select case (op)
+                  case ('ALL')
+                     mask = .true.
+                  case ('RANGE')
+                     do k = 1, size(st%ids), 2
+                        if (g%nodes) then
+                           where (inp%node_label(1:inp%nn) >= st%ids(k) .and. &
+                                  inp%node_label(1:inp%nn) <= st%ids(k + 1)) mask = .true.
+                        else
+                           where (inp%parts(1:inp%nparts)%label >= st%ids(k) .and. &
+                                  inp%parts(1:inp%nparts)%label <= st%ids(k + 1)) mask = .true.
+                        end if
+                     end do
+                  case ('NODE')
+                     do k = 1, size(st%ids)
+                        i = nmap%get(st%ids(k))
+                        if (i == 0) then
+                           call fail(st%src, 'NODE: node '//str(st%ids(k))//' is not defined')
+                           return
+                        end if
+                        mask(i) = add
+                     end do
+                  case ('PART')
+                     do k = 1, size(st%ids)
+                        j = findloc(inp%parts(1:inp%nparts)%label, st%ids(k), 1)
+                        if (j == 0) then
+                           call fail(st%src, 'PART: part '//str(st%ids(k))//' is not defined')
+                           return
+                        end if
+                     end do
+                     do e = 1, inp%ne
+                        if (.not. any(st%ids == inp%elem_pid(e))) cycle
+                        do k = 1, size(inp%elem_conn, 1)
+                           i = nmap%get(inp%elem_conn(k, e))
+                           if (i > 0) mask(i) = add
+                        end do
+                     end do
+                  case ('BOX')
+                     do k = 1, size(st%ids)
+                        j = 0
+                        if (allocated(inp%contact%boxes)) &
+                           j = findloc(inp%contact%boxes%label, st%ids(k), 1)
+                        if (j == 0) then
+                           call fail(st%src, 'BOX: box '//str(st%ids(k))//' is not defined '// &
+                                     '(*DEFINE_BOX)')
+                           return
+                        end if
+                        associate (b => inp%contact%boxes(j))
+                           do i = 1, inp%nn
+                              if (all(inp%x(:, i) >= b%lo .and. inp%x(:, i) <= b%hi)) &
+                                 mask(i) = add
+                           end do
+                        end associate
+                     end do
+                  case ('SET')
+                     do k = 1, size(st%ids)
+                        j = 0
+                        do n = size(inp%node_sets), 1, -1
+                           if (inp%node_sets(n)%label == st%ids(k)) then
+                              j = n; exit
+                           end if
+                        end do
+                        if (j == 0) then
+                           call fail(st%src, 'SET: node set '//str(st%ids(k))// &
+                                     ' is not defined (a *SET_NODE before it)')
+                           return
+                        end if
+                        do n = 1, size(inp%node_sets(j)%ids)
+                           i = nmap%get(inp%node_sets(j)%ids(n))
+                           if (i > 0) mask(i) = add
+                        end do
+                     end do
+                  end select
+               end associate
+            end do
+            s%label = g%label
+            s%src = g%src
+            if (g%nodes) then
+               s%ids = pack(inp%node_label(1:inp%nn), mask)
+               inp%node_sets = [inp%node_sets, s]
+            else
+               s%ids = pack(inp%parts(1:inp%nparts)%label, mask)
+               inp%part_sets = [inp%part_sets, s]
+            end if
+            deallocate(mask)
+         end associate
+      end do
+      deallocate(inp%set_gens)
+      allocate(inp%set_gens(0))
+   contains
+      subroutine fail(src, what)
+         type(origin_t), intent(in) :: src
+         character(*), intent(in) :: what
+         call set_error(error, inp%files(src%ifile)%s//':'//str(src%line)//': *'//src%key// &
+                        ': option '//what)
+      end subroutine fail
+   end subroutine sets_finish
 
    subroutine read_set_segment(deck, blk, inp, error)
       type(deck_t), intent(in) :: deck

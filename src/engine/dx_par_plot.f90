@@ -20,6 +20,9 @@ module dx_par_plot
    use dx_io_sys, only: sys_mkdir_p, sys_epoch_seconds
    use dx_plot_hdf5, only: element_average, plot_merge_states
    use dx_plot_part, only: plot_part_t, plot_combine
+   use dx_plot_fields, only: plot_state_t, plot_state_alloc, plot_state_read, field_in_part, &
+                             PLOT_FIELDS, NSTATE_FIELDS, CENTRE_NODE, F_COORD, F_VEL, &
+                             F_STRESS, F_EPSP, F_FAILED
    use dx_plot_cells, only: cells_width, cell_column
    implicit none
    private
@@ -148,9 +151,9 @@ contains
       type(h5_file_t) :: f
       type(error_t), allocatable :: err2
       integer, allocatable :: nodes(:), elems(:)
-      real(wp), allocatable :: buf(:), t(:), x(:, :), v(:, :), stress(:, :), epsp(:)
-      real(wp) :: tk
-      integer :: k, ndisk, nmerged
+      real(wp), allocatable :: t(:)
+      type(plot_state_t) :: st, sp
+      integer :: k, ndisk, nmerged, j
       logical :: there, merge_them
       character(:), allocatable :: gname, h5path
       if (nkeep <= 0) return
@@ -185,38 +188,24 @@ contains
          end if
          do k = 1, nkeep
             gname = state_group(k)
-            call h5_read_attr(f, gname, 'time', tk, error)
+            call plot_state_read(f, gname, pp%m_nn, pp%m_ne, st, 'cannot continue '// &
+                                 h5path//': ', ' (another run''s file?)', error, part=.true.)
             if (allocated(error)) exit work
-            call get(gname//'/coordinates', 3*pp%m_nn)
-            if (allocated(error)) exit work
-            x = reshape(buf, [3, pp%m_nn])
-            call get(gname//'/velocity', 3*pp%m_nn)
-            if (allocated(error)) exit work
-            v = reshape(buf, [3, pp%m_nn])
-            call get(gname//'/stress', 6*pp%m_ne)
-            if (allocated(error)) exit work
-            stress = reshape(buf, [6, pp%m_ne])
-            call get(gname//'/eff_plastic_strain', pp%m_ne)
-            if (allocated(error)) exit work
-            epsp = buf
-            call get(gname//'/failed', pp%m_ne)
-            if (allocated(error)) exit work
-            call pp%part%write_state(tk, x(:, nodes), v(:, nodes), stress(:, elems), &
-                                  epsp(elems), nint(buf(elems)), error)
+            ! this rank's nodes and elements of each part field of the schema
+            sp%time = st%time
+            do j = 1, NSTATE_FIELDS
+               if (.not. field_in_part(j)) cycle
+               if (PLOT_FIELDS(j)%centre == CENTRE_NODE) then
+                  sp%f(j)%r = st%f(j)%r(:, nodes)
+               else
+                  sp%f(j)%r = st%f(j)%r(:, elems)
+               end if
+            end do
+            call pp%part%write_state(sp, error)
             if (allocated(error)) exit work
          end do
       end block work
       call h5_close(f, err2)
-   contains
-      subroutine get(path, n)
-         character(*), intent(in) :: path
-         integer, intent(in) :: n
-         call h5_read(f, path, buf, error)
-         if (allocated(error)) return
-         if (size(buf) /= n) call set_error(error, 'cannot continue '//h5path//': '// &
-            path//' has '//str(size(buf))//' values, expected '//str(n)// &
-            ' (another run''s file?)', EXIT_IO)
-      end subroutine get
    end subroutine par_plot_from_serial
 
    !> Append the rank's part of the plot state at model%time (no communication).
@@ -224,21 +213,24 @@ contains
       type(par_plot_t), intent(inout) :: pp
       type(model_t), intent(in) :: model
       type(error_t), allocatable, intent(out) :: error
-      real(wp), allocatable :: stress(:, :), epsp(:)
-      integer, allocatable :: failed(:)
-      integer :: i, b
+      type(plot_state_t) :: st
+      integer :: i, b, fl
       if (.not. pp%part%active) then
          call create_part(pp, error)
          if (allocated(error)) return
       end if
-      allocate(stress(6, size(pp%eloc, 2)), epsp(size(pp%eloc, 2)), failed(size(pp%eloc, 2)))
+      ! the schema's part fields (dx_plot_fields): nodal, then element averages
+      call plot_state_alloc(st, size(pp%own), size(pp%eloc, 2), part=.true.)
+      st%time = model%time
+      st%f(F_COORD)%r = model%x(:, pp%own)
+      st%f(F_VEL)%r = model%v(:, pp%own)
       do i = 1, size(pp%eloc, 2)
          b = pp%eloc(1, i)
-         call element_average(model%blocks(b), pp%eloc(2, i), pp%khv(b), stress(:, i), epsp(i), &
-                              failed(i))
+         call element_average(model%blocks(b), pp%eloc(2, i), pp%khv(b), st%f(F_STRESS)%r(:, i), &
+                              st%f(F_EPSP)%r(1, i), fl)
+         st%f(F_FAILED)%r(1, i) = real(fl, wp)
       end do
-      call pp%part%write_state(model%time, model%x(:, pp%own), model%v(:, pp%own), stress, epsp, &
-                            failed, error)
+      call pp%part%write_state(st, error)
    end subroutine par_plot_write
 
    !> States this rank's part holds.

@@ -8,6 +8,7 @@
 !> No module state. Reference: The HDF Group, HDF5 Reference Manual (H5D, H5S, H5L).
 module dx_h5
    use hdf5
+   use, intrinsic :: iso_c_binding, only: c_ptr, c_loc
    use dx_kinds, only: wp, i8
    use dx_error, only: error_t
    use dx_h5_file, only: h5_file_t, h5_create, h5_open_read, h5_close, h5_flush, &
@@ -38,11 +39,8 @@ contains
       integer(hid_t) :: dset
       integer(hsize_t) :: dims(1)
       integer :: ierr
-      call h5dopen_f(f%id, path, dset, ierr)
-      if (ierr < 0) then
-         call fail(f, error, 'open dataset', path)
-         return
-      end if
+      call open_dataset(f, path, dset, error)
+      if (allocated(error)) return
       dims(1) = int(n, hsize_t)
       call h5dset_extent_f(dset, dims, ierr)
       if (ierr < 0) call fail(f, error, 'set the extent of', path)
@@ -93,69 +91,98 @@ contains
       if (ierr < 0 .and. .not. allocated(error)) call fail(f, error, 'close dataset', path)
    end subroutine close_dataset
 
+   !> Open dataset path (dset = -1 and an error on failure).
+   subroutine open_dataset(f, path, dset, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      integer(hid_t), intent(out) :: dset
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ierr
+      call h5dopen_f(f%id, path, dset, ierr)
+      if (ierr < 0) then
+         dset = -1
+         call fail(f, error, 'open dataset', path)
+      end if
+   end subroutine open_dataset
+
+   !> The dataspace of an open dataset (space = -1 and an error "what path" on failure).
+   subroutine dataset_space(f, path, dset, what, space, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path, what
+      integer(hid_t), intent(in) :: dset
+      integer(hid_t), intent(out) :: space
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ierr
+      call h5dget_space_f(dset, space, ierr)
+      if (ierr < 0) then
+         space = -1
+         call fail(f, error, what, path)
+      end if
+   end subroutine dataset_space
+
+   !> Close a dataspace if open; report a failure only if no earlier error is pending.
+   subroutine close_space(f, path, space, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      integer(hid_t), intent(inout) :: space
+      type(error_t), allocatable, intent(inout) :: error
+      integer :: ierr
+      if (space < 0) return
+      call h5sclose_f(space, ierr)
+      space = -1
+      if (ierr < 0 .and. .not. allocated(error)) call fail(f, error, 'close space of', path)
+   end subroutine close_space
+
+   !> The typed writers of h5_write: one dataset of the array's shape, through write_data.
    subroutine write_r1(f, path, a, error)
       type(h5_file_t), intent(in) :: f
       character(*), intent(in) :: path
-      real(wp), intent(in) :: a(:)
+      real(wp), intent(in), target, contiguous :: a(:)
       type(error_t), allocatable, intent(out) :: error
-      integer(hid_t) :: dset
-      integer(hsize_t) :: dims(1)
-      integer :: ierr
-      dims = shape(a, kind=hsize_t)
-      call create_dataset(f, path, H5T_NATIVE_DOUBLE, dims, dset, error)
-      if (allocated(error)) return
-      call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, a, dims, ierr)
-      if (ierr < 0) call fail(f, error, 'write dataset', path)
-      call close_dataset(f, path, dset, error)
+      call write_data(f, path, H5T_NATIVE_DOUBLE, shape(a, kind=hsize_t), c_loc(a), error)
    end subroutine write_r1
 
    subroutine write_r2(f, path, a, error)
       type(h5_file_t), intent(in) :: f
       character(*), intent(in) :: path
-      real(wp), intent(in) :: a(:, :)
+      real(wp), intent(in), target, contiguous :: a(:, :)
       type(error_t), allocatable, intent(out) :: error
-      integer(hid_t) :: dset
-      integer(hsize_t) :: dims(2)
-      integer :: ierr
-      dims = shape(a, kind=hsize_t)
-      call create_dataset(f, path, H5T_NATIVE_DOUBLE, dims, dset, error)
-      if (allocated(error)) return
-      call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, a, dims, ierr)
-      if (ierr < 0) call fail(f, error, 'write dataset', path)
-      call close_dataset(f, path, dset, error)
+      call write_data(f, path, H5T_NATIVE_DOUBLE, shape(a, kind=hsize_t), c_loc(a), error)
    end subroutine write_r2
 
    subroutine write_i1(f, path, a, error)
       type(h5_file_t), intent(in) :: f
       character(*), intent(in) :: path
-      integer, intent(in) :: a(:)
+      integer, intent(in), target, contiguous :: a(:)
       type(error_t), allocatable, intent(out) :: error
-      integer(hid_t) :: dset
-      integer(hsize_t) :: dims(1)
-      integer :: ierr
-      dims = shape(a, kind=hsize_t)
-      call create_dataset(f, path, H5T_NATIVE_INTEGER, dims, dset, error)
-      if (allocated(error)) return
-      call h5dwrite_f(dset, H5T_NATIVE_INTEGER, a, dims, ierr)
-      if (ierr < 0) call fail(f, error, 'write dataset', path)
-      call close_dataset(f, path, dset, error)
+      call write_data(f, path, H5T_NATIVE_INTEGER, shape(a, kind=hsize_t), c_loc(a), error)
    end subroutine write_i1
 
    subroutine write_i2(f, path, a, error)
       type(h5_file_t), intent(in) :: f
       character(*), intent(in) :: path
-      integer, intent(in) :: a(:, :)
+      integer, intent(in), target, contiguous :: a(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      call write_data(f, path, H5T_NATIVE_INTEGER, shape(a, kind=hsize_t), c_loc(a), error)
+   end subroutine write_i2
+
+   !> Create dataset path of type dtype and shape dims and write the contiguous buffer buf
+   !> (memory type dtype) into it.
+   subroutine write_data(f, path, dtype, dims, buf, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: path
+      integer(hid_t), intent(in) :: dtype
+      integer(hsize_t), intent(in) :: dims(:)
+      type(c_ptr), intent(in) :: buf
       type(error_t), allocatable, intent(out) :: error
       integer(hid_t) :: dset
-      integer(hsize_t) :: dims(2)
       integer :: ierr
-      dims = shape(a, kind=hsize_t)
-      call create_dataset(f, path, H5T_NATIVE_INTEGER, dims, dset, error)
+      call create_dataset(f, path, dtype, dims, dset, error)
       if (allocated(error)) return
-      call h5dwrite_f(dset, H5T_NATIVE_INTEGER, a, dims, ierr)
+      call h5dwrite_f(dset, dtype, buf, ierr)
       if (ierr < 0) call fail(f, error, 'write dataset', path)
       call close_dataset(f, path, dset, error)
-   end subroutine write_i2
+   end subroutine write_data
 
    !> Create an empty, extendible (unlimited, chunked) 1-D float64 dataset.
    subroutine h5_create_extendible(f, path, error)
@@ -200,10 +227,7 @@ contains
          call h5pclose_f(plist, ierr)
          if (ierr < 0 .and. .not. allocated(error)) call fail(f, error, 'close plist of', path)
       end if
-      if (space >= 0) then
-         call h5sclose_f(space, ierr)
-         if (ierr < 0 .and. .not. allocated(error)) call fail(f, error, 'close space of', path)
-      end if
+      call close_space(f, path, space, error)
    end subroutine h5_create_extendible
 
    !> Append one value to an extendible 1-D float64 dataset; n returns its new length.
@@ -221,18 +245,10 @@ contains
       n = 0
       buf(1) = val
       work: block
-         call h5dopen_f(f%id, path, dset, ierr)
-         if (ierr < 0) then
-            dset = -1
-            call fail(f, error, 'open dataset', path)
-            exit work
-         end if
-         call h5dget_space_f(dset, fspace, ierr)
-         if (ierr < 0) then
-            fspace = -1
-            call fail(f, error, 'get dataspace of', path)
-            exit work
-         end if
+         call open_dataset(f, path, dset, error)
+         if (allocated(error)) exit work
+         call dataset_space(f, path, dset, 'get dataspace of', fspace, error)
+         if (allocated(error)) exit work
          call h5sget_simple_extent_dims_f(fspace, dims, maxdims, ierr)
          if (ierr < 0) then
             call fail(f, error, 'get extent of', path)
@@ -251,12 +267,8 @@ contains
             call fail(f, error, 'extend dataset', path)
             exit work
          end if
-         call h5dget_space_f(dset, fspace, ierr)
-         if (ierr < 0) then
-            fspace = -1
-            call fail(f, error, 'get extended dataspace of', path)
-            exit work
-         end if
+         call dataset_space(f, path, dset, 'get extended dataspace of', fspace, error)
+         if (allocated(error)) exit work
          count = 1
          call h5sselect_hyperslab_f(fspace, H5S_SELECT_SET_F, start, count, ierr)
          if (ierr < 0) then
@@ -276,14 +288,8 @@ contains
          end if
          n = int(dims(1))
       end block work
-      if (mspace >= 0) then
-         call h5sclose_f(mspace, ierr)
-         if (ierr < 0 .and. .not. allocated(error)) call fail(f, error, 'close space of', path)
-      end if
-      if (fspace >= 0) then
-         call h5sclose_f(fspace, ierr)
-         if (ierr < 0 .and. .not. allocated(error)) call fail(f, error, 'close space of', path)
-      end if
+      call close_space(f, path, mspace, error)
+      call close_space(f, path, fspace, error)
       call close_dataset(f, path, dset, error)
    end subroutine h5_append
 
@@ -321,18 +327,10 @@ contains
       integer :: ierr, rank
       dset = -1; space = -1
       work: block
-         call h5dopen_f(f%id, path, dset, ierr)
-         if (ierr < 0) then
-            dset = -1
-            call fail(f, error, 'open dataset', path)
-            exit work
-         end if
-         call h5dget_space_f(dset, space, ierr)
-         if (ierr < 0) then
-            space = -1
-            call fail(f, error, 'get dataspace of', path)
-            exit work
-         end if
+         call open_dataset(f, path, dset, error)
+         if (allocated(error)) exit work
+         call dataset_space(f, path, dset, 'get dataspace of', space, error)
+         if (allocated(error)) exit work
          call h5sget_simple_extent_ndims_f(space, rank, ierr)
          if (ierr < 0) then
             call fail(f, error, 'get rank of', path)
@@ -348,10 +346,7 @@ contains
          end if
          dims = int(d, i8)
       end block work
-      if (space >= 0) then
-         call h5sclose_f(space, ierr)
-         if (ierr < 0 .and. .not. allocated(error)) call fail(f, error, 'close space of', path)
-      end if
+      call close_space(f, path, space, error)
       call close_dataset(f, path, dset, error)
    end subroutine h5_dims
 
@@ -370,11 +365,8 @@ contains
       n(1) = int(product(dims), hsize_t)
       allocate(buf(n(1)))
       if (n(1) == 0) return
-      call h5dopen_f(f%id, path, dset, ierr)
-      if (ierr < 0) then
-         call fail(f, error, 'open dataset', path)
-         return
-      end if
+      call open_dataset(f, path, dset, error)
+      if (allocated(error)) return
       call h5dread_f(dset, H5T_NATIVE_DOUBLE, buf, n, ierr)
       if (ierr < 0) call fail(f, error, 'read dataset', path)
       call close_dataset(f, path, dset, error)

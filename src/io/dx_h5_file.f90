@@ -10,7 +10,7 @@
 !> Reference: The HDF Group, HDF5 Reference Manual (H5F, H5G, H5O, H5A).
 module dx_h5_file
    use hdf5
-   use, intrinsic :: iso_c_binding, only: c_int
+   use, intrinsic :: iso_c_binding, only: c_int, c_ptr, c_loc
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_IO
    use dx_io_sys, only: sys_io_reason, sys_need_regular
@@ -99,29 +99,23 @@ contains
       type(h5_file_t), intent(inout) :: f
       character(*), intent(in) :: path
       type(error_t), allocatable, intent(out) :: error
-      integer :: ierr
-      logical :: there
-      call lib_init(error)
-      if (allocated(error)) return
-      f%name = path
-      inquire(file=path, exist=there)
-      if (.not. there) then
-         call set_error(error, 'cannot open '//path//': no such file', EXIT_IO)
-         return
-      end if
-      call sys_need_regular(path, path, error)   ! a FIFO would hang the open: exit 2
-      if (allocated(error)) return
-      call h5fopen_f(path, H5F_ACC_RDONLY_F, f%id, ierr)
-      if (ierr < 0) then
-         f%id = -1
-         call h5_fail(f, error, 'open file (not an HDF5 file?)', path)
-      end if
+      call open_existing(f, path, H5F_ACC_RDONLY_F, 'open file (not an HDF5 file?)', error)
    end subroutine h5_open_read
 
    !> Open an existing file for reading and writing (a restart appends to the plot file).
    subroutine h5_open_rw(f, path, error)
       type(h5_file_t), intent(inout) :: f
       character(*), intent(in) :: path
+      type(error_t), allocatable, intent(out) :: error
+      call open_existing(f, path, H5F_ACC_RDWR_F, &
+                         'open file for writing (not an HDF5 file, or damaged?)', error)
+   end subroutine h5_open_rw
+
+   !> Open an existing regular file with access flags acc; what names the failure.
+   subroutine open_existing(f, path, acc, what, error)
+      type(h5_file_t), intent(inout) :: f
+      character(*), intent(in) :: path, what
+      integer, intent(in) :: acc
       type(error_t), allocatable, intent(out) :: error
       integer :: ierr
       logical :: there
@@ -135,12 +129,12 @@ contains
       end if
       call sys_need_regular(path, path, error)   ! a FIFO would hang the open: exit 2
       if (allocated(error)) return
-      call h5fopen_f(path, H5F_ACC_RDWR_F, f%id, ierr)
+      call h5fopen_f(path, acc, f%id, ierr)
       if (ierr < 0) then
          f%id = -1
-         call h5_fail(f, error, 'open file for writing (not an HDF5 file, or damaged?)', path)
+         call h5_fail(f, error, what, path)
       end if
-   end subroutine h5_open_rw
+   end subroutine open_existing
 
    !> Remove the link path (a group or dataset) from the file.
    subroutine h5_delete(f, path, error)
@@ -282,41 +276,83 @@ contains
    subroutine attr_write_real(f, objpath, name, val, error)
       type(h5_file_t), intent(in) :: f
       character(*), intent(in) :: objpath, name
-      real(wp), intent(in) :: val
+      real(wp), intent(in), target :: val
       type(error_t), allocatable, intent(out) :: error
-      integer(hid_t) :: obj, attr
-      integer(hsize_t) :: dims(1) = [1]
-      integer :: ierr
-      call open_object(f, objpath, obj, error)
-      if (allocated(error)) return
-      call open_attr_for_write(f, obj, objpath, name, H5T_NATIVE_DOUBLE, .false., attr, error)
-      if (.not. allocated(error)) then
-         call h5awrite_f(attr, H5T_NATIVE_DOUBLE, val, dims, ierr)
-         if (ierr < 0) call h5_fail(f, error, 'write attribute '//name//' of', objpath)
-      end if
-      call close_attr(f, objpath, name, attr, error)
-      call close_object(f, objpath, obj, error)
+      call attr_scalar_io(f, objpath, name, H5T_NATIVE_DOUBLE, c_loc(val), .true., error)
    end subroutine attr_write_real
 
    !> Set (create or overwrite) a scalar integer attribute of the object at objpath.
    subroutine attr_write_int(f, objpath, name, val, error)
       type(h5_file_t), intent(in) :: f
       character(*), intent(in) :: objpath, name
-      integer, intent(in) :: val
+      integer, intent(in), target :: val
+      type(error_t), allocatable, intent(out) :: error
+      call attr_scalar_io(f, objpath, name, H5T_NATIVE_INTEGER, c_loc(val), .true., error)
+   end subroutine attr_write_int
+
+   !> Write (put) or read the scalar attribute name of the object at objpath, memory type
+   !> dtype, value at buf; written attributes are created when absent.
+   subroutine attr_scalar_io(f, objpath, name, dtype, buf, put, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: objpath, name
+      integer(hid_t), intent(in) :: dtype
+      type(c_ptr), intent(in) :: buf
+      logical, intent(in) :: put
       type(error_t), allocatable, intent(out) :: error
       integer(hid_t) :: obj, attr
-      integer(hsize_t) :: dims(1) = [1]
+      type(c_ptr) :: p
       integer :: ierr
-      call open_object(f, objpath, obj, error)
-      if (allocated(error)) return
-      call open_attr_for_write(f, obj, objpath, name, H5T_NATIVE_INTEGER, .false., attr, error)
-      if (.not. allocated(error)) then
-         call h5awrite_f(attr, H5T_NATIVE_INTEGER, val, dims, ierr)
-         if (ierr < 0) call h5_fail(f, error, 'write attribute '//name//' of', objpath)
+      if (put) then
+         call open_object(f, objpath, obj, error)
+         if (allocated(error)) return
+         call open_attr_for_write(f, obj, objpath, name, dtype, .false., attr, error)
+         if (.not. allocated(error)) then
+            call h5awrite_f(attr, dtype, buf, ierr)
+            if (ierr < 0) call h5_fail(f, error, 'write attribute '//name//' of', objpath)
+         end if
+      else
+         call open_attr_read(f, objpath, name, obj, attr, error)
+         if (allocated(error)) return
+         p = buf                    ! the HDF5 binding takes it intent(inout)
+         call h5aread_f(attr, dtype, p, ierr)
+         if (ierr < 0) call h5_fail(f, error, 'read attribute '//name//' of', objpath)
       end if
       call close_attr(f, objpath, name, attr, error)
       call close_object(f, objpath, obj, error)
-   end subroutine attr_write_int
+   end subroutine attr_scalar_io
+
+   !> A copy of the native character type of n bytes for attribute name (stype < 0 and an
+   !> error on failure).
+   subroutine string_type(f, objpath, name, n, stype, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: objpath, name
+      integer(size_t), intent(in) :: n
+      integer(hid_t), intent(out) :: stype
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ierr
+      call h5tcopy_f(H5T_NATIVE_CHARACTER, stype, ierr)
+      if (ierr < 0) then
+         stype = -1
+         call h5_fail(f, error, 'copy string type for attribute '//name//' of', objpath)
+         return
+      end if
+      call h5tset_size_f(stype, n, ierr)
+      if (ierr < 0) call h5_fail(f, error, 'set string size for attribute '//name//' of', objpath)
+   end subroutine string_type
+
+   !> Close a string type of string_type if open (an error only if none is pending).
+   subroutine close_string_type(f, objpath, name, stype, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: objpath, name
+      integer(hid_t), intent(inout) :: stype
+      type(error_t), allocatable, intent(inout) :: error
+      integer :: ierr
+      if (stype < 0) return
+      call h5tclose_f(stype, ierr)
+      stype = -1
+      if (ierr < 0 .and. .not. allocated(error)) &
+         call h5_fail(f, error, 'close string type of attribute '//name//' of', objpath)
+   end subroutine close_string_type
 
    !> Set a fixed-length string attribute (at least one character) of the object at objpath.
    subroutine attr_write_str(f, objpath, name, val, error)
@@ -326,20 +362,13 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer(hid_t) :: obj, attr, stype
       integer(hsize_t) :: dims(1) = [1]
-      integer :: ierr, ierr2
+      integer :: ierr
       character(len=max(1, len(val))) :: buf
       buf = val
       call open_object(f, objpath, obj, error)
       if (allocated(error)) return
       attr = -1
-      call h5tcopy_f(H5T_NATIVE_CHARACTER, stype, ierr)
-      if (ierr < 0) then
-         call h5_fail(f, error, 'copy string type for attribute '//name//' of', objpath)
-         call close_object(f, objpath, obj, error)
-         return
-      end if
-      call h5tset_size_f(stype, int(len(buf), size_t), ierr)
-      if (ierr < 0) call h5_fail(f, error, 'set string size for attribute '//name//' of', objpath)
+      call string_type(f, objpath, name, int(len(buf), size_t), stype, error)
       if (.not. allocated(error)) then
          call open_attr_for_write(f, obj, objpath, name, stype, .true., attr, error)
       end if
@@ -348,10 +377,7 @@ contains
          if (ierr < 0) call h5_fail(f, error, 'write attribute '//name//' of', objpath)
       end if
       call close_attr(f, objpath, name, attr, error)
-      call h5tclose_f(stype, ierr2)
-      if (ierr2 < 0 .and. .not. allocated(error)) then
-         call h5_fail(f, error, 'close string type of attribute '//name//' of', objpath)
-      end if
+      call close_string_type(f, objpath, name, stype, error)
       call close_object(f, objpath, obj, error)
    end subroutine attr_write_str
 
@@ -376,35 +402,19 @@ contains
    subroutine attr_read_real(f, objpath, name, val, error)
       type(h5_file_t), intent(in) :: f
       character(*), intent(in) :: objpath, name
-      real(wp), intent(out) :: val
+      real(wp), intent(out), target :: val
       type(error_t), allocatable, intent(out) :: error
-      integer(hid_t) :: obj, attr
-      integer(hsize_t) :: dims(1) = [1]
-      integer :: ierr
       val = 0.0_wp
-      call open_attr_read(f, objpath, name, obj, attr, error)
-      if (allocated(error)) return
-      call h5aread_f(attr, H5T_NATIVE_DOUBLE, val, dims, ierr)
-      if (ierr < 0) call h5_fail(f, error, 'read attribute '//name//' of', objpath)
-      call close_attr(f, objpath, name, attr, error)
-      call close_object(f, objpath, obj, error)
+      call attr_scalar_io(f, objpath, name, H5T_NATIVE_DOUBLE, c_loc(val), .false., error)
    end subroutine attr_read_real
 
    subroutine attr_read_int(f, objpath, name, val, error)
       type(h5_file_t), intent(in) :: f
       character(*), intent(in) :: objpath, name
-      integer, intent(out) :: val
+      integer, intent(out), target :: val
       type(error_t), allocatable, intent(out) :: error
-      integer(hid_t) :: obj, attr
-      integer(hsize_t) :: dims(1) = [1]
-      integer :: ierr
       val = 0
-      call open_attr_read(f, objpath, name, obj, attr, error)
-      if (allocated(error)) return
-      call h5aread_f(attr, H5T_NATIVE_INTEGER, val, dims, ierr)
-      if (ierr < 0) call h5_fail(f, error, 'read attribute '//name//' of', objpath)
-      call close_attr(f, objpath, name, attr, error)
-      call close_object(f, objpath, obj, error)
+      call attr_scalar_io(f, objpath, name, H5T_NATIVE_INTEGER, c_loc(val), .false., error)
    end subroutine attr_read_int
 
    !> Read a fixed-length string attribute (as written by h5_write_attr) of objpath.
@@ -433,17 +443,8 @@ contains
             call h5_fail(f, error, 'get size of attribute '//name//' of', objpath)
             exit work
          end if
-         call h5tcopy_f(H5T_NATIVE_CHARACTER, stype, ierr)
-         if (ierr < 0) then
-            stype = -1
-            call h5_fail(f, error, 'copy string type for attribute '//name//' of', objpath)
-            exit work
-         end if
-         call h5tset_size_f(stype, n, ierr)
-         if (ierr < 0) then
-            call h5_fail(f, error, 'set string size for attribute '//name//' of', objpath)
-            exit work
-         end if
+         call string_type(f, objpath, name, n, stype, error)
+         if (allocated(error)) exit work
          block
             character(len=n) :: buf
             call h5aread_f(attr, stype, buf, dims, ierr)
@@ -454,11 +455,7 @@ contains
             val = buf
          end block
       end block work
-      if (stype >= 0) then
-         call h5tclose_f(stype, ierr2)
-         if (ierr2 < 0 .and. .not. allocated(error)) &
-            call h5_fail(f, error, 'close string type of attribute '//name//' of', objpath)
-      end if
+      call close_string_type(f, objpath, name, stype, error)
       call close_attr(f, objpath, name, attr, error)
       call close_object(f, objpath, obj, error)
    end subroutine attr_read_str

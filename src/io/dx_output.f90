@@ -41,31 +41,7 @@ contains
       type(model_t), intent(in) :: model
       character(*), intent(in) :: dir
       type(error_t), allocatable, intent(out) :: error
-      type(error_t), allocatable :: err2
-      character(:), allocatable :: title
-      logical :: nodes
-
-      self%dir = trim(dir)
-      self%nplot = 0
-      title = ''
-      if (allocated(model%title)) title = model%title
-      call sys_mkdir_p(self%dir, error)
-      if (allocated(error)) return
-
-      call self%plot%open(model, self%dir, error)
-      if (allocated(error)) return
-
-      self%glstat_on = model%db%glstat_dt > 0
-      if (self%glstat_on) then
-         call self%glstat%open(self%dir//'/glstat', 'glstat', title, GLSTAT_COLUMNS, error)
-      end if
-      nodes = .false.
-      if (allocated(model%db%hist_nodes)) nodes = size(model%db%hist_nodes) > 0
-      self%nodout_on = model%db%nodout_dt > 0 .and. nodes
-      if (self%nodout_on .and. .not. allocated(error)) then
-         call self%nodout%open(self%dir//'/nodout', 'nodout', title, NODOUT_COLUMNS, error)
-      end if
-      if (allocated(error)) call self%close(err2)   ! keep the first error
+      call output_start(self, model, dir, .false., error)
    end subroutine output_open
 
    !> Reopen the files of an interrupted run in dir at the restart point recorded in
@@ -76,27 +52,55 @@ contains
       type(model_t), intent(in) :: model
       character(*), intent(in) :: dir
       type(error_t), allocatable, intent(out) :: error
+      call output_start(self, model, dir, .true., error)
+   end subroutine output_resume
+
+   !> output_open (resume = .false.) and output_resume (.true.): the same files, each
+   !> started anew or continued at the restart point.
+   subroutine output_start(self, model, dir, resume, error)
+      class(output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      character(*), intent(in) :: dir
+      logical, intent(in) :: resume
+      type(error_t), allocatable, intent(out) :: error
       type(error_t), allocatable :: err2
       character(:), allocatable :: title
       logical :: nodes
+
       self%dir = trim(dir)
+      self%nplot = 0
       title = ''
       if (allocated(model%title)) title = model%title
       call sys_mkdir_p(self%dir, error)
       if (allocated(error)) return
-      call self%plot%resume(model, self%dir, model%run%nplot, error)
+      if (resume) then
+         call self%plot%resume(model, self%dir, model%run%nplot, error)
+         self%nplot = self%plot%nstates
+      else
+         call self%plot%open(model, self%dir, error)
+      end if
       if (allocated(error)) return
-      self%nplot = self%plot%nstates
+
       self%glstat_on = model%db%glstat_dt > 0
-      if (self%glstat_on) call self%glstat%resume(self%dir//'/glstat', 'glstat', title, &
-                                                  GLSTAT_COLUMNS, model%run%glstat_bytes, error)
+      if (self%glstat_on .and. resume) then
+         call self%glstat%resume(self%dir//'/glstat', 'glstat', title, GLSTAT_COLUMNS, &
+                                 model%run%glstat_bytes, error)
+      else if (self%glstat_on) then
+         call self%glstat%open(self%dir//'/glstat', 'glstat', title, GLSTAT_COLUMNS, error)
+      end if
       nodes = .false.
       if (allocated(model%db%hist_nodes)) nodes = size(model%db%hist_nodes) > 0
       self%nodout_on = model%db%nodout_dt > 0 .and. nodes
-      if (self%nodout_on .and. .not. allocated(error)) call self%nodout%resume( &
-         self%dir//'/nodout', 'nodout', title, NODOUT_COLUMNS, model%run%nodout_bytes, error)
-      if (allocated(error)) call self%close(err2)
-   end subroutine output_resume
+      if (self%nodout_on .and. .not. allocated(error)) then
+         if (resume) then
+            call self%nodout%resume(self%dir//'/nodout', 'nodout', title, NODOUT_COLUMNS, &
+                                    model%run%nodout_bytes, error)
+         else
+            call self%nodout%open(self%dir//'/nodout', 'nodout', title, NODOUT_COLUMNS, error)
+         end if
+      end if
+      if (allocated(error)) call self%close(err2)   ! keep the first error
+   end subroutine output_start
 
    !> What a restart dump records about the output: plot states, glstat and nodout bytes.
    subroutine output_sizes(self, nplot, glstat_bytes, nodout_bytes)

@@ -27,7 +27,10 @@ module dx_plot_hdf5
    use dx_plot_states, only: STATES_DIR, state_file, states_write_mesh, states_write_state, &
                              states_have, states_clear, states_remove_all, file_remove
    use dx_io_sys, only: sys_fsync
-   use dx_plot_cells, only: cell_topo_t, model_cells, cells_topology, write_cells, read_cells
+   use dx_plot_cells, only: cell_topo_t, model_cells, cells_topology, read_cells
+   use dx_plot_fields, only: plot_state_t, plot_state_alloc, plot_state_derive, plot_state_write, &
+                             plot_state_read, plot_mesh_write, plot_mesh_read, stress_invariants, F_COORD, F_VEL, &
+                             F_STRESS, F_EPSP, F_FAILED
    implicit none
    private
    public :: plot_file_t, element_results, stress_invariants, element_average, &
@@ -116,19 +119,7 @@ contains
       if (allocated(error)) return
 
       work: block
-         call h5_create_group(self%h5, '/mesh', error)
-         if (allocated(error)) exit work
-         call h5_write(self%h5, '/mesh/coordinates', x0, error)
-         if (allocated(error)) exit work
-         call h5_write(self%h5, '/mesh/node_ids', nlab, error)
-         if (allocated(error)) exit work
-         call write_cells(self%h5, cells, error)
-         if (allocated(error)) exit work
-         call h5_write(self%h5, '/mesh/element_ids', elab, error)
-         if (allocated(error)) exit work
-         call h5_write(self%h5, '/mesh/part_ids', ids, error)
-         if (allocated(error)) exit work
-         call h5_write_attr(self%h5, '/', 'title', self%title, error)
+         call plot_mesh_write(self%h5, x0, nlab, cells, elab, ids, self%title, error)
          if (allocated(error)) exit work
          call h5_write_attr(self%h5, '/', 'nstates', 0, error)
          if (allocated(error)) exit work
@@ -172,10 +163,9 @@ contains
       type(plot_file_t) :: self
       type(h5_file_t) :: f
       type(error_t), allocatable :: err2
-      real(wp), allocatable :: x0(:), nlab(:), elab(:), ids(:), x(:), d(:), v(:), &
-                               stress(:), vm(:), pres(:), epsp(:), b(:)
-      character(:), allocatable :: title, src, g
-      real(wp) :: tk
+      real(wp), allocatable :: x0(:), nlab(:), elab(:), ids(:), x(:)
+      type(plot_state_t) :: st
+      character(:), allocatable :: title, src
       integer :: k, nn, ne
       integer, allocatable :: cells(:, :)
       logical :: there
@@ -189,16 +179,19 @@ contains
          if (allocated(error)) return
          call h5_read_attr(f, '/', 'nstates', nmerged, error)
          if (.not. allocated(error)) call h5_read(f, '/states/times', x, error)
-         if (.not. allocated(error)) call h5_read(f, '/mesh/node_ids', nlab, error)
-         if (.not. allocated(error)) call h5_read(f, '/mesh/part_ids', ids, error)
-         if (.not. allocated(error)) call read_cells(f, size(ids), cells, error)
-         if (.not. allocated(error)) call h5_read_attr(f, '/', 'title', title, error)
-         if (allocated(error)) then
-            call h5_close(f, err2)
-            return
-         end if
-         call h5_close(f, error)
+      else
+         src = dir//'/'//state_file(0)
+         call h5_open_read(f, src, error)
          if (allocated(error)) return
+      end if
+      if (.not. allocated(error)) call plot_mesh_read(f, x0, nlab, cells, elab, ids, title, error)
+      if (allocated(error)) then
+         call h5_close(f, err2)
+         return
+      end if
+      call h5_close(f, error)
+      if (allocated(error)) return
+      if (there) then
          if (size(x) < nmerged) then
             call set_error(error, src//': /states/times has '//str(size(x))// &
                            ' values, nstates is '//str(nmerged), EXIT_IO)
@@ -211,21 +204,6 @@ contains
          call states_remove_all(dir)
          return
       end if
-      src = dir//'/'//state_file(0)
-      call h5_open_read(f, src, error)
-      if (allocated(error)) return
-      call h5_read(f, '/mesh/coordinates', x0, error)
-      if (.not. allocated(error)) call h5_read(f, '/mesh/node_ids', nlab, error)
-      if (.not. allocated(error)) call h5_read(f, '/mesh/element_ids', elab, error)
-      if (.not. allocated(error)) call h5_read(f, '/mesh/part_ids', ids, error)
-      if (.not. allocated(error)) call read_cells(f, size(ids), cells, error)
-      if (.not. allocated(error)) call h5_read_attr(f, '/', 'title', title, error)
-      if (allocated(error)) then
-         call h5_close(f, err2)
-         return
-      end if
-      call h5_close(f, error)
-      if (allocated(error)) return
       nn = size(nlab)
       ne = size(ids)
       if (size(x0) /= 3*nn .or. size(elab) /= ne) then
@@ -239,24 +217,13 @@ contains
          src = dir//'/'//state_file(k)
          inquire(file=src, exist=there)
          if (.not. there) exit
-         g = state_group(k)
          call h5_open_read(f, src, error)
          if (allocated(error)) exit
-         call h5_read_attr(f, g, 'time', tk, error)
-         if (.not. allocated(error)) call get(g//'/coordinates', 3*nn, x)
-         if (.not. allocated(error)) call get(g//'/displacement', 3*nn, d)
-         if (.not. allocated(error)) call get(g//'/velocity', 3*nn, v)
-         if (.not. allocated(error)) call get(g//'/stress', 6*ne, stress)
-         if (.not. allocated(error)) call get(g//'/von_mises', ne, vm)
-         if (.not. allocated(error)) call get(g//'/pressure', ne, pres)
-         if (.not. allocated(error)) call get(g//'/eff_plastic_strain', ne, epsp)
-         if (.not. allocated(error)) call get(g//'/failed', ne, b)
+         call plot_state_read(f, state_group(k), nn, ne, st, src//': ', '', error)
          if (allocated(error)) exit
          call h5_close(f, error)
          if (allocated(error)) exit
-         call write_arrays(self, tk, reshape(x, [3, nn]), reshape(d, [3, nn]), &
-                           reshape(v, [3, nn]), reshape(stress, [6, ne]), vm, pres, epsp, &
-                           nint(b), error, xdmf=.false.)
+         call write_arrays(self, st, error, xdmf=.false.)
          if (allocated(error)) exit
       end do
       if (allocated(error)) then
@@ -267,16 +234,6 @@ contains
       nmerged = self%nstates
       self%live = .true.            ! plot_close: rename, XDMF, remove the state files
       call plot_close(self, error)
-   contains
-      subroutine get(path, n, a)
-         character(*), intent(in) :: path
-         integer, intent(in) :: n
-         real(wp), allocatable, intent(out) :: a(:)
-         call h5_read(f, path, a, error)
-         if (allocated(error)) return
-         if (size(a) /= n) call set_error(error, src//': '//path//' has '//str(size(a))// &
-            ' values, expected '//str(n), EXIT_IO)
-      end subroutine get
    end subroutine plot_merge_states
 
    !> Continue the plot output from a restart point that had written nkeep states. The
@@ -297,10 +254,9 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(error_t), allocatable :: err2
       type(h5_file_t) :: old
-      real(wp), allocatable :: t(:), b(:), x(:, :), d(:, :), v(:, :), stress(:, :), vm(:), &
-                               pres(:), epsp(:)
-      integer, allocatable :: failed(:), cells(:, :)
-      real(wp) :: tk
+      real(wp), allocatable :: t(:)
+      type(plot_state_t) :: st
+      integer, allocatable :: cells(:, :)
       integer :: ndisk, k, nn, ne
       logical :: there, from_states
       character(:), allocatable :: g, src
@@ -340,7 +296,6 @@ contains
          if (allocated(error)) exit work
          ! from d3plot.h5, the copies also go to state files; from state files, not
          self%live = .not. from_states
-         allocate(failed(ne))
          do k = 1, nkeep
             g = state_group(k)
             if (from_states) then
@@ -348,23 +303,14 @@ contains
                call h5_open_read(old, src, error)
                if (allocated(error)) exit work
             end if
-            call h5_read_attr(old, g, 'time', tk, error)
-            if (.not. allocated(error)) call get2(g//'/coordinates', 3, nn, x)
-            if (.not. allocated(error)) call get2(g//'/displacement', 3, nn, d)
-            if (.not. allocated(error)) call get2(g//'/velocity', 3, nn, v)
-            if (.not. allocated(error)) call get2(g//'/stress', 6, ne, stress)
-            if (.not. allocated(error)) call get1(g//'/von_mises', ne, vm)
-            if (.not. allocated(error)) call get1(g//'/pressure', ne, pres)
-            if (.not. allocated(error)) call get1(g//'/eff_plastic_strain', ne, epsp)
-            if (.not. allocated(error)) call get1(g//'/failed', ne, b)
+            call plot_state_read(old, g, nn, ne, st, 'cannot continue '//src//': ', &
+                                 ' (another run''s file?)', error)
             if (allocated(error)) exit work
             if (from_states) then
                call h5_close(old, error)
                if (allocated(error)) exit work
             end if
-            failed = nint(b)
-            call write_arrays(self, tk, x, d, v, stress, vm, pres, epsp, failed, error, &
-                              xdmf=.false.)
+            call write_arrays(self, st, error, xdmf=.false.)
             if (allocated(error)) exit work
          end do
          if (.not. from_states) then
@@ -384,39 +330,19 @@ contains
          call h5_close(old, err2)
          call h5_close(self%h5, err2)
       end if
-   contains
-      subroutine get1(path, n, a)
-         character(*), intent(in) :: path
-         integer, intent(in) :: n
-         real(wp), allocatable, intent(out) :: a(:)
-         call h5_read(old, path, a, error)
-         if (allocated(error)) return
-         if (size(a) /= n) call set_error(error, 'cannot continue '//src// &
-            ': '//path//' has '//str(size(a))//' values, expected '//str(n)//' (another '// &
-            'run''s file?)', EXIT_IO)
-      end subroutine get1
-      subroutine get2(path, m, n, a)
-         character(*), intent(in) :: path
-         integer, intent(in) :: m, n
-         real(wp), allocatable, intent(out) :: a(:, :)
-         real(wp), allocatable :: f(:)
-         call get1(path, m*n, f)
-         if (allocated(error)) return
-         a = reshape(f, [m, n])
-      end subroutine get2
    end subroutine plot_resume
 
-   !> Element results: stress averaged over integration points, von Mises, pressure,
-   !> effective plastic strain (0 where the material has none) and the failed flag.
-   subroutine element_results(model, stress, vm, pres, epsp, failed)
+   !> Element results: stress averaged over integration points, effective plastic strain
+   !> (0 where the material has none) and the failed flag (1.0 = eroded), the SRC_ELEMENT
+   !> fields of the schema (dx_plot_fields); the invariants are derived from the stress.
+   subroutine element_results(model, stress, epsp, failed)
       type(model_t), intent(in) :: model
-      real(wp), intent(out) :: stress(:, :), vm(:), pres(:), epsp(:)
-      integer, intent(out) :: failed(:)
-      integer :: ib, i, e, k, imat
+      real(wp), intent(out) :: stress(:, :), epsp(:), failed(:)
+      integer :: ib, i, e, k, imat, fl
 
       stress = 0.0_wp
       epsp = 0.0_wp
-      failed = 0
+      failed = 0.0_wp
       if (allocated(model%blocks)) then
          do ib = 1, size(model%blocks)
             associate (blk => model%blocks(ib))
@@ -429,29 +355,13 @@ contains
                end if
                do i = 1, blk%nel
                   e = blk%elem(i)
-                  call element_average(blk, i, k, stress(:, e), epsp(e), failed(e))
+                  call element_average(blk, i, k, stress(:, e), epsp(e), fl)
+                  failed(e) = real(fl, wp)
                end do
             end associate
          end do
       end if
-      call stress_invariants(stress, vm, pres)
    end subroutine element_results
-
-   !> Von Mises stress and pressure -(xx + yy + zz)/3 of averaged stresses (6, ne); the one
-   !> place this arithmetic lives, so a combined MPI plot file (dx_plot_part) has the bits
-   !> of the serial one.
-   subroutine stress_invariants(stress, vm, pres)
-      real(wp), intent(in) :: stress(:, :)
-      real(wp), intent(out) :: vm(:), pres(:)
-      real(wp) :: s(6)
-      integer :: e
-      do e = 1, size(vm)
-         s = stress(:, e)
-         vm(e) = sqrt(max(0.0_wp, 0.5_wp*((s(1) - s(2))**2 + (s(2) - s(3))**2 &
-                 + (s(3) - s(1))**2) + 3.0_wp*(s(4)**2 + s(5)**2 + s(6)**2)))
-         pres(e) = -(s(1) + s(2) + s(3))/3.0_wp
-      end do
-   end subroutine stress_invariants
 
    !> One element's plot values: stress averaged over its integration points, the average
    !> of history variable k (hv_eps_p; 0 = none) and the failed flag (1 = eroded). Shared by
@@ -478,70 +388,41 @@ contains
       end if
    end subroutine element_average
 
-   !> Write one plot state at model%time (see the module header for the order of writes).
+   !> Write one plot state at model%time (see the module header for the order of writes):
+   !> the schema's fields (dx_plot_fields) filled from the model.
    subroutine plot_write_state(self, model, error)
       class(plot_file_t), intent(inout) :: self
       type(model_t), intent(in) :: model
       type(error_t), allocatable, intent(out) :: error
-      real(wp), allocatable :: x(:, :), stress(:, :), vm(:), pres(:), epsp(:), z(:, :)
-      integer, allocatable :: failed(:)
-
-      allocate(x(3, self%nn), stress(6, self%ne), vm(self%ne), pres(self%ne), &
-               epsp(self%ne), failed(self%ne))
+      type(plot_state_t) :: st
+      call plot_state_alloc(st, self%nn, self%ne)
+      st%time = model%time
       if (allocated(model%x)) then
-         x = model%x
+         st%f(F_COORD)%r = model%x
       else
-         x = model%x0
+         st%f(F_COORD)%r = model%x0
       end if
-      call element_results(model, stress, vm, pres, epsp, failed)
-
-      if (allocated(model%v)) then
-         call write_arrays(self, model%time, x, x - model%x0, model%v, stress, vm, pres, epsp, &
-                           failed, error)
-      else
-         allocate(z(3, self%nn))
-         z = 0.0_wp
-         call write_arrays(self, model%time, x, x - model%x0, z, stress, vm, pres, epsp, &
-                           failed, error)
-      end if
+      if (allocated(model%v)) st%f(F_VEL)%r = model%v
+      call element_results(model, st%f(F_STRESS)%r, st%f(F_EPSP)%r(1, :), &
+                           st%f(F_FAILED)%r(1, :))
+      call plot_state_derive(st, model%x0)
+      call write_arrays(self, st, error)
    end subroutine plot_write_state
 
    !> The writes of one state (the order of the module header), then its XDMF entry.
    !> plot_write_state and plot_resume's copy both come through here: the same calls.
-   subroutine write_arrays(self, time, x, d, v, stress, vm, pres, epsp, failed, error, xdmf)
+   subroutine write_arrays(self, st, error, xdmf)
       class(plot_file_t), intent(inout) :: self
-      real(wp), intent(in) :: time, x(:, :), d(:, :), v(:, :), stress(:, :), vm(:), pres(:), &
-                              epsp(:)
-      integer, intent(in) :: failed(:)
+      type(plot_state_t), intent(in) :: st
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: xdmf     !< .false.: no XDMF entry (plot_resume)
       real(wp), allocatable :: tmp(:)
-      character(:), allocatable :: g
       integer :: k, n
       k = self%nstates + 1
-      g = state_group(k)
-      call h5_create_group(self%h5, g, error)
-      if (allocated(error)) return
-      call h5_write_attr(self%h5, g, 'time', time, error)
-      if (allocated(error)) return
-      call h5_write(self%h5, g//'/coordinates', x, error)
-      if (allocated(error)) return
-      call h5_write(self%h5, g//'/displacement', d, error)
-      if (allocated(error)) return
-      call h5_write(self%h5, g//'/velocity', v, error)
-      if (allocated(error)) return
-      call h5_write(self%h5, g//'/stress', stress, error)
-      if (allocated(error)) return
-      call h5_write(self%h5, g//'/von_mises', vm, error)
-      if (allocated(error)) return
-      call h5_write(self%h5, g//'/pressure', pres, error)
-      if (allocated(error)) return
-      call h5_write(self%h5, g//'/eff_plastic_strain', epsp, error)
-      if (allocated(error)) return
-      call h5_write(self%h5, g//'/failed', failed, error)
+      call plot_state_write(self%h5, state_group(k), st, error)
       if (allocated(error)) return
       ! the state is complete: publish it
-      call h5_append(self%h5, '/states/times', time, n, error)
+      call h5_append(self%h5, '/states/times', st%time, n, error)
       if (allocated(error)) return
       call h5_write_attr(self%h5, '/', 'nstates', k, error)
       if (allocated(error)) return
@@ -553,11 +434,10 @@ contains
          tmp(1:k - 1) = self%times(1:k - 1)
          call move_alloc(tmp, self%times)
       end if
-      self%times(k) = time
+      self%times(k) = st%time
       ! the state's own file (temp, fsync, rename: dx_plot_states), then the XDMF names it
       if (self%live) then
-         call states_write_state(self%dir, k, time, x, d, v, stress, vm, pres, epsp, failed, &
-                                 error)
+         call states_write_state(self%dir, k, st, error)
          if (allocated(error)) return
       end if
       if (present(xdmf)) then

@@ -30,8 +30,10 @@ module dx_plot_part
    use dx_io_sys, only: sys_rename, sys_mkdir_p
    use dx_plot_states, only: file_remove, publish
    use dx_xdmf, only: xdmf_write, state_group
-   use dx_plot_hdf5, only: stress_invariants
    use dx_plot_cells, only: write_cells, read_cells, cells_topology, cell_topo_t
+   use dx_plot_fields, only: plot_state_t, plot_state_alloc, plot_state_derive, plot_state_write, &
+                             plot_mesh_write, field_in_part, PLOT_FIELDS, NSTATE_FIELDS, &
+                             CENTRE_NODE
    implicit none
    private
    public :: plot_part_t, plot_part_name, plot_part_state_name, plot_part_count, plot_combine, &
@@ -40,6 +42,9 @@ module dx_plot_part
    character(*), parameter :: PART_FORMAT = 'dynx plot part'
    integer, parameter :: PART_VERSION = 2
    character(*), parameter :: H5NAME = 'd3plot.h5', XMFNAME = 'd3plot.xdmf'
+   !> The integer root attributes of a part file after format and version, in write order.
+   character(*), parameter :: HEADER(5) = [character(9) :: 'rank', 'nprocs', 'stamp', &
+                                           'nn_global', 'ne_global']
 
    !> One rank's open part file.
    type :: plot_part_t
@@ -130,6 +135,7 @@ contains
       type(error_t), allocatable :: err2
       type(h5_file_t) :: f
       character(:), allocatable :: path
+      integer :: hv(size(HEADER)), i
       path = plot_part_name(dir, rank)
       self%active = .false.
       self%dir = dir
@@ -148,16 +154,11 @@ contains
          if (allocated(error)) exit work
          call h5_write_attr(f, '/', 'version', PART_VERSION, error)
          if (allocated(error)) exit work
-         call h5_write_attr(f, '/', 'rank', rank, error)
-         if (allocated(error)) exit work
-         call h5_write_attr(f, '/', 'nprocs', nprocs, error)
-         if (allocated(error)) exit work
-         call h5_write_attr(f, '/', 'stamp', stamp, error)
-         if (allocated(error)) exit work
-         call h5_write_attr(f, '/', 'nn_global', nn, error)
-         if (allocated(error)) exit work
-         call h5_write_attr(f, '/', 'ne_global', ne, error)
-         if (allocated(error)) exit work
+         hv = [rank, nprocs, stamp, nn, ne]
+         do i = 1, size(HEADER)
+            call h5_write_attr(f, '/', trim(HEADER(i)), hv(i), error)
+            if (allocated(error)) exit work
+         end do
          call h5_write_attr(f, '/', 'title', title, error)
          if (allocated(error)) exit work
          call h5_create_group(f, '/mesh', error)
@@ -207,20 +208,19 @@ contains
       self%active = .true.
    end subroutine part_resume
 
-   !> Write one state to its own file: x, v (3, nown) of the owned nodes; stress (6, nel)
+   !> Write one state to its own file: the schema's part fields (dx_plot_fields:
+   !> field_in_part; coordinates and velocity (3, nown) of the owned nodes, stress (6, nel)
    !> averaged over the integration points, eff_plastic_strain and failed (nel) of the held
-   !> elements; the time and the run's stamp. Temp, close, fsync, rename (crash safety).
-   subroutine part_write_state(self, time, x, v, stress, epsp, failed, error)
+   !> elements), the time and the run's stamp. Temp, close, fsync, rename (crash safety).
+   subroutine part_write_state(self, st, error)
       class(plot_part_t), intent(inout) :: self
-      real(wp), intent(in) :: time, x(:, :), v(:, :), stress(:, :), epsp(:)
-      integer, intent(in) :: failed(:)
+      type(plot_state_t), intent(in) :: st
       type(error_t), allocatable, intent(out) :: error
       type(h5_file_t) :: f
       type(error_t), allocatable :: err2
-      character(:), allocatable :: g, path
+      character(:), allocatable :: path
       integer :: k
       k = self%nstates + 1
-      g = state_group(k)
       path = plot_part_state_name(self%dir, self%rank, k)
       call h5_create(f, path//'.tmp', error)
       if (allocated(error)) return
@@ -229,19 +229,7 @@ contains
          if (allocated(error)) exit work
          call h5_create_group(f, '/states', error)
          if (allocated(error)) exit work
-         call h5_create_group(f, g, error)
-         if (allocated(error)) exit work
-         call h5_write_attr(f, g, 'time', time, error)
-         if (allocated(error)) exit work
-         call h5_write(f, g//'/coordinates', x, error)
-         if (allocated(error)) exit work
-         call h5_write(f, g//'/velocity', v, error)
-         if (allocated(error)) exit work
-         call h5_write(f, g//'/stress', stress, error)
-         if (allocated(error)) exit work
-         call h5_write(f, g//'/eff_plastic_strain', epsp, error)
-         if (allocated(error)) exit work
-         call h5_write(f, g//'/failed', failed, error)
+         call plot_state_write(f, state_group(k), st, error, part=.true.)
       end block work
       if (allocated(error)) then
          call h5_close(f, err2)
@@ -301,16 +289,16 @@ contains
       type(error_t), allocatable :: err2
       character(:), allocatable :: title, t0
       real(wp) :: tk
-      real(wp), allocatable :: times(:), buf(:), x0(:, :), x(:, :), v(:, :), &
-                               stress(:, :), vm(:), pres(:), epsp(:)
+      real(wp), allocatable :: times(:), buf(:), x0(:, :)
       integer, allocatable :: cnt_n(:), cnt_e(:), node_ids(:), &
-                              cells(:, :), elem_ids(:), part_ids(:), failed(:), rc(:, :)
+                              cells(:, :), elem_ids(:), part_ids(:), rc(:, :)
+      type(plot_state_t) :: st
       type(cell_topo_t) :: topo
       type :: idx_t
          integer, allocatable :: n(:), e(:)
       end type idx_t
       type(idx_t), allocatable :: idx(:)
-      integer :: np, nn, ne, stamp, r, k, ival, nst, i, n
+      integer :: np, nn, ne, stamp, r, k, ival, nst, i, n, j
       character(:), allocatable :: g, path
       nstates_out = 0
       ! ---- rank 0's part says how many there are
@@ -422,19 +410,7 @@ contains
          ! ---- the combined file, in the serial writer's layout (dx_plot_hdf5)
          call h5_create(out, dir//'/'//H5NAME//'.tmp', error)
          if (allocated(error)) exit work
-         call h5_create_group(out, '/mesh', error)
-         if (allocated(error)) exit work
-         call h5_write(out, '/mesh/coordinates', x0, error)
-         if (allocated(error)) exit work
-         call h5_write(out, '/mesh/node_ids', node_ids, error)
-         if (allocated(error)) exit work
-         call write_cells(out, cells, error)
-         if (allocated(error)) exit work
-         call h5_write(out, '/mesh/element_ids', elem_ids, error)
-         if (allocated(error)) exit work
-         call h5_write(out, '/mesh/part_ids', part_ids, error)
-         if (allocated(error)) exit work
-         call h5_write_attr(out, '/', 'title', title, error)
+         call plot_mesh_write(out, x0, node_ids, cells, elem_ids, part_ids, title, error)
          if (allocated(error)) exit work
          call h5_write_attr(out, '/', 'nstates', 0, error)
          if (allocated(error)) exit work
@@ -448,50 +424,30 @@ contains
          if (allocated(error)) exit work
          topo = cells_topology(cells)
          deallocate(cells, elem_ids, part_ids, node_ids)
-         allocate(x(3, nn), v(3, nn), stress(6, ne), vm(ne), pres(ne), epsp(ne), failed(ne))
+         call plot_state_alloc(st, nn, ne)
          do k = 1, nst
             g = state_group(k)
             do r = 0, np - 1
                call h5_open_read(pf(r), plot_part_state_name(dir, r, k), error)
                if (allocated(error)) exit work
-               call h5_read(pf(r), g//'/coordinates', buf, error)
-               if (allocated(error)) exit work
-               x(:, idx(r)%n) = reshape(buf, [3, size(idx(r)%n)])
-               call h5_read(pf(r), g//'/velocity', buf, error)
-               if (allocated(error)) exit work
-               v(:, idx(r)%n) = reshape(buf, [3, size(idx(r)%n)])
-               call h5_read(pf(r), g//'/stress', buf, error)
-               if (allocated(error)) exit work
-               stress(:, idx(r)%e) = reshape(buf, [6, size(idx(r)%e)])
-               call h5_read(pf(r), g//'/eff_plastic_strain', buf, error)
-               if (allocated(error)) exit work
-               epsp(idx(r)%e) = buf
-               call h5_read(pf(r), g//'/failed', buf, error)
-               if (allocated(error)) exit work
-               failed(idx(r)%e) = nint(buf)
+               ! each part field of the schema, scattered to the global nodes or elements
+               do j = 1, NSTATE_FIELDS
+                  if (.not. field_in_part(j)) cycle
+                  call h5_read(pf(r), g//'/'//trim(PLOT_FIELDS(j)%name), buf, error)
+                  if (allocated(error)) exit work
+                  n = PLOT_FIELDS(j)%ncomp
+                  if (PLOT_FIELDS(j)%centre == CENTRE_NODE) then
+                     st%f(j)%r(:, idx(r)%n) = reshape(buf, [n, size(idx(r)%n)])
+                  else
+                     st%f(j)%r(:, idx(r)%e) = reshape(buf, [n, size(idx(r)%e)])
+                  end if
+               end do
                call h5_close(pf(r), error)
                if (allocated(error)) exit work
             end do
-            call stress_invariants(stress, vm, pres)
-            call h5_create_group(out, g, error)
-            if (allocated(error)) exit work
-            call h5_write_attr(out, g, 'time', times(k), error)
-            if (allocated(error)) exit work
-            call h5_write(out, g//'/coordinates', x, error)
-            if (allocated(error)) exit work
-            call h5_write(out, g//'/displacement', x - x0, error)
-            if (allocated(error)) exit work
-            call h5_write(out, g//'/velocity', v, error)
-            if (allocated(error)) exit work
-            call h5_write(out, g//'/stress', stress, error)
-            if (allocated(error)) exit work
-            call h5_write(out, g//'/von_mises', vm, error)
-            if (allocated(error)) exit work
-            call h5_write(out, g//'/pressure', pres, error)
-            if (allocated(error)) exit work
-            call h5_write(out, g//'/eff_plastic_strain', epsp, error)
-            if (allocated(error)) exit work
-            call h5_write(out, g//'/failed', failed, error)
+            st%time = times(k)
+            call plot_state_derive(st, x0)
+            call plot_state_write(out, g, st, error)
             if (allocated(error)) exit work
             call h5_append(out, '/states/times', times(k), i, error)
             if (allocated(error)) exit work
@@ -524,7 +480,7 @@ contains
       character(:), allocatable, intent(out) :: title
       type(error_t), allocatable, intent(out) :: error
       character(:), allocatable :: fmt
-      integer :: ver
+      integer :: ver, hv(size(HEADER)), i
       np = 0; stamp = 0; nn = 0; ne = 0
       title = ''
       call h5_read_attr(f, '/', 'format', fmt, error)
@@ -536,14 +492,11 @@ contains
                         str(PART_VERSION), EXIT_IO)
          return
       end if
-      call h5_read_attr(f, '/', 'nprocs', np, error)
-      if (allocated(error)) return
-      call h5_read_attr(f, '/', 'stamp', stamp, error)
-      if (allocated(error)) return
-      call h5_read_attr(f, '/', 'nn_global', nn, error)
-      if (allocated(error)) return
-      call h5_read_attr(f, '/', 'ne_global', ne, error)
-      if (allocated(error)) return
+      do i = 2, size(HEADER)
+         call h5_read_attr(f, '/', trim(HEADER(i)), hv(i), error)
+         if (allocated(error)) return
+      end do
+      np = hv(2); stamp = hv(3); nn = hv(4); ne = hv(5)
       call h5_read_attr(f, '/', 'title', title, error)
       if (allocated(error)) return
       if (np < 1 .or. nn < 0 .or. ne < 0) call set_error(error, path// &

@@ -16,10 +16,10 @@ module dx_plot_states
    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_IO
-   use dx_h5, only: h5_file_t, h5_create, h5_close, h5_create_group, h5_write, h5_write_attr
+   use dx_h5, only: h5_file_t, h5_create, h5_close, h5_create_group
    use dx_io_sys, only: sys_rename, sys_fsync, sys_mkdir_p
    use dx_xdmf, only: state_group
-   use dx_plot_cells, only: write_cells
+   use dx_plot_fields, only: plot_state_t, plot_state_write, plot_mesh_write
    implicit none
    private
    public :: STATES_DIR, state_file, states_write_mesh, states_write_state, states_have, &
@@ -77,21 +77,7 @@ contains
       p = dir//'/'//state_file(0)
       call h5_create(f, p//'.tmp', error)
       if (allocated(error)) return
-      work: block
-         call h5_create_group(f, '/mesh', error)
-         if (allocated(error)) exit work
-         call h5_write(f, '/mesh/coordinates', x0, error)
-         if (allocated(error)) exit work
-         call h5_write(f, '/mesh/node_ids', nlab, error)
-         if (allocated(error)) exit work
-         call write_cells(f, cells, error)
-         if (allocated(error)) exit work
-         call h5_write(f, '/mesh/element_ids', elab, error)
-         if (allocated(error)) exit work
-         call h5_write(f, '/mesh/part_ids', ids, error)
-         if (allocated(error)) exit work
-         call h5_write_attr(f, '/', 'title', title, error)
-      end block work
+      call plot_mesh_write(f, x0, nlab, cells, elab, ids, title, error)
       if (allocated(error)) then
          call h5_close(f, err2)
          return
@@ -100,43 +86,19 @@ contains
    end subroutine states_write_mesh
 
    !> Write state k to dir/d3plot.states/NNNNNN.h5 (temp, close, fsync, rename).
-   subroutine states_write_state(dir, k, time, x, d, v, stress, vm, pres, epsp, failed, error)
+   subroutine states_write_state(dir, k, st, error)
       character(*), intent(in) :: dir
       integer, intent(in) :: k
-      real(wp), intent(in) :: time, x(:, :), d(:, :), v(:, :), stress(:, :), vm(:), pres(:), &
-                              epsp(:)
-      integer, intent(in) :: failed(:)
+      type(plot_state_t), intent(in) :: st
       type(error_t), allocatable, intent(out) :: error
       type(h5_file_t) :: f
       type(error_t), allocatable :: err2
-      character(:), allocatable :: p, g
+      character(:), allocatable :: p
       p = dir//'/'//state_file(k)
-      g = state_group(k)
       call h5_create(f, p//'.tmp', error)
       if (allocated(error)) return
-      work: block
-         call h5_create_group(f, '/states', error)
-         if (allocated(error)) exit work
-         call h5_create_group(f, g, error)
-         if (allocated(error)) exit work
-         call h5_write_attr(f, g, 'time', time, error)
-         if (allocated(error)) exit work
-         call h5_write(f, g//'/coordinates', x, error)
-         if (allocated(error)) exit work
-         call h5_write(f, g//'/displacement', d, error)
-         if (allocated(error)) exit work
-         call h5_write(f, g//'/velocity', v, error)
-         if (allocated(error)) exit work
-         call h5_write(f, g//'/stress', stress, error)
-         if (allocated(error)) exit work
-         call h5_write(f, g//'/von_mises', vm, error)
-         if (allocated(error)) exit work
-         call h5_write(f, g//'/pressure', pres, error)
-         if (allocated(error)) exit work
-         call h5_write(f, g//'/eff_plastic_strain', epsp, error)
-         if (allocated(error)) exit work
-         call h5_write(f, g//'/failed', failed, error)
-      end block work
+      call h5_create_group(f, '/states', error)
+      if (.not. allocated(error)) call plot_state_write(f, state_group(k), st, error)
       if (allocated(error)) then
          call h5_close(f, err2)
          return

@@ -29,6 +29,9 @@ module dx_rank_file
    integer, parameter :: RANK_FILE_VERSION = 1
    character(*), parameter :: RANK_FILE_FORMAT = 'dynx-rank-partition'
    integer, parameter :: NSETS = 13
+   !> The integer root attributes after format and version, in write order.
+   character(*), parameter :: HEADER(4) = [character(9) :: 'nprocs', 'rank', 'ne_global', &
+                                           'nn_global']
    character(*), parameter :: SETS(NSETS) = [character(len=18) :: &
       '/elements', '/nodes', '/node_owner', '/shared/ranks', '/shared/offsets', &
       '/shared/nodes', '/bc/spc', '/bc/prescribed', '/loads/node', '/loads/segment', &
@@ -120,7 +123,7 @@ contains
       type(error_t), allocatable :: err2
       type(h5_file_t) :: f
       type(iarr_t) :: arr(NSETS)
-      integer :: k
+      integer :: k, hv(size(HEADER))
       call to_arrays(rp, arr)
       call h5_create(f, path, error)
       if (allocated(error)) return
@@ -137,14 +140,11 @@ contains
          if (allocated(error)) exit work
          call h5_write_attr(f, '/', 'version', RANK_FILE_VERSION, error)
          if (allocated(error)) exit work
-         call h5_write_attr(f, '/', 'nprocs', rp%np, error)
-         if (allocated(error)) exit work
-         call h5_write_attr(f, '/', 'rank', rp%rank, error)
-         if (allocated(error)) exit work
-         call h5_write_attr(f, '/', 'ne_global', rp%ne_global, error)
-         if (allocated(error)) exit work
-         call h5_write_attr(f, '/', 'nn_global', rp%nn_global, error)
-         if (allocated(error)) exit work
+         hv = [rp%np, rp%rank, rp%ne_global, rp%nn_global]
+         do k = 1, size(HEADER)
+            call h5_write_attr(f, '/', trim(HEADER(k)), hv(k), error)
+            if (allocated(error)) exit work
+         end do
          call h5_write_attr(f, '/', 'deck_hash', deck_hash, error)
          if (allocated(error)) exit work
          call h5_write_attr(f, '/', 'checksum', payload_checksum(RANK_FILE_VERSION, rp%np, &
@@ -165,7 +165,7 @@ contains
       type(h5_file_t) :: f
       type(iarr_t) :: arr(NSETS)
       character(:), allocatable :: fmt, fhash, fsum
-      integer :: version, k
+      integer :: version, k, hv(size(HEADER))
       real(wp), allocatable :: buf(:)
       call h5_open_read(f, path, error)
       if (allocated(error)) return
@@ -185,14 +185,11 @@ contains
                '; rerun dynx-part', EXIT_INPUT)
             exit work
          end if
-         call h5_read_attr(f, '/', 'nprocs', rp%np, error)
-         if (allocated(error)) exit work
-         call h5_read_attr(f, '/', 'rank', rp%rank, error)
-         if (allocated(error)) exit work
-         call h5_read_attr(f, '/', 'ne_global', rp%ne_global, error)
-         if (allocated(error)) exit work
-         call h5_read_attr(f, '/', 'nn_global', rp%nn_global, error)
-         if (allocated(error)) exit work
+         do k = 1, size(HEADER)
+            call h5_read_attr(f, '/', trim(HEADER(k)), hv(k), error)
+            if (allocated(error)) exit work
+         end do
+         rp%np = hv(1); rp%rank = hv(2); rp%ne_global = hv(3); rp%nn_global = hv(4)
          call h5_read_attr(f, '/', 'deck_hash', fhash, error)
          if (allocated(error)) exit work
          call h5_read_attr(f, '/', 'checksum', fsum, error)

@@ -155,6 +155,7 @@ contains
          call rs%put('run_nrunrsf', r%nrunrsf)
          call rs%put('run_glstat_bytes', r%glstat_bytes)
          call rs%put('run_nodout_bytes', r%nodout_bytes)
+         call rs%put('run_energy_guard', r%guard)
       end associate
       call rs%put('time', model%time)
       call rs%put('dt', model%dt)
@@ -187,6 +188,8 @@ contains
          call rs%get('run_nrunrsf', r%nrunrsf)
          call rs%get('run_glstat_bytes', r%glstat_bytes)
          call rs%get('run_nodout_bytes', r%nodout_bytes)
+         r%guard = 0.0_wp       ! (a dump written before the guard was carried: not judged
+         if (rs%has('run_energy_guard')) call rs%get('run_energy_guard', r%guard)  ! 1 cycle)
          r%started = rs%ok()
       end associate
       call rs%get('time', model%time)

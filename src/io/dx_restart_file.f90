@@ -8,6 +8,12 @@
 !> a plain list of put/get calls; rs_commit / rs_close return it.
 !> CRC-32: the IEEE 802.3 polynomial 0xEDB88320 (reflected), table-driven as in
 !> Sarwate, "Computation of cyclic redundancy checks via table look-up", CACM 31(8), 1988.
+!> Whole-file checksum (issue 15: HDF5 1.10.8 reads out of bounds on some damaged files):
+!> rs_commit appends a 16-byte trailer, 'DYNXCRC1' and the CRC-32 of every byte before it as
+!> 8 hex digits, after HDF5 closed the file (HDF5 ignores bytes past its end-of-allocation
+!> address); rs_open checks it before HDF5 opens the file: a mismatch, or no trailer (a
+!> truncated or damaged end, or a dump of a dynx before format version 3), is exit 4 naming
+!> the file.
 module dx_restart_file
    use, intrinsic :: iso_fortran_env, only: int8, int64
    use dx_kinds, only: wp
@@ -15,7 +21,7 @@ module dx_restart_file
    use dx_strings, only: str
    use dx_h5, only: h5_file_t, h5_create, h5_open_read, h5_close, h5_flush, h5_write, &
                     h5_write_attr, h5_read, h5_read_attr, h5_exists, h5_dims
-   use dx_io_sys, only: sys_rename, sys_fsync
+   use dx_io_sys, only: sys_rename, sys_fsync, sys_need_regular
    implicit none
    private
    public :: rs_file_t, rs_create, rs_commit, rs_open, rs_close, crc32, RESTART_FORMAT_VERSION, &
@@ -23,7 +29,10 @@ module dx_restart_file
 
    !> Bump when the meaning or the list of datasets changes; readers refuse other versions.
    !> 2: energy record with the sliding energy (13 values), rigid_* and contact_* datasets.
-   integer, parameter :: RESTART_FORMAT_VERSION = 2
+   !> 3: the whole-file CRC-32 trailer, run_energy_guard.
+   integer, parameter :: RESTART_FORMAT_VERSION = 3
+
+   character(8), parameter :: TRAILER_MAGIC = 'DYNXCRC1'   !< + 8 hex digits: 16 bytes
 
    type :: rs_file_t
       type(h5_file_t) :: h5
@@ -74,6 +83,7 @@ contains
       if (.not. allocated(rs%err)) call h5_flush(rs%h5, rs%err)
       call h5_close(rs%h5, e)
       if (allocated(e) .and. .not. allocated(rs%err)) call move_alloc(e, rs%err)
+      if (.not. allocated(rs%err)) call append_trailer(rs%path//'.tmp', rs%err)
       if (.not. allocated(rs%err)) call sys_fsync(rs%path//'.tmp', rs%err)
       if (.not. allocated(rs%err)) call sys_rename(rs%path//'.tmp', rs%path, rs%err)
       if (.not. allocated(rs%err)) then
@@ -100,6 +110,8 @@ contains
       rs%path = path
       rs%writing = .false.
       if (allocated(rs%err)) deallocate(rs%err)
+      call check_trailer(path, error)          ! before HDF5 reads a byte of it
+      if (allocated(error)) return
       call h5_open_read(rs%h5, path, error)
       if (allocated(error)) then
          error%message = 'restart file '//path//': '//error%message
@@ -340,6 +352,103 @@ contains
       end do
       c = ieor(c, MASK32)
    end function crc32_bytes
+
+   !> CRC-32 of the first n bytes of an open stream unit (1 MiB at a time); ok = read fine.
+   subroutine crc32_unit(u, n, crc, ok)
+      integer, intent(in) :: u
+      integer(int64), intent(in) :: n
+      integer(int64), intent(out) :: crc
+      logical, intent(out) :: ok
+      integer(int64), parameter :: MASK32 = int(z'FFFFFFFF', int64), CHUNK = 1048576_int64
+      integer(int8), allocatable :: buf(:)
+      integer(int64) :: pos, m
+      integer :: i, ios
+      if (.not. table_ready) call make_table()
+      allocate(buf(min(max(n, 1_int64), CHUNK)))
+      crc = MASK32
+      ok = .true.
+      pos = 1
+      do while (pos <= n)
+         m = min(CHUNK, n - pos + 1)
+         read(u, pos=pos, iostat=ios) buf(1:m)
+         if (ios /= 0) then
+            ok = .false.; return
+         end if
+         do i = 1, int(m)
+            crc = ieor(table(iand(ieor(crc, int(buf(i), int64)), 255_int64)), shiftr(crc, 8))
+         end do
+         pos = pos + m
+      end do
+      crc = ieor(crc, MASK32)
+   end subroutine crc32_unit
+
+   !> Append the whole-file CRC-32 trailer to path (the closed HDF5 file).
+   subroutine append_trailer(path, error)
+      character(*), intent(in) :: path
+      type(error_t), allocatable, intent(inout) :: error
+      integer :: u, ios
+      integer(int64) :: n, crc
+      logical :: ok
+      character(8) :: hx
+      open(newunit=u, file=path, access='stream', form='unformatted', status='old', &
+           action='readwrite', iostat=ios)
+      if (ios /= 0) then
+         call set_error(error, 'cannot open '//path//' to add its checksum', EXIT_IO); return
+      end if
+      inquire(unit=u, size=n)
+      call crc32_unit(u, n, crc, ok)
+      if (ok) then
+         write(hx, '(z8.8)') crc
+         write(u, pos=n + 1, iostat=ios) TRAILER_MAGIC//hx
+         ok = ios == 0
+      end if
+      close(u, iostat=ios)
+      if (.not. ok .or. ios /= 0) call set_error(error, 'cannot write the checksum of '// &
+                                                 path//' (disk full?)', EXIT_IO)
+   end subroutine append_trailer
+
+   !> A dump's whole-file CRC-32 against its trailer, before HDF5 opens it: exit 4 on a
+   !> mismatch or a missing trailer.
+   subroutine check_trailer(path, error)
+      character(*), intent(in) :: path
+      type(error_t), allocatable, intent(out) :: error
+      integer :: u, ios
+      integer(int64) :: n, crc, want
+      logical :: ok
+      character(16) :: tr
+      call sys_need_regular(path, 'restart file '//path, error)   ! a FIFO would hang
+      if (allocated(error)) return
+      open(newunit=u, file=path, access='stream', form='unformatted', status='old', &
+           action='read', iostat=ios)
+      if (ios /= 0) return                  ! missing or unreadable: HDF5's open says so
+      inquire(unit=u, size=n)
+      tr = ''
+      if (n >= 16) read(u, pos=n - 15, iostat=ios) tr
+      if (n < 16 .or. ios /= 0 .or. tr(1:8) /= TRAILER_MAGIC) then
+         close(u)
+         call set_error(error, 'restart file '//path//' has no whole-file checksum '// &
+            'trailer (it is truncated or damaged at its end, not a dynx restart dump, or '// &
+            'a dump of a dynx before restart format version 3)', EXIT_IO)
+         return
+      end if
+      read(tr(9:16), '(z8)', iostat=ios) want
+      call crc32_unit(u, n - 16, crc, ok)
+      close(u)
+      if (.not. ok) then
+         call set_error(error, 'restart file '//path//': cannot read it to check its '// &
+                        'checksum', EXIT_IO)
+      else if (ios /= 0 .or. crc /= want) then
+         call set_error(error, 'restart file '//path//': whole-file CRC-32 '//hex8(crc)// &
+            ' is not the '//tr(9:16)//' of its trailer (the file is damaged; continue '// &
+            'from an earlier dump)', EXIT_IO)
+      end if
+   contains
+      function hex8(c) result(h)
+         integer(int64), intent(in) :: c
+         character(8) :: h
+         write(h, '(z8.8)') c
+      end function hex8
+   end subroutine check_trailer
 
    subroutine make_table()
       integer(int64), parameter :: POLY = int(z'EDB88320', int64)

@@ -13,60 +13,72 @@ module dx_rigid_restart
    use dx_error, only: set_error, EXIT_INPUT
    use dx_strings, only: str
    use dx_restart_file, only: rs_file_t
-   use dx_rigid_types, only: rigid_system_t
+   use dx_rigid_types, only: rigid_system_t, rigid_body_t
    use dx_append_file, only: unit_bytes
    implicit none
    private
    public :: rigid_dump, rigid_restore
 
+   !> The per-body vectors and matrices of the dump, in dump order (datasets rigid_<name>).
+   character(*), parameter :: VEC_NAMES(7) = [character(5) :: 'xc', 'vc', 'xc_n', 'lsp', &
+                                              'omega', 'fsum', 'tsum']
+   character(*), parameter :: MAT_NAMES(2) = [character(5) :: 'rot', 'rot_n']
+
 contains
+
+   !> The body's vector VEC_NAMES(k).
+   function vec_of(body, k) result(p)
+      type(rigid_body_t), target :: body
+      integer, intent(in) :: k
+      real(wp), pointer :: p(:)
+      select case (k)
+      case (1); p => body%xc
+      case (2); p => body%vc
+      case (3); p => body%xc_n
+      case (4); p => body%lsp
+      case (5); p => body%omega
+      case (6); p => body%fsum
+      case default; p => body%tsum
+      end select
+   end function vec_of
+
+   !> The body's matrix MAT_NAMES(k).
+   function mat_of(body, k) result(q)
+      type(rigid_body_t), target :: body
+      integer, intent(in) :: k
+      real(wp), pointer :: q(:, :)
+      if (k == 1) then
+         q => body%rot
+      else
+         q => body%rot_n
+      end if
+   end function mat_of
 
    subroutine rigid_dump(rs, rig)
       type(rs_file_t), intent(inout) :: rs
-      type(rigid_system_t), intent(in) :: rig
+      type(rigid_system_t), intent(in), target :: rig
       real(wp), allocatable :: a3(:, :), a33(:, :, :)
-      integer :: nb, b
+      real(wp), pointer :: p(:), q(:, :)
+      integer :: nb, b, k
       integer(8) :: bytes
       nb = size(rig%bodies)
       call rs%put('rigid_nbodies', nb)
       call rs%put('rigid_label', rig%bodies(:)%label)
       allocate(a3(3, nb), a33(3, 3, nb))
-      do b = 1, nb
-         a3(:, b) = rig%bodies(b)%xc
+      do k = 1, size(VEC_NAMES)
+         do b = 1, nb
+            p => vec_of(rig%bodies(b), k)
+            a3(:, b) = p
+         end do
+         call rs%put('rigid_'//trim(VEC_NAMES(k)), a3)
       end do
-      call rs%put('rigid_xc', a3)
-      do b = 1, nb
-         a3(:, b) = rig%bodies(b)%vc
+      do k = 1, size(MAT_NAMES)
+         do b = 1, nb
+            q => mat_of(rig%bodies(b), k)
+            a33(:, :, b) = q
+         end do
+         call rs%put('rigid_'//trim(MAT_NAMES(k)), a33)
       end do
-      call rs%put('rigid_vc', a3)
-      do b = 1, nb
-         a3(:, b) = rig%bodies(b)%xc_n
-      end do
-      call rs%put('rigid_xc_n', a3)
-      do b = 1, nb
-         a3(:, b) = rig%bodies(b)%lsp
-      end do
-      call rs%put('rigid_lsp', a3)
-      do b = 1, nb
-         a3(:, b) = rig%bodies(b)%omega
-      end do
-      call rs%put('rigid_omega', a3)
-      do b = 1, nb
-         a3(:, b) = rig%bodies(b)%fsum
-      end do
-      call rs%put('rigid_fsum', a3)
-      do b = 1, nb
-         a3(:, b) = rig%bodies(b)%tsum
-      end do
-      call rs%put('rigid_tsum', a3)
-      do b = 1, nb
-         a33(:, :, b) = rig%bodies(b)%rot
-      end do
-      call rs%put('rigid_rot', a33)
-      do b = 1, nb
-         a33(:, :, b) = rig%bodies(b)%rot_n
-      end do
-      call rs%put('rigid_rot_n', a33)
       if (nmotions(rig) > 0) call rs%put('rigid_motion_disp', motion_disp(rig))
       call rs%put('rigid_sums', [rig%ke_corr, rig%ke0_corr, rig%p_corr, rig%mass_corr, &
                                  rig%work, rig%next_rbdout])
@@ -77,8 +89,9 @@ contains
 
    subroutine rigid_restore(rs, rig)
       type(rs_file_t), intent(inout) :: rs
-      type(rigid_system_t), intent(inout) :: rig
+      type(rigid_system_t), intent(inout), target :: rig
       real(wp), allocatable :: a3(:, :), a33(:, :, :), disp(:)
+      real(wp), pointer :: p(:), q(:, :)
       real(wp) :: sums(8)
       integer, allocatable :: labels(:)
       integer :: nb, b, k, m
@@ -102,41 +115,19 @@ contains
          end if
       end if
       a3 = 0.0_wp; a33 = 0.0_wp
-      call rs%get('rigid_xc', a3)
-      do b = 1, nb
-         rig%bodies(b)%xc = a3(:, b)
+      do k = 1, size(VEC_NAMES)
+         call rs%get('rigid_'//trim(VEC_NAMES(k)), a3)
+         do b = 1, nb
+            p => vec_of(rig%bodies(b), k)
+            p = a3(:, b)
+         end do
       end do
-      call rs%get('rigid_vc', a3)
-      do b = 1, nb
-         rig%bodies(b)%vc = a3(:, b)
-      end do
-      call rs%get('rigid_xc_n', a3)
-      do b = 1, nb
-         rig%bodies(b)%xc_n = a3(:, b)
-      end do
-      call rs%get('rigid_lsp', a3)
-      do b = 1, nb
-         rig%bodies(b)%lsp = a3(:, b)
-      end do
-      call rs%get('rigid_omega', a3)
-      do b = 1, nb
-         rig%bodies(b)%omega = a3(:, b)
-      end do
-      call rs%get('rigid_fsum', a3)
-      do b = 1, nb
-         rig%bodies(b)%fsum = a3(:, b)
-      end do
-      call rs%get('rigid_tsum', a3)
-      do b = 1, nb
-         rig%bodies(b)%tsum = a3(:, b)
-      end do
-      call rs%get('rigid_rot', a33)
-      do b = 1, nb
-         rig%bodies(b)%rot = a33(:, :, b)
-      end do
-      call rs%get('rigid_rot_n', a33)
-      do b = 1, nb
-         rig%bodies(b)%rot_n = a33(:, :, b)
+      do k = 1, size(MAT_NAMES)
+         call rs%get('rigid_'//trim(MAT_NAMES(k)), a33)
+         do b = 1, nb
+            q => mat_of(rig%bodies(b), k)
+            q = a33(:, :, b)
+         end do
       end do
       m = nmotions(rig)
       if (m > 0) then

@@ -11,6 +11,7 @@ module dx_thist
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_IO
    use dx_model, only: model_t
+   use dx_append_file, only: cut_back
    use dx_io_sys, only: sys_truncate, sys_open_write, sys_write_all, sys_close_fd, &
                         sys_ftruncate_fd
    implicit none
@@ -72,13 +73,7 @@ contains
          call self%open(path, what, title, columns, error)
          return
       end if
-      if (sz < nbytes) then
-         call set_error(error, 'cannot continue '//path//': it has '//itoa(sz)// &
-            ' bytes, the restart dump expects at least '//itoa(nbytes)// &
-            ' (another run''s file?)', EXIT_IO)
-         return
-      end if
-      if (sz > nbytes) call sys_truncate(path, nbytes, error)
+      call cut_back(path, sz, nbytes, 'another run''s file?', error)
       if (allocated(error)) return
       self%path = path
       call sys_open_write(path, .true., self%unit, error)
@@ -86,14 +81,6 @@ contains
       self%opened = .true.
       self%bytes = nbytes
    end subroutine thist_resume
-
-   pure function itoa(i) result(s)
-      integer(8), intent(in) :: i
-      character(:), allocatable :: s
-      character(24) :: buf
-      write(buf, '(i0)') i
-      s = trim(buf)
-   end function itoa
 
    !> Write one whole line; on failure cut the file back to its last whole line.
    subroutine put_line(self, line, error)

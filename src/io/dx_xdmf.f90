@@ -1,8 +1,8 @@
 !> XDMF 3 description of the HDF5 plot file (d3plot.h5) so ParaView/VisIt can read it:
 !> a temporal collection with one uniform Grid per complete state, the cells' topology
 !> (dx_plot_cells: one family's cell type or Mixed), geometry from the state's current
-!> coordinates, nodal vectors and
-!> cell scalars/tensors from the state group. Rewritten after every state through a
+!> coordinates, and one attribute per row of the plot-field schema (dx_plot_fields: nodal
+!> vectors, cell scalars/tensors from the state group, ids from /mesh). Rewritten after every state through a
 !> temporary file and rename(2), so a reader never sees a half-written file. The text is
 !> built in memory and written with write(2) + fsync(2) (dx_io_sys): a full disk is an error
 !> naming the file and the reason, and the good file is never replaced by a short one.
@@ -12,9 +12,13 @@ module dx_xdmf
    use dx_error, only: error_t
    use dx_io_sys, only: sys_rename, sys_write_file
    use dx_plot_cells, only: cell_topo_t
+   use dx_strings, only: str
+   use dx_plot_fields, only: plot_field_t, PLOT_FIELDS, CENTRE_NODE, SRC_MESH, xdmf_attribute_type
    implicit none
    private
    public :: xdmf_write, state_group
+
+   character(4), parameter :: CENTRING(2) = ['Node', 'Cell']
 
 contains
 
@@ -37,8 +41,9 @@ contains
       type(cell_topo_t), intent(in) :: topo     !< the cells (dx_plot_cells)
       real(wp), intent(in) :: times(:)
       type(error_t), allocatable, intent(out) :: error
-      integer :: k, nb
-      character(:), allocatable :: tmp, g, snn, sne, mfile, sfile, text, cdims
+      integer :: k, nb, i
+      type(plot_field_t) :: fld
+      character(:), allocatable :: tmp, g, snn, sne, mfile, sfile, text, cdims, dims, dset
       character(32) :: buf
 
       tmp = path//'.tmp'
@@ -75,18 +80,22 @@ contains
          call put('    <Geometry GeometryType="XYZ">')
          call item(snn//' 3', 'Float', '8', g//'/coordinates', sfile)
          call put('    </Geometry>')
-         call attribute('displacement', 'Vector', 'Node', snn//' 3', 'Float', '8', &
-                        g//'/displacement')
-         call attribute('velocity', 'Vector', 'Node', snn//' 3', 'Float', '8', g//'/velocity')
-         call attribute('stress', 'Tensor6', 'Cell', sne//' 6', 'Float', '8', g//'/stress')
-         call attribute('von_mises', 'Scalar', 'Cell', sne, 'Float', '8', g//'/von_mises')
-         call attribute('pressure', 'Scalar', 'Cell', sne, 'Float', '8', g//'/pressure')
-         call attribute('eff_plastic_strain', 'Scalar', 'Cell', sne, 'Float', '8', &
-                        g//'/eff_plastic_strain')
-         call attribute('failed', 'Scalar', 'Cell', sne, 'Int', '4', g//'/failed')
-         call attribute('part_id', 'Scalar', 'Cell', sne, 'Int', '4', '/mesh/part_ids')
-         call attribute('element_id', 'Scalar', 'Cell', sne, 'Int', '4', '/mesh/element_ids')
-         call attribute('node_id', 'Scalar', 'Node', snn, 'Int', '4', '/mesh/node_ids')
+         do i = 1, size(PLOT_FIELDS)
+            fld = PLOT_FIELDS(i)
+            if (len_trim(fld%label) == 0) cycle      ! the geometry
+            dims = sne
+            if (fld%centre == CENTRE_NODE) dims = snn
+            if (fld%ncomp > 1) dims = dims//' '//str(fld%ncomp)
+            dset = g//'/'//trim(fld%name)
+            if (fld%source == SRC_MESH) dset = trim(fld%name)
+            if (fld%int) then
+               call attribute(trim(fld%label), xdmf_attribute_type(fld), &
+                              CENTRING(fld%centre), dims, 'Int', '4', dset)
+            else
+               call attribute(trim(fld%label), xdmf_attribute_type(fld), &
+                              CENTRING(fld%centre), dims, 'Float', '8', dset)
+            end if
+         end do
          call put('   </Grid>')
       end do
       call put('  </Grid>')

@@ -1,16 +1,17 @@
 !> The dynx command line: options, usage text, the SLURM wall-clock limit, and the two ways
 !> the program stops on an error (a usage error before anything ran, or a run's error_t).
 !> Exit codes: 0 normal, 2 input error, 3 numerical failure in the run, 4 I/O failure,
-!> 5 stopped at a checkpoint (SIGTERM/SIGINT or wall-clock limit; a restart dump was written).
+!> 5 stopped at a checkpoint (SIGTERM/SIGINT/SIGUSR2 or wall-clock limit; a restart dump was
+!> written; --check: stopped by such a signal before the check ended, nothing written).
 module dx_cli
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use dx_kinds, only: wp
    use dx_error, only: error_t, EXIT_INPUT, exit_process
-   use dx_strings, only: rstr, command_arg
+   use dx_strings, only: rstr, command_arg, lower
    use dx_log, only: log_info, log_error
    use dx_io_sys, only: sys_epoch_seconds
    use dx_timer, only: wall_time
-   use dx_signals, only: SIGTERM_NUM, SIGINT_NUM, SIGUSR1_NUM
+   use dx_signals, only: SIGTERM_NUM, SIGINT_NUM, SIGUSR1_NUM, SIGUSR2_NUM
    use dx_integrator, only: run_options_t, energy_guard_t
    use dx_par, only: par_init, par_finalize, par_rank, par_size, par_abort, par_barrier, &
                      par_active
@@ -106,6 +107,16 @@ contains
                   cli%rfile = arg(3:); cycle
                end if
             end if
+            ! LS-DYNA's own command-line tokens: ncpu= (dynx runs on the ranks mpirun
+            ! starts, one thread each) and memory= / memory2= (dynx allocates what the
+            ! deck needs): accepted with a note, they change nothing
+            if (lskey(arg, 'ncpu=') .or. lskey(arg, 'memory=') .or. &
+                lskey(arg, 'memory2=')) then
+               call check_ls_token(arg)
+               call log_info('dynx: note: '//arg//' accepted and not needed (dynx runs '// &
+                  'on the MPI ranks mpirun starts and allocates what the deck needs)')
+               cycle
+            end if
             call die_usage('unknown argument '//arg)
          end select
       end do
@@ -118,6 +129,29 @@ contains
       call slurm_limit(cli%opts%ck%walltime)
    end subroutine parse_cli
 
+   !> whether arg starts with the LS-DYNA token key (case-insensitive, e.g. 'ncpu=')
+   logical function lskey(arg, key)
+      character(*), intent(in) :: arg, key
+      lskey = .false.
+      if (len(arg) > len(key)) lskey = lower(arg(1:len(key))) == key
+   end function lskey
+
+   !> ncpu=N (N may be negative: LS-DYNA's consistency flag) and memory=N[m|M|g|G]: a
+   !> value that is no number is a usage error.
+   subroutine check_ls_token(arg)
+      character(*), intent(in) :: arg
+      character(:), allocatable :: v
+      integer :: k, n, ios
+      k = index(arg, '=')
+      v = arg(k + 1:)
+      if (len(v) > 1) then
+         if (index('mMgGkK', v(len(v):len(v))) > 0) v = v(1:len(v) - 1)
+      end if
+      read(v, *, iostat=ios) n
+      if (ios /= 0 .or. verify(v, '+-0123456789') /= 0) &
+         call die_usage(arg(1:k)//' needs an integer (LS-DYNA syntax), not '//arg(k + 1:))
+   end subroutine check_ls_token
+
    function get_arg(k) result(a)
       integer, intent(in) :: k
       character(:), allocatable :: a
@@ -127,7 +161,8 @@ contains
 
    subroutine usage()
       write(output_unit, '(a)') &
-         'usage: dynx -i deck.k [options]     (LS-DYNA style i=deck.k is accepted too)', &
+         'usage: dynx -i deck.k [options]     (LS-DYNA style i=deck.k is accepted too,', &
+         '                                    and ncpu=N, memory=N: noted, not needed)', &
          '', &
          'Runs an LS-DYNA style keyword deck with the explicit central-difference solver.', &
          '', &
@@ -136,7 +171,9 @@ contains
          '  -o, --outdir DIR     output directory (default: current directory); holds', &
          '                       d3plot.h5 + d3plot.xdmf (open in ParaView), glstat, nodout', &
          '  --status N           number of status lines over the run (default 10)', &
-         '  --check              read and check the deck, print a summary, do not run', &
+         '  --check              read and check the deck, print a summary, do not run; lists', &
+         '                       every unknown keyword and unsupported option at once,', &
+         '                       grouped by family, and exits 2 if there is any', &
          '  --part DIR           MPI runs: the rank files (dynx-part) are DIR/rank_R.h5', &
          '                       (default: the output directory, else next to the deck;', &
          '                       rank 0 partitions into the output directory if none)', &
@@ -146,10 +183,11 @@ contains
          '                       output intervals, curves; docs/keywords.md)', &
          '  --walltime S         write a restart dump and stop (exit 5) before S seconds of', &
          '                       wall time (SLURM_JOB_END_TIME is read when set)', &
-         '  --raise-at-cycle N[:SIG][@R]  send SIG (TERM, INT, USR1; default TERM) to', &
+         '  --raise-at-cycle N[:SIG][@R]  send SIG (TERM, INT, USR1, USR2; default TERM) to', &
          '                       dynx itself at cycle N (tests of the signal path); MPI:', &
          '                       @R only on rank R (default every rank)', &
-         '  --ignore-unknown     unknown keywords are warnings, not errors', &
+         '  --ignore-unknown     skip unknown output requests and performance controls', &
+         '                       with a warning (any other unknown keyword still stops)', &
          '  --energy-guard W,S   dynx''s energy guard (not ENDENG): the energy ratio', &
          '                       (glstat) is checked every cycle; a warning once when it', &
          '                       leaves 1 +- W, a stop (exit 3, failure dump) when it', &
@@ -163,8 +201,10 @@ contains
          '  -h, --help           this text', &
          '', &
          'exit codes: 0 normal termination, 2 input error, 3 numerical failure in the run,', &
-         '            4 I/O failure, 5 stopped with a restart dump (SIGTERM, SIGINT, walltime)', &
-         'signals: SIGTERM/SIGINT dump and stop (exit 5); SIGUSR1 dumps and goes on'
+         '            4 I/O failure, 5 stopped with a restart dump (SIGTERM, SIGINT, SIGUSR2,', &
+         '            walltime)', &
+         'signals: SIGTERM/SIGINT/SIGUSR2 dump and stop (exit 5); SIGUSR1 dumps and goes on;', &
+         '         under mpirun send SIGUSR2 (mpirun forwards it; it kills the job on SIGTERM)'
    end subroutine usage
 
    !> The wall-clock limit: the smaller of --walltime and what SLURM_JOB_END_TIME (Unix
@@ -235,8 +275,9 @@ contains
       case ('TERM', 'SIGTERM'); sig = SIGTERM_NUM
       case ('INT', 'SIGINT'); sig = SIGINT_NUM
       case ('USR1', 'SIGUSR1'); sig = SIGUSR1_NUM
+      case ('USR2', 'SIGUSR2'); sig = SIGUSR2_NUM
       case default
-         call die_usage('--raise-at-cycle: signal '//name//' is not one of TERM, INT, USR1')
+         call die_usage('--raise-at-cycle: signal '//name//' is not one of TERM, INT, USR1, USR2')
       end select
    end subroutine parse_raise
 

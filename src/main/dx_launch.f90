@@ -13,7 +13,7 @@ module dx_launch
    use dx_solver, only: make_integrator, integrator_choice, run_driver
    use dx_par_restart, only: par_restart_precheck
    use dx_restart_deck, only: apply_restart_deck
-   use dx_signals, only: signals_install
+   use dx_signals, only: signal_stop_requested, signal_name
    use dx_par, only: par_init, par_finalize, par_rank
    use dx_par_agree, only: par_agree
    use dx_domain, only: domain_t
@@ -25,13 +25,13 @@ module dx_launch
 
 contains
 
-   !> Signals (before MPI_Init, so a SIGTERM during the start-up is a request too), MPI when
-   !> started by mpirun/srun; ranks > 0 print no info or warnings.
+   !> MPI when started by mpirun/srun; ranks > 0 print no info or warnings. The signal
+   !> handlers are the main program's first statement (before MPI_Init and the deck, so a
+   !> SIGTERM during the start-up is a request too, polled once per cycle; MPI: folded into
+   !> the dt reduction, every rank acts together).
    subroutine launch_start(cli)
       type(cli_t), intent(inout) :: cli
       type(error_t), allocatable :: error
-      ! polled once per cycle (MPI: folded into the dt reduction, every rank acts together)
-      if (.not. cli%check_only) call signals_install()
       call par_init(error)
       if (allocated(error)) call die(error)
       if (par_rank() > 0) call log_set_quiet(.true.)
@@ -44,9 +44,22 @@ contains
       type(model_t), intent(inout) :: model
       type(error_t), allocatable :: error
       character(:), allocatable :: name, why
+      integer :: sig
       call log_info('dynx: read '//cli%deck//': '//str(model%nn)//' nodes, '// &
          str(model%ne)//' elements, '//str(size(model%parts))//' parts, '// &
          str(size(model%blocks))//' element blocks, end time '//rstr(model%ctrl%endtim))
+      sig = signal_stop_requested()
+      if (sig /= 0 .and. cli%check_only) then      ! --check: nothing to dump; say so
+         call log_info('dynx: stopped by '//signal_name(sig)//' during --check (received '// &
+                       'while reading the deck); the check did not finish, nothing written')
+         call log_summary()
+         call par_finalize()
+         call exit_process(EXIT_CHECKPOINT)
+      else if (sig /= 0) then
+         call log_info('dynx: '//signal_name(sig)//' received during start-up (while '// &
+            'reading the deck): the run stops at the end of its first cycle with a '// &
+            'restart dump (exit 5)')
+      end if
       if (.not. cli%check_only) return
       call integrator_choice(model, name, why)
       call log_info('dynx: integrator: '//name//' ('//why//')')

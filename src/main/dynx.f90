@@ -11,6 +11,7 @@ program dynx
    use dx_domain, only: domain_t
    use dx_domain_mpi, only: domain_create
    use dx_cli, only: cli_t, parse_cli, die
+   use dx_signals, only: signals_install
    use dx_launch, only: launch_start, launch_check_only, launch_lock, launch_output, &
                         launch_run
    implicit none
@@ -21,9 +22,10 @@ program dynx
    type(error_t), allocatable :: error
    integer :: lock_fd
 
+   call signals_install()           ! first: a SIGTERM during start-up is a request, not a kill
    call parse_cli(cli)
    call launch_start(cli)
-   call read_deck(cli%deck, model, error, cli%ignore_unknown)
+   call read_deck(cli%deck, model, error, cli%ignore_unknown, cli%check_only)
    call par_agree(error)            ! MPI: a bad deck stops every rank together
    if (allocated(error)) call die(error)
    call launch_check_only(cli, model)           ! --check ends here

@@ -69,9 +69,16 @@ contains
          call set_error(error, 'fields SRC, SRP: Cowper-Symonds C and P must both be > 0 '// &
                         '(or both 0), got '//rstr(self%src)//', '//rstr(self%srp)); return
       end if
-      if (self%vp /= 0.0_wp) then
-         call set_field_error(error, 'VP', 'only VP = 0 (scale yield stress) is supported, got '// &
-                        rstr(self%vp)); return
+      ! VP chooses how the strain rate acts (0 scales the yield stress, 1 viscoplastic);
+      ! without rate effects (SRC = SRP = 0) it changes nothing, so any LS-DYNA value is
+      ! accepted there (LS-PrePost writes VP = 1)
+      if (self%vp /= 0.0_wp .and. self%src > 0.0_wp) then
+         call set_field_error(error, 'VP', 'VP = '//rstr(self%vp)//' (viscoplastic rate '// &
+            'effect) is not supported with SRC, SRP > 0: only VP = 0 (scale the yield '// &
+            'stress)'); return
+      end if
+      if (self%vp /= 0.0_wp .and. self%vp /= 1.0_wp .and. self%vp /= -1.0_wp) then
+         call set_field_error(error, 'VP', 'must be -1, 0 or 1, got '//rstr(self%vp)); return
       end if
       self%ep = self%e*self%etan/(self%e - self%etan)
       self%hv_eps_p = 1

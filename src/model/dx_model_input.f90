@@ -20,7 +20,7 @@ module dx_model_input
    !> node fields N1..N8 of an *ELEMENT_SOLID card (a family of fewer nodes repeats some)
    integer, parameter, public :: SOLID_CARD_NODES = 8
    public :: model_input_t, string_t, origin_t, label_list_t, segment_list_t, spc_in_t, &
-             motion_in_t, ivel_in_t, load_node_in_t, load_seg_in_t, wall_in_t, &
+             motion_in_t, ivel_in_t, out_note_t, set_step_in_t, set_gen_in_t, load_node_in_t, load_seg_in_t, wall_in_t, &
              IVEL_SET, IVEL_NODE, IVEL_GEN, add_node, add_element, origin, input_init
 
    integer, parameter :: IVEL_SET = 1   !< *INITIAL_VELOCITY
@@ -33,12 +33,34 @@ module dx_model_input
       character(:), allocatable :: key
    end type origin_t
 
+   !> an output request dynx accepts but does not honour with a file (what, file:line)
+   type :: out_note_t
+      character(:), allocatable :: s, where
+   end type out_note_t
+
    !> *SET_NODE_LIST / *SET_PART_LIST as read (labels)
    type :: label_list_t
       integer :: label = 0
       integer, allocatable :: ids(:)
       type(origin_t) :: src
    end type label_list_t
+
+   !> one step of a generated set: op ALL, NODE, PART, BOX, SET or RANGE (a leading D in
+   !> DNODE, DPART, DBOX, DSET: remove), ids the labels (RANGE: begin, end pairs)
+   type :: set_step_in_t
+      character(len=8) :: op = ''
+      integer, allocatable :: ids(:)
+      type(origin_t) :: src
+   end type set_step_in_t
+
+   !> *SET_NODE_GENERAL, *SET_NODE_LIST_GENERATE, *SET_PART_LIST_GENERATE as read: the
+   !> steps are applied in order after the whole deck is read (dx_read_sets sets_finish)
+   type :: set_gen_in_t
+      integer :: label = 0
+      logical :: nodes = .true.            !< a node set (else a part set)
+      type(set_step_in_t), allocatable :: steps(:)
+      type(origin_t) :: src
+   end type set_gen_in_t
 
    !> *SET_SEGMENT as read: (4, nseg) node labels, a triangle repeats n3
    type :: segment_list_t
@@ -132,6 +154,7 @@ module dx_model_input
       type(origin_t), allocatable :: curve_src(:)
       type(label_list_t), allocatable :: node_sets(:), part_sets(:)
       type(segment_list_t), allocatable :: segment_sets(:)
+      type(set_gen_in_t), allocatable :: set_gens(:)   !< generated sets (before sets_finish)
       ! --- boundary conditions, loads, initial conditions
       type(spc_in_t), allocatable :: spcs(:)
       type(motion_in_t), allocatable :: motions(:)
@@ -156,6 +179,7 @@ module dx_model_input
       type(contact_input_t) :: contact     !< *CONTACT_*, *CONTROL_CONTACT, *DATABASE_RCFORC
       type(restart_ctrl_t) :: rst          !< *DATABASE_BINARY_D3DUMP/RUNRSF
       type(emc_input_t) :: emc             !< conserving rigid-body contact (dx_emc_types)
+      type(out_note_t), allocatable :: out_notes(:)  !< output requests not written (a note each)
    end type model_input_t
 
 contains
@@ -168,7 +192,8 @@ contains
                inp%mat_src(0), inp%curves(0), inp%curve_src(0), inp%node_sets(0), &
                inp%part_sets(0), inp%segment_sets(0), inp%spcs(0), inp%motions(0), &
                inp%ivels(0), inp%node_loads(0), inp%seg_loads(0), inp%walls(0), &
-               inp%hist_nodes(0), inp%hist_node_sets(0), inp%eoss(0), inp%eos_src(0))
+               inp%hist_nodes(0), inp%hist_node_sets(0), inp%eoss(0), inp%eos_src(0), &
+               inp%out_notes(0), inp%set_gens(0))
       allocate(inp%body_loads(0), inp%rigid%inertias(0), inp%rigid%nrbs(0), &
                inp%rigid%extras(0), inp%rigid%motions(0))
       allocate(inp%node_label(0), inp%x(3, 0), inp%node_tc(0), inp%node_rc(0), &

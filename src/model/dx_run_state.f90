@@ -29,6 +29,9 @@ module dx_run_state
       integer :: nrunrsf = 0             !< running restart files written
       integer(8) :: glstat_bytes = 0     !< bytes in glstat
       integer(8) :: nodout_bytes = 0     !< bytes in nodout
+      !> dynx's energy guard (dx_solver): warned (0/1), the ratio's denominator and the
+      !> ratio at the last judged cycle, so a continued run judges as the uninterrupted one
+      real(wp) :: guard(3) = 0.0_wp
    end type run_state_t
 
    !> *DATABASE_BINARY_D3DUMP / *DATABASE_BINARY_RUNRSF requests (0: none)

@@ -2,7 +2,7 @@
 !> boundary (the state a dump holds, see dx_restart):
 !>  - *DATABASE_BINARY_RUNRSF every CYCL cycles: runrsf.h5 (NR > 1: runrsf01..NR.h5 in
 !>    rotation), *DATABASE_BINARY_D3DUMP every CYCL cycles: d3dump01.h5, d3dump02.h5, ...
-!>  - SIGUSR1: a d3dump now, and go on; SIGTERM/SIGINT: a d3dump, the last plot state,
+!>  - SIGUSR1: a d3dump now, and go on; SIGTERM/SIGINT/SIGUSR2: a d3dump, the last plot state,
 !>    stop (exit code 5, EXIT_CHECKPOINT) with the command that continues the run;
 !>  - the wall-clock limit (--walltime, or SLURM_JOB_END_TIME): stop like SIGTERM when the
 !>    time left is below the safety margin 3*(time per cycle) + 2*(dump + plot-state cost),
@@ -12,7 +12,7 @@
 !>    by the solver), stop like SIGTERM but with exit code 3 (numerical failure).
 !> A numerical failure in the middle of a cycle writes a d3dump marked as not restartable.
 !> MPI runs (dx_par_restart): a signal may reach one rank or all, and each rank has its own
-!> clock, so the decision is collective: each rank's requests (stop signal, SIGUSR1, its
+!> clock, so the decision is collective: each rank's requests (stop signal, SIGUSR1 count, its
 !> wall-clock limit) ride in the cycle's dt reduction (the domain's reduce_dt calls poll:
 !> MINLOC plus the largest flag, one MPI_Allreduce, no extra synchronization) and every rank
 !> acts on the reduced flags at the same cycle boundary; dumps and the last plot state are
@@ -31,7 +31,7 @@ module dx_checkpoint
    use dx_par, only: par_allreduce, PAR_MAX
    use dx_domain, only: domain_t, requests_t
    use dx_signals, only: signal_stop_requested, signal_dump_requested, signal_name, &
-                         signal_raise
+                         signal_raise, signal_dump_count, signal_dump_served, signal_dump_serve
    implicit none
    private
    public :: checkpoint_t, checkpoint_stage, checkpoint_failure_dump, checkpoint_energy_band, &
@@ -117,7 +117,10 @@ contains
          end if
       end if
       if (coll) then             ! the requests of every rank, reduced with this cycle's dt
-         dumpreq = ck%coll(2) /= 0
+         ! coll(2): the largest SIGUSR1 count of any rank; one signal forwarded to every
+         ! rank (arriving in different cycles) raises it once, so it is one dump
+         dumpreq = ck%coll(2) > signal_dump_served()
+         if (dumpreq) call signal_dump_serve(ck%coll(2))
          ck%coll(2) = 0
       else
          dumpreq = signal_dump_requested()
@@ -198,14 +201,13 @@ contains
       associate (ck => self)
       flags = 0
       flags(1) = signal_stop_requested()
-      if (signal_dump_requested()) flags(2) = 1
-      if (ck%walltime > 0.0_wp) then
+      flags(2) = signal_dump_count()             ! served when the reduced count exceeds
+      if (ck%walltime > 0.0_wp) then             ! the count already served
          now = wall_time()
          est = ck%dump_cost
          if (est < 0.0_wp) est = max(ck%dump_est, 0.05_wp)
          if (now - ck%wall0 + 3.0_wp*ck%cycle_cost + 2.0_wp*est >= ck%walltime) flags(3) = 1
       end if
-      flags(2) = max(flags(2), ck%coll(2))       ! a request not yet served stays
       end associate
    end subroutine checkpoint_poll
 
@@ -223,15 +225,15 @@ contains
          call signal_raise(ck%raise_sig)
       flags = 0
       flags(1) = signal_stop_requested()
-      if (signal_dump_requested()) flags(2) = 1
+      flags(2) = signal_dump_count()
       if (ck%walltime > 0.0_wp) then
          now = wall_time()
          est = ck%dump_cost
          if (est < 0.0_wp) est = estimated_dump_cost(model)
          if (now - ck%wall0 + 3.0_wp*ck%cycle_cost + 2.0_wp*est >= ck%walltime) flags(3) = 1
       end if
-      flags(2) = max(flags(2), ck%coll(2))       ! a request not yet served stays
       call par_allreduce(flags, PAR_MAX)
+      if (flags(2) <= signal_dump_served()) flags(2) = 0   ! every SIGUSR1 already served
       ck%coll = flags
    end subroutine checkpoint_requests
 

@@ -8,7 +8,7 @@ module dx_emc_run
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_NUMERIC, EXIT_IO
    use dx_strings, only: str, rstr
-   use dx_log, only: log_info
+   use dx_log, only: log_info, log_warn
    use dx_timer, only: wall_time
    use dx_model, only: model_t
    use dx_output, only: output_t
@@ -35,6 +35,7 @@ module dx_emc_run
                   next_plot = 0.0_wp, t0wall = 0.0_wp
       real(wp), allocatable :: lb(:, :)
       integer :: u = -1, cyc = 0, ncut = 0, itmax = 0, ittot = 0
+      integer :: ntunnel = 0                !< steps with missed contact (tunnelling) warned
       logical :: wr = .false.
       character(:), allocatable :: outdir
       type(error_t), allocatable :: ioerr   !< a plot-file error: the run ends with it
@@ -139,6 +140,7 @@ contains
             call par_emc_set_together(dom%emc)     ! every rank failed at this step (same data)
             return
          end if
+         if (rep%tun_def > 0) call warn_tunnel(self, model, cyc + 1, t, h)
          cyc = cyc + 1
          t = t + h
          model%cycle = cyc   ! (the state at the end of this step; c_advance sets them too)
@@ -212,6 +214,43 @@ contains
       if (self%wr) call out%close(ioerr)
       if (allocated(ioerr) .and. .not. allocated(error)) call move_alloc(ioerr, error)
    end subroutine c_close
+
+   !> Contact missed in step cyc (t -> t + h): a slave point passed through the master
+   !> surface with no pair (dx_emc_contact, emc_find_tunnel). Warned for the first 10 steps
+   !> where it happens, then once that further ones are not shown.
+   subroutine warn_tunnel(self, model, cyc, t, h)
+      class(conserving_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: cyc
+      real(wp), intent(in) :: t, h
+      character(:), allocatable :: who, what
+      associate (es => model%emc, rep => self%rep)
+         self%ntunnel = self%ntunnel + 1
+         if (self%ntunnel > 10) then
+            if (self%ntunnel == 11) call log_warn('emc: more steps with missed contact '// &
+               '(tunnelling); further warnings are not shown')
+            return
+         end if
+         associate (d => es%defs(rep%tun_def), bodies => model%rigid%bodies)
+            if (rep%tun_src > 0) then
+               who = 'slave node '//str(model%node_label(es%sn_node(rep%tun_src)))// &
+                     ' (part '//str(bodies(d%sb)%label)//')'
+            else
+               who = 'the slave sphere of part '//str(bodies(d%sb)%label)
+            end if
+            if (rep%tun_facet > 0) then
+               what = 'through a face of master part '//str(bodies(d%mb)%label)
+            else
+               what = 'through the master sphere of part '//str(bodies(d%mb)%label)
+            end if
+            call log_warn('emc: *DYNX_CONSERVING_CONTACT '//str(d%cid)//': '//who// &
+               ' passed '//what//' in step '//str(cyc)//' (time '//rstr(t)//' to '// &
+               rstr(t + h)//') with no contact force: tunnelling, the step DT0 = '// &
+               rstr(h)//' is too long for the approach speed (reduce DT0, '// &
+               '*CONTROL_IMPLICIT_GENERAL)')
+         end associate
+      end associate
+   end subroutine warn_tunnel
 
    !> Whether this step boundary may write a restart dump or stop (checkpoint_stage): only
    !> then are the model's nodes and the snapshot brought up to date.

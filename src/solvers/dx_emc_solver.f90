@@ -24,6 +24,7 @@ module dx_emc_solver
    use dx_model, only: model_t
    use dx_dense_solve, only: dense_solve
    use dx_emc_types, only: emc_system_t, EMC_LAGRANGE
+   use dx_emc_contact, only: emc_find_tunnel
    use dx_emc_contact, only: emc_kin_t, emc_pair_t, emc_select_pairs, emc_contact_forces, &
                              emc_inv3, emc_same_plane, emc_split_t, emc_pairs_pack, &
                              emc_pairs_unpack
@@ -54,6 +55,9 @@ module dx_emc_solver
    !> what the last step's Newton did
    type :: newton_report_t
       integer :: iters = 0, npair = 0
+      !> tunnelling in the step (dx_emc_contact's emc_find_tunnel): contact definition
+      !> (0: none), slave point (index into es%snodes, 0: sphere centre), master facet
+      integer :: tun_def = 0, tun_src = 0, tun_facet = 0
       real(wp) :: resid = 0.0_wp
       character(:), allocatable :: msg
    end type newton_report_t
@@ -478,6 +482,8 @@ contains
       st%upen = upen1
       st%ediss = st%ediss + dis
       rep%npair = npair
+      ! contact the step missed: a slave path through a master surface with no pair
+      call emc_find_tunnel(es, k, pairs, npair, rep%tun_def, rep%tun_src, rep%tun_facet)
       st%act = pack(pairs(1:npair), pairs(1:npair)%g1 < 0.0_wp .and. pairs(1:npair)%il == 0)
    contains
       subroutine number_multipliers(list, m, cnt)
@@ -518,6 +524,9 @@ contains
       call emc_step(es, st, 0.5_wp*dt, level + 1, r2, ok, ncut, split)
       rep%iters = rep%iters + r2%iters
       rep%resid = max(rep%resid, r2%resid)
+      if (rep%tun_def == 0) then
+         rep%tun_def = r2%tun_def; rep%tun_src = r2%tun_src; rep%tun_facet = r2%tun_facet
+      end if
       if (.not. ok) rep = r2
    end subroutine emc_step
 

@@ -73,6 +73,11 @@ contains
       guard = opts%guard
       call integ%start(model, dom, opts, ck, out, error)
       if (allocated(error)) return
+      if (model%cycle > 0) then       ! a restart: the guard's state too (dx_restart)
+         guard%warned = model%run%guard(1) /= 0.0_wp
+         guard%den_prev = model%run%guard(2)
+         guard%r_prev = model%run%guard(3)
+      end if
       call log_info('dynx: integrator: '//integ%name//' ('//integ%why//')')
       if (integ%energies) call guard_bounds(guard)
       t0wall = wall_time()
@@ -97,6 +102,7 @@ contains
          ! ---- the energy guard, after this cycle's glstat record (MPI: every rank has the
          ! summed ratio and stops with the others)
          if (integ%energies) call guard_check(guard, model, integ%t, error)
+         model%run%guard = [merge(1.0_wp, 0.0_wp, guard%warned), guard%den_prev, guard%r_prev]
          if (allocated(error)) then
             call integ%close(model, dom, ck, out, END_FAILED, error); return
          end if

@@ -169,10 +169,11 @@ contains
       character(*), intent(in) :: line
       character(:), allocatable, intent(out) :: toks(:)
       integer, intent(out) :: n
-      integer :: i, j, l, maxlen
+      integer :: i, j, l, k
+      integer, allocatable :: b(:, :)     ! first and last column of each token
       l = len_trim(line)
+      allocate(b(2, l/2 + 1))
       n = 0
-      maxlen = 1
       i = 1
       do while (i <= l)
          if (is_space(line(i:i))) then
@@ -185,25 +186,12 @@ contains
             j = j + 1
          end do
          n = n + 1
-         maxlen = max(maxlen, j - i + 1)
+         b(:, n) = [i, j]
          i = j + 1
       end do
-      allocate(character(maxlen) :: toks(n))
-      n = 0
-      i = 1
-      do while (i <= l)
-         if (is_space(line(i:i))) then
-            i = i + 1
-            cycle
-         end if
-         j = i
-         do while (j < l)
-            if (is_space(line(j + 1:j + 1))) exit
-            j = j + 1
-         end do
-         n = n + 1
-         toks(n) = line(i:j)
-         i = j + 1
+      allocate(character(max(1, maxval(b(2, 1:n) - b(1, 1:n) + 1))) :: toks(n))
+      do k = 1, n
+         toks(k) = line(b(1, k):b(2, k))
       end do
    contains
       pure logical function is_space(c)

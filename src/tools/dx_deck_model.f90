@@ -16,13 +16,14 @@ contains
 
    !> Read the deck at path into model (x0, v0, blocks, parts, ...; the solver allocates
    !> x, v, f, mass). Unknown keywords are errors unless ignore_unknown (then warnings).
-   subroutine read_deck(path, model, error, ignore_unknown)
+   !> check (--check): every unknown keyword and unsupported option at once (dx_deck).
+   subroutine read_deck(path, model, error, ignore_unknown, check)
       character(*), intent(in) :: path
       type(model_t), intent(out) :: model
       type(error_t), allocatable, intent(out) :: error
-      logical, intent(in), optional :: ignore_unknown
+      logical, intent(in), optional :: ignore_unknown, check
       type(model_input_t) :: inp
-      call read_deck_input(path, inp, error, ignore_unknown)
+      call read_deck_input(path, inp, error, ignore_unknown, check)
       if (allocated(error)) return
       model%deck_file = path
       model%deck_files = inp%files

@@ -16,19 +16,22 @@ program dynx_compare
    type(error_t), allocatable :: error
    character(:), allocatable :: arg, gold, test, tolfile
    integer :: i, n
-   logical :: verbose
+   logical :: verbose, skip
 
    verbose = .false.
+   skip = .false.
    n = command_argument_count()
-   i = 0
-   do while (i < n)
-      i = i + 1
-      arg = get_arg(i)
+   do i = 1, n
+      if (skip) then       ! the value of the option before
+         skip = .false.
+         cycle
+      end if
+      arg = command_arg(i)
       select case (arg)
       case ('--tol')
          if (i == n) call usage('--tol needs a file')
-         i = i + 1
-         tolfile = get_arg(i)
+         tolfile = command_arg(i + 1)
+         skip = .true.
       case ('--verbose', '-v')
          verbose = .true.
       case ('-h', '--help')
@@ -57,12 +60,6 @@ program dynx_compare
    if (.not. report%passed()) call sys_exit(1)
 
 contains
-
-   function get_arg(k) result(s)
-      integer, intent(in) :: k
-      character(:), allocatable :: s
-      s = command_arg(k)
-   end function get_arg
 
    subroutine usage(msg)
       character(*), intent(in) :: msg

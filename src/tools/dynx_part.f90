@@ -34,19 +34,18 @@ program dynx_part
    ignore_unknown = .false.
    verify = .false.
    n = command_argument_count()
-   i = 0
-   do while (i < n)
-      i = i + 1
-      arg = get_arg(i)
+   i = 1
+   do while (i <= n)
+      arg = command_arg(i)
       select case (arg)
       case ('-h', '--help')
          call usage(); stop
       case ('-n', '--nprocs')
-         i = i + 1; val = get_arg(i)
+         val = option_value(i)
          read(val, *, iostat=ios) np
          if (ios /= 0 .or. np < 1) call die_usage('-n needs a positive integer, got '//val)
       case ('-o', '--outdir')
-         i = i + 1; outdir = get_arg(i)
+         outdir = option_value(i)
       case ('--ignore-unknown')
          ignore_unknown = .true.
       case ('--verify')
@@ -55,6 +54,7 @@ program dynx_part
          if (arg(1:1) == '-' .or. len(deck) > 0) call die_usage('unknown argument '//arg)
          deck = arg
       end select
+      i = i + 1
    end do
    if (len(deck) == 0) call die_usage('no input deck: dynx-part deck.k -n NP [-o DIR]')
    if (np < 1) call die_usage('no number of ranks: dynx-part deck.k -n NP [-o DIR]')
@@ -190,12 +190,14 @@ contains
          ' node-rank pairs)')
    end subroutine verify_files
 
-   function get_arg(k) result(a)
-      integer, intent(in) :: k
+   !> The value of the option at i: the next argument (i moves to it); none is a usage error.
+   function option_value(i) result(a)
+      integer, intent(inout) :: i
       character(:), allocatable :: a
-      if (k > command_argument_count()) call die_usage('missing value after the last option')
-      a = command_arg(k)
-   end function get_arg
+      i = i + 1
+      if (i > command_argument_count()) call die_usage('missing value after the last option')
+      a = command_arg(i)
+   end function option_value
 
    subroutine usage()
       write(output_unit, '(a)') &

@@ -225,16 +225,37 @@ contains
    subroutine test_unknown_keyword()
       type(model_input_t) :: inp
       type(error_t), allocatable :: err
-      call write_file('u.k', '*KEYWORD'//nl//'*FOO_BAR'//nl//'1,2,3'//nl// &
+      call write_file('u.k', '*KEYWORD'//nl//'*DATABASE_FOO_BAR'//nl//'1,2,3'//nl// &
                       '*CONTROL_TERMINATION'//nl//'1.0')
       call read_deck_input(dir//'/u.k', inp, err)
       call check(allocated(err), 'unknown keyword is an error')
-      if (allocated(err)) call check_has(err%message, 'u.k:2: unknown keyword *FOO_BAR', &
+      if (allocated(err)) call check_has(err%message, 'u.k:2: unknown keyword *DATABASE_FOO_BAR', &
                                          'unknown keyword message')
+      if (allocated(err)) call check_has(err%message, 'dynx --check lists every', &
+                                         'unknown keyword: hint to --check')
       call log_set_quiet(.true.)
       call read_deck_input(dir//'/u.k', inp, err, ignore_unknown=.true.)
-      call check(.not. allocated(err), 'unknown keyword ignored on request')
+      call check(.not. allocated(err), 'unknown output keyword ignored on request')
       call check_close(inp%ctrl%endtim, 1.0_wp, 0.0_wp, 0.0_wp, 'reading goes on after it')
+      ! a load, a material, a *CASE are never skipped: the deck would be another problem
+      call write_file('u2.k', '*KEYWORD'//nl//'*LOAD_FOO_BAR'//nl//'1,2,3'//nl// &
+                      '*CONTROL_TERMINATION'//nl//'1.0'//nl//'*CASE_BEGIN_1'//nl// &
+                      '*LOAD_FOO_BAR'//nl//'1,2,3'//nl//'*DATABASE_FOO_BAR'//nl//'1')
+      call read_deck_input(dir//'/u2.k', inp, err, ignore_unknown=.true.)
+      call check(allocated(err), 'unknown load keyword not skipped by ignore_unknown')
+      if (allocated(err)) call check_has(err%message, 'u2.k:2: unknown keyword *LOAD_FOO_BAR: '// &
+         'a load keyword is not skipped', 'unknown load: message names the family')
+      ! --check: all of them at once, grouped, with first use and count
+      call read_deck_input(dir//'/u2.k', inp, err, check=.true.)
+      call check(allocated(err), 'check: findings are an error')
+      if (allocated(err)) then
+         call check_has(err%message, '3 unknown keyword(s)', 'check: count of findings')
+         call check_has(err%message, 'load:', 'check: load family heading')
+         call check_has(err%message, 'u2.k:2  (2 times)', 'check: first use and count')
+         call check_has(err%message, '*CASE_BEGIN_1', 'check: case keyword listed')
+         call check_has(err%message, 'output:', 'check: output family heading')
+         call check(err%code == 2, 'check: exit code 2')
+      end if
    end subroutine test_unknown_keyword
 
    function full_deck() result(s)

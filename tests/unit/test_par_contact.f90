@@ -10,7 +10,7 @@ program test_par_contact
    use dx_model, only: model_t
    use dx_model_input, only: model_input_t
    use dx_deck, only: read_deck_input
-   use dx_model_build, only: build_model
+   use dx_model_build, only: build_model_data
    use dx_contact_build, only: build_contact
    use dx_explicit, only: init_state
    use dx_contact, only: contact_forces, contact_search_nodes, contact_assemble, contact_dt, &
@@ -38,7 +38,7 @@ contains
       call read_deck_input(deck, inp, err)
       if (allocated(err)) error stop 'cannot read the deck'
       model%deck_file = deck
-      call build_model(inp, model, err)
+      call build_model_data(inp, model, err)
       if (allocated(err)) error stop 'cannot build the model'
       call build_contact(inp, model, err)
       if (allocated(err)) error stop 'cannot build the contact'

@@ -11,7 +11,7 @@ program test_partition
    use dx_model, only: model_t, spc_t, load_segment_t
    use dx_model_input, only: model_input_t
    use dx_deck, only: read_deck_input
-   use dx_model_build, only: build_model
+   use dx_model_build, only: build_model_data
    use dx_partition, only: partition_t, rank_part_t, element_graph, condense_groups, &
                            partition_elements, partition_model, rank_part, face_elements, &
                            scatter_keys, write_report
@@ -273,7 +273,7 @@ contains
       integer(int64) :: st
       write(*, '(a)') 'serial order emulation (taylor_simo, NP = 3)'
       call read_deck_input(DECK, inp, error)
-      if (.not. allocated(error)) call build_model(inp, model, error)
+      if (.not. allocated(error)) call build_model_data(inp, model, error)
       call check(.not. allocated(error), 'read and build '//DECK)
       if (allocated(error)) return
       call scatter_keys(model, keys)
@@ -504,7 +504,7 @@ contains
       call read_deck_input(DECK, inp, error)
       call check(.not. allocated(error), 'read '//DECK)
       if (allocated(error)) return
-      call build_model(inp, model, error)
+      call build_model_data(inp, model, error)
       call deck_content_hash(inp%files, hash, error)
       call deck_content_hash(inp%files, hash_again, error)
       call check(hash == hash_again, 'deck content hash is reproducible')

@@ -13,6 +13,8 @@ program test_plot_part
    use dx_io_sys, only: sys_mkdir_p
    use dx_plot_part, only: plot_part_t, plot_combine, plot_part_truncate, plot_part_name, &
                            plot_part_state_name, plot_part_count
+   use dx_plot_fields, only: plot_state_t, plot_state_alloc, F_COORD, F_VEL, F_STRESS, F_EPSP, &
+                             F_FAILED
    use dx_assert, only: check, check_close, assert_summary
    implicit none
    character(*), parameter :: TMP = 'build/test_plot_part.tmp'
@@ -55,10 +57,10 @@ program test_plot_part
       nd = [(i, i = 1, 8)]
       call p%resume(TMP, 0, 2, error)
       call check(.not. allocated(error) .and. p%nstates == 2, 'rank 0 resumed after 2 states')
-      call p%write_state(1.0_wp, x0(:, nd) + spread([1.0_wp, 2.0_wp, 3.0_wp], 2, 8), &
-                         spread([-1.0_wp, 0.0_wp, 0.0_wp], 2, 8), &
+      call p%write_state(part_state(1.0_wp, x0(:, nd) + spread([1.0_wp, 2.0_wp, 3.0_wp], 2, &
+                         8), spread([-1.0_wp, 0.0_wp, 0.0_wp], 2, 8), &
                          reshape([300.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], [6, 1]), &
-                         [0.03_wp], [0], error)
+                         [0.03_wp], [0]), error)
       call check(.not. allocated(error) .and. p%nstates == 3, 'state 3 written again')
       call p%close(error)
       call plot_part_truncate(TMP, 1, 2, error)   ! rank 1 is at 2 already: no change
@@ -141,16 +143,30 @@ contains
             else
                s(:, 1) = [0.0_wp, 0.0_wp, 0.0_wp, 10.0_wp*k, 0.0_wp, 0.0_wp]    ! shear
             end if
-            call p%write_state(t, x0(:, nodes) + t*spread([1.0_wp, 2.0_wp, 3.0_wp], 2, &
-                               size(nodes)), spread([-1.0_wp, 0.0_wp, real(r, wp)], 2, &
-                               size(nodes)), s, [0.01_wp*k], [merge(1, 0, k == 3 .and. &
-                               e1 == 2)], err)
+            call p%write_state(part_state(t, x0(:, nodes) + t*spread([1.0_wp, 2.0_wp, &
+                               3.0_wp], 2, size(nodes)), spread([-1.0_wp, 0.0_wp, &
+                               real(r, wp)], 2, size(nodes)), s, [0.01_wp*k], &
+                               [merge(1, 0, k == 3 .and. e1 == 2)]), err)
             call check(.not. allocated(err), 'write state')
          end do
          call p%close(err)
          call check(.not. allocated(err), 'close part')
       end do
    end subroutine write_parts
+
+   !> A rank's part state (the schema's part fields) from its arrays.
+   function part_state(t, x, v, s, epsp, failed) result(st)
+      real(wp), intent(in) :: t, x(:, :), v(:, :), s(:, :), epsp(:)
+      integer, intent(in) :: failed(:)
+      type(plot_state_t) :: st
+      call plot_state_alloc(st, size(x, 2), size(s, 2), part=.true.)
+      st%time = t
+      st%f(F_COORD)%r = x
+      st%f(F_VEL)%r = v
+      st%f(F_STRESS)%r = s
+      st%f(F_EPSP)%r(1, :) = epsp
+      st%f(F_FAILED)%r(1, :) = real(failed, wp)
+   end function part_state
 
    subroutine copy_part(from, to, r)
       character(*), intent(in) :: from, to

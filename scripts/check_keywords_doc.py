@@ -1,0 +1,136 @@
+#!/usr/bin/python3
+"""Check that docs/keywords.md lists every keyword dynx reads, and nothing else.
+
+  scripts/check_keywords_doc.py          compare; exit 1 on a difference, printing it
+  scripts/check_keywords_doc.py --list   print the keywords dynx reads, one per line
+
+The keywords dynx reads are
+  - the registry (src/deck/dx_deck_registry.f90): every `reg%add('NAME', ...)` in src/deck/,
+    plus the rows of the material and EOS registry (src/materials/dx_mat_factory.f90,
+    mat_row/eos_row) that register_materials (src/deck/dx_read_materials.f90) adds with their
+    numeric alias (*MAT_001, *EOS_004); *MAT_RIGID (generic = .false.) registers itself;
+  - the deck-structure keywords the card reader handles itself (src/deck/dx_deck_cards.f90):
+    KEYWORD, TITLE, INCLUDE, PARAMETER, END (each must still appear there as 'NAME').
+
+The document side is the table under the heading "## Keyword index" in docs/keywords.md:
+one row per keyword (or per keyword and its aliases); the first cell names one or more keywords
+as `*NAME`. Every keyword dynx reads must be named in a row, and every keyword named in a row
+must be one dynx reads. A `reg%add(` whose name the script cannot parse is an error, so the
+check cannot silently pass over a new form of registration.
+"""
+import os
+import re
+import sys
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..'))
+DECK = os.path.join(ROOT, 'src', 'deck')
+FACTORY = os.path.join(ROOT, 'src', 'materials', 'dx_mat_factory.f90')
+DOC = os.path.join(ROOT, 'docs', 'keywords.md')
+STRUCTURE = ['KEYWORD', 'TITLE', 'INCLUDE', 'PARAMETER', 'END']
+# the two dynamic registrations of register_materials (dx_read_materials.f90)
+DYNAMIC = ["trim(t(i)%keyword)", "'MAT_'//num", "'EOS_'//num"]
+
+
+def strip_comment(line):
+    out, q = [], None
+    for ch in line:
+        if q:
+            if ch == q:
+                q = None
+        elif ch in "'\"":
+            q = ch
+        elif ch == '!':
+            break
+        out.append(ch)
+    return ''.join(out)
+
+
+def registered():
+    """The keywords dynx reads, and a list of problems met while collecting them."""
+    names, problems = set(), []
+    for fn in sorted(os.listdir(DECK)):
+        if not fn.endswith('.f90'):
+            continue
+        path = os.path.join(DECK, fn)
+        with open(path) as f:
+            for no, line in enumerate(f, 1):
+                code = strip_comment(line)
+                m = re.search(r'%add\(\s*(.*)$', code)
+                if not m or fn == 'dx_deck_registry.f90':
+                    continue
+                arg = m.group(1)
+                lit = re.match(r"'([A-Z0-9_]+)'\s*,", arg)
+                if lit:
+                    names.add(lit.group(1))
+                elif not any(arg.startswith(d) for d in DYNAMIC):
+                    problems.append('%s:%d: cannot read the keyword name of: %s'
+                                    % (os.path.relpath(path, ROOT), no, code.strip()))
+    with open(FACTORY) as f:
+        text = f.read()
+    rows = re.findall(r"\b(mat|eos)_row\(\s*'([A-Z0-9_]+)'\s*,\s*(\d+)\s*,\s*\d+\s*(?:,\s*\.(true|false)\.)?",
+                      text)
+    if not rows:
+        problems.append('%s: no mat_row/eos_row found' % os.path.relpath(FACTORY, ROOT))
+    for kind, name, num, generic in rows:
+        if kind == 'mat' and generic == 'false':
+            continue        # registers itself with its own reader (found above)
+        names.add(name)
+        names.add('%s_%03d' % ('MAT' if kind == 'mat' else 'EOS', int(num)))
+    with open(os.path.join(DECK, 'dx_deck_cards.f90')) as f:
+        cards = f.read()
+    for name in STRUCTURE:
+        if "'%s'" % name in cards:
+            names.add(name)
+        else:
+            problems.append("src/deck/dx_deck_cards.f90: '%s' no longer handled by the card "
+                            "reader: update STRUCTURE in scripts/check_keywords_doc.py" % name)
+    return names, problems
+
+
+def documented():
+    """Keywords named in the first cell of the rows of the "## Keyword index" table."""
+    names, rows, inside = {}, 0, False
+    with open(DOC) as f:
+        for no, line in enumerate(f, 1):
+            if line.startswith('## '):
+                inside = line.startswith('## Keyword index')
+                continue
+            if not inside or not line.startswith('|'):
+                continue
+            first = line.split('|')[1]
+            if set(first.strip()) <= set('-: '):
+                continue
+            found = re.findall(r'`\*([A-Z0-9_]+)`', first)
+            if not found:
+                continue        # the header row
+            rows += 1
+            for name in found:
+                names.setdefault(name, no)
+    return names, rows
+
+
+def main():
+    reg, problems = registered()
+    if '--list' in sys.argv[1:]:
+        print('\n'.join(sorted(reg)))
+        return 0
+    doc, rows = documented()
+    if rows == 0:
+        problems.append('docs/keywords.md: no "## Keyword index" table with `*KEYWORD` rows')
+    for name in sorted(reg - set(doc)):
+        problems.append('docs/keywords.md: keyword *%s is read by dynx but has no row in the '
+                        'Keyword index' % name)
+    for name in sorted(set(doc) - reg):
+        problems.append('docs/keywords.md:%d: *%s has a row in the Keyword index but dynx does not '
+                        'read it (not in the registry)' % (doc[name], name))
+    for p in problems:
+        print(p)
+    print('keywords: %d read by dynx, %d named in %d rows of docs/keywords.md'
+          % (len(reg), len(doc), rows))
+    fail = 1 if problems else 0
+    print('%d passed, %d failed' % (1 - fail, fail))
+    return fail
+
+
+if __name__ == '__main__':
+    sys.exit(main())
