@@ -12,7 +12,9 @@ module dx_model_build
    use dx_error, only: error_t, set_error
    use dx_strings, only: str, rstr
    use dx_model, only: model_t, part_t, family_t, element_family, elem_volume, etype_of_elform, &
-                       solid_shape, MAX_NEN, ES_WORK, ES_HGS
+                       solid_shape, MAX_NEN, ES_WORK, ES_HGS, elem_quality, ASPECT_WARN, &
+                       WARP_WARN
+   use dx_log, only: log_warn
    use dx_model_input, only: model_input_t, origin_t
    use dx_label_map, only: label_map_t
    use dx_build_common, only: maps_t, at, at_line, set_nodes, curve_index, node_index, &
@@ -269,9 +271,12 @@ contains
       type(family_t) :: fam
       logical :: ok
       real(wp), allocatable :: vol(:)
-      real(wp) :: hb(3), hm
+      real(wp) :: hb(3), hm, asp, warp, cj
+      integer :: kc, nasp, nwarp, nfold
+      integer, parameter :: NLIST = 10      ! elements named per kind of warning
       character(:), allocatable :: w
       ne = inp%ne
+      nasp = 0; nwarp = 0; nfold = 0
       model%ne = ne
       allocate(conn(MAX_NEN, ne), vol(ne), etyp(ne), grp(ne), model%elem_part(ne), &
                model%elem_block(ne), model%elem_pos(ne))
@@ -340,8 +345,36 @@ contains
                   '(volume '//rstr(vol(e))//'; flat or collapsed: check its nodes N1..N8)')
                return
             end if
+            ! shape (elem_quality; bounds in docs/extreme-cases.md, "Geometry checks"): a
+            ! folded corner, a thin or a warped element is a warning (one-point elements run
+            ! with them, as in LS-DYNA; a negative total volume is the error above)
+            call elem_quality(etype, model%x0(:, conn(1:nen, e)), vol(e), asp, warp, cj, kc)
+            if (kc > 0 .and. .not. (cj > 0.0_wp)) then
+               nfold = nfold + 1
+               if (nfold <= NLIST) call log_warn(w//'element '//str(lab)// &
+                  ' is folded at node '//str(inp%elem_conn(kc, e))//' (N'//str(kc)// &
+                  ') at t = 0 (corner Jacobian '//rstr(cj)//' V <= 0: locally inverted)')
+            end if
+            if (asp > ASPECT_WARN) then
+               nasp = nasp + 1
+               if (nasp <= NLIST) call log_warn(w//'element '//str(lab)//': aspect ratio '// &
+                  rstr(asp)//' (longest edge / time-step length) above '//rstr(ASPECT_WARN)// &
+                  ': the thin direction sets the time step')
+            end if
+            if (warp > WARP_WARN) then
+               nwarp = nwarp + 1
+               if (nwarp <= NLIST) call log_warn(w//'element '//str(lab)//': a face is warped by '// &
+                  rstr(warp)//' degrees (above '//rstr(WARP_WARN)//')')
+            end if
          end associate
       end do
+      if (nfold > NLIST) call log_warn('*ELEMENT_SOLID: '//str(nfold - NLIST)// &
+         ' more elements folded at a corner ('//str(nfold)//' in all)')
+      if (nasp > NLIST) call log_warn('*ELEMENT_SOLID: '//str(nasp - NLIST)// &
+         ' more elements with an aspect ratio above '//rstr(ASPECT_WARN)//' ('//str(nasp)//' in all)')
+      if (nwarp > NLIST) call log_warn('*ELEMENT_SOLID: '//str(nwarp - NLIST)// &
+         ' more elements with a face warped above '//rstr(WARP_WARN)//' degrees ('//str(nwarp)// &
+         ' in all)')
       ! blocks: parts in deck order, elements of a part in deck order, nv_chunk at most; the
       ! elements of a part that ESORT sorted to another family follow in their own blocks
       ! (group 2*ip - 1: the section's family, 2*ip: sorted)

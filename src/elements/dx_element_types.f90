@@ -24,14 +24,14 @@ module dx_element_types
    use dx_vec3, only: cross
    ! the hexahedron's volume and moments live in dx_hex8_geometry (a module of their own: not
    ! inlined here, so their results keep the bits they had in dx_model_build / dx_rigid_mass)
-   use dx_hex8_geometry, only: hex_volume, hex_moments
+   use dx_hex8_geometry, only: hex_volume, hex_moments, hex_corner_jacobians
    implicit none
    private
    public :: family_t, element_family, elem_volume, elem_moments, elem_length, block_result_t
    public :: ETYPE_HEX8_1PT, ETYPE_HEX8_SRI, ETYPE_TET4, ETYPE_DEFAULT
    public :: MAX_NEN, MAX_FACE_NODES, MAX_FACES
    public :: ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, etype_of_elform, ETYPES
-   public :: solid_shape
+   public :: solid_shape, elem_quality, ASPECT_WARN, WARP_WARN
    public :: ES_WORK, ES_HGS, ES_PHIM, MAX_ES, ES_NAMES, ES_DUMP
    public :: WORK_Q, WORK_QBV, WORK_DT, WORK_PN
    public :: elem_block_t, part_t
@@ -46,6 +46,11 @@ module dx_element_types
    integer, parameter :: MAX_NEN = 8          !< most nodes of any family (*ELEMENT_SOLID card)
    integer, parameter :: MAX_FACE_NODES = 4   !< most nodes of a face (a segment)
    integer, parameter :: MAX_FACES = 6        !< most faces of a family
+
+   !> bounds of the geometry checks at start (elem_quality; docs/extreme-cases.md, "Geometry
+   !> checks"): a warning past them, the element still runs
+   real(wp), parameter :: ASPECT_WARN = 20.0_wp   !< longest edge / time-step length
+   real(wp), parameter :: WARP_WARN = 20.0_wp     !< face warpage angle, degrees
 
    !> element error codes of a block pass
    integer, parameter :: ELEM_ERR_NEGVOL = 1, ELEM_ERR_MATERIAL = 2
@@ -289,6 +294,72 @@ contains
       l = vol/amax
       if (etype == ETYPE_TET4) l = 3.0_wp*l
    end function elem_length
+
+   !> Shape measures of one element of type etype, nodes xe(3, nen), volume vol > 0, for the
+   !> geometry checks at start:
+   !> aspect = longest edge / elem_length (the time-step length: V/A_max for the hexahedron,
+   !> the smallest altitude for the tetrahedron): 1 for a cube, A for an h x h x h/A plate
+   !> element, 1.22 for the regular tetrahedron;
+   !> warp = largest warpage angle in degrees of its quadrilateral faces (4 distinct nodes):
+   !> of the two ways to split the face into triangles along a diagonal, the larger angle
+   !> between the two triangles' normals (0 for a plane face; the usual preprocessor measure,
+   !> e.g. LS-PrePost's and HyperMesh's "warpage");
+   !> cjmin = smallest corner Jacobian in units of V (hex_corner_jacobians) of a hexahedron
+   !> with 8 distinct nodes (1 for a parallelepiped, <= 0: a folded corner) and its node kmin;
+   !> 1 and 0 otherwise.
+   pure subroutine elem_quality(etype, xe, vol, aspect, warp, cjmin, kmin)
+      integer, intent(in) :: etype
+      real(wp), intent(in) :: xe(:, :), vol
+      real(wp), intent(out) :: aspect, warp, cjmin
+      integer, intent(out) :: kmin     !< the node (1..nen) of cjmin (0: not a hexahedron)
+      real(wp), parameter :: DEG = 57.29577951308232_wp
+      type(family_t) :: f
+      real(wp) :: emax, n1(3), n2(3), cj(8), l
+      integer :: k, m, fn(4)
+      f = element_family(etype)
+      emax = 0.0_wp
+      do k = 1, f%nedges
+         emax = max(emax, norm2(xe(:, f%edges(2, k)) - xe(:, f%edges(1, k))))
+      end do
+      l = elem_length(etype, xe, vol)
+      aspect = emax/l
+      warp = 0.0_wp
+      do k = 1, f%nfaces
+         fn = f%faces(:, k)
+         if (fn(4) == fn(3)) cycle                      ! a triangle of the family
+         if (distinct(xe, fn) < 4) cycle                 ! a degenerate face
+         do m = 0, 1                                     ! the two diagonals
+            n1 = cross(xe(:, fn(2+m)) - xe(:, fn(1+m)), xe(:, fn(3+m)) - xe(:, fn(1+m)))
+            n2 = cross(xe(:, fn(3+m)) - xe(:, fn(1+m)), xe(:, fn(mod(3+m, 4)+1)) - xe(:, fn(1+m)))
+            if (norm2(n1) > 0.0_wp .and. norm2(n2) > 0.0_wp) &
+               warp = max(warp, DEG*acos(max(-1.0_wp, min(1.0_wp, &
+                          dot_product(n1, n2)/(norm2(n1)*norm2(n2))))))
+         end do
+      end do
+      cjmin = 1.0_wp
+      kmin = 0
+      if (f%nen == 8) then
+         if (distinct(xe, [1, 2, 3, 4, 5, 6, 7, 8]) == 8) then
+            call hex_corner_jacobians(xe, vol, cj)
+            kmin = minloc(cj, 1)
+            cjmin = cj(kmin)
+         end if
+      end if
+   end subroutine elem_quality
+
+   !> the number of distinct node positions among xe(:, idx)
+   pure integer function distinct(xe, idx) result(m)
+      real(wp), intent(in) :: xe(:, :)
+      integer, intent(in) :: idx(:)
+      integer :: i, j
+      m = 0
+      do i = 1, size(idx)
+         do j = 1, i - 1
+            if (all(xe(:, idx(j)) == xe(:, idx(i)))) exit
+         end do
+         if (j == i) m = m + 1
+      end do
+   end function distinct
 
    pure function tet_volume(xe) result(vol)
       real(wp), intent(in) :: xe(:, :)

@@ -24,12 +24,12 @@ module dx_hex8
    use dx_element_types, only: elem_block_t, part_t, ES_WORK, ES_HGS, ES_PHIM, block_result_t, &
                                HEX_ERR_NEGVOL => ELEM_ERR_NEGVOL, &
                                HEX_ERR_MATERIAL => ELEM_ERR_MATERIAL
-   use dx_solid_kernels, only: cube_roots, centred_work
+   use dx_solid_kernels, only: cube_roots
    use dx_hex8_geometry, only: hex8_bvectors, hex8_bvectors_chunk, hex8_char_length, inv3, &
                                GAMMA_HG, XI_NODE
    implicit none
    private
-   public :: hex8_block, hex8_volume, hex8_mass_share
+   public :: hex8_block, hex8_volume, hex8_mass_share, centred_work
 
 
 contains
@@ -461,6 +461,36 @@ contains
          bv(i) = l1
       end do
    end subroutine bdotv
+
+   !> Internal-energy increment de of one element at this pass: the work of its stress and
+   !> bulk-viscosity nodal forces f(n) in the central-difference balance, W(n) =
+   !> dtavg(n) f(n).(v(n-1/2) + v(n+1/2))/2, the exact partner of the centred kinetic energy
+   !> 1/2 m v(n-1/2).v(n+1/2) (dx_explicit) for any time-step sequence. W(n) is completed at
+   !> the next pass, when v(n+1/2) and dt(n+1/2) are known: the half with v(n-1/2) is booked
+   !> now with dt(n-1/2)/2 and corrected then to dtavg(n)/2. With a constant step this is the
+   !> trapezoid (sigma(n-1) + sigma(n)):D V dt. The stress power uses the mid-step D V
+   !> (wo, wn = dt sigma_old:D V, dt sigma_new:D V); the viscosity force q B(x(n)) uses
+   !> bvn = B(n).v(n-1/2) and B(n-1).v(n-1/2) from Simpson's rule, exact for the cubic V(x):
+   !> V(n) - V(n-1) = dt/6 (B(n-1) + 4 B(n-1/2) + B(n)).v(n-1/2), bvm = B(n-1/2).v(n-1/2).
+   !> s1..s4 = q, q bvn, dt, sigma:D V of the last pass (the element's ework row).
+   pure subroutine centred_work(s1, s2, s3, s4, dt, wo, wn, q, vol, vol_old, bvn, bvm, de)
+      real(wp), intent(inout) :: s1, s2, s3, s4
+      real(wp), intent(in) :: dt, wo, wn, q, vol, vol_old, bvn, bvm
+      real(wp), intent(out) :: de
+      real(wp) :: bvp, pn
+      de = 0.0_wp
+      pn = 0.0_wp
+      if (dt > 0.0_wp) then
+         bvp = 6.0_wp*(vol - vol_old)/dt - 4.0_wp*bvm - bvn
+         pn = wn/dt
+         de = 0.5_wp*(wo + wn) + 0.25_wp*(dt - s3)*(s4 - wo/dt) &
+              - (0.25_wp*(s3 + dt)*s1*bvp + 0.25_wp*(dt - s3)*s2 + 0.5_wp*dt*q*bvn)
+      end if
+      s1 = q
+      s2 = q*bvn
+      s3 = dt
+      s4 = pn
+   end subroutine centred_work
 
    !> After the lumped masses are known: the element's own share of its nodes' mass,
    !> phim = (1/8) sum_I (rho V0/8)/m_I (1 for a free element, 1/2 inside a one-element-wide

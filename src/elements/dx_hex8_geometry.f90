@@ -13,7 +13,7 @@ module dx_hex8_geometry
    implicit none
    private
    public :: hex8_bvectors, hex8_bvectors_chunk, hex8_char_length, inv3, GAMMA_HG, XI_NODE
-   public :: hex_volume, hex_moments
+   public :: hex_volume, hex_moments, hex_corner_jacobians
 
    !> natural coordinates of the 8 nodes
    real(wp), parameter :: XI_NODE(3, 8) = reshape([ &
@@ -116,8 +116,8 @@ contains
             c(3) = d1(1)*d2(2) - d1(2)*d2(1)
             a2max = max(a2max, c(1)**2 + c(2)**2 + c(3)**2)
          end do
-         ! face area = |d1 x d2|/2
-         lc(i) = vol(i)/(0.5_wp*sqrt(a2max))
+         ! face area = |d1 x d2|/2 (all faces collapsed to points: no division by zero)
+         lc(i) = vol(i)/max(0.5_wp*sqrt(a2max), tiny(1.0_wp))
       end do
    end subroutine hex8_char_length
 
@@ -138,6 +138,30 @@ contains
       ji(3,2) = -(j(1,1)*j(3,2) - j(1,2)*j(3,1))/det
       ji(3,3) = (j(1,1)*j(2,2) - j(1,2)*j(2,1))/det
    end subroutine inv3
+   !> Corner Jacobians cj(I) = det[dx/dxi, dx/deta, dx/dzeta] at node I of the trilinear
+   !> hexahedron xe(3,8), from the three edges leaving node I (each edge vector times the sign
+   !> that points it along +xi, +eta, +zeta), in units of the element's volume: 1 at each
+   !> corner of any parallelepiped, <= 0 at a folded (locally inverted) corner (Knupp 2000,
+   !> "Achieving finite element mesh quality via optimization of the Jacobian matrix norm",
+   !> IJNME 48:1165-1185: the corner Jacobians of the hexahedron).
+   pure subroutine hex_corner_jacobians(xe, vol, cj)
+      real(wp), intent(in) :: xe(3, 8), vol
+      real(wp), intent(out) :: cj(8)
+      real(wp) :: a(3, 3)
+      integer :: i, k, j
+      do i = 1, 8
+         do k = 1, 3
+            do j = 1, 8        ! the neighbour of node i across natural direction k
+               if (all(merge(-XI_NODE(:, i), XI_NODE(:, i), [1, 2, 3] == k) == XI_NODE(:, j))) &
+                  exit
+            end do
+            a(:, k) = (xe(:, j) - xe(:, i))*(-XI_NODE(k, i))
+         end do
+         cj(i) = (a(1,1)*(a(2,2)*a(3,3) - a(3,2)*a(2,3)) - a(1,2)*(a(2,1)*a(3,3) - a(3,1)*a(2,3)) &
+                 + a(1,3)*(a(2,1)*a(3,2) - a(3,1)*a(2,2)))/vol
+      end do
+   end subroutine hex_corner_jacobians
+
    !> Exact volume of the trilinear hexahedron with corner coordinates xe(3,8)
    !> (LS-DYNA node order: 1-4 one face counter-clockwise seen from 5-8).
    pure function hex_volume(xe) result(vol)

@@ -17,7 +17,8 @@ module dx_tet4
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_material, only: material_t
    use dx_element_types, only: elem_block_t, part_t, ES_WORK, block_result_t, ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL
-   use dx_solid_kernels, only: cube_roots, centred_work
+   use dx_solid_kernels, only: cube_roots
+   use dx_hex8, only: centred_work   ! one copy, inlined in dx_hex8 (dx_solid_kernels)
    implicit none
    private
    public :: tet4_block, tet4_bvectors
