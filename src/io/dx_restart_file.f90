@@ -470,16 +470,16 @@ contains
          call set_error(error, 'restart file '//path//': cannot read it to check its '// &
                         'checksum', EXIT_IO)
       else if (ios /= 0 .or. crc /= want) then
-         call set_error(error, 'restart file '//path//': whole-file CRC-32 '//hex8(crc)// &
+         call set_error(error, 'restart file '//path//': whole-file CRC-32 '//crc_hex(crc)// &
             ' is not the '//tr(9:16)//' of its trailer (the file is damaged; continue '// &
             'from an earlier dump)', EXIT_IO)
       end if
    contains
-      function hex8(c) result(h)
+      function crc_hex(c) result(h)
          integer(int64), intent(in) :: c
          character(8) :: h
          write(h, '(z8.8)') c
-      end function hex8
+      end function crc_hex
    end subroutine check_trailer
 
    subroutine make_table()
