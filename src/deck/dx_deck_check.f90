@@ -153,7 +153,12 @@ contains
          character(*), intent(in) :: t
          integer, intent(in) :: n
          character(:), allocatable :: p
-         p = t
+         ! a keyword of thousands of characters (a damaged line) is named by its start
+         if (len(t) > 100) then
+            p = t(1:80)//'... ('//str(len(t))//' characters)'
+         else
+            p = t
+         end if
          if (len(p) < n) p = p//repeat(' ', n - len(p))
       end function pad
    end function list_report
