@@ -153,8 +153,9 @@ contains
          character(*), intent(in) :: t
          integer, intent(in) :: n
          character(:), allocatable :: p
-         ! a keyword of thousands of characters (a damaged line) is named by its start
-         if (len(t) > 100) then
+         ! a keyword of thousands of characters (a damaged line: one token, no blank) is
+         ! named by its start; messages (with blanks) are kept whole
+         if (len(t) > 100 .and. index(t(1:min(len(t), 100)), ' ') == 0) then
             p = t(1:80)//'... ('//str(len(t))//' characters)'
          else
             p = t
