@@ -7,7 +7,7 @@
 !> [** factor]); an error says what was expected where.
 module dx_deck_expr
    use dx_kinds, only: wp
-   use dx_strings, only: upper
+   use dx_strings, only: upper, str
    use dx_card, only: param_t, find_param
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
@@ -162,7 +162,7 @@ contains
          v = expr(ps, params)
          if (len(ps%msg) > 0) return
          if (peek(ps) /= ')') then
-            ps%msg = 'expected '')'' at column '//itoa(ps%p)
+            ps%msg = 'expected '')'' at column '//str(ps%p)
             return
          end if
          ps%p = ps%p + 1
@@ -266,7 +266,7 @@ contains
          return
       end select
       if (size(x) /= need) then
-         ps%msg = name//' takes '//itoa(need)//' argument(s)'
+         ps%msg = name//' takes '//str(need)//' argument(s)'
          return
       end if
       select case (name)
@@ -308,11 +308,4 @@ contains
       end select
    end subroutine apply
 
-   pure function itoa(i) result(s)
-      integer, intent(in) :: i
-      character(:), allocatable :: s
-      character(12) :: b
-      write(b, '(i0)') i
-      s = trim(b)
-   end function itoa
 end module dx_deck_expr
