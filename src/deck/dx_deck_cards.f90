@@ -21,7 +21,7 @@ module dx_deck_cards
                       where_card, max_cards_check
    implicit none
    private
-   public :: card_t, block_t, deck_t, param_t, read_cards, get_int, get_real, get_text, &
+   public :: card_t, block_t, deck_t, param_t, read_cards, get_int, get_list_id, get_real, get_text, &
              field_error, block_error, card_error, std_widths, ncards, card_where, &
              card_is_blank, check_max_cards, MAX_INCLUDE_DEPTH, data_start, block_title, &
              deck_cursor
@@ -556,6 +556,28 @@ contains
          call field_int(deck%files(blk%ifile)%s, none, blk, ic, k, w, fname, def, val, error)
       end if
    end subroutine get_int
+
+   !> One field of an id list: an integer >= 0 (0 or blank: no id); an id > 0 is appended to
+   !> ids(1:n).
+   subroutine get_list_id(deck, blk, ic, k, w, fname, ids, n, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      integer, intent(in) :: ic, k, w(:)
+      character(*), intent(in) :: fname
+      integer, intent(inout) :: ids(:), n
+      type(error_t), allocatable, intent(out) :: error
+      integer :: id
+      call get_int(deck, blk, ic, k, w, fname, 0, id, error)
+      if (allocated(error)) return
+      if (id < 0) then
+         call field_error(deck, blk, ic, k, w, fname, 'must be >= 0', error)
+         return
+      end if
+      if (id > 0) then
+         n = n + 1
+         ids(n) = id
+      end if
+   end subroutine get_list_id
 
    !> Real field k (widths w) of card ic; blank or missing -> def.
    subroutine get_real(deck, blk, ic, k, w, fname, def, val, error)

@@ -10,7 +10,7 @@ module dx_read_controls
    use dx_error, only: error_t
    use dx_strings, only: str, rstr
    use dx_log, only: log_warn
-   use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, get_int, field_error, &
+   use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, get_int, get_list_id, field_error, &
                             block_error, std_widths, check_max_cards
    use dx_deck_registry, only: registry_t
    use dx_model_input, only: model_input_t, origin, label_list_t
@@ -292,7 +292,7 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), ic, k, id, n
+      integer :: w(8), ic, k, n
       type(label_list_t), allocatable :: l(:)
       integer :: ids(8)
       w = std_widths(blk, 8)
@@ -300,16 +300,8 @@ contains
       do ic = 1, blk%n
          n = 0
          do k = 1, 8
-            call get_int(deck, blk, ic, k, w, 'ID'//str(k), 0, id, error)
+            call get_list_id(deck, blk, ic, k, w, 'ID'//str(k), ids, n, error)
             if (allocated(error)) return
-            if (id < 0) then
-               call field_error(deck, blk, ic, k, w, 'ID'//str(k), 'must be >= 0', error)
-               return
-            end if
-            if (id > 0) then
-               n = n + 1
-               ids(n) = id
-            end if
          end do
          l(ic)%ids = ids(1:n)
          l(ic)%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)

@@ -11,7 +11,7 @@
 module dx_read_sets
    use dx_error, only: error_t, set_error
    use dx_strings, only: str, upper
-   use dx_deck_cards, only: deck_t, block_t, get_int, get_text, field_error, block_error, &
+   use dx_deck_cards, only: deck_t, block_t, get_int, get_list_id, get_text, field_error, block_error, &
                             std_widths, data_start
    use dx_deck_registry, only: registry_t
    use dx_model_input, only: model_input_t, origin, origin_t, label_list_t, segment_list_t, &
@@ -41,7 +41,7 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), i0, ic, k, id, n
+      integer :: w(8), i0, ic, k, n
       integer, allocatable :: ids(:)
       type(label_list_t) :: s
       character(:), allocatable :: what
@@ -63,16 +63,8 @@ contains
       n = 0
       do ic = i0 + 1, blk%n
          do k = 1, 8
-            call get_int(deck, blk, ic, k, w, what//str(k), 0, id, error)
+            call get_list_id(deck, blk, ic, k, w, what//str(k), ids, n, error)
             if (allocated(error)) return
-            if (id < 0) then
-               call field_error(deck, blk, ic, k, w, what//str(k), 'must be >= 0', error)
-               return
-            end if
-            if (id > 0) then
-               n = n + 1
-               ids(n) = id
-            end if
          end do
       end do
       s%ids = ids(1:n)
@@ -155,7 +147,7 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), i0, ic, k, n, id
+      integer :: w(8), i0, ic, k, n
       integer :: ids(7)
       character(:), allocatable :: op
       type(set_gen_in_t) :: g
@@ -180,16 +172,8 @@ contains
          end select
          n = 0
          do k = 2, 8
-            call get_int(deck, blk, ic, k, w, 'E'//str(k - 1), 0, id, error)
+            call get_list_id(deck, blk, ic, k, w, 'E'//str(k - 1), ids, n, error)
             if (allocated(error)) return
-            if (id < 0) then
-               call field_error(deck, blk, ic, k, w, 'E'//str(k - 1), 'must be >= 0', error)
-               return
-            end if
-            if (id > 0) then
-               n = n + 1
-               ids(n) = id
-            end if
          end do
          st%op = op
          st%ids = ids(1:n)
