@@ -8,10 +8,11 @@
 !> gamma (B vectors are already the exact volume integrals, so 3 = 2 and 5 = 4 here).
 !> ELFORM 2: 2x2x2 selectively reduced (mean-dilatation) hex, no hourglass modes
 !> (Hughes 1980, IJNME 15:1413-1418; Nagtegaal, Parks & Rice 1974).
-!> Bulk viscosity (DYNA form): q = rho*l*(Q1*l*e_kk**2 - Q2*c*e_kk) for e_kk < 0, l = V**(1/3);
-!> time step dt_e = L/(Q + sqrt(Q**2 + c**2)), Q = Q2*c + Q1*L*|e_kk| (LS-DYNA Theory Manual),
-!> L = V/A_max, and for elements whose nodes carry mostly their own mass (single elements,
-!> one-element-wide bars) also L <= 2V/sqrt(8 phim B_iI B_iI) (FB 1981's element bound).
+!> Bulk viscosity (DYNA form): q = rho*L*(Q1*L*e_kk**2 - Q2*c*e_kk) for e_kk < 0; time step
+!> dt_e = L/(Q + sqrt(Q**2 + c**2)), Q = Q2*c + Q1*L*|e_kk| (LS-DYNA Theory Manual), with one
+!> length L = V/A_max for both (issue 15; docs/design.md "One characteristic length"), and
+!> for elements whose nodes carry mostly their own mass (single elements, one-element-wide
+!> bars) also L <= 2V/sqrt(8 phim B_iI B_iI) (FB 1981's element bound).
 !> Internal energy: the centred work of the stress and viscosity forces, the exact partner of
 !> the centred kinetic energy of dx_explicit (centred_work).
 !> Viscous hourglass coefficient a_h = QH*rho*c*V**(2/3)/4 (LS-DYNA Theory Manual, U);
@@ -29,6 +30,11 @@ module dx_hex8
                                GAMMA_HG, XI_NODE
    implicit none
    private
+   !> An element whose volume falls to eps*V0 or below is collapsed (reported as a negative
+   !> volume): its corner coordinates no longer resolve the volume, and with the step
+   !> proportional to V (L = V/A_max) it would approach zero geometrically, never crossing it
+   !> (extreme_crushed_element), until tr D = dV/(V dt) overflows.
+   real(wp), parameter :: vcrush = epsilon(1.0_wp)
    public :: hex8_block, hex8_volume, hex8_mass_share, centred_work
 
 
@@ -104,7 +110,7 @@ contains
       ! several columns of one array vectorize; deps is (nel, 6) as the material expects
       real(wp), dimension(nv_chunk, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
       real(wp), dimension(nv_chunk) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive
-      real(wp), dimension(nv_chunk) :: bv, vold, lcb, wo, wn, de, e1, e2, e3, e4
+      real(wp), dimension(nv_chunk) :: bv, vold, lcb, wo, wn, de, e1, e2, e3, e4, lc
       real(wp) :: lg(nv_chunk, 9), de6(nv_chunk, 6), so(nv_chunk, 6), sn(nv_chunk, 6)
       real(wp) :: deps(blk%nel, 6)
       real(wp) :: dtl, hdt, d1, d2, d3, d4, d5, d6, l1, l2, l3, l4, l5, l6, l7, l8, l9
@@ -148,8 +154,8 @@ contains
       end do
       do i = 1, n
          ierr(i) = 0
-         if (.not. (volm(i) > 0.0_wp)) ierr(i) = HEX_ERR_NEGVOL
-         if (.not. (volm(i) > 0.0_wp)) volm(i) = 1.0_wp
+         if (.not. (volm(i) > vcrush*blk%vol0(i))) ierr(i) = HEX_ERR_NEGVOL
+         if (.not. (volm(i) > vcrush*blk%vol0(i))) volm(i) = 1.0_wp
          alive(i) = merge(0.0_wp, 1.0_wp, blk%failed(i))
          dtl = dt_old/volm(i)
          de6(i, 1) = lg(i, 1)*dtl
@@ -178,13 +184,15 @@ contains
       end do
       do i = 1, n
          vold(i) = blk%vol0(i)*blk%relvol(i)
-         if (.not. (vol(i) > 0.0_wp)) ierr(i) = HEX_ERR_NEGVOL
-         if (.not. (vol(i) > 0.0_wp)) vol(i) = 1.0_wp
+         if (.not. (vol(i) > vcrush*blk%vol0(i))) ierr(i) = HEX_ERR_NEGVOL
+         if (.not. (vol(i) > vcrush*blk%vol0(i))) vol(i) = 1.0_wp
          rv(i) = vol(i)/blk%vol0(i)
          blk%relvol(i) = rv(i)
          ein(i) = blk%eint(i)/blk%vol0(i)
       end do
       call cube_roots(n, vol, lcb)    ! V**(1/3), the same bits in every SIMD lane (see cube_roots)
+      ! the one characteristic length of the time step and the bulk viscosity
+      call char_lengths(blk, xe, ye, ze, bx, by, bz, vol, lc)
       ! ---- stress: Jaumann rotation by the spin increment (first order), then the material
       do k = 1, 6
          so(1:n, k) = blk%sig(1:n, k, 1)
@@ -218,7 +226,7 @@ contains
       end do
       ! ---- bulk viscosity and the centred work of stress and viscosity
       do i = 1, n
-         q(i) = bulk_viscosity(part, mat%ro/rv(i), lcb(i), trd(i), c(i))
+         q(i) = bulk_viscosity(part, mat%ro/rv(i), lc(i), trd(i), c(i))
          wo(i) = volm(i)*(so(i,1)*de6(i,1) + so(i,2)*de6(i,2) + so(i,3)*de6(i,3) &
                  + 2.0_wp*(so(i,4)*de6(i,4) + so(i,5)*de6(i,5) + so(i,6)*de6(i,6)))
          wn(i) = volm(i)*(sn(i,1)*de6(i,1) + sn(i,2)*de6(i,2) + sn(i,3)*de6(i,3) &
@@ -264,7 +272,7 @@ contains
          end do
       end do
       ! ---- stable time step
-      call stable_time_step(blk, part, xe, ye, ze, bx, by, bz, vol, trd, c, res)
+      call stable_time_step(blk, part, lc, trd, c, res)
       call first_error(n, ierr, res)
    end subroutine hex8_1pt
 
@@ -436,13 +444,17 @@ contains
       end do
    end subroutine hourglass_gamma_viscous
 
-   !> DYNA bulk viscosity q = rho*l*(Q1*l*e_kk**2 - Q2*c*e_kk) for e_kk < 0, l = V**(1/3)
-   !> (computed by the caller in a vector loop).
+   !> DYNA bulk viscosity q = rho*l*(Q1*l*e_kk**2 - Q2*c*e_kk) for e_kk < 0, l the element's
+   !> characteristic length of the time step (char_lengths; issue 15: one length for both),
+   !> evaluated as rho*(Q1*(l*e_kk)**2 - Q2*c*(l*e_kk)): l*e_kk = dV/dt/A_max stays bounded
+   !> as a crushed element's V -> 0, where e_kk**2 alone overflows (extreme_crushed_element).
    pure real(wp) function bulk_viscosity(part, rho, l, trd, c) result(q)
       type(part_t), intent(in) :: part
       real(wp), intent(in) :: rho, l, trd, c
+      real(wp) :: lt
       q = 0.0_wp
-      if (trd < 0.0_wp) q = rho*l*(part%q1*l*trd**2 - part%q2*c*trd)
+      lt = l*trd
+      if (trd < 0.0_wp) q = rho*(part%q1*lt*lt - part%q2*c*lt)
    end function bulk_viscosity
 
    !> Sum over the nodes of B_I . v_I for each element (the volume rate V*tr(D) for B at x).
@@ -521,20 +533,20 @@ contains
       end if
    end subroutine hex8_mass_share
 
-   !> Smallest element step L/(Q + sqrt(Q**2 + c**2)), L = V/A_max, Q = Q2*c + Q1*L*|e_kk|
-   !> (compression only); eroded elements do not count. An element whose nodes carry mostly
-   !> its own mass (phim >= 1/2: a single element, a one-element-wide bar) has a dilatational
-   !> mode faster than c/L: a free unit cube's is sqrt(12 K/rho) (2.73 c for nu = 0.3, so
-   !> dt = 0.9 L/c is unstable). Its L is then also bounded by FB 1981's element bound
-   !> omega**2 <= 8 c**2 B_iI B_iI/V**2 with the nodal masses scaled by the element's own
-   !> share: L <= 2V/sqrt(8 phim B_iI B_iI) (0.577 for a free unit cube).
-   subroutine stable_time_step(blk, part, xe, ye, ze, bx, by, bz, vol, trd, c, res)
+   !> Characteristic length lc of each element at t(n), the one length of its time step and
+   !> its bulk viscosity: L = V/A_max (LS-DYNA's time-step length of a solid; a face area by
+   !> the cross product of its diagonals). An element whose nodes carry mostly its own mass
+   !> (phim >= 1/2: a single element, a one-element-wide bar) has a dilatational mode faster
+   !> than c/L: a free unit cube's is sqrt(12 K/rho) (2.73 c for nu = 0.3, so dt = 0.9 L/c is
+   !> unstable). Its L is then also bounded by FB 1981's element bound omega**2 <= 8 c**2
+   !> B_iI B_iI/V**2 with the nodal masses scaled by the element's own share:
+   !> L <= 2V/sqrt(8 phim B_iI B_iI) (0.577 for a free unit cube).
+   subroutine char_lengths(blk, xe, ye, ze, bx, by, bz, vol, lc)
       type(elem_block_t), intent(in) :: blk
-      type(part_t), intent(in) :: part
       real(wp), intent(in), contiguous :: xe(:, :), ye(:, :), ze(:, :), vol(:)
-      real(wp), intent(in) :: bx(:, :), by(:, :), bz(:, :), trd(:), c(:)
-      type(block_result_t), intent(inout) :: res
-      real(wp) :: lc(size(xe, 1)), qb, trde, bb
+      real(wp), intent(in) :: bx(:, :), by(:, :), bz(:, :)
+      real(wp), intent(out) :: lc(:)
+      real(wp) :: bb
       integer :: i, n, ip
       n = blk%nel
       call hex8_char_length(n, size(xe, 1), xe, ye, ze, vol, lc)
@@ -547,6 +559,19 @@ contains
             end if
          end do
       end if
+   end subroutine char_lengths
+
+   !> Smallest element step L/(Q + sqrt(Q**2 + c**2)), L = lc (char_lengths), Q = Q2*c +
+   !> Q1*L*|e_kk| (compression only; the same L as the bulk viscosity's, so Q is the
+   !> viscosity's own damping rate); eroded elements do not count.
+   subroutine stable_time_step(blk, part, lc, trd, c, res)
+      type(elem_block_t), intent(in) :: blk
+      type(part_t), intent(in) :: part
+      real(wp), intent(in) :: lc(:), trd(:), c(:)
+      type(block_result_t), intent(inout) :: res
+      real(wp) :: qb, trde
+      integer :: i, n
+      n = blk%nel
       do i = 1, n
          qb = 0.0_wp
          if (trd(i) < 0.0_wp) qb = part%q2*c(i) + part%q1*lc(i)*abs(trd(i))
@@ -583,7 +608,7 @@ contains
       type(block_result_t), intent(out) :: res
       real(wp), dimension(blk%nel, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
       real(wp), dimension(blk%nel) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive, pbar
-      real(wp), dimension(blk%nel) :: bv, relv_old, wold, wnew, lcb
+      real(wp), dimension(blk%nel) :: bv, relv_old, wold, wnew, lc
       real(wp) :: deps(blk%nel, 6), sold(blk%nel, 6), dn(3, 8, 8), dnx(3, 8), l(3, 3)
       real(wp) :: p8(8), q8(8), r8(8)
       real(wp), allocatable :: dng(:, :, :, :)
@@ -611,7 +636,7 @@ contains
       call bdotv(n, bx, by, bz, vx, vy, vz, bv)
       do i = 1, n
          relv_old(i) = blk%relvol(i)
-         if (.not. (volm(i) > 0.0_wp .and. vol(i) > 0.0_wp)) then
+         if (.not. (volm(i) > vcrush*blk%vol0(i) .and. vol(i) > vcrush*blk%vol0(i))) then
             ierr(i) = HEX_ERR_NEGVOL; volm(i) = 1.0_wp; vol(i) = 1.0_wp
          end if
          rv(i) = vol(i)/blk%vol0(i)
@@ -683,10 +708,10 @@ contains
       end do
       call mat%wave_speed(n, rv, blk%hv(:, :, 1), c)
       ! bulk viscosity, mean pressure through the exact mean B, erosion
-      call cube_roots(n, vol, lcb)    ! V**(1/3)
+      call char_lengths(blk, xe, ye, ze, bx, by, bz, vol, lc)   ! of the step and viscosity
       do i = 1, n
          rho = mat%ro/rv(i)
-         q(i) = bulk_viscosity(part, rho, lcb(i), trd(i), c(i))
+         q(i) = bulk_viscosity(part, rho, lc(i), trd(i), c(i))
          call centred_work(blk%es(i, w), blk%es(i, w + 1), blk%es(i, w + 2), blk%es(i, w + 3), &
                            dt_old, wold(i), wnew(i), q(i), vol(i), blk%vol0(i)*relv_old(i), &
                            bv(i), trd(i)*volm(i), a)
@@ -714,7 +739,7 @@ contains
          end do
       end do
       res%dehg = 0.0_wp
-      call stable_time_step(blk, part, xe, ye, ze, bx, by, bz, vol, trd, c, res)
+      call stable_time_step(blk, part, lc, trd, c, res)
       call first_error(n, ierr, res)
    end subroutine hex8_sri
 

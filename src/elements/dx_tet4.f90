@@ -7,7 +7,7 @@
 !> 6 B4 = a x b, B1 = -(B2 + B3 + B4). Constant strain, so no hourglass modes and no control.
 !> The cycle is dx_hex8's one-point pass with these B: strain increment and spin at the
 !> mid-step geometry, Jaumann rotation, one material dispatch per block, DYNA bulk viscosity
-!> with l = V**(1/3), the centred work of stress and viscosity (V is cubic in x, so Simpson's
+!> with the time step's length L (below; one length for both, issue 15), the centred work of stress and viscosity (V is cubic in x, so Simpson's
 !> rule of centred_work is exact here as for the hexahedron), force scatter f_iI = sig_ij B_jI.
 !> Stable step: dt_e = L/(Q + sqrt(Q**2 + c**2)) as for the hexahedron, with L the smallest
 !> altitude of the tetrahedron, 3V/A_max = V/max_I |B_I| (|B_I| is a third of the area of the
@@ -17,10 +17,10 @@ module dx_tet4
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_material, only: material_t
    use dx_element_types, only: elem_block_t, part_t, ES_WORK, block_result_t, ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL
-   use dx_solid_kernels, only: cube_roots
    use dx_hex8, only: centred_work   ! one copy, inlined in dx_hex8 (dx_solid_kernels)
    implicit none
    private
+   real(wp), parameter :: vcrush = epsilon(1.0_wp)   !< collapsed below eps*V0 (as dx_hex8)
    public :: tet4_block, tet4_bvectors
 
    integer, parameter :: NEN = 4
@@ -66,7 +66,7 @@ contains
       real(wp), dimension(nv_chunk, NEN) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm
       real(wp), dimension(nv_chunk, NEN) :: fx, fy, fz
       real(wp), dimension(nv_chunk) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive
-      real(wp), dimension(nv_chunk) :: bv, vold, lcb, wo, wn, de, e1, e2, e3, e4
+      real(wp), dimension(nv_chunk) :: bv, vold, lc, wo, wn, de, e1, e2, e3, e4
       real(wp) :: lg(nv_chunk, 9), de6(nv_chunk, 6), so(nv_chunk, 6), sn(nv_chunk, 6)
       real(wp) :: deps(blk%nel, 6)
       real(wp) :: dtl, hdt, d1, d2, d3, d4, d5, d6
@@ -105,8 +105,8 @@ contains
       end do
       do i = 1, n
          ierr(i) = 0
-         if (.not. (volm(i) > 0.0_wp)) ierr(i) = ELEM_ERR_NEGVOL
-         if (.not. (volm(i) > 0.0_wp)) volm(i) = 1.0_wp
+         if (.not. (volm(i) > vcrush*blk%vol0(i))) ierr(i) = ELEM_ERR_NEGVOL
+         if (.not. (volm(i) > vcrush*blk%vol0(i))) volm(i) = 1.0_wp
          alive(i) = merge(0.0_wp, 1.0_wp, blk%failed(i))
          dtl = dt_old/volm(i)
          de6(i, 1) = lg(i, 1)*dtl
@@ -133,13 +133,13 @@ contains
       end do
       do i = 1, n
          vold(i) = blk%vol0(i)*blk%relvol(i)
-         if (.not. (vol(i) > 0.0_wp)) ierr(i) = ELEM_ERR_NEGVOL
-         if (.not. (vol(i) > 0.0_wp)) vol(i) = 1.0_wp
+         if (.not. (vol(i) > vcrush*blk%vol0(i))) ierr(i) = ELEM_ERR_NEGVOL
+         if (.not. (vol(i) > vcrush*blk%vol0(i))) vol(i) = 1.0_wp
          rv(i) = vol(i)/blk%vol0(i)
          blk%relvol(i) = rv(i)
          ein(i) = blk%eint(i)/blk%vol0(i)
       end do
-      call cube_roots(n, vol, lcb)
+      call char_lengths(n, bx, by, bz, vol, lc)   ! one length for the step and the viscosity
       ! ---- stress: Jaumann rotation by the spin increment (first order), then the material
       do k = 1, 6
          so(1:n, k) = blk%sig(1:n, k, 1)
@@ -172,8 +172,8 @@ contains
       ! ---- bulk viscosity and the centred work of stress and viscosity
       do i = 1, n
          q(i) = 0.0_wp
-         if (trd(i) < 0.0_wp) q(i) = mat%ro/rv(i)*lcb(i)*(part%q1*lcb(i)*trd(i)**2 &
-                                     - part%q2*c(i)*trd(i))
+         if (trd(i) < 0.0_wp) q(i) = mat%ro/rv(i)*(part%q1*(lc(i)*trd(i))**2 &
+                                     - part%q2*c(i)*(lc(i)*trd(i)))   ! (as dx_hex8's)
          wo(i) = volm(i)*(so(i,1)*de6(i,1) + so(i,2)*de6(i,2) + so(i,3)*de6(i,3) &
                  + 2.0_wp*(so(i,4)*de6(i,4) + so(i,5)*de6(i,5) + so(i,6)*de6(i,6)))
          wn(i) = volm(i)*(sn(i,1)*de6(i,1) + sn(i,2)*de6(i,2) + sn(i,3)*de6(i,3) &
@@ -213,7 +213,7 @@ contains
             f(3, nn) = f(3, nn) - fz(i, k)
          end do
       end do
-      call stable_time_step(blk, part, bx, by, bz, vol, trd, c, res)
+      call stable_time_step(blk, part, lc, trd, c, res)
       do i = 1, n
          if (ierr(i) /= 0) then
             res%ibad = i
@@ -223,24 +223,37 @@ contains
       end do
    end subroutine tet4_block
 
-   !> Smallest element step L/(Q + sqrt(Q**2 + c**2)), L = V/max_I |B_I| (the smallest
-   !> altitude), Q = Q2*c + Q1*L*|e_kk| (compression only); eroded elements do not count.
-   subroutine stable_time_step(blk, part, bx, by, bz, vol, trd, c, res)
-      type(elem_block_t), intent(in) :: blk
-      type(part_t), intent(in) :: part
-      real(wp), intent(in) :: bx(:, :), by(:, :), bz(:, :), vol(:), trd(:), c(:)
-      type(block_result_t), intent(inout) :: res
-      real(wp) :: lc, qb, trde, b2
+   !> The characteristic length of each tetrahedron, L = V/max_I |B_I| (the smallest
+   !> altitude), the one length of its time step and its bulk viscosity (a collapsed element
+   !> with all B_I = 0: no division by zero).
+   pure subroutine char_lengths(n, bx, by, bz, vol, lc)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: bx(:, :), by(:, :), bz(:, :), vol(:)
+      real(wp), intent(out) :: lc(:)
+      real(wp) :: b2
       integer :: i, k
-      do i = 1, blk%nel
+      do i = 1, n
          b2 = 0.0_wp
          do k = 1, NEN
             b2 = max(b2, bx(i, k)**2 + by(i, k)**2 + bz(i, k)**2)
          end do
-         lc = vol(i)/sqrt(b2)
+         lc(i) = vol(i)/max(sqrt(b2), tiny(1.0_wp))
+      end do
+   end subroutine char_lengths
+
+   !> Smallest element step L/(Q + sqrt(Q**2 + c**2)), L = lc, Q = Q2*c + Q1*L*|e_kk|
+   !> (compression only); eroded elements do not count.
+   subroutine stable_time_step(blk, part, lc, trd, c, res)
+      type(elem_block_t), intent(in) :: blk
+      type(part_t), intent(in) :: part
+      real(wp), intent(in) :: lc(:), trd(:), c(:)
+      type(block_result_t), intent(inout) :: res
+      real(wp) :: qb, trde
+      integer :: i
+      do i = 1, blk%nel
          qb = 0.0_wp
-         if (trd(i) < 0.0_wp) qb = part%q2*c(i) + part%q1*lc*abs(trd(i))
-         trde = lc/(qb + sqrt(qb*qb + c(i)*c(i)))
+         if (trd(i) < 0.0_wp) qb = part%q2*c(i) + part%q1*lc(i)*abs(trd(i))
+         trde = lc(i)/(qb + sqrt(qb*qb + c(i)*c(i)))
          if (blk%failed(i)) trde = huge_wp
          if (trde < res%dt) then
             res%dt = trde; res%imin = i
