@@ -9,7 +9,11 @@
 !>    bodies use the body's mass and inertia instead (dx_rigid_contact).
 !>  contact_work: after the velocity update: work of the contact forces with the centred
 !>    weighting of docs/history.md, W += f_c(n).dtavg(n)(v(n-1/2) + v(n+1/2))/2; the sliding
-!>    interface energy is -W (stored penalty energy plus friction dissipation); writes rcforc.
+!>    interface energy at t(n) is -(W - f_c(n).dtavg(n) v(n+1/2)/2) (stored penalty energy
+!>    plus friction dissipation): the partner of KE(n) = m v(n-1/2).v(n+1/2)/2, which
+!>    telescopes into the work sums minus the v(n+1/2) half of the last one (as the element
+!>    work is booked); with the full W the ratio dipped by that half-step work during each
+!>    contact impulse (extreme_contact_1000ms: 0.985). Writes rcforc.
 !> Algorithms: dx_contact_search (bucket sort), dx_contact_penalty (forces).
 module dx_contact
    use dx_kinds, only: wp
@@ -269,17 +273,21 @@ contains
       character(*), intent(in) :: outdir
       type(error_t), allocatable, intent(out) :: error
       integer :: i, j, nd, ncand, nslave
-      real(wp) :: w, t
+      real(wp) :: w, wn, t
       logical :: done
       associate (cs => model%contact)
          w = 0.0_wp
+         wn = 0.0_wp
          do i = 1, size(cs%node)   ! (a node without contact force adds +-0: skipped)
             nd = cs%node(i)
             if (all(cs%fc(:, nd) == 0.0_wp)) cycle
             w = w + dot_product(cs%fc(:, nd), vold(:, nd) + model%v(:, nd))
+            wn = wn + dot_product(cs%fc(:, nd), model%v(:, nd))
          end do
          cs%work = cs%work + 0.5_wp*dtavg*w
-         model%energy%sliding = -cs%work
+         ! at t(n) only the v(n-1/2) half of this cycle's work is booked, as the time-centred
+         ! kinetic energy and the element work are (the v(n+1/2) half belongs to t(n+1))
+         model%energy%sliding = -(cs%work - 0.5_wp*dtavg*wn)
          t = model%time
          done = (model%ctrl%endtim > 0.0_wp .and. t >= model%ctrl%endtim) .or. &
                 (model%ctrl%endcyc > 0 .and. model%cycle >= model%ctrl%endcyc)
