@@ -17,7 +17,7 @@ Watchdog (issue 15): a mutant that runs longer than --watchdog seconds (default 
 as a hang and fails the campaign, even when it ends by itself before the kill (--timeout).
 
 Restart-file mutants (--restart-share, default 0.1 of the inputs): a restart dump of a short
-patch-test run (cycle 5 of 11) with flipped bytes, a zeroed block or truncated, continued with
+patch-test run (cycle 10 of 11, --dump-cycle) with flipped bytes, a zeroed block or truncated, continued with
 `dynx -i deck -r mutant.h5`: the run must end with exit 0 (the flipped bytes were outside
 what is read), or exit 2 / 4 with a message naming the dump; never a crash, a trap or a hang.
 
@@ -28,7 +28,7 @@ what is read), or exit 2 / 4 with a message naming the dump; never a crash, a tr
 The binary is bin/dynx-asan (debug + AddressSanitizer + UBSan) when present, else
 bin/dynx-debug; override with --dynx. Standard library only.
 """
-import argparse, collections, concurrent.futures as cf, os, random, re, shutil, subprocess, sys, time
+import argparse, collections, concurrent.futures as cf, os, random, re, resource, shutil, subprocess, sys, time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 NUMS = ['1e308', '1e309', '-1e400', '1e-400', '9999999999', '99999999999999999999',
@@ -215,8 +215,9 @@ def message_class(m):
     return m[:110]
 
 
-def restart_base(workdir, dynx):
-    """(deck path, dump bytes): the patch test cut to 1e-3 s (11 cycles), dumped at cycle 5."""
+def restart_base(workdir, dynx, cycle):
+    """(deck path, dump bytes): the patch test cut to 1e-3 s (11 cycles), dumped at the given
+    cycle (a mutant continues from it to cycle 11)."""
     src = os.path.join(ROOT, 'tests', 'regression', 'patch_constant_strain', 'deck.k')
     with open(src) as f:
         lines = f.read().split('\n')
@@ -227,7 +228,7 @@ def restart_base(workdir, dynx):
     deck = os.path.join(d, 'deck.k')
     with open(deck, 'w') as f:
         f.write('\n'.join(lines))
-    subprocess.run([dynx, '-i', deck, '-o', os.path.join(d, 'out'), '--raise-at-cycle', '5:USR1'],
+    subprocess.run([dynx, '-i', deck, '-o', os.path.join(d, 'out'), '--raise-at-cycle', '%d:USR1' % cycle],
                    capture_output=True, timeout=300)
     with open(os.path.join(d, 'out', 'd3dump01.h5'), 'rb') as f:
         return deck, f.read()
@@ -278,16 +279,23 @@ def run_one(args, idx, name, text, files, base, workdir, dynx, timeout):
         else:
             cmd = [dynx, '--check', '-i', base, '-R', 'deck.k']
         t0 = time.time()
-        p = subprocess.run(['timeout', '-s', 'KILL', str(max(timeout, args.watchdog + 1))] + cmd,
-                           capture_output=True, env=env, cwd=d)
-        rc = p.returncode
+        # the kill after the timeout is subprocess's own (SIGKILL), not a timeout(1) process
+        # per input: one fork and exec less
+        try:
+            p = subprocess.run(cmd, capture_output=True, env=env, cwd=d,
+                               timeout=max(timeout, args.watchdog + 1))
+            rc = p.returncode
+        except subprocess.TimeoutExpired as e:
+            p = subprocess.CompletedProcess(cmd, -9, e.stdout or b'', e.stderr or b'')
+            rc = -9
         if time.time() - t0 > args.watchdog and rc not in (137, -9):
             rc = 125     # ended by itself, but past the watchdog: a hang all the same
         if rc == 137 or rc == -9:
             rc = 124
         err = p.stderr.decode('latin-1') + p.stdout.decode('latin-1')[-2000:]
+        secs = time.time() - t0
     except Exception as e:   # pragma: no cover
-        rc, err = 1, 'fuzz driver: %s' % e
+        rc, err, secs = 1, 'fuzz driver: %s' % e, 0.0
     # the NULL from the allocator (above) is announced by a warning; the rest is judged
     err = re.sub(r'==\d+==WARNING: AddressSanitizer failed to allocate[^\n]*\n?', '', err)
     ok, outcome, cls, first = classify(rc, err)
@@ -303,7 +311,7 @@ def run_one(args, idx, name, text, files, base, workdir, dynx, timeout):
         os.rename(d, keep)
         with open(os.path.join(keep, 'why.txt'), 'w') as f:
             f.write('source %s\noutcome %s\nexit %d\n\n%s\n' % (name, outcome, rc, err[-6000:]))
-    return idx, name, ok, outcome, cls, first
+    return idx, name, ok, outcome, cls, first, secs, len(text)
 
 
 def main():
@@ -316,9 +324,16 @@ def main():
                     help='a mutant running longer counts as a hang (seconds)')
     ap.add_argument('--restart-share', type=float, default=0.1,
                     help='share of the inputs that are mutated restart dumps')
+    ap.add_argument('--dump-cycle', type=int, default=10,
+                    help='cycle (of 11) of the restart dump that dump mutants continue from; '
+                         'every dataset is read and restored at the restart whatever the cycle, '
+                         'so a late dump only saves the cycles after it (before: 5)')
     ap.add_argument('--dynx', default=None)
     ap.add_argument('--workdir', default=os.path.join(ROOT, 'build', 'fuzz'))
     ap.add_argument('--report', default=None, help='write the message-class table (markdown)')
+    ap.add_argument('--profile', default=None,
+                    help='write one line per input: index, seconds of the dynx run, input bytes, '
+                         'outcome, source (where a campaign spends its time)')
     ap.add_argument('--progress', type=int, default=1000,
                     help='a progress line every N inputs (0: none)')
     args = ap.parse_args()
@@ -340,8 +355,10 @@ def main():
     t0 = time.time()
     rdeck = rdump = None
     if args.restart_share > 0:
-        rdeck, rdump = restart_base(args.workdir, dynx)
+        rdeck, rdump = restart_base(args.workdir, dynx, args.dump_cycle)
     ncount = collections.Counter()
+    ru0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    tm0 = time.time()
 
     def gen():
         """The inputs in order, made one at a time (the same sequence for a seed as a list
@@ -365,6 +382,7 @@ def main():
     classes = collections.OrderedDict()
     fails = []
     window = 8 * max(1, args.jobs)
+    prof = open(args.profile, 'w') if args.profile else None
     with cf.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as ex:
         pending = set()
         it = gen()
@@ -382,7 +400,10 @@ def main():
                 break
             finished, pending = cf.wait(pending, return_when=cf.FIRST_COMPLETED)
             for fu in finished:
-                idx, name, ok, outcome, cls, first = fu.result()
+                idx, name, ok, outcome, cls, first, secs, nbytes = fu.result()
+                if prof is not None:
+                    prof.write('%d %.4f %d %s %s\n' % (idx, secs, nbytes,
+                                                       outcome.replace(' ', '_'), name))
                 outcomes[outcome] += 1
                 ndone = sum(outcomes.values())
                 if args.progress > 0 and ndone % args.progress == 0:
@@ -399,6 +420,16 @@ def main():
                         classes[cls] = [0, first, name]
                     classes[cls][0] += 1
     dt = time.time() - t0
+    if prof is not None:
+        prof.close()
+    ru1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (ru1.ru_utime - ru0.ru_utime) + (ru1.ru_stime - ru0.ru_stime)
+    # CPU seconds of the dynx runs per input: independent of the machine's load, so the rate
+    # of a campaign on J idle cores is about J / (CPU s per input)
+    print('fuzz_decks: dynx CPU %.1f s (user + system) for %d inputs in %.1f s: %.4f CPU s per '
+          'input, about %.1f inputs/s on %d idle cores' % (
+              cpu, args.count, time.time() - tm0, cpu / max(args.count, 1),
+              max(1, args.jobs) * args.count / max(cpu, 1e-9), max(1, args.jobs)))
     print('fuzz_decks: %d inputs (seed %d, %s, %d jobs) in %.1f s (%.2f inputs/s): %s' % (
         args.count, seed, os.path.basename(dynx), args.jobs, dt, args.count / max(dt, 1e-9),
         ', '.join('%s %d' % kv for kv in sorted(outcomes.items()))))
