@@ -6,7 +6,7 @@
 program test_plane_stress
    use dx_kinds, only: wp
    use dx_error, only: error_t
-   use dx_material, only: MAT_ERR_NO_PLANE_STRESS
+   use dx_material, only: MAT_ERR_NO_PLANE_STRESS, MAT_ERR_PS_ALG
    use dx_mat_elastic, only: mat_elastic_t
    use dx_mat_null, only: mat_null_t
    use dx_mat_plastic_kinematic, only: mat_plastic_kinematic_t
@@ -199,6 +199,31 @@ contains
       call check_close(dz(1), d1(1, 2), 0.0_wp, 1.0e-12_wp, &
                        'uniaxial thickness strain = lateral strain (-nu sigma/E - eps_p/2)')
 
+      ! ---- Cowper-Symonds (SRC = 40/s, SRP = 5): after a plastic step the radius is
+      ! R (SIGY + BETA Ep eps_p) with R = 1 + (rate/C)**(1/P), rate = ps_rate of the increment
+      pk%src = 40.0_wp; pk%srp = 5.0_wp; pk%beta = 0.5_wp
+      call pk%setup(err)
+      do alg = 1, 4
+         s1 = 0.0_wp; h1 = 0.0_wp
+         s1(1) = sy
+         de = [1.0e-3_wp, -4.0e-4_wp, 2.0e-4_wp, 0.0_wp, 0.0_wp]
+         call lamina_step(pk, alg, 0.5_wp, de, s1, h1, ie)
+         f = 1.0_wp + (sqrt((4.0_wp/3.0_wp)*(de(1)**2 + de(2)**2 + de(1)*de(2)) + de(3)**2/3.0_wp)/ &
+                       0.5_wp/40.0_wp)**0.2_wp
+         call check(h1(1) > 0.0_wp, 'Cowper-Symonds step is plastic, algorithm '//achar(48 + alg))
+         call check_close(lamina_vm(s1(1:3) - [h1(2), h1(3), h1(5)]), f*(sy + 0.5_wp*pk%ep*h1(1)), &
+                          0.0_wp, merge(1.0e-3_wp, 1.0e-13_wp, alg == PS_SECANT3), &
+                          'Cowper-Symonds radius R (SIGY + BETA Ep eps_p), algorithm '//achar(48 + alg))
+      end do
+      pk%src = 0.0_wp; pk%srp = 0.0_wp
+      call pk%setup(err)
+      ! an algorithm number outside 1..5 is flagged
+      pk%ps_alg = 7
+      d1(1, :) = 1.0e-3_wp; sg = 0.0_wp; hh = 0.0_wp; ierr = 0
+      call pk%update_plane_stress(1, 0.0_wp, d1, sg, hh, ierr(1:1))
+      call check(ierr(1) == MAT_ERR_PS_ALG, 'ps_alg 7 gives MAT_ERR_PS_ALG')
+      pk%ps_alg = PS_SECANT3
+
       ! ---- *MAT_024: bilinear and a curve crossing a breakpoint (the 3-D test's values)
       pl%ro = 7.8e-9_wp; pl%e = e; pl%pr = pr; pl%sigy = sy; pl%etan = et
       call pl%resolve_curves(curves(1:0), err)
@@ -227,5 +252,10 @@ contains
          call check_close(sxx, 330.0_wp/1.0025_wp, 0.0_wp, bound_path(alg), &
                           'mat24 lamina curve, 100 steps of 1e-3, algorithm '//achar(48 + alg))
       end do
+      ! VP = 1 (viscoplastic) has no plane-stress form yet
+      pl%vp = 1.0_wp; pl%c = 40.0_wp; pl%p = 5.0_wp
+      d1(1, :) = 1.0e-3_wp; sg = 0.0_wp; hh = 0.0_wp; ierr = 0
+      call pl%update_plane_stress(1, 1.0e-6_wp, d1, sg, hh(:, 1:2), ierr(1:1))
+      call check(ierr(1) == MAT_ERR_NO_PLANE_STRESS, '*MAT_024 VP = 1: no plane-stress form flagged')
    end subroutine plastic_checks
 end program test_plane_stress
