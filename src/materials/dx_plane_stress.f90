@@ -6,9 +6,11 @@
 !>   PS_FULL     = 2  the exact (closest-point, backward Euler) return solved to round-off by a
 !>                    safeguarded Newton iteration (MITER = 2, the reference);
 !>   PS_RADIAL   = 3  radial stress scaling onto the updated yield radius (MITER = 3);
-!>   PS_ONE_STEP = 4  the one-step analytic return of Yuen/DYNA3D (LLNL FY97 Thrust Area Report,
-!>                    article 5: flow direction frozen at the trial state, the consistency
-!>                    condition then a quadratic in the plastic multiplier; dynx's own value).
+!>   PS_ONE_STEP = 4  the one-step analytic return of DYNA3D (LLNL FY97 Engineering Thrust Area
+!>                    Report, article 5, ../shared/seed: flow direction frozen, here at the trial
+!>                    state, the consistency condition then a quadratic in the plastic
+!>                    multiplier; 4 is dynx's own MITER value);
+!>   PS_ONE_STEP_N = 5  the same with the normal where the step enters the yield surface (study).
 !> Notation: xi = sig - alpha the in-plane relative stress (xi12 the shear stress); the von Mises
 !> radius sbar^2 = xi11^2 + xi22^2 - xi11 xi22 + 3 xi12^2 = xi^T M xi = s^2/4 + 3d^2/4 + 3t^2 with
 !> the modes s = xi11 + xi22, d = xi11 - xi22, t = xi12. Flow depsp = lam M xi (engineering
@@ -25,9 +27,10 @@
 !> then A (1 - lam a1)^2 + B (1 - lam a2)^2 = (Y_n + Hi sbar* lam)^2 with A = s*^2/4,
 !> B = 3d*^2/4 + 3t*^2, whose smallest positive root is taken (no iteration); the result lies on
 !> the yield surface to round-off for linear hardening. When no root exists or it lies beyond
-!> lam = 1/a2 (the deviatoric modes would change sign; only for trial radii several times Y)
-!> the point takes the radial scaling below; with tabulated hardening the one-step stress is
-!> scaled radially onto the curve's Y(epsp + depbar).
+!> lam a2 = 3/4 (at 1 the deviatoric modes would change sign; trial radii above about 1.75 Y,
+!> increments above ~1e-3; the threshold is measured in docs/studies/lamina.md) the point takes
+!> the radial scaling below; with tabulated hardening the one-step stress is scaled radially onto
+!> the curve's Y(epsp + depbar).
 !> Radial scaling: depbar = (sbar* - Y_n)/(3G + Hi + Hk), xi = xi* Y(epsp + depbar)/sbar*
 !> (DYNA3D's non-iterative option; it ignores the sigma33 = 0 consistency of the plastic flow).
 !> Transverse shears (components 4, 5) are elastic. dezz: the thickness strain increment,
@@ -129,14 +132,14 @@ contains
             c2 = aa(i)*a1*a1 + bb(i)*a2*a2 - (hi(i)*sb(i))**2
             q = aa(i)*a1 + bb(i)*a2 + y0(i)*hi(i)*sb(i)
             disc = q*q - c2*c0(i)
-            ! smallest positive root (stable form); the vertex q/c2 (c2 > 0) when there is none
-            lv = q*c2/max(c2*c2, tiny(1.0_wp))
-            lr = c0(i)/max(q + sqrt(max(disc, 0.0_wp)), tiny(1.0_wp))
+            ! smallest positive root (stable form) c0/(q + sqrt(disc)); the vertex q/c2 (c2 > 0)
+            ! when there is none: one quotient of blended numerator and denominator
             wv = merge(1.0_wp, 0.0_wp, disc < 0.0_wp)
-            l1 = lr + wv*(lv - lr)
+            l1 = (c0(i) + wv*(q - c0(i)))/max(q + sqrt(max(disc, 0.0_wp)) + &
+                                              wv*(c2 - q - sqrt(max(disc, 0.0_wp))), tiny(1.0_wp))
             ! outside its range (no root, or lam a2 > 3/4: docs/studies/lamina.md) radial scaling
             wb = max(wv, merge(1.0_wp, 0.0_wp, l1*a2 > 0.75_wp))
-            l0 = c0(i)/((sb(i) + y0(i))*(c3 + hi(i) + hk))/sb(i)
+            l0 = c0(i)/((sb(i) + y0(i))*(c3 + hi(i) + hk)*sb(i))
             lam(i) = l1 + wb*(l0 - l1)
             fs(i) = 1.0_wp - (1.0_wp - wb)*l1*a1
             fd(i) = 1.0_wp - (1.0_wp - wb)*l1*a2
@@ -267,12 +270,21 @@ contains
       ! finish: radial scaling where wfx = 1, back stress, plastic strain, stress, blended with
       ! the weight wb = 1 (plastic) or 0: elastic points keep the trial stress and their history
       ! bitwise (x + 0 = x)
+      ! (a chunk in which no point is flagged skips the square root and the quotient)
+      if (any(wfx > 0.0_wp)) then
+         do i = 1, nv
+            sn = s(i)*fs(i); dn = d(i)*fd(i); tn = t(i)*fd(i)
+            lv = ynew(i)/sqrt(max(0.25_wp*sn*sn + 0.75_wp*dn*dn + 3.0_wp*tn*tn, tiny(1.0_wp)))
+            sc = wpl(i)*(1.0_wp + wfx(i)*(lv - 1.0_wp))
+            s(i) = sn*sc; d(i) = dn*sc; t(i) = tn*sc
+         end do
+      else
+         do i = 1, nv
+            s(i) = s(i)*fs(i)*wpl(i); d(i) = d(i)*fd(i)*wpl(i); t(i) = t(i)*fd(i)*wpl(i)
+         end do
+      end if
+      ! the end relative stress times the weight (above), the back-stress increment
       do i = 1, nv
-         sn = s(i)*fs(i); dn = d(i)*fd(i); tn = t(i)*fd(i)
-         lv = ynew(i)/sqrt(max(0.25_wp*sn*sn + 0.75_wp*dn*dn + 3.0_wp*tn*tn, tiny(1.0_wp)))
-         sc = wpl(i)*(1.0_wp + wfx(i)*(lv - 1.0_wp))
-         ! the end relative stress times the weight, the back-stress increment
-         s(i) = sn*sc; d(i) = dn*sc; t(i) = tn*sc
          lr = wpl(i)*hk*lam(i)
          sumdp(i) = wpl(i)*0.5_wp*lam(i)*dirs(i)
          dirs(i) = lr*dirs(i); dird(i) = lr*dird(i); dirt(i) = lr*dirt(i)
