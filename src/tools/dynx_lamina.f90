@@ -3,6 +3,9 @@
 !>                             secant (1) and radial (3) returns against the full return (2):
 !>                             DIR/lamina_map_<state>_<alg>.dat (theta deg, log10 size, log10 error)
 !>                             and DIR/lamina_map_summary.dat (largest error per size)
+!>   dynx-lamina path FILE     a strain-increment history through one lamina by each algorithm:
+!>                             FILE lines 'dt de_xx de_yy gam_xy gam_yz gam_zx' ('#' comments);
+!>                             prints per step and algorithm sigma_xx sigma_yy sigma_xy eps_p
 !>   dynx-lamina bench [REPS]  ns per lamina update of each algorithm on chunks of 128 points
 !>                             (best of 15 interleaved rounds of REPS chunk updates)
 !> The material: *MAT_PLASTIC_KINEMATIC E = 200 GPa, nu = 0.3, sigma_y = 250 MPa, Et = 2 GPa
@@ -15,7 +18,7 @@ program dynx_lamina
    use dx_mat_plastic_kinematic, only: mat_plastic_kinematic_t
    use dx_plane_stress, only: PS_SECANT3, PS_FULL, PS_RADIAL, PS_ONE_STEP, PS_ONE_STEP_N, &
                               ps_alg_name
-   use dx_lamina, only: lamina_map_point
+   use dx_lamina, only: lamina_map_point, lamina_step
    implicit none
    character(256) :: mode, arg
    type(mat_plastic_kinematic_t) :: pk
@@ -28,7 +31,7 @@ program dynx_lamina
    call pk%setup(err)
    if (allocated(err)) error stop 'dynx-lamina: material setup failed'
    if (command_argument_count() < 1) then
-      write(error_unit, '(a)') 'usage: dynx-lamina maps DIR | dynx-lamina bench [REPS]'
+      write(error_unit, '(a)') 'usage: dynx-lamina maps DIR | path FILE | bench [REPS]'
       stop 2
    end if
    call get_command_argument(1, mode)
@@ -37,6 +40,13 @@ program dynx_lamina
       arg = 'docs/studies/data'
       if (command_argument_count() >= 2) call get_command_argument(2, arg)
       call maps(trim(arg))
+   case ('path')
+      if (command_argument_count() < 2) then
+         write(error_unit, '(a)') 'usage: dynx-lamina path FILE'
+         stop 2
+      end if
+      call get_command_argument(2, arg)
+      call path(trim(arg))
    case ('bench')
       reps = 20000
       if (command_argument_count() >= 2) then
@@ -52,11 +62,56 @@ program dynx_lamina
       call pk%setup(err)
       call bench(reps)
    case default
-      write(error_unit, '(a)') 'dynx-lamina: unknown mode '//trim(mode)//' (maps or bench)'
+      write(error_unit, '(a)') 'dynx-lamina: unknown mode '//trim(mode)//' (maps, path or bench)'
       stop 2
    end select
 
 contains
+
+   !> The history of FILE through one lamina per algorithm (1..4), from the virgin state.
+   subroutine path(file)
+      character(*), intent(in) :: file
+      real(wp) :: sig(5, 4), hv(7, 4), v(6)
+      character(512) :: line
+      integer :: u, ios, ln, ia, ierr, nstep
+      open(newunit=u, file=file, status='old', action='read', iostat=ios)
+      if (ios /= 0) then
+         write(error_unit, '(a)') 'dynx-lamina: cannot open '//file
+         stop 4
+      end if
+      sig = 0.0_wp; hv = 0.0_wp
+      ln = 0; nstep = 0
+      write(output_unit, '(a)') '# step alg sigma_xx sigma_yy sigma_xy eps_p'
+      do
+         read(u, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         ln = ln + 1
+         if (len_trim(line) == 0) cycle
+         line = adjustl(line)
+         if (line(1:1) == '#') cycle
+         read(line, *, iostat=ios) v
+         if (ios /= 0) then
+            write(error_unit, '(a,i0,a)') 'dynx-lamina: '//file//':', ln, ': expected 6 numbers '// &
+               '(dt de_xx de_yy gam_xy gam_yz gam_zx), got "'//trim(line)//'"'
+            stop 2
+         end if
+         if (.not. (v(1) >= 0.0_wp)) then
+            write(error_unit, '(a,i0,a)') 'dynx-lamina: '//file//':', ln, ': field dt must be >= 0'
+            stop 2
+         end if
+         nstep = nstep + 1
+         do ia = 1, 4
+            call lamina_step(pk, ia, v(1), v(2:6), sig(:, ia), hv(:, ia), ierr)
+            if (ierr /= 0) then
+               write(error_unit, '(a,i0,a,i0)') 'dynx-lamina: '//file//':', ln, &
+                  ': the update failed, algorithm ', ia
+               stop 3
+            end if
+            write(output_unit, '(i6,i4,3es16.8,es14.6)') nstep, ia, sig(1:3, ia), hv(1, ia)
+         end do
+      end do
+      close(u)
+   end subroutine path
 
    subroutine maps(dir)
       character(*), intent(in) :: dir
