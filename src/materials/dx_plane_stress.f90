@@ -17,8 +17,10 @@
 !> shear), so the effective plastic strain increment is depbar = lam sbar.
 !> Back stress by Ziegler's rule in the plane-stress space, dalpha = Hk depbar xi/sbar = Hk lam xi
 !> (Hk the kinematic modulus (1 - BETA) Ep): it reproduces the 3-D Prager rule of *MAT_003 in
-!> uniaxial stress (OpenRadioss law 2, m2cplr.F, uses the same form). Isotropic radius Y(epsp)
-!> with slope Hi (rate factor included).
+!> uniaxial stress (OpenRadioss law 2, m2cplr.F, uses the same form; the seed's hardening law,
+!> Eq. 3, garbled by the OCR, reads dalpha ~ (1 - beta) H (sigma - alpha)/||.|| deps-bar, the same
+!> direction, and its Eq. 2 d(sigma-bar) = beta H deps-bar the same split of H). Isotropic radius
+!> Y(epsp) with slope Hi (rate factor included).
 !> The exact return (Simo & Taylor 1986, IJNME 22:649-670; Simo & Hughes 1998, Computational
 !> Inelasticity, 3.4): C M is diagonal in the modes, with eigenvalues E/(2(1 - nu)) for s and 3G
 !> for d and t, so the end state is s = s*/(1 + lam a1), (d, t) = (d*, t*)/(1 + lam a2) with
