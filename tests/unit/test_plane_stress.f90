@@ -53,6 +53,13 @@ program test_plane_stress
    call check_close(sig(2, 3), g*2.0e-3_wp, 0.0_wp, 1.0e-14_wp, 'in-plane shear G gamma_xy')
    call check_close(sig(2, 4), -g*1.0e-3_wp, 0.0_wp, 1.0e-14_wp, 'transverse shear G gamma_yz')
    call check_close(sig(2, 5), g*4.0e-4_wp, 0.0_wp, 1.0e-14_wp, 'transverse shear G gamma_zx')
+   ! thickness strain of the uniaxial-stress point: -nu e
+   block
+      real(wp) :: dz2(2), s2(2, 5)
+      s2 = 0.0_wp
+      call el%update_plane_stress(2, 1.0e-6_wp, deps, s2, hv, ierr, dezz=dz2)
+      call check_close(dz2(1), -pr*eps, 0.0_wp, 1.0e-14_wp, 'elastic thickness strain -nu e')
+   end block
    ! incremental: a second step from the first adds the same increment (hypoelastic)
    call el%update_plane_stress(2, 1.0e-6_wp, deps, sig, hv, ierr)
    call check_close(sig(1, 1), 2.0_wp*e*eps, 0.0_wp, 1.0e-14_wp, 'two uniaxial steps add')
