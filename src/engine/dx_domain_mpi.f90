@@ -9,7 +9,7 @@
 !> replicated run) or MPI.
 module dx_domain_mpi
    use dx_kinds, only: wp
-   use dx_error, only: error_t, set_error, EXIT_NUMERIC
+   use dx_error, only: error_t, set_error, EXIT_NUMERIC, EXIT_INPUT
    use dx_strings, only: str
    use dx_model, only: model_t
    use dx_output, only: output_t
@@ -92,6 +92,11 @@ contains
       md%contact%split_mode = split
       call par_engine_setup(md%eng, model, deck, outdir, partdir, md%loads, md%rigid, md%plot, &
                             md%contact, md%emc, error)
+      if (par_engine_on(md%eng) .and. model%ctrl%dt2ms /= 0.0_wp) then
+         call set_error(error, model%deck_file//': *CONTROL_TIMESTEP field DT2MS: mass '// &
+            'scaling runs on one rank in this version; run without mpirun', EXIT_INPUT)
+         return
+      end if
       if (par_engine_on(md%eng)) then
          call move_alloc(md, dom)
       else
