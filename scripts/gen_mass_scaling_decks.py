@@ -1,14 +1,18 @@
 #!/usr/bin/python3
 """Decks of the mass-scaling regression cases (tests/regression/mass_scaling_*): a free
-steel bar (mm, ms, kg, GPa) of 1 x 1 cross-section, ten hexahedra along x, the sixth of
-them short (0.25 long, the others 1), pulled or pushed at x = 0 by a constant nodal force.
+steel bar (mm, ms, kg, GPa) of 1 x 1 cross-section meshed 2 x 2, ten elements along x, the
+sixth of them short (0.25 long, the others 1), pulled or pushed at x = 0 by a constant force
+(0.01 on each of the 9 nodes there). (2 x 2 across: no element carries half of its nodes' mass, so
+every step is L/c; in a one-element-wide bar the interior elements sit at phim = 1/2, the
+threshold of dx_hex8's element bound, where round-off picks the formula.)
 Run from the top directory: python3 scripts/gen_mass_scaling_decks.py"""
 import os
 
+ENDMAS_PCT = 3.3
 XS = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 5.25, 6.25, 7.25, 8.25, 9.25]
 
 
-def deck(title, dt2ms, ms1st=0, endtim=0.003, endmas=0.0, force=-0.025, lctm=0,
+def deck(title, dt2ms, ms1st=0, endtim=0.003, endmas=0.0, force=-0.01, lctm=0,
          extra='', glstat=1.0e-4, d3dump=0):
     out = ['*KEYWORD', '*TITLE', title, '*CONTROL_TERMINATION',
            '$#  endtim    endcyc     dtmin    endeng    endmas',
@@ -26,40 +30,42 @@ def deck(title, dt2ms, ms1st=0, endtim=0.003, endmas=0.0, force=-0.025, lctm=0,
             '*SECTION_SOLID', '         1         1',
             '*MAT_ELASTIC', '$#     mid        ro         e        pr',
             '         1   7.85E-6     210.0       0.3',
-            '*SET_NODE_LIST', '        10', '         1         2         3         4',
+            '*SET_NODE_LIST', '        10', ''.join('%10d' % k for k in range(1, 9)),
+            '%10d' % 9,
             '*LOAD_NODE_SET', '$#    nsid       dof      lcid        sf',
             '        10         1         1%10.4g' % force,
             '*DEFINE_CURVE', '         1', '                 0.0                 1.0',
             '                 1.0                 1.0']
     out.append('*NODE')
-    n = 0
-    for x in XS:
-        for (y, z) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]:
-            n += 1
-            out.append('%8d%16.8f%16.8f%16.8f' % (n, x, y, z))
+    for s_, x in enumerate(XS):
+        for j in range(3):
+            for k in range(3):
+                out.append('%8d%16.8f%16.8f%16.8f' % (9*s_ + 3*j + k + 1, x, 0.5*j, 0.5*k))
     out.append('*ELEMENT_SOLID')
-    for e in range(len(XS) - 1):
-        a = 4*e
-        out.append('%8d%8d' % (e + 1, 1))
-        out.append(''.join('%8d' % k for k in [a + 1, a + 2, a + 3, a + 4,
-                                               a + 5, a + 6, a + 7, a + 8]))
+    e = 0
+    for s_ in range(len(XS) - 1):
+        for j in range(2):
+            for k in range(2):
+                face = [(j, k), (j + 1, k), (j + 1, k + 1), (j, k + 1)]
+                a = [9*s_ + 3*jj + kk + 1 for (jj, kk) in face]
+                e += 1
+                out.append('%8d%8d' % (e, 1))
+                out.append(''.join('%8d' % n for n in a + [n + 9 for n in a]))
     out.append(extra.rstrip('\n')) if extra else None
     out.append('*END')
     return '\n'.join(o for o in out if o is not None) + '\n'
 
 
 CASES = {
-    'mass_scaling_neg': deck('mass scaling DT2MS = -1e-4: the short element lifted to 1e-4',
-                             -1.0e-4),
-    'mass_scaling_pos': deck('mass scaling DT2MS = +1.1e-4: every element set to 1.1e-4',
-                             1.1e-4, force=0.025),
-    'mass_scaling_ms1st': deck('mass scaling DT2MS = -1e-4, MS1ST = 1, pushed', -1.0e-4,
-                               ms1st=1, force=0.025),
-    'mass_scaling_endmas': deck('mass scaling DT2MS = -1e-4 with ENDMAS = 13.5 %', -1.0e-4,
-                                endmas=13.5),
-    'mass_scaling_restart': deck('mass scaling DT2MS = -1e-4, pushed: restart', -1.0e-4,
-                                 force=0.025, endtim=0.006, d3dump=20),
-    'mass_scaling_bad_lctm': deck('mass scaling with an undefined LCTM curve', -1.0e-4,
+    'mass_scaling_neg': deck('mass scaling DT2MS = -6e-5: the short elements lifted to 6e-5',
+                             -6.0e-5),
+    'mass_scaling_pos': deck('mass scaling DT2MS = +7e-5: every element set to 7e-5',
+                             7.0e-5, force=0.01),
+    'mass_scaling_ms1st': deck('mass scaling DT2MS = -6e-5, MS1ST = 1, pushed', -6.0e-5,
+                               ms1st=1, force=0.01),
+    'mass_scaling_endmas': deck('mass scaling DT2MS = -6e-5 with ENDMAS = %g %%' % ENDMAS_PCT,
+                                -6.0e-5, endmas=ENDMAS_PCT),
+    'mass_scaling_bad_lctm': deck('mass scaling with an undefined LCTM curve', -6.0e-5,
                                   lctm=7),
 }
 

@@ -18,8 +18,8 @@
 !>  - Rigid parts are never scaled (their blocks are not in the element pass).
 !>  - ENDMAS: the run ends (normal termination, as LS-DYNA) at the cycle where the added mass
 !>    passes ENDMAS percent of the model's mass, naming the nodes with the most added mass
-!>    (LS-DYNA prints up to 20). A warning (once) when the increase passes 5 percent (the
-!>    usual limit, d3view ibid.).
+!>    (LS-DYNA prints up to 20). A warning (once) when the mass has changed by more than 5
+!>    percent (the usual limit, d3view ibid.; a removal under DT2MS > 0 counts too).
 !> The added mass is the element's (model%added_mass, by dense global element: per-part sums
 !> for matsum read it there); the nodal mass is the lumped mass of rho V0 + dm_e per
 !> element, spread with the family's mass share and summed element-major from zero, as
@@ -105,8 +105,8 @@ contains
       if (model%ctrl%endmas > 0.0_wp .and. model%ctrl%endmas /= 1.0e8_wp) &
          call log_info('dynx: ENDMAS = '//rstr(model%ctrl%endmas)//' %: the run ends when '// &
                        'the added mass passes it')
-      call log_info('dynx: a warning when the added mass passes '// &
-                    rstr(MS_WARN_PERCENT, 3)//' % of the model''s mass')
+      call log_info('dynx: a warning when mass scaling changes the model''s mass by more '// &
+                    'than '//rstr(MS_WARN_PERCENT, 3)//' %')
    end subroutine ms_log_start
 
    !> After the element pass of block b (res: its elements' steps dte): the added mass the

@@ -109,7 +109,7 @@ contains
             call lump_mass(model)
             call dom%sum_mass(model)
             model%energy%added_mass = ms_added_total(model)
-            self%ms_warned = ms_percent(model) > MS_WARN_PERCENT
+            self%ms_warned = abs(ms_percent(model)) > MS_WARN_PERCENT
          end if
       end if
       call ms_log_start(model)
@@ -245,8 +245,8 @@ contains
       self%done = done
    end subroutine x_step
 
-   !> Mass scaling added mass this cycle: the nodal masses with it, the added total, the
-   !> warning past MS_WARN_PERCENT and the ENDMAS stop; at the first cycle the initial
+   !> Mass scaling changed an element's mass this cycle: the nodal masses with it, the added
+   !> total, the warning once the change passes MS_WARN_PERCENT and the ENDMAS stop; at the first cycle the initial
    !> kinetic energy with the scaled masses (the run starts with them, as in LS-DYNA).
    subroutine scaled_mass(self, model, dom)
       class(explicit_t), intent(inout) :: self
@@ -263,12 +263,13 @@ contains
                                                            model%rigid%ke0_corr
       end if
       pct = ms_percent(model)
-      if (.not. self%ms_warned .and. pct > MS_WARN_PERCENT) then
+      if (.not. self%ms_warned .and. abs(pct) > MS_WARN_PERCENT) then
          self%ms_warned = .true.
-         call log_warn('mass scaling (DT2MS = '//rstr(model%ctrl%dt2ms)//') has added '// &
-            rstr(pct, 4)//' % to the model''s mass (more than '//rstr(MS_WARN_PERCENT, 3)// &
-            ' %) at cycle '//str(model%cycle)//', time '//rstr(model%time)// &
-            '; the inertia of the scaled parts is changed (glstat: added mass)')
+         call log_warn('mass scaling (DT2MS = '//rstr(model%ctrl%dt2ms)//') has changed '// &
+            'the model''s mass by '//rstr(pct, 4)//' % (more than '// &
+            rstr(MS_WARN_PERCENT, 3)//' %) at cycle '//str(model%cycle)//', time '// &
+            rstr(model%time)//'; the inertia of the scaled parts is changed (glstat: '// &
+            'added_mass, percent_increase)')
       end if
       if (.not. self%ms_stop .and. model%ctrl%endmas > 0.0_wp .and. pct > model%ctrl%endmas) &
          then
