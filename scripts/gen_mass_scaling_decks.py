@@ -65,6 +65,8 @@ CASES = {
                                ms1st=1, force=0.01),
     'mass_scaling_endmas': deck('mass scaling DT2MS = -6e-5 with ENDMAS = %g %%' % ENDMAS_PCT,
                                 -6.0e-5, endmas=ENDMAS_PCT),
+    'mpi_mass_scaling': deck('mass scaling DT2MS = +7e-5, pushed, under MPI', 7.0e-5,
+                             force=0.01, endtim=0.004),
     'mass_scaling_bad_lctm': deck('mass scaling with an undefined LCTM curve', -6.0e-5,
                                   lctm=7),
 }

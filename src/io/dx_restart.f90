@@ -133,6 +133,10 @@ contains
       call restore_run(rs, model)
       call restore_nodes(rs, model)
       call restore_blocks(rs, model)
+      ! (the global model of an MPI run continuing a serial dump has none allocated yet)
+      if (rs%has('added_mass') .and. .not. allocated(model%added_mass) .and. &
+          model%ctrl%dt2ms /= 0.0_wp) &
+         allocate(model%added_mass(model%ne))
       if (allocated(model%added_mass)) then
          model%added_mass = 0.0_wp
          if (rs%has('added_mass')) call rs%get('added_mass', model%added_mass)

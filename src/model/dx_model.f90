@@ -135,7 +135,7 @@ module dx_model
       real(wp) :: tssfac = 0.9_wp
       integer :: isdo = 0
       real(wp) :: tslimt = 0.0_wp
-      real(wp) :: dt2ms = 0.0_wp        !< mass scaling (dx_mass_scaling): < 0 minimum, > 0 every element
+      real(wp) :: dt2ms = 0.0_wp        !< mass scaling (dx_mass_scaling): < 0 floor, > 0 all
       integer :: ms1st = 0              !< 1: mass scaling at the first cycle only
       integer :: lctm = 0               !< dense curve index limiting dt (0: none)
       integer :: erode = 0

@@ -28,8 +28,8 @@ module dx_explicit
    use dx_rigid_solver, only: rigid_close, rigid_write_rbdout
    use dx_energy_sums, only: initial_kinetic, kinetic_energy, constrained_nodes, energy_bits
    use dx_domain, only: domain_t
-   use dx_mass_scaling, only: ms_init, lump_mass, ms_block, ms_added_total, ms_percent, &
-                              ms_log_start, ms_endmas_report, MS_WARN_PERCENT
+   use dx_mass_scaling, only: ms_init, lump_mass, ms_block, ms_percent, ms_log_start, &
+                              ms_endmas_report, MS_WARN_PERCENT
    use dx_integrator, only: integrator_t, run_options_t, END_FAILED, END_STOPPED
    implicit none
    private
@@ -85,6 +85,7 @@ contains
       type(checkpoint_t), intent(inout) :: ck
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
+      logical :: changed
       if (.not. allocated(model%x)) call init_state(model, dom)
       self%outdir = opts%outdir
       allocate(self%vold(3, model%nn))
@@ -106,9 +107,8 @@ contains
          call log_info('dynx: continuing from cycle '//str(model%cycle)//', time '// &
                        rstr(model%time))
          if (allocated(model%added_mass)) then   ! the restored added mass on the nodes
-            call lump_mass(model)
-            call dom%sum_mass(model)
-            model%energy%added_mass = ms_added_total(model)
+            changed = .true.
+            call dom%remass(model, changed)
             self%ms_warned = abs(ms_percent(model)) > MS_WARN_PERCENT
          end if
       end if
@@ -164,6 +164,7 @@ contains
             end associate
          end do
          if (ibmin > 0) model%dt_elem = model%blocks(ibmin)%elem(iemin)
+         if (ms) call dom%remass(model, mchanged)   ! (MPI: any rank's change, all ranks)
          if (mchanged) call scaled_mass(self, model, dom)
          ! global min (serial tie rule); MPI: the ranks' stop/dump requests ride in it, and
          ! a failure on any rank stops all
@@ -245,17 +246,15 @@ contains
       self%done = done
    end subroutine x_step
 
-   !> Mass scaling changed an element's mass this cycle: the nodal masses with it, the added
-   !> total, the warning once the change passes MS_WARN_PERCENT and the ENDMAS stop; at the first cycle the initial
-   !> kinetic energy with the scaled masses (the run starts with them, as in LS-DYNA).
+   !> Mass scaling changed an element's mass this cycle (the nodal masses and the added
+   !> total are updated, dom%remass): the warning once the change passes MS_WARN_PERCENT and
+   !> the ENDMAS stop; at the first cycle the initial kinetic energy with the scaled masses
+   !> (the run starts with them, as in LS-DYNA).
    subroutine scaled_mass(self, model, dom)
       class(explicit_t), intent(inout) :: self
       type(model_t), intent(inout) :: model
       class(domain_t), intent(inout) :: dom
       real(wp) :: pct
-      call lump_mass(model)
-      call dom%sum_mass(model)
-      model%energy%added_mass = ms_added_total(model)
       if (model%cycle == 0) then
          model%energy%initial = initial_kinetic(model%mass, model%v)
          call dom%initial_energy(model)
