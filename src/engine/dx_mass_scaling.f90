@@ -2,7 +2,7 @@
 !> ENDMAS, with their LS-DYNA meaning (LS-DYNA Keyword User's Manual Vol. I, *CONTROL_TIMESTEP
 !> and *CONTROL_TERMINATION; the LSTC/Ansys support note "Mass scaling",
 !> lsdyna.ansys.com/mass-scaling and ftp.lstc.com/anonymous/outgoing/support/FAQ/mass_scaling;
-!> S. Bala, "Overview of mass-scaling in LS-DYNA", d3view blog, 2006):
+!> "Overview of mass-scaling in LS-DYNA", d3view blog, 2006; glstat lines: LS-DYNA l2a):
 !>  - DT2MS < 0: TSSFAC*|DT2MS| is the smallest step. An element whose step dt_e is below
 !>    |DT2MS| gets just the mass that lifts it to |DT2MS|; its step goes as sqrt(mass) (the
 !>    wave speed as 1/sqrt(rho)), so dm_e = m_e ((|DT2MS|/dt_e)**2 - 1), m_e = rho V0. Other
