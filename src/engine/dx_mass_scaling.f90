@@ -95,12 +95,13 @@ contains
       if (model%ctrl%dt2ms < 0.0_wp) then
          call log_info('dynx: mass scaling DT2MS = '//rstr(model%ctrl%dt2ms)//': elements '// &
             'whose step is below '//rstr(d)//' get the mass that lifts it there ('//when// &
-            '); the step stays >= TSSFAC*|DT2MS| = '//rstr(model%ctrl%tssfac*d))
+            '): no element limits the step below TSSFAC*|DT2MS| = '// &
+            rstr(model%ctrl%tssfac*d)//' (contact and LCTM still may)')
       else
          call log_info('dynx: mass scaling DT2MS = '//rstr(model%ctrl%dt2ms)//': every '// &
             'element''s mass is set for a step of '//rstr(d)//' at the first cycle (mass '// &
-            'added or removed), then added where needed ('//when//'); step TSSFAC*DT2MS = '// &
-            rstr(model%ctrl%tssfac*d))
+            'added or removed), then added where needed ('//when//'); the elements'' step '// &
+            'TSSFAC*DT2MS = '//rstr(model%ctrl%tssfac*d)//' (contact and LCTM still may limit it)')
       end if
       if (model%ctrl%endmas > 0.0_wp .and. model%ctrl%endmas /= 1.0e8_wp) &
          call log_info('dynx: ENDMAS = '//rstr(model%ctrl%endmas)//' %: the run ends when '// &
