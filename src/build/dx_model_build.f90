@@ -574,6 +574,19 @@ contains
          call set_error(error, at(inp, inp%term_src)//'ENDTIM <= 0 and ENDCYC <= 0: the run '// &
                         'would not end')
       end if
+      if (allocated(error)) return
+      ! ENDMAS acts only with mass scaling (DT2MS); 0 and LS-PrePost's default 1e8 are quiet
+      if (inp%ctrl%dt2ms == 0.0_wp .and. inp%ctrl%endmas /= 0.0_wp .and. &
+          inp%ctrl%endmas /= 1.0e8_wp) call log_warn(inp%files(inp%term_src%ifile)%s//':'// &
+         str(inp%term_src%line)//': *CONTROL_TERMINATION ENDMAS = '//rstr(inp%ctrl%endmas)// &
+         ' has no effect: it limits the mass added by mass scaling, and the deck has none '// &
+         '(*CONTROL_TIMESTEP DT2MS = 0)')
+      ! the conserving rigid-body integrator has no element step to scale
+      if (inp%ctrl%dt2ms /= 0.0_wp .and. (allocated(inp%emc%contacts) .or. &
+                                          allocated(inp%emc%spheres))) &
+         call set_error(error, at(inp, inp%timestep_src)//'field DT2MS: mass scaling (DT2MS = '// &
+            rstr(inp%ctrl%dt2ms)//') is not available with the conserving rigid-body '// &
+            'integrator (*DYNX_CONSERVING_CONTACT); set DT2MS = 0')
    contains
       subroutine add_hist(node)
          integer, intent(in) :: node

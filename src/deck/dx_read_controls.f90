@@ -9,7 +9,6 @@ module dx_read_controls
    use dx_kinds, only: wp
    use dx_error, only: error_t
    use dx_strings, only: str, rstr
-   use dx_log, only: log_warn
    use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, get_int, get_list_id, field_error, &
                             block_error, std_widths, check_max_cards
    use dx_deck_registry, only: registry_t
@@ -61,15 +60,11 @@ contains
          call c%real('DTMIN', 0.0_wp, t%dtmin)
          call c%real('ENDENG', 0.0_wp, t%endeng)
          call c%real('ENDMAS', 0.0_wp, t%endmas)
-         ! ENDMAS (percent; default 1e8, in effect off): LS-DYNA stops when the mass added
-         ! by mass scaling (*CONTROL_TIMESTEP DT2MS) reaches it. dynx adds no mass (DT2MS
-         ! /= 0 is an error), so it never acts: a value other than 0 and the default 1e8
-         ! (which LS-PrePost writes) draws a warning that it has no effect.
-         if (c%ok() .and. t%endmas /= 0.0_wp .and. t%endmas /= 1.0e8_wp) &
-            call log_warn(deck%files(blk%ifile)%s//':'// &
-            str(blk%cards(1)%line)//': *CONTROL_TERMINATION ENDMAS = '//rstr(t%endmas)// &
-            ' has no effect: it limits the mass added by mass scaling, and dynx adds none '// &
-            '(DT2MS is not applied)')
+         ! ENDMAS (percent; default 1e8, in effect off): stop when the mass added by mass
+         ! scaling (*CONTROL_TIMESTEP DT2MS; dx_mass_scaling) passes ENDMAS percent of the
+         ! model's mass. Without DT2MS it cannot act (the run's log says so).
+         if (c%ok() .and. t%endmas < 0.0_wp) call c%fail('ENDMAS', 'must be >= 0 (percent), '// &
+            'got '//rstr(t%endmas))
       end associate
       call c%zero('NOSOL', 'dynx always solves')
       call c%done(error)
@@ -78,10 +73,10 @@ contains
       inp%term_src = origin(blk%ifile, blk%cards(1)%line, blk%name)
    end subroutine read_termination
 
-   !> DTINIT TSSFAC ISDO TSLIMT DT2MS LCTM ERODE MS1ST; card 2 (mass scaling) must be empty.
-   !> ISDO and TSLIMT act on shells only (dynx has none): accepted. DT2MS /= 0 (mass
-   !> scaling) and ERODE /= 0 (deletion of solids whose step falls below DTMIN) would change
-   !> the results and are not implemented: one error naming both when both are set.
+   !> DTINIT TSSFAC ISDO TSLIMT DT2MS LCTM ERODE MS1ST; card 2 (selective mass scaling)
+   !> must be empty. ISDO and TSLIMT act on shells only (dynx has none): accepted. DT2MS and
+   !> MS1ST: mass scaling (dx_mass_scaling). ERODE /= 0 (deletion of solids whose step falls
+   !> below DTMIN) would change the results and is not implemented (issue 18): an error.
    subroutine read_timestep(deck, blk, inp, error)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
@@ -89,7 +84,6 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: k
       type(card_t) :: c
-      character(:), allocatable :: why
       character(len=7), parameter :: card2(8) = ['DT2MSF ', 'DT2MSLC', 'IMSCL  ', 'UNUSED ', &
          'UNUSED ', 'RMSCL  ', 'EMSCL  ', 'IHDO   ']
       call need_card(deck, blk, 'DTINIT TSSFAC ISDO TSLIMT DT2MS LCTM ERODE MS1ST', error)
@@ -106,19 +100,11 @@ contains
          call c%real('DT2MS', 0.0_wp, t%dt2ms)
          call c%int('LCTM', 0, inp%lctm)
          call c%int('ERODE', 0, t%erode)
-         if (c%ok() .and. (t%dt2ms /= 0.0_wp .or. t%erode /= 0)) then
-            why = ''
-            if (t%erode /= 0) why = '; ERODE = '//str(t%erode)//': the deletion of solid '// &
-               'elements whose time step falls below DTMIN is not implemented (issue 18)'
-            if (t%dt2ms /= 0.0_wp) then
-               call c%fail('DT2MS', 'DT2MS = '//rstr(t%dt2ms)//': mass scaling is not '// &
-                  'implemented; dynx would run at the natural time step'//why)
-            else
-               call c%fail('ERODE', why(3:))
-            end if
-         end if
+         if (c%ok() .and. t%erode /= 0) call c%fail('ERODE', 'ERODE = '//str(t%erode)// &
+            ': the deletion of solid elements whose time step falls below DTMIN is not '// &
+            'implemented (issue 18)')
+         call c%int('MS1ST', 0, t%ms1st, min=0, max=1)
       end associate
-      call c%zero('MS1ST', 'first-step-only mass scaling')
       call c%max_cards(2)
       call c%next()
       do k = 1, 8

@@ -20,7 +20,7 @@
 !> es, part_t): the model holds and re-exports them, so src/elements/ never imports src/model/
 !> (no folder pair imports each other).
 module dx_element_types
-   use dx_kinds, only: wp, huge_wp
+   use dx_kinds, only: wp, huge_wp, nv_chunk
    use dx_vec3, only: cross
    ! the hexahedron's volume and moments live in dx_hex8_geometry (a module of their own: not
    ! inlined here, so their results keep the bits they had in dx_model_build / dx_rigid_mass)
@@ -91,6 +91,7 @@ module dx_element_types
    type :: block_result_t
       real(wp) :: dt = huge_wp        !< smallest element time step (without TSSFAC)
       integer :: imin = 0             !< its position in the block
+      real(wp) :: dte(nv_chunk)       !< each element's step (1:nel; huge_wp: eroded)
       integer :: ibad = 0             !< first element in error (position), 0 = none
       integer :: errcode = 0
       real(wp) :: deint = 0.0_wp      !< internal energy increment of the block

@@ -580,6 +580,7 @@ contains
          if (trde < res%dt) then
             res%dt = trde; res%imin = i
          end if
+         res%dte(i) = trde
       end do
    end subroutine stable_time_step
 

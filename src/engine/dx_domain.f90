@@ -24,6 +24,7 @@ module dx_domain
    use dx_contact, only: contact_forces, contact_work
    use dx_rigid_solver, only: rigid_step
    use dx_element, only: element_mass_share
+   use dx_mass_scaling, only: lump_mass, ms_added_total
    use dx_restart, only: restart_write
    use dx_par_restart, only: serial_restart_read
    use dx_energy_sums, only: constraint_work, element_energies, set_energy
@@ -56,6 +57,7 @@ module dx_domain
    contains
       procedure(model_i), deferred :: sum_mass          !< after lumping: shared nodes' mass
       procedure(share_i), deferred :: mass_share        !< one-element-wide blocks' dt bound
+      procedure(remass_i), deferred :: remass           !< mass scaling: masses, added total
       procedure(model_i), deferred :: initial_energy    !< after the initial KE: global sum
       procedure(ask_model_i), deferred :: has_loads     !< the deck's loads, on any rank
       procedure(ask_i), deferred :: writer              !< this rank writes the global files
@@ -92,6 +94,13 @@ module dx_domain
          class(domain_t), intent(inout) :: d
          type(model_t), intent(inout) :: model
       end subroutine model_i
+      !> changed: this rank's elements' added mass changed (out: on any rank)
+      subroutine remass_i(d, model, changed)
+         import :: domain_t, model_t
+         class(domain_t), intent(inout) :: d
+         type(model_t), intent(inout) :: model
+         logical, intent(inout) :: changed
+      end subroutine remass_i
       subroutine share_i(d, model, cnodes)
          import :: domain_t, model_t
          class(domain_t), intent(inout) :: d
@@ -230,6 +239,7 @@ module dx_domain
    contains
       procedure :: sum_mass => s_model_nothing
       procedure :: mass_share => s_mass_share
+      procedure :: remass => s_remass
       procedure :: initial_energy => s_model_nothing
       procedure :: has_loads => s_has_loads
       procedure :: writer => s_writer
@@ -266,6 +276,16 @@ contains
       class(serial_domain_t), intent(inout) :: d
       type(model_t), intent(inout) :: model
    end subroutine s_model_nothing
+
+   !> Mass scaling changed an element's mass: the lumped masses with it and the added total.
+   subroutine s_remass(d, model, changed)
+      class(serial_domain_t), intent(inout) :: d
+      type(model_t), intent(inout) :: model
+      logical, intent(inout) :: changed
+      if (.not. changed) return
+      call lump_mass(model)
+      model%energy%added_mass = ms_added_total(model)
+   end subroutine s_remass
 
    !> One-element-wide blocks get the element dt bound (element_mass_share).
    subroutine s_mass_share(d, model, cnodes)

@@ -13,10 +13,11 @@ module dx_domain_mpi
    use dx_strings, only: str
    use dx_model, only: model_t
    use dx_output, only: output_t
-   use dx_par, only: par_size
+   use dx_par, only: par_size, par_allreduce, PAR_MAX
+   use dx_mass_scaling, only: lump_mass
    use dx_domain, only: domain_t, serial_domain_t, requests_t
    use dx_par_engine_setup, only: par_engine_setup, par_engine_mass_share
-   use dx_par_engine, only: par_engine_t, par_engine_on, par_engine_mass, &
+   use dx_par_engine, only: par_engine_t, par_engine_on, par_engine_mass, par_engine_remass, &
                             par_engine_initial, par_engine_writer, &
                             par_engine_fill, par_engine_pending, par_engine_defer, &
                             par_engine_dt, par_engine_global, par_engine_exchange, &
@@ -25,7 +26,7 @@ module dx_domain_mpi
                             par_engine_plot_finish, par_engine_flush_work, par_engine_report, &
                             par_engine_together
    use dx_par_loads, only: par_loads_t, par_loads_any, par_loads_shared, par_loads_work, &
-                           par_loads_flush
+                           par_loads_flush, par_loads_remass
    use dx_par_rigid, only: par_rigid_t, par_rigid_step, par_rigid_writes
    use dx_par_contact, only: par_contact_t, par_contact_forces, par_contact_add, &
                              par_contact_work
@@ -47,6 +48,7 @@ module dx_domain_mpi
    contains
       procedure :: sum_mass => m_sum_mass
       procedure :: mass_share => m_mass_share
+      procedure :: remass => m_remass
       procedure :: initial_energy => m_initial_energy
       procedure :: has_loads => m_has_loads
       procedure :: writer => m_writer
@@ -112,6 +114,22 @@ contains
       integer, intent(in) :: cnodes(:)
       call par_engine_mass_share(d%eng, model, cnodes, d%loads)
    end subroutine m_mass_share
+
+   !> Mass scaling: any rank's change is every rank's (one MAX reduction per cycle), then
+   !> the lumped masses summed in serial order (par_engine_remass) and the loads' masses.
+   subroutine m_remass(d, model, changed)
+      class(mpi_domain_t), intent(inout) :: d
+      type(model_t), intent(inout) :: model
+      logical, intent(inout) :: changed
+      integer :: flag
+      flag = merge(1, 0, changed)
+      call par_allreduce(flag, PAR_MAX)
+      changed = flag == 1
+      if (.not. changed) return
+      call lump_mass(model)
+      call par_engine_remass(d%eng, model)
+      call par_loads_remass(d%loads, model)
+   end subroutine m_remass
 
    subroutine m_initial_energy(d, model)
       class(mpi_domain_t), intent(inout) :: d

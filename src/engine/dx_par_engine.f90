@@ -42,7 +42,7 @@ module dx_par_engine
    use dx_par_plot, only: par_plot_t, par_plot_write, par_plot_finish
    implicit none
    private
-   public :: par_engine_t, par_engine_on, par_engine_mass, par_engine_initial, &
+   public :: par_engine_t, par_engine_on, par_engine_mass, par_engine_initial, par_engine_remass, &
              par_engine_fill, par_engine_dt, par_engine_exchange, par_engine_constraints, &
              par_engine_energies, par_engine_output, par_engine_fail, &
              par_engine_global, par_engine_report, par_engine_defer, &
@@ -130,6 +130,48 @@ contains
       eng%g%energy%mass = model%energy%mass
    end subroutine par_engine_mass
 
+
+   !> Mass scaling changed an element's mass (every rank, together; dx_mass_scaling): the
+   !> rank's lumped masses (lump_mass: a slot holds its corner's share) summed at the shared
+   !> nodes in serial order as at the start, the global copy of the masses (rank 0, or every
+   !> rank), and the added total, summed over the elements in serial order on rank 0 and
+   !> sent to all: bit for bit the serial run's.
+   subroutine par_engine_remass(eng, model)
+      type(par_engine_t), intent(inout) :: eng
+      type(model_t), intent(inout) :: model
+      real(wp), allocatable :: vals(:, :), gv(:, :), ga(:)
+      real(wp) :: tot(1)
+      integer :: i, e
+      call par_exchange_mass(eng%pm, model%mass)
+      model%mass(eng%pm%nloc + 1:) = 0.0_wp
+      allocate(vals(1, size(eng%own)), gv(1, size(eng%plan_own%keys)))
+      vals(1, :) = model%mass(eng%own)
+      if (eng%root_only) then
+         call par_gather_values_root(eng%plan_own, vals, gv)
+      else
+         call par_gather_values(eng%plan_own, vals, gv)
+      end if
+      if (par_rank() == 0 .or. .not. eng%root_only) eng%g%mass(eng%plan_own%keys) = gv(1, :)
+      deallocate(vals, gv)
+      allocate(vals(1, size(eng%elem_loc, 2)), gv(1, size(eng%plan_elem%keys)))
+      do i = 1, size(eng%elem_loc, 2)
+         associate (pb => model%blocks(eng%elem_loc(1, i)), j => eng%elem_loc(2, i))
+            vals(1, i) = model%added_mass(pb%elem(j))
+         end associate
+      end do
+      call par_gather_values_root(eng%plan_elem, vals, gv)
+      tot = 0.0_wp
+      if (par_rank() == 0) then
+         allocate(ga(model%ne))
+         ga = 0.0_wp
+         ga(eng%plan_elem%keys) = gv(1, :)
+         do e = 1, model%ne
+            tot(1) = tot(1) + ga(e)
+         end do
+      end if
+      call par_bcast_real(tot, 0)
+      model%energy%added_mass = tot(1)
+   end subroutine par_engine_remass
 
    !> The initial kinetic energy of the global model.
    subroutine par_engine_initial(eng, model)

@@ -35,7 +35,7 @@ module dx_par_loads
    implicit none
    private
    public :: par_loads_t, par_loads_setup, par_loads_any, par_loads_shared, par_loads_work, &
-             par_loads_flush, par_loads_take_mass
+             par_loads_flush, par_loads_take_mass, par_loads_remass
 
    integer, parameter :: NBUF_MAX = 32
 
@@ -243,6 +243,20 @@ contains
       end do
       ld%nbuf = 0
    end subroutine par_loads_flush
+
+   !> Mass scaling changed the nodal masses: the loads' nodes on this rank's shared nodes
+   !> take them from the rank's (summed) masses, as the serial run's loads see them.
+   subroutine par_loads_remass(ld, model)
+      type(par_loads_t), intent(inout) :: ld
+      type(model_t), intent(in) :: model
+      integer :: j
+      if (.not. ld%active) return
+      if (.not. allocated(ld%lm_out)) return
+      do j = 1, size(ld%lm_out, 2)
+         ld%lm%mass(ld%lm_out(1, j)) = model%mass(ld%lm_out(2, j))
+      end do
+      ld%lm_mass_set = .true.
+   end subroutine par_loads_remass
 
    !> The global masses of the loads' nodes on this rank's shared nodes, once (after
    !> init_state; the engine calls it before it frees the global model's masses).

@@ -529,6 +529,9 @@ contains
          end do
       end if
       if (allocated(model%rigid) .and. allocated(gp%rigid)) model%rigid = gp%rigid
+      ! mass scaling: the elements' added mass (by global element; each rank uses its own)
+      if (allocated(model%added_mass) .and. allocated(gp%added_mass)) &
+         model%added_mass = gp%added_mass
       model%run = gp%run
       model%time = gp%time
       model%dt = gp%dt

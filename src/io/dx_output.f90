@@ -9,7 +9,7 @@ module dx_output
    use dx_model, only: model_t
    use dx_io_sys, only: sys_mkdir_p
    use dx_plot_hdf5, only: plot_file_t
-   use dx_thist, only: thist_file_t, GLSTAT_COLUMNS, NODOUT_COLUMNS
+   use dx_thist, only: thist_file_t, glstat_run_columns, NODOUT_COLUMNS
    implicit none
    private
    public :: output_t
@@ -76,10 +76,11 @@ contains
 
       self%glstat_on = model%db%glstat_dt > 0
       if (self%glstat_on .and. cont) then
-         call self%glstat%resume(self%dir//'/glstat', 'glstat', title, GLSTAT_COLUMNS, &
+         call self%glstat%resume(self%dir//'/glstat', 'glstat', title, glstat_run_columns(model), &
                                  model%run%glstat_bytes, error)
       else if (self%glstat_on) then
-         call self%glstat%open(self%dir//'/glstat', 'glstat', title, GLSTAT_COLUMNS, error)
+         call self%glstat%open(self%dir//'/glstat', 'glstat', title, glstat_run_columns(model), &
+                               error)
       end if
       nodes = .false.
       if (allocated(model%db%hist_nodes)) nodes = size(model%db%hist_nodes) > 0

@@ -4,7 +4,8 @@
 !> next, taken at the top of a cycle, so a continued run repeats the uninterrupted run
 !> bit for bit: x, v, time, cycle, the loop state model%run (dt(n-1/2), the work sums, the
 !> next output times, the output-file sizes), the energies, every element block's state
-!> (sig, hv, relvol, eint, ehg, hgs, ework, failed), the rigid-wall forces, the rigid bodies
+!> (sig, hv, relvol, eint, ehg, hgs, ework, failed), the elements' added mass of mass
+!> scaling (added_mass, with DT2MS only), the rigid-wall forces, the rigid bodies
 !> (dx_rigid_restart) and the contact interfaces (dx_contact_restart). What the deck
 !> defines (mesh, mass, materials, curves, loads) is rebuilt from the deck, as LS-DYNA's
 !> full-deck restart does (Keyword User's Manual Vol. I, "Restart Input Data").
@@ -117,6 +118,9 @@ contains
       call dump_run(rs, model)
       call dump_nodes(rs, model)
       call dump_blocks(rs, model)
+      ! mass scaling: the elements' added mass (a dump without it, as every dump before it
+      ! and every run without DT2MS: none added)
+      if (allocated(model%added_mass)) call rs%put('added_mass', model%added_mass)
       if (allocated(model%walls)) call dump_walls(rs, model)
       if (allocated(model%rigid)) call rigid_dump(rs, model%rigid)
       if (allocated(model%contact)) call contact_dump(rs, model%contact)
@@ -129,6 +133,14 @@ contains
       call restore_run(rs, model)
       call restore_nodes(rs, model)
       call restore_blocks(rs, model)
+      ! (the global model of an MPI run continuing a serial dump has none allocated yet)
+      if (rs%has('added_mass') .and. .not. allocated(model%added_mass) .and. &
+          model%ctrl%dt2ms /= 0.0_wp) &
+         allocate(model%added_mass(model%ne))
+      if (allocated(model%added_mass)) then
+         model%added_mass = 0.0_wp
+         if (rs%has('added_mass')) call rs%get('added_mass', model%added_mass)
+      end if
       if (allocated(model%walls)) call restore_walls(rs, model)
       if (allocated(model%rigid)) call rigid_restore(rs, model%rigid)
       if (allocated(model%contact)) call contact_restore(rs, model%contact)

@@ -16,13 +16,17 @@ module dx_thist
                         sys_ftruncate_fd
    implicit none
    private
-   public :: thist_file_t, GLSTAT_COLUMNS, NODOUT_COLUMNS
+   public :: thist_file_t, GLSTAT_COLUMNS, NODOUT_COLUMNS, glstat_run_columns
 
    character(*), parameter :: GLSTAT_COLUMNS = 'time cycle dt kinetic internal hourglass ' // &
       'external_work rigidwall total energy_ratio xmom ymom zmom sliding_interface'
    character(*), parameter :: NODOUT_COLUMNS = 'time node_id x_disp y_disp z_disp ' // &
       'x_vel y_vel z_vel x_acc y_acc z_acc x_coor y_coor z_coor'
    character(*), parameter :: GLSTAT_FMT = '(es18.10e3, 1x, i10, 12(1x, es18.10e3))'
+   !> with mass scaling (*CONTROL_TIMESTEP DT2MS /= 0) two more columns, LS-DYNA's glstat
+   !> lines "added mass" and "percentage increase" (100 * added / the model's mass)
+   character(*), parameter :: GLSTAT_MS_COLUMNS = ' added_mass percent_increase'
+   character(*), parameter :: GLSTAT_MS_FMT = '(es18.10e3, 1x, i10, 14(1x, es18.10e3))'
    character(*), parameter :: NODOUT_FMT = '(es18.10e3, 1x, i10, 12(1x, es18.10e3))'
 
    !> One ASCII history file (unit: its file descriptor while opened).
@@ -40,6 +44,14 @@ module dx_thist
    end type thist_file_t
 
 contains
+
+   !> The glstat columns of this model's run (with the mass-scaling columns under DT2MS).
+   function glstat_run_columns(model) result(cols)
+      type(model_t), intent(in) :: model
+      character(:), allocatable :: cols
+      cols = GLSTAT_COLUMNS
+      if (model%ctrl%dt2ms /= 0.0_wp) cols = cols//GLSTAT_MS_COLUMNS
+   end function glstat_run_columns
 
    !> Create path and write the header: '# dynx <what>', '# title: ...', '# <columns>'.
    subroutine thist_open(self, path, what, title, columns, error)
@@ -101,13 +113,22 @@ contains
       class(thist_file_t), intent(inout) :: self
       type(model_t), intent(in) :: model
       type(error_t), allocatable, intent(out) :: error
-      character(280) :: line
+      character(320) :: line
       integer :: ios
       character(256) :: msg
+      real(wp) :: pct
       associate (en => model%energy)
-         write(line, GLSTAT_FMT, iostat=ios, iomsg=msg) model%time, model%cycle, model%dt, &
-            en%kinetic, en%internal, en%hourglass, en%external_work, en%rigidwall, &
-            en%total, en%ratio, en%momentum, en%sliding
+         if (model%ctrl%dt2ms /= 0.0_wp) then
+            pct = 0.0_wp
+            if (en%mass > 0.0_wp) pct = 100.0_wp*en%added_mass/en%mass
+            write(line, GLSTAT_MS_FMT, iostat=ios, iomsg=msg) model%time, model%cycle, &
+               model%dt, en%kinetic, en%internal, en%hourglass, en%external_work, &
+               en%rigidwall, en%total, en%ratio, en%momentum, en%sliding, en%added_mass, pct
+         else
+            write(line, GLSTAT_FMT, iostat=ios, iomsg=msg) model%time, model%cycle, model%dt, &
+               en%kinetic, en%internal, en%hourglass, en%external_work, en%rigidwall, &
+               en%total, en%ratio, en%momentum, en%sliding
+         end if
       end associate
       if (ios /= 0) then
          call set_error(error, 'cannot format a glstat line: '//trim(msg), EXIT_IO)

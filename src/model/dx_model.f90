@@ -135,7 +135,8 @@ module dx_model
       real(wp) :: tssfac = 0.9_wp
       integer :: isdo = 0
       real(wp) :: tslimt = 0.0_wp
-      real(wp) :: dt2ms = 0.0_wp
+      real(wp) :: dt2ms = 0.0_wp        !< mass scaling (dx_mass_scaling): < 0 floor, > 0 all
+      integer :: ms1st = 0              !< 1: mass scaling at the first cycle only
       integer :: lctm = 0               !< dense curve index limiting dt (0: none)
       integer :: erode = 0
       integer :: ihq = 1
@@ -168,6 +169,7 @@ module dx_model
       real(wp) :: ratio = 1.0_wp        !< (total + rigidwall + sliding) / (initial + ext. work)
       real(wp) :: momentum(3) = 0.0_wp
       real(wp) :: mass = 0.0_wp
+      real(wp) :: added_mass = 0.0_wp   !< mass added by mass scaling (DT2MS), whole model
    end type energy_t
 
    type :: model_t
@@ -214,7 +216,13 @@ module dx_model
       real(wp), allocatable :: x(:, :)         !< (3, nn) current coordinates
       real(wp), allocatable :: v(:, :)         !< (3, nn) velocity at t(n+1/2) after a cycle
       real(wp), allocatable :: f(:, :)         !< (3, nn) force (external - internal)
-      real(wp), allocatable :: mass(:)         !< (nn) lumped mass
+      real(wp), allocatable :: mass(:)         !< (nn) lumped mass (with added mass, if any)
+      !> mass scaling (*CONTROL_TIMESTEP DT2MS; dx_mass_scaling), allocated only with it:
+      !> added_mass(ne): the mass added to each element (dense global element index; < 0:
+      !> removed, DT2MS > 0 at the first cycle), spread over its nodes as the lumped mass is;
+      !> mass0(nn): the lumped nodal mass without it (mass = mass0 + the spread added_mass)
+      real(wp), allocatable :: added_mass(:)
+      real(wp), allocatable :: mass0(:)
       real(wp) :: time = 0.0_wp
       real(wp) :: dt = 0.0_wp
       integer :: cycle = 0

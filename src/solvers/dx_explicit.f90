@@ -16,12 +16,11 @@ module dx_explicit
    use dx_kinds, only: wp, huge_wp
    use dx_error, only: error_t, set_error, EXIT_NUMERIC
    use dx_strings, only: str, rstr
-   use dx_log, only: log_info
+   use dx_log, only: log_info, log_warn
    use dx_timer, only: wall_time, peak_memory_kb
    use dx_model, only: model_t, elem_block_t
    use dx_run_state, only: run_state_t
-   use dx_element, only: element_block_pass, block_result_t, ELEM_ERR_NEGVOL, family_t, &
-                         element_family
+   use dx_element, only: element_block_pass, block_result_t, ELEM_ERR_NEGVOL
    use dx_loads, only: add_external_loads
    use dx_constraints, only: apply_spc, apply_prescribed
    use dx_output, only: output_t
@@ -29,6 +28,8 @@ module dx_explicit
    use dx_rigid_solver, only: rigid_close, rigid_write_rbdout
    use dx_energy_sums, only: initial_kinetic, kinetic_energy, constrained_nodes, energy_bits
    use dx_domain, only: domain_t
+   use dx_mass_scaling, only: ms_init, lump_mass, ms_block, ms_percent, ms_log_start, &
+                              ms_endmas_report, MS_WARN_PERCENT
    use dx_integrator, only: integrator_t, run_options_t, END_FAILED, END_STOPPED
    implicit none
    private
@@ -39,6 +40,8 @@ module dx_explicit
       real(wp), allocatable :: vold(:, :), fext(:, :), vfree(:, :)
       integer, allocatable :: cnodes(:)
       logical :: loads = .false.
+      logical :: ms_warned = .false.   !< mass scaling: the increase passed MS_WARN_PERCENT
+      logical :: ms_stop = .false.     !< mass scaling: ENDMAS reached, this cycle is the last
       real(wp) :: t0wall = 0.0_wp
       character(:), allocatable :: outdir
    contains
@@ -55,27 +58,13 @@ contains
    subroutine init_state(model, dom)
       type(model_t), intent(inout) :: model
       class(domain_t), intent(inout), optional :: dom
-      integer :: b, i, k
-      real(wp) :: m
-      type(family_t) :: fam
       allocate(model%x(3, model%nn), model%v(3, model%nn), model%f(3, model%nn))
       allocate(model%mass(model%nn))
       model%x = model%x0
       model%v = model%v0
       model%f = 0.0_wp
-      model%mass = 0.0_wp
-      do b = 1, size(model%blocks)
-         associate (blk => model%blocks(b))
-            m = model%mats(model%parts(blk%ipart)%imat)%m%ro
-            fam = element_family(blk%etype)   ! rho V0 times the family's share per node
-            do i = 1, blk%nel
-               do k = 1, fam%nen
-                  model%mass(blk%conn(k, i)) = model%mass(blk%conn(k, i)) + &
-                                               m*blk%vol0(i)*fam%mass_share
-               end do
-            end do
-         end associate
-      end do
+      call ms_init(model)      ! mass scaling: the elements' added mass (none yet)
+      call lump_mass(model)    ! rho V0 times the family's share per node
       model%time = 0.0_wp
       model%cycle = 0
       model%energy%mass = sum(model%mass)
@@ -96,6 +85,7 @@ contains
       type(checkpoint_t), intent(inout) :: ck
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
+      logical :: changed
       if (.not. allocated(model%x)) call init_state(model, dom)
       self%outdir = opts%outdir
       allocate(self%vold(3, model%nn))
@@ -116,7 +106,13 @@ contains
       else
          call log_info('dynx: continuing from cycle '//str(model%cycle)//', time '// &
                        rstr(model%time))
+         if (allocated(model%added_mass)) then   ! the restored added mass on the nodes
+            changed = .true.
+            call dom%remass(model, changed)
+            self%ms_warned = abs(ms_percent(model)) > MS_WARN_PERCENT
+         end if
       end if
+      call ms_log_start(model)
       self%t0wall = wall_time()
       if (ck%wall0 <= 0.0_wp) ck%wall0 = self%t0wall   ! main sets it at process start
    end subroutine x_start
@@ -132,7 +128,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: dt, dtavg, dtcrit, t, ke, wrig, tend
       integer :: b, i, ibmin, iemin
-      logical :: done, need
+      logical :: done, need, ms, mchanged
       type(block_result_t) :: res
       type(error_t), allocatable :: ioerr
       tend = self%tend
@@ -146,6 +142,8 @@ contains
          call dom%fill(model)   ! shared nodes' x, v into their slots
          model%f = 0.0_wp
          dtcrit = huge_wp; ibmin = 0; iemin = 0
+         ms = allocated(model%added_mass)
+         mchanged = .false.
          do b = 1, size(model%blocks)
             if (dom%pending()) exit    ! MPI: a failure kept on this rank skips the pass
             if (model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%is_rigid) cycle
@@ -158,12 +156,16 @@ contains
                   if (allocated(error)) return
                   exit
                end if
+               ! mass scaling: the elements' added mass, the block's step with it
+               if (ms) call ms_block(model, b, res, mchanged)
                if (res%dt < dtcrit) then
                   dtcrit = res%dt; ibmin = b; iemin = res%imin
                end if
             end associate
          end do
          if (ibmin > 0) model%dt_elem = model%blocks(ibmin)%elem(iemin)
+         if (ms) call dom%remass(model, mchanged)   ! (MPI: any rank's change, all ranks)
+         if (mchanged) call scaled_mass(self, model, dom)
          ! global min (serial tie rule); MPI: the ranks' stop/dump requests ride in it, and
          ! a failure on any rank stops all
          call dom%reduce_dt(model, dtcrit, ibmin, ck, error)
@@ -208,7 +210,8 @@ contains
          end do
          call apply_spc(model, model%v)
          call apply_prescribed(model, t, dt, dtavg, vold, model%v)
-         done = t >= tend .or. (model%ctrl%endcyc > 0 .and. model%cycle >= model%ctrl%endcyc)
+         done = t >= tend .or. (model%ctrl%endcyc > 0 .and. model%cycle >= model%ctrl%endcyc) &
+                .or. self%ms_stop
          need = done .or. model%ctrl%endeng > 0.0_wp .or. (model%db%glstat_dt > 0.0_wp .and. &
                                                           t >= next_glstat)
          ! rigid walls; work sums (MPI: terms kept, summed in serial order when needed)
@@ -242,6 +245,37 @@ contains
       self%dt = dt
       self%done = done
    end subroutine x_step
+
+   !> Mass scaling changed an element's mass this cycle (the nodal masses and the added
+   !> total are updated, dom%remass): the warning once the change passes MS_WARN_PERCENT and
+   !> the ENDMAS stop; at the first cycle the initial kinetic energy with the scaled masses
+   !> (the run starts with them, as in LS-DYNA).
+   subroutine scaled_mass(self, model, dom)
+      class(explicit_t), intent(inout) :: self
+      type(model_t), intent(inout) :: model
+      class(domain_t), intent(inout) :: dom
+      real(wp) :: pct
+      if (model%cycle == 0) then
+         model%energy%initial = initial_kinetic(model%mass, model%v)
+         call dom%initial_energy(model)
+         if (allocated(model%rigid)) model%energy%initial = model%energy%initial + &
+                                                           model%rigid%ke0_corr
+      end if
+      pct = ms_percent(model)
+      if (.not. self%ms_warned .and. abs(pct) > MS_WARN_PERCENT) then
+         self%ms_warned = .true.
+         call log_warn('mass scaling (DT2MS = '//rstr(model%ctrl%dt2ms)//') has changed '// &
+            'the model''s mass by '//rstr(pct, 4)//' % (more than '// &
+            rstr(MS_WARN_PERCENT, 3)//' %) at cycle '//str(model%cycle)//', time '// &
+            rstr(model%time)//'; the inertia of the scaled parts is changed (glstat: '// &
+            'added_mass, percent_increase)')
+      end if
+      if (.not. self%ms_stop .and. model%ctrl%endmas > 0.0_wp .and. pct > model%ctrl%endmas) &
+         then
+         self%ms_stop = .true.
+         call ms_endmas_report(model)
+      end if
+   end subroutine scaled_mass
 
    !> Positions x(n+1) = x(n) + dt(n+1/2) v(n+1/2): the cycle boundary.
    subroutine x_advance(self, model, ck)
