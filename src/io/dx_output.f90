@@ -1,7 +1,8 @@
 !> The output facade the solver calls: plot states (HDF5 + XDMF, *DATABASE_BINARY_D3PLOT)
 !> and ASCII time histories (*DATABASE_GLSTAT, *DATABASE_NODOUT with
-!> *DATABASE_HISTORY_NODE). Opens only what the deck asks for: the plot file always,
-!> glstat when glstat_dt > 0, nodout when nodout_dt > 0 and history nodes exist.
+!> *DATABASE_HISTORY_NODE, *DATABASE_MATSUM). Opens only what the deck asks for: the plot
+!> file always, glstat when glstat_dt > 0, nodout when nodout_dt > 0 and history nodes
+!> exist, matsum (dx_matsum) when matsum_dt > 0.
 !> The solver decides when output is due; each call here writes one state or line(s).
 !> File formats: docs/output-format.md.
 module dx_output
@@ -10,6 +11,7 @@ module dx_output
    use dx_io_sys, only: sys_mkdir_p
    use dx_plot_hdf5, only: plot_file_t
    use dx_thist, only: thist_file_t, GLSTAT_COLUMNS, NODOUT_COLUMNS
+   use dx_matsum, only: matsum_header, matsum_record
    implicit none
    private
    public :: output_t
@@ -20,12 +22,14 @@ module dx_output
       type(plot_file_t), private :: plot
       type(thist_file_t), private :: glstat
       type(thist_file_t), private :: nodout
-      logical, private :: glstat_on = .false., nodout_on = .false.
+      type(thist_file_t), private :: matsum
+      logical, private :: glstat_on = .false., nodout_on = .false., matsum_on = .false.
    contains
       procedure :: open => output_open
       procedure :: write_plot => output_write_plot
       procedure :: write_glstat => output_write_glstat
       procedure :: write_nodout => output_write_nodout
+      procedure :: write_matsum => output_write_matsum
       procedure :: close => output_close
       procedure :: resume => output_resume
       procedure :: sizes => output_sizes
@@ -92,17 +96,29 @@ contains
             call self%nodout%open(self%dir//'/nodout', 'nodout', title, NODOUT_COLUMNS, error)
          end if
       end if
+      self%matsum_on = model%db%matsum_dt > 0
+      if (self%matsum_on .and. .not. allocated(error)) then
+         if (cont) then
+            call self%matsum%resume(self%dir//'/matsum', 'matsum', title, '', &
+                                    model%run%matsum_bytes, error, matsum_header(model))
+         else
+            call self%matsum%open(self%dir//'/matsum', 'matsum', title, '', error, &
+                                  matsum_header(model))
+         end if
+      end if
       if (allocated(error)) call self%close(err2)   ! keep the first error
    end subroutine output_open
 
-   !> What a restart dump records about the output: plot states, glstat and nodout bytes.
-   subroutine output_sizes(self, nplot, glstat_bytes, nodout_bytes)
+   !> What a restart dump records about the output: plot states, glstat, nodout and matsum
+   !> bytes.
+   subroutine output_sizes(self, nplot, glstat_bytes, nodout_bytes, matsum_bytes)
       class(output_t), intent(in) :: self
       integer, intent(out) :: nplot
-      integer(8), intent(out) :: glstat_bytes, nodout_bytes
+      integer(8), intent(out) :: glstat_bytes, nodout_bytes, matsum_bytes
       nplot = self%plot%nstates
       glstat_bytes = self%glstat%bytes
       nodout_bytes = self%nodout%bytes
+      matsum_bytes = self%matsum%bytes
    end subroutine output_sizes
 
    !> Write one plot state at model%time.
@@ -132,21 +148,36 @@ contains
       call self%nodout%write_nodout(model, error)
    end subroutine output_write_nodout
 
+   !> Write one matsum record (nothing when the deck asks for none).
+   subroutine output_write_matsum(self, model, error)
+      class(output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      character(:), allocatable :: text
+      if (.not. self%matsum_on) return
+      call matsum_record(model, text, error)
+      if (allocated(error) .or. len(text) == 0) return
+      call self%matsum%write_text(text, error)
+   end subroutine output_write_matsum
+
    !> Flush and close everything; safe to call twice and after errors. Returns the first
    !> failure but still closes the other files.
    subroutine output_close(self, error)
       class(output_t), intent(inout) :: self
       type(error_t), allocatable, intent(out) :: error
-      type(error_t), allocatable :: e1, e2, e3
+      type(error_t), allocatable :: e1, e2, e3, e4
       call self%plot%close(e1)
       call self%glstat%close(e2)
       call self%nodout%close(e3)
+      call self%matsum%close(e4)
       if (allocated(e1)) then
          call move_alloc(e1, error)
       else if (allocated(e2)) then
          call move_alloc(e2, error)
       else if (allocated(e3)) then
          call move_alloc(e3, error)
+      else if (allocated(e4)) then
+         call move_alloc(e4, error)
       end if
    end subroutine output_close
 

@@ -155,6 +155,8 @@ contains
          call rs%put('run_nrunrsf', r%nrunrsf)
          call rs%put('run_glstat_bytes', r%glstat_bytes)
          call rs%put('run_nodout_bytes', r%nodout_bytes)
+         call rs%put('run_next_matsum', r%next_matsum)
+         call rs%put('run_matsum_bytes', r%matsum_bytes)
          call rs%put('run_energy_guard', r%guard)
       end associate
       call rs%put('time', model%time)
@@ -188,6 +190,9 @@ contains
          call rs%get('run_nrunrsf', r%nrunrsf)
          call rs%get('run_glstat_bytes', r%glstat_bytes)
          call rs%get('run_nodout_bytes', r%nodout_bytes)
+         r%next_matsum = 0.0_wp; r%matsum_bytes = 0   ! (dumps before matsum: none written)
+         if (rs%has('run_next_matsum')) call rs%get('run_next_matsum', r%next_matsum)
+         if (rs%has('run_matsum_bytes')) call rs%get('run_matsum_bytes', r%matsum_bytes)
          r%guard = 0.0_wp       ! (a dump written before the guard was carried: not judged
          if (rs%has('run_energy_guard')) call rs%get('run_energy_guard', r%guard)  ! 1 cycle)
          r%started = rs%ok()

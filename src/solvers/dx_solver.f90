@@ -161,6 +161,8 @@ contains
       if (allocated(error)) return
       call history_file(2)
       if (allocated(error)) return
+      call history_file(3)
+      if (allocated(error)) return
       if (allocated(model%rigid)) then
          if (model%rigid%rbdout_dt > 0.0_wp .and. &
              (t >= model%rigid%next_rbdout .or. done)) then
@@ -171,26 +173,34 @@ contains
          end if
       end if
    contains
-      !> glstat (kind 1) or nodout (2) when due (MPI: the global model gathered to rank 0)
+      !> glstat (kind 1), nodout (2) or matsum (3) when due (MPI: the global model gathered
+      !> to rank 0; matsum's part sums are formed there, dx_energy_sums)
       subroutine history_file(kind)
          integer, intent(in) :: kind
          real(wp) :: interval, next
-         if (kind == 1) then
+         select case (kind)
+         case (1)
             interval = model%db%glstat_dt; next = model%run%next_glstat
-         else
+         case (2)
             interval = model%db%nodout_dt; next = model%run%next_nodout
-         end if
+         case default
+            interval = model%db%matsum_dt; next = model%run%next_matsum
+         end select
          if (.not. (interval > 0.0_wp .and. (t >= next .or. done))) return
          call dom%output_model(model, om, writer)
          if (writer .and. kind == 1) call out%write_glstat(om, error)
          if (writer .and. kind == 2) call out%write_nodout(om, error)
+         if (writer .and. kind == 3) call out%write_matsum(om, error)
          if (allocated(error)) return
          next = next_output_time(next, interval, t)
-         if (kind == 1) then
+         select case (kind)
+         case (1)
             model%run%next_glstat = next
-         else
+         case (2)
             model%run%next_nodout = next
-         end if
+         case default
+            model%run%next_matsum = next
+         end select
       end subroutine history_file
    end subroutine histories
 
