@@ -1,8 +1,9 @@
 !> The output facade the solver calls: plot states (HDF5 + XDMF, *DATABASE_BINARY_D3PLOT)
 !> and ASCII time histories (*DATABASE_GLSTAT, *DATABASE_NODOUT with
-!> *DATABASE_HISTORY_NODE, *DATABASE_MATSUM). Opens only what the deck asks for: the plot
-!> file always, glstat when glstat_dt > 0, nodout when nodout_dt > 0 and history nodes
-!> exist, matsum (dx_matsum) when matsum_dt > 0.
+!> *DATABASE_HISTORY_NODE, *DATABASE_MATSUM, *DATABASE_SPCFORC). Opens only what the deck
+!> asks for: the plot file always, glstat when glstat_dt > 0, nodout when nodout_dt > 0 and
+!> history nodes exist, matsum (dx_matsum) when matsum_dt > 0, spcforc (dx_spcforc) when
+!> spcforc_dt > 0.
 !> The solver decides when output is due; each call here writes one state or line(s).
 !> File formats: docs/output-format.md.
 module dx_output
@@ -12,6 +13,7 @@ module dx_output
    use dx_plot_hdf5, only: plot_file_t
    use dx_thist, only: thist_file_t, GLSTAT_COLUMNS, NODOUT_COLUMNS
    use dx_matsum, only: matsum_header, matsum_record
+   use dx_spcforc, only: spcforc_header, spcforc_record
    implicit none
    private
    public :: output_t
@@ -22,14 +24,16 @@ module dx_output
       type(plot_file_t), private :: plot
       type(thist_file_t), private :: glstat
       type(thist_file_t), private :: nodout
-      type(thist_file_t), private :: matsum
-      logical, private :: glstat_on = .false., nodout_on = .false., matsum_on = .false.
+      type(thist_file_t), private :: matsum, spcforc
+      logical, private :: glstat_on = .false., nodout_on = .false., matsum_on = .false., &
+                          spcforc_on = .false.
    contains
       procedure :: open => output_open
       procedure :: write_plot => output_write_plot
       procedure :: write_glstat => output_write_glstat
       procedure :: write_nodout => output_write_nodout
       procedure :: write_matsum => output_write_matsum
+      procedure :: write_spcforc => output_write_spcforc
       procedure :: close => output_close
       procedure :: resume => output_resume
       procedure :: sizes => output_sizes
@@ -106,19 +110,31 @@ contains
                                   matsum_header(model))
          end if
       end if
+      self%spcforc_on = model%db%spcforc_dt > 0
+      if (self%spcforc_on .and. .not. allocated(error)) then
+         if (cont) then
+            call self%spcforc%resume(self%dir//'/spcforc', 'spcforc', title, '', &
+                                     model%run%spcforc_bytes, error, spcforc_header(model))
+         else
+            call self%spcforc%open(self%dir//'/spcforc', 'spcforc', title, '', error, &
+                                   spcforc_header(model))
+         end if
+      end if
       if (allocated(error)) call self%close(err2)   ! keep the first error
    end subroutine output_open
 
-   !> What a restart dump records about the output: plot states, glstat, nodout and matsum
-   !> bytes.
-   subroutine output_sizes(self, nplot, glstat_bytes, nodout_bytes, matsum_bytes)
+   !> What a restart dump records about the output: plot states, glstat, nodout, matsum and
+   !> spcforc bytes.
+   subroutine output_sizes(self, nplot, glstat_bytes, nodout_bytes, matsum_bytes, &
+                           spcforc_bytes)
       class(output_t), intent(in) :: self
       integer, intent(out) :: nplot
-      integer(8), intent(out) :: glstat_bytes, nodout_bytes, matsum_bytes
+      integer(8), intent(out) :: glstat_bytes, nodout_bytes, matsum_bytes, spcforc_bytes
       nplot = self%plot%nstates
       glstat_bytes = self%glstat%bytes
       nodout_bytes = self%nodout%bytes
       matsum_bytes = self%matsum%bytes
+      spcforc_bytes = self%spcforc%bytes
    end subroutine output_sizes
 
    !> Write one plot state at model%time.
@@ -160,16 +176,29 @@ contains
       call self%matsum%write_text(text, error)
    end subroutine output_write_matsum
 
+   !> Write one spcforc record (nothing when the deck asks for none).
+   subroutine output_write_spcforc(self, model, error)
+      class(output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      character(:), allocatable :: text
+      if (.not. self%spcforc_on) return
+      call spcforc_record(model, text, error)
+      if (allocated(error) .or. len(text) == 0) return
+      call self%spcforc%write_text(text, error)
+   end subroutine output_write_spcforc
+
    !> Flush and close everything; safe to call twice and after errors. Returns the first
    !> failure but still closes the other files.
    subroutine output_close(self, error)
       class(output_t), intent(inout) :: self
       type(error_t), allocatable, intent(out) :: error
-      type(error_t), allocatable :: e1, e2, e3, e4
+      type(error_t), allocatable :: e1, e2, e3, e4, e5
       call self%plot%close(e1)
       call self%glstat%close(e2)
       call self%nodout%close(e3)
       call self%matsum%close(e4)
+      call self%spcforc%close(e5)
       if (allocated(e1)) then
          call move_alloc(e1, error)
       else if (allocated(e2)) then
@@ -178,6 +207,8 @@ contains
          call move_alloc(e3, error)
       else if (allocated(e4)) then
          call move_alloc(e4, error)
+      else if (allocated(e5)) then
+         call move_alloc(e5, error)
       end if
    end subroutine output_close
 

@@ -157,6 +157,8 @@ contains
          call rs%put('run_nodout_bytes', r%nodout_bytes)
          call rs%put('run_next_matsum', r%next_matsum)
          call rs%put('run_matsum_bytes', r%matsum_bytes)
+         call rs%put('run_next_spcforc', r%next_spcforc)
+         call rs%put('run_spcforc_bytes', r%spcforc_bytes)
          call rs%put('run_energy_guard', r%guard)
       end associate
       call rs%put('time', model%time)
@@ -193,6 +195,9 @@ contains
          r%next_matsum = 0.0_wp; r%matsum_bytes = 0   ! (dumps before matsum: none written)
          if (rs%has('run_next_matsum')) call rs%get('run_next_matsum', r%next_matsum)
          if (rs%has('run_matsum_bytes')) call rs%get('run_matsum_bytes', r%matsum_bytes)
+         r%next_spcforc = 0.0_wp; r%spcforc_bytes = 0
+         if (rs%has('run_next_spcforc')) call rs%get('run_next_spcforc', r%next_spcforc)
+         if (rs%has('run_spcforc_bytes')) call rs%get('run_spcforc_bytes', r%spcforc_bytes)
          r%guard = 0.0_wp       ! (a dump written before the guard was carried: not judged
          if (rs%has('run_energy_guard')) call rs%get('run_energy_guard', r%guard)  ! 1 cycle)
          r%started = rs%ok()

@@ -163,6 +163,8 @@ contains
       if (allocated(error)) return
       call history_file(3)
       if (allocated(error)) return
+      call history_file(4)
+      if (allocated(error)) return
       if (allocated(model%rigid)) then
          if (model%rigid%rbdout_dt > 0.0_wp .and. &
              (t >= model%rigid%next_rbdout .or. done)) then
@@ -173,8 +175,8 @@ contains
          end if
       end if
    contains
-      !> glstat (kind 1), nodout (2) or matsum (3) when due (MPI: the global model gathered
-      !> to rank 0; matsum's part sums are formed there, dx_energy_sums)
+      !> glstat (kind 1), nodout (2), matsum (3) or spcforc (4) when due (MPI: the global
+      !> model gathered to rank 0; matsum's part sums are formed there, dx_energy_sums)
       subroutine history_file(kind)
          integer, intent(in) :: kind
          real(wp) :: interval, next
@@ -183,14 +185,17 @@ contains
             interval = model%db%glstat_dt; next = model%run%next_glstat
          case (2)
             interval = model%db%nodout_dt; next = model%run%next_nodout
-         case default
+         case (3)
             interval = model%db%matsum_dt; next = model%run%next_matsum
+         case default
+            interval = model%db%spcforc_dt; next = model%run%next_spcforc
          end select
          if (.not. (interval > 0.0_wp .and. (t >= next .or. done))) return
          call dom%output_model(model, om, writer)
          if (writer .and. kind == 1) call out%write_glstat(om, error)
          if (writer .and. kind == 2) call out%write_nodout(om, error)
          if (writer .and. kind == 3) call out%write_matsum(om, error)
+         if (writer .and. kind == 4) call out%write_spcforc(om, error)
          if (allocated(error)) return
          next = next_output_time(next, interval, t)
          select case (kind)
@@ -198,8 +203,10 @@ contains
             model%run%next_glstat = next
          case (2)
             model%run%next_nodout = next
-         case default
+         case (3)
             model%run%next_matsum = next
+         case default
+            model%run%next_spcforc = next
          end select
       end subroutine history_file
    end subroutine histories
