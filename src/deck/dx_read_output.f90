@@ -13,10 +13,10 @@
 !>   *KEYWORD_ID (deck labels)
 !>   *DATABASE_EXTENT_BINARY (4 cards), *DATABASE_FORMAT IFORM IBINARY
 !>   *DATABASE_<ascii> DT BINARY LCUR IOOPT (ELOUT: + OPTION1-4) for the ASCII files dynx
-!>     does not write (elout, sleout, bndout, jntforc, deforc, ncforc, nodfor, secforc,
-!>     rwforc, tprint), *DATABASE_BINARY_D3THDT, *DATABASE_BINARY_D3PROP
-!>   *DATABASE_MATSUM, *DATABASE_SPCFORC (the same card): written (src/io/dx_matsum.f90,
-!>     dx_spcforc.f90)
+!>     does not write (elout, bndout, jntforc, deforc, ncforc, nodfor, secforc, rwforc,
+!>     tprint), *DATABASE_BINARY_D3THDT, *DATABASE_BINARY_D3PROP
+!>   *DATABASE_MATSUM, *DATABASE_SPCFORC, *DATABASE_SLEOUT (the same card): written
+!>     (src/io/dx_matsum.f90, dx_spcforc.f90, dx_sleout.f90; sleout only with *CONTACT)
 !> Layouts, defaults and meanings: LS-DYNA Keyword User's Manual, Vol. I (R13), *CONTROL
 !> and *DATABASE chapters.
 module dx_read_output
@@ -50,7 +50,7 @@ contains
       call reg%add('KEYWORD_ID', read_keyword_id)
       ! the ASCII databases dynx does not write yet (the file is named after the keyword)
       call reg%add('DATABASE_ELOUT', read_ascii_not_written)
-      call reg%add('DATABASE_SLEOUT', read_ascii_not_written)
+      call reg%add('DATABASE_SLEOUT', read_ascii_written)
       call reg%add('DATABASE_SPCFORC', read_ascii_written)
       call reg%add('DATABASE_BNDOUT', read_ascii_not_written)
       call reg%add('DATABASE_JNTFORC', read_ascii_not_written)
@@ -364,7 +364,7 @@ contains
       if (dt > 0.0_wp .or. lcur > 0) call add_out_note(deck, blk, inp, lower(blk%name(10:)))
    end subroutine read_ascii_not_written
 
-   !> *DATABASE_<file> for the ASCII files dynx writes (matsum, spcforc): DT BINARY LCUR IOOPT, the
+   !> *DATABASE_<file> for the ASCII files dynx writes (matsum, spcforc, sleout): DT BINARY LCUR IOOPT, the
    !> same card. DT > 0: the file at that interval; LCUR (an output-interval curve) is not
    !> honoured: with DT > 0 a note says DT is used, with DT = 0 the file is noted as not
    !> written. BINARY = 2 (binout only) still gets the ASCII file (dynx writes no binout).
@@ -398,6 +398,8 @@ contains
          inp%matsum_dt = dt
       case ('spcforc')
          inp%spcforc_dt = dt
+      case ('sleout')
+         inp%sleout_dt = dt
       end select
    end subroutine read_ascii_written
 

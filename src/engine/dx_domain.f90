@@ -27,7 +27,7 @@ module dx_domain
    use dx_restart, only: restart_write
    use dx_par_restart, only: serial_restart_read
    use dx_energy_sums, only: constraint_work, element_energies, set_energy, part_mass_map, &
-                             part_energies
+                             part_energies, interface_work
    use dx_par_emc, only: par_emc_t, par_emc_together
    implicit none
    private
@@ -378,6 +378,7 @@ contains
       character(*), intent(in) :: outdir
       type(error_t), allocatable, intent(out) :: error
       call contact_work(model, vold, dtavg, outdir, error)
+      call interface_work(model%contact, vold, model%v, dtavg)   ! per interface (sleout)
    end subroutine s_contact_work
 
    !> The energies at t(n); dfac weighs the element work booked next cycle.

@@ -20,11 +20,12 @@ module dx_energy_sums
    use dx_model, only: model_t, elem_block_t, energy_t, ES_WORK, WORK_PN, WORK_QBV, &
                        family_t, element_family
    use dx_sort, only: sort_index
+   use dx_contact_types, only: contact_set_t, REC_FSL, REC_NB
    implicit none
    private
    public :: initial_kinetic, kinetic_energy, element_energies, constraint_work, &
              constraint_terms, set_energy, constrained_nodes, energy_bits, part_mass_map, &
-             part_energies
+             part_energies, interface_work
 
 contains
 
@@ -150,6 +151,40 @@ contains
          ps%ie = 0.0_wp; ps%ke = 0.0_wp; ps%hge = 0.0_wp; ps%mom = 0.0_wp
       end associate
    end subroutine part_mass_map
+
+   !> Each contact interface's work of this cycle's forces on its slave nodes and on its
+   !> master nodes (sleout), with the centred weighting of the total contact work
+   !> (dx_contact%contact_work): W += f(n).dtavg (v(n-1/2) + v(n+1/2))/2, interfaces, passes
+   !> and slave nodes in order; f on the slave node is its pass force, on the master
+   !> segment's nodes -N_j times it. slave + master over the interfaces is the total work
+   !> to round-off. An MPI run calls it on the global model after contact_work (every rank
+   !> holds every pass's results and the contact nodes' velocities there).
+   subroutine interface_work(cs, vold, v, dtavg)
+      type(contact_set_t), intent(inout) :: cs
+      real(wp), intent(in) :: vold(:, :), v(:, :), dtavg
+      real(wp) :: ws, wm, fsl(3)
+      integer :: f, j, i, k, sb, n
+      do f = 1, size(cs%iface)
+         ws = 0.0_wp; wm = 0.0_wp
+         do j = 1, size(cs%iface(f)%pass)
+            associate (p => cs%iface(f)%pass(j))
+               do i = 1, p%nnode
+                  sb = p%iseg(i)
+                  if (sb == 0) cycle
+                  k = p%node(i)
+                  fsl = p%rval(REC_FSL + 1:REC_FSL + 3, i)
+                  ws = ws + dot_product(fsl, vold(:, k) + v(:, k))
+                  do n = 1, p%nsn(sb)
+                     k = p%seg(n, sb)
+                     wm = wm - p%rval(REC_NB + n, i)*dot_product(fsl, vold(:, k) + v(:, k))
+                  end do
+               end do
+            end associate
+         end do
+         cs%iface(f)%wslave = cs%iface(f)%wslave + 0.5_wp*dtavg*ws
+         cs%iface(f)%wmaster = cs%iface(f)%wmaster + 0.5_wp*dtavg*wm
+      end do
+   end subroutine interface_work
 
    !> The per-part sums at t(n) (after part_mass_map): internal energy (with the share dfac
    !> of the pending work, as glstat's), hourglass energy, time-centred kinetic energy

@@ -49,6 +49,8 @@ contains
          end do
       end do
       call rs%put('contact_work', cs%work)
+      call rs%put('contact_wslave', cs%iface(:)%wslave)
+      call rs%put('contact_wmaster', cs%iface(:)%wmaster)
       call rs%put('contact_next_rcforc', cs%next_rcforc)
       call rs%put('contact_rcforc_bytes', dump_bytes(cs%rcforc_open, cs%rcforc_unit, &
                                                      cs%rcforc_resume))
@@ -59,6 +61,7 @@ contains
       type(contact_set_t), intent(inout) :: cs
       integer :: i, j, nc
       integer, allocatable :: strip(:)
+      real(wp), allocatable :: w(:)
       real(wp) :: sort(5)
       character(:), allocatable :: p
       if (.not. rs%same_labels('contact_ninterfaces', 'contact_label', cs%iface(:)%label, &
@@ -107,6 +110,13 @@ contains
          end do
       end do
       call rs%get('contact_work', cs%work)
+      if (rs%has('contact_wslave')) then       ! (older dumps: sleout starts from 0)
+         allocate(w(size(cs%iface)))
+         call rs%get('contact_wslave', w)
+         cs%iface(:)%wslave = w
+         call rs%get('contact_wmaster', w)
+         cs%iface(:)%wmaster = w
+      end if
       call rs%get('contact_next_rcforc', cs%next_rcforc)
       cs%rcforc_resume = 0
       call rs%get('contact_rcforc_bytes', cs%rcforc_resume)

@@ -159,6 +159,8 @@ contains
          call rs%put('run_matsum_bytes', r%matsum_bytes)
          call rs%put('run_next_spcforc', r%next_spcforc)
          call rs%put('run_spcforc_bytes', r%spcforc_bytes)
+         call rs%put('run_next_sleout', r%next_sleout)
+         call rs%put('run_sleout_bytes', r%sleout_bytes)
          call rs%put('run_energy_guard', r%guard)
       end associate
       call rs%put('time', model%time)
@@ -198,6 +200,9 @@ contains
          r%next_spcforc = 0.0_wp; r%spcforc_bytes = 0
          if (rs%has('run_next_spcforc')) call rs%get('run_next_spcforc', r%next_spcforc)
          if (rs%has('run_spcforc_bytes')) call rs%get('run_spcforc_bytes', r%spcforc_bytes)
+         r%next_sleout = 0.0_wp; r%sleout_bytes = 0
+         if (rs%has('run_next_sleout')) call rs%get('run_next_sleout', r%next_sleout)
+         if (rs%has('run_sleout_bytes')) call rs%get('run_sleout_bytes', r%sleout_bytes)
          r%guard = 0.0_wp       ! (a dump written before the guard was carried: not judged
          if (rs%has('run_energy_guard')) call rs%get('run_energy_guard', r%guard)  ! 1 cycle)
          r%started = rs%ok()

@@ -154,6 +154,7 @@ module dx_model
       real(wp) :: nodout_dt = 0.0_wp    !< 0: no nodout file
       real(wp) :: matsum_dt = 0.0_wp    !< 0: no matsum file (*DATABASE_MATSUM)
       real(wp) :: spcforc_dt = 0.0_wp   !< 0: no spcforc file (*DATABASE_SPCFORC)
+      real(wp) :: sleout_dt = 0.0_wp    !< 0: no sleout file (*DATABASE_SLEOUT)
       integer, allocatable :: hist_nodes(:)   !< dense node indices for nodout
    end type database_t
 

@@ -165,6 +165,8 @@ contains
       if (allocated(error)) return
       call history_file(4)
       if (allocated(error)) return
+      call history_file(5)
+      if (allocated(error)) return
       if (allocated(model%rigid)) then
          if (model%rigid%rbdout_dt > 0.0_wp .and. &
              (t >= model%rigid%next_rbdout .or. done)) then
@@ -175,8 +177,8 @@ contains
          end if
       end if
    contains
-      !> glstat (kind 1), nodout (2), matsum (3) or spcforc (4) when due (MPI: the global
-      !> model gathered to rank 0; matsum's part sums are formed there, dx_energy_sums)
+      !> glstat (kind 1), nodout (2), matsum (3), spcforc (4) or sleout (5) when due (MPI:
+      !> the global model gathered to rank 0; matsum's part sums are formed there)
       subroutine history_file(kind)
          integer, intent(in) :: kind
          real(wp) :: interval, next
@@ -187,8 +189,10 @@ contains
             interval = model%db%nodout_dt; next = model%run%next_nodout
          case (3)
             interval = model%db%matsum_dt; next = model%run%next_matsum
-         case default
+         case (4)
             interval = model%db%spcforc_dt; next = model%run%next_spcforc
+         case default
+            interval = model%db%sleout_dt; next = model%run%next_sleout
          end select
          if (.not. (interval > 0.0_wp .and. (t >= next .or. done))) return
          call dom%output_model(model, om, writer)
@@ -196,6 +200,7 @@ contains
          if (writer .and. kind == 2) call out%write_nodout(om, error)
          if (writer .and. kind == 3) call out%write_matsum(om, error)
          if (writer .and. kind == 4) call out%write_spcforc(om, error)
+         if (writer .and. kind == 5) call out%write_sleout(om, error)
          if (allocated(error)) return
          next = next_output_time(next, interval, t)
          select case (kind)
@@ -205,8 +210,10 @@ contains
             model%run%next_nodout = next
          case (3)
             model%run%next_matsum = next
-         case default
+         case (4)
             model%run%next_spcforc = next
+         case default
+            model%run%next_sleout = next
          end select
       end subroutine history_file
    end subroutine histories
