@@ -378,7 +378,8 @@ contains
       character(*), intent(in) :: outdir
       type(error_t), allocatable, intent(out) :: error
       call contact_work(model, vold, dtavg, outdir, error)
-      call interface_work(model%contact, vold, model%v, dtavg)   ! per interface (sleout)
+      if (model%db%sleout_dt > 0.0_wp) &
+         call interface_work(model%contact, vold, model%v, dtavg)   ! per interface (sleout)
    end subroutine s_contact_work
 
    !> The energies at t(n); dfac weighs the element work booked next cycle.

@@ -446,7 +446,8 @@ contains
       pc%t_comm = pc%t_comm + (par_wtime() - t0)
       call contact_work(g, pc%cvold, dtavg, outdir, error)
       if (allocated(error)) call par_abort(error%message, error%code)   ! rank 0 alone
-      call interface_work(g%contact, pc%cvold, g%v, dtavg)   ! per interface (sleout)
+      if (g%db%sleout_dt > 0.0_wp) &
+         call interface_work(g%contact, pc%cvold, g%v, dtavg)   ! per interface (sleout)
       model%energy%sliding = g%energy%sliding
    end subroutine par_contact_work
 

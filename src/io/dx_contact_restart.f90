@@ -49,8 +49,10 @@ contains
          end do
       end do
       call rs%put('contact_work', cs%work)
-      call rs%put('contact_wslave', cs%iface(:)%wslave)
-      call rs%put('contact_wmaster', cs%iface(:)%wmaster)
+      if (any(cs%iface(:)%wslave /= 0.0_wp) .or. any(cs%iface(:)%wmaster /= 0.0_wp)) then
+         call rs%put('contact_wslave', cs%iface(:)%wslave)    ! (sleout decks only)
+         call rs%put('contact_wmaster', cs%iface(:)%wmaster)
+      end if
       call rs%put('contact_next_rcforc', cs%next_rcforc)
       call rs%put('contact_rcforc_bytes', dump_bytes(cs%rcforc_open, cs%rcforc_unit, &
                                                      cs%rcforc_resume))
@@ -110,7 +112,8 @@ contains
          end do
       end do
       call rs%get('contact_work', cs%work)
-      if (rs%has('contact_wslave')) then       ! (older dumps: sleout starts from 0)
+      cs%iface(:)%wslave = 0.0_wp; cs%iface(:)%wmaster = 0.0_wp
+      if (rs%has('contact_wslave')) then       ! (absent: no sleout, or no work yet)
          allocate(w(size(cs%iface)))
          call rs%get('contact_wslave', w)
          cs%iface(:)%wslave = w

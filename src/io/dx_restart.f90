@@ -155,12 +155,20 @@ contains
          call rs%put('run_nrunrsf', r%nrunrsf)
          call rs%put('run_glstat_bytes', r%glstat_bytes)
          call rs%put('run_nodout_bytes', r%nodout_bytes)
-         call rs%put('run_next_matsum', r%next_matsum)
-         call rs%put('run_matsum_bytes', r%matsum_bytes)
-         call rs%put('run_next_spcforc', r%next_spcforc)
-         call rs%put('run_spcforc_bytes', r%spcforc_bytes)
-         call rs%put('run_next_sleout', r%next_sleout)
-         call rs%put('run_sleout_bytes', r%sleout_bytes)
+         ! (only when the deck asks for the file: the dumps of the other decks stay as
+         ! they were; a dump without them reads as 'none written')
+         if (model%db%matsum_dt > 0.0_wp) then
+            call rs%put('run_next_matsum', r%next_matsum)
+            call rs%put('run_matsum_bytes', r%matsum_bytes)
+         end if
+         if (model%db%spcforc_dt > 0.0_wp) then
+            call rs%put('run_next_spcforc', r%next_spcforc)
+            call rs%put('run_spcforc_bytes', r%spcforc_bytes)
+         end if
+         if (model%db%sleout_dt > 0.0_wp) then
+            call rs%put('run_next_sleout', r%next_sleout)
+            call rs%put('run_sleout_bytes', r%sleout_bytes)
+         end if
          call rs%put('run_energy_guard', r%guard)
       end associate
       call rs%put('time', model%time)

@@ -79,6 +79,10 @@ contains
          guard%r_prev = model%run%guard(3)
       end if
       call log_info('dynx: integrator: '//integ%name//' ('//integ%why//')')
+      if (.not. integ%histories .and. max(model%db%matsum_dt, model%db%spcforc_dt, &
+                                          model%db%sleout_dt) > 0.0_wp) &
+         call log_info('dynx: note: matsum, spcforc and sleout are not written by this '// &
+                       'integrator (it writes its own emcstat); their files hold the header only')
       if (integ%energies) call guard_bounds(guard)
       t0wall = wall_time()
       writer = dom%writer()
