@@ -538,6 +538,9 @@ contains
       end if
       model%db%glstat_dt = inp%glstat_dt
       model%db%nodout_dt = inp%nodout_dt
+      model%db%matsum_dt = inp%matsum_dt
+      model%db%spcforc_dt = inp%spcforc_dt
+      model%db%sleout_dt = inp%sleout_dt
       model%rst = inp%rst
       allocate(h(model%nn), seen(model%nn))    ! each node once: at most nn (linear set-up)
       seen = .false.

@@ -13,8 +13,10 @@
 !>   *KEYWORD_ID (deck labels)
 !>   *DATABASE_EXTENT_BINARY (4 cards), *DATABASE_FORMAT IFORM IBINARY
 !>   *DATABASE_<ascii> DT BINARY LCUR IOOPT (ELOUT: + OPTION1-4) for the ASCII files dynx
-!>     does not write (elout, sleout, spcforc, bndout, jntforc, deforc, ncforc, nodfor,
-!>     secforc, rwforc, matsum, tprint), *DATABASE_BINARY_D3THDT, *DATABASE_BINARY_D3PROP
+!>     does not write (elout, bndout, jntforc, deforc, ncforc, nodfor, secforc, rwforc,
+!>     tprint), *DATABASE_BINARY_D3THDT, *DATABASE_BINARY_D3PROP
+!>   *DATABASE_MATSUM, *DATABASE_SPCFORC, *DATABASE_SLEOUT (the same card): written
+!>     (src/io/dx_matsum.f90, dx_spcforc.f90, dx_sleout.f90; sleout only with *CONTACT)
 !> Layouts, defaults and meanings: LS-DYNA Keyword User's Manual, Vol. I (R13), *CONTROL
 !> and *DATABASE chapters.
 module dx_read_output
@@ -48,8 +50,8 @@ contains
       call reg%add('KEYWORD_ID', read_keyword_id)
       ! the ASCII databases dynx does not write yet (the file is named after the keyword)
       call reg%add('DATABASE_ELOUT', read_ascii_not_written)
-      call reg%add('DATABASE_SLEOUT', read_ascii_not_written)
-      call reg%add('DATABASE_SPCFORC', read_ascii_not_written)
+      call reg%add('DATABASE_SLEOUT', read_ascii_written)
+      call reg%add('DATABASE_SPCFORC', read_ascii_written)
       call reg%add('DATABASE_BNDOUT', read_ascii_not_written)
       call reg%add('DATABASE_JNTFORC', read_ascii_not_written)
       call reg%add('DATABASE_DEFORC', read_ascii_not_written)
@@ -57,7 +59,7 @@ contains
       call reg%add('DATABASE_NODFOR', read_ascii_not_written)
       call reg%add('DATABASE_SECFORC', read_ascii_not_written)
       call reg%add('DATABASE_RWFORC', read_ascii_not_written)
-      call reg%add('DATABASE_MATSUM', read_ascii_not_written)
+      call reg%add('DATABASE_MATSUM', read_ascii_written)
       call reg%add('DATABASE_TPRINT', read_ascii_not_written)
    end subroutine register_output
 
@@ -361,6 +363,45 @@ contains
       if (allocated(error)) return
       if (dt > 0.0_wp .or. lcur > 0) call add_out_note(deck, blk, inp, lower(blk%name(10:)))
    end subroutine read_ascii_not_written
+
+   !> *DATABASE_<file> for the ASCII files dynx writes (matsum, spcforc, sleout): DT BINARY LCUR IOOPT, the
+   !> same card. DT > 0: the file at that interval; LCUR (an output-interval curve) is not
+   !> honoured: with DT > 0 a note says DT is used, with DT = 0 the file is noted as not
+   !> written. BINARY = 2 (binout only) still gets the ASCII file (dynx writes no binout).
+   subroutine read_ascii_written(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      type(card_t) :: c
+      integer :: binary, lcur, ioopt
+      real(wp) :: dt
+      character(:), allocatable :: file
+      call deck_cursor(deck, blk, c)
+      call c%max_cards(1)
+      call c%real('DT', 0.0_wp, dt, min=0.0_wp)
+      call flag(c, 'BINARY', 0, 3, binary)
+      call c%int('LCUR', 0, lcur, min=0)
+      call flag(c, 'IOOPT', 0, 3, ioopt)
+      call c%done(error)
+      if (allocated(error)) return
+      file = lower(blk%name(10:))
+      if (lcur > 0 .and. dt > 0.0_wp) then
+         call add_out_note(deck, blk, inp, file, 'written every DT = '//num(dt)// &
+                           '; the output-interval curve LCUR '//str(lcur)//' is not honoured')
+      else if (lcur > 0) then
+         call add_out_note(deck, blk, inp, file, 'not written: output-interval curves '// &
+                           '(LCUR) are not supported; give DT')
+      end if
+      select case (file)
+      case ('matsum')
+         inp%matsum_dt = dt
+      case ('spcforc')
+         inp%spcforc_dt = dt
+      case ('sleout')
+         inp%sleout_dt = dt
+      end select
+   end subroutine read_ascii_written
 
    !> *DATABASE_BINARY_D3THDT: DT LCDT BEAM NPLTC PSETID (time history binary database):
    !> dynx writes its histories as ASCII glstat and nodout; d3thdt is noted as not written.

@@ -27,7 +27,8 @@ module dx_domain
    use dx_mass_scaling, only: lump_mass, ms_added_total
    use dx_restart, only: restart_write
    use dx_par_restart, only: serial_restart_read
-   use dx_energy_sums, only: constraint_work, element_energies, set_energy
+   use dx_energy_sums, only: constraint_work, element_energies, set_energy, part_mass_map, &
+                             part_energies, interface_work
    use dx_par_emc, only: par_emc_t, par_emc_together
    implicit none
    private
@@ -297,6 +298,7 @@ contains
          call element_mass_share(model%blocks(b), &
             model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%ro, model%mass, cnodes)
       end do
+      if (model%db%matsum_dt > 0.0_wp) call part_mass_map(model)   ! matsum's part shares
    end subroutine s_mass_share
 
    logical function s_has_loads(d, model)
@@ -396,6 +398,8 @@ contains
       character(*), intent(in) :: outdir
       type(error_t), allocatable, intent(out) :: error
       call contact_work(model, vold, dtavg, outdir, error)
+      if (model%db%sleout_dt > 0.0_wp) &
+         call interface_work(model%contact, vold, model%v, dtavg)   ! per interface (sleout)
    end subroutine s_contact_work
 
    !> The energies at t(n); dfac weighs the element work booked next cycle.
@@ -408,6 +412,7 @@ contains
       call element_energies(model%blocks, eint, ehg, epend)
       eint = eint + dfac*epend   ! the part of W(n) booked next cycle
       call set_energy(model, ke, eint, ehg, wsum, erw)
+      if (need) call part_energies(model, vold, dfac)   ! matsum (when the deck asks)
    end subroutine s_energies
 
    subroutine s_write_plot(d, model, out, error)

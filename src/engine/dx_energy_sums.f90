@@ -6,13 +6,26 @@
 !> glstat is the serial one bit for bit (docs/history.md, "Fixed-order sums").
 !> Energy balance: Hallquist, DYNA3D User's Manual (UCRL-MA-107254), and Belytschko, Liu &
 !> Moran 2000, section 6.2.3 (time-centred kinetic energy, work of constraint reactions).
+!> Per-part sums (*DATABASE_MATSUM; LS-DYNA Keyword User's Manual Vol. I, *DATABASE_MATSUM:
+!> "part energies" - internal, kinetic, hourglass energy, momentum and rigid-body velocity
+!> of each part): a part's internal and hourglass energies are its elements'; a node shared
+!> by elements of several parts gives each part the share of its lumped mass that the part's
+!> elements put there (rho V0 times the family's nodal share, the very terms the lumped mass
+!> is the sum of), so its kinetic energy 1/2 m v.v and momentum m v are split in proportion
+!> to mass: the parts' sums add up to glstat's totals to round-off (docs/output-format.md,
+!> "matsum"). They are formed, like glstat's, on one model in one fixed order (the serial
+!> model, or rank 0's gathered global model), so they are bitwise equal for any NP.
 module dx_energy_sums
    use dx_kinds, only: wp
-   use dx_model, only: model_t, elem_block_t, energy_t, ES_WORK, WORK_PN, WORK_QBV
+   use dx_model, only: model_t, elem_block_t, energy_t, ES_WORK, WORK_PN, WORK_QBV, &
+                       family_t, element_family
+   use dx_sort, only: sort_index
+   use dx_contact_types, only: contact_set_t, REC_FSL, REC_NB
    implicit none
    private
    public :: initial_kinetic, kinetic_energy, element_energies, constraint_work, &
-             constraint_terms, set_energy, constrained_nodes, energy_bits
+             constraint_terms, set_energy, constrained_nodes, energy_bits, part_mass_map, &
+             part_energies, interface_work
 
 contains
 
@@ -39,8 +52,7 @@ contains
       type(elem_block_t), intent(in) :: blocks(:)
       real(wp), intent(out) :: eint, ehg
       real(wp), intent(out), optional :: epend  !< sum of the work still to be booked (ework 4 - 2)
-      real(wp) :: pb
-      integer :: b, i, w
+      integer :: b
       eint = 0.0_wp; ehg = 0.0_wp
       do b = 1, size(blocks)
          eint = eint + sum(blocks(b)%eint)
@@ -49,17 +61,163 @@ contains
       if (present(epend)) then
          epend = 0.0_wp
          do b = 1, size(blocks)
-            w = blocks(b)%esc(ES_WORK)
-            if (w == 0) cycle
-            pb = 0.0_wp
-            do i = 1, blocks(b)%nel
-               pb = pb + merge(0.0_wp, 1.0_wp, blocks(b)%failed(i))* &
-                         (blocks(b)%es(i, w + WORK_PN) - blocks(b)%es(i, w + WORK_QBV))
-            end do
-            epend = epend + pb
+            if (blocks(b)%esc(ES_WORK) == 0) cycle
+            epend = epend + block_pending(blocks(b))
          end do
       end if
    end subroutine element_energies
+
+   !> The work of block blk still to be booked (ework 4 - 2), elements in order.
+   real(wp) function block_pending(blk) result(pb)
+      type(elem_block_t), intent(in) :: blk
+      integer :: i, w
+      w = blk%esc(ES_WORK)
+      pb = 0.0_wp
+      do i = 1, blk%nel
+         pb = pb + merge(0.0_wp, 1.0_wp, blk%failed(i))* &
+                   (blk%es(i, w + WORK_PN) - blk%es(i, w + WORK_QBV))
+      end do
+   end function block_pending
+
+   !> Each part's share of the lumped nodal masses (model%psum: CSR over parts, nodes
+   !> ascending), from the element blocks before the run (an MPI run: on the global model
+   !> before its element arrays are freed). Each share is summed over the part's elements in
+   !> block order, as the lumped mass itself is. Also allocates the sums.
+   subroutine part_mass_map(model)
+      type(model_t), intent(inout) :: model
+      integer, allocatable :: stamp(:), touched(:), idx(:), cnt(:)
+      real(wp), allocatable :: w(:)
+      type(family_t) :: fam
+      real(wp) :: rho
+      integer :: np, p, b, i, k, nd, nt, pos
+      if (allocated(model%psum%ptr)) return
+      np = size(model%parts)
+      allocate(stamp(model%nn), w(model%nn), touched(model%nn), cnt(np))
+      stamp = 0; w = 0.0_wp; cnt = 0
+      ! pass 1: the number of distinct nodes of each part
+      do p = 1, np
+         do b = 1, size(model%blocks)
+            if (model%blocks(b)%ipart /= p) cycle
+            fam = element_family(model%blocks(b)%etype)
+            do i = 1, model%blocks(b)%nel
+               do k = 1, fam%nen
+                  nd = model%blocks(b)%conn(k, i)
+                  if (stamp(nd) /= p) then
+                     stamp(nd) = p; cnt(p) = cnt(p) + 1
+                  end if
+               end do
+            end do
+         end do
+      end do
+      associate (ps => model%psum)
+         allocate(ps%ptr(np + 1))
+         ps%ptr(1) = 1
+         do p = 1, np
+            ps%ptr(p + 1) = ps%ptr(p) + cnt(p)
+         end do
+         allocate(ps%node(ps%ptr(np + 1) - 1), ps%m(ps%ptr(np + 1) - 1))
+         ! pass 2: the shares, summed element by element in block order
+         stamp = 0
+         do p = 1, np
+            nt = 0
+            rho = model%mats(model%parts(p)%imat)%m%ro
+            do b = 1, size(model%blocks)
+               if (model%blocks(b)%ipart /= p) cycle
+               fam = element_family(model%blocks(b)%etype)
+               do i = 1, model%blocks(b)%nel
+                  do k = 1, fam%nen
+                     nd = model%blocks(b)%conn(k, i)
+                     if (stamp(nd) /= p) then
+                        stamp(nd) = p; w(nd) = 0.0_wp
+                        nt = nt + 1; touched(nt) = nd
+                     end if
+                     w(nd) = w(nd) + rho*model%blocks(b)%vol0(i)*fam%mass_share
+                  end do
+               end do
+            end do
+            idx = [(i, i = 1, nt)]
+            call sort_index(idx, touched(1:nt))
+            pos = ps%ptr(p)
+            do i = 1, nt
+               ps%node(pos + i - 1) = touched(idx(i))
+               ps%m(pos + i - 1) = w(touched(idx(i)))
+            end do
+         end do
+         allocate(ps%mass(np), ps%added(np), ps%ie(np), ps%ke(np), ps%hge(np), ps%mom(3, np))
+         do p = 1, np
+            ps%mass(p) = sum(ps%m(ps%ptr(p):ps%ptr(p + 1) - 1))
+         end do
+         ps%added = 0.0_wp    ! mass scaling (branch "mass") adds each part's added mass here
+         ps%ie = 0.0_wp; ps%ke = 0.0_wp; ps%hge = 0.0_wp; ps%mom = 0.0_wp
+      end associate
+   end subroutine part_mass_map
+
+   !> Each contact interface's work of this cycle's forces on its slave nodes and on its
+   !> master nodes (sleout), with the centred weighting of the total contact work
+   !> (dx_contact%contact_work): W += f(n).dtavg (v(n-1/2) + v(n+1/2))/2, interfaces, passes
+   !> and slave nodes in order; f on the slave node is its pass force, on the master
+   !> segment's nodes -N_j times it. slave + master over the interfaces is the total work
+   !> to round-off. An MPI run calls it on the global model after contact_work (every rank
+   !> holds every pass's results and the contact nodes' velocities there).
+   subroutine interface_work(cs, vold, v, dtavg)
+      type(contact_set_t), intent(inout) :: cs
+      real(wp), intent(in) :: vold(:, :), v(:, :), dtavg
+      real(wp) :: ws, wm, fsl(3)
+      integer :: f, j, i, k, sb, n
+      do f = 1, size(cs%iface)
+         ws = 0.0_wp; wm = 0.0_wp
+         do j = 1, size(cs%iface(f)%pass)
+            associate (p => cs%iface(f)%pass(j))
+               do i = 1, p%nnode
+                  sb = p%iseg(i)
+                  if (sb == 0) cycle
+                  k = p%node(i)
+                  fsl = p%rval(REC_FSL + 1:REC_FSL + 3, i)
+                  ws = ws + dot_product(fsl, vold(:, k) + v(:, k))
+                  do n = 1, p%nsn(sb)
+                     k = p%seg(n, sb)
+                     wm = wm - p%rval(REC_NB + n, i)*dot_product(fsl, vold(:, k) + v(:, k))
+                  end do
+               end do
+            end associate
+         end do
+         cs%iface(f)%wslave = cs%iface(f)%wslave + 0.5_wp*dtavg*ws
+         cs%iface(f)%wmaster = cs%iface(f)%wmaster + 0.5_wp*dtavg*wm
+      end do
+   end subroutine interface_work
+
+   !> The per-part sums at t(n) (after part_mass_map): internal energy (with the share dfac
+   !> of the pending work, as glstat's), hourglass energy, time-centred kinetic energy
+   !> 1/2 m v(n-1/2).v(n+1/2) and momentum m v(n+1/2), each node weighted by the part's share
+   !> of its mass. Parts, blocks and nodes in a fixed order.
+   subroutine part_energies(model, vold, dfac)
+      type(model_t), intent(inout) :: model
+      real(wp), intent(in) :: vold(:, :), dfac
+      real(wp) :: ke, mom(3), ie, hg, pend
+      integer :: p, b, k, nd
+      associate (ps => model%psum)
+         if (.not. allocated(ps%ie)) return
+         do p = 1, size(ps%ie)
+            ie = 0.0_wp; hg = 0.0_wp; pend = 0.0_wp
+            do b = 1, size(model%blocks)
+               if (model%blocks(b)%ipart /= p) cycle
+               ie = ie + sum(model%blocks(b)%eint)
+               hg = hg + sum(model%blocks(b)%ehg)
+               if (model%blocks(b)%esc(ES_WORK) > 0) pend = pend + block_pending(model%blocks(b))
+            end do
+            ke = 0.0_wp; mom = 0.0_wp
+            do k = ps%ptr(p), ps%ptr(p + 1) - 1
+               nd = ps%node(k)
+               ke = ke + ps%m(k)*dot_product(vold(:, nd), model%v(:, nd))
+               mom = mom + ps%m(k)*model%v(:, nd)
+            end do
+            ps%ie(p) = ie + dfac*pend
+            ps%hge(p) = hg
+            ps%ke(p) = 0.5_wp*ke
+            ps%mom(:, p) = mom
+         end do
+      end associate
+   end subroutine part_energies
 
    !> Work of the constraint reactions over one step, added to wcon node by node (cnodes in
    !> ascending order; vfree(:, i) is node cnodes(i)'s velocity before the constraints).

@@ -36,6 +36,7 @@ module dx_par_contact
    use dx_contact_input, only: CT_SINGLE_SURFACE
    use dx_partition, only: face_elements, model_conn, partition_t
    use dx_par_rigid, only: par_rigid_centres
+   use dx_energy_sums, only: interface_work
    use dx_par, only: par_rank, par_size, par_abort, par_allreduce, PAR_MAX, PAR_SUM, par_wtime, &
                      par_alltoallv, par_allgatherv_real, par_sparse_exchange, par_allgather_probe
    use dx_par_plan, only: gather_plan_t, par_gather_setup, par_gather_values, par_gather_ordered
@@ -445,6 +446,8 @@ contains
       pc%t_comm = pc%t_comm + (par_wtime() - t0)
       call contact_work(g, pc%cvold, dtavg, outdir, error)
       if (allocated(error)) call par_abort(error%message, error%code)   ! rank 0 alone
+      if (g%db%sleout_dt > 0.0_wp) &
+         call interface_work(g%contact, pc%cvold, g%v, dtavg)   ! per interface (sleout)
       model%energy%sliding = g%energy%sliding
    end subroutine par_contact_work
 

@@ -36,7 +36,7 @@ module dx_par_engine
    use dx_sort, only: sort_index
    use dx_par_model, only: par_model_t, par_fill_slots, par_exchange_forces, par_exchange_mass
    use dx_energy_sums, only: initial_kinetic, kinetic_energy, element_energies, &
-                             constraint_terms, set_energy
+                             constraint_terms, set_energy, part_energies
    use dx_constraints, only: apply_rigidwalls, wall_hits_t
    use dx_par_contact, only: par_contact_t, par_contact_report
    use dx_par_plot, only: par_plot_t, par_plot_write, par_plot_finish
@@ -564,6 +564,7 @@ contains
          eint = eint + dfac*epend
          eng%g%energy%initial = model%energy%initial
          call set_energy(eng%g, ke, eint, ehg, wsum, erw)
+         call part_energies(eng%g, eng%gvold, dfac)   ! matsum (when the deck asks)
          associate (en => eng%g%energy)
             erec = [en%kinetic, en%internal, en%hourglass, en%external_work, en%rigidwall, &
                    en%sliding, en%total, en%initial, en%ratio, en%momentum, en%mass]

@@ -21,7 +21,7 @@ module dx_par_engine_setup
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report
    use dx_rank_file, only: read_rank_file, write_rank_file, rank_file_name, deck_content_hash
    use dx_io_sys, only: sys_mkdir_p
-   use dx_energy_sums, only: constrained_nodes
+   use dx_energy_sums, only: constrained_nodes, part_mass_map
    use dx_par_loads, only: par_loads_t, par_loads_setup, par_loads_take_mass
    use dx_element, only: element_mass_share
    use dx_par_rigid, only: par_rigid_t, par_rigid_setup
@@ -324,6 +324,8 @@ contains
          call element_mass_share(model%blocks(b), &
             model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%ro, mext, cext)
       end do
+      ! matsum's part shares of the nodal masses, on the global model that rank 0 sums
+      if (par_rank() == 0 .and. eng%g%db%matsum_dt > 0.0_wp) call part_mass_map(eng%g)
       call trim_global(eng, model, loads)   ! the last set-up step (after a restart read)
    end subroutine par_engine_mass_share
 

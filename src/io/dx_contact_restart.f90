@@ -49,6 +49,10 @@ contains
          end do
       end do
       call rs%put('contact_work', cs%work)
+      if (any(cs%iface(:)%wslave /= 0.0_wp) .or. any(cs%iface(:)%wmaster /= 0.0_wp)) then
+         call rs%put('contact_wslave', cs%iface(:)%wslave)    ! (sleout decks only)
+         call rs%put('contact_wmaster', cs%iface(:)%wmaster)
+      end if
       call rs%put('contact_next_rcforc', cs%next_rcforc)
       call rs%put('contact_rcforc_bytes', dump_bytes(cs%rcforc_open, cs%rcforc_unit, &
                                                      cs%rcforc_resume))
@@ -59,6 +63,7 @@ contains
       type(contact_set_t), intent(inout) :: cs
       integer :: i, j, nc
       integer, allocatable :: strip(:)
+      real(wp), allocatable :: w(:)
       real(wp) :: sort(5)
       character(:), allocatable :: p
       if (.not. rs%same_labels('contact_ninterfaces', 'contact_label', cs%iface(:)%label, &
@@ -107,6 +112,14 @@ contains
          end do
       end do
       call rs%get('contact_work', cs%work)
+      cs%iface(:)%wslave = 0.0_wp; cs%iface(:)%wmaster = 0.0_wp
+      if (rs%has('contact_wslave')) then       ! (absent: no sleout, or no work yet)
+         allocate(w(size(cs%iface)))
+         call rs%get('contact_wslave', w)
+         cs%iface(:)%wslave = w
+         call rs%get('contact_wmaster', w)
+         cs%iface(:)%wmaster = w
+      end if
       call rs%get('contact_next_rcforc', cs%next_rcforc)
       cs%rcforc_resume = 0
       call rs%get('contact_rcforc_bytes', cs%rcforc_resume)

@@ -1,15 +1,21 @@
 !> The output facade the solver calls: plot states (HDF5 + XDMF, *DATABASE_BINARY_D3PLOT)
 !> and ASCII time histories (*DATABASE_GLSTAT, *DATABASE_NODOUT with
-!> *DATABASE_HISTORY_NODE). Opens only what the deck asks for: the plot file always,
-!> glstat when glstat_dt > 0, nodout when nodout_dt > 0 and history nodes exist.
+!> *DATABASE_HISTORY_NODE, *DATABASE_MATSUM, *DATABASE_SPCFORC, *DATABASE_SLEOUT). Opens
+!> only what the deck asks for: the plot file always, glstat when glstat_dt > 0, nodout when
+!> nodout_dt > 0 and history nodes exist, matsum (dx_matsum), spcforc (dx_spcforc) and
+!> sleout (dx_sleout) when their DT > 0.
 !> The solver decides when output is due; each call here writes one state or line(s).
 !> File formats: docs/output-format.md.
 module dx_output
    use dx_error, only: error_t
    use dx_model, only: model_t
    use dx_io_sys, only: sys_mkdir_p
+   use dx_log, only: log_warn
    use dx_plot_hdf5, only: plot_file_t
    use dx_thist, only: thist_file_t, glstat_run_columns, NODOUT_COLUMNS
+   use dx_matsum, only: matsum_header, matsum_record
+   use dx_spcforc, only: spcforc_header, spcforc_record
+   use dx_sleout, only: sleout_header, sleout_record
    implicit none
    private
    public :: output_t
@@ -20,12 +26,17 @@ module dx_output
       type(plot_file_t), private :: plot
       type(thist_file_t), private :: glstat
       type(thist_file_t), private :: nodout
-      logical, private :: glstat_on = .false., nodout_on = .false.
+      type(thist_file_t), private :: matsum, spcforc, sleout
+      logical, private :: glstat_on = .false., nodout_on = .false., matsum_on = .false., &
+                          spcforc_on = .false., sleout_on = .false.
    contains
       procedure :: open => output_open
       procedure :: write_plot => output_write_plot
       procedure :: write_glstat => output_write_glstat
       procedure :: write_nodout => output_write_nodout
+      procedure :: write_matsum => output_write_matsum
+      procedure :: write_spcforc => output_write_spcforc
+      procedure :: write_sleout => output_write_sleout
       procedure :: close => output_close
       procedure :: resume => output_resume
       procedure :: sizes => output_sizes
@@ -93,17 +104,56 @@ contains
             call self%nodout%open(self%dir//'/nodout', 'nodout', title, NODOUT_COLUMNS, error)
          end if
       end if
+      self%matsum_on = model%db%matsum_dt > 0
+      if (self%matsum_on .and. .not. allocated(error)) then
+         if (cont) then
+            call self%matsum%resume(self%dir//'/matsum', 'matsum', title, '', &
+                                    model%run%matsum_bytes, error, matsum_header(model))
+         else
+            call self%matsum%open(self%dir//'/matsum', 'matsum', title, '', error, &
+                                  matsum_header(model))
+         end if
+      end if
+      if (self%matsum_on .and. .not. cont .and. model%ctrl%dt2ms /= 0) call log_warn('matsum: '// &
+         'the +mass= column (added mass per part) is written as 0 under mass scaling '// &
+         '(*CONTROL_TIMESTEP DT2MS); glstat''s added_mass column has the model''s total')
+      self%spcforc_on = model%db%spcforc_dt > 0
+      if (self%spcforc_on .and. .not. allocated(error)) then
+         if (cont) then
+            call self%spcforc%resume(self%dir//'/spcforc', 'spcforc', title, '', &
+                                     model%run%spcforc_bytes, error, spcforc_header(model))
+         else
+            call self%spcforc%open(self%dir//'/spcforc', 'spcforc', title, '', error, &
+                                   spcforc_header(model))
+         end if
+      end if
+      self%sleout_on = model%db%sleout_dt > 0
+      if (self%sleout_on .and. .not. allocated(error)) then
+         if (cont) then
+            call self%sleout%resume(self%dir//'/sleout', 'sleout', title, '', &
+                                    model%run%sleout_bytes, error, sleout_header(model))
+         else
+            call self%sleout%open(self%dir//'/sleout', 'sleout', title, '', error, &
+                                  sleout_header(model))
+         end if
+      end if
       if (allocated(error)) call self%close(err2)   ! keep the first error
    end subroutine output_open
 
-   !> What a restart dump records about the output: plot states, glstat and nodout bytes.
-   subroutine output_sizes(self, nplot, glstat_bytes, nodout_bytes)
+   !> What a restart dump records about the output: plot states, glstat, nodout, matsum,
+   !> spcforc and sleout bytes.
+   subroutine output_sizes(self, nplot, glstat_bytes, nodout_bytes, matsum_bytes, &
+                           spcforc_bytes, sleout_bytes)
       class(output_t), intent(in) :: self
       integer, intent(out) :: nplot
-      integer(8), intent(out) :: glstat_bytes, nodout_bytes
+      integer(8), intent(out) :: glstat_bytes, nodout_bytes, matsum_bytes, spcforc_bytes, &
+                                 sleout_bytes
       nplot = self%plot%nstates
       glstat_bytes = self%glstat%bytes
       nodout_bytes = self%nodout%bytes
+      matsum_bytes = self%matsum%bytes
+      spcforc_bytes = self%spcforc%bytes
+      sleout_bytes = self%sleout%bytes
    end subroutine output_sizes
 
    !> Write one plot state at model%time.
@@ -133,21 +183,66 @@ contains
       call self%nodout%write_nodout(model, error)
    end subroutine output_write_nodout
 
+   !> Write one matsum record (nothing when the deck asks for none).
+   subroutine output_write_matsum(self, model, error)
+      class(output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      character(:), allocatable :: text
+      if (.not. self%matsum_on) return
+      call matsum_record(model, text, error)
+      if (allocated(error) .or. len(text) == 0) return
+      call self%matsum%write_text(text, error)
+   end subroutine output_write_matsum
+
+   !> Write one spcforc record (nothing when the deck asks for none).
+   subroutine output_write_spcforc(self, model, error)
+      class(output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      character(:), allocatable :: text
+      if (.not. self%spcforc_on) return
+      call spcforc_record(model, text, error)
+      if (allocated(error) .or. len(text) == 0) return
+      call self%spcforc%write_text(text, error)
+   end subroutine output_write_spcforc
+
+   !> Write one sleout record (nothing when the deck asks for none).
+   subroutine output_write_sleout(self, model, error)
+      class(output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      character(:), allocatable :: text
+      if (.not. self%sleout_on) return
+      call sleout_record(model, text, error)
+      if (allocated(error) .or. len(text) == 0) return
+      call self%sleout%write_text(text, error)
+   end subroutine output_write_sleout
+
    !> Flush and close everything; safe to call twice and after errors. Returns the first
    !> failure but still closes the other files.
    subroutine output_close(self, error)
       class(output_t), intent(inout) :: self
       type(error_t), allocatable, intent(out) :: error
-      type(error_t), allocatable :: e1, e2, e3
+      type(error_t), allocatable :: e1, e2, e3, e4, e5, e6
       call self%plot%close(e1)
       call self%glstat%close(e2)
       call self%nodout%close(e3)
+      call self%matsum%close(e4)
+      call self%spcforc%close(e5)
+      call self%sleout%close(e6)
       if (allocated(e1)) then
          call move_alloc(e1, error)
       else if (allocated(e2)) then
          call move_alloc(e2, error)
       else if (allocated(e3)) then
          call move_alloc(e3, error)
+      else if (allocated(e4)) then
+         call move_alloc(e4, error)
+      else if (allocated(e5)) then
+         call move_alloc(e5, error)
+      else if (allocated(e6)) then
+         call move_alloc(e6, error)
       end if
    end subroutine output_close
 

@@ -167,6 +167,20 @@ contains
          call rs%put('run_nrunrsf', r%nrunrsf)
          call rs%put('run_glstat_bytes', r%glstat_bytes)
          call rs%put('run_nodout_bytes', r%nodout_bytes)
+         ! (only when the deck asks for the file: the dumps of the other decks stay as
+         ! they were; a dump without them reads as 'none written')
+         if (model%db%matsum_dt > 0.0_wp) then
+            call rs%put('run_next_matsum', r%next_matsum)
+            call rs%put('run_matsum_bytes', r%matsum_bytes)
+         end if
+         if (model%db%spcforc_dt > 0.0_wp) then
+            call rs%put('run_next_spcforc', r%next_spcforc)
+            call rs%put('run_spcforc_bytes', r%spcforc_bytes)
+         end if
+         if (model%db%sleout_dt > 0.0_wp) then
+            call rs%put('run_next_sleout', r%next_sleout)
+            call rs%put('run_sleout_bytes', r%sleout_bytes)
+         end if
          call rs%put('run_energy_guard', r%guard)
       end associate
       call rs%put('time', model%time)
@@ -200,6 +214,15 @@ contains
          call rs%get('run_nrunrsf', r%nrunrsf)
          call rs%get('run_glstat_bytes', r%glstat_bytes)
          call rs%get('run_nodout_bytes', r%nodout_bytes)
+         r%next_matsum = 0.0_wp; r%matsum_bytes = 0   ! (dumps before matsum: none written)
+         if (rs%has('run_next_matsum')) call rs%get('run_next_matsum', r%next_matsum)
+         if (rs%has('run_matsum_bytes')) call rs%get('run_matsum_bytes', r%matsum_bytes)
+         r%next_spcforc = 0.0_wp; r%spcforc_bytes = 0
+         if (rs%has('run_next_spcforc')) call rs%get('run_next_spcforc', r%next_spcforc)
+         if (rs%has('run_spcforc_bytes')) call rs%get('run_spcforc_bytes', r%spcforc_bytes)
+         r%next_sleout = 0.0_wp; r%sleout_bytes = 0
+         if (rs%has('run_next_sleout')) call rs%get('run_next_sleout', r%next_sleout)
+         if (rs%has('run_sleout_bytes')) call rs%get('run_sleout_bytes', r%sleout_bytes)
          r%guard = 0.0_wp       ! (a dump written before the guard was carried: not judged
          if (rs%has('run_energy_guard')) call rs%get('run_energy_guard', r%guard)  ! 1 cycle)
          r%started = rs%ok()

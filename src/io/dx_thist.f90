@@ -40,6 +40,7 @@ module dx_thist
       procedure :: resume => thist_resume
       procedure :: write_glstat
       procedure :: write_nodout
+      procedure :: write_text
       procedure :: close => thist_close
    end type thist_file_t
 
@@ -53,16 +54,22 @@ contains
       if (model%ctrl%dt2ms /= 0.0_wp) cols = cols//GLSTAT_MS_COLUMNS
    end function glstat_run_columns
 
-   !> Create path and write the header: '# dynx <what>', '# title: ...', '# <columns>'.
-   subroutine thist_open(self, path, what, title, columns, error)
+   !> Create path and write the header: '# dynx <what>', '# title: ...', '# <columns>'
+   !> (header: these lines instead, for the files that keep LS-DYNA's own layout).
+   subroutine thist_open(self, path, what, title, columns, error, header)
       class(thist_file_t), intent(inout) :: self
       character(*), intent(in) :: path, what, title, columns
       type(error_t), allocatable, intent(out) :: error
+      character(*), intent(in), optional :: header
       self%path = path
       call sys_open_write(path, .false., self%unit, error)
       if (allocated(error)) return
       self%opened = .true.
       self%bytes = 0
+      if (present(header)) then
+         call self%write_text(header, error)
+         return
+      end if
       call put_line(self, '# dynx '//what, error)
       if (allocated(error)) return
       call put_line(self, '# title: '//trim(title), error)
@@ -73,16 +80,17 @@ contains
    !> Continue a file from a restart point: cut it back to its first nbytes bytes (the
    !> lines the killed run wrote after the dump go) and append. A missing file is started
    !> anew with its header; a file shorter than nbytes is an error (it is not this run's).
-   subroutine thist_resume(self, path, what, title, columns, nbytes, error)
+   subroutine thist_resume(self, path, what, title, columns, nbytes, error, header)
       class(thist_file_t), intent(inout) :: self
       character(*), intent(in) :: path, what, title, columns
       integer(8), intent(in) :: nbytes
       type(error_t), allocatable, intent(out) :: error
+      character(*), intent(in), optional :: header
       integer(8) :: sz
       logical :: there
       inquire(file=path, exist=there, size=sz)
       if (.not. there) then
-         call self%open(path, what, title, columns, error)
+         call self%open(path, what, title, columns, error, header)
          return
       end if
       call cut_back(path, sz, nbytes, 'another run''s file?', error)
@@ -107,6 +115,21 @@ contains
       end if
       self%bytes = self%bytes + len(line) + 1
    end subroutine put_line
+
+   !> A record of whole lines (text ends with a new line) in one write: a killed run leaves
+   !> the record whole or absent; on failure the file is cut back to the last record.
+   subroutine write_text(self, text, error)
+      class(thist_file_t), intent(inout) :: self
+      character(*), intent(in) :: text
+      type(error_t), allocatable, intent(out) :: error
+      type(error_t), allocatable :: e
+      call sys_write_all(self%unit, text, self%path, error)
+      if (allocated(error)) then
+         call sys_ftruncate_fd(self%unit, self%bytes, self%path, e)
+         return
+      end if
+      self%bytes = self%bytes + len(text)
+   end subroutine write_text
 
    !> One glstat line at model%time.
    subroutine write_glstat(self, model, error)

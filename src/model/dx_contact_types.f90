@@ -79,6 +79,9 @@ module dx_contact_types
       real(wp) :: fslave(3) = 0.0_wp           !< resultant force on the slave side
       real(wp) :: fmaster(3) = 0.0_wp          !< resultant force on the master side
       integer :: nactive = 0                   !< slave nodes in contact, last cycle
+      !> work of the contact forces on the slave and on the master nodes since t = 0
+      !> (centred, as contact_set_t%work; sleout: dx_energy_sums%interface_work)
+      real(wp) :: wslave = 0.0_wp, wmaster = 0.0_wp
       integer :: rank = -1                     !< MPI runs: the rank computing a local pair
                                                !< (-1: strips)
    end type contact_iface_t

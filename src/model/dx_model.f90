@@ -22,7 +22,7 @@ module dx_model
    private
    public :: model_t, section_t, hourglass_t, node_set_t, part_set_t, &
              segment_set_t, spc_t, prescribed_t, load_node_t, load_segment_t, rigidwall_t, &
-             control_t, database_t, energy_t
+             control_t, database_t, energy_t, part_sums_t
    !> the element block and the part (dx_element_types, the kernels' types; held here)
    public :: elem_block_t, part_t
    !> the element-family table (dx_element_types): what every consumer asks of a block's
@@ -153,6 +153,9 @@ module dx_model
       integer :: d3plot_lcdt = 0
       real(wp) :: glstat_dt = 0.0_wp    !< 0: no glstat file
       real(wp) :: nodout_dt = 0.0_wp    !< 0: no nodout file
+      real(wp) :: matsum_dt = 0.0_wp    !< 0: no matsum file (*DATABASE_MATSUM)
+      real(wp) :: spcforc_dt = 0.0_wp   !< 0: no spcforc file (*DATABASE_SPCFORC)
+      real(wp) :: sleout_dt = 0.0_wp    !< 0: no sleout file (*DATABASE_SLEOUT)
       integer, allocatable :: hist_nodes(:)   !< dense node indices for nodout
    end type database_t
 
@@ -171,6 +174,21 @@ module dx_model
       real(wp) :: mass = 0.0_wp
       real(wp) :: added_mass = 0.0_wp   !< mass added by mass scaling (DT2MS), whole model
    end type energy_t
+
+   !> Per-part sums of *DATABASE_MATSUM (dx_energy_sums%part_energies): each part's share of
+   !> the lumped nodal masses (CSR over parts: the nodes of part p are node(ptr(p):ptr(p+1)-1)
+   !> in ascending order, m its element-mass share there), and the sums at the last energy
+   !> step. An MPI run forms them on rank 0's global model only.
+   type :: part_sums_t
+      integer, allocatable :: ptr(:)          !< (np + 1)
+      integer, allocatable :: node(:)         !< dense node indices
+      real(wp), allocatable :: m(:)           !< mass share of the part at node
+      real(wp), allocatable :: mass(:)        !< (np) part mass (sum of its shares)
+      !> (np) mass added by mass scaling (*CONTROL_TIMESTEP DT2MS; zero until it lands)
+      real(wp), allocatable :: added(:)
+      real(wp), allocatable :: ie(:), ke(:), hge(:)   !< (np) internal, kinetic, hourglass
+      real(wp), allocatable :: mom(:, :)      !< (3, np) momentum
+   end type part_sums_t
 
    type :: model_t
       character(:), allocatable :: title
@@ -228,6 +246,7 @@ module dx_model
       integer :: cycle = 0
       integer :: dt_elem = 0                   !< dense element controlling dt
       type(energy_t) :: energy
+      type(part_sums_t) :: psum                !< matsum's per-part sums (matsum_dt > 0)
       type(run_state_t) :: run                 !< explicit loop state (restart dumps it)
       type(restart_ctrl_t) :: rst              !< *DATABASE_BINARY_D3DUMP/RUNRSF
    end type model_t

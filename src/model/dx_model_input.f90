@@ -175,6 +175,9 @@ module dx_model_input
       integer :: d3plot_npltc = 0
       type(origin_t) :: d3plot_src
       real(wp) :: glstat_dt = 0.0_wp, nodout_dt = 0.0_wp
+      real(wp) :: matsum_dt = 0.0_wp       !< *DATABASE_MATSUM DT (0: none)
+      real(wp) :: spcforc_dt = 0.0_wp      !< *DATABASE_SPCFORC DT (0: none)
+      real(wp) :: sleout_dt = 0.0_wp       !< *DATABASE_SLEOUT DT (0: none)
       type(label_list_t), allocatable :: hist_nodes(:)      !< *DATABASE_HISTORY_NODE cards
       type(label_list_t), allocatable :: hist_node_sets(:)  !< *DATABASE_HISTORY_NODE_SET cards
       type(contact_input_t) :: contact     !< *CONTACT_*, *CONTROL_CONTACT, *DATABASE_RCFORC

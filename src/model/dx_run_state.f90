@@ -21,6 +21,9 @@ module dx_run_state
       real(wp) :: next_plot = 0.0_wp     !< next plot-state time
       real(wp) :: next_glstat = 0.0_wp   !< next glstat time
       real(wp) :: next_nodout = 0.0_wp   !< next nodout time
+      real(wp) :: next_matsum = 0.0_wp   !< next matsum time
+      real(wp) :: next_spcforc = 0.0_wp  !< next spcforc time
+      real(wp) :: next_sleout = 0.0_wp   !< next sleout time
       real(wp) :: next_status = 0.0_wp   !< next status-line time
       logical :: started = .false.       !< true once the loop state is set (restart: restored)
       ! output bookkeeping at the dump point (a restart truncates the files to these)
@@ -29,6 +32,9 @@ module dx_run_state
       integer :: nrunrsf = 0             !< running restart files written
       integer(8) :: glstat_bytes = 0     !< bytes in glstat
       integer(8) :: nodout_bytes = 0     !< bytes in nodout
+      integer(8) :: matsum_bytes = 0     !< bytes in matsum
+      integer(8) :: spcforc_bytes = 0    !< bytes in spcforc
+      integer(8) :: sleout_bytes = 0     !< bytes in sleout
       !> dynx's energy guard (dx_solver): warned (0/1), the ratio's denominator and the
       !> ratio at the last judged cycle, so a continued run judges as the uninterrupted one
       real(wp) :: guard(3) = 0.0_wp

@@ -213,7 +213,8 @@ contains
          done = t >= tend .or. (model%ctrl%endcyc > 0 .and. model%cycle >= model%ctrl%endcyc) &
                 .or. self%ms_stop
          need = done .or. model%ctrl%endeng > 0.0_wp .or. (model%db%glstat_dt > 0.0_wp .and. &
-                                                          t >= next_glstat)
+                                                          t >= next_glstat) .or. &
+                (model%db%matsum_dt > 0.0_wp .and. t >= model%run%next_matsum)
          ! rigid walls; work sums (MPI: terms kept, summed in serial order when needed)
          call dom%constraints(model, cnodes, vfree, vold, dt, dtavg, wcon, wrw, need)
          if (loads) call dom%load_work(fext, vold, model%v, dtavg, wext, need)

@@ -79,6 +79,10 @@ contains
          guard%r_prev = model%run%guard(3)
       end if
       call log_info('dynx: integrator: '//integ%name//' ('//integ%why//')')
+      if (.not. integ%histories .and. max(model%db%matsum_dt, model%db%spcforc_dt, &
+                                          model%db%sleout_dt) > 0.0_wp) &
+         call log_info('dynx: note: matsum, spcforc and sleout are not written by this '// &
+                       'integrator (it writes its own emcstat); their files hold the header only')
       if (integ%energies) call guard_bounds(guard)
       t0wall = wall_time()
       writer = dom%writer()
@@ -161,6 +165,12 @@ contains
       if (allocated(error)) return
       call history_file(2)
       if (allocated(error)) return
+      call history_file(3)
+      if (allocated(error)) return
+      call history_file(4)
+      if (allocated(error)) return
+      call history_file(5)
+      if (allocated(error)) return
       if (allocated(model%rigid)) then
          if (model%rigid%rbdout_dt > 0.0_wp .and. &
              (t >= model%rigid%next_rbdout .or. done)) then
@@ -171,26 +181,44 @@ contains
          end if
       end if
    contains
-      !> glstat (kind 1) or nodout (2) when due (MPI: the global model gathered to rank 0)
+      !> glstat (kind 1), nodout (2), matsum (3), spcforc (4) or sleout (5) when due (MPI:
+      !> the global model gathered to rank 0; matsum's part sums are formed there)
       subroutine history_file(kind)
          integer, intent(in) :: kind
          real(wp) :: interval, next
-         if (kind == 1) then
+         select case (kind)
+         case (1)
             interval = model%db%glstat_dt; next = model%run%next_glstat
-         else
+         case (2)
             interval = model%db%nodout_dt; next = model%run%next_nodout
-         end if
+         case (3)
+            interval = model%db%matsum_dt; next = model%run%next_matsum
+         case (4)
+            interval = model%db%spcforc_dt; next = model%run%next_spcforc
+         case default
+            interval = model%db%sleout_dt; next = model%run%next_sleout
+         end select
          if (.not. (interval > 0.0_wp .and. (t >= next .or. done))) return
          call dom%output_model(model, om, writer)
          if (writer .and. kind == 1) call out%write_glstat(om, error)
          if (writer .and. kind == 2) call out%write_nodout(om, error)
+         if (writer .and. kind == 3) call out%write_matsum(om, error)
+         if (writer .and. kind == 4) call out%write_spcforc(om, error)
+         if (writer .and. kind == 5) call out%write_sleout(om, error)
          if (allocated(error)) return
          next = next_output_time(next, interval, t)
-         if (kind == 1) then
+         select case (kind)
+         case (1)
             model%run%next_glstat = next
-         else
+         case (2)
             model%run%next_nodout = next
-         end if
+         case (3)
+            model%run%next_matsum = next
+         case (4)
+            model%run%next_spcforc = next
+         case default
+            model%run%next_sleout = next
+         end select
       end subroutine history_file
    end subroutine histories
 
