@@ -7,7 +7,7 @@ module dx_build_loads
    use dx_vec3, only: cross
    use dx_error, only: error_t, set_error
    use dx_strings, only: str
-   use dx_model, only: model_t, prescribed_t, load_segment_t
+   use dx_model, only: model_t, prescribed_t, load_segment_t, element_family, family_t
    use dx_model_input, only: model_input_t, IVEL_SET, IVEL_NODE, IVEL_GEN
    use dx_build_common, only: maps_t, at, at_line, set_nodes, curve_index, node_index, &
                               dense_segments
@@ -27,6 +27,7 @@ contains
       integer, allocatable :: nodes(:)
       integer :: i, k, n, c
       type(prescribed_t), allocatable :: pr(:)
+      logical, allocatable :: rot(:)
       logical, parameter :: code(3, 0:7) = reshape([.false., .false., .false., &
          .true., .false., .false., .false., .true., .false., .false., .false., .true., &
          .true., .true., .false., .false., .true., .true., .true., .false., .true., &
@@ -73,6 +74,17 @@ contains
                nodes = [node_index(inp, mp, m%id, m%src, 'NID', error)]
                if (allocated(error)) return
             end if
+            if (m%dof >= 5) then      ! rotations exist on shell nodes only
+               if (.not. allocated(rot)) call rotation_nodes(model, rot)
+               do k = 1, size(nodes)
+                  if (.not. rot(nodes(k))) then
+                     call set_error(error, at(inp, m%src)//'field DOF: DOF '//str(m%dof)// &
+                        ' (a rotation) on node '//str(model%node_label(nodes(k)))// &
+                        ', which carries no rotation (not a shell node)')
+                     return
+                  end if
+               end do
+            end if
             do k = 1, size(nodes)
                pr = [pr, prescribed_t(node=nodes(k), dof=m%dof, vad=m%vad, curve=c, sf=m%sf, &
                      dir=unit_axis(m%dof), death=m%death, birth=m%birth)]
@@ -81,6 +93,23 @@ contains
       end do
       call move_alloc(pr, model%prescribed)
    end subroutine build_bcs
+
+   !> rot(i): node i belongs to an element of a family with rotations (shells)
+   subroutine rotation_nodes(model, rot)
+      type(model_t), intent(in) :: model
+      logical, allocatable, intent(out) :: rot(:)
+      integer :: b, i
+      type(family_t) :: fam
+      allocate(rot(model%nn))
+      rot = .false.
+      do b = 1, size(model%blocks)
+         fam = element_family(model%blocks(b)%etype)
+         if (.not. fam%rot) cycle
+         do i = 1, model%blocks(b)%nel
+            rot(model%blocks(b)%conn(:, i)) = .true.
+         end do
+      end do
+   end subroutine rotation_nodes
 
    pure function unit_axis(d) result(a)
       integer, intent(in) :: d

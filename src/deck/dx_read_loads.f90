@@ -143,13 +143,20 @@ contains
          if (allocated(error)) return
          call get_int(deck, blk, ic, 2, w, 'DOF', 0, m%dof, error)
          if (allocated(error)) return
-         if (m%dof < 1 .or. m%dof > 3) then
+         if (m%dof < 1 .or. m%dof > 7 .or. m%dof == 4) then
             call field_error(deck, blk, ic, 2, w, 'DOF', 'DOF '//str(m%dof)//' is not '// &
-               'supported (supported: 1 x, 2 y, 3 z translation)', error)
+               'supported (supported: 1 x, 2 y, 3 z translation; 5, 6, 7 rotation about '// &
+               'x, y, z on shell nodes)', error)
             return
          end if
          call read_motion_fields(deck, blk, ic, w, m%vad, m%lcid, m%sf, m%death, m%birth, error)
          if (allocated(error)) return
+         if (m%dof >= 5 .and. m%vad == 2) then
+            call field_error(deck, blk, ic, 3, w, 'VAD', 'VAD 2 (a prescribed rotation '// &
+               'angle) on DOF '//str(m%dof)//' is not supported (supported on rotations: 0 '// &
+               'angular velocity, 1 angular acceleration)', error)
+            return
+         end if
          m%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
          inp%motions = [inp%motions, m]
       end do

@@ -28,7 +28,8 @@ module dx_element_types
    implicit none
    private
    public :: family_t, element_family, elem_volume, elem_moments, elem_length, block_result_t
-   public :: ETYPE_HEX8_1PT, ETYPE_HEX8_SRI, ETYPE_TET4, ETYPE_DEFAULT
+   public :: ETYPE_HEX8_1PT, ETYPE_HEX8_SRI, ETYPE_TET4, ETYPE_DEFAULT, ETYPE_SHELL_BT
+   public :: etype_of_shell_elform, ES_THK, shell_area
    public :: MAX_NEN, MAX_FACE_NODES, MAX_FACES
    public :: ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, etype_of_elform, ETYPES
    public :: solid_shape, elem_quality, ASPECT_WARN, WARP_WARN
@@ -41,8 +42,11 @@ module dx_element_types
    integer, parameter :: ETYPE_HEX8_SRI = 2   !< 2x2x2 selectively reduced (mean dilatation)
    integer, parameter :: ETYPE_TET4 = 10      !< 4-node tetrahedron, one point, constant strain
    integer, parameter :: ETYPE_DEFAULT = ETYPE_HEX8_1PT   !< a block built without a section
+   !> shells: 1000 + the *SECTION_SHELL ELFORM (the solid and shell ELFORM numbers overlap)
+   integer, parameter :: ETYPE_SHELL_BT = 1002   !< Belytschko-Lin-Tsay quadrilateral (dx_shell_bt)
    !> every element type, one per family first (lookups by nen or XDMF code take the first)
-   integer, parameter :: ETYPES(3) = [ETYPE_HEX8_1PT, ETYPE_TET4, ETYPE_HEX8_SRI]
+   integer, parameter :: ETYPES(4) = [ETYPE_HEX8_1PT, ETYPE_TET4, ETYPE_SHELL_BT, &
+                                      ETYPE_HEX8_SRI]
    integer, parameter :: MAX_NEN = 8          !< most nodes of any family (*ELEMENT_SOLID card)
    integer, parameter :: MAX_FACE_NODES = 4   !< most nodes of a face (a segment)
    integer, parameter :: MAX_FACES = 6        !< most faces of a family
@@ -62,11 +66,15 @@ module dx_element_types
    integer, parameter :: ES_HGS = 1    !< hourglass resisting forces (3, hgmodes) (IHQ 4, 5)
    integer, parameter :: ES_WORK = 2   !< pending terms of the centred work (offsets WORK_*)
    integer, parameter :: ES_PHIM = 3   !< own-mass share of the element dt bound (set-up)
-   integer, parameter :: MAX_ES = 3
+   !> shells: current thickness (1) and the hourglass generalized forces (8: membrane x, y,
+   !> out-of-plane, bending x, y; 3 more columns spare for the warping terms)
+   integer, parameter :: ES_THK = 4
+   integer, parameter :: MAX_ES = 4
    !> restart dataset of each slot (the columns in order, flat; ES_DUMP: phim is derived at
    !> start, not dumped); dumps write the slots in id order
-   character(8), parameter :: ES_NAMES(MAX_ES) = [character(8) :: 'hgs', 'ework', 'phim']
-   logical, parameter :: ES_DUMP(MAX_ES) = [.true., .true., .false.]
+   character(8), parameter :: ES_NAMES(MAX_ES) = [character(8) :: 'hgs', 'ework', 'phim', &
+                                                  'shthk']
+   logical, parameter :: ES_DUMP(MAX_ES) = [.true., .true., .false., .true.]
    !> column offsets inside ES_WORK (dx_hex8's centred_work: q, q B.v, dt, sigma:D V of the
    !> last pass)
    integer, parameter :: WORK_Q = 0, WORK_QBV = 1, WORK_DT = 2, WORK_PN = 3
@@ -85,6 +93,7 @@ module dx_element_types
       real(wp) :: mass_share = 0.0_wp      !< lumped mass of each node: rho V0 * mass_share
       integer :: weight = 1                !< partition cost weight (measured ns/element-cycle)
       integer :: es_ncol(MAX_ES) = 0       !< columns of each family-state slot (0: none)
+      logical :: rot = .false.             !< nodes carry rotations (shells)
    end type family_t
 
    !> results of one block pass
@@ -110,6 +119,11 @@ module dx_element_types
       real(wp) :: qh = 0.1_wp      !< resolved hourglass coefficient
       real(wp) :: q1 = 1.5_wp      !< resolved quadratic bulk viscosity coefficient
       real(wp) :: q2 = 0.06_wp     !< resolved linear bulk viscosity coefficient
+      !> shell parts: the section's shear factor SHRF, the through-thickness rule
+      !> (*CONTROL_SHELL INTGRD = 1: Lobatto) and the thickness update (ISTUPD)
+      real(wp) :: shrf = 1.0_wp
+      logical :: lobatto = .false.
+      integer :: istupd = 0
    end type part_t
 
    !> A group of at most nv_chunk elements of one part and one formulation.
@@ -148,6 +162,7 @@ module dx_element_types
    !> tetrahedron faces (positive volume: node 4 on the side of (x2-x1)x(x3-x1))
    integer, parameter :: TET_FACES(4, 4) = reshape([1, 3, 2, 2,  1, 2, 4, 4,  2, 3, 4, 4, &
                                                     1, 4, 3, 3], [4, 4])
+   integer, parameter :: QUAD_EDGES(2, 4) = reshape([1, 2,  2, 3,  3, 4,  4, 1], [2, 4])
    integer, parameter :: TET_EDGES(2, 6) = reshape([1, 2,  2, 3,  3, 1,  1, 4,  2, 4,  3, 4], &
                                                    [2, 6])
 
@@ -165,7 +180,7 @@ contains
          f%edges(:, 1:12) = HEX_EDGES
          f%mass_share = 0.125_wp
          f%hgmodes = 4
-         f%es_ncol = [3*f%hgmodes, 4, 1]
+         f%es_ncol = [3*f%hgmodes, 4, 1, 0]
          f%nip = 1; f%weight = 1
          ! ELFORM 2 measured at about 8x ELFORM 1 per element-cycle (docs/history.md,
          ! "Partition weights")
@@ -178,8 +193,20 @@ contains
          f%faces(:, 1:4) = TET_FACES
          f%edges(:, 1:6) = TET_EDGES
          f%mass_share = 0.25_wp
-         f%es_ncol = [0, 4, 0]
+         f%es_ncol = [0, 4, 0, 0]
          f%nip = 1; f%weight = 1
+      case (ETYPE_SHELL_BT)
+         ! one face (the mid-surface, normal by the right-hand rule on N1..N4; a triangle
+         ! repeats N3), four edges; nip: the section's through-thickness points (block%nip)
+         f%name = 'quad4'; f%xdmf = 'Quadrilateral'; f%xdmf_code = 5
+         f%nen = 4; f%nfaces = 1; f%nedges = 4
+         f%faces(:, 1) = [1, 2, 3, 4]
+         f%edges(:, 1:4) = QUAD_EDGES
+         f%mass_share = 0.25_wp
+         f%hgmodes = 5
+         f%es_ncol = [0, 0, 0, 1 + 8]
+         f%nip = 2; f%weight = 1
+         f%rot = .true.
       end select
    end function element_family
 
@@ -195,6 +222,21 @@ contains
          etype = ETYPE_HEX8_1PT
       end select
    end function etype_of_elform
+
+   !> Element type of a *SECTION_SHELL ELFORM (0: not supported).
+   pure integer function etype_of_shell_elform(elform) result(etype)
+      integer, intent(in) :: elform
+      etype = 0
+      if (elform == 2) etype = ETYPE_SHELL_BT
+   end function etype_of_shell_elform
+
+   !> Mid-surface area of a shell with nodes xe(3, 4) (a triangle repeats N3): half the
+   !> norm of the cross product of the diagonals (exact for a plane quadrilateral).
+   pure function shell_area(xe) result(a)
+      real(wp), intent(in) :: xe(:, :)
+      real(wp) :: a
+      a = 0.5_wp*norm2(cross(xe(:, 3) - xe(:, 1), xe(:, 4) - xe(:, 2)))
+   end function shell_area
 
    !> Element type and nodes of one *ELEMENT_SOLID card c(1:8) (dense nodes, in place) of a
    !> part whose section gives etype; nen = nodes of the resulting family, ok = .false. for

@@ -34,12 +34,18 @@ module dx_model
    public :: ES_WORK, ES_HGS, ES_PHIM, MAX_ES, ES_NAMES, ES_DUMP, WORK_Q, WORK_QBV, &
              WORK_DT, WORK_PN
 
-   !> *SECTION_SOLID
+   !> *SECTION_SOLID or *SECTION_SHELL (shell = .true.; the shell fields of
+   !> dx_read_shells with their LS-DYNA meaning)
    type :: section_t
       integer :: label = 0
       character(:), allocatable :: title
       integer :: elform = 1
       integer :: aet = 0
+      logical :: shell = .false.
+      real(wp) :: shrf = 1.0_wp        !< transverse shear factor
+      integer :: nip = 2               !< through-thickness points
+      integer :: intgrd = 0            !< 0 Gauss, 1 Lobatto (*CONTROL_SHELL INTGRD)
+      real(wp) :: t(4) = 0.0_wp        !< nodal thicknesses T1..T4
    end type section_t
 
    !> *HOURGLASS (a negative or zero value means: take the *CONTROL_* default)
@@ -143,6 +149,14 @@ module dx_model
       real(wp) :: q1 = 1.5_wp, q2 = 0.06_wp
       integer :: ibq = 1
       integer :: esort = 0              !< *CONTROL_SOLID ESORT: >= 1 sorts degenerate tetrahedra
+      !> *CONTROL_SHELL (dx_read_shells): warping warning angle (degrees), thickness update
+      !> (0 none, 1 membrane straining), rotary inertia scale, through-thickness rule
+      !> (0 Gauss, 1 Lobatto), plane-stress plasticity option
+      real(wp) :: wrpang = 20.0_wp
+      integer :: istupd = 0
+      real(wp) :: rotascl = 1.0_wp
+      integer :: intgrd = 0
+      integer :: miter = 1
       type(implicit_ctrl_t) :: imp      !< the implicit controls (integrator choice, dx_solver)
    end type control_t
 
@@ -215,6 +229,11 @@ module dx_model
       real(wp), allocatable :: v(:, :)         !< (3, nn) velocity at t(n+1/2) after a cycle
       real(wp), allocatable :: f(:, :)         !< (3, nn) force (external - internal)
       real(wp), allocatable :: mass(:)         !< (nn) lumped mass
+      !> rotational degrees of freedom (allocated only when the deck has shells): angular
+      !> velocity at t(n+1/2) after a cycle, moment (external - internal), rotary inertia
+      real(wp), allocatable :: w(:, :)         !< (3, nn) angular velocity (global axes)
+      real(wp), allocatable :: mom(:, :)       !< (3, nn) moment
+      real(wp), allocatable :: rinert(:)       !< (nn) lumped rotary inertia
       real(wp) :: time = 0.0_wp
       real(wp) :: dt = 0.0_wp
       integer :: cycle = 0

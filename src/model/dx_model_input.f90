@@ -138,6 +138,9 @@ module dx_model_input
       integer, allocatable :: elem_label(:), elem_pid(:)
       integer, allocatable :: elem_conn(:, :)        !< (SOLID_CARD_NODES, :) node labels
       integer, allocatable :: elem_src(:, :)         !< (2, :) ifile, line
+      !> (4, :) nodal thicknesses of *ELEMENT_SHELL_THICKNESS (0: the section's); allocated
+      !> once a shell card is read (dx_read_shells), a shell card has N5..N8 = 0
+      real(wp), allocatable :: elem_thk(:, :)
       ! --- definitions (parts: grown by input_add_part, cut to nparts by input_finish)
       integer :: nparts = 0
       type(part_t), allocatable :: parts(:)
