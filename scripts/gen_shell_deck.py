@@ -5,8 +5,10 @@ shells, nx by ny elements, length L along x, width B along y, thickness T.
   gen_shell_deck.py cantilever NX NY [OUT]   clamped at x = 0 (all six DOF), initial
       transverse velocity in the shape of the first cantilever mode (Euler-Bernoulli,
       PR = 0 so that beam and plate theory agree), tip nodes in nodout
-  gen_shell_deck.py patch [OUT]              membrane patch test: 5 irregular quadrilaterals
-      and 2 triangles, boundary nodes driven with the velocity of a uniform strain rate
+  gen_shell_deck.py patch|patch_tri [OUT]    membrane patch test (MacNeal-Harder 1985), its
+      plane rotated out of x-y; the four corners driven with the velocity of a uniform
+      velocity gradient, the four inner nodes free (patch_tri: the inner quadrilateral cut
+      into two triangles N4 = N3)
   gen_shell_deck.py rotation [OUT]           a free plate spinning as a rigid body about an
       in-plane axis (initial velocity omega x r): no strain, internal energy 0
 """
@@ -90,11 +92,104 @@ def cantilever(nx, ny):
     return s
 
 
+def rotation_matrix(axis, deg):
+    """rotation by deg degrees about axis (Rodrigues)"""
+    n = math.sqrt(sum(a*a for a in axis))
+    k = [a/n for a in axis]
+    c, s = math.cos(math.radians(deg)), math.sin(math.radians(deg))
+    kx = [[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]]
+    return [[(1.0 if i == j else 0.0)*c + s*kx[i][j] + (1 - c)*k[i]*k[j] for j in range(3)]
+            for i in range(3)]
+
+
+def mat_vec(a, v):
+    return [sum(a[i][j]*v[j] for j in range(3)) for i in range(3)]
+
+
+# MacNeal & Harder (1985) membrane patch, 0.24 x 0.12 scaled to mm (x100), rotated out of
+# the x-y plane; its inner quadrilateral is cut into two triangles (N4 = N3) with tri = True
+PATCH_NODES = [(0, 0), (24, 0), (24, 12), (0, 12), (4, 2), (18, 3), (16, 8), (8, 8)]
+PATCH_QUADS = [(1, 2, 6, 5), (2, 3, 7, 6), (3, 4, 8, 7), (4, 1, 5, 8)]
+PATCH_GRAD = [[1.0e-3, 6.0e-4], [2.0e-4, -5.0e-4]]   # in-plane velocity gradient, 1/ms
+PATCH_AXIS, PATCH_DEG = (1.0, 2.0, 3.0), 35.0
+
+
+def patch(tri):
+    r = rotation_matrix(PATCH_AXIS, PATCH_DEG)
+    lg = [[PATCH_GRAD[i][j] if i < 2 and j < 2 else 0.0 for j in range(3)] for i in range(3)]
+    # v = R Lg R^T x (x: rotated coordinates)
+    rt = [[r[j][i] for j in range(3)] for i in range(3)]
+    l3 = [[sum(r[i][a]*lg[a][b]*rt[b][j] for a in range(3) for b in range(3))
+           for j in range(3)] for i in range(3)]
+    nodes = []
+    for k, (x, y) in enumerate(PATCH_NODES):
+        p = mat_vec(r, [x, y, 0.0])
+        # the coordinates as dynx reads them (20-column fields), so that the velocity
+        # field below is linear in them to round-off
+        nodes.append((k + 1,) + tuple(float(f'{c:20.13e}') for c in p))
+    quads = list(PATCH_QUADS)
+    if tri:
+        quads += [(5, 6, 7, 7), (5, 7, 8, 8)]
+    else:
+        quads += [(5, 6, 7, 8)]
+    elems = [(k + 1,) + q for k, q in enumerate(quads)]
+    kind = 'triangles' if tri else 'quadrilaterals'
+    s = head(f'Membrane patch test (MacNeal-Harder, rotated; inner {kind})', 1.0, 0.5, 0.05,
+             [5, 6, 7, 8], pr=0.3)
+    s += ['*NODE +'] + [f'{n:20d}{x:20.13e}{y:20.13e}{z:20.13e}' for n, x, y, z in nodes]
+    s += elem_cards(elems)
+    s += ['*DEFINE_CURVE', '         1', f'{0.0:20.4f}{1.0:20.4f}', f'{100.0:20.4f}{1.0:20.4f}']
+    s += ['*INITIAL_VELOCITY_NODE +']
+    vel = {}
+    for n, x, y, z in nodes:
+        v = mat_vec(l3, [x, y, z])
+        vel[n] = v
+        s.append(f'{n:20d}' + ''.join(f'{c:20.13e}' for c in v))
+    # a zero component is an SPC (SF = 0 means 1 on *BOUNDARY_PRESCRIBED_MOTION)
+    s += ['*BOUNDARY_PRESCRIBED_MOTION_NODE +']
+    fix = []
+    for n in (1, 2, 3, 4):
+        for d in range(3):
+            if vel[n][d] == 0.0:
+                fix.append((n, d))
+            else:
+                s.append(f'{n:20d}{d + 1:20d}{0:20d}{1:20d}{vel[n][d]:20.13e}')
+    if fix:
+        s += ['*BOUNDARY_SPC_NODE']
+        for n, d in fix:
+            s.append(f'{n:10d}         0' + ''.join('         1' if k == d else '         0'
+                                                  for k in range(3)))
+    s.append('*END')
+    return s
+
+
+def rotation():
+    """a 4x2 plate spinning about an in-plane axis through its centre"""
+    nodes, elems = grid(4, 2, 40.0, 20.0)
+    om = (0.05, 0.03, 0.0)       # rad/ms, about an axis in the plane z = 0
+    xc = (20.0, 10.0, 0.0)
+    s = head('Free plate in rigid rotation (BT shells)', 20.0, 10.0, 0.5, [1, 15])
+    s += node_cards(nodes) + elem_cards(elems)
+    s += ['*INITIAL_VELOCITY_NODE']
+    for n, x, y, z in nodes:
+        r = (x - xc[0], y - xc[1], z - xc[2])
+        v = (om[1]*r[2] - om[2]*r[1], om[2]*r[0] - om[0]*r[2], om[0]*r[1] - om[1]*r[0])
+        s.append(f'{n:10d}' + ''.join(f'{c:10.6f}' for c in v))
+    s.append('*END')
+    return s
+
+
 def main():
     kind = sys.argv[1]
     if kind == 'cantilever':
         lines = cantilever(int(sys.argv[2]), int(sys.argv[3]))
         out = sys.argv[4] if len(sys.argv) > 4 else None
+    elif kind in ('patch', 'patch_tri'):
+        lines = patch(kind == 'patch_tri')
+        out = sys.argv[2] if len(sys.argv) > 2 else None
+    elif kind == 'rotation':
+        lines = rotation()
+        out = sys.argv[2] if len(sys.argv) > 2 else None
     else:
         raise SystemExit('unknown kind ' + kind)
     text = '\n'.join(lines) + '\n'

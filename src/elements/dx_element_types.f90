@@ -29,7 +29,7 @@ module dx_element_types
    private
    public :: family_t, element_family, elem_volume, elem_moments, elem_length, block_result_t
    public :: ETYPE_HEX8_1PT, ETYPE_HEX8_SRI, ETYPE_TET4, ETYPE_DEFAULT, ETYPE_SHELL_BT
-   public :: etype_of_shell_elform, ES_THK, shell_area
+   public :: etype_of_shell_elform, ES_THK, shell_area, shell_frame, shell_stress_global
    public :: MAX_NEN, MAX_FACE_NODES, MAX_FACES
    public :: ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, etype_of_elform, ETYPES
    public :: solid_shape, elem_quality, ASPECT_WARN, WARP_WARN
@@ -237,6 +237,45 @@ contains
       real(wp) :: a
       a = 0.5_wp*norm2(cross(xe(:, 3) - xe(:, 1), xe(:, 4) - xe(:, 2)))
    end function shell_area
+
+   !> Co-rotational frame e(3, 3) (columns e1, e2, e3) of a shell with nodes xe(3, 4) (a
+   !> triangle repeats N3): e3 = s31 x s42/|.|, e1 = s21 - (s21.e3) e3 normalised, e2 = e3 x
+   !> e1 (sIJ = x_I - x_J; Belytschko, Lin & Tsay 1984), the local in-plane coordinates
+   !> xl(2, 4) of the nodes (origin N1) and the area of the projected quadrilateral.
+   pure subroutine shell_frame(xe, e, xl, area)
+      real(wp), intent(in) :: xe(3, 4)
+      real(wp), intent(out) :: e(3, 3), xl(2, 4), area
+      real(wp) :: s21(3), n(3), r(3), a
+      integer :: k
+      s21 = xe(:, 2) - xe(:, 1)
+      n = cross(xe(:, 3) - xe(:, 1), xe(:, 4) - xe(:, 2))
+      a = norm2(n)
+      if (a > 0.0_wp) n = n/a
+      e(:, 3) = n
+      r = s21 - dot_product(s21, n)*n
+      a = norm2(r)
+      if (a > 0.0_wp) r = r/a
+      e(:, 1) = r
+      e(:, 2) = cross(n, r)
+      do k = 1, 4
+         xl(1, k) = dot_product(e(:, 1), xe(:, k) - xe(:, 1))
+         xl(2, k) = dot_product(e(:, 2), xe(:, k) - xe(:, 1))
+      end do
+      area = 0.5_wp*((xl(1, 3) - xl(1, 1))*(xl(2, 4) - xl(2, 2)) - &
+                     (xl(1, 4) - xl(1, 2))*(xl(2, 3) - xl(2, 1)))
+   end subroutine shell_frame
+
+   !> A shell's stress s (xx yy zz xy yz zx) from its co-rotational frame (nodes xe(3, 4))
+   !> to the global axes: sigma_global = E sigma_local E^T.
+   pure subroutine shell_stress_global(xe, s)
+      real(wp), intent(in) :: xe(3, 4)
+      real(wp), intent(inout) :: s(6)
+      real(wp) :: e(3, 3), xl(2, 4), a, t(3, 3)
+      call shell_frame(xe, e, xl, a)
+      t = reshape([s(1), s(4), s(6), s(4), s(2), s(5), s(6), s(5), s(3)], [3, 3])
+      t = matmul(e, matmul(t, transpose(e)))
+      s = [t(1, 1), t(2, 2), t(3, 3), t(1, 2), t(2, 3), t(3, 1)]
+   end subroutine shell_stress_global
 
    !> Element type and nodes of one *ELEMENT_SOLID card c(1:8) (dense nodes, in place) of a
    !> part whose section gives etype; nen = nodes of the resulting family, ok = .false. for

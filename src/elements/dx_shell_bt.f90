@@ -5,7 +5,10 @@
 !> CMAME 42:225-251; Hallquist, LS-DYNA Theory Manual, "Belytschko-Lin-Tsay shell").
 !> Co-rotational frame of the mid-surface: e3 = s31 x s42/|.|, e1 = s21 - (s21.e3) e3
 !> normalised, e2 = e3 x e1 (sIJ = x_I - x_J); a triangle repeats N3 (the degenerate quad).
-!> Stresses live in this frame, so a rigid rotation leaves them unchanged (no Jaumann term).
+!> Stresses live in this frame, so a rigid rotation leaves them unchanged; the in-plane spin
+!> of the material relative to the frame (which follows side 1-2) turns them exactly (the
+!> Jaumann rate written in the rotating frame, so the stress does not depend on which side
+!> is N1-N2; Belytschko, Liu & Moran 2000, sec. 5.4 and 9.5).
 !> Velocity strains at the one point, local axes, B1_I = dN_I/dx, B2_I = dN_I/dy
 !> (B1 = [y24, y31, y42, y13]/2A, B2 = [x42, x13, x24, x31]/2A), z through the thickness:
 !>   d_xx = B1.vx + z B1.wy,  d_yy = B2.vy - z B2.wx,
@@ -13,7 +16,8 @@
 !>   2d_xz = B1.vz + (sum wy)/4,  2d_yz = B2.vz - (sum wx)/4 (the shear resultants times
 !>   SHRF, the transverse shear factor).
 !> They are taken at the mid-step geometry x(n) - dt/2 v(n-1/2), so a rigid rotation gives
-!> exactly zero strain; the forces use the frame and B of x(n) (as dx_hex8 does). Each lamina
+!> exactly zero strain; the forces use B of x(n) (as dx_hex8 does) projected on the same
+!> mid-step frame, so stresses and forces share one frame (the patch test). Each lamina
 !> calls the material's plane-stress update (material_t%update_plane_stress, sigma33 = 0;
 !> engineering shear increments); resultants N, M, Q by Gauss (default) or Lobatto
 !> (*CONTROL_SHELL INTGRD = 1) points on [-t/2, t/2]; nodal forces and moments are the
@@ -39,10 +43,10 @@ module dx_shell_bt
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_material, only: material_t
    use dx_element_types, only: elem_block_t, part_t, ES_THK, block_result_t, &
-                               ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL
+                               ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, shell_frame
    implicit none
    private
-   public :: shell_bt_block, shell_bt_rotary_inertia, thickness_rule, shell_frame
+   public :: shell_bt_block, shell_bt_rotary_inertia, thickness_rule
 
    integer, parameter :: NEN = 4
    real(wp), parameter :: HG(4) = [1.0_wp, -1.0_wp, 1.0_wp, -1.0_wp]
@@ -105,32 +109,6 @@ contains
       end if
    end subroutine thickness_rule
 
-   !> Co-rotational frame e(3, 3) (columns e1, e2, e3) of a shell with nodes xe(3, 4), the
-   !> local in-plane coordinates xl(2, 4) of its nodes (origin at N1) and its area.
-   pure subroutine shell_frame(xe, e, xl, area)
-      real(wp), intent(in) :: xe(3, 4)
-      real(wp), intent(out) :: e(3, 3), xl(2, 4), area
-      real(wp) :: s31(3), s42(3), s21(3), n(3), r(3), a
-      integer :: k
-      s31 = xe(:, 3) - xe(:, 1); s42 = xe(:, 4) - xe(:, 2); s21 = xe(:, 2) - xe(:, 1)
-      n = [s31(2)*s42(3) - s31(3)*s42(2), s31(3)*s42(1) - s31(1)*s42(3), &
-           s31(1)*s42(2) - s31(2)*s42(1)]
-      a = norm2(n)
-      if (a > 0.0_wp) n = n/a
-      e(:, 3) = n
-      r = s21 - dot_product(s21, n)*n
-      a = norm2(r)
-      if (a > 0.0_wp) r = r/a
-      e(:, 1) = r
-      e(:, 2) = [n(2)*r(3) - n(3)*r(2), n(3)*r(1) - n(1)*r(3), n(1)*r(2) - n(2)*r(1)]
-      do k = 1, NEN
-         xl(1, k) = dot_product(e(:, 1), xe(:, k) - xe(:, 1))
-         xl(2, k) = dot_product(e(:, 2), xe(:, k) - xe(:, 1))
-      end do
-      area = 0.5_wp*((xl(1, 3) - xl(1, 1))*(xl(2, 4) - xl(2, 2)) - &
-                     (xl(1, 4) - xl(1, 2))*(xl(2, 3) - xl(2, 1)))
-   end subroutine shell_frame
-
    !> B1 = dN/dx, B2 = dN/dy at the centre from local coordinates xl(2, 4) and the area.
    pure subroutine shell_b(xl, area, b1, b2)
       real(wp), intent(in) :: xl(2, 4), area
@@ -178,6 +156,8 @@ contains
       type(block_result_t), intent(out) :: res
       integer, parameter :: MAXIP = 5
       real(wp) :: dm(nv_chunk, 3), kap(nv_chunk, 3), gam(nv_chunk, 2), thk(nv_chunk)
+      real(wp) :: rc(nv_chunk), rs(nv_chunk), rc2(nv_chunk), rs2(nv_chunk)
+      real(wp) :: ea(3, 3), xla(2, 4), aa, psi
       real(wp) :: rold(nv_chunk, 8), rnew(nv_chunk, 8)
       real(wp) :: de5(blk%nel, 5), s5(blk%nel, 5)
       real(wp) :: zeta(MAXIP), wt(MAXIP)
@@ -224,11 +204,23 @@ contains
          kap(i, 3) = dot_product(b2, wl(2, :)) - dot_product(b1, wl(1, :))
          gam(i, 1) = dot_product(b2, vl(3, :)) - 0.25_wp*sum(wl(1, :))   ! yz
          gam(i, 2) = dot_product(b1, vl(3, :)) + 0.25_wp*sum(wl(2, :))   ! zx
+         ! the stresses are held in the frame of x(n-1) (the last pass's x(n)); they turn
+         ! with the material's in-plane spin, half a step to the mid-step frame here and half
+         ! a step to the frame of x(n) after the update, each less the frame's own rotation
+         ! (exact angle between the frames: the Jaumann rate in the rotating frame)
+         psi = 0.25_wp*dt_old*(dot_product(b1, vl(2, :)) - dot_product(b2, vl(1, :)))
+         call shell_frame(xm - hdt*ve, ea, xla, aa)
+         z = psi - atan2(-dot_product(ea(:, 1), e(:, 2)), dot_product(ea(:, 1), e(:, 1)))
+         rc(i) = cos(z); rs(i) = sin(z)
+         call shell_frame(xm + hdt*ve, ea, xla, aa)
+         z = psi - atan2(-dot_product(e(:, 1), ea(:, 2)), dot_product(e(:, 1), ea(:, 1)))
+         rc2(i) = cos(z); rs2(i) = sin(z)
       end do
       ! ---- laminae: plane-stress update, resultants before (rold) and after (rnew)
       ! r(:, 1:3) N xx, yy, xy; 4:6 M xx, yy, xy; 7:8 Q yz, zx (per unit length)
       rold(1:n, :) = 0.0_wp; rnew(1:n, :) = 0.0_wp
       do ip = 1, nip
+         call turn_stress(n, rc, rs, blk%sig(:, :, ip))
          do i = 1, n
             z = 0.5_wp*zeta(ip)*thk(i)
             de5(i, 1) = dt_old*(dm(i, 1) + z*kap(i, 1))
@@ -253,6 +245,7 @@ contains
             blk%sig(i, 6, ip) = s5(i, 5)
             call add_resultants(rnew(i, :), s5(i, :), tw, z)
          end do
+         call turn_stress(n, rc2, rs2, blk%sig(:, :, ip))
       end do
       ! the transverse shear resultants carry the shear factor SHRF
       rold(1:n, 7:8) = shrf*rold(1:n, 7:8)
@@ -262,9 +255,18 @@ contains
          do k = 1, NEN
             nn = blk%conn(k, i)
             xe(:, k) = x(:, nn); ve(:, k) = v(:, nn); we(:, k) = w(:, nn)
+            xm(:, k) = xe(:, k) - hdt*ve(:, k)
          end do
+         ! the frame of the stresses (the mid-step one); the geometry of x(n) in it
+         call shell_frame(xm, e, xl, am)
+         do k = 1, NEN
+            xl(1, k) = dot_product(e(:, 1), xe(:, k) - xe(:, 1))
+            xl(2, k) = dot_product(e(:, 2), xe(:, k) - xe(:, 1))
+         end do
+         area = 0.5_wp*((xl(1, 3) - xl(1, 1))*(xl(2, 4) - xl(2, 2)) - &
+                        (xl(1, 4) - xl(1, 2))*(xl(2, 3) - xl(2, 1)))
          ! work of the stress resultants over the step (trapezoid in the resultants)
-         de = dt_old*am_of(i)*( &
+         de = dt_old*am*( &
               0.5_wp*(rold(i, 1) + rnew(i, 1))*dm(i, 1) + 0.5_wp*(rold(i, 2) + rnew(i, 2))*dm(i, 2) &
             + 0.5_wp*(rold(i, 3) + rnew(i, 3))*dm(i, 3) + 0.5_wp*(rold(i, 4) + rnew(i, 4))*kap(i, 1) &
             + 0.5_wp*(rold(i, 5) + rnew(i, 5))*kap(i, 2) + 0.5_wp*(rold(i, 6) + rnew(i, 6))*kap(i, 3) &
@@ -272,7 +274,6 @@ contains
          if (blk%failed(i)) de = 0.0_wp
          blk%eint(i) = blk%eint(i) + de
          res%deint = res%deint + de
-         call shell_frame(xe, e, xl, area)
          if (.not. (area > 0.0_wp)) then
             ierr(i) = ELEM_ERR_NEGVOL
             area = 1.0_wp
@@ -356,18 +357,25 @@ contains
             exit
          end if
       end do
-   contains
-      !> mid-step area of element i (recomputed: the first loop keeps no per-element copy)
-      real(wp) function am_of(i)
-         integer, intent(in) :: i
-         real(wp) :: xq(3, 4), eq(3, 3), xlq(2, 4)
-         integer :: kk
-         do kk = 1, NEN
-            xq(:, kk) = x(:, blk%conn(kk, i)) - hdt*v(:, blk%conn(kk, i))
-         end do
-         call shell_frame(xq, eq, xlq, am_of)
-      end function am_of
    end subroutine shell_bt_block
+
+   !> sigma <- R sigma R^T in the plane, (tau_zx, tau_yz) <- R tau, R the rotation by the
+   !> angle of cosine c and sine s, for the n first elements of sig(:, 6) (xx yy zz xy yz zx)
+   pure subroutine turn_stress(n, c, s, sig)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: c(:), s(:)
+      real(wp), intent(inout) :: sig(:, :)
+      real(wp) :: sxx, syy, sxy, syz, sxz
+      integer :: i
+      do i = 1, n
+         sxx = sig(i, 1); syy = sig(i, 2); sxy = sig(i, 4); syz = sig(i, 5); sxz = sig(i, 6)
+         sig(i, 1) = c(i)**2*sxx - 2.0_wp*c(i)*s(i)*sxy + s(i)**2*syy
+         sig(i, 2) = s(i)**2*sxx + 2.0_wp*c(i)*s(i)*sxy + c(i)**2*syy
+         sig(i, 4) = c(i)*s(i)*(sxx - syy) + (c(i)**2 - s(i)**2)*sxy
+         sig(i, 6) = c(i)*sxz - s(i)*syz
+         sig(i, 5) = s(i)*sxz + c(i)*syz
+      end do
+   end subroutine turn_stress
 
    !> r += the resultants of one lamina (stresses s: xx, yy, xy, yz, zx) at z with weight tw
    pure subroutine add_resultants(r, s, tw, z)
