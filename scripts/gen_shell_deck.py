@@ -170,11 +170,11 @@ def rotation():
     xc = (20.0, 10.0, 0.0)
     s = head('Free plate in rigid rotation (BT shells)', 20.0, 10.0, 0.5, [1, 15])
     s += node_cards(nodes) + elem_cards(elems)
-    s += ['*INITIAL_VELOCITY_NODE']
+    s += ['*INITIAL_VELOCITY_NODE +']
     for n, x, y, z in nodes:
         r = (x - xc[0], y - xc[1], z - xc[2])
         v = (om[1]*r[2] - om[2]*r[1], om[2]*r[0] - om[0]*r[2], om[0]*r[1] - om[1]*r[0])
-        s.append(f'{n:10d}' + ''.join(f'{c:10.6f}' for c in v))
+        s.append(f'{n:20d}' + ''.join(f'{c:20.13e}' for c in v + om))
     s.append('*END')
     return s
 

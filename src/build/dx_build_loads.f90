@@ -126,7 +126,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: i, k, j, ip
       integer, allocatable :: nodes(:), ex(:)
-      logical, allocatable :: excl(:), pmask(:), nmask(:)
+      logical, allocatable :: excl(:), pmask(:), nmask(:), rot(:)
       real(wp) :: r(3)
       allocate(model%v0(3, model%nn), excl(model%nn), pmask(size(model%parts)), &
                nmask(model%nn))
@@ -197,6 +197,18 @@ contains
             k = node_index(inp, mp, q%id, q%src, 'NID', error)
             if (allocated(error)) return
             model%v0(:, k) = q%v
+            if (all(q%vr == 0.0_wp)) cycle
+            if (.not. allocated(rot)) call rotation_nodes(model, rot)
+            if (.not. rot(k)) then
+               call set_error(error, at(inp, q%src)//'field VXR: node '//str(q%id)// &
+                  ' carries no rotation (not a shell node): VXR, VYR, VZR must be 0')
+               return
+            end if
+            if (.not. allocated(model%w0)) then
+               allocate(model%w0(3, model%nn))
+               model%w0 = 0.0_wp
+            end if
+            model%w0(:, k) = q%vr
          end associate
       end do
    end subroutine build_initial_velocity

@@ -163,18 +163,27 @@ contains
    end subroutine read_motion
 
    !> translational velocity fields k0..k0+2 of card ic, rotational fields k0+3..k0+5 zero
-   subroutine velocity(deck, blk, ic, k0, w, names, v, error)
+   subroutine velocity(deck, blk, ic, k0, w, names, v, error, vr)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
       integer, intent(in) :: ic, k0, w(:)
       character(*), intent(in) :: names(6)
       real(wp), intent(out) :: v(3)
       type(error_t), allocatable, intent(out) :: error
+      real(wp), intent(out), optional :: vr(3)   !< the rotational fields (shell nodes)
       integer :: k
       do k = 1, 3
          call get_real(deck, blk, ic, k0 + k - 1, w, trim(names(k)), 0.0_wp, v(k), error)
          if (allocated(error)) return
       end do
+      if (present(vr)) then
+         do k = 1, 3
+            call get_real(deck, blk, ic, k0 + k + 2, w, trim(names(k + 3)), 0.0_wp, vr(k), &
+                          error)
+            if (allocated(error)) return
+         end do
+         return
+      end if
       do k = 4, 6
          call zero_real(deck, blk, ic, k0 + k - 1, w, trim(names(k)), 'solid elements '// &
                         'have no rotational degrees of freedom', error)
@@ -246,7 +255,7 @@ contains
          call positive_id(deck, blk, ic, 1, w, 'NID', r%id, error)
          if (allocated(error)) return
          call velocity(deck, blk, ic, 2, w, ['VX ', 'VY ', 'VZ ', 'VXR', 'VYR', 'VZR'], r%v, &
-                       error)
+                       error, r%vr)
          if (allocated(error)) return
          call zero_int(deck, blk, ic, 8, w, 'ICID', 'local coordinate systems', error)
          if (allocated(error)) return

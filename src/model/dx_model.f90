@@ -195,6 +195,9 @@ module dx_model
       integer, allocatable :: node_label(:)
       real(wp), allocatable :: x0(:, :)        !< (3, nn) initial coordinates
       real(wp), allocatable :: v0(:, :)        !< (3, nn) initial velocity
+      !> (3, nn) initial angular velocity (*INITIAL_VELOCITY_NODE VXR VYR VZR on shell
+      !> nodes; allocated only when one is given)
+      real(wp), allocatable :: w0(:, :)
       ! --- elements
       integer :: ne = 0
       integer, allocatable :: elem_label(:)    !< (ne) element ids

@@ -93,6 +93,7 @@ module dx_model_input
       integer :: nsidex = 0            !< *INITIAL_VELOCITY: excluded node set
       integer :: styp = 0              !< GENERATION: 1 part set, 2 part, 3 node set
       real(wp) :: v(3) = 0.0_wp        !< translational velocity
+      real(wp) :: vr(3) = 0.0_wp       !< angular velocity VXR VYR VZR (_NODE; shell nodes)
       real(wp) :: vex(3) = 0.0_wp      !< velocity of the excluded nodes (NSIDEX)
       real(wp) :: omega = 0.0_wp
       real(wp) :: xc(3) = 0.0_wp, axis(3) = 0.0_wp

@@ -87,6 +87,7 @@ contains
       if (rot) then
          allocate(model%w(3, model%nn), model%mom(3, model%nn), model%rinert(model%nn))
          model%w = 0.0_wp
+         if (allocated(model%w0)) model%w = model%w0
          model%mom = 0.0_wp
          model%rinert = 0.0_wp
          do b = 1, size(model%blocks)
@@ -131,6 +132,8 @@ contains
          model%run = run_state_t()
          model%run%started = .true.
          model%energy%initial = initial_kinetic(model%mass, model%v)
+         if (allocated(model%w)) model%energy%initial = model%energy%initial + &
+            0.5_wp*sum(model%rinert*sum(model%w**2, dim=1))
          call dom%initial_energy(model)
          if (allocated(model%rigid)) model%energy%initial = model%energy%initial + &
                                                            model%rigid%ke0_corr
