@@ -163,6 +163,7 @@ studies: deps
 	@sh scripts/studies_contact.sh
 	@/usr/bin/python3 scripts/studies_emc.py
 	@sh scripts/studies_scenes.sh
+	@sh scripts/studies_lamina.sh
 
 # each deck of tests/public/index.tsv: --check, a --walltime-capped run, a physics check
 public-decks: all

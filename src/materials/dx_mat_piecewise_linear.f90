@@ -11,12 +11,17 @@
 !> FAIL: effective plastic strain at which the element erodes. History: 1 = eff. plastic strain,
 !> 2 = static yield stress h(eps_p) at that strain (a cache: 0 = not yet evaluated), so an
 !> elastic step costs no curve lookup and no square root.
+!> Laminae (update_plane_stress, sigma33 = 0): dx_plane_stress by the algorithm ps_alg with the
+!> yield radius R*h(eps_p) (the curve itself, or its bilinear form), isotropic hardening; R from
+!> the lamina strain rate ps_rate. VP = 1 with C, P > 0 has no plane-stress form yet
+!> (MAT_ERR_NO_PLANE_STRESS).
 module dx_mat_piecewise_linear
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, set_field_error
    use dx_strings, only: rstr, str
    use dx_card, only: card_t
-   use dx_material, only: material_t, read_mid_ro
+   use dx_material, only: material_t, read_mid_ro, MAT_ERR_NO_PLANE_STRESS, MAT_ERR_PS_ALG
+   use dx_plane_stress, only: ps_update, ps_rate, ps_alg_valid
    use dx_mat_elastic, only: check_elastic_constants
    use dx_curve, only: curve_t
    implicit none
@@ -44,6 +49,7 @@ module dx_mat_piecewise_linear
       procedure :: fails => pl_fails
       procedure :: resolve_curves => pl_resolve
       procedure :: yield_static            !< h(eps_p)
+      procedure :: update_plane_stress => pl_update_plane_stress
    end type mat_piecewise_linear_t
 
 contains
@@ -347,6 +353,62 @@ contains
       end do
       dep = -1.0_wp
    end function return_map
+
+   !> Lamina update (sigma33 = 0) of nv points: see the module header and dx_plane_stress.
+   subroutine pl_update_plane_stress(self, nv, dt, deps, sig, hv, ierr, dezz)
+      class(mat_piecewise_linear_t), intent(in) :: self
+      integer, intent(in) :: nv
+      real(wp), intent(in) :: dt
+      real(wp), intent(in) :: deps(nv, 5)
+      real(wp), intent(inout) :: sig(nv, 5)
+      real(wp), intent(inout) :: hv(:, :)
+      integer, intent(inout) :: ierr(nv)
+      real(wp), intent(out), optional :: dezz(nv)
+      real(wp) :: alpha(nv, 3), epsp(nv), y0(nv), hi(nv), dep(nv), r(nv), h, dh, rate
+      logical :: tab
+      integer :: i
+      if (self%vp == 1.0_wp .and. self%c > 0.0_wp) then
+         ierr = MAT_ERR_NO_PLANE_STRESS
+         return
+      end if
+      if (.not. ps_alg_valid(self%ps_alg)) then
+         ierr = MAT_ERR_PS_ALG
+         return
+      end if
+      ! the tabulated curve itself (two points or more), else the linear radius
+      tab = .not. self%bilinear
+      if (tab) tab = size(self%hard%x) >= 2
+      do i = 1, nv
+         r(i) = 1.0_wp
+         if ((self%c > 0.0_wp .or. self%has_rate_curve) .and. dt > 0.0_wp) then
+            rate = ps_rate(dt, deps(i, :))
+            if (self%has_rate_curve) then
+               r(i) = self%rate_curve%eval(rate)
+            else
+               r(i) = 1.0_wp + (rate/self%c)**(1.0_wp/self%p)
+            end if
+         end if
+         call self%yield_static(hv(i, 1), h, dh)
+         y0(i) = r(i)*h
+         hi(i) = r(i)*max(dh, 0.0_wp)
+         epsp(i) = hv(i, 1)
+      end do
+      alpha = 0.0_wp
+      if (tab) then
+         call ps_update(self%ps_alg, nv, self%e, self%pr, self%shear, deps, sig, alpha, epsp, y0, &
+                        hi, 0.0_wp, dep, ierr, crv=self%hard, r=r, dezz=dezz)
+      else
+         call ps_update(self%ps_alg, nv, self%e, self%pr, self%shear, deps, sig, alpha, epsp, y0, &
+                        hi, 0.0_wp, dep, ierr, dezz=dezz)
+      end if
+      do i = 1, nv
+         if (dep(i) > 0.0_wp) then
+            hv(i, 1) = epsp(i)
+            call self%yield_static(epsp(i), h, dh)
+            hv(i, 2) = h
+         end if
+      end do
+   end subroutine pl_update_plane_stress
 
    subroutine pl_fails(self, nv, hv, failed)
       class(mat_piecewise_linear_t), intent(in) :: self

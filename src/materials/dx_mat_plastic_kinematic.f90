@@ -6,12 +6,16 @@
 !> Cowper-Symonds factor R = 1 + (rate/C)**(1/P), rate = sqrt(2/3 e':e') the effective
 !> deviatoric strain rate of the step (U: LS-DYNA's exact rate measure not confirmed).
 !> History: 1 = effective plastic strain, 2..7 = back stress (Voigt).
+!> Laminae (update_plane_stress, sigma33 = 0): dx_plane_stress by the algorithm ps_alg, yield
+!> radius R*(SIGY + BETA*Ep*eps_p), Ziegler back stress (1 - BETA)*Ep in history 2, 3, 5 (xx, yy,
+!> xy; zz, yz, zx stay 0), R from the lamina strain rate ps_rate.
 module dx_mat_plastic_kinematic
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, set_field_error
    use dx_strings, only: rstr
    use dx_card, only: card_t
-   use dx_material, only: material_t, read_mid_ro
+   use dx_material, only: material_t, read_mid_ro, MAT_ERR_PS_ALG
+   use dx_plane_stress, only: ps_update, ps_rate, ps_alg_valid
    use dx_mat_elastic, only: check_elastic_constants
    implicit none
    private
@@ -27,6 +31,7 @@ module dx_mat_plastic_kinematic
       procedure :: nhist => pk_nhist
       procedure :: update => pk_update
       procedure :: fails => pk_fails
+      procedure :: update_plane_stress => pk_update_plane_stress
    end type mat_plastic_kinematic_t
 
 contains
@@ -131,6 +136,42 @@ contains
          sig(i, 4:6) = s(4:6)
       end do
    end subroutine pk_update
+
+   !> Lamina update (sigma33 = 0) of nv points: see the module header and dx_plane_stress.
+   subroutine pk_update_plane_stress(self, nv, dt, deps, sig, hv, ierr, dezz)
+      class(mat_plastic_kinematic_t), intent(in) :: self
+      integer, intent(in) :: nv
+      real(wp), intent(in) :: dt
+      real(wp), intent(in) :: deps(nv, 5)
+      real(wp), intent(inout) :: sig(nv, 5)
+      real(wp), intent(inout) :: hv(:, :)
+      integer, intent(inout) :: ierr(nv)
+      real(wp), intent(out), optional :: dezz(nv)
+      real(wp) :: alpha(nv, 3), epsp(nv), y0(nv), hi(nv), dep(nv), r
+      integer :: i
+      if (.not. ps_alg_valid(self%ps_alg)) then
+         ierr = MAT_ERR_PS_ALG
+         return
+      end if
+      do i = 1, nv
+         r = 1.0_wp
+         if (self%src > 0.0_wp) r = 1.0_wp + (ps_rate(dt, deps(i, :))/self%src)**(1.0_wp/self%srp)
+         y0(i) = r*(self%sigy + self%beta*self%ep*hv(i, 1))
+         hi(i) = r*self%beta*self%ep
+         epsp(i) = hv(i, 1)
+         alpha(i, 1) = hv(i, 2)
+         alpha(i, 2) = hv(i, 3)
+         alpha(i, 3) = hv(i, 5)
+      end do
+      call ps_update(self%ps_alg, nv, self%e, self%pr, self%shear, deps, sig, alpha, epsp, y0, hi, &
+                     (1.0_wp - self%beta)*self%ep, dep, ierr, dezz=dezz)
+      do i = 1, nv
+         hv(i, 1) = epsp(i)
+         hv(i, 2) = alpha(i, 1)
+         hv(i, 3) = alpha(i, 2)
+         hv(i, 5) = alpha(i, 3)
+      end do
+   end subroutine pk_update_plane_stress
 
    subroutine pk_fails(self, nv, hv, failed)
       class(mat_plastic_kinematic_t), intent(in) :: self

@@ -15,6 +15,9 @@
 !> the default is plane-stress Hooke's law from K and G (transverse shears elastic, any shear
 !> correction factor is the element's). Models with plastic history or an equation of state
 !> that do not override it get ierr = MAT_ERR_NO_PLANE_STRESS (the caller names the type).
+!> ps_alg chooses the plane-stress plasticity algorithm (dx_plane_stress: 1 three secant
+!> iterations, 2 full iteration, 3 radial scaling - *CONTROL_SHELL MITER's LS-DYNA values - and
+!> 4 dynx's one-step analytic return); the shell build sets it, MAT_ERR_PS_ALG flags other values.
 module dx_material
    use dx_kinds, only: wp
    use dx_error, only: error_t
@@ -25,10 +28,12 @@ module dx_material
    implicit none
    private
    public :: material_t, mat_holder_t, read_mid_ro, fd_step
-   public :: MAT_ERR_NO_PLANE_STRESS
+   public :: MAT_ERR_NO_PLANE_STRESS, MAT_ERR_PS_ALG
 
    !> ierr of update_plane_stress for a model that has no plane-stress (lamina) form
    integer, parameter :: MAT_ERR_NO_PLANE_STRESS = 90
+   !> ierr of update_plane_stress for a ps_alg outside 1..4
+   integer, parameter :: MAT_ERR_PS_ALG = 91
 
    type, abstract :: material_t
       integer :: label = 0             !< material id (MID) from the deck
@@ -39,6 +44,7 @@ module dx_material
       real(wp) :: shear = 0.0_wp       !< elastic shear modulus G (set by setup)
       integer :: hv_eps_p = 0          !< history offset of effective plastic strain (0: none)
       logical :: is_rigid = .false.
+      integer :: ps_alg = 1            !< plane-stress algorithm (MITER: 1 secant3, 2 full, 3 radial, 4 one-step)
       class(eos_t), allocatable :: eos !< equation of state from the part's EOSID (hydro models)
    contains
       procedure(setup_i), deferred :: setup          !< check parameters, derive K, G, ...
@@ -166,7 +172,8 @@ contains
    !> The thickness strain of such a point is de_zz = -lambda/(lambda + 2G) (de_xx + de_yy).
    !> A model with plastic history (hv_eps_p > 0) or an equation of state that does not override
    !> this has no plane-stress form: its points get ierr = MAT_ERR_NO_PLANE_STRESS, sig unchanged.
-   subroutine default_update_plane_stress(self, nv, dt, deps, sig, hv, ierr)
+   !> dezz (optional): the thickness strain increment of each point.
+   subroutine default_update_plane_stress(self, nv, dt, deps, sig, hv, ierr, dezz)
       class(material_t), intent(in) :: self
       integer, intent(in) :: nv
       real(wp), intent(in) :: dt
@@ -174,6 +181,7 @@ contains
       real(wp), intent(inout) :: sig(nv, 5)
       real(wp), intent(inout) :: hv(:, :)
       integer, intent(inout) :: ierr(nv)
+      real(wp), intent(out), optional :: dezz(nv)
       real(wp) :: g, lam, lb, tr
       integer :: i
       if (self%hv_eps_p > 0 .or. self%takes_eos() .or. self%is_rigid) then
@@ -191,6 +199,7 @@ contains
          sig(i, 4) = sig(i, 4) + g*deps(i, 4)
          sig(i, 5) = sig(i, 5) + g*deps(i, 5)
       end do
+      if (present(dezz)) dezz = -lam/(lam + 2.0_wp*g)*(deps(:, 1) + deps(:, 2))
       if (.false.) sig(1, 1) = sig(1, 1) + dt*hv(1, 1)   ! dt, hv unused by the elastic default
    end subroutine default_update_plane_stress
 
