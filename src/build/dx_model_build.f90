@@ -228,7 +228,7 @@ contains
    !> shells do not have yet (rigid shells, ISDO, TSLIMT, the Lobatto range).
    subroutine shell_part(inp, model, p, w, error)
       type(model_input_t), intent(in) :: inp
-      type(model_t), intent(in) :: model
+      type(model_t), intent(inout) :: model
       type(part_t), intent(inout) :: p
       character(*), intent(in) :: w
       type(error_t), allocatable, intent(out) :: error
@@ -237,6 +237,8 @@ contains
          p%shrf = sec%shrf
          p%lobatto = c%intgrd == 1
          p%istupd = c%istupd
+         ! the plane-stress plasticity algorithm of the laminae (*CONTROL_SHELL MITER)
+         model%mats(p%imat)%m%ps_alg = c%miter
          if (p%lobatto .and. (sec%nip < 3 .or. sec%nip > 5)) then
             call set_error(error, at(inp, inp%section_src(p%isec))//'section '// &
                str(sec%label)//': field NIP: '//str(sec%nip)//' Lobatto points (*CONTROL_SHELL '// &

@@ -239,8 +239,9 @@ contains
             'stiffness (BWC = 1) is not implemented (supported: 2, Belytschko-Tsay)')
          call c%int('MITER', 1, t%miter)
          if (t%miter == 0) t%miter = 1
-         if (c%ok() .and. (t%miter < 1 .or. t%miter > 3)) call c%fail('MITER', &
-            'must be 1, 2 or 3, got '//str(t%miter))
+         if (c%ok() .and. (t%miter < 1 .or. t%miter > 4)) call c%fail('MITER', &
+            'must be 1 (3 secant iterations), 2 (full iteration), 3 (radial scaling) or 4 '// &
+            '(dynx: one-step analytic return), got '//str(t%miter))
          call c%int('PROJ', 0, proj, min=0, max=1)     ! warping projection: BWC = 1 only
          call c%next()
          call c%real('ROTASCL', 1.0_wp, t%rotascl)

@@ -30,8 +30,9 @@
 !> (the w mode bends the plate) - dynx's scaling of the paper's forms (docs/design.md,
 !> "Shells"). The warping correction (BWC = 1 of *CONTROL_SHELL) is not implemented (the
 !> reader refuses it): LS-DYNA's default BWC = 2 has none either.
-!> Thickness update (*CONTROL_SHELL ISTUPD = 1): dt/t = d_zz dt, d_zz = -lambda/(lambda +
-!> 2G) (d_xx + d_yy) at the mid-surface (elastic plane stress).
+!> Thickness update (*CONTROL_SHELL ISTUPD = 1): dt/t = the mean over the laminae of their
+!> thickness strain increments (the material's dezz: -lambda/(lambda + 2G) (de_xx + de_yy)
+!> when elastic, plastic incompressibility when yielding).
 !> Stable step (LS-DYNA Theory Manual, "Time Step Control", shells, ISDO = 0):
 !> dt = L/c, L = (1 + beta) A / max(L1, L2, L3, (1 - beta) L4), beta = 0 for the
 !> quadrilateral and 1 for the triangle, c = sqrt(E/(rho (1 - nu**2))).
@@ -164,7 +165,7 @@ contains
       real(wp) :: xe(3, 4), xm(3, 4), ve(3, 4), we(3, 4), vl(3, 4), wl(3, 4), e(3, 3)
       real(wp) :: xl(2, 4), b1(4), b2(4), area, am, gm(4), bb, fl(3, 4), ml(2, 4), hq(5)
       real(wp) :: qd(5), qold(5), r(5), cv, ym, nu, lam, g, cs, hdt, z, tw, lmax, de, dh
-      real(wp) :: rhs, dzz
+      real(wp) :: rhs, dzz, ez(blk%nel), dzt(nv_chunk)
       integer :: ierr(nv_chunk)
       integer :: i, k, n, nn, ip, c0, nip
       logical :: ok, tri
@@ -219,6 +220,7 @@ contains
       ! ---- laminae: plane-stress update, resultants before (rold) and after (rnew)
       ! r(:, 1:3) N xx, yy, xy; 4:6 M xx, yy, xy; 7:8 Q yz, zx (per unit length)
       rold(1:n, :) = 0.0_wp; rnew(1:n, :) = 0.0_wp
+      dzt(1:n) = 0.0_wp
       do ip = 1, nip
          call turn_stress(n, rc, rs, blk%sig(:, :, ip))
          do i = 1, n
@@ -234,8 +236,9 @@ contains
             tw = 0.5_wp*wt(ip)*thk(i)
             call add_resultants(rold(i, :), s5(i, :), tw, z)
          end do
-         call mat%update_plane_stress(n, dt_old, de5, s5, blk%hv(:, :, ip), ierr)
+         call mat%update_plane_stress(n, dt_old, de5, s5, blk%hv(:, :, ip), ierr, ez)
          do i = 1, n
+            dzt(i) = dzt(i) + 0.5_wp*wt(ip)*ez(i)     ! mean thickness strain increment
             z = 0.5_wp*zeta(ip)*thk(i)
             tw = 0.5_wp*wt(ip)*thk(i)
             if (blk%failed(i)) s5(i, :) = 0.0_wp
@@ -330,8 +333,8 @@ contains
          end do
          ! thickness update (ISTUPD = 1) and the relative volume
          if (istupd == 1) then
-            dzz = -lam/(lam + 2.0_wp*g)*(dm(i, 1) + dm(i, 2))
-            blk%es(i, c0) = thk(i)*(1.0_wp + dt_old*dzz)
+            dzz = dzt(i)
+            blk%es(i, c0) = thk(i)*(1.0_wp + dzz)
          end if
          blk%relvol(i) = area*blk%es(i, c0)/blk%vol0(i)
          ! stable step: L = (1 + beta) A / max(L1, L2, L3, (1 - beta) L4)

@@ -129,5 +129,13 @@ contains
       call check(abs(f(3, 2)) <= 1.0e-8_wp*nxx, 'one element: no transverse shear force')
       call check_close(res%dt, 1.0_wp/sqrt(ey/(mat%ro*(1.0_wp - pr**2))), 0.0_wp, 1.0e-8_wp, &
                        'one element: stable step A/max(L)/c, c = sqrt(E/(rho(1-nu^2)))')
+      ! ISTUPD = 1: the thickness follows the laminae's thickness strain, -nu/(1-nu) e_xx
+      ! for plane stress (the curvature's thickness strains cancel over the symmetric rule)
+      blk%sig = 0.0_wp
+      blk%es(1, blk%esc(ES_THK)) = t
+      f = 0.0_wp; mom = 0.0_wp
+      call shell_bt_block(blk, mat, part, 1.0_wp, .false., 1, x, v, w, dt, f, mom, res)
+      call check_close(blk%es(1, blk%esc(ES_THK)), t*(1.0_wp - pr/(1.0_wp - pr)*erate*dt), &
+                       0.0_wp, 1.0e-15_wp, 'ISTUPD = 1: t (1 - nu/(1-nu) e_xx)')
    end subroutine one_element_resultants
 end program test_shell
