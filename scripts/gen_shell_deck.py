@@ -8,7 +8,8 @@ shells, nx by ny elements, length L along x, width B along y, thickness T.
   gen_shell_deck.py patch|patch_tri [OUT]    membrane patch test (MacNeal-Harder 1985), its
       plane rotated out of x-y; the four corners driven with the velocity of a uniform
       velocity gradient, the four inner nodes free (patch_tri: the inner quadrilateral cut
-      into two triangles N4 = N3)
+      into two triangles N4 = N3; patch_plastic: *MAT_PLASTIC_KINEMATIC (SIGY 0.25, ETAN 0)
+      stretched to 5 % with *CONTROL_SHELL ISTUPD = 1)
   gen_shell_deck.py rotation [OUT]           a free plate spinning as a rigid body about an
       in-plane axis (initial velocity omega x r): no strain, internal energy 0
 """
@@ -111,10 +112,11 @@ def mat_vec(a, v):
 PATCH_NODES = [(0, 0), (24, 0), (24, 12), (0, 12), (4, 2), (18, 3), (16, 8), (8, 8)]
 PATCH_QUADS = [(1, 2, 6, 5), (2, 3, 7, 6), (3, 4, 8, 7), (4, 1, 5, 8)]
 PATCH_GRAD = [[1.0e-3, 6.0e-4], [2.0e-4, -5.0e-4]]   # in-plane velocity gradient, 1/ms
+PATCH_GRAD_PLASTIC = [[5.0e-2, 1.0e-2], [0.0, -1.0e-2]]   # to 5 % strain: yielding
 PATCH_AXIS, PATCH_DEG = (1.0, 2.0, 3.0), 35.0
 
 
-def patch(tri):
+def patch(tri, plastic=False):
     r = rotation_matrix(PATCH_AXIS, PATCH_DEG)
     lg = [[PATCH_GRAD[i][j] if i < 2 and j < 2 else 0.0 for j in range(3)] for i in range(3)]
     # v = R Lg R^T x (x: rotated coordinates)
@@ -134,8 +136,19 @@ def patch(tri):
         quads += [(5, 6, 7, 8)]
     elems = [(k + 1,) + q for k, q in enumerate(quads)]
     kind = 'triangles' if tri else 'quadrilaterals'
+    grad = PATCH_GRAD_PLASTIC if plastic else PATCH_GRAD
+    lg = [[grad[i][j] if i < 2 and j < 2 else 0.0 for j in range(3)] for i in range(3)]
+    l3 = [[sum(r[i][a]*lg[a][b]*rt[b][j] for a in range(3) for b in range(3))
+           for j in range(3)] for i in range(3)]
     s = head(f'Membrane patch test (MacNeal-Harder, rotated; inner {kind})', 1.0, 0.5, 0.05,
              [5, 6, 7, 8], pr=0.3)
+    if plastic:      # *MAT_PLASTIC_KINEMATIC, perfectly plastic, ISTUPD = 1
+        k = s.index('*MAT_ELASTIC')
+        s[k:k + 3] = ['*MAT_PLASTIC_KINEMATIC',
+                      '$      MID        RO         E        PR      SIGY      ETAN      BETA',
+                      f'         1{RHO:10.3e}{E:10.1f}     0.300      0.25       0.0       0.0',
+                      '*CONTROL_SHELL', '$   WRPANG     ESORT     IRNXX    ISTUPD',
+                      '        20         0        -1         1']
     s += ['*NODE +'] + [f'{n:20d}{x:20.13e}{y:20.13e}{z:20.13e}' for n, x, y, z in nodes]
     s += elem_cards(elems)
     s += ['*DEFINE_CURVE', '         1', f'{0.0:20.4f}{1.0:20.4f}', f'{100.0:20.4f}{1.0:20.4f}']
@@ -184,8 +197,8 @@ def main():
     if kind == 'cantilever':
         lines = cantilever(int(sys.argv[2]), int(sys.argv[3]))
         out = sys.argv[4] if len(sys.argv) > 4 else None
-    elif kind in ('patch', 'patch_tri'):
-        lines = patch(kind == 'patch_tri')
+    elif kind in ('patch', 'patch_tri', 'patch_plastic'):
+        lines = patch(kind == 'patch_tri', kind == 'patch_plastic')
         out = sys.argv[2] if len(sys.argv) > 2 else None
     elif kind == 'rotation':
         lines = rotation()

@@ -12,12 +12,15 @@
       (*INITIAL_VELOCITY_NODE +) to TOL_V relative; the elements' global stresses of the
       last plot state agree with each other to TOL_S relative (round-off), and with the
       small-strain plane-stress Hooke law of the mean strain to TOL_A relative (the strain's
-      own size: the finite-deformation terms).
+      own size: the finite-deformation terms; TOL_A < 0: no such comparison).
   shell_check.py rotation OUT TOL
       rigid rotation: internal + hourglass energy over the initial kinetic energy <= TOL
       at every glstat line.
   shell_check.py energy OUT TOL
       |energy ratio - 1| <= TOL at every glstat line.
+  shell_check.py yield OUT SIGY TOL
+      every element's von Mises stress in the last plot state equals SIGY within TOL
+      relative (a perfectly plastic membrane state).
 """
 import math
 import subprocess
@@ -132,6 +135,8 @@ def patch(argv):
     spread = max(abs(sig[i][k] - sig[0][k]) for i in range(ne) for k in range(6))/smax
     print(f'{ne} elements: global stresses agree to {spread:.3e} of the largest (tol {tol_s:.1e})')
     ok = ok and spread <= tol_s
+    if tol_a < 0.0:          # not elastic: no Hooke comparison
+        return ok
     # small strain: the mean displacement gradient from the free nodes' displacements
     # (u = t G x0 exactly for a uniform velocity gradient G: x0 = x - u)
     d = nodout(out)
@@ -215,9 +220,19 @@ def energy(argv):
     return worst <= tol
 
 
+def yield_check(argv):
+    out, sigy, tol = argv[0], float(argv[1]), float(argv[2])
+    h5 = out + '/d3plot.h5'
+    vm = h5_dataset(h5, f'/states/{h5_last_state(h5)}/von_mises')
+    worst = max(abs(v - sigy) for v in vm)/sigy
+    print(f'von Mises against SIGY {sigy}: largest relative difference {worst:.3e} (tol {tol:.1e})')
+    return worst <= tol
+
+
 def main():
     kind, argv = sys.argv[1], sys.argv[2:]
-    ok = {'period': period, 'patch': patch, 'rotation': rotation, 'energy': energy}[kind](argv)
+    ok = {'period': period, 'patch': patch, 'rotation': rotation, 'energy': energy,
+          'yield': yield_check}[kind](argv)
     if not ok:
         print('FAILED')
         sys.exit(1)
