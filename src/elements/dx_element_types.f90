@@ -335,6 +335,8 @@ contains
       select case (etype)
       case (ETYPE_TET4)
          vol = tet_volume(xe)
+      case (ETYPE_SHELL_BT)      ! the mid-surface area: the caller multiplies by the thickness
+         vol = shell_area(xe)
       case default
          vol = hex_volume(xe)
       end select
@@ -349,6 +351,8 @@ contains
       select case (etype)
       case (ETYPE_TET4)
          call tet_moments(xe, xref, vol, m1, m2)
+      case (ETYPE_SHELL_BT)      ! rigid shells are refused at build: no moments yet
+         vol = 0.0_wp; m1 = 0.0_wp; m2 = 0.0_wp
       case default
          call hex_moments(xe, xref, vol, m1, m2)
       end select
@@ -366,6 +370,15 @@ contains
       real(wp) :: amax, a(3)
       integer :: k
       f = element_family(etype)
+      if (etype == ETYPE_SHELL_BT) then    ! the shell's length (dx_shell_bt, ISDO = 0)
+         amax = 0.0_wp
+         do k = 1, f%nedges
+            amax = max(amax, norm2(xe(:, f%edges(2, k)) - xe(:, f%edges(1, k))))
+         end do
+         l = shell_area(xe)/amax
+         if (all(xe(:, 3) == xe(:, 4))) l = 2.0_wp*l
+         return
+      end if
       amax = 0.0_wp
       do k = 1, f%nfaces
          a = 0.5_wp*cross(xe(:, f%faces(3, k)) - xe(:, f%faces(1, k)), &
