@@ -7,7 +7,7 @@ module dx_build_loads
    use dx_vec3, only: cross
    use dx_error, only: error_t, set_error
    use dx_strings, only: str
-   use dx_model, only: model_t, prescribed_t, load_segment_t
+   use dx_model, only: model_t, prescribed_t, load_segment_t, element_family, family_t
    use dx_model_input, only: model_input_t, IVEL_SET, IVEL_NODE, IVEL_GEN
    use dx_build_common, only: maps_t, at, at_line, set_nodes, curve_index, node_index, &
                               dense_segments
@@ -27,6 +27,7 @@ contains
       integer, allocatable :: nodes(:)
       integer :: i, k, n, c
       type(prescribed_t), allocatable :: pr(:)
+      logical, allocatable :: rot(:)
       logical, parameter :: code(3, 0:7) = reshape([.false., .false., .false., &
          .true., .false., .false., .false., .true., .false., .false., .false., .true., &
          .true., .true., .false., .false., .true., .true., .true., .false., .true., &
@@ -73,6 +74,17 @@ contains
                nodes = [node_index(inp, mp, m%id, m%src, 'NID', error)]
                if (allocated(error)) return
             end if
+            if (m%dof >= 5) then      ! rotations exist on shell nodes only
+               if (.not. allocated(rot)) call rotation_nodes(model, rot)
+               do k = 1, size(nodes)
+                  if (.not. rot(nodes(k))) then
+                     call set_error(error, at(inp, m%src)//'field DOF: DOF '//str(m%dof)// &
+                        ' (a rotation) on node '//str(model%node_label(nodes(k)))// &
+                        ', which carries no rotation (not a shell node)')
+                     return
+                  end if
+               end do
+            end if
             do k = 1, size(nodes)
                pr = [pr, prescribed_t(node=nodes(k), dof=m%dof, vad=m%vad, curve=c, sf=m%sf, &
                      dir=unit_axis(m%dof), death=m%death, birth=m%birth)]
@@ -81,6 +93,23 @@ contains
       end do
       call move_alloc(pr, model%prescribed)
    end subroutine build_bcs
+
+   !> rot(i): node i belongs to an element of a family with rotations (shells)
+   subroutine rotation_nodes(model, rot)
+      type(model_t), intent(in) :: model
+      logical, allocatable, intent(out) :: rot(:)
+      integer :: b, i
+      type(family_t) :: fam
+      allocate(rot(model%nn))
+      rot = .false.
+      do b = 1, size(model%blocks)
+         fam = element_family(model%blocks(b)%etype)
+         if (.not. fam%rot) cycle
+         do i = 1, model%blocks(b)%nel
+            rot(model%blocks(b)%conn(:, i)) = .true.
+         end do
+      end do
+   end subroutine rotation_nodes
 
    pure function unit_axis(d) result(a)
       integer, intent(in) :: d
@@ -97,7 +126,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: i, k, j, ip
       integer, allocatable :: nodes(:), ex(:)
-      logical, allocatable :: excl(:), pmask(:), nmask(:)
+      logical, allocatable :: excl(:), pmask(:), nmask(:), rot(:)
       real(wp) :: r(3)
       allocate(model%v0(3, model%nn), excl(model%nn), pmask(size(model%parts)), &
                nmask(model%nn))
@@ -168,6 +197,18 @@ contains
             k = node_index(inp, mp, q%id, q%src, 'NID', error)
             if (allocated(error)) return
             model%v0(:, k) = q%v
+            if (all(q%vr == 0.0_wp)) cycle
+            if (.not. allocated(rot)) call rotation_nodes(model, rot)
+            if (.not. rot(k)) then
+               call set_error(error, at(inp, q%src)//'field VXR: node '//str(q%id)// &
+                  ' carries no rotation (not a shell node): VXR, VYR, VZR must be 0')
+               return
+            end if
+            if (.not. allocated(model%w0)) then
+               allocate(model%w0(3, model%nn))
+               model%w0 = 0.0_wp
+            end if
+            model%w0(:, k) = q%vr
          end associate
       end do
    end subroutine build_initial_velocity

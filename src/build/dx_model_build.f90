@@ -16,6 +16,7 @@ module dx_model_build
                        WARP_WARN
    use dx_log, only: log_warn
    use dx_model_input, only: model_input_t, origin_t
+   use dx_element_types, only: ETYPE_SHELL_BT, ES_THK, shell_area
    use dx_label_map, only: label_map_t
    use dx_build_common, only: maps_t, at, at_line, set_nodes, curve_index, node_index, &
                               dense_segments
@@ -24,6 +25,8 @@ module dx_model_build
    implicit none
    private
    public :: build_model_data
+
+   integer, parameter :: SHELL_MARK = 5   !< N5 = 0 on the element list: a shell card
 
 contains
 
@@ -178,7 +181,7 @@ contains
             p%isec = mp%sec%get(p%secid)
             if (p%isec == 0) then
                call set_error(error, w//'part '//str(p%label)//': field SECID: section '// &
-                              str(p%secid)//' is not defined (*SECTION_SOLID)')
+                              str(p%secid)//' is not defined (*SECTION_SOLID or *SECTION_SHELL)')
                return
             end if
             p%imat = mp%mat%get(p%mid)
@@ -189,6 +192,10 @@ contains
             end if
             call attach_eos(inp, model, p, w, error)
             if (allocated(error)) return
+            if (model%sections(p%isec)%shell) then
+               call shell_part(inp, model, p, w, error)
+               if (allocated(error)) return
+            end if
             p%ihq = c%ihq
             p%qh = c%qh
             p%q1 = c%q1
@@ -216,6 +223,49 @@ contains
          end associate
       end do
    end subroutine build_parts
+
+   !> A part with a *SECTION_SHELL: its section's shell settings, and the checks of what
+   !> shells do not have yet (rigid shells, ISDO, TSLIMT, the Lobatto range).
+   subroutine shell_part(inp, model, p, w, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(inout) :: model
+      type(part_t), intent(inout) :: p
+      character(*), intent(in) :: w
+      type(error_t), allocatable, intent(out) :: error
+      character(:), allocatable :: ts
+      associate (sec => model%sections(p%isec), c => inp%ctrl)
+         p%shrf = sec%shrf
+         p%lobatto = c%intgrd == 1
+         p%istupd = c%istupd
+         ! the plane-stress plasticity algorithm of the laminae (*CONTROL_SHELL MITER)
+         model%mats(p%imat)%m%ps_alg = c%miter
+         if (p%lobatto .and. (sec%nip < 3 .or. sec%nip > 5)) then
+            call set_error(error, at(inp, inp%section_src(p%isec))//'section '// &
+               str(sec%label)//': field NIP: '//str(sec%nip)//' Lobatto points (*CONTROL_SHELL '// &
+               'INTGRD = 1) are not supported (supported: 3 to 5)')
+            return
+         end if
+         if (model%mats(p%imat)%m%is_rigid) then
+            call set_error(error, w//'part '//str(p%label)//': field MID: rigid shells '// &
+               '(*MAT_RIGID on a *SECTION_SHELL part) are not supported yet')
+            return
+         end if
+         ts = 'deck'
+         if (inp%timestep_src%line > 0) ts = inp%files(inp%timestep_src%ifile)%s//':'// &
+                                             str(inp%timestep_src%line)//': *CONTROL_TIMESTEP'
+         if (c%isdo /= 0) then
+            call set_error(error, ts//': field ISDO: shell time-step length '//str(c%isdo)// &
+               ' is not supported with shells (part '//str(p%label)//'; supported: 0)')
+            return
+         end if
+         if (c%tslimt /= 0.0_wp) then
+            call set_error(error, ts//': field TSLIMT: the shell time-step floor '// &
+               rstr(c%tslimt)//' (mass scaling of shells) is not supported (part '// &
+               str(p%label)//'; supported: 0)')
+            return
+         end if
+      end associate
+   end subroutine shell_part
 
    !> EOSID of part p: the equation of state of its material. LS-DYNA attaches one only to
    !> hydro models (types 9, 10, 11, 15; dynx has 9, *MAT_NULL), which need one on solids.
@@ -266,7 +316,9 @@ contains
       type(model_t), intent(inout) :: model
       type(maps_t), intent(inout) :: mp
       type(error_t), allocatable, intent(out) :: error
-      integer :: ne, e, k, j, old, ip, nb, ib, nel, pos, nip, nhv, etype, nen
+      integer :: ne, e, k, j, old, ip, nb, ib, nel, pos, nip, nhv, etype, nen, nshw
+      logical :: shcard
+      real(wp), allocatable :: thk(:)
       integer, allocatable :: conn(:, :), npart(:), order(:), start(:), fill(:), etyp(:), grp(:)
       type(family_t) :: fam
       logical :: ok
@@ -280,10 +332,20 @@ contains
       model%ne = ne
       allocate(conn(MAX_NEN, ne), vol(ne), etyp(ne), grp(ne), model%elem_part(ne), &
                model%elem_block(ne), model%elem_pos(ne))
+      nshw = 0
+      if (allocated(inp%elem_thk)) then
+         allocate(thk(ne))
+         thk = 0.0_wp
+      end if
       model%elem_label = inp%elem_label(1:ne)
       call mp%elem%init(ne)
       do e = 1, ne
-         w = at_line(inp, inp%elem_src(:, e), 'ELEMENT_SOLID')
+         shcard = inp%elem_conn(SHELL_MARK, e) == 0
+         if (shcard) then
+            w = at_line(inp, inp%elem_src(:, e), 'ELEMENT_SHELL')
+         else
+            w = at_line(inp, inp%elem_src(:, e), 'ELEMENT_SOLID')
+         end if
          associate (lab => inp%elem_label(e))
             call mp%elem%insert(lab, e, old)
             if (old /= 0) then
@@ -298,6 +360,20 @@ contains
                               str(inp%elem_pid(e))//' is not defined (*PART)')
                return
             end if
+            if (model%sections(model%parts(model%elem_part(e))%isec)%shell .neqv. shcard) then
+               call set_error(error, w//'element '//str(lab)//': field PID: part '// &
+                  str(inp%elem_pid(e))//' has section '// &
+                  str(model%sections(model%parts(model%elem_part(e))%isec)%label)//', a '// &
+                  trim(merge('*SECTION_SHELL', '*SECTION_SOLID', .not. shcard))//' (an '// &
+                  trim(merge('*ELEMENT_SHELL', '*ELEMENT_SOLID', shcard))//' needs a '// &
+                  trim(merge('*SECTION_SHELL', '*SECTION_SOLID', shcard))//')')
+               return
+            end if
+            if (shcard) then
+               call shell_element(e, lab, w, error)
+               if (allocated(error)) return
+               cycle
+            end if
             do k = 1, MAX_NEN
                conn(k, e) = mp%node%get(inp%elem_conn(k, e))
                if (conn(k, e) == 0) then
@@ -306,7 +382,7 @@ contains
                   return
                end if
             end do
-            etype = etype_of_elform(model%sections(model%parts(model%elem_part(e))%isec)%elform)
+            etype = etype_of_section(model%parts(model%elem_part(e))%isec)
             call solid_shape(inp%ctrl%esort, conn(:, e), etype, nen, ok)
             if (.not. ok) then
                if (nen < MAX_NEN) then
@@ -383,7 +459,7 @@ contains
       do e = 1, ne
          ip = model%elem_part(e)
          grp(e) = 2*ip - 1
-         if (etyp(e) /= etype_of_elform(model%sections(model%parts(ip)%isec)%elform)) &
+         if (etyp(e) /= etype_of_section(model%parts(ip)%isec)) &
             grp(e) = 2*ip
          npart(grp(e)) = npart(grp(e)) + 1
       end do
@@ -408,6 +484,7 @@ contains
             etype = etyp(order(start(j)))
             fam = element_family(etype)
             nip = fam%nip
+            if (model%sections(p%isec)%shell) nip = model%sections(p%isec)%nip
             nhv = model%mats(p%imat)%m%nhist()
             pos = start(j)
             do while (pos < start(j + 1))
@@ -435,6 +512,10 @@ contains
                   if (fam%es_ncol(ES_WORK) > 0) call b%es_add(ES_WORK, fam%es_ncol(ES_WORK))
                   if ((p%ihq == 4 .or. p%ihq == 5) .and. fam%es_ncol(ES_HGS) > 0) &
                      call b%es_add(ES_HGS, fam%es_ncol(ES_HGS))
+                  if (fam%es_ncol(ES_THK) > 0) then   ! shells: thickness, hourglass forces
+                     call b%es_add(ES_THK, fam%es_ncol(ES_THK))
+                     b%es(:, b%esc(ES_THK)) = thk(b%elem)
+                  end if
                   do k = 1, nel
                      model%elem_block(b%elem(k)) = ib
                      model%elem_pos(b%elem(k)) = k
@@ -444,6 +525,79 @@ contains
             end do
          end associate
       end do
+   contains
+      !> one *ELEMENT_SHELL card e: nodes (a triangle repeats N3), area, thickness (the
+      !> card's _THICKNESS values or the section's T1..T4, averaged), V0 = A t, warping
+      !> warning past *CONTROL_SHELL WRPANG
+      subroutine shell_element(e, lab, w, error)
+         integer, intent(in) :: e, lab
+         character(*), intent(in) :: w
+         type(error_t), allocatable, intent(out) :: error
+         real(wp) :: a, t4(4), tm
+         integer :: kk, jj
+         character(:), allocatable :: tf
+         do kk = 1, 4
+            conn(kk, e) = mp%node%get(inp%elem_conn(kk, e))
+            if (conn(kk, e) == 0) then
+               call set_error(error, w//'element '//str(lab)//': field N'//str(kk)// &
+                              ': node '//str(inp%elem_conn(kk, e))//' is not defined (*NODE)')
+               return
+            end if
+         end do
+         conn(5:, e) = conn(4, e)
+         do kk = 2, 4
+            do jj = 1, kk - 1
+               if (conn(kk, e) == conn(jj, e) .and. .not. (kk == 4 .and. jj == 3)) then
+                  call set_error(error, w//'element '//str(lab)//': node '// &
+                     str(inp%elem_conn(kk, e))//' appears twice (N'//str(jj)//' and N'// &
+                     str(kk)//'): a shell is a quadrilateral or a triangle N4 = N3')
+                  return
+               end if
+            end do
+         end do
+         etyp(e) = etype_of_section(model%parts(model%elem_part(e))%isec)
+         t4 = inp%elem_thk(:, e)
+         tf = 'THIC1'
+         if (t4(1) == 0.0_wp) then
+            t4 = model%sections(model%parts(model%elem_part(e))%isec)%t
+            tf = 'T1 of section '//str(model%sections(model%parts(model%elem_part(e))%isec)%label)
+         end if
+         if (conn(4, e) == conn(3, e)) then
+            tm = sum(t4(1:3))/3.0_wp
+         else
+            tm = 0.25_wp*sum(t4)
+         end if
+         if (.not. (tm > 0.0_wp)) then
+            call set_error(error, w//'element '//str(lab)//': field '//tf//': the shell '// &
+               'thickness must be > 0, got '//rstr(tm))
+            return
+         end if
+         a = shell_area(model%x0(:, conn(1:4, e)))
+         if (.not. (a > 0.0_wp)) then
+            call set_error(error, w//'element '//str(lab)//' has zero area at t = 0 '// &
+               '(check its nodes N1..N4)')
+            return
+         end if
+         thk(e) = tm
+         vol(e) = a*tm
+         call elem_quality(etyp(e), model%x0(:, conn(1:4, e)), vol(e), asp, warp, cj, kc)
+         if (warp > inp%ctrl%wrpang) then
+            nshw = nshw + 1
+            if (nshw <= NLIST) call log_warn(w//'shell element '//str(lab)//' is warped by '// &
+               rstr(warp)//' degrees (above *CONTROL_SHELL WRPANG '//rstr(inp%ctrl%wrpang)// &
+               '; the Belytschko-Lin-Tsay shell has no warping correction)')
+         end if
+      end subroutine shell_element
+
+      !> the element type of the part's section (dense section index isec)
+      integer function etype_of_section(isec)
+         integer, intent(in) :: isec
+         if (model%sections(isec)%shell) then
+            etype_of_section = ETYPE_SHELL_BT
+         else
+            etype_of_section = etype_of_elform(model%sections(isec)%elform)
+         end if
+      end function etype_of_section
    end subroutine build_elements
 
 
@@ -590,6 +744,11 @@ contains
          call set_error(error, at(inp, inp%timestep_src)//'field DT2MS: mass scaling (DT2MS = '// &
             rstr(inp%ctrl%dt2ms)//') is not available with the conserving rigid-body '// &
             'integrator (*DYNX_CONSERVING_CONTACT); set DT2MS = 0')
+      ! shells: the rotary inertia is lumped once from the unscaled mass (not yet rescaled)
+      if (.not. allocated(error) .and. inp%ctrl%dt2ms /= 0.0_wp .and. allocated(inp%elem_thk)) &
+         call set_error(error, at(inp, inp%timestep_src)//'field DT2MS: mass scaling (DT2MS = '// &
+            rstr(inp%ctrl%dt2ms)//') is not yet available for decks with shells '// &
+            '(*ELEMENT_SHELL): their rotary inertia would not be scaled; set DT2MS = 0')
    contains
       subroutine add_hist(node)
          integer, intent(in) :: node

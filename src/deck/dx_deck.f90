@@ -11,6 +11,7 @@ module dx_deck
    use dx_deck_cards, only: deck_t, read_cards, data_start
    use dx_deck_registry, only: registry_t
    use dx_read_nodes_elements, only: register_nodes_elements
+   use dx_read_shells, only: register_shells
    use dx_read_materials, only: register_materials, unknown_model_hint
    use dx_read_controls, only: register_controls
    use dx_read_sets, only: register_sets, sets_finish
@@ -32,6 +33,7 @@ contains
    function new_registry() result(reg)
       type(registry_t) :: reg
       call register_nodes_elements(reg)
+      call register_shells(reg)
       call register_materials(reg)
       call register_controls(reg)
       call register_sets(reg)

@@ -143,31 +143,47 @@ contains
          if (allocated(error)) return
          call get_int(deck, blk, ic, 2, w, 'DOF', 0, m%dof, error)
          if (allocated(error)) return
-         if (m%dof < 1 .or. m%dof > 3) then
+         if (m%dof < 1 .or. m%dof > 7 .or. m%dof == 4) then
             call field_error(deck, blk, ic, 2, w, 'DOF', 'DOF '//str(m%dof)//' is not '// &
-               'supported (supported: 1 x, 2 y, 3 z translation)', error)
+               'supported (supported: 1 x, 2 y, 3 z translation; 5, 6, 7 rotation about '// &
+               'x, y, z on shell nodes)', error)
             return
          end if
          call read_motion_fields(deck, blk, ic, w, m%vad, m%lcid, m%sf, m%death, m%birth, error)
          if (allocated(error)) return
+         if (m%dof >= 5 .and. m%vad == 2) then
+            call field_error(deck, blk, ic, 3, w, 'VAD', 'VAD 2 (a prescribed rotation '// &
+               'angle) on DOF '//str(m%dof)//' is not supported (supported on rotations: 0 '// &
+               'angular velocity, 1 angular acceleration)', error)
+            return
+         end if
          m%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
          inp%motions = [inp%motions, m]
       end do
    end subroutine read_motion
 
    !> translational velocity fields k0..k0+2 of card ic, rotational fields k0+3..k0+5 zero
-   subroutine velocity(deck, blk, ic, k0, w, names, v, error)
+   subroutine velocity(deck, blk, ic, k0, w, names, v, error, vr)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
       integer, intent(in) :: ic, k0, w(:)
       character(*), intent(in) :: names(6)
       real(wp), intent(out) :: v(3)
       type(error_t), allocatable, intent(out) :: error
+      real(wp), intent(out), optional :: vr(3)   !< the rotational fields (shell nodes)
       integer :: k
       do k = 1, 3
          call get_real(deck, blk, ic, k0 + k - 1, w, trim(names(k)), 0.0_wp, v(k), error)
          if (allocated(error)) return
       end do
+      if (present(vr)) then
+         do k = 1, 3
+            call get_real(deck, blk, ic, k0 + k + 2, w, trim(names(k + 3)), 0.0_wp, vr(k), &
+                          error)
+            if (allocated(error)) return
+         end do
+         return
+      end if
       do k = 4, 6
          call zero_real(deck, blk, ic, k0 + k - 1, w, trim(names(k)), 'solid elements '// &
                         'have no rotational degrees of freedom', error)
@@ -239,7 +255,7 @@ contains
          call positive_id(deck, blk, ic, 1, w, 'NID', r%id, error)
          if (allocated(error)) return
          call velocity(deck, blk, ic, 2, w, ['VX ', 'VY ', 'VZ ', 'VXR', 'VYR', 'VZR'], r%v, &
-                       error)
+                       error, r%vr)
          if (allocated(error)) return
          call zero_int(deck, blk, ic, 8, w, 'ICID', 'local coordinate systems', error)
          if (allocated(error)) return

@@ -6,25 +6,29 @@
 !> dx_element_types, re-exported here.
 !> Families: hexahedron ELFORM 1 and 2 (dx_hex8: Flanagan & Belytschko 1981, IJNME
 !> 17:679-706; Hughes 1980, IJNME 15:1413-1418), tetrahedron ELFORM 10 (dx_tet4: one-point
-!> constant-strain tetrahedron; Zienkiewicz, Taylor & Zhu 2013, ch. 6).
+!> constant-strain tetrahedron; Zienkiewicz, Taylor & Zhu 2013, ch. 6), Belytschko-Lin-Tsay
+!> shell ELFORM 2 of *SECTION_SHELL (dx_shell_bt: Belytschko, Lin & Tsay 1984, CMAME 42).
 module dx_element
    use dx_kinds, only: wp
    use dx_material, only: material_t
    use dx_element_types, only: elem_block_t, part_t, ES_PHIM, block_result_t, family_t, element_family, ELEM_ERR_NEGVOL, &
-                               ELEM_ERR_MATERIAL, ETYPE_TET4
+                               ELEM_ERR_MATERIAL, ETYPE_TET4, ETYPE_SHELL_BT
    use dx_hex8, only: hex8_block, hex8_mass_share
    use dx_tet4, only: tet4_block
+   use dx_shell_bt, only: shell_bt_block, shell_bt_rotary_inertia
    implicit none
    private
    public :: element_block_pass, element_mass_share, block_result_t, family_t, element_family
+   public :: element_rotary_inertia
    public :: ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL
 
 contains
 
    !> One explicit pass over a block: x = x(n), v = v(n-1/2), dt_old = dt(n-1/2). Updates
    !> stress/history to t(n), subtracts the internal force from f, returns the block's
-   !> smallest element step, energy increments and first error.
-   subroutine element_block_pass(blk, mat, part, x, v, dt_old, f, res)
+   !> smallest element step, energy increments and first error. w = w(n-1/2), mom: the
+   !> angular velocities and moments of a deck with shells (absent otherwise).
+   subroutine element_block_pass(blk, mat, part, x, v, dt_old, f, res, w, mom)
       type(elem_block_t), intent(inout) :: blk
       class(material_t), intent(in) :: mat
       type(part_t), intent(in) :: part
@@ -32,7 +36,12 @@ contains
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: f(:, :)
       type(block_result_t), intent(out) :: res
+      real(wp), intent(in), optional :: w(:, :)
+      real(wp), intent(inout), optional :: mom(:, :)
       select case (blk%etype)
+      case (ETYPE_SHELL_BT)
+         call shell_bt_block(blk, mat, part, part%shrf, part%lobatto, part%istupd, x, v, w, &
+                             dt_old, f, mom, res)
       case (ETYPE_TET4)
          call tet4_block(blk, mat, part, x, v, dt_old, f, res)
       case default
@@ -48,10 +57,22 @@ contains
       real(wp), intent(in) :: rho, mass(:)
       integer, intent(in) :: cnodes(:)
       select case (blk%etype)
-      case (ETYPE_TET4)
+      case (ETYPE_TET4, ETYPE_SHELL_BT)
          call blk%es_drop(ES_PHIM)
       case default
          call hex8_mass_share(blk, rho, mass, cnodes)
       end select
    end subroutine element_mass_share
+
+   !> Add the lumped rotary inertia of a block whose family has rotations to rinert (rho:
+   !> the part's density; rotascl: *CONTROL_SHELL ROTASCL).
+   subroutine element_rotary_inertia(blk, rho, rotascl, rinert)
+      type(elem_block_t), intent(in) :: blk
+      real(wp), intent(in) :: rho, rotascl
+      real(wp), intent(inout) :: rinert(:)
+      select case (blk%etype)
+      case (ETYPE_SHELL_BT)
+         call shell_bt_rotary_inertia(blk, rho, rotascl, rinert)
+      end select
+   end subroutine element_rotary_inertia
 end module dx_element

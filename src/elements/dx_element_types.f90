@@ -28,7 +28,8 @@ module dx_element_types
    implicit none
    private
    public :: family_t, element_family, elem_volume, elem_moments, elem_length, block_result_t
-   public :: ETYPE_HEX8_1PT, ETYPE_HEX8_SRI, ETYPE_TET4, ETYPE_DEFAULT
+   public :: ETYPE_HEX8_1PT, ETYPE_HEX8_SRI, ETYPE_TET4, ETYPE_DEFAULT, ETYPE_SHELL_BT
+   public :: etype_of_shell_elform, ES_THK, shell_area, shell_frame, shell_stress_global
    public :: MAX_NEN, MAX_FACE_NODES, MAX_FACES
    public :: ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, etype_of_elform, ETYPES
    public :: solid_shape, elem_quality, ASPECT_WARN, WARP_WARN
@@ -41,8 +42,11 @@ module dx_element_types
    integer, parameter :: ETYPE_HEX8_SRI = 2   !< 2x2x2 selectively reduced (mean dilatation)
    integer, parameter :: ETYPE_TET4 = 10      !< 4-node tetrahedron, one point, constant strain
    integer, parameter :: ETYPE_DEFAULT = ETYPE_HEX8_1PT   !< a block built without a section
+   !> shells: 1000 + the *SECTION_SHELL ELFORM (the solid and shell ELFORM numbers overlap)
+   integer, parameter :: ETYPE_SHELL_BT = 1002   !< Belytschko-Lin-Tsay quadrilateral (dx_shell_bt)
    !> every element type, one per family first (lookups by nen or XDMF code take the first)
-   integer, parameter :: ETYPES(3) = [ETYPE_HEX8_1PT, ETYPE_TET4, ETYPE_HEX8_SRI]
+   integer, parameter :: ETYPES(4) = [ETYPE_HEX8_1PT, ETYPE_TET4, ETYPE_SHELL_BT, &
+                                      ETYPE_HEX8_SRI]
    integer, parameter :: MAX_NEN = 8          !< most nodes of any family (*ELEMENT_SOLID card)
    integer, parameter :: MAX_FACE_NODES = 4   !< most nodes of a face (a segment)
    integer, parameter :: MAX_FACES = 6        !< most faces of a family
@@ -62,11 +66,15 @@ module dx_element_types
    integer, parameter :: ES_HGS = 1    !< hourglass resisting forces (3, hgmodes) (IHQ 4, 5)
    integer, parameter :: ES_WORK = 2   !< pending terms of the centred work (offsets WORK_*)
    integer, parameter :: ES_PHIM = 3   !< own-mass share of the element dt bound (set-up)
-   integer, parameter :: MAX_ES = 3
+   !> shells: current thickness (1) and the hourglass generalized forces (8: membrane x, y,
+   !> out-of-plane, bending x, y; 3 more columns spare for the warping terms)
+   integer, parameter :: ES_THK = 4
+   integer, parameter :: MAX_ES = 4
    !> restart dataset of each slot (the columns in order, flat; ES_DUMP: phim is derived at
    !> start, not dumped); dumps write the slots in id order
-   character(8), parameter :: ES_NAMES(MAX_ES) = [character(8) :: 'hgs', 'ework', 'phim']
-   logical, parameter :: ES_DUMP(MAX_ES) = [.true., .true., .false.]
+   character(8), parameter :: ES_NAMES(MAX_ES) = [character(8) :: 'hgs', 'ework', 'phim', &
+                                                  'shthk']
+   logical, parameter :: ES_DUMP(MAX_ES) = [.true., .true., .false., .true.]
    !> column offsets inside ES_WORK (dx_hex8's centred_work: q, q B.v, dt, sigma:D V of the
    !> last pass)
    integer, parameter :: WORK_Q = 0, WORK_QBV = 1, WORK_DT = 2, WORK_PN = 3
@@ -85,6 +93,7 @@ module dx_element_types
       real(wp) :: mass_share = 0.0_wp      !< lumped mass of each node: rho V0 * mass_share
       integer :: weight = 1                !< partition cost weight (measured ns/element-cycle)
       integer :: es_ncol(MAX_ES) = 0       !< columns of each family-state slot (0: none)
+      logical :: rot = .false.             !< nodes carry rotations (shells)
    end type family_t
 
    !> results of one block pass
@@ -111,6 +120,11 @@ module dx_element_types
       real(wp) :: qh = 0.1_wp      !< resolved hourglass coefficient
       real(wp) :: q1 = 1.5_wp      !< resolved quadratic bulk viscosity coefficient
       real(wp) :: q2 = 0.06_wp     !< resolved linear bulk viscosity coefficient
+      !> shell parts: the section's shear factor SHRF, the through-thickness rule
+      !> (*CONTROL_SHELL INTGRD = 1: Lobatto) and the thickness update (ISTUPD)
+      real(wp) :: shrf = 1.0_wp
+      logical :: lobatto = .false.
+      integer :: istupd = 0
    end type part_t
 
    !> A group of at most nv_chunk elements of one part and one formulation.
@@ -149,6 +163,7 @@ module dx_element_types
    !> tetrahedron faces (positive volume: node 4 on the side of (x2-x1)x(x3-x1))
    integer, parameter :: TET_FACES(4, 4) = reshape([1, 3, 2, 2,  1, 2, 4, 4,  2, 3, 4, 4, &
                                                     1, 4, 3, 3], [4, 4])
+   integer, parameter :: QUAD_EDGES(2, 4) = reshape([1, 2,  2, 3,  3, 4,  4, 1], [2, 4])
    integer, parameter :: TET_EDGES(2, 6) = reshape([1, 2,  2, 3,  3, 1,  1, 4,  2, 4,  3, 4], &
                                                    [2, 6])
 
@@ -166,7 +181,7 @@ contains
          f%edges(:, 1:12) = HEX_EDGES
          f%mass_share = 0.125_wp
          f%hgmodes = 4
-         f%es_ncol = [3*f%hgmodes, 4, 1]
+         f%es_ncol = [3*f%hgmodes, 4, 1, 0]
          f%nip = 1; f%weight = 1
          ! ELFORM 2 measured at about 8x ELFORM 1 per element-cycle (docs/history.md,
          ! "Partition weights")
@@ -179,8 +194,20 @@ contains
          f%faces(:, 1:4) = TET_FACES
          f%edges(:, 1:6) = TET_EDGES
          f%mass_share = 0.25_wp
-         f%es_ncol = [0, 4, 0]
+         f%es_ncol = [0, 4, 0, 0]
          f%nip = 1; f%weight = 1
+      case (ETYPE_SHELL_BT)
+         ! one face (the mid-surface, normal by the right-hand rule on N1..N4; a triangle
+         ! repeats N3), four edges; nip: the section's through-thickness points (block%nip)
+         f%name = 'quad4'; f%xdmf = 'Quadrilateral'; f%xdmf_code = 5
+         f%nen = 4; f%nfaces = 1; f%nedges = 4
+         f%faces(:, 1) = [1, 2, 3, 4]
+         f%edges(:, 1:4) = QUAD_EDGES
+         f%mass_share = 0.25_wp
+         f%hgmodes = 5
+         f%es_ncol = [0, 0, 0, 1 + 8]
+         f%nip = 2; f%weight = 1
+         f%rot = .true.
       end select
    end function element_family
 
@@ -196,6 +223,60 @@ contains
          etype = ETYPE_HEX8_1PT
       end select
    end function etype_of_elform
+
+   !> Element type of a *SECTION_SHELL ELFORM (0: not supported).
+   pure integer function etype_of_shell_elform(elform) result(etype)
+      integer, intent(in) :: elform
+      etype = 0
+      if (elform == 2) etype = ETYPE_SHELL_BT
+   end function etype_of_shell_elform
+
+   !> Mid-surface area of a shell with nodes xe(3, 4) (a triangle repeats N3): half the
+   !> norm of the cross product of the diagonals (exact for a plane quadrilateral).
+   pure function shell_area(xe) result(a)
+      real(wp), intent(in) :: xe(:, :)
+      real(wp) :: a
+      a = 0.5_wp*norm2(cross(xe(:, 3) - xe(:, 1), xe(:, 4) - xe(:, 2)))
+   end function shell_area
+
+   !> Co-rotational frame e(3, 3) (columns e1, e2, e3) of a shell with nodes xe(3, 4) (a
+   !> triangle repeats N3): e3 = s31 x s42/|.|, e1 = s21 - (s21.e3) e3 normalised, e2 = e3 x
+   !> e1 (sIJ = x_I - x_J; Belytschko, Lin & Tsay 1984), the local in-plane coordinates
+   !> xl(2, 4) of the nodes (origin N1) and the area of the projected quadrilateral.
+   pure subroutine shell_frame(xe, e, xl, area)
+      real(wp), intent(in) :: xe(3, 4)
+      real(wp), intent(out) :: e(3, 3), xl(2, 4), area
+      real(wp) :: s21(3), n(3), r(3), a
+      integer :: k
+      s21 = xe(:, 2) - xe(:, 1)
+      n = cross(xe(:, 3) - xe(:, 1), xe(:, 4) - xe(:, 2))
+      a = norm2(n)
+      if (a > 0.0_wp) n = n/a
+      e(:, 3) = n
+      r = s21 - dot_product(s21, n)*n
+      a = norm2(r)
+      if (a > 0.0_wp) r = r/a
+      e(:, 1) = r
+      e(:, 2) = cross(n, r)
+      do k = 1, 4
+         xl(1, k) = dot_product(e(:, 1), xe(:, k) - xe(:, 1))
+         xl(2, k) = dot_product(e(:, 2), xe(:, k) - xe(:, 1))
+      end do
+      area = 0.5_wp*((xl(1, 3) - xl(1, 1))*(xl(2, 4) - xl(2, 2)) - &
+                     (xl(1, 4) - xl(1, 2))*(xl(2, 3) - xl(2, 1)))
+   end subroutine shell_frame
+
+   !> A shell's stress s (xx yy zz xy yz zx) from its co-rotational frame (nodes xe(3, 4))
+   !> to the global axes: sigma_global = E sigma_local E^T.
+   pure subroutine shell_stress_global(xe, s)
+      real(wp), intent(in) :: xe(3, 4)
+      real(wp), intent(inout) :: s(6)
+      real(wp) :: e(3, 3), xl(2, 4), a, t(3, 3)
+      call shell_frame(xe, e, xl, a)
+      t = reshape([s(1), s(4), s(6), s(4), s(2), s(5), s(6), s(5), s(3)], [3, 3])
+      t = matmul(e, matmul(t, transpose(e)))
+      s = [t(1, 1), t(2, 2), t(3, 3), t(1, 2), t(2, 3), t(3, 1)]
+   end subroutine shell_stress_global
 
    !> Element type and nodes of one *ELEMENT_SOLID card c(1:8) (dense nodes, in place) of a
    !> part whose section gives etype; nen = nodes of the resulting family, ok = .false. for
@@ -255,6 +336,8 @@ contains
       select case (etype)
       case (ETYPE_TET4)
          vol = tet_volume(xe)
+      case (ETYPE_SHELL_BT)      ! the mid-surface area: the caller multiplies by the thickness
+         vol = shell_area(xe)
       case default
          vol = hex_volume(xe)
       end select
@@ -269,6 +352,8 @@ contains
       select case (etype)
       case (ETYPE_TET4)
          call tet_moments(xe, xref, vol, m1, m2)
+      case (ETYPE_SHELL_BT)      ! rigid shells are refused at build: no moments yet
+         vol = 0.0_wp; m1 = 0.0_wp; m2 = 0.0_wp
       case default
          call hex_moments(xe, xref, vol, m1, m2)
       end select
@@ -286,6 +371,15 @@ contains
       real(wp) :: amax, a(3)
       integer :: k
       f = element_family(etype)
+      if (etype == ETYPE_SHELL_BT) then    ! the shell's length (dx_shell_bt, ISDO = 0)
+         amax = 0.0_wp
+         do k = 1, f%nedges
+            amax = max(amax, norm2(xe(:, f%edges(2, k)) - xe(:, f%edges(1, k))))
+         end do
+         l = shell_area(xe)/amax
+         if (all(xe(:, 3) == xe(:, 4))) l = 2.0_wp*l
+         return
+      end if
       amax = 0.0_wp
       do k = 1, f%nfaces
          a = 0.5_wp*cross(xe(:, f%faces(3, k)) - xe(:, f%faces(1, k)), &

@@ -18,7 +18,8 @@ module dx_par_engine_setup
    use dx_par_plan, only: par_gather_setup, par_gather_setup_root
    use dx_sort, only: sort_index
    use dx_par_model, only: par_model_build
-   use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report
+   use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report, &
+                           has_shells
    use dx_rank_file, only: read_rank_file, write_rank_file, rank_file_name, deck_content_hash
    use dx_io_sys, only: sys_mkdir_p
    use dx_energy_sums, only: constrained_nodes, part_mass_map
@@ -295,7 +296,9 @@ contains
       type(model_t), intent(in) :: model
       type(error_t), allocatable, intent(out) :: error
       character(:), allocatable :: what
-      what = ''   ! nothing at present (the conserving solver runs under MPI: dx_par_emc)
+      what = ''   ! (the conserving solver runs under MPI: dx_par_emc)
+      if (has_shells(model)) what = '*SECTION_SHELL (shell elements: their rotational '// &
+         'degrees of freedom are not yet under MPI)'
       if (len(what) > 0) call set_error(error, model%deck_file//': '//what// &
          ' is not supported in an MPI run yet; run this deck serially (without mpirun)', &
          EXIT_INPUT)

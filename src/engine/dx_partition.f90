@@ -30,7 +30,7 @@ module dx_partition
                                  add_proximity_edges, sort_int
    implicit none
    private
-   public :: partition_t, rank_part_t, element_graph, condense_groups, partition_model, &
+   public :: partition_t, rank_part_t, element_graph, condense_groups, partition_model, has_shells, &
              partition_elements, rank_part, elem_costs, serial_order, write_report, face_elements, &
              model_conn, scatter_keys, COST_RIGID, RIGID_SCALE
 
@@ -354,6 +354,18 @@ contains
       elems = pack([(e, e = 1, size(conn, 2))], take)
    end subroutine face_elements
 
+   !> Whether the model has a block of a family with rotations (shells: serial only).
+   logical function has_shells(model)
+      type(model_t), intent(in) :: model
+      type(family_t) :: f
+      integer :: b
+      has_shells = .false.
+      do b = 1, size(model%blocks)
+         f = element_family(model%blocks(b)%etype)
+         has_shells = has_shells .or. f%rot
+      end do
+   end function has_shells
+
    !> Partition a built model: connectivity and costs from its blocks.
    subroutine partition_model(model, np, grp_ptr, grp_elem, part, error)
       type(model_t), intent(in) :: model
@@ -361,6 +373,12 @@ contains
       type(partition_t), intent(out) :: part
       type(error_t), allocatable, intent(out) :: error
       integer, allocatable :: conn(:, :), ewgt(:)
+      if (has_shells(model)) then
+         call set_error(error, model%deck_file//': *SECTION_SHELL: shell elements are not '// &
+            'yet under MPI (their rotational degrees of freedom are not exchanged); run this '// &
+            'deck serially, without dynx-part and mpirun', EXIT_INPUT)
+         return
+      end if
       call model_conn(model, conn)
       call elem_costs(model, ewgt)
       if (has_auto_contact(model)) then   ! separate bodies joined by proximity edges

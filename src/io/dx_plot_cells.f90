@@ -30,22 +30,33 @@ contains
    !> Rows of cells(w, ne) for the families of model's blocks.
    integer function cells_width(model) result(w)
       type(model_t), intent(in) :: model
-      integer :: b
+      integer :: b, k, code
       type(family_t) :: f0
       f0 = element_family(ETYPES(1))
       w = f0%nen
       if (.not. allocated(model%blocks)) return
       w = 0
+      code = 0
       do b = 1, size(model%blocks)
          associate (f => element_family(model%blocks(b)%etype))
             if (w == 0) then
                w = f%nen
-            else if (w /= f%nen) then
+               code = f%xdmf_code
+            else if (w /= f%nen .or. code /= f%xdmf_code) then
                w = MAX_NEN + 1
             end if
          end associate
       end do
       if (w == 0) w = f0%nen
+      ! one family that is not the first of ETYPES with its node count (the quadrilateral
+      ! shell beside the tetrahedron): the Mixed topology names its cell type
+      if (w <= MAX_NEN) then
+         do k = 1, size(ETYPES)
+            f0 = element_family(ETYPES(k))
+            if (f0%nen == w) exit
+         end do
+         if (f0%xdmf_code /= code .and. code /= 0) w = MAX_NEN + 1
+      end if
    end function cells_width
 
    !> The column of one element of type etype with 0-based nodes nodes0 in cells(w, :).

@@ -16,7 +16,7 @@
 module dx_plot_hdf5
    use dx_kinds, only: wp
    use dx_error, only: error_t
-   use dx_model, only: model_t, elem_block_t
+   use dx_model, only: model_t, elem_block_t, family_t, element_family, shell_stress_global
    use dx_h5, only: h5_file_t, h5_create, h5_close, h5_flush, h5_create_group, h5_write, &
                     h5_write_attr, h5_create_extendible, h5_append, h5_open_read, h5_read, &
                     h5_read_attr, h5_close_keep
@@ -335,6 +335,8 @@ contains
       type(model_t), intent(in) :: model
       real(wp), intent(out) :: stress(:, :), epsp(:), failed(:)
       integer :: ib, i, e, k, imat, fl
+      type(family_t) :: fam
+      logical :: rot
 
       stress = 0.0_wp
       epsp = 0.0_wp
@@ -343,6 +345,8 @@ contains
          do ib = 1, size(model%blocks)
             associate (blk => model%blocks(ib))
                k = 0
+               fam = element_family(blk%etype)
+               rot = fam%rot .and. allocated(model%x)
                imat = model%parts(blk%ipart)%imat
                if (imat >= 1 .and. allocated(model%mats)) then
                   if (imat <= size(model%mats)) then
@@ -353,6 +357,9 @@ contains
                   e = blk%elem(i)
                   call element_average(blk, i, k, stress(:, e), epsp(e), fl)
                   failed(e) = real(fl, wp)
+                  ! shells: the mean over the laminae (the membrane stress N/t) is held
+                  ! in the element's co-rotational frame; the plot shows it in global axes
+                  if (rot) call shell_stress_global(model%x(:, blk%conn(:, i)), stress(:, e))
                end do
             end associate
          end do

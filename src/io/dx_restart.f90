@@ -246,6 +246,7 @@ contains
       type(model_t), intent(in) :: model
       call rs%put('x', model%x)
       call rs%put('v', model%v)
+      if (allocated(model%w)) call rs%put('w', model%w)   ! shells: angular velocities
    end subroutine dump_nodes
 
    subroutine restore_nodes(rs, model)
@@ -253,6 +254,7 @@ contains
       type(model_t), intent(inout) :: model
       call rs%get('x', model%x)
       call rs%get('v', model%v)
+      if (allocated(model%w)) call rs%get('w', model%w)
    end subroutine restore_nodes
 
    ! ------------------------------------------------------------- element blocks

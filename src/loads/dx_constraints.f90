@@ -9,7 +9,8 @@ module dx_constraints
    use dx_model, only: model_t
    implicit none
    private
-   public :: apply_spc, apply_prescribed, apply_rigidwalls, add_wall_hits
+   public :: apply_spc, apply_prescribed, apply_rigidwalls, add_wall_hits, apply_spc_rot, &
+             apply_prescribed_rot
 
    !> The nodes the stonewalls corrected in one cycle (apply_rigidwalls), in wall order:
    !> wall(i), k(i) = the wall and the position in its node list; val(1, i) the work term,
@@ -34,6 +35,47 @@ contains
       end do
    end subroutine apply_spc
 
+   !> Zero the constrained angular velocity components (DOFRX, DOFRY, DOFRZ; *NODE RC).
+   subroutine apply_spc_rot(model, w)
+      type(model_t), intent(in) :: model
+      real(wp), intent(inout) :: w(:, :)
+      integer :: k, d
+      if (.not. allocated(model%spcs)) return
+      do k = 1, size(model%spcs)
+         do d = 1, 3
+            if (model%spcs(k)%dof(3 + d)) w(d, model%spcs(k)%node) = 0.0_wp
+         end do
+      end do
+   end subroutine apply_spc_rot
+
+   !> Prescribed rotations (DOF 5, 6, 7: about x, y, z) on the angular velocity w(n+1/2)
+   !> (wold = w(n-1/2)): VAD 0 angular velocity at the mid-step time, 1 angular
+   !> acceleration at t(n) (VAD 2, an angle, is refused by the reader: the shell nodes
+   !> carry no rotation angle).
+   subroutine apply_prescribed_rot(model, t, dt, dtavg, wold, w)
+      type(model_t), intent(in) :: model
+      real(wp), intent(in) :: t, dt, dtavg
+      real(wp), intent(in) :: wold(:, :)
+      real(wp), intent(inout) :: w(:, :)
+      integer :: k, nd, d
+      real(wp) :: val
+      if (.not. allocated(model%prescribed)) return
+      do k = 1, size(model%prescribed)
+         associate (pm => model%prescribed(k))
+            if (pm%dof < 5 .or. pm%dof > 7) cycle
+            if (t < pm%birth .or. t > pm%death) cycle
+            nd = pm%node
+            d = pm%dof - 4
+            if (pm%vad == 1) then
+               val = wold(d, nd) + dtavg*pm%sf*model%curves(pm%curve)%eval(t)
+            else
+               val = pm%sf*model%curves(pm%curve)%eval(t + 0.5_wp*dt)
+            end if
+            w(d, nd) = val
+         end associate
+      end do
+   end subroutine apply_prescribed_rot
+
    !> Prescribed motion for the step t -> t + dt (v holds the unconstrained v(n+1/2);
    !> vold the previous v(n-1/2); dtavg = (dt_old + dt)/2).
    subroutine apply_prescribed(model, t, dt, dtavg, vold, v)
@@ -47,6 +89,7 @@ contains
       do k = 1, size(model%prescribed)
          associate (pm => model%prescribed(k))
             if (t < pm%birth .or. t > pm%death) cycle
+            if (pm%dof >= 5) cycle              ! rotations: apply_prescribed_rot
             nd = pm%node
             d = pm%dir
             select case (pm%vad)

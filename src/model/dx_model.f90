@@ -12,7 +12,7 @@ module dx_model
    use dx_contact_types, only: contact_set_t
    use dx_run_state, only: run_state_t, restart_ctrl_t
    use dx_emc_types, only: emc_system_t
-   use dx_element_types, only: elem_quality, ASPECT_WARN, WARP_WARN
+   use dx_element_types, only: elem_quality, ASPECT_WARN, WARP_WARN, shell_stress_global
    use dx_element_types, only: elem_block_t, part_t, family_t, element_family, elem_volume, elem_moments, elem_length, &
                                etype_of_elform, solid_shape, MAX_NEN, MAX_FACE_NODES, &
                                MAX_FACES, ETYPE_DEFAULT, ETYPES, ES_WORK, ES_HGS, ES_PHIM, &
@@ -27,19 +27,25 @@ module dx_model
    public :: elem_block_t, part_t
    !> the element-family table (dx_element_types): what every consumer asks of a block's
    !> element type (nodes, faces, edges, volume, moments, lumped mass, plot cell, weight)
-   public :: elem_quality, ASPECT_WARN, WARP_WARN
+   public :: elem_quality, ASPECT_WARN, WARP_WARN, shell_stress_global
    public :: family_t, element_family, elem_volume, elem_moments, elem_length, etype_of_elform, &
              solid_shape, MAX_NEN, MAX_FACE_NODES, MAX_FACES, ETYPES
    !> the family-state slots of a block's es array (dx_element_types)
    public :: ES_WORK, ES_HGS, ES_PHIM, MAX_ES, ES_NAMES, ES_DUMP, WORK_Q, WORK_QBV, &
              WORK_DT, WORK_PN
 
-   !> *SECTION_SOLID
+   !> *SECTION_SOLID or *SECTION_SHELL (shell = .true.; the shell fields of
+   !> dx_read_shells with their LS-DYNA meaning)
    type :: section_t
       integer :: label = 0
       character(:), allocatable :: title
       integer :: elform = 1
       integer :: aet = 0
+      logical :: shell = .false.
+      real(wp) :: shrf = 1.0_wp        !< transverse shear factor
+      integer :: nip = 2               !< through-thickness points
+      integer :: intgrd = 0            !< 0 Gauss, 1 Lobatto (*CONTROL_SHELL INTGRD)
+      real(wp) :: t(4) = 0.0_wp        !< nodal thicknesses T1..T4
    end type section_t
 
    !> *HOURGLASS (a negative or zero value means: take the *CONTROL_* default)
@@ -144,6 +150,14 @@ module dx_model
       real(wp) :: q1 = 1.5_wp, q2 = 0.06_wp
       integer :: ibq = 1
       integer :: esort = 0              !< *CONTROL_SOLID ESORT: >= 1 sorts degenerate tetrahedra
+      !> *CONTROL_SHELL (dx_read_shells): warping warning angle (degrees), thickness update
+      !> (0 none, 1 membrane straining), rotary inertia scale, through-thickness rule
+      !> (0 Gauss, 1 Lobatto), plane-stress plasticity option
+      real(wp) :: wrpang = 20.0_wp
+      integer :: istupd = 0
+      real(wp) :: rotascl = 1.0_wp
+      integer :: intgrd = 0
+      integer :: miter = 1
       type(implicit_ctrl_t) :: imp      !< the implicit controls (integrator choice, dx_solver)
    end type control_t
 
@@ -201,6 +215,9 @@ module dx_model
       integer, allocatable :: node_label(:)
       real(wp), allocatable :: x0(:, :)        !< (3, nn) initial coordinates
       real(wp), allocatable :: v0(:, :)        !< (3, nn) initial velocity
+      !> (3, nn) initial angular velocity (*INITIAL_VELOCITY_NODE VXR VYR VZR on shell
+      !> nodes; allocated only when one is given)
+      real(wp), allocatable :: w0(:, :)
       ! --- elements
       integer :: ne = 0
       integer, allocatable :: elem_label(:)    !< (ne) element ids
@@ -241,6 +258,11 @@ module dx_model
       !> mass0(nn): the lumped nodal mass without it (mass = mass0 + the spread added_mass)
       real(wp), allocatable :: added_mass(:)
       real(wp), allocatable :: mass0(:)
+      !> rotational degrees of freedom (allocated only when the deck has shells): angular
+      !> velocity at t(n+1/2) after a cycle, moment (external - internal), rotary inertia
+      real(wp), allocatable :: w(:, :)         !< (3, nn) angular velocity (global axes)
+      real(wp), allocatable :: mom(:, :)       !< (3, nn) moment
+      real(wp), allocatable :: rinert(:)       !< (nn) lumped rotary inertia
       real(wp) :: time = 0.0_wp
       real(wp) :: dt = 0.0_wp
       integer :: cycle = 0

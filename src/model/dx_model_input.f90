@@ -93,6 +93,7 @@ module dx_model_input
       integer :: nsidex = 0            !< *INITIAL_VELOCITY: excluded node set
       integer :: styp = 0              !< GENERATION: 1 part set, 2 part, 3 node set
       real(wp) :: v(3) = 0.0_wp        !< translational velocity
+      real(wp) :: vr(3) = 0.0_wp       !< angular velocity VXR VYR VZR (_NODE; shell nodes)
       real(wp) :: vex(3) = 0.0_wp      !< velocity of the excluded nodes (NSIDEX)
       real(wp) :: omega = 0.0_wp
       real(wp) :: xc(3) = 0.0_wp, axis(3) = 0.0_wp
@@ -138,6 +139,9 @@ module dx_model_input
       integer, allocatable :: elem_label(:), elem_pid(:)
       integer, allocatable :: elem_conn(:, :)        !< (SOLID_CARD_NODES, :) node labels
       integer, allocatable :: elem_src(:, :)         !< (2, :) ifile, line
+      !> (4, :) nodal thicknesses of *ELEMENT_SHELL_THICKNESS (0: the section's); allocated
+      !> once a shell card is read (dx_read_shells), a shell card has N5..N8 = 0
+      real(wp), allocatable :: elem_thk(:, :)
       ! --- definitions (parts: grown by input_add_part, cut to nparts by input_finish)
       integer :: nparts = 0
       type(part_t), allocatable :: parts(:)

@@ -20,9 +20,10 @@ module dx_explicit
    use dx_timer, only: wall_time, peak_memory_kb
    use dx_model, only: model_t, elem_block_t
    use dx_run_state, only: run_state_t
-   use dx_element, only: element_block_pass, block_result_t, ELEM_ERR_NEGVOL
+   use dx_element, only: element_block_pass, block_result_t, ELEM_ERR_NEGVOL, family_t, &
+                         element_family, element_rotary_inertia
    use dx_loads, only: add_external_loads
-   use dx_constraints, only: apply_spc, apply_prescribed
+   use dx_constraints, only: apply_spc, apply_prescribed, apply_spc_rot, apply_prescribed_rot
    use dx_output, only: output_t
    use dx_checkpoint, only: checkpoint_t, checkpoint_failure_dump, checkpoint_energy_band
    use dx_rigid_solver, only: rigid_close, rigid_write_rbdout
@@ -38,6 +39,7 @@ module dx_explicit
    !> The explicit integrator: its work arrays for one cycle (the loop state is model%run).
    type, extends(integrator_t) :: explicit_t
       real(wp), allocatable :: vold(:, :), fext(:, :), vfree(:, :)
+      real(wp), allocatable :: wold(:, :)   !< w(n-1/2) (decks with shells only)
       integer, allocatable :: cnodes(:)
       logical :: loads = .false.
       logical :: ms_warned = .false.   !< mass scaling: the increase passed MS_WARN_PERCENT
@@ -58,6 +60,9 @@ contains
    subroutine init_state(model, dom)
       type(model_t), intent(inout) :: model
       class(domain_t), intent(inout), optional :: dom
+      integer :: b
+      type(family_t) :: fam
+      logical :: rot
       allocate(model%x(3, model%nn), model%v(3, model%nn), model%f(3, model%nn))
       allocate(model%mass(model%nn))
       model%x = model%x0
@@ -65,6 +70,25 @@ contains
       model%f = 0.0_wp
       call ms_init(model)      ! mass scaling: the elements' added mass (none yet)
       call lump_mass(model)    ! rho V0 times the family's share per node
+      ! rotational degrees of freedom: only when a block's family has them (shells)
+      rot = .false.
+      do b = 1, size(model%blocks)
+         fam = element_family(model%blocks(b)%etype)
+         rot = rot .or. fam%rot
+      end do
+      if (rot) then
+         allocate(model%w(3, model%nn), model%mom(3, model%nn), model%rinert(model%nn))
+         model%w = 0.0_wp
+         if (allocated(model%w0)) model%w = model%w0
+         model%mom = 0.0_wp
+         model%rinert = 0.0_wp
+         do b = 1, size(model%blocks)
+            associate (blk => model%blocks(b))
+               call element_rotary_inertia(blk, model%mats(model%parts(blk%ipart)%imat)%m%ro, &
+                                           model%ctrl%rotascl, model%rinert)
+            end associate
+         end do
+      end if
       model%time = 0.0_wp
       model%cycle = 0
       model%energy%mass = sum(model%mass)
@@ -89,6 +113,7 @@ contains
       if (.not. allocated(model%x)) call init_state(model, dom)
       self%outdir = opts%outdir
       allocate(self%vold(3, model%nn))
+      if (allocated(model%w)) allocate(self%wold(3, model%nn))
       self%loads = dom%has_loads(model)      ! the deck's loads, whatever this rank holds
       if (self%loads) allocate(self%fext(3, model%nn))
       call constrained_nodes(model, self%cnodes)
@@ -100,6 +125,8 @@ contains
          model%run = run_state_t()
          model%run%started = .true.
          model%energy%initial = initial_kinetic(model%mass, model%v)
+         if (allocated(model%w)) model%energy%initial = model%energy%initial + &
+            0.5_wp*sum(model%rinert*sum(model%w**2, dim=1))
          call dom%initial_energy(model)
          if (allocated(model%rigid)) model%energy%initial = model%energy%initial + &
                                                            model%rigid%ke0_corr
@@ -126,7 +153,7 @@ contains
       type(checkpoint_t), intent(inout) :: ck
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: dt, dtavg, dtcrit, t, ke, wrig, tend
+      real(wp) :: dt, dtavg, dtcrit, t, ke, wrig, tend, krot
       integer :: b, i, ibmin, iemin
       logical :: done, need, ms, mchanged
       type(block_result_t) :: res
@@ -141,6 +168,7 @@ contains
          ! ---- internal forces (element pass) and the critical step
          call dom%fill(model)   ! shared nodes' x, v into their slots
          model%f = 0.0_wp
+         if (allocated(model%mom)) model%mom = 0.0_wp
          dtcrit = huge_wp; ibmin = 0; iemin = 0
          ms = allocated(model%added_mass)
          mchanged = .false.
@@ -148,8 +176,13 @@ contains
             if (dom%pending()) exit    ! MPI: a failure kept on this rank skips the pass
             if (model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%is_rigid) cycle
             associate (blk => model%blocks(b), part => model%parts(model%blocks(b)%ipart))
-               call element_block_pass(blk, model%mats(part%imat)%m, part, model%x, model%v, &
-                                       dt_old, model%f, res)
+               if (allocated(model%w)) then
+                  call element_block_pass(blk, model%mats(part%imat)%m, part, model%x, &
+                                          model%v, dt_old, model%f, res, model%w, model%mom)
+               else
+                  call element_block_pass(blk, model%mats(part%imat)%m, part, model%x, &
+                                          model%v, dt_old, model%f, res)
+               end if
                if (res%ibad /= 0) then
                   call element_failure(model, b, res, error)
                   call dom%defer(error)   ! MPI: every rank learns it at the dt reduction
@@ -210,6 +243,8 @@ contains
          end do
          call apply_spc(model, model%v)
          call apply_prescribed(model, t, dt, dtavg, vold, model%v)
+         krot = 0.0_wp
+         if (allocated(model%w)) call rotation_step(model, t, dt, dtavg, self%wold, krot, wcon)
          done = t >= tend .or. (model%ctrl%endcyc > 0 .and. model%cycle >= model%ctrl%endcyc) &
                 .or. self%ms_stop
          need = done .or. model%ctrl%endeng > 0.0_wp .or. (model%db%glstat_dt > 0.0_wp .and. &
@@ -225,7 +260,7 @@ contains
             end if
          end if
          ! ---- energies at t(n)
-         ke = kinetic_energy(model%nn, model%mass, vold, model%v)
+         ke = kinetic_energy(model%nn, model%mass, vold, model%v) + krot
          wrig = 0.0_wp
          if (allocated(model%rigid)) then
             ke = ke + model%rigid%ke_corr
@@ -277,6 +312,38 @@ contains
          call ms_endmas_report(model)
       end if
    end subroutine scaled_mass
+
+   !> Rotations of the shell nodes, the central difference as for the translations:
+   !> w(n+1/2) = w(n-1/2) + dtavg m(n)/I (the lumped rotary inertia I is a scalar per node,
+   !> so the update is the same in any axes), then DOFRX/RY/RZ and the prescribed rotations.
+   !> krot = 1/2 I w(n-1/2).w(n+1/2), the rotational kinetic energy at t(n) (as for the
+   !> translations); the work of the constraint moments, I (w - w_free).(w(n-1/2) + w)/2,
+   !> enters wcon. (The nodes carry no rotation angle: the Belytschko-Lin-Tsay shell needs
+   !> only the angular velocities.)
+   subroutine rotation_step(model, t, dt, dtavg, wold, krot, wcon)
+      type(model_t), intent(inout) :: model
+      real(wp), intent(in) :: t, dt, dtavg
+      real(wp), intent(inout) :: wold(:, :)
+      real(wp), intent(out) :: krot
+      real(wp), intent(inout) :: wcon
+      real(wp) :: wf(3)
+      integer :: i
+      wold = model%w
+      do i = 1, model%nn
+         if (model%rinert(i) > 0.0_wp) &
+            model%w(:, i) = model%w(:, i) + dtavg*model%mom(:, i)/model%rinert(i)
+      end do
+      model%mom = model%w       ! (the free w, kept for the constraint work below)
+      call apply_spc_rot(model, model%w)
+      call apply_prescribed_rot(model, t, dt, dtavg, wold, model%w)
+      krot = 0.0_wp
+      do i = 1, model%nn
+         krot = krot + 0.5_wp*model%rinert(i)*dot_product(wold(:, i), model%w(:, i))
+         wf = model%mom(:, i)
+         if (any(wf /= model%w(:, i))) wcon = wcon + 0.5_wp*model%rinert(i)* &
+            dot_product(model%w(:, i) - wf, wold(:, i) + model%w(:, i))
+      end do
+   end subroutine rotation_step
 
    !> Positions x(n+1) = x(n) + dt(n+1/2) v(n+1/2): the cycle boundary.
    subroutine x_advance(self, model, ck)

@@ -1,0 +1,217 @@
+#!/usr/bin/python3
+"""Shell test decks (mm, ms, kg, GPa): a flat rectangular plate of Belytschko-Lin-Tsay
+shells, nx by ny elements, length L along x, width B along y, thickness T.
+
+  gen_shell_deck.py cantilever NX NY [OUT]   clamped at x = 0 (all six DOF), initial
+      transverse velocity in the shape of the first cantilever mode (Euler-Bernoulli,
+      PR = 0 so that beam and plate theory agree), tip nodes in nodout
+  gen_shell_deck.py patch|patch_tri [OUT]    membrane patch test (MacNeal-Harder 1985), its
+      plane rotated out of x-y; the four corners driven with the velocity of a uniform
+      velocity gradient, the four inner nodes free (patch_tri: the inner quadrilateral cut
+      into two triangles N4 = N3; patch_plastic: *MAT_PLASTIC_KINEMATIC (SIGY 0.25, ETAN 0)
+      stretched to 5 % with *CONTROL_SHELL ISTUPD = 1)
+  gen_shell_deck.py rotation [OUT]           a free plate spinning as a rigid body about an
+      in-plane axis (initial velocity omega x r): no strain, internal energy 0
+"""
+import math
+import sys
+
+E, RHO = 210.0, 7.85e-6
+
+
+def head(title, tend, dplot, dhist, hist_nodes, pr=0.0, extra=''):
+    s = ['*KEYWORD', '*TITLE', title,
+         '*CONTROL_TERMINATION', f'{tend:10.4f}',
+         '*CONTROL_TIMESTEP', '$   DTINIT    TSSFAC', '       0.0    0.9000',
+         '*DATABASE_GLSTAT', f'{dhist:10.6f}',
+         '*DATABASE_NODOUT', f'{dhist:10.6f}',
+         '*DATABASE_BINARY_D3PLOT', f'{dplot:10.6f}',
+         '*DATABASE_HISTORY_NODE', ''.join(f'{n:10d}' for n in hist_nodes),
+         '*PART', 'plate', '         1         1         1',
+         '*SECTION_SHELL',
+         '$    SECID    ELFORM      SHRF       NIP',
+         '         1         2  0.833333         3',
+         '$       T1',
+         '       1.0',
+         '*MAT_ELASTIC', '$      MID        RO         E        PR',
+         f'         1{RHO:10.3e}{E:10.1f}{pr:10.3f}']
+    if extra:
+        s.append(extra)
+    return s
+
+
+def grid(nx, ny, lx, ly):
+    nodes, elems = [], []
+    for j in range(ny + 1):
+        for i in range(nx + 1):
+            nodes.append((j*(nx + 1) + i + 1, lx*i/nx, ly*j/ny, 0.0))
+    for j in range(ny):
+        for i in range(nx):
+            n1 = j*(nx + 1) + i + 1
+            elems.append((j*nx + i + 1, n1, n1 + 1, n1 + nx + 2, n1 + nx + 1))
+    return nodes, elems
+
+
+def node_cards(nodes):
+    out = ['*NODE']
+    for n, x, y, z in nodes:
+        out.append(f'{n:8d}{x:16.8f}{y:16.8f}{z:16.8f}')
+    return out
+
+
+def elem_cards(elems):
+    out = ['*ELEMENT_SHELL']
+    for e in elems:
+        out.append(''.join(f'{k:8d}' for k in (e[0], 1) + tuple(e[1:])))
+    return out
+
+
+def cantilever(nx, ny):
+    L, B = 100.0, 10.0
+    nodes, elems = grid(nx, ny, L, B)
+    bl = 1.8751040687
+    sig = (math.cosh(bl) + math.cos(bl))/(math.sinh(bl) + math.sin(bl))
+
+    def phi(x):
+        a = bl*x/L
+        return 0.5*(math.cosh(a) - math.cos(a) - sig*(math.sinh(a) - math.sin(a)))
+
+    tip = [j*(nx + 1) + nx + 1 for j in range(ny + 1)]
+    s = head(f'Cantilever plate {nx}x{ny} BT shells, first mode', 15.0, 1.0, 0.01, tip[:1])
+    s += node_cards(nodes) + elem_cards(elems)
+    s += ['*INITIAL_VELOCITY_NODE']
+    v0 = 1.0e-3        # mm/ms: tip velocity 1e-3 (small rotations)
+    for n, x, y, z in nodes:
+        if x > 0.0:
+            s.append(f'{n:10d}{0.0:10.4g}{0.0:10.4g}{v0*phi(x):10.3e}')
+    s += ['*SET_NODE_LIST', '         1']
+    clamp = [j*(nx + 1) + 1 for j in range(ny + 1)]
+    for k in range(0, len(clamp), 8):
+        s.append(''.join(f'{n:10d}' for n in clamp[k:k + 8]))
+    s += ['*BOUNDARY_SPC_SET', '         1         0         1         1         1'
+          '         1         1         1', '*END']
+    return s
+
+
+def rotation_matrix(axis, deg):
+    """rotation by deg degrees about axis (Rodrigues)"""
+    n = math.sqrt(sum(a*a for a in axis))
+    k = [a/n for a in axis]
+    c, s = math.cos(math.radians(deg)), math.sin(math.radians(deg))
+    kx = [[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]]
+    return [[(1.0 if i == j else 0.0)*c + s*kx[i][j] + (1 - c)*k[i]*k[j] for j in range(3)]
+            for i in range(3)]
+
+
+def mat_vec(a, v):
+    return [sum(a[i][j]*v[j] for j in range(3)) for i in range(3)]
+
+
+# MacNeal & Harder (1985) membrane patch, 0.24 x 0.12 scaled to mm (x100), rotated out of
+# the x-y plane; its inner quadrilateral is cut into two triangles (N4 = N3) with tri = True
+PATCH_NODES = [(0, 0), (24, 0), (24, 12), (0, 12), (4, 2), (18, 3), (16, 8), (8, 8)]
+PATCH_QUADS = [(1, 2, 6, 5), (2, 3, 7, 6), (3, 4, 8, 7), (4, 1, 5, 8)]
+PATCH_GRAD = [[1.0e-3, 6.0e-4], [2.0e-4, -5.0e-4]]   # in-plane velocity gradient, 1/ms
+PATCH_GRAD_PLASTIC = [[5.0e-2, 1.0e-2], [0.0, -1.0e-2]]   # to 5 % strain: yielding
+PATCH_AXIS, PATCH_DEG = (1.0, 2.0, 3.0), 35.0
+
+
+def patch(tri, plastic=False):
+    r = rotation_matrix(PATCH_AXIS, PATCH_DEG)
+    lg = [[PATCH_GRAD[i][j] if i < 2 and j < 2 else 0.0 for j in range(3)] for i in range(3)]
+    # v = R Lg R^T x (x: rotated coordinates)
+    rt = [[r[j][i] for j in range(3)] for i in range(3)]
+    l3 = [[sum(r[i][a]*lg[a][b]*rt[b][j] for a in range(3) for b in range(3))
+           for j in range(3)] for i in range(3)]
+    nodes = []
+    for k, (x, y) in enumerate(PATCH_NODES):
+        p = mat_vec(r, [x, y, 0.0])
+        # the coordinates as dynx reads them (20-column fields), so that the velocity
+        # field below is linear in them to round-off
+        nodes.append((k + 1,) + tuple(float(f'{c:20.13e}') for c in p))
+    quads = list(PATCH_QUADS)
+    if tri:
+        quads += [(5, 6, 7, 7), (5, 7, 8, 8)]
+    else:
+        quads += [(5, 6, 7, 8)]
+    elems = [(k + 1,) + q for k, q in enumerate(quads)]
+    kind = 'triangles' if tri else 'quadrilaterals'
+    grad = PATCH_GRAD_PLASTIC if plastic else PATCH_GRAD
+    lg = [[grad[i][j] if i < 2 and j < 2 else 0.0 for j in range(3)] for i in range(3)]
+    l3 = [[sum(r[i][a]*lg[a][b]*rt[b][j] for a in range(3) for b in range(3))
+           for j in range(3)] for i in range(3)]
+    s = head(f'Membrane patch test (MacNeal-Harder, rotated; inner {kind})', 1.0, 0.5, 0.05,
+             [5, 6, 7, 8], pr=0.3)
+    if plastic:      # *MAT_PLASTIC_KINEMATIC, perfectly plastic, ISTUPD = 1
+        k = s.index('*MAT_ELASTIC')
+        s[k:k + 3] = ['*MAT_PLASTIC_KINEMATIC',
+                      '$      MID        RO         E        PR      SIGY      ETAN      BETA',
+                      f'         1{RHO:10.3e}{E:10.1f}     0.300      0.25       0.0       0.0',
+                      '*CONTROL_SHELL', '$   WRPANG     ESORT     IRNXX    ISTUPD',
+                      '        20         0        -1         1']
+    s += ['*NODE +'] + [f'{n:20d}{x:20.13e}{y:20.13e}{z:20.13e}' for n, x, y, z in nodes]
+    s += elem_cards(elems)
+    s += ['*DEFINE_CURVE', '         1', f'{0.0:20.4f}{1.0:20.4f}', f'{100.0:20.4f}{1.0:20.4f}']
+    s += ['*INITIAL_VELOCITY_NODE +']
+    vel = {}
+    for n, x, y, z in nodes:
+        v = mat_vec(l3, [x, y, z])
+        vel[n] = v
+        s.append(f'{n:20d}' + ''.join(f'{c:20.13e}' for c in v))
+    # a zero component is an SPC (SF = 0 means 1 on *BOUNDARY_PRESCRIBED_MOTION)
+    s += ['*BOUNDARY_PRESCRIBED_MOTION_NODE +']
+    fix = []
+    for n in (1, 2, 3, 4):
+        for d in range(3):
+            if vel[n][d] == 0.0:
+                fix.append((n, d))
+            else:
+                s.append(f'{n:20d}{d + 1:20d}{0:20d}{1:20d}{vel[n][d]:20.13e}')
+    if fix:
+        s += ['*BOUNDARY_SPC_NODE']
+        for n, d in fix:
+            s.append(f'{n:10d}         0' + ''.join('         1' if k == d else '         0'
+                                                  for k in range(3)))
+    s.append('*END')
+    return s
+
+
+def rotation():
+    """a 4x2 plate spinning about an in-plane axis through its centre"""
+    nodes, elems = grid(4, 2, 40.0, 20.0)
+    om = (0.05, 0.03, 0.0)       # rad/ms, about an axis in the plane z = 0
+    xc = (20.0, 10.0, 0.0)
+    s = head('Free plate in rigid rotation (BT shells)', 20.0, 10.0, 0.5, [1, 15])
+    s += node_cards(nodes) + elem_cards(elems)
+    s += ['*INITIAL_VELOCITY_NODE +']
+    for n, x, y, z in nodes:
+        r = (x - xc[0], y - xc[1], z - xc[2])
+        v = (om[1]*r[2] - om[2]*r[1], om[2]*r[0] - om[0]*r[2], om[0]*r[1] - om[1]*r[0])
+        s.append(f'{n:20d}' + ''.join(f'{c:20.13e}' for c in v + om))
+    s.append('*END')
+    return s
+
+
+def main():
+    kind = sys.argv[1]
+    if kind == 'cantilever':
+        lines = cantilever(int(sys.argv[2]), int(sys.argv[3]))
+        out = sys.argv[4] if len(sys.argv) > 4 else None
+    elif kind in ('patch', 'patch_tri', 'patch_plastic'):
+        lines = patch(kind == 'patch_tri', kind == 'patch_plastic')
+        out = sys.argv[2] if len(sys.argv) > 2 else None
+    elif kind == 'rotation':
+        lines = rotation()
+        out = sys.argv[2] if len(sys.argv) > 2 else None
+    else:
+        raise SystemExit('unknown kind ' + kind)
+    text = '\n'.join(lines) + '\n'
+    if out:
+        with open(out, 'w') as f:
+            f.write(text)
+    else:
+        sys.stdout.write(text)
+
+
+if __name__ == '__main__':
+    main()
