@@ -157,15 +157,16 @@ contains
    !> (dx_contact%contact_work): W += f(n).dtavg (v(n-1/2) + v(n+1/2))/2, interfaces, passes
    !> and slave nodes in order; f on the slave node is its pass force, on the master
    !> segment's nodes -N_j times it. slave + master over the interfaces is the total work
-   !> to round-off. An MPI run calls it on the global model after contact_work (every rank
+   !> to round-off. hslave/hmaster hold the v(n+1/2) half of this cycle's work, which
+   !> sleout leaves out at t(n) as glstat's sliding energy does. An MPI run calls it on the global model after contact_work (every rank
    !> holds every pass's results and the contact nodes' velocities there).
    subroutine interface_work(cs, vold, v, dtavg)
       type(contact_set_t), intent(inout) :: cs
       real(wp), intent(in) :: vold(:, :), v(:, :), dtavg
-      real(wp) :: ws, wm, fsl(3)
+      real(wp) :: ws, wm, hs, hm, fsl(3)
       integer :: f, j, i, k, sb, n
       do f = 1, size(cs%iface)
-         ws = 0.0_wp; wm = 0.0_wp
+         ws = 0.0_wp; wm = 0.0_wp; hs = 0.0_wp; hm = 0.0_wp
          do j = 1, size(cs%iface(f)%pass)
             associate (p => cs%iface(f)%pass(j))
                do i = 1, p%nnode
@@ -174,15 +175,19 @@ contains
                   k = p%node(i)
                   fsl = p%rval(REC_FSL + 1:REC_FSL + 3, i)
                   ws = ws + dot_product(fsl, vold(:, k) + v(:, k))
+                  hs = hs + dot_product(fsl, v(:, k))
                   do n = 1, p%nsn(sb)
                      k = p%seg(n, sb)
                      wm = wm - p%rval(REC_NB + n, i)*dot_product(fsl, vold(:, k) + v(:, k))
+                     hm = hm - p%rval(REC_NB + n, i)*dot_product(fsl, v(:, k))
                   end do
                end do
             end associate
          end do
          cs%iface(f)%wslave = cs%iface(f)%wslave + 0.5_wp*dtavg*ws
          cs%iface(f)%wmaster = cs%iface(f)%wmaster + 0.5_wp*dtavg*wm
+         cs%iface(f)%hslave = 0.5_wp*dtavg*hs
+         cs%iface(f)%hmaster = 0.5_wp*dtavg*hm
       end do
    end subroutine interface_work
 

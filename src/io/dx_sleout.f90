@@ -62,8 +62,9 @@ contains
          text = nl//trim(line)//nl
          if (allocated(model%contact)) then
             do i = 1, size(model%contact%iface)
-               es = -model%contact%iface(i)%wslave + 0.0_wp    ! (no -0)
-               em = -model%contact%iface(i)%wmaster + 0.0_wp
+               ! at t(n): the work without the v(n+1/2) half of this cycle's (as glstat)
+               es = -(model%contact%iface(i)%wslave - model%contact%iface(i)%hslave) + 0.0_wp
+               em = -(model%contact%iface(i)%wmaster - model%contact%iface(i)%hmaster) + 0.0_wp
                ts = ts + es; tm = tm + em
                write(line, '(" interface=",i10,"   slave= ",'//NUM//',"   master= ",'//NUM// &
                      ',"   frictional= ",'//NUM//',"   total= ",'//NUM//')', iostat=ios, &

@@ -82,6 +82,9 @@ module dx_contact_types
       !> work of the contact forces on the slave and on the master nodes since t = 0
       !> (centred, as contact_set_t%work; sleout: dx_energy_sums%interface_work)
       real(wp) :: wslave = 0.0_wp, wmaster = 0.0_wp
+      !> the v(n+1/2) half of this cycle's work (sleout books W - h at t(n), as glstat's
+      !> sliding energy: dx_contact%contact_work); recomputed every cycle, not dumped
+      real(wp) :: hslave = 0.0_wp, hmaster = 0.0_wp
       integer :: rank = -1                     !< MPI runs: the rank computing a local pair
                                                !< (-1: strips)
    end type contact_iface_t

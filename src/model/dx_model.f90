@@ -254,10 +254,8 @@ module dx_model
       real(wp), allocatable :: mass(:)         !< (nn) lumped mass (with added mass, if any)
       !> mass scaling (*CONTROL_TIMESTEP DT2MS; dx_mass_scaling), allocated only with it:
       !> added_mass(ne): the mass added to each element (dense global element index; < 0:
-      !> removed, DT2MS > 0 at the first cycle), spread over its nodes as the lumped mass is;
-      !> mass0(nn): the lumped nodal mass without it (mass = mass0 + the spread added_mass)
+      !> removed, DT2MS > 0 at the first cycle), spread over its nodes as the lumped mass is
       real(wp), allocatable :: added_mass(:)
-      real(wp), allocatable :: mass0(:)
       !> rotational degrees of freedom (allocated only when the deck has shells): angular
       !> velocity at t(n+1/2) after a cycle, moment (external - internal), rotary inertia
       real(wp), allocatable :: w(:, :)         !< (3, nn) angular velocity (global axes)
