@@ -70,7 +70,8 @@ module dx_card
       type(param_t), allocatable :: params(:)
       integer :: ic = 1                     !< current card (index into blk%cards)
       integer :: k = 0                      !< last field read on the current card
-      integer :: w(8) = 10                  !< field widths of the current card
+      integer :: w(16) = 10                 !< field widths of the current card (1:nw)
+      integer :: nw = 8                     !< fields on a card
       type(field_pos_t), allocatable :: seen(:)
       integer :: nseen = 0
       type(error_t), allocatable :: error   !< the first error
@@ -82,10 +83,20 @@ module dx_card
       procedure :: int => cursor_int        !< next field as an integer
       procedure :: real => cursor_real      !< next field as a real
       procedure :: fail => cursor_fail      !< error at a field read before (by name)
+      procedure :: fail_here => cursor_fail_here  !< error at the field last read or skipped
       procedure :: fail_block => cursor_fail_block  !< error about the keyword (no field)
       procedure :: fail_card => cursor_fail_card    !< error about a card as a whole
       procedure :: max_cards => cursor_max_cards    !< error when the block has > nmax cards
       procedure :: zero => cursor_zero      !< next field as a real that must be blank or 0
+      procedure :: zero_int => cursor_zero_int    !< next field: an integer option, blank or 0
+      procedure :: zero_real => cursor_zero_real  !< next field: a real option, blank or 0
+      procedure :: id => cursor_id          !< next field as an id > 0
+      procedure :: list_id => cursor_list_id      !< next field of an id list (>= 0, 0: none)
+      procedure :: need => cursor_need      !< error when the block has fewer than n cards
+      procedure :: at => cursor_at          !< the next read is field k of the current card
+      procedure :: widths => cursor_widths  !< the field widths of the cards (fixed format)
+      procedure :: ncard => cursor_ncard    !< number of cards in the block
+      procedure :: text_field => cursor_text_field  !< field k (widths w) of the card as text
       procedure :: ok => cursor_ok          !< no error so far
       procedure :: done => cursor_done      !< hand the first error (if any) to the caller
       procedure :: title => cursor_title    !< the _TITLE card text
@@ -106,9 +117,49 @@ contains
       c%params = params
       c%ic = data_start(blk)
       c%k = 0
-      c%w = std_widths(blk, 8)
+      c%w(1:8) = std_widths(blk, 8)
+      c%nw = 8
       allocate(c%seen(16))
    end subroutine open_card
+
+   !> Field widths of the cards from now on (a *NODE card: 8, 16, 16, 16, 8, 8).
+   subroutine cursor_widths(c, w)
+      class(card_t), intent(inout) :: c
+      integer, intent(in) :: w(:)
+      c%nw = min(size(w), size(c%w))
+      c%w(1:c%nw) = w(1:c%nw)
+   end subroutine cursor_widths
+
+   !> The next read is field k of the current card.
+   subroutine cursor_at(c, k)
+      class(card_t), intent(inout) :: c
+      integer, intent(in) :: k
+      c%k = k - 1
+   end subroutine cursor_at
+
+   !> Field k of the current card as text, trimmed, with its own widths w (a heading in
+   !> columns 11-80: k = 2, w = [10, 70]); a C *PARAMETER is substituted. The position of
+   !> the cursor does not move.
+   subroutine cursor_text_field(c, k, w, text)
+      class(card_t), intent(in) :: c
+      integer, intent(in) :: k, w(:)
+      character(:), allocatable, intent(out) :: text
+      call field_str(c%file, c%params, c%blk, c%ic, k, w, text)
+   end subroutine cursor_text_field
+
+   !> Number of cards of the block (a title or id card included).
+   pure integer function cursor_ncard(c)
+      class(card_t), intent(in) :: c
+      cursor_ncard = c%blk%n
+   end function cursor_ncard
+
+   !> Error about the keyword when the block holds fewer than n cards ('missing card ...').
+   subroutine cursor_need(c, n, what)
+      class(card_t), intent(inout) :: c
+      integer, intent(in) :: n
+      character(*), intent(in) :: what
+      if (c%blk%n < n) call c%fail_block(0, what)
+   end subroutine cursor_need
 
    !> Go to the next data card (field 0).
    subroutine cursor_next(c)
@@ -169,7 +220,18 @@ contains
       class(card_t), intent(inout) :: c
       character(*), intent(in) :: name
       type(field_pos_t), allocatable :: t(:)
+      integer :: j
       if (.not. allocated(c%seen)) allocate(c%seen(16))
+      ! one entry a name (the last read): a list keyword of many cards keeps a short table
+      do j = c%nseen, 1, -1
+         if (len(c%seen(j)%name) == len(name)) then
+            if (c%seen(j)%name == name) then
+               c%seen(j)%ic = c%ic
+               c%seen(j)%k = c%k
+               return
+            end if
+         end if
+      end do
       if (c%nseen == size(c%seen)) then
          allocate(t(2*size(c%seen)))
          t(1:c%nseen) = c%seen(1:c%nseen)
@@ -190,8 +252,8 @@ contains
       val = def
       if (allocated(c%error)) return
       call remember(c, name)
-      if (c%k > size(c%w)) return
-      call field_int(c%file, c%params, c%blk, c%ic, c%k, c%w, name, def, val, c%error)
+      if (c%k > c%nw) return
+      call field_int(c%file, c%params, c%blk, c%ic, c%k, c%w(1:c%nw), name, def, val, c%error)
       if (allocated(c%error)) return
       if (present(min)) then
          if (val < min) call c%fail(name, 'must be >= '//str(min)//', got '//str(val))
@@ -212,8 +274,9 @@ contains
       val = def
       if (allocated(c%error)) return
       call remember(c, name)
-      if (c%k > size(c%w)) return
-      call field_real(c%file, c%params, c%blk, c%ic, c%k, c%w, name, def, val, c%error)
+      if (c%k > c%nw) return
+      call field_real(c%file, c%params, c%blk, c%ic, c%k, c%w(1:c%nw), name, def, val, &
+                      c%error)
       if (allocated(c%error)) return
       if (present(min)) then
          if (.not. (val >= min)) call c%fail(name, 'must be >= '//bound(min)//', got '//rstr(val))
@@ -246,13 +309,21 @@ contains
       if (allocated(c%error)) return
       do j = c%nseen, 1, -1
          if (c%seen(j)%name == name) then
-            call error_at_field(c%file, c%blk, c%seen(j)%ic, c%seen(j)%k, c%w, name, what, &
-                                c%error)
+            call error_at_field(c%file, c%blk, c%seen(j)%ic, c%seen(j)%k, c%w(1:c%nw), name, &
+                                what, c%error)
             return
          end if
       end do
       call error_at_block(c%file, c%blk, data_start(c%blk), 'field '//name//': '//what, c%error)
    end subroutine cursor_fail
+
+   !> Error at the current field (the last read or skipped) of the current card, named NAME.
+   subroutine cursor_fail_here(c, name, what)
+      class(card_t), intent(inout) :: c
+      character(*), intent(in) :: name, what
+      if (allocated(c%error)) return
+      call error_at_field(c%file, c%blk, c%ic, max(c%k, 1), c%w(1:c%nw), name, what, c%error)
+   end subroutine cursor_fail_here
 
    !> Error about card ic as a whole (the card is shown, no caret).
    subroutine cursor_fail_card(c, ic, what)
@@ -281,6 +352,57 @@ contains
       if (c%ok() .and. v /= 0.0_wp) call c%fail(name, 'value '//rstr(v)//' is not supported: '// &
                                                 why)
    end subroutine cursor_zero
+
+   !> Next field NAME: an integer option dynx lacks, error unless blank or 0 ('nonzero value
+   !> V is not supported: why').
+   subroutine cursor_zero_int(c, name, why)
+      class(card_t), intent(inout) :: c
+      character(*), intent(in) :: name, why
+      integer :: v
+      call c%int(name, 0, v)
+      if (c%ok() .and. v /= 0) call c%fail(name, 'nonzero value '//str(v)// &
+                                           ' is not supported: '//why)
+   end subroutine cursor_zero_int
+
+   !> Next field NAME: a real option dynx lacks, error unless blank or 0.
+   subroutine cursor_zero_real(c, name, why)
+      class(card_t), intent(inout) :: c
+      character(*), intent(in) :: name, why
+      real(wp) :: v
+      call c%real(name, 0.0_wp, v)
+      if (c%ok() .and. v /= 0.0_wp) call c%fail(name, 'nonzero value '//rstr(v)// &
+                                                ' is not supported: '//why)
+   end subroutine cursor_zero_real
+
+   !> Next field as an id NAME > 0 (blank: 0, an error); the message is what (default 'an id
+   !> > 0 is required') and the value read.
+   subroutine cursor_id(c, name, val, what)
+      class(card_t), intent(inout) :: c
+      character(*), intent(in) :: name
+      integer, intent(out) :: val
+      character(*), intent(in), optional :: what
+      call c%int(name, 0, val)
+      if (.not. c%ok() .or. val > 0) return
+      if (present(what)) then
+         call c%fail(name, what//', got '//str(val))
+      else
+         call c%fail(name, 'an id > 0 is required, got '//str(val))
+      end if
+   end subroutine cursor_id
+
+   !> Next field of an id list NAME: an integer >= 0 (blank or 0: no id); an id > 0 is
+   !> appended to ids(1:n).
+   subroutine cursor_list_id(c, name, ids, n)
+      class(card_t), intent(inout) :: c
+      character(*), intent(in) :: name
+      integer, intent(inout) :: ids(:), n
+      integer :: id
+      call c%int(name, 0, id, min=0)
+      if (c%ok() .and. id > 0) then
+         n = n + 1
+         ids(n) = id
+      end if
+   end subroutine cursor_list_id
 
    !> Error about the keyword at data card ic (0: the keyword line), no card shown.
    subroutine cursor_fail_block(c, ic, what)
