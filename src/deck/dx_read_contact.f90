@@ -12,8 +12,7 @@ module dx_read_contact
    use dx_kinds, only: wp
    use dx_error, only: error_t
    use dx_strings, only: str, rstr
-   use dx_deck_cards, only: deck_t, block_t, get_int, get_real, get_text, field_error, &
-                            block_error, std_widths, data_start, check_max_cards
+   use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, data_start
    use dx_deck_registry, only: registry_t
    use dx_model_input, only: model_input_t
    use dx_contact_input, only: contact_in_t, box_in_t, CT_NODES_TO_SURFACE, &
@@ -47,202 +46,146 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      type(contact_in_t) :: c
-      integer :: w(8), i0, c1, c2, c3, ca
+      type(contact_in_t) :: ct
+      type(card_t) :: c
+      integer :: i0
       character(:), allocatable :: t
-      w = std_widths(blk, 8)
+      call deck_cursor(deck, blk, c)
       i0 = data_start(blk)
-      c%key = blk%name
-      c%automatic = index(blk%base, 'AUTOMATIC') > 0
+      ct%key = blk%name
+      ct%automatic = index(blk%base, 'AUTOMATIC') > 0
       select case (blk%base)
       case ('CONTACT_NODES_TO_SURFACE', 'CONTACT_AUTOMATIC_NODES_TO_SURFACE')
-         c%kind = CT_NODES_TO_SURFACE
+         ct%kind = CT_NODES_TO_SURFACE
       case ('CONTACT_ONE_WAY_SURFACE_TO_SURFACE', 'CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE')
-         c%kind = CT_ONE_WAY
+         ct%kind = CT_ONE_WAY
       case ('CONTACT_AUTOMATIC_SINGLE_SURFACE')
-         c%kind = CT_SINGLE_SURFACE
+         ct%kind = CT_SINGLE_SURFACE
       case default
-         c%kind = CT_SURFACE_TO_SURFACE
+         ct%kind = CT_SURFACE_TO_SURFACE
       end select
       if (blk%opt_id .or. blk%opt_title) then
-         call get_int(deck, blk, 1, 1, w, 'CID', 0, c%label, error)
-         if (allocated(error)) return
-         if (c%label < 0) then
-            call field_error(deck, blk, 1, 1, w, 'CID', 'must be >= 0', error); return
-         end if
-         call get_text(deck, blk, 1, 2, [10, 70], t)
-         c%title = t
+         call c%seek(1)
+         call c%int('CID', 0, ct%label, min=0)
+         call c%text_field(2, [10, 70], t)       ! HEADING: columns 11-80
+         ct%title = t
       end if
-      if (blk%n < i0) then
-         call block_error(deck, blk, 0, 'missing card 1 (SSID MSID SSTYP MSTYP SBOXID '// &
-                          'MBOXID SPR MPR)', error)
-         return
-      end if
-      c1 = i0; c2 = i0 + 1; c3 = i0 + 2; ca = i0 + 3
-      c%ifile = blk%ifile
-      c%line = blk%cards(c1)%line
+      call c%need(i0, 'missing card 1 (SSID MSID SSTYP MSTYP SBOXID MBOXID SPR MPR)')
+      call c%done(error)
+      if (allocated(error)) return
+      ct%ifile = blk%ifile
+      ct%line = blk%cards(i0)%line
       ! ---- card 1
-      call get_int(deck, blk, c1, 1, w, 'SSID', 0, c%ssid, error); if (allocated(error)) return
-      call get_int(deck, blk, c1, 2, w, 'MSID', 0, c%msid, error); if (allocated(error)) return
-      call get_int(deck, blk, c1, 3, w, 'SSTYP', 0, c%sstyp, error)
-      if (allocated(error)) return
-      call get_int(deck, blk, c1, 4, w, 'MSTYP', 0, c%mstyp, error)
-      if (allocated(error)) return
-      call get_int(deck, blk, c1, 5, w, 'SBOXID', 0, c%sboxid, error)
-      if (allocated(error)) return
-      call get_int(deck, blk, c1, 6, w, 'MBOXID', 0, c%mboxid, error)
-      if (allocated(error)) return
-      call get_int(deck, blk, c1, 7, w, 'SPR', 0, c%spr, error); if (allocated(error)) return
-      call get_int(deck, blk, c1, 8, w, 'MPR', 0, c%mpr, error); if (allocated(error)) return
-      call check_types(deck, blk, c1, w, c, error)
-      if (allocated(error)) return
+      call c%seek(i0)
+      call c%int('SSID', 0, ct%ssid)
+      call c%int('MSID', 0, ct%msid)
+      call c%int('SSTYP', 0, ct%sstyp)
+      call c%int('MSTYP', 0, ct%mstyp)
+      call c%int('SBOXID', 0, ct%sboxid)
+      call c%int('MBOXID', 0, ct%mboxid)
+      call c%int('SPR', 0, ct%spr)
+      call c%int('MPR', 0, ct%mpr)
+      if (c%ok()) call check_types(c, ct)
       ! ---- card 2
-      if (blk%n >= c2) then
-         c%line2 = blk%cards(c2)%line
-         call get_nonneg(c2, 1, 'FS', 0.0_wp, c%fs); if (allocated(error)) return
-         call get_nonneg(c2, 2, 'FD', 0.0_wp, c%fd); if (allocated(error)) return
-         call get_nonneg(c2, 3, 'DC', 0.0_wp, c%dc); if (allocated(error)) return
-         call get_nonneg(c2, 4, 'VC', 0.0_wp, c%vc); if (allocated(error)) return
-         call get_nonneg(c2, 5, 'VDC', 0.0_wp, c%vdc); if (allocated(error)) return
-         call get_int(deck, blk, c2, 6, w, 'PENCHK', 0, c%penchk, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, c2, 7, w, 'BT', 0.0_wp, c%bt, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, c2, 8, w, 'DT', 1.0e20_wp, c%dt, error)
-         if (allocated(error)) return
-         if (c%dt == 0.0_wp) c%dt = 1.0e20_wp
-         if (c%dt < 0.0_wp) then
-            call field_error(deck, blk, c2, 8, w, 'DT', 'a negative death time (deactivation '// &
-                             'during dynamic relaxation) is not supported', error)
-            return
-         end if
-         if (c%fd > 0.0_wp .and. c%fs == 0.0_wp) then
-            call field_error(deck, blk, c2, 2, w, 'FD', 'FD > 0 needs FS > 0 (with FS = 0 '// &
-                             'LS-DYNA ignores friction)', error)
-            return
-         end if
+      if (blk%n >= i0 + 1 .and. c%ok()) then
+         call c%next()
+         ct%line2 = c%card_line()
+         call c%real('FS', 0.0_wp, ct%fs, min=0.0_wp)
+         call c%real('FD', 0.0_wp, ct%fd, min=0.0_wp)
+         call c%real('DC', 0.0_wp, ct%dc, min=0.0_wp)
+         call c%real('VC', 0.0_wp, ct%vc, min=0.0_wp)
+         call c%real('VDC', 0.0_wp, ct%vdc, min=0.0_wp)
+         call c%int('PENCHK', 0, ct%penchk)
+         call c%real('BT', 0.0_wp, ct%bt)
+         call c%real('DT', 1.0e20_wp, ct%dt)
+         if (ct%dt == 0.0_wp) ct%dt = 1.0e20_wp
+         if (c%ok() .and. ct%dt < 0.0_wp) call c%fail('DT', 'a negative death time '// &
+            '(deactivation during dynamic relaxation) is not supported')
+         if (c%ok() .and. ct%fd > 0.0_wp .and. ct%fs == 0.0_wp) call c%fail('FD', 'FD > 0 '// &
+            'needs FS > 0 (with FS = 0 LS-DYNA ignores friction)')
       end if
       ! ---- card 3
-      if (blk%n >= c3) then
-         c%line3 = blk%cards(c3)%line
-         call get_scale(c3, 1, 'SFS', c%sfs); if (allocated(error)) return
-         call get_scale(c3, 2, 'SFM', c%sfm); if (allocated(error)) return
-         call get_real(deck, blk, c3, 3, w, 'SST', 0.0_wp, c%sst, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, c3, 4, w, 'MST', 0.0_wp, c%mst, error)
-         if (allocated(error)) return
-         call get_scale(c3, 5, 'SFST', c%sfst); if (allocated(error)) return
-         call get_scale(c3, 6, 'SFMT', c%sfmt); if (allocated(error)) return
-         call get_scale(c3, 7, 'FSF', c%fsf); if (allocated(error)) return
-         call get_scale(c3, 8, 'VSF', c%vsf); if (allocated(error)) return
+      if (blk%n >= i0 + 2 .and. c%ok()) then
+         call c%seek(i0 + 2)
+         ct%line3 = c%card_line()
+         call scale(c, 'SFS', ct%sfs)
+         call scale(c, 'SFM', ct%sfm)
+         call c%real('SST', 0.0_wp, ct%sst)
+         call c%real('MST', 0.0_wp, ct%mst)
+         call scale(c, 'SFST', ct%sfst)
+         call scale(c, 'SFMT', ct%sfmt)
+         call scale(c, 'FSF', ct%fsf)
+         call scale(c, 'VSF', ct%vsf)
       end if
       ! ---- optional card A
-      if (blk%n >= ca) then
-         call get_int(deck, blk, ca, 1, w, 'SOFT', 0, c%soft, error)
-         if (allocated(error)) return
-         if (c%soft /= 0 .and. c%soft /= 1) then
-            call field_error(deck, blk, ca, 1, w, 'SOFT', 'only SOFT = 0 (segment stiffness) '// &
-                             'and 1 (soft constraint) are supported, got '//str(c%soft), error)
-            return
-         end if
-         call get_real(deck, blk, ca, 2, w, 'SOFSCL', 0.1_wp, c%sofscl, error)
-         if (allocated(error)) return
-         if (c%sofscl == 0.0_wp) c%sofscl = 0.1_wp
-         if (c%sofscl < 0.0_wp) then
-            call field_error(deck, blk, ca, 2, w, 'SOFSCL', 'must be >= 0, got '// &
-                             rstr(c%sofscl), error)
-            return
-         end if
-         call get_int(deck, blk, ca, 7, w, 'BSORT', 10, c%bsort, error)
-         if (allocated(error)) return
-         if (c%bsort == 0) c%bsort = 10
-         c%bsort = abs(c%bsort)
+      if (blk%n >= i0 + 3 .and. c%ok()) then
+         call c%seek(i0 + 3)
+         call c%int('SOFT', 0, ct%soft)
+         if (c%ok() .and. ct%soft /= 0 .and. ct%soft /= 1) call c%fail('SOFT', 'only SOFT = '// &
+            '0 (segment stiffness) and 1 (soft constraint) are supported, got '//str(ct%soft))
+         call c%real('SOFSCL', 0.1_wp, ct%sofscl)
+         if (ct%sofscl == 0.0_wp) ct%sofscl = 0.1_wp
+         if (c%ok() .and. ct%sofscl < 0.0_wp) call c%fail('SOFSCL', 'must be >= 0, got '// &
+                                                          rstr(ct%sofscl))
+         call c%at(7)
+         call c%int('BSORT', 10, ct%bsort)
+         if (ct%bsort == 0) ct%bsort = 10
+         ct%bsort = abs(ct%bsort)
       end if
-      if (c%kind == CT_SINGLE_SURFACE) c%sfm = c%sfs
+      call c%done(error)
+      if (allocated(error)) return
+      if (ct%kind == CT_SINGLE_SURFACE) ct%sfm = ct%sfs
       if (.not. allocated(inp%contact%contacts)) allocate(inp%contact%contacts(0))
-      inp%contact%contacts = [inp%contact%contacts, c]
-
-   contains
-
-      subroutine get_nonneg(ic, k, name, def, val)
-         integer, intent(in) :: ic, k
-         character(*), intent(in) :: name
-         real(wp), intent(in) :: def
-         real(wp), intent(out) :: val
-         call get_real(deck, blk, ic, k, w, name, def, val, error)
-         if (allocated(error)) return
-         if (val < 0.0_wp) call field_error(deck, blk, ic, k, w, name, 'must be >= 0, got '// &
-                                            rstr(val), error)
-      end subroutine get_nonneg
-
-      !> scale factors: blank or 0 means 1 (LS-DYNA default)
-      subroutine get_scale(ic, k, name, val)
-         integer, intent(in) :: ic, k
-         character(*), intent(in) :: name
-         real(wp), intent(out) :: val
-         call get_real(deck, blk, ic, k, w, name, 1.0_wp, val, error)
-         if (allocated(error)) return
-         if (val == 0.0_wp) val = 1.0_wp
-         if (val < 0.0_wp) call field_error(deck, blk, ic, k, w, name, 'must be > 0, got '// &
-                                            rstr(val)//' (load curves are not supported)', error)
-      end subroutine get_scale
+      inp%contact%contacts = [inp%contact%contacts, ct]
    end subroutine read_contact
 
-   !> SSTYP/MSTYP against what the contact type accepts.
-   subroutine check_types(deck, blk, ic, w, c, error)
-      type(deck_t), intent(in) :: deck
-      type(block_t), intent(in) :: blk
-      integer, intent(in) :: ic, w(:)
-      type(contact_in_t), intent(inout) :: c
-      type(error_t), allocatable, intent(out) :: error
-      select case (c%sstyp)
+   !> the next field, a scale factor: blank or 0 means 1 (LS-DYNA default), < 0 (a load
+   !> curve in LS-DYNA) an error
+   subroutine scale(c, name, val)
+      type(card_t), intent(inout) :: c
+      character(*), intent(in) :: name
+      real(wp), intent(out) :: val
+      call c%real(name, 1.0_wp, val)
+      if (val == 0.0_wp) val = 1.0_wp
+      if (c%ok() .and. val < 0.0_wp) call c%fail(name, 'must be > 0, got '//rstr(val)// &
+                                                 ' (load curves are not supported)')
+   end subroutine scale
+
+   !> SSTYP/MSTYP against what the contact type accepts (card 1 read by the cursor).
+   subroutine check_types(c, ct)
+      type(card_t), intent(inout) :: c
+      type(contact_in_t), intent(inout) :: ct
+      select case (ct%sstyp)
       case (0, 2, 3)
       case (4)
-         if (c%kind /= CT_NODES_TO_SURFACE) then
-            call field_error(deck, blk, ic, 3, w, 'SSTYP', 'a node set (4) is a slave side '// &
-                             'of *CONTACT_NODES_TO_SURFACE only', error)
-            return
-         end if
+         if (ct%kind /= CT_NODES_TO_SURFACE) call c%fail('SSTYP', 'a node set (4) is a '// &
+            'slave side of *CONTACT_NODES_TO_SURFACE only')
       case (5)
-         if (c%kind /= CT_SINGLE_SURFACE) then
-            call field_error(deck, blk, ic, 3, w, 'SSTYP', '5 (all parts) is for single '// &
-                             'surface contact only', error)
-            return
-         end if
+         if (ct%kind /= CT_SINGLE_SURFACE) call c%fail('SSTYP', '5 (all parts) is for '// &
+                                                       'single surface contact only')
       case (1, 6)
-         call field_error(deck, blk, ic, 3, w, 'SSTYP', str(c%sstyp)//' (shell element '// &
-            'set / exempted part set) is not supported: use 0 segment set, 2 part set, '// &
-            '3 part, 4 node set or 5 all', error)
-         return
+         call c%fail('SSTYP', str(ct%sstyp)//' (shell element set / exempted part set) is '// &
+            'not supported: use 0 segment set, 2 part set, 3 part, 4 node set or 5 all')
       case default
-         call field_error(deck, blk, ic, 3, w, 'SSTYP', 'unknown set type '//str(c%sstyp)// &
-            ' (0 segment set, 2 part set, 3 part, 4 node set, 5 all)', error)
-         return
+         call c%fail('SSTYP', 'unknown set type '//str(ct%sstyp)//' (0 segment set, 2 part '// &
+                     'set, 3 part, 4 node set, 5 all)')
       end select
-      if (c%kind == CT_SINGLE_SURFACE) then
-         if (c%ssid == 0) c%sstyp = 5
+      if (.not. c%ok()) return
+      if (ct%kind == CT_SINGLE_SURFACE) then
+         if (ct%ssid == 0) ct%sstyp = 5
          return
       end if
-      if (c%ssid <= 0) then
-         call field_error(deck, blk, ic, 1, w, 'SSID', 'slave set id must be > 0, got '// &
-                          str(c%ssid), error)
-         return
-      end if
-      select case (c%mstyp)
+      if (ct%ssid <= 0) call c%fail('SSID', 'slave set id must be > 0, got '//str(ct%ssid))
+      select case (ct%mstyp)
       case (0, 2, 3)
       case (1, 4, 5, 6)
-         call field_error(deck, blk, ic, 4, w, 'MSTYP', str(c%mstyp)//' is not supported '// &
-            'for the master side: use 0 segment set, 2 part set or 3 part', error)
-         return
+         call c%fail('MSTYP', str(ct%mstyp)//' is not supported for the master side: use 0 '// &
+                     'segment set, 2 part set or 3 part')
       case default
-         call field_error(deck, blk, ic, 4, w, 'MSTYP', 'unknown set type '//str(c%mstyp)// &
-            ' (0 segment set, 2 part set, 3 part)', error)
-         return
+         call c%fail('MSTYP', 'unknown set type '//str(ct%mstyp)//' (0 segment set, 2 part '// &
+                     'set, 3 part)')
       end select
-      if (c%msid <= 0) then
-         call field_error(deck, blk, ic, 2, w, 'MSID', 'master set id must be > 0, got '// &
-                          str(c%msid), error)
-      end if
+      if (ct%msid <= 0) call c%fail('MSID', 'master set id must be > 0, got '//str(ct%msid))
    end subroutine check_types
 
    !> *CONTROL_CONTACT: SLSFAC of card 1 is used; every other field is read past.
@@ -251,15 +194,14 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8)
-      w = std_widths(blk, 8)
+      type(card_t) :: c
       if (blk%n < 1) return
-      call get_real(deck, blk, 1, 1, w, 'SLSFAC', 0.1_wp, inp%contact%slsfac, error)
-      if (allocated(error)) return
+      call deck_cursor(deck, blk, c)
+      call c%real('SLSFAC', 0.1_wp, inp%contact%slsfac)
       if (inp%contact%slsfac == 0.0_wp) inp%contact%slsfac = 0.1_wp
-      if (inp%contact%slsfac < 0.0_wp) call field_error(deck, blk, 1, 1, w, 'SLSFAC', &
-         'must be > 0, got '//rstr(inp%contact%slsfac)//' (load curves are not supported)', &
-         error)
+      if (c%ok() .and. inp%contact%slsfac < 0.0_wp) call c%fail('SLSFAC', 'must be > 0, got '// &
+         rstr(inp%contact%slsfac)//' (load curves are not supported)')
+      call c%done(error)
    end subroutine read_control_contact
 
    !> *DATABASE_RCFORC: DT BINARY LCUR IOOPT (DT used; 0 means no rcforc file, as in
@@ -269,19 +211,14 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8)
-      w = std_widths(blk, 8)
-      if (blk%n < 1) then
-         call block_error(deck, blk, 0, 'missing card 1 (DT BINARY LCUR IOOPT)', error)
-         return
-      end if
-      call check_max_cards(deck, blk, 1, error)
-      if (allocated(error)) return
-      call get_real(deck, blk, 1, 1, w, 'DT', 0.0_wp, inp%contact%rcforc_dt, error)
-      if (allocated(error)) return
-      if (.not. (inp%contact%rcforc_dt >= 0.0_wp)) call field_error(deck, blk, 1, 1, w, 'DT', &
-         'output interval must be >= 0 (0: no rcforc file), got '// &
-         rstr(inp%contact%rcforc_dt), error)
+      type(card_t) :: c
+      call deck_cursor(deck, blk, c)
+      call c%need(1, 'missing card 1 (DT BINARY LCUR IOOPT)')
+      call c%max_cards(1)
+      call c%real('DT', 0.0_wp, inp%contact%rcforc_dt)
+      if (c%ok() .and. .not. (inp%contact%rcforc_dt >= 0.0_wp)) call c%fail('DT', 'output '// &
+         'interval must be >= 0 (0: no rcforc file), got '//rstr(inp%contact%rcforc_dt))
+      call c%done(error)
    end subroutine read_rcforc
 
    !> *DEFINE_BOX: BOXID XMN XMX YMN YMX ZMN ZMX.
@@ -291,34 +228,22 @@ contains
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
       type(box_in_t) :: b
-      integer :: w(8), i0, d
+      type(card_t) :: c
+      integer :: d
       character(3), parameter :: ax(3) = ['X', 'Y', 'Z']
-      w = std_widths(blk, 8)
-      i0 = data_start(blk)
-      if (blk%n < i0) then
-         call block_error(deck, blk, 0, 'missing card 1 (BOXID XMN XMX YMN YMX ZMN ZMX)', error)
-         return
-      end if
-      call get_int(deck, blk, i0, 1, w, 'BOXID', 0, b%label, error)
-      if (allocated(error)) return
-      if (b%label <= 0) then
-         call field_error(deck, blk, i0, 1, w, 'BOXID', 'box id must be > 0, got '// &
-                          str(b%label), error)
-         return
-      end if
+      call deck_cursor(deck, blk, c)
+      call c%need(data_start(blk), 'missing card 1 (BOXID XMN XMX YMN YMX ZMN ZMX)')
+      call c%id('BOXID', b%label, 'box id must be > 0')
       do d = 1, 3
-         call get_real(deck, blk, i0, 2*d, w, trim(ax(d))//'MN', 0.0_wp, b%lo(d), error)
-         if (allocated(error)) return
-         call get_real(deck, blk, i0, 2*d + 1, w, trim(ax(d))//'MX', 0.0_wp, b%hi(d), error)
-         if (allocated(error)) return
-         if (b%hi(d) < b%lo(d)) then
-            call field_error(deck, blk, i0, 2*d + 1, w, trim(ax(d))//'MX', 'must be >= '// &
-                             trim(ax(d))//'MN = '//rstr(b%lo(d)), error)
-            return
-         end if
+         call c%real(trim(ax(d))//'MN', 0.0_wp, b%lo(d))
+         call c%real(trim(ax(d))//'MX', 0.0_wp, b%hi(d))
+         if (c%ok() .and. b%hi(d) < b%lo(d)) call c%fail(trim(ax(d))//'MX', 'must be >= '// &
+                                                         trim(ax(d))//'MN = '//rstr(b%lo(d)))
       end do
+      call c%done(error)
+      if (allocated(error)) return
       b%ifile = blk%ifile
-      b%line = blk%cards(i0)%line
+      b%line = blk%cards(data_start(blk))%line
       if (.not. allocated(inp%contact%boxes)) allocate(inp%contact%boxes(0))
       inp%contact%boxes = [inp%contact%boxes, b]
    end subroutine read_define_box

@@ -11,8 +11,7 @@ module dx_read_emc
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error
    use dx_strings, only: str, rstr
-   use dx_deck_cards, only: deck_t, block_t, get_int, get_real, field_error, block_error, &
-                            std_widths, data_start
+   use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, data_start
    use dx_deck_registry, only: registry_t
    use dx_model_input, only: model_input_t
    use dx_emc_types, only: emc_contact_in_t, emc_sphere_in_t, EMC_PENALTY, EMC_LAGRANGE
@@ -32,15 +31,6 @@ contains
       call reg%add('DYNX_CONSERVING_CONTROL', read_emc_control)
    end subroutine register_emc
 
-   subroutine need_card(deck, blk, i0, what, error)
-      type(deck_t), intent(in) :: deck
-      type(block_t), intent(in) :: blk
-      integer, intent(in) :: i0
-      character(*), intent(in) :: what
-      type(error_t), allocatable, intent(out) :: error
-      if (blk%n < i0) call block_error(deck, blk, 0, 'missing card 1 ('//what//')', error)
-   end subroutine need_card
-
    !> IMFLAG (0 explicit, 1 implicit: the conserving rigid-body solver; 2, explicit then
    !> implicit springback, refused), DT0 (step size), into model%ctrl%imp (dx_solver chooses).
    subroutine read_implicit_general(deck, blk, inp, error)
@@ -48,34 +38,27 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), i0
-      w = std_widths(blk, 8)
-      i0 = data_start(blk)
-      call need_card(deck, blk, i0, 'IMFLAG DT0 ...', error); if (allocated(error)) return
-      call get_int(deck, blk, i0, 1, w, 'IMFLAG', 0, inp%ctrl%imp%imflag, error)
-      if (allocated(error)) return
-      if (inp%ctrl%imp%imflag == 2) then
-         call field_error(deck, blk, i0, 1, w, 'IMFLAG', 'IMFLAG = 2 (explicit, then '// &
-            'implicit springback) is not supported; 0 (explicit) and 1 (implicit: the '// &
-            'conserving rigid-body solver with *DYNX_CONSERVING_CONTACT) are', error)
-         return
-      else if (inp%ctrl%imp%imflag /= 0 .and. inp%ctrl%imp%imflag /= 1) then
-         call field_error(deck, blk, i0, 1, w, 'IMFLAG', 'only 0 (explicit) and 1 '// &
-            '(implicit, conserving rigid-body solver) are supported, got '// &
-            str(inp%ctrl%imp%imflag), error)
-         return
+      type(card_t) :: c
+      call deck_cursor(deck, blk, c)
+      call c%need(data_start(blk), 'missing card 1 (IMFLAG DT0 ...)')
+      call c%int('IMFLAG', 0, inp%ctrl%imp%imflag)
+      if (c%ok() .and. inp%ctrl%imp%imflag == 2) then
+         call c%fail('IMFLAG', 'IMFLAG = 2 (explicit, then implicit springback) is not '// &
+            'supported; 0 (explicit) and 1 (implicit: the conserving rigid-body solver with '// &
+            '*DYNX_CONSERVING_CONTACT) are')
+      else if (c%ok() .and. inp%ctrl%imp%imflag /= 0 .and. inp%ctrl%imp%imflag /= 1) then
+         call c%fail('IMFLAG', 'only 0 (explicit) and 1 (implicit, conserving rigid-body '// &
+                     'solver) are supported, got '//str(inp%ctrl%imp%imflag))
       end if
-      call get_real(deck, blk, i0, 2, w, 'DT0', 0.0_wp, inp%ctrl%imp%dt0, error)
-      if (allocated(error)) return
+      call c%real('DT0', 0.0_wp, inp%ctrl%imp%dt0)
       ! DT0 = 0 with IMFLAG = 1 is judged after the whole deck (emc_finish): without
       ! *DYNX_CONSERVING_CONTACT the IMFLAG message (build) says what is missing
-      if (.not. (inp%ctrl%imp%dt0 >= 0.0_wp)) then
-         call field_error(deck, blk, i0, 2, w, 'DT0', 'the implicit step size must be > 0', &
-                          error)
-         return
-      end if
+      if (c%ok() .and. .not. (inp%ctrl%imp%dt0 >= 0.0_wp)) &
+         call c%fail('DT0', 'the implicit step size must be > 0')
+      call c%done(error)
+      if (allocated(error)) return
       inp%ctrl%imp%ifile = blk%ifile
-      inp%ctrl%imp%line = blk%cards(i0)%line
+      inp%ctrl%imp%line = c%card_line()
    end subroutine read_implicit_general
 
    !> IMASS GAMMA BETA TDYBIR TDYDTH TDYBUR IRATE ALPHA, with their LS-DYNA meaning: the
@@ -91,63 +74,51 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), i0, imass
+      integer :: imass
       real(wp) :: gamma, beta, alpha, b, c, disc, r1, r2
-      w = std_widths(blk, 8)
-      i0 = data_start(blk)
-      call need_card(deck, blk, i0, 'IMASS GAMMA BETA ...', error)
-      if (allocated(error)) return
-      call get_int(deck, blk, i0, 1, w, 'IMASS', 1, imass, error)
-      if (allocated(error)) return
-      if (imass /= 1) then
-         call field_error(deck, blk, i0, 1, w, 'IMASS', 'only 1 (dynamic analysis) is '// &
-                          'supported, got '//str(imass), error); return
-      end if
-      call get_real(deck, blk, i0, 8, w, 'ALPHA', 0.0_wp, alpha, error)
-      if (allocated(error)) return
-      if (alpha > 0.0_wp) then
-         call field_error(deck, blk, i0, 8, w, 'ALPHA', 'ALPHA > 0 selects the Bathe '// &
-            'composite scheme, which the conserving solver does not have; HHT needs '// &
-            '-1/3 <= ALPHA <= 0, got '//rstr(alpha), error); return
-      end if
-      if (alpha < -1.0_wp/3.0_wp - 1.0e-12_wp) then
-         call field_error(deck, blk, i0, 8, w, 'ALPHA', 'the HHT parameter must be in '// &
-            '[-1/3, 0] (unconditional stability), got '//rstr(alpha), error); return
-      end if
-      call get_real(deck, blk, i0, 2, w, 'GAMMA', 0.0_wp, gamma, error)
-      if (allocated(error)) return
-      call get_real(deck, blk, i0, 3, w, 'BETA', 0.0_wp, beta, error)
+      type(card_t) :: cur
+      call deck_cursor(deck, blk, cur)
+      call cur%need(data_start(blk), 'missing card 1 (IMASS GAMMA BETA ...)')
+      call cur%int('IMASS', 1, imass)
+      if (cur%ok() .and. imass /= 1) call cur%fail('IMASS', 'only 1 (dynamic analysis) is '// &
+                                                   'supported, got '//str(imass))
+      call cur%at(8)
+      call cur%real('ALPHA', 0.0_wp, alpha)
+      if (cur%ok() .and. alpha > 0.0_wp) call cur%fail('ALPHA', 'ALPHA > 0 selects the '// &
+         'Bathe composite scheme, which the conserving solver does not have; HHT needs '// &
+         '-1/3 <= ALPHA <= 0, got '//rstr(alpha))
+      if (cur%ok() .and. alpha < -1.0_wp/3.0_wp - 1.0e-12_wp) call cur%fail('ALPHA', &
+         'the HHT parameter must be in [-1/3, 0] (unconditional stability), got '//rstr(alpha))
+      call cur%at(2)
+      call cur%real('GAMMA', 0.0_wp, gamma)
+      call cur%real('BETA', 0.0_wp, beta)
+      call cur%done(error)
       if (allocated(error)) return
       if (alpha < 0.0_wp) then
          ! HHT: GAMMA and BETA follow from ALPHA; given ones must agree
-         if (gamma /= 0.0_wp .and. abs(gamma - (0.5_wp - alpha)) > 1.0e-6_wp) then
-            call field_error(deck, blk, i0, 2, w, 'GAMMA', 'with the HHT ALPHA = '// &
-               rstr(alpha)//' GAMMA must be 1/2 - ALPHA = '//rstr(0.5_wp - alpha)// &
-               ' (or blank), got '//rstr(gamma), error); return
-         end if
-         if (beta /= 0.0_wp .and. abs(beta - 0.25_wp*(1.0_wp - alpha)**2) > 1.0e-6_wp) then
-            call field_error(deck, blk, i0, 3, w, 'BETA', 'with the HHT ALPHA = '// &
-               rstr(alpha)//' BETA must be (1 - ALPHA)^2/4 = '// &
-               rstr(0.25_wp*(1.0_wp - alpha)**2)//' (or blank), got '//rstr(beta), error)
-            return
-         end if
+         if (gamma /= 0.0_wp .and. abs(gamma - (0.5_wp - alpha)) > 1.0e-6_wp) &
+            call cur%fail('GAMMA', 'with the HHT ALPHA = '//rstr(alpha)//' GAMMA must be '// &
+               '1/2 - ALPHA = '//rstr(0.5_wp - alpha)//' (or blank), got '//rstr(gamma))
+         if (beta /= 0.0_wp .and. abs(beta - 0.25_wp*(1.0_wp - alpha)**2) > 1.0e-6_wp) &
+            call cur%fail('BETA', 'with the HHT ALPHA = '//rstr(alpha)//' BETA must be '// &
+               '(1 - ALPHA)^2/4 = '//rstr(0.25_wp*(1.0_wp - alpha)**2)//' (or blank), got '// &
+               rstr(beta))
+         call cur%done(error)
+         if (allocated(error)) return
          gamma = 0.5_wp - alpha
          beta = 0.25_wp*(1.0_wp - alpha)**2
          inp%ctrl%imp%rho_inf = (1.0_wp + alpha)/(1.0_wp - alpha)
       else
          if (gamma == 0.0_wp) gamma = 0.5_wp
          if (beta == 0.0_wp) beta = 0.25_wp
-         if (gamma < 0.5_wp .or. gamma > 1.5_wp) then
-            call field_error(deck, blk, i0, 2, w, 'GAMMA', 'must be in [0.5, 1.5] (0.5: '// &
-               'no numerical damping; > 0.5: high-frequency damping), got '//rstr(gamma), &
-               error); return
-         end if
-         if (2.0_wp*beta < gamma) then
-            call field_error(deck, blk, i0, 3, w, 'BETA', 'unconditional stability needs '// &
-               'BETA >= GAMMA/2 = '//rstr(0.5_wp*gamma)//' (most damping: BETA = '// &
-               '(GAMMA + 1/2)^2/4 = '//rstr(0.25_wp*(gamma + 0.5_wp)**2)//'), got '// &
-               rstr(beta), error); return
-         end if
+         if (gamma < 0.5_wp .or. gamma > 1.5_wp) call cur%fail('GAMMA', 'must be in '// &
+            '[0.5, 1.5] (0.5: no numerical damping; > 0.5: high-frequency damping), got '// &
+            rstr(gamma))
+         if (2.0_wp*beta < gamma) call cur%fail('BETA', 'unconditional stability needs '// &
+            'BETA >= GAMMA/2 = '//rstr(0.5_wp*gamma)//' (most damping: BETA = '// &
+            '(GAMMA + 1/2)^2/4 = '//rstr(0.25_wp*(gamma + 0.5_wp)**2)//'), got '//rstr(beta))
+         call cur%done(error)
+         if (allocated(error)) return
          if (gamma == 0.5_wp .and. beta == 0.25_wp) then
             inp%ctrl%imp%rho_inf = 1.0_wp
          else
@@ -176,56 +147,40 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      type(emc_contact_in_t) :: c
-      integer :: w(8), i0, ic
-      w = std_widths(blk, 8)
-      i0 = data_start(blk)
-      call need_card(deck, blk, i0, 'CID SPID MPID FORM EPS FS DFRIC', error)
-      if (allocated(error)) return
-      do ic = i0, blk%n
-         c%ifile = blk%ifile
-         c%line = blk%cards(ic)%line
-         call get_int(deck, blk, ic, 1, w, 'CID', 0, c%cid, error); if (allocated(error)) return
-         call get_int(deck, blk, ic, 2, w, 'SPID', 0, c%spid, error)
-         if (allocated(error)) return
-         if (c%spid <= 0) then
-            call field_error(deck, blk, ic, 2, w, 'SPID', 'a slave part id > 0 is required', &
-                             error); return
-         end if
-         call get_int(deck, blk, ic, 3, w, 'MPID', 0, c%mpid, error)
-         if (allocated(error)) return
-         if (c%mpid <= 0 .or. c%mpid == c%spid) then
-            call field_error(deck, blk, ic, 3, w, 'MPID', 'a master part id > 0, other than '// &
-                             'SPID, is required', error); return
-         end if
-         call get_int(deck, blk, ic, 4, w, 'FORM', EMC_PENALTY, c%form, error)
-         if (allocated(error)) return
-         if (c%form == 0) c%form = EMC_PENALTY
-         if (c%form /= EMC_PENALTY .and. c%form /= EMC_LAGRANGE) then
-            call field_error(deck, blk, ic, 4, w, 'FORM', '1 (penalty with the algorithmic '// &
-               'gap) or 2 (Lagrange multipliers), got '//str(c%form), error); return
-         end if
-         call get_real(deck, blk, ic, 5, w, 'EPS', 0.0_wp, c%eps, error)
-         if (allocated(error)) return
-         if (c%form == EMC_PENALTY .and. .not. (c%eps > 0.0_wp)) then
-            call field_error(deck, blk, ic, 5, w, 'EPS', 'the penalty stiffness [force/length]'// &
-                             ' must be > 0', error); return
-         end if
-         call get_real(deck, blk, ic, 6, w, 'FS', 0.0_wp, c%fs, error)
-         if (allocated(error)) return
-         if (c%fs < 0.0_wp) then
-            call field_error(deck, blk, ic, 6, w, 'FS', 'the Coulomb friction coefficient '// &
-                             'must be >= 0', error); return
-         end if
-         call get_real(deck, blk, ic, 7, w, 'DFRIC', 0.0_wp, c%dfric, error)
-         if (allocated(error)) return
-         if (c%dfric < 0.0_wp) then
-            call field_error(deck, blk, ic, 7, w, 'DFRIC', 'the friction regularization '// &
-                             'slip must be >= 0', error); return
-         end if
+      type(emc_contact_in_t) :: e
+      type(card_t) :: c
+      integer :: ic
+      call deck_cursor(deck, blk, c)
+      call c%need(data_start(blk), 'missing card 1 (CID SPID MPID FORM EPS FS DFRIC)')
+      do ic = data_start(blk), blk%n
+         if (.not. c%ok()) exit
+         call c%seek(ic)
+         e%ifile = blk%ifile
+         e%line = c%card_line()
+         call c%int('CID', 0, e%cid)
+         call c%int('SPID', 0, e%spid)
+         if (c%ok() .and. e%spid <= 0) call c%fail('SPID', 'a slave part id > 0 is required')
+         call c%int('MPID', 0, e%mpid)
+         if (c%ok() .and. (e%mpid <= 0 .or. e%mpid == e%spid)) call c%fail('MPID', 'a master '// &
+            'part id > 0, other than SPID, is required')
+         call c%int('FORM', EMC_PENALTY, e%form)
+         if (e%form == 0) e%form = EMC_PENALTY
+         if (c%ok() .and. e%form /= EMC_PENALTY .and. e%form /= EMC_LAGRANGE) call c%fail('FORM', &
+            '1 (penalty with the algorithmic gap) or 2 (Lagrange multipliers), got '//str(e%form))
+         call c%real('EPS', 0.0_wp, e%eps)
+         if (c%ok() .and. e%form == EMC_PENALTY .and. .not. (e%eps > 0.0_wp)) call c%fail('EPS', &
+            'the penalty stiffness [force/length] must be > 0')
+         call c%real('FS', 0.0_wp, e%fs)
+         if (c%ok() .and. e%fs < 0.0_wp) call c%fail('FS', 'the Coulomb friction coefficient '// &
+                                                     'must be >= 0')
+         call c%real('DFRIC', 0.0_wp, e%dfric)
+         if (c%ok() .and. e%dfric < 0.0_wp) call c%fail('DFRIC', 'the friction regularization '// &
+                                                        'slip must be >= 0')
+         if (.not. c%ok()) exit
          if (.not. allocated(inp%emc%contacts)) allocate(inp%emc%contacts(0))
-         inp%emc%contacts = [inp%emc%contacts, c]
+         inp%emc%contacts = [inp%emc%contacts, e]
       end do
+      call c%done(error)
    end subroutine read_emc_contact
 
    !> PID SIDE TOL: smooth this rigid part as an exact sphere (outer 0 / inner 1 surface).
@@ -235,33 +190,28 @@ contains
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
       type(emc_sphere_in_t) :: s
-      integer :: w(8), i0, ic
-      w = std_widths(blk, 8)
-      i0 = data_start(blk)
-      call need_card(deck, blk, i0, 'PID SIDE TOL', error); if (allocated(error)) return
-      do ic = i0, blk%n
+      type(card_t) :: c
+      integer :: ic
+      call deck_cursor(deck, blk, c)
+      call c%need(data_start(blk), 'missing card 1 (PID SIDE TOL)')
+      do ic = data_start(blk), blk%n
+         if (.not. c%ok()) exit
+         call c%seek(ic)
          s%ifile = blk%ifile
-         s%line = blk%cards(ic)%line
-         call get_int(deck, blk, ic, 1, w, 'PID', 0, s%pid, error); if (allocated(error)) return
-         if (s%pid <= 0) then
-            call field_error(deck, blk, ic, 1, w, 'PID', 'a part id > 0 is required', error)
-            return
-         end if
-         call get_int(deck, blk, ic, 2, w, 'SIDE', 0, s%side, error)
-         if (allocated(error)) return
-         if (s%side /= 0 .and. s%side /= 1) then
-            call field_error(deck, blk, ic, 2, w, 'SIDE', '0 (outer surface: ball) or 1 '// &
-                             '(inner surface: shell), got '//str(s%side), error); return
-         end if
-         call get_real(deck, blk, ic, 3, w, 'TOL', 1.0e-3_wp, s%tol, error)
-         if (allocated(error)) return
+         s%line = c%card_line()
+         call c%int('PID', 0, s%pid)
+         if (c%ok() .and. s%pid <= 0) call c%fail('PID', 'a part id > 0 is required')
+         call c%int('SIDE', 0, s%side)
+         if (c%ok() .and. s%side /= 0 .and. s%side /= 1) call c%fail('SIDE', '0 (outer '// &
+            'surface: ball) or 1 (inner surface: shell), got '//str(s%side))
+         call c%real('TOL', 1.0e-3_wp, s%tol)
          if (s%tol == 0.0_wp) s%tol = 1.0e-3_wp
-         if (s%tol < 0.0_wp) then
-            call field_error(deck, blk, ic, 3, w, 'TOL', 'must be > 0', error); return
-         end if
+         if (c%ok() .and. s%tol < 0.0_wp) call c%fail('TOL', 'must be > 0')
+         if (.not. c%ok()) exit
          if (.not. allocated(inp%emc%spheres)) allocate(inp%emc%spheres(0))
          inp%emc%spheres = [inp%emc%spheres, s]
       end do
+      call c%done(error)
    end subroutine read_emc_sphere
 
    !> MAXIT RTOL NFAIL OUTDT: Newton limits, failure action and emcstat interval.
@@ -270,35 +220,23 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), i0
-      w = std_widths(blk, 8)
-      i0 = data_start(blk)
-      call need_card(deck, blk, i0, 'MAXIT RTOL NFAIL OUTDT', error)
-      if (allocated(error)) return
-      call get_int(deck, blk, i0, 1, w, 'MAXIT', 20, inp%emc%maxit, error)
-      if (allocated(error)) return
+      type(card_t) :: c
+      call deck_cursor(deck, blk, c)
+      call c%need(data_start(blk), 'missing card 1 (MAXIT RTOL NFAIL OUTDT)')
+      call c%int('MAXIT', 20, inp%emc%maxit)
       if (inp%emc%maxit == 0) inp%emc%maxit = 20
-      if (inp%emc%maxit < 0) then
-         call field_error(deck, blk, i0, 1, w, 'MAXIT', 'must be > 0', error); return
-      end if
-      call get_real(deck, blk, i0, 2, w, 'RTOL', 1.0e-16_wp, inp%emc%rtol, error)
-      if (allocated(error)) return
+      if (c%ok() .and. inp%emc%maxit < 0) call c%fail('MAXIT', 'must be > 0')
+      call c%real('RTOL', 1.0e-16_wp, inp%emc%rtol)
       if (inp%emc%rtol == 0.0_wp) inp%emc%rtol = 1.0e-16_wp
-      if (inp%emc%rtol < 0.0_wp) then
-         call field_error(deck, blk, i0, 2, w, 'RTOL', 'must be > 0', error); return
-      end if
-      call get_int(deck, blk, i0, 3, w, 'NFAIL', 0, inp%emc%nfail, error)
-      if (allocated(error)) return
-      if (inp%emc%nfail < 0) then
-         call field_error(deck, blk, i0, 3, w, 'NFAIL', 'must be >= 0 (0: stop at the '// &
-                          'first Newton failure; N: up to N step halvings)', error); return
-      end if
-      call get_real(deck, blk, i0, 4, w, 'OUTDT', 0.0_wp, inp%emc%out_dt, error)
-      if (allocated(error)) return
-      if (inp%emc%out_dt < 0.0_wp) then
-         call field_error(deck, blk, i0, 4, w, 'OUTDT', 'must be >= 0', error); return
-      end if
+      if (c%ok() .and. inp%emc%rtol < 0.0_wp) call c%fail('RTOL', 'must be > 0')
+      call c%int('NFAIL', 0, inp%emc%nfail)
+      if (c%ok() .and. inp%emc%nfail < 0) call c%fail('NFAIL', 'must be >= 0 (0: stop at '// &
+         'the first Newton failure; N: up to N step halvings)')
+      call c%real('OUTDT', 0.0_wp, inp%emc%out_dt)
+      if (c%ok() .and. inp%emc%out_dt < 0.0_wp) call c%fail('OUTDT', 'must be >= 0')
+      call c%done(error)
    end subroutine read_emc_control
+
    !> After the whole deck: IMFLAG = 1 for the conserving solver (*DYNX_CONSERVING_CONTACT
    !> present) needs DT0 > 0; without it the build names IMFLAG (the Newton solver of issue
    !> 20), so a DT0 of 0 there is not the first thing to say.

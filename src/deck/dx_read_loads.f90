@@ -8,8 +8,7 @@ module dx_read_loads
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error
    use dx_strings, only: str, rstr
-   use dx_deck_cards, only: deck_t, block_t, get_int, get_real, field_error, block_error, &
-                            card_error, std_widths, data_start, check_max_cards
+   use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, data_start
    use dx_deck_registry, only: registry_t
    use dx_model_input, only: model_input_t, origin, spc_in_t, motion_in_t, ivel_in_t, &
                              load_node_in_t, load_seg_in_t, wall_in_t, IVEL_SET, IVEL_NODE, &
@@ -37,92 +36,38 @@ contains
       call reg%add('RIGIDWALL_PLANAR', read_rigidwall_planar, id=.true.)
    end subroutine register_loads
 
-   !> integer field that must be blank or 0
-   subroutine zero_int(deck, blk, ic, k, w, fname, why, error)
-      type(deck_t), intent(in) :: deck
-      type(block_t), intent(in) :: blk
-      integer, intent(in) :: ic, k, w(:)
-      character(*), intent(in) :: fname, why
-      type(error_t), allocatable, intent(out) :: error
-      integer :: v
-      call get_int(deck, blk, ic, k, w, fname, 0, v, error)
-      if (allocated(error)) return
-      if (v /= 0) call field_error(deck, blk, ic, k, w, fname, 'nonzero value '//str(v)// &
-                                   ' is not supported: '//why, error)
-   end subroutine zero_int
-
-   !> real field that must be blank or 0
-   subroutine zero_real(deck, blk, ic, k, w, fname, why, error)
-      type(deck_t), intent(in) :: deck
-      type(block_t), intent(in) :: blk
-      integer, intent(in) :: ic, k, w(:)
-      character(*), intent(in) :: fname, why
-      type(error_t), allocatable, intent(out) :: error
-      real(wp) :: v
-      call get_real(deck, blk, ic, k, w, fname, 0.0_wp, v, error)
-      if (allocated(error)) return
-      if (v /= 0.0_wp) call field_error(deck, blk, ic, k, w, fname, 'nonzero value '// &
-                                        rstr(v)//' is not supported: '//why, error)
-   end subroutine zero_real
-
-   !> a positive id (> 0) in field k
-   subroutine positive_id(deck, blk, ic, k, w, fname, v, error)
-      type(deck_t), intent(in) :: deck
-      type(block_t), intent(in) :: blk
-      integer, intent(in) :: ic, k, w(:)
-      character(*), intent(in) :: fname
-      integer, intent(out) :: v
-      type(error_t), allocatable, intent(out) :: error
-      call get_int(deck, blk, ic, k, w, fname, 0, v, error)
-      if (allocated(error)) return
-      if (v <= 0) call field_error(deck, blk, ic, k, w, fname, 'an id > 0 is required, got '// &
-                                   str(v), error)
-   end subroutine positive_id
-
-   subroutine need_data(deck, blk, i0, what, error)
-      type(deck_t), intent(in) :: deck
-      type(block_t), intent(in) :: blk
-      integer, intent(in) :: i0
-      character(*), intent(in) :: what
-      type(error_t), allocatable, intent(out) :: error
-      if (blk%n < i0) call block_error(deck, blk, 0, 'missing card '//str(i0)//' ('//what// &
-                                       ')', error)
-   end subroutine need_data
-
    !> NID|NSID CID DOFX DOFY DOFZ DOFRX DOFRY DOFRZ
    subroutine read_spc(deck, blk, inp, error)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), ic, k, d
+      integer :: ic, k, d
       type(spc_in_t) :: s
+      type(card_t) :: c
       character(len=5), parameter :: dn(6) = ['DOFX ', 'DOFY ', 'DOFZ ', 'DOFRX', 'DOFRY', &
                                               'DOFRZ']
-      w = std_widths(blk, 8)
-      call need_data(deck, blk, data_start(blk), 'NID CID DOFX DOFY DOFZ DOFRX DOFRY DOFRZ', &
-                     error)
-      if (allocated(error)) return
+      call deck_cursor(deck, blk, c)
+      call c%need(data_start(blk), 'missing card '//str(data_start(blk))//' (NID CID DOFX '// &
+                  'DOFY DOFZ DOFRX DOFRY DOFRZ)')
       do ic = data_start(blk), blk%n
+         if (.not. c%ok()) exit
+         call c%seek(ic)
          s = spc_in_t()
          s%is_set = blk%base == 'BOUNDARY_SPC_SET'
-         call positive_id(deck, blk, ic, 1, w, merge('NSID', 'NID ', s%is_set), s%id, error)
-         if (allocated(error)) return
-         call zero_int(deck, blk, ic, 2, w, 'CID', 'local coordinate systems', error)
-         if (allocated(error)) return
+         call c%id(trim(merge('NSID', 'NID ', s%is_set)), s%id)
+         call c%zero_int('CID', 'local coordinate systems')
          do k = 1, 6
-            call get_int(deck, blk, ic, k + 2, w, trim(dn(k)), 0, d, error)
-            if (allocated(error)) return
-            if (d /= 0 .and. d /= 1) then
-               call field_error(deck, blk, ic, k + 2, w, trim(dn(k)), 'must be 0 (free) or '// &
-                                '1 (constrained), got '//str(d), error)
-               return
-            end if
+            call c%int(trim(dn(k)), 0, d)
+            if (c%ok() .and. d /= 0 .and. d /= 1) call c%fail(trim(dn(k)), 'must be 0 '// &
+               '(free) or 1 (constrained), got '//str(d))
             s%dof(k) = d == 1
          end do
-         s%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
+         if (.not. c%ok()) exit
+         s%src = origin(blk%ifile, c%card_line(), blk%name)
          inp%spcs = [inp%spcs, s]
       end do
+      call c%done(error)
    end subroutine read_spc
 
    !> NID|NSID DOF VAD LCID SF VID DEATH BIRTH
@@ -131,63 +76,53 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), ic
+      integer :: ic
       type(motion_in_t) :: m
-      w = std_widths(blk, 8)
-      call need_data(deck, blk, data_start(blk), 'NID DOF VAD LCID SF VID DEATH BIRTH', error)
-      if (allocated(error)) return
+      type(card_t) :: c
+      call deck_cursor(deck, blk, c)
+      call c%need(data_start(blk), 'missing card '//str(data_start(blk))//' (NID DOF VAD '// &
+                  'LCID SF VID DEATH BIRTH)')
       do ic = data_start(blk), blk%n
+         if (.not. c%ok()) exit
+         call c%seek(ic)
          m = motion_in_t()
          m%is_set = blk%base == 'BOUNDARY_PRESCRIBED_MOTION_SET'
-         call positive_id(deck, blk, ic, 1, w, merge('NSID', 'NID ', m%is_set), m%id, error)
-         if (allocated(error)) return
-         call get_int(deck, blk, ic, 2, w, 'DOF', 0, m%dof, error)
-         if (allocated(error)) return
-         if (m%dof < 1 .or. m%dof > 7 .or. m%dof == 4) then
-            call field_error(deck, blk, ic, 2, w, 'DOF', 'DOF '//str(m%dof)//' is not '// &
-               'supported (supported: 1 x, 2 y, 3 z translation; 5, 6, 7 rotation about '// &
-               'x, y, z on shell nodes)', error)
-            return
-         end if
-         call read_motion_fields(deck, blk, ic, w, m%vad, m%lcid, m%sf, m%death, m%birth, error)
-         if (allocated(error)) return
-         if (m%dof >= 5 .and. m%vad == 2) then
-            call field_error(deck, blk, ic, 3, w, 'VAD', 'VAD 2 (a prescribed rotation '// &
-               'angle) on DOF '//str(m%dof)//' is not supported (supported on rotations: 0 '// &
-               'angular velocity, 1 angular acceleration)', error)
-            return
-         end if
-         m%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
+         call c%id(trim(merge('NSID', 'NID ', m%is_set)), m%id)
+         call c%int('DOF', 0, m%dof)
+         if (c%ok() .and. (m%dof < 1 .or. m%dof > 7 .or. m%dof == 4)) call c%fail('DOF', &
+            'DOF '//str(m%dof)//' is not supported (supported: 1 x, 2 y, 3 z translation; '// &
+            '5, 6, 7 rotation about x, y, z on shell nodes)')
+         call read_motion_fields(c, m%vad, m%lcid, m%sf, m%death, m%birth)
+         if (c%ok() .and. m%dof >= 5 .and. m%vad == 2) call c%fail('VAD', 'VAD 2 (a '// &
+            'prescribed rotation angle) on DOF '//str(m%dof)//' is not supported (supported '// &
+            'on rotations: 0 angular velocity, 1 angular acceleration)')
+         if (.not. c%ok()) exit
+         m%src = origin(blk%ifile, c%card_line(), blk%name)
          inp%motions = [inp%motions, m]
       end do
+      call c%done(error)
    end subroutine read_motion
 
-   !> translational velocity fields k0..k0+2 of card ic, rotational fields k0+3..k0+5 zero
-   subroutine velocity(deck, blk, ic, k0, w, names, v, error, vr)
-      type(deck_t), intent(in) :: deck
-      type(block_t), intent(in) :: blk
-      integer, intent(in) :: ic, k0, w(:)
+   !> the next three fields: a translational velocity; the three after them (rotational
+   !> velocities) into vr when present (shell nodes), else blank or zero
+   subroutine velocity(c, names, v, vr)
+      type(card_t), intent(inout) :: c
       character(*), intent(in) :: names(6)
       real(wp), intent(out) :: v(3)
-      type(error_t), allocatable, intent(out) :: error
       real(wp), intent(out), optional :: vr(3)   !< the rotational fields (shell nodes)
       integer :: k
       do k = 1, 3
-         call get_real(deck, blk, ic, k0 + k - 1, w, trim(names(k)), 0.0_wp, v(k), error)
-         if (allocated(error)) return
+         call c%real(trim(names(k)), 0.0_wp, v(k))
       end do
       if (present(vr)) then
          do k = 1, 3
-            call get_real(deck, blk, ic, k0 + k + 2, w, trim(names(k + 3)), 0.0_wp, vr(k), &
-                          error)
-            if (allocated(error)) return
+            call c%real(trim(names(k + 3)), 0.0_wp, vr(k))
          end do
          return
       end if
       do k = 4, 6
-         call zero_real(deck, blk, ic, k0 + k - 1, w, trim(names(k)), 'solid elements '// &
-                        'have no rotational degrees of freedom', error)
-         if (allocated(error)) return
+         call c%zero_real(trim(names(k)), 'solid elements have no rotational degrees of '// &
+                          'freedom')
       end do
    end subroutine velocity
 
@@ -198,46 +133,38 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), ic
+      integer :: ic
       type(ivel_in_t) :: r
-      w = std_widths(blk, 8)
-      call need_data(deck, blk, 1, 'NSID NSIDEX BOXID IRIGID ICID', error)
-      if (allocated(error)) return
+      type(card_t) :: c
+      call deck_cursor(deck, blk, c)
+      call c%need(1, 'missing card 1 (NSID NSIDEX BOXID IRIGID ICID)')
       ic = 1
-      do while (ic <= blk%n)
+      do while (ic <= blk%n .and. c%ok())
          r = ivel_in_t()
          r%kind = IVEL_SET
-         call get_int(deck, blk, ic, 1, w, 'NSID', 0, r%id, error)
-         if (allocated(error)) return
-         call get_int(deck, blk, ic, 2, w, 'NSIDEX', 0, r%nsidex, error)
-         if (allocated(error)) return
-         if (r%id < 0 .or. r%nsidex < 0) then
-            call card_error(deck, blk, ic, 'NSID and NSIDEX must be >= 0', error)
-            return
-         end if
-         call zero_int(deck, blk, ic, 3, w, 'BOXID', 'boxes', error)
-         if (allocated(error)) return
-         call zero_int(deck, blk, ic, 4, w, 'IRIGID', 'rigid bodies', error)
-         if (allocated(error)) return
-         call zero_int(deck, blk, ic, 5, w, 'ICID', 'local coordinate systems', error)
-         if (allocated(error)) return
-         r%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
-         if (ic + 1 > blk%n) then
-            call card_error(deck, blk, ic, 'missing card 2 (VX VY VZ VXR VYR VZR)', error)
-            return
-         end if
-         call velocity(deck, blk, ic + 1, 1, w, ['VX ', 'VY ', 'VZ ', 'VXR', 'VYR', 'VZR'], &
-                       r%v, error)
-         if (allocated(error)) return
+         call c%seek(ic)
+         call c%int('NSID', 0, r%id)
+         call c%int('NSIDEX', 0, r%nsidex)
+         if (c%ok() .and. (r%id < 0 .or. r%nsidex < 0)) &
+            call c%fail_card(ic, 'NSID and NSIDEX must be >= 0')
+         call c%zero_int('BOXID', 'boxes')
+         call c%zero_int('IRIGID', 'rigid bodies')
+         call c%zero_int('ICID', 'local coordinate systems')
+         r%src = origin(blk%ifile, c%card_line(), blk%name)
+         if (c%ok() .and. ic + 1 > blk%n) &
+            call c%fail_card(ic, 'missing card 2 (VX VY VZ VXR VYR VZR)')
+         call c%seek(ic + 1)
+         call velocity(c, ['VX ', 'VY ', 'VZ ', 'VXR', 'VYR', 'VZR'], r%v)
          ic = ic + 2
          if (r%nsidex > 0) then
-            call velocity(deck, blk, ic, 1, w, ['VXE ', 'VYE ', 'VZE ', 'VXRE', 'VYRE', 'VZRE'], &
-                          r%vex, error)
-            if (allocated(error)) return
+            call c%seek(ic)
+            call velocity(c, ['VXE ', 'VYE ', 'VZE ', 'VXRE', 'VYRE', 'VZRE'], r%vex)
             ic = ic + 1
          end if
+         if (.not. c%ok()) exit
          inp%ivels = [inp%ivels, r]
       end do
+      call c%done(error)
    end subroutine read_initial_velocity
 
    !> NID VX VY VZ VXR VYR VZR ICID
@@ -246,22 +173,22 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), ic
+      integer :: ic
       type(ivel_in_t) :: r
-      w = std_widths(blk, 8)
+      type(card_t) :: c
+      call deck_cursor(deck, blk, c)
       do ic = 1, blk%n
          r = ivel_in_t()
          r%kind = IVEL_NODE
-         call positive_id(deck, blk, ic, 1, w, 'NID', r%id, error)
-         if (allocated(error)) return
-         call velocity(deck, blk, ic, 2, w, ['VX ', 'VY ', 'VZ ', 'VXR', 'VYR', 'VZR'], r%v, &
-                       error, r%vr)
-         if (allocated(error)) return
-         call zero_int(deck, blk, ic, 8, w, 'ICID', 'local coordinate systems', error)
-         if (allocated(error)) return
-         r%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
+         call c%seek(ic)
+         call c%id('NID', r%id)
+         call velocity(c, ['VX ', 'VY ', 'VZ ', 'VXR', 'VYR', 'VZR'], r%v, r%vr)
+         call c%zero_int('ICID', 'local coordinate systems')
+         if (.not. c%ok()) exit
+         r%src = origin(blk%ifile, c%card_line(), blk%name)
          inp%ivels = [inp%ivels, r]
       end do
+      call c%done(error)
    end subroutine read_initial_velocity_node
 
    !> card 1 ID STYP OMEGA VX VY VZ IVATN ICID; card 2 XC YC ZC NX NY NZ PHASE IRIGID
@@ -270,42 +197,31 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), ic, k
+      integer :: ic, k
       real(wp) :: nrm
       type(ivel_in_t) :: r
+      type(card_t) :: c
       character(len=2), parameter :: cn(3) = ['XC', 'YC', 'ZC'], an(3) = ['NX', 'NY', 'NZ'], &
                                      vn(3) = ['VX', 'VY', 'VZ']
-      w = std_widths(blk, 8)
-      call need_data(deck, blk, 1, 'ID STYP OMEGA VX VY VZ IVATN ICID', error)
-      if (allocated(error)) return
+      call deck_cursor(deck, blk, c)
+      call c%need(1, 'missing card 1 (ID STYP OMEGA VX VY VZ IVATN ICID)')
       ic = 1
-      do while (ic <= blk%n)
+      do while (ic <= blk%n .and. c%ok())
          r = ivel_in_t()
          r%kind = IVEL_GEN
-         call get_int(deck, blk, ic, 1, w, 'ID', 0, r%id, error)
-         if (allocated(error)) return
-         if (r%id < 0) then
-            call field_error(deck, blk, ic, 1, w, 'ID', 'must be >= 0', error)
-            return
-         end if
-         call get_int(deck, blk, ic, 2, w, 'STYP', 0, r%styp, error)
-         if (allocated(error)) return
-         if (r%id > 0 .and. (r%styp < 1 .or. r%styp > 3)) then
-            call field_error(deck, blk, ic, 2, w, 'STYP', 'must be 1 (part set), 2 (part) '// &
-                             'or 3 (node set), got '//str(r%styp), error)
-            return
-         end if
-         call get_real(deck, blk, ic, 3, w, 'OMEGA', 0.0_wp, r%omega, error)
-         if (allocated(error)) return
+         call c%seek(ic)
+         call c%int('ID', 0, r%id, min=0)
+         call c%int('STYP', 0, r%styp)
+         if (c%ok() .and. r%id > 0 .and. (r%styp < 1 .or. r%styp > 3)) call c%fail('STYP', &
+            'must be 1 (part set), 2 (part) or 3 (node set), got '//str(r%styp))
+         call c%real('OMEGA', 0.0_wp, r%omega)
          do k = 1, 3
-            call get_real(deck, blk, ic, 3 + k, w, vn(k), 0.0_wp, r%v(k), error)
-            if (allocated(error)) return
+            call c%real(vn(k), 0.0_wp, r%v(k))
          end do
-         call zero_int(deck, blk, ic, 7, w, 'IVATN', 'rigid body slave parts', error)
-         if (allocated(error)) return
-         call zero_int(deck, blk, ic, 8, w, 'ICID', 'local coordinate systems', error)
-         if (allocated(error)) return
-         r%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
+         call c%zero_int('IVATN', 'rigid body slave parts')
+         call c%zero_int('ICID', 'local coordinate systems')
+         if (.not. c%ok()) exit
+         r%src = origin(blk%ifile, c%card_line(), blk%name)
          if (ic + 1 > blk%n) then
             ! the last record's card 2 left blank (stripped as layout: a blank line before
             ! the next keyword) is a card of defaults in LS-DYNA; without a rotation
@@ -314,33 +230,32 @@ contains
                inp%ivels = [inp%ivels, r]
                exit
             end if
-            call card_error(deck, blk, ic, 'missing card 2 (XC YC ZC NX NY NZ PHASE IRIGID)', &
-                            error)
-            return
+            call c%fail_card(ic, 'missing card 2 (XC YC ZC NX NY NZ PHASE IRIGID)')
+            exit
          end if
          ic = ic + 1
+         call c%seek(ic)
          do k = 1, 3
-            call get_real(deck, blk, ic, k, w, cn(k), 0.0_wp, r%xc(k), error)
-            if (allocated(error)) return
-            call get_real(deck, blk, ic, 3 + k, w, an(k), 0.0_wp, r%axis(k), error)
-            if (allocated(error)) return
+            call c%real(cn(k), 0.0_wp, r%xc(k))
          end do
-         call zero_int(deck, blk, ic, 7, w, 'PHASE', 'dynx has no dynamic relaxation', error)
-         if (allocated(error)) return
-         call zero_int(deck, blk, ic, 8, w, 'IRIGID', 'rigid bodies', error)
-         if (allocated(error)) return
+         do k = 1, 3
+            call c%real(an(k), 0.0_wp, r%axis(k))
+         end do
+         call c%zero_int('PHASE', 'dynx has no dynamic relaxation')
+         call c%zero_int('IRIGID', 'rigid bodies')
          nrm = norm2(r%axis)
-         if (r%omega /= 0.0_wp) then
-            if (.not. (nrm > 0.0_wp)) then
-               call field_error(deck, blk, ic, 4, w, 'NX', 'OMEGA is nonzero but the '// &
-                                'rotation axis (NX, NY, NZ) is zero', error)
-               return
+         if (c%ok() .and. r%omega /= 0.0_wp) then
+            if (nrm > 0.0_wp) then
+               r%axis = r%axis/nrm
+            else
+               call c%fail('NX', 'OMEGA is nonzero but the rotation axis (NX, NY, NZ) is zero')
             end if
-            r%axis = r%axis/nrm
          end if
+         if (.not. c%ok()) exit
          inp%ivels = [inp%ivels, r]
          ic = ic + 1
       end do
+      call c%done(error)
    end subroutine read_initial_velocity_generation
 
    !> NID DOF LCID SF CID M1 M2 M3
@@ -349,40 +264,35 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), ic, k
+      integer :: ic, k
       logical :: is_set
       type(load_node_in_t) :: l
-      w = std_widths(blk, 8)
+      type(card_t) :: c
+      call deck_cursor(deck, blk, c)
       is_set = blk%base == 'LOAD_NODE_SET'
       do ic = data_start(blk), blk%n
          l = load_node_in_t()
-         call positive_id(deck, blk, ic, 1, w, merge('NSID', 'NID ', is_set), l%nid, error)
-         if (allocated(error)) return
-         call get_int(deck, blk, ic, 2, w, 'DOF', 0, l%dof, error)
-         if (allocated(error)) return
-         if (l%dof < 1 .or. l%dof > 3) then
-            call field_error(deck, blk, ic, 2, w, 'DOF', 'DOF '//str(l%dof)//' is not '// &
-               'supported (supported: 1, 2, 3 force along x, y, z)', error)
-            return
-         end if
-         call positive_id(deck, blk, ic, 3, w, 'LCID', l%lcid, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, ic, 4, w, 'SF', 1.0_wp, l%sf, error)
-         if (allocated(error)) return
+         call c%seek(ic)
+         call c%id(trim(merge('NSID', 'NID ', is_set)), l%nid)
+         call c%int('DOF', 0, l%dof)
+         if (c%ok() .and. (l%dof < 1 .or. l%dof > 3)) call c%fail('DOF', 'DOF '//str(l%dof)// &
+            ' is not supported (supported: 1, 2, 3 force along x, y, z)')
+         call c%id('LCID', l%lcid)
+         call c%real('SF', 1.0_wp, l%sf)
          if (l%sf == 0.0_wp) l%sf = 1.0_wp
-         call zero_int(deck, blk, ic, 5, w, 'CID', 'local coordinate systems', error)
-         if (allocated(error)) return
+         call c%zero_int('CID', 'local coordinate systems')
          do k = 1, 3
-            call zero_int(deck, blk, ic, 5 + k, w, 'M'//str(k), 'follower forces', error)
-            if (allocated(error)) return
+            call c%zero_int('M'//str(k), 'follower forces')
          end do
-         l%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
+         if (.not. c%ok()) exit
+         l%src = origin(blk%ifile, c%card_line(), blk%name)
          if (is_set) then
             inp%node_set_loads = [inp%node_set_loads, l]   ! nid holds NSID: loads_finish
          else
             inp%node_loads = [inp%node_loads, l]
          end if
       end do
+      call c%done(error)
    end subroutine read_load_node
 
    !> After the whole deck (sets resolved): each *LOAD_NODE_SET card becomes the same load
@@ -421,49 +331,39 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), ic, k, k0
+      integer :: ic, k
       logical :: is_set
       type(load_seg_in_t) :: l
-      w = std_widths(blk, 8)
+      type(card_t) :: c
+      call deck_cursor(deck, blk, c)
       is_set = blk%base == 'LOAD_SEGMENT_SET'
-      call need_data(deck, blk, data_start(blk), merge('SSID LCID SF AT        ', &
-                     'LCID SF AT N1 N2 N3 N4 ', is_set), error)
-      if (allocated(error)) return
+      call c%need(data_start(blk), 'missing card '//str(data_start(blk))//' ('// &
+                  trim(merge('SSID LCID SF AT        ', 'LCID SF AT N1 N2 N3 N4 ', is_set))//')')
       do ic = data_start(blk), blk%n
+         if (.not. c%ok()) exit
          l = load_seg_in_t()
-         k0 = 0
-         if (is_set) then
-            call positive_id(deck, blk, ic, 1, w, 'SSID', l%ssid, error)
-            if (allocated(error)) return
-            k0 = 1
-         end if
-         call positive_id(deck, blk, ic, k0 + 1, w, 'LCID', l%lcid, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, ic, k0 + 2, w, 'SF', 1.0_wp, l%sf, error)
-         if (allocated(error)) return
+         call c%seek(ic)
+         if (is_set) call c%id('SSID', l%ssid)
+         call c%id('LCID', l%lcid)
+         call c%real('SF', 1.0_wp, l%sf)
          if (l%sf == 0.0_wp) l%sf = 1.0_wp
-         call get_real(deck, blk, ic, k0 + 3, w, 'AT', 0.0_wp, l%at, error)
-         if (allocated(error)) return
+         call c%real('AT', 0.0_wp, l%at)
          if (is_set) then
-            call zero_real(deck, blk, ic, 5, w, 'DT', 'a death time', error)
-            if (allocated(error)) return
+            call c%zero_real('DT', 'a death time')
          else
             do k = 1, 4
-               call get_int(deck, blk, ic, 3 + k, w, 'N'//str(k), 0, l%n(k), error)
-               if (allocated(error)) return
-               if (k <= 3 .and. l%n(k) <= 0) then
-                  call field_error(deck, blk, ic, 3 + k, w, 'N'//str(k), 'node id must '// &
-                                   'be > 0', error)
-                  return
-               end if
+               call c%int('N'//str(k), 0, l%n(k))
+               if (c%ok() .and. k <= 3 .and. l%n(k) <= 0) call c%fail('N'//str(k), &
+                  'node id must be > 0')
             end do
             if (l%n(4) == 0) l%n(4) = l%n(3)
-            call zero_int(deck, blk, ic, 8, w, 'N5', 'higher-order segments', error)
-            if (allocated(error)) return
+            call c%zero_int('N5', 'higher-order segments')
          end if
-         l%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
+         if (.not. c%ok()) exit
+         l%src = origin(blk%ifile, c%card_line(), blk%name)
          inp%seg_loads = [inp%seg_loads, l]
       end do
+      call c%done(error)
    end subroutine read_load_segment
 
    !> card 1 NSID NSIDEX BOXID OFFSET BIRTH DEATH RWKSF; card 2 XT YT ZT XH YH ZH FRIC WVEL
@@ -472,109 +372,72 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), i0, k
+      integer :: i0, k
       real(wp) :: death, rwksf
       type(wall_in_t) :: r
+      type(card_t) :: c
       character(len=2), parameter :: tn(3) = ['XT', 'YT', 'ZT'], hn(3) = ['XH', 'YH', 'ZH']
-      w = std_widths(blk, 8)
+      call deck_cursor(deck, blk, c)
       i0 = data_start(blk)
       if (blk%opt_id) then
-         call get_int(deck, blk, 1, 1, w, 'RWID', 0, r%label, error)
-         if (allocated(error)) return
+         call c%seek(1)
+         call c%int('RWID', 0, r%label)
       end if
       if (r%label == 0) r%label = size(inp%walls) + 1
-      call need_data(deck, blk, i0, 'NSID NSIDEX BOXID OFFSET BIRTH DEATH RWKSF', error)
-      if (allocated(error)) return
-      if (blk%n < i0 + 1) then
-         call card_error(deck, blk, i0, 'missing card 2 (XT YT ZT XH YH ZH FRIC WVEL)', error)
-         return
-      end if
-      call check_max_cards(deck, blk, i0 + 1, error)
-      if (allocated(error)) return
-      call get_int(deck, blk, i0, 1, w, 'NSID', 0, r%nsid, error)
-      if (allocated(error)) return
-      call get_int(deck, blk, i0, 2, w, 'NSIDEX', 0, r%nsidex, error)
-      if (allocated(error)) return
-      call zero_int(deck, blk, i0, 3, w, 'BOXID', 'boxes', error)
-      if (allocated(error)) return
-      call get_real(deck, blk, i0, 4, w, 'OFFSET', 0.0_wp, r%offset, error)
-      if (allocated(error)) return
-      if (r%offset < 0.0_wp) then
-         call field_error(deck, blk, i0, 4, w, 'OFFSET', 'must be >= 0', error)
-         return
-      end if
-      call zero_real(deck, blk, i0, 5, w, 'BIRTH', 'wall birth times', error)
-      if (allocated(error)) return
-      call get_real(deck, blk, i0, 6, w, 'DEATH', 1.0e20_wp, death, error)
-      if (allocated(error)) return
-      if (death /= 0.0_wp .and. death < 1.0e20_wp) then
-         call field_error(deck, blk, i0, 6, w, 'DEATH', 'wall death times are not supported', &
-                          error)
-         return
-      end if
-      call get_real(deck, blk, i0, 7, w, 'RWKSF', 1.0_wp, rwksf, error)
-      if (allocated(error)) return
-      if (rwksf /= 0.0_wp .and. rwksf /= 1.0_wp) then
-         call field_error(deck, blk, i0, 7, w, 'RWKSF', 'penalty stiffness scaling is not '// &
-                          'supported (the wall is a kinematic constraint)', error)
-         return
-      end if
+      call c%need(i0, 'missing card '//str(i0)//' (NSID NSIDEX BOXID OFFSET BIRTH DEATH RWKSF)')
+      if (c%ok() .and. blk%n < i0 + 1) &
+         call c%fail_card(i0, 'missing card 2 (XT YT ZT XH YH ZH FRIC WVEL)')
+      call c%max_cards(i0 + 1)
+      call c%seek(i0)
+      call c%int('NSID', 0, r%nsid)
+      call c%int('NSIDEX', 0, r%nsidex)
+      call c%zero_int('BOXID', 'boxes')
+      call c%real('OFFSET', 0.0_wp, r%offset)
+      if (c%ok() .and. r%offset < 0.0_wp) call c%fail('OFFSET', 'must be >= 0')
+      call c%zero_real('BIRTH', 'wall birth times')
+      call c%real('DEATH', 1.0e20_wp, death)
+      if (c%ok() .and. death /= 0.0_wp .and. death < 1.0e20_wp) &
+         call c%fail('DEATH', 'wall death times are not supported')
+      call c%real('RWKSF', 1.0_wp, rwksf)
+      if (c%ok() .and. rwksf /= 0.0_wp .and. rwksf /= 1.0_wp) call c%fail('RWKSF', &
+         'penalty stiffness scaling is not supported (the wall is a kinematic constraint)')
+      call c%seek(i0 + 1)
       do k = 1, 3
-         call get_real(deck, blk, i0 + 1, k, w, tn(k), 0.0_wp, r%xt(k), error)
-         if (allocated(error)) return
-         call get_real(deck, blk, i0 + 1, 3 + k, w, hn(k), 0.0_wp, r%xh(k), error)
-         if (allocated(error)) return
+         call c%real(tn(k), 0.0_wp, r%xt(k))
       end do
-      call get_real(deck, blk, i0 + 1, 7, w, 'FRIC', 0.0_wp, r%fric, error)
+      do k = 1, 3
+         call c%real(hn(k), 0.0_wp, r%xh(k))
+      end do
+      call c%real('FRIC', 0.0_wp, r%fric)
+      if (c%ok() .and. (r%fric < 0.0_wp .or. r%fric > 1.0_wp)) call c%fail('FRIC', &
+         'must lie in [0, 1], got '//rstr(r%fric))
+      call c%zero_real('WVEL', 'welding of nodes to the wall')
+      if (c%ok() .and. .not. (norm2(r%xh - r%xt) > 0.0_wp)) call c%fail('XH', 'the head '// &
+         '(XH, YH, ZH) equals the tail (XT, YT, ZT): the wall normal is undefined')
+      call c%done(error)
       if (allocated(error)) return
-      if (r%fric < 0.0_wp .or. r%fric > 1.0_wp) then
-         call field_error(deck, blk, i0 + 1, 7, w, 'FRIC', 'must lie in [0, 1], got '// &
-                          rstr(r%fric), error)
-         return
-      end if
-      call zero_real(deck, blk, i0 + 1, 8, w, 'WVEL', 'welding of nodes to the wall', error)
-      if (allocated(error)) return
-      if (.not. (norm2(r%xh - r%xt) > 0.0_wp)) then
-         call field_error(deck, blk, i0 + 1, 4, w, 'XH', 'the head (XH, YH, ZH) equals the '// &
-                          'tail (XT, YT, ZT): the wall normal is undefined', error)
-         return
-      end if
       r%src = origin(blk%ifile, blk%cards(i0)%line, blk%name)
       inp%walls = [inp%walls, r]
    end subroutine read_rigidwall_planar
 
-   !> Fields 3-8 of a prescribed-motion card (*BOUNDARY_PRESCRIBED_MOTION_NODE/_SET/_RIGID):
-   !> VAD LCID SF VID DEATH BIRTH, with LS-DYNA's defaults (SF 0 -> 1, DEATH 0 -> 1e28).
-   subroutine read_motion_fields(deck, blk, ic, w, vad, lcid, sf, death, birth, error)
-      type(deck_t), intent(in) :: deck
-      type(block_t), intent(in) :: blk
-      integer, intent(in) :: ic, w(8)
+   !> Fields 3-8 of a prescribed-motion card (*BOUNDARY_PRESCRIBED_MOTION_NODE/_SET/_RIGID),
+   !> read from the cursor after DOF: VAD LCID SF VID DEATH BIRTH, with LS-DYNA's defaults
+   !> (SF 0 -> 1, DEATH 0 -> 1e28).
+   subroutine read_motion_fields(c, vad, lcid, sf, death, birth)
+      type(card_t), intent(inout) :: c
       integer, intent(out) :: vad, lcid
       real(wp), intent(out) :: sf, death, birth
-      type(error_t), allocatable, intent(out) :: error
-      call get_int(deck, blk, ic, 3, w, 'VAD', 0, vad, error)
-      if (allocated(error)) return
-      if (vad < 0 .or. vad > 2) then
-         call field_error(deck, blk, ic, 3, w, 'VAD', 'VAD '//str(vad)//' is not '// &
-            'supported (supported: 0 velocity, 1 acceleration, 2 displacement)', error)
-         return
-      end if
-      call positive_id(deck, blk, ic, 4, w, 'LCID', lcid, error)
-      if (allocated(error)) return
-      call get_real(deck, blk, ic, 5, w, 'SF', 1.0_wp, sf, error)
-      if (allocated(error)) return
+      call c%int('VAD', 0, vad)
+      if (c%ok() .and. (vad < 0 .or. vad > 2)) call c%fail('VAD', 'VAD '//str(vad)//' is '// &
+         'not supported (supported: 0 velocity, 1 acceleration, 2 displacement)')
+      call c%id('LCID', lcid)
+      call c%real('SF', 1.0_wp, sf)
       if (sf == 0.0_wp) sf = 1.0_wp
-      call zero_int(deck, blk, ic, 6, w, 'VID', '*DEFINE_VECTOR directions', error)
-      if (allocated(error)) return
-      call get_real(deck, blk, ic, 7, w, 'DEATH', 1.0e28_wp, death, error)
-      if (allocated(error)) return
+      call c%zero_int('VID', '*DEFINE_VECTOR directions')
+      call c%real('DEATH', 1.0e28_wp, death)
       if (death == 0.0_wp) death = 1.0e28_wp
-      call get_real(deck, blk, ic, 8, w, 'BIRTH', 0.0_wp, birth, error)
-      if (allocated(error)) return
-      if (birth >= death) then
-         call field_error(deck, blk, ic, 8, w, 'BIRTH', 'birth time '//rstr(birth)// &
-                          ' is not before the death time '//rstr(death), error)
-         return
-      end if
+      call c%real('BIRTH', 0.0_wp, birth)
+      if (c%ok() .and. birth >= death) call c%fail('BIRTH', 'birth time '//rstr(birth)// &
+                                                   ' is not before the death time '//rstr(death))
    end subroutine read_motion_fields
 end module dx_read_loads

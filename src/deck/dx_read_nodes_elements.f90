@@ -8,7 +8,7 @@ module dx_read_nodes_elements
    use dx_error, only: error_t
    use dx_strings, only: str, rstr
    use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, get_int, get_real, &
-                            field_error, card_error, block_error, std_widths, data_start
+                            field_error, card_error, data_start
    use dx_deck_registry, only: registry_t
    use dx_model, only: part_t, section_t, hourglass_t
    use dx_model_input, only: model_input_t, add_node, add_element, origin, input_add_part
@@ -28,6 +28,9 @@ contains
       call reg%add('HOURGLASS', read_hourglass, title=.true.)
    end subroutine register_nodes_elements
 
+   !> *NODE and *ELEMENT_SOLID read the fields in place (dx_card_fields through the deck's
+   !> get_int/get_real), not through a card cursor: the cursor holds a copy of its block, and a
+   !> mesh block of 1e6 cards would be copied (57 MB more and 5 % slower on a 1e6-node deck).
    subroutine read_node(deck, blk, inp, error)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
@@ -163,14 +166,10 @@ contains
       type(part_t) :: p
       type(card_t) :: c
       character(len=6), parameter :: unsup(3) = ['GRAV  ', 'ADPOPT', 'TMID  ']
-      if (blk%n < 2) then
-         call block_error(deck, blk, 0, 'missing card 2 (PID SECID MID EOSID HGID GRAV '// &
-                          'ADPOPT TMID)', error)
-         return
-      end if
       call deck_cursor(deck, blk, c)
+      call c%need(2, 'missing card 2 (PID SECID MID EOSID HGID GRAV ADPOPT TMID)')
       ic = 1
-      do while (ic <= blk%n)
+      do while (ic <= blk%n .and. c%ok())
          if (ic + 1 > blk%n) then
             call c%fail_card(ic, 'missing card 2 (PID SECID MID ...) after the heading card')
             exit
@@ -214,13 +213,10 @@ contains
       type(section_t) :: s
       type(card_t) :: c
       step = data_start(blk)
-      if (blk%n < step) then
-         call block_error(deck, blk, 0, 'missing card 1 (SECID ELFORM AET)', error)
-         return
-      end if
       call deck_cursor(deck, blk, c)
+      call c%need(step, 'missing card 1 (SECID ELFORM AET)')
       ic = step
-      do while (ic <= blk%n)
+      do while (ic <= blk%n .and. c%ok())
          s = section_t()
          s%title = ''
          if (blk%opt_title) s%title = trim(adjustl(blk%cards(ic-1)%text))
@@ -255,13 +251,10 @@ contains
       type(hourglass_t) :: h
       type(card_t) :: c
       step = data_start(blk)
-      if (blk%n < step) then
-         call block_error(deck, blk, 0, 'missing card 1 (HGID IHQ QM IBQ Q1 Q2 QB QW)', error)
-         return
-      end if
       call deck_cursor(deck, blk, c)
+      call c%need(step, 'missing card 1 (HGID IHQ QM IBQ Q1 Q2 QB QW)')
       ic = step
-      do while (ic <= blk%n)
+      do while (ic <= blk%n .and. c%ok())
          h = hourglass_t()
          call c%seek(ic)
          call c%int('HGID', 0, h%label)

@@ -9,8 +9,7 @@ module dx_read_rigid
    use dx_kinds, only: wp
    use dx_error, only: error_t
    use dx_strings, only: str, rstr
-   use dx_deck_cards, only: deck_t, block_t, get_int, get_real, field_error, block_error, &
-                            card_error, std_widths, data_start, block_title, check_max_cards
+   use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, data_start, block_title
    use dx_deck_registry, only: registry_t
    use dx_material, only: material_t, mat_holder_t
    use dx_mat_factory, only: new_material
@@ -51,32 +50,6 @@ contains
       o%key = blk%name
    end function rorigin
 
-   subroutine zero_int(deck, blk, ic, k, w, fname, why, error)
-      type(deck_t), intent(in) :: deck
-      type(block_t), intent(in) :: blk
-      integer, intent(in) :: ic, k, w(:)
-      character(*), intent(in) :: fname, why
-      type(error_t), allocatable, intent(out) :: error
-      integer :: v
-      call get_int(deck, blk, ic, k, w, fname, 0, v, error)
-      if (allocated(error)) return
-      if (v /= 0) call field_error(deck, blk, ic, k, w, fname, 'nonzero value '//str(v)// &
-                                   ' is not supported: '//why, error)
-   end subroutine zero_int
-
-   subroutine positive_id(deck, blk, ic, k, w, fname, v, error)
-      type(deck_t), intent(in) :: deck
-      type(block_t), intent(in) :: blk
-      integer, intent(in) :: ic, k, w(:)
-      character(*), intent(in) :: fname
-      integer, intent(out) :: v
-      type(error_t), allocatable, intent(out) :: error
-      call get_int(deck, blk, ic, k, w, fname, 0, v, error)
-      if (allocated(error)) return
-      if (v <= 0) call field_error(deck, blk, ic, k, w, fname, 'an id > 0 is required, got '// &
-                                   str(v), error)
-   end subroutine positive_id
-
    !> card 1 MID RO E PR N COUPLE M ALIAS; card 2 CMO CON1 CON2; card 3 LCO or A1 A2 A3 V1 V2 V3
    subroutine read_mat_rigid(deck, blk, inp, error)
       type(deck_t), intent(in) :: deck
@@ -85,95 +58,62 @@ contains
       type(error_t), allocatable, intent(out) :: error
       class(material_t), allocatable :: m
       type(mat_holder_t), allocatable :: t(:)
-      integer :: w(8), i0, n, k
+      type(error_t), allocatable :: err
+      type(card_t) :: c
+      integer :: i0, n, k
       real(wp) :: r
-      character(:), allocatable :: msg, fname
       character(len=3), parameter :: c3(6) = ['A1 ', 'A2 ', 'A3 ', 'V1 ', 'V2 ', 'V3 ']
-      w = std_widths(blk, 8)
       i0 = data_start(blk)
-      if (blk%n < i0) then
-         call block_error(deck, blk, 0, 'missing card 1 (MID RO E PR N COUPLE M ALIAS)', error)
-         return
-      end if
-      call check_max_cards(deck, blk, i0 + 2, error)
+      call deck_cursor(deck, blk, c)
+      call c%need(i0, 'missing card 1 (MID RO E PR N COUPLE M ALIAS)')
+      call c%max_cards(i0 + 2)
+      call c%done(error)
       if (allocated(error)) return
       call new_material(20, m, error)
       if (allocated(error)) return
       select type (m)
       type is (mat_rigid_t)
-         call get_int(deck, blk, i0, 1, w, 'MID', 0, m%label, error)
-         if (allocated(error)) return
-         if (m%label <= 0) then
-            call field_error(deck, blk, i0, 1, w, 'MID', 'material id must be > 0, got '// &
-                             str(m%label), error)
-            return
-         end if
+         call c%id('MID', m%label, 'material id must be > 0')
          m%title = block_title(blk)
-         call get_real(deck, blk, i0, 2, w, 'RO', 0.0_wp, m%ro, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, i0, 3, w, 'E', 0.0_wp, m%e, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, i0, 4, w, 'PR', 0.0_wp, m%pr, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, i0, 5, w, 'N', 0.0_wp, m%n, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, i0, 6, w, 'COUPLE', 0.0_wp, m%couple, error)
-         if (allocated(error)) return
-         call get_real(deck, blk, i0, 7, w, 'M', 0.0_wp, m%m, error)
-         if (allocated(error)) return
-         if (m%n /= 0.0_wp .or. m%m /= 0.0_wp) then
-            call field_error(deck, blk, i0, merge(5, 7, m%n /= 0.0_wp), w, &
-               merge('N', 'M', m%n /= 0.0_wp), 'MADYMO coupling is not supported', error)
-            return
-         end if
-         call get_real(deck, blk, i0, 8, w, 'ALIAS', 0.0_wp, m%alias, error)
-         if (allocated(error)) return
+         call c%real('RO', 0.0_wp, m%ro)
+         call c%real('E', 0.0_wp, m%e)
+         call c%real('PR', 0.0_wp, m%pr)
+         call c%real('N', 0.0_wp, m%n)
+         call c%real('COUPLE', 0.0_wp, m%couple)
+         call c%real('M', 0.0_wp, m%m)
+         if (c%ok() .and. (m%n /= 0.0_wp .or. m%m /= 0.0_wp)) &
+            call c%fail(merge('N', 'M', m%n /= 0.0_wp), 'MADYMO coupling is not supported')
+         call c%real('ALIAS', 0.0_wp, m%alias)
          if (blk%n >= i0 + 1) then
-            call get_real(deck, blk, i0 + 1, 1, w, 'CMO', 0.0_wp, m%cmo, error)
-            if (allocated(error)) return
-            call get_int(deck, blk, i0 + 1, 2, w, 'CON1', 0, m%con1, error)
-            if (allocated(error)) return
-            call get_int(deck, blk, i0 + 1, 3, w, 'CON2', 0, m%con2, error)
-            if (allocated(error)) return
-            if (m%cmo == 0.0_wp .and. (m%con1 /= 0 .or. m%con2 /= 0)) then
-               call field_error(deck, blk, i0 + 1, 1, w, 'CMO', 'CON1/CON2 are given but '// &
-                  'CMO = 0 (no constraints); set CMO = 1 for global constraints', error)
-               return
-            end if
+            call c%next()
+            call c%real('CMO', 0.0_wp, m%cmo)
+            call c%int('CON1', 0, m%con1)
+            call c%int('CON2', 0, m%con2)
+            if (c%ok() .and. m%cmo == 0.0_wp .and. (m%con1 /= 0 .or. m%con2 /= 0)) &
+               call c%fail('CMO', 'CON1/CON2 are given but CMO = 0 (no constraints); set '// &
+                           'CMO = 1 for global constraints')
          end if
          if (blk%n >= i0 + 2) then
+            call c%seek(i0 + 2)
             do k = 1, 6
-               call get_real(deck, blk, i0 + 2, k, w, trim(c3(k)), 0.0_wp, r, error)
-               if (allocated(error)) return
-               if (r /= 0.0_wp) then
-                  call field_error(deck, blk, i0 + 2, k, w, trim(merge('LCO', c3(k), k == 1)), &
-                     'local output systems (LCO, A1..V3) are not supported', error)
-                  return
-               end if
+               call c%real(trim(merge('LCO', c3(k), k == 1)), 0.0_wp, r)
+               if (c%ok() .and. r /= 0.0_wp) call c%fail(trim(merge('LCO', c3(k), k == 1)), &
+                  'local output systems (LCO, A1..V3) are not supported')
             end do
          end if
       end select
-      call m%setup(error)
-      if (allocated(error)) then
-         msg = error%message
-         fname = ''
-         if (allocated(error%field)) then
-            fname = error%field
-            msg = error%detail
+      if (c%ok()) then
+         call m%setup(err)
+         if (allocated(err)) then
+            if (allocated(err%field)) then
+               call c%fail(err%field, err%detail)
+            else
+               call c%fail_block(i0, err%message)
+            end if
          end if
-         select case (fname)
-         case ('RO'); call field_error(deck, blk, i0, 2, w, fname, msg, error)
-         case ('E'); call field_error(deck, blk, i0, 3, w, fname, msg, error)
-         case ('PR'); call field_error(deck, blk, i0, 4, w, fname, msg, error)
-         case ('CMO'); call field_error(deck, blk, i0 + 1, 1, w, fname, msg, error)
-         case ('CON1'); call field_error(deck, blk, i0 + 1, 2, w, fname, msg, error)
-         case ('CON2'); call field_error(deck, blk, i0 + 1, 3, w, fname, msg, error)
-         case default
-            msg = error%message
-            call block_error(deck, blk, i0, msg, error)
-         end select
-         return
       end if
+      call c%done(error)
+      if (allocated(error)) return
       n = size(inp%mats)
       allocate(t(n + 1))
       do k = 1, n
@@ -191,75 +131,55 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), ic, k
+      integer :: k
       type(part_t) :: p
       type(inertia_in_t) :: q
+      type(card_t) :: c
       character(len=3), parameter :: cn(3) = ['XC ', 'YC ', 'ZC '], &
          inn(6) = ['IXX', 'IXY', 'IXZ', 'IYY', 'IYZ', 'IZZ'], &
          vn(6) = ['VTX', 'VTY', 'VTZ', 'VRX', 'VRY', 'VRZ']
       character(len=6), parameter :: unsup(3) = ['GRAV  ', 'ADPOPT', 'TMID  ']
-      w = std_widths(blk, 8)
-      if (blk%n < 5) then
-         call block_error(deck, blk, 0, 'needs 5 cards: heading; PID SECID MID ...; '// &
-            'XC YC ZC TM IRCS NODEID; IXX IXY IXZ IYY IYZ IZZ; VTX VTY VTZ VRX VRY VRZ', error)
-         return
-      end if
+      call deck_cursor(deck, blk, c)
+      call c%need(5, 'needs 5 cards: heading; PID SECID MID ...; XC YC ZC TM IRCS NODEID; '// &
+                  'IXX IXY IXZ IYY IYZ IZZ; VTX VTY VTZ VRX VRY VRZ')
+      call c%done(error)
+      if (allocated(error)) return
       p%title = trim(adjustl(blk%cards(1)%text(1:min(70, len(blk%cards(1)%text)))))
-      ic = 2
-      call positive_id(deck, blk, ic, 1, w, 'PID', p%label, error)
-      if (allocated(error)) return
-      call positive_id(deck, blk, ic, 2, w, 'SECID', p%secid, error)
-      if (allocated(error)) return
-      call positive_id(deck, blk, ic, 3, w, 'MID', p%mid, error)
-      if (allocated(error)) return
-      call zero_int(deck, blk, ic, 4, w, 'EOSID', 'equations of state', error)
-      if (allocated(error)) return
-      call get_int(deck, blk, ic, 5, w, 'HGID', 0, p%hgid, error)
-      if (allocated(error)) return
-      do k = 6, 8
-         call zero_int(deck, blk, ic, k, w, trim(unsup(k - 5)), 'not supported', error)
-         if (allocated(error)) return
+      call c%seek(2)
+      call c%id('PID', p%label)
+      call c%id('SECID', p%secid)
+      call c%id('MID', p%mid)
+      call c%zero_int('EOSID', 'equations of state')
+      call c%int('HGID', 0, p%hgid)
+      do k = 1, 3
+         call c%zero_int(trim(unsup(k)), 'not supported')
       end do
       q%pid = p%label
-      ic = 3
+      call c%seek(3)
       do k = 1, 3
-         call get_real(deck, blk, ic, k, w, trim(cn(k)), 0.0_wp, q%xc(k), error)
-         if (allocated(error)) return
+         call c%real(trim(cn(k)), 0.0_wp, q%xc(k))
       end do
-      call get_real(deck, blk, ic, 4, w, 'TM', 0.0_wp, q%tm, error)
-      if (allocated(error)) return
-      if (.not. (q%tm > 0.0_wp)) then
-         call field_error(deck, blk, ic, 4, w, 'TM', 'translational mass must be > 0, got '// &
-                          rstr(q%tm), error)
-         return
-      end if
-      call get_int(deck, blk, ic, 5, w, 'IRCS', 0, q%ircs, error)
-      if (allocated(error)) return
-      if (q%ircs /= 0) then
-         call field_error(deck, blk, ic, 5, w, 'IRCS', 'inertia in a local system (IRCS = 1) '// &
-                          'is not supported; give the tensor in the global system', error)
-         return
-      end if
-      call check_max_cards(deck, blk, 5, error)
-      if (allocated(error)) return
-      call get_int(deck, blk, ic, 6, w, 'NODEID', 0, q%nodeid, error)
-      if (allocated(error)) return
-      if (q%nodeid < 0) then
-         call field_error(deck, blk, ic, 6, w, 'NODEID', 'must be >= 0', error)
-         return
-      end if
-      ic = 4
+      call c%real('TM', 0.0_wp, q%tm)
+      if (c%ok() .and. .not. (q%tm > 0.0_wp)) call c%fail('TM', 'translational mass must '// &
+                                                          'be > 0, got '//rstr(q%tm))
+      call c%int('IRCS', 0, q%ircs)
+      if (c%ok() .and. q%ircs /= 0) call c%fail('IRCS', 'inertia in a local system '// &
+         '(IRCS = 1) is not supported; give the tensor in the global system')
+      call c%max_cards(5)
+      call c%int('NODEID', 0, q%nodeid, min=0)
+      call c%seek(4)
       do k = 1, 6
-         call get_real(deck, blk, ic, k, w, trim(inn(k)), 0.0_wp, q%inertia(k), error)
-         if (allocated(error)) return
+         call c%real(trim(inn(k)), 0.0_wp, q%inertia(k))
       end do
-      ic = 5
+      call c%seek(5)
       do k = 1, 3
-         call get_real(deck, blk, ic, k, w, trim(vn(k)), 0.0_wp, q%vt(k), error)
-         if (allocated(error)) return
-         call get_real(deck, blk, ic, k + 3, w, trim(vn(k + 3)), 0.0_wp, q%vr(k), error)
-         if (allocated(error)) return
+         call c%real(trim(vn(k)), 0.0_wp, q%vt(k))
       end do
+      do k = 1, 3
+         call c%real(trim(vn(k + 3)), 0.0_wp, q%vr(k))
+      end do
+      call c%done(error)
+      if (allocated(error)) return
       q%src = rorigin(blk, 3)
       call input_add_part(inp, p, origin(blk%ifile, blk%cards(2)%line, blk%name))
       inp%rigid%inertias = [inp%rigid%inertias, q]
@@ -271,33 +191,27 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), ic
+      integer :: ic
       type(nrb_in_t) :: r
-      w = std_widths(blk, 8)
-      if (blk%n < data_start(blk)) then
-         call block_error(deck, blk, 0, 'missing card 1 (PID CID NSID PNODE IPRT DRFLAG '// &
-                          'RRFLAG)', error)
-         return
-      end if
+      type(card_t) :: c
+      call deck_cursor(deck, blk, c)
+      call c%need(data_start(blk), 'missing card 1 (PID CID NSID PNODE IPRT DRFLAG RRFLAG)')
       do ic = data_start(blk), blk%n
+         if (.not. c%ok()) exit
          r = nrb_in_t()
-         call positive_id(deck, blk, ic, 1, w, 'PID', r%pid, error)
-         if (allocated(error)) return
-         call zero_int(deck, blk, ic, 2, w, 'CID', 'local output systems', error)
-         if (allocated(error)) return
-         call positive_id(deck, blk, ic, 3, w, 'NSID', r%nsid, error)
-         if (allocated(error)) return
-         call zero_int(deck, blk, ic, 4, w, 'PNODE', 'a separate inertia node', error)
-         if (allocated(error)) return
-         call get_int(deck, blk, ic, 5, w, 'IPRT', 0, r%iprt, error)
-         if (allocated(error)) return
-         call zero_int(deck, blk, ic, 6, w, 'DRFLAG', 'displacement release', error)
-         if (allocated(error)) return
-         call zero_int(deck, blk, ic, 7, w, 'RRFLAG', 'rotation release', error)
-         if (allocated(error)) return
+         call c%seek(ic)
+         call c%id('PID', r%pid)
+         call c%zero_int('CID', 'local output systems')
+         call c%id('NSID', r%nsid)
+         call c%zero_int('PNODE', 'a separate inertia node')
+         call c%int('IPRT', 0, r%iprt)
+         call c%zero_int('DRFLAG', 'displacement release')
+         call c%zero_int('RRFLAG', 'rotation release')
+         if (.not. c%ok()) exit
          r%src = rorigin(blk, ic)
          inp%rigid%nrbs = [inp%rigid%nrbs, r]
       end do
+      call c%done(error)
    end subroutine read_nodal_rigid_body
 
    !> PID NID|NSID (IFLAG must be 0)
@@ -306,25 +220,24 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), ic
+      integer :: ic
       type(extra_in_t) :: r
-      w = std_widths(blk, 8)
-      if (blk%n < 1) then
-         call block_error(deck, blk, 0, 'missing card 1 (PID NID/NSID IFLAG)', error)
-         return
-      end if
+      type(card_t) :: c
+      call deck_cursor(deck, blk, c)
+      call c%need(1, 'missing card 1 (PID NID/NSID IFLAG)')
       do ic = 1, blk%n
+         if (.not. c%ok()) exit
          r = extra_in_t()
          r%is_set = blk%base == 'CONSTRAINED_EXTRA_NODES_SET'
-         call positive_id(deck, blk, ic, 1, w, 'PID', r%pid, error)
-         if (allocated(error)) return
-         call positive_id(deck, blk, ic, 2, w, merge('NSID', 'NID ', r%is_set), r%id, error)
-         if (allocated(error)) return
-         call zero_int(deck, blk, ic, 3, w, 'IFLAG', 'mass property update flag', error)
-         if (allocated(error)) return
+         call c%seek(ic)
+         call c%id('PID', r%pid)
+         call c%id(trim(merge('NSID', 'NID ', r%is_set)), r%id)
+         call c%zero_int('IFLAG', 'mass property update flag')
+         if (.not. c%ok()) exit
          r%src = rorigin(blk, ic)
          inp%rigid%extras = [inp%rigid%extras, r]
       end do
+      call c%done(error)
    end subroutine read_extra_nodes
 
    !> PID DOF VAD LCID SF VID DEATH BIRTH
@@ -333,31 +246,26 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), ic
+      integer :: ic
       type(rmotion_in_t) :: m
-      w = std_widths(blk, 8)
-      if (blk%n < data_start(blk)) then
-         call block_error(deck, blk, 0, 'missing card 1 (PID DOF VAD LCID SF VID DEATH '// &
-                          'BIRTH)', error)
-         return
-      end if
+      type(card_t) :: c
+      call deck_cursor(deck, blk, c)
+      call c%need(data_start(blk), 'missing card 1 (PID DOF VAD LCID SF VID DEATH BIRTH)')
       do ic = data_start(blk), blk%n
+         if (.not. c%ok()) exit
          m = rmotion_in_t()
-         call positive_id(deck, blk, ic, 1, w, 'PID', m%pid, error)
-         if (allocated(error)) return
-         call get_int(deck, blk, ic, 2, w, 'DOF', 0, m%dof, error)
-         if (allocated(error)) return
-         if (.not. any(m%dof == [1, 2, 3, 5, 6, 7])) then
-            call field_error(deck, blk, ic, 2, w, 'DOF', 'DOF '//str(m%dof)//' is not '// &
-               'supported (supported: 1, 2, 3 translation along x, y, z; 5, 6, 7 rotation '// &
-               'about x, y, z)', error)
-            return
-         end if
-         call read_motion_fields(deck, blk, ic, w, m%vad, m%lcid, m%sf, m%death, m%birth, error)
-         if (allocated(error)) return
+         call c%seek(ic)
+         call c%id('PID', m%pid)
+         call c%int('DOF', 0, m%dof)
+         if (c%ok() .and. .not. any(m%dof == [1, 2, 3, 5, 6, 7])) call c%fail('DOF', 'DOF '// &
+            str(m%dof)//' is not supported (supported: 1, 2, 3 translation along x, y, z; '// &
+            '5, 6, 7 rotation about x, y, z)')
+         call read_motion_fields(c, m%vad, m%lcid, m%sf, m%death, m%birth)
+         if (.not. c%ok()) exit
          m%src = rorigin(blk, ic)
          inp%rigid%motions = [inp%rigid%motions, m]
       end do
+      call c%done(error)
    end subroutine read_motion_rigid
 
    !> DT BINARY LCUR IOOPT
@@ -366,22 +274,16 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8)
-      w = std_widths(blk, 8)
-      if (blk%n < 1) then
-         call block_error(deck, blk, 0, 'missing card 1 (DT BINARY LCUR IOOPT)', error)
-         return
-      end if
-      call check_max_cards(deck, blk, 1, error)
-      if (allocated(error)) return
-      call get_real(deck, blk, 1, 1, w, 'DT', 0.0_wp, inp%rigid%rbdout_dt, error)
-      if (allocated(error)) return
-      if (.not. (inp%rigid%rbdout_dt > 0.0_wp)) then
-         call field_error(deck, blk, 1, 1, w, 'DT', 'output interval must be > 0, got '// &
-                          rstr(inp%rigid%rbdout_dt), error)
-         return
-      end if
-      call zero_int(deck, blk, 1, 3, w, 'LCUR', 'output interval curves', error)
+      type(card_t) :: c
+      call deck_cursor(deck, blk, c)
+      call c%need(1, 'missing card 1 (DT BINARY LCUR IOOPT)')
+      call c%max_cards(1)
+      call c%real('DT', 0.0_wp, inp%rigid%rbdout_dt)
+      if (c%ok() .and. .not. (inp%rigid%rbdout_dt > 0.0_wp)) call c%fail('DT', 'output '// &
+         'interval must be > 0, got '//rstr(inp%rigid%rbdout_dt))
+      call c%skip(1)                 ! BINARY: which files LS-DYNA writes
+      call c%zero_int('LCUR', 'output interval curves')
+      call c%done(error)
    end subroutine read_rbdout
 
    !> LCID SF LCIDDR XC YC ZC CID
@@ -390,29 +292,24 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8)
       type(body_load_in_t) :: b
-      w = std_widths(blk, 8)
-      if (blk%n < 1) then
-         call block_error(deck, blk, 0, 'missing card 1 (LCID SF LCIDDR XC YC ZC CID)', error)
-         return
-      end if
-      call check_max_cards(deck, blk, 1, error)
-      if (allocated(error)) return
+      type(card_t) :: c
+      call deck_cursor(deck, blk, c)
+      call c%need(1, 'missing card 1 (LCID SF LCIDDR XC YC ZC CID)')
+      call c%max_cards(1)
       select case (blk%base)
       case ('LOAD_BODY_X'); b%dir = 1
       case ('LOAD_BODY_Y'); b%dir = 2
       case default; b%dir = 3
       end select
-      call positive_id(deck, blk, 1, 1, w, 'LCID', b%lcid, error)
-      if (allocated(error)) return
-      call get_real(deck, blk, 1, 2, w, 'SF', 1.0_wp, b%sf, error)
-      if (allocated(error)) return
+      call c%id('LCID', b%lcid)
+      call c%real('SF', 1.0_wp, b%sf)
       if (b%sf == 0.0_wp) b%sf = 1.0_wp
-      call zero_int(deck, blk, 1, 3, w, 'LCIDDR', 'dynx has no dynamic relaxation', error)
-      if (allocated(error)) return
+      call c%zero_int('LCIDDR', 'dynx has no dynamic relaxation')
       ! XC YC ZC: centre of rotation for angular velocities, used by _RX/_RY/_RZ only
-      call zero_int(deck, blk, 1, 7, w, 'CID', 'local coordinate systems', error)
+      call c%skip(3)
+      call c%zero_int('CID', 'local coordinate systems')
+      call c%done(error)
       if (allocated(error)) return
       b%ifile = blk%ifile
       b%line = blk%cards(1)%line

@@ -11,8 +11,7 @@
 module dx_read_sets
    use dx_error, only: error_t, set_error
    use dx_strings, only: str, upper
-   use dx_deck_cards, only: deck_t, block_t, get_int, get_list_id, get_text, field_error, block_error, &
-                            std_widths, data_start
+   use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, data_start
    use dx_deck_registry, only: registry_t
    use dx_model_input, only: model_input_t, origin, origin_t, label_list_t, segment_list_t, &
                              set_gen_in_t, set_step_in_t
@@ -41,32 +40,28 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), i0, ic, k, n
+      integer :: i0, ic, k, n
       integer, allocatable :: ids(:)
       type(label_list_t) :: s
+      type(card_t) :: c
       character(:), allocatable :: what
-      w = std_widths(blk, 8)
       i0 = data_start(blk)
       what = merge('NID', 'PID', is_node_set(blk%base))
-      if (blk%n < i0) then
-         call block_error(deck, blk, 0, 'missing card 1 (SID DA1 DA2 DA3 DA4 SOLVER)', error)
-         return
-      end if
-      call get_int(deck, blk, i0, 1, w, 'SID', 0, s%label, error)
+      call deck_cursor(deck, blk, c)
+      call read_sid(c, i0, s%label)
+      call c%done(error)
       if (allocated(error)) return
-      if (s%label <= 0) then
-         call field_error(deck, blk, i0, 1, w, 'SID', 'set id must be > 0, got '// &
-                          str(s%label), error)
-         return
-      end if
       allocate(ids(8*(blk%n - i0)))
       n = 0
       do ic = i0 + 1, blk%n
+         call c%seek(ic)
          do k = 1, 8
-            call get_list_id(deck, blk, ic, k, w, what//str(k), ids, n, error)
-            if (allocated(error)) return
+            call c%list_id(what//str(k), ids, n)
          end do
+         if (.not. c%ok()) exit
       end do
+      call c%done(error)
+      if (allocated(error)) return
       s%ids = ids(1:n)
       s%src = origin(blk%ifile, blk%cards(i0)%line, blk%name)
       if (is_node_set(blk%base)) then
@@ -82,23 +77,14 @@ contains
    end function is_node_set
 
    !> Card 1 SID (DA1..DA4 SOLVER read past); error when missing or SID <= 0.
-   subroutine read_sid(deck, blk, i0, sid, error)
-      type(deck_t), intent(in) :: deck
-      type(block_t), intent(in) :: blk
+   subroutine read_sid(c, i0, sid)
+      type(card_t), intent(inout) :: c
       integer, intent(in) :: i0
       integer, intent(out) :: sid
-      type(error_t), allocatable, intent(out) :: error
-      integer :: w(8)
-      w = std_widths(blk, 8)
       sid = 0
-      if (blk%n < i0) then
-         call block_error(deck, blk, 0, 'missing card 1 (SID DA1 DA2 DA3 DA4 SOLVER)', error)
-         return
-      end if
-      call get_int(deck, blk, i0, 1, w, 'SID', 0, sid, error)
-      if (allocated(error)) return
-      if (sid <= 0) call field_error(deck, blk, i0, 1, w, 'SID', 'set id must be > 0, got '// &
-                                     str(sid), error)
+      call c%need(i0, 'missing card 1 (SID DA1 DA2 DA3 DA4 SOLVER)')
+      call c%seek(i0)
+      call c%id('SID', sid, 'set id must be > 0')
    end subroutine read_sid
 
    !> *SET_NODE_LIST_GENERATE / *SET_PART_LIST_GENERATE: B1BEG B1END ... B4BEG B4END.
@@ -107,31 +93,36 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), i0, ic, k, b, e, n
+      integer :: i0, ic, k, b, e, n
       integer, allocatable :: ids(:)
       type(set_gen_in_t) :: g
-      w = std_widths(blk, 8)
+      type(card_t) :: c
       i0 = data_start(blk)
-      call read_sid(deck, blk, i0, g%label, error)
+      call deck_cursor(deck, blk, c)
+      call read_sid(c, i0, g%label)
+      call c%done(error)
       if (allocated(error)) return
       allocate(ids(8*(blk%n - i0)))
       n = 0
       do ic = i0 + 1, blk%n
-         do k = 1, 7, 2
-            call get_int(deck, blk, ic, k, w, 'B'//str((k+1)/2)//'BEG', 0, b, error)
-            if (allocated(error)) return
-            call get_int(deck, blk, ic, k + 1, w, 'B'//str((k+1)/2)//'END', 0, e, error)
-            if (allocated(error)) return
+         call c%seek(ic)
+         do k = 1, 4
+            call c%int('B'//str(k)//'BEG', 0, b)
+            call c%int('B'//str(k)//'END', 0, e)
+            if (.not. c%ok()) exit
             if (b == 0 .and. e == 0) cycle
             if (b <= 0 .or. e < b) then
-               call field_error(deck, blk, ic, k + 1, w, 'B'//str((k+1)/2)//'END', &
-                  'a range needs 0 < BEG <= END, got '//str(b)//', '//str(e), error)
-               return
+               call c%fail('B'//str(k)//'END', 'a range needs 0 < BEG <= END, got '//str(b)// &
+                           ', '//str(e))
+               exit
             end if
             ids(n + 1:n + 2) = [b, e]
             n = n + 2
          end do
+         if (.not. c%ok()) exit
       end do
+      call c%done(error)
+      if (allocated(error)) return
       g%nodes = is_node_set(blk%base)
       g%src = origin(blk%ifile, blk%cards(i0)%line, blk%name)
       allocate(g%steps(1))
@@ -147,39 +138,44 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), i0, ic, k, n
+      integer :: i0, ic, k, n
       integer :: ids(7)
       character(:), allocatable :: op
       type(set_gen_in_t) :: g
       type(set_step_in_t) :: st
-      w = std_widths(blk, 8)
+      type(card_t) :: c
       i0 = data_start(blk)
-      call read_sid(deck, blk, i0, g%label, error)
+      call deck_cursor(deck, blk, c)
+      call read_sid(c, i0, g%label)
+      call c%done(error)
       if (allocated(error)) return
       allocate(g%steps(0))
       do ic = i0 + 1, blk%n
-         call get_text(deck, blk, ic, 1, w, op)
+         call c%seek(ic)
+         call c%text_field(1, c%w(1:c%nw), op)
          op = upper(op)
+         call c%skip(1)
          select case (op)
          case ('ALL', 'NODE', 'PART', 'BOX', 'SET', 'DNODE', 'DPART', 'DBOX', 'DSET')
          case ('')
             cycle
          case default
-            call field_error(deck, blk, ic, 1, w, 'OPTION', 'option '''//op//''' is not '// &
-               'supported (supported: ALL, NODE, PART, BOX, SET, DNODE, DPART, DBOX, DSET)', &
-               error)
-            return
+            call c%fail_here('OPTION', "option '"//op//"' is not supported (supported: "// &
+                             'ALL, NODE, PART, BOX, SET, DNODE, DPART, DBOX, DSET)')
+            exit
          end select
          n = 0
-         do k = 2, 8
-            call get_list_id(deck, blk, ic, k, w, 'E'//str(k - 1), ids, n, error)
-            if (allocated(error)) return
+         do k = 1, 7
+            call c%list_id('E'//str(k), ids, n)
          end do
+         if (.not. c%ok()) exit
          st%op = op
          st%ids = ids(1:n)
-         st%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
+         st%src = origin(blk%ifile, c%card_line(), blk%name)
          g%steps = [g%steps, st]
       end do
+      call c%done(error)
+      if (allocated(error)) return
       g%nodes = .true.
       g%src = origin(blk%ifile, blk%cards(i0)%line, blk%name)
       inp%set_gens = [inp%set_gens, g]
@@ -320,35 +316,30 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), i0, ic, k, n
+      integer :: i0, ic, k, n
       type(segment_list_t) :: s
-      w = std_widths(blk, 8)
+      type(card_t) :: c
       i0 = data_start(blk)
-      if (blk%n < i0) then
-         call block_error(deck, blk, 0, 'missing card 1 (SID DA1 DA2 DA3 DA4)', error)
-         return
-      end if
-      call get_int(deck, blk, i0, 1, w, 'SID', 0, s%label, error)
+      call deck_cursor(deck, blk, c)
+      call c%need(i0, 'missing card 1 (SID DA1 DA2 DA3 DA4)')
+      call c%id('SID', s%label, 'set id must be > 0')
+      call c%done(error)
       if (allocated(error)) return
-      if (s%label <= 0) then
-         call field_error(deck, blk, i0, 1, w, 'SID', 'set id must be > 0, got '// &
-                          str(s%label), error)
-         return
-      end if
       allocate(s%seg(4, blk%n - i0))
       n = 0
       do ic = i0 + 1, blk%n
          n = n + 1
+         call c%seek(ic)
          do k = 1, 4
-            call get_int(deck, blk, ic, k, w, 'N'//str(k), 0, s%seg(k, n), error)
-            if (allocated(error)) return
-            if (k <= 3 .and. s%seg(k, n) <= 0) then
-               call field_error(deck, blk, ic, k, w, 'N'//str(k), 'node id must be > 0', error)
-               return
-            end if
+            call c%int('N'//str(k), 0, s%seg(k, n))
+            if (c%ok() .and. k <= 3 .and. s%seg(k, n) <= 0) call c%fail('N'//str(k), &
+                                                                       'node id must be > 0')
          end do
+         if (.not. c%ok()) exit
          if (s%seg(4, n) == 0) s%seg(4, n) = s%seg(3, n)
       end do
+      call c%done(error)
+      if (allocated(error)) return
       s%src = origin(blk%ifile, blk%cards(i0)%line, blk%name)
       inp%segment_sets = [inp%segment_sets, s]
    end subroutine read_set_segment

@@ -20,14 +20,14 @@ module dx_par_emc
    use dx_kinds, only: wp
    use dx_strings, only: str, rstr
    use dx_log, only: log_info
-   use dx_par, only: par_rank, par_size, par_wtime, par_allreduce, PAR_SUM
+   use dx_par, only: par_rank, par_size, par_wtime, par_allreduce, PAR_SUM, PAR_MAX
    use dx_par_plan, only: par_gather_ordered
    use dx_emc_types, only: emc_system_t
    use dx_emc_contact, only: emc_split_t, emc_slot_range
    implicit none
    private
    public :: par_emc_t, par_emc_setup, par_emc_on, par_emc_report, par_emc_set_together, &
-             par_emc_together, par_emc_writer
+             par_emc_together, par_emc_writer, par_emc_max
 
    !> The conserving solver's split of the slave points over the ranks, with its counters.
    type, extends(emc_split_t) :: par_emc_t
@@ -40,6 +40,13 @@ module dx_par_emc
    end type par_emc_t
 
 contains
+
+   !> flags(:) = their maximum over the ranks (in place; no-op without MPI): the collective
+   !> stop/dump requests of the replicated conserving run (dx_checkpoint%checkpoint_requests).
+   subroutine par_emc_max(flags)
+      integer, intent(inout) :: flags(:)
+      call par_allreduce(flags, PAR_MAX)
+   end subroutine par_emc_max
 
    !> MPI run of a conserving deck: the slot ownership from the rank's part. nodes, owner:
    !> the rank file's global nodes and their owning ranks (rank_part_t).

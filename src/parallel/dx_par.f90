@@ -27,6 +27,7 @@ module dx_par
              PAR_MIN, PAR_MAX, par_bcast_text, par_minloc_flags, par_alltoallv
    public :: par_bcast_real, par_minloc8, par_comm, par_check
    public :: par_allgatherv_real, par_sparse_exchange, par_allgather_probe   ! (contact)
+   public :: par_displs, par_counts
 
    integer, parameter :: PAR_SUM = 1, PAR_MIN = 2, PAR_MAX = 3
 
@@ -219,22 +220,45 @@ contains
          call par_check(ierr, 'MPI_Bcast (failure message)')
       end if
    end subroutine par_bcast_text
+   !> The offsets (0-based, rank order) of blocks of cnt(0:np-1) items laid end to end: the
+   !> displacements of an MPI "v" collective.
+   pure function par_displs(cnt) result(d)
+      integer, intent(in) :: cnt(0:)
+      integer :: d(0:size(cnt) - 1)
+      integer :: r
+      if (size(cnt) == 0) return
+      d(0) = 0
+      do r = 1, size(cnt) - 1
+         d(r) = d(r - 1) + cnt(r - 1)
+      end do
+   end function par_displs
+
+   !> Every rank's n, in rank order (c(0:np-1)), on every rank; [n] without MPI.
+   function par_counts(n) result(c)
+      integer, intent(in) :: n
+      integer, allocatable :: c(:)
+      integer :: ierr
+      if (.not. mpi_on) then
+         c = [n]
+         return
+      end if
+      allocate(c(0:nranks - 1))
+      call MPI_Allgather(n, 1, MPI_INTEGER, c, 1, MPI_INTEGER, comm, ierr)
+      call par_check(ierr, 'MPI_Allgather (counts)')
+   end function par_counts
+
    subroutine alltoallv_i(sbuf, scnt, rbuf, rcnt)
       integer, intent(in) :: sbuf(:), scnt(0:)
       integer, intent(out) :: rbuf(:)
       integer, intent(in) :: rcnt(0:)
       integer, allocatable :: sd(:), rd(:)
-      integer :: r, ierr
+      integer :: ierr
       if (.not. mpi_on) then
          rbuf = sbuf
          return
       end if
-      allocate(sd(0:nranks - 1), rd(0:nranks - 1))
-      sd(0) = 0; rd(0) = 0
-      do r = 1, nranks - 1
-         sd(r) = sd(r - 1) + scnt(r - 1)
-         rd(r) = rd(r - 1) + rcnt(r - 1)
-      end do
+      sd = par_displs(scnt)
+      rd = par_displs(rcnt)
       call MPI_Alltoallv(sbuf, scnt, sd, MPI_INTEGER, rbuf, rcnt, rd, MPI_INTEGER, comm, ierr)
       call par_check(ierr, 'MPI_Alltoallv (integer)')
    end subroutine alltoallv_i
@@ -245,17 +269,13 @@ contains
       real(wp), intent(out) :: rbuf(:)
       integer, intent(in) :: rcnt(0:)
       integer, allocatable :: sd(:), rd(:)
-      integer :: r, ierr
+      integer :: ierr
       if (.not. mpi_on) then
          rbuf = sbuf
          return
       end if
-      allocate(sd(0:nranks - 1), rd(0:nranks - 1))
-      sd(0) = 0; rd(0) = 0
-      do r = 1, nranks - 1
-         sd(r) = sd(r - 1) + scnt(r - 1)
-         rd(r) = rd(r - 1) + rcnt(r - 1)
-      end do
+      sd = par_displs(scnt)
+      rd = par_displs(rcnt)
       call MPI_Alltoallv(sbuf, scnt, sd, MPI_DOUBLE_PRECISION, rbuf, rcnt, rd, &
                          MPI_DOUBLE_PRECISION, comm, ierr)
       call par_check(ierr, 'MPI_Alltoallv (real)')
@@ -316,23 +336,19 @@ contains
       integer, intent(in), optional :: counts(0:)
       integer, allocatable, intent(out), optional :: cnt(:)
       integer, allocatable :: c(:), d(:)
-      integer :: r, ierr
+      integer :: ierr
       if (.not. mpi_on) then
          rbuf = sbuf
          if (present(cnt)) cnt = [size(sbuf)]
          return
       end if
-      allocate(c(0:nranks - 1), d(0:nranks - 1))
+      allocate(c(0:nranks - 1))                 ! cnt is 0-based, as before
       if (present(counts)) then
          c = counts
       else
-         call MPI_Allgather(size(sbuf), 1, MPI_INTEGER, c, 1, MPI_INTEGER, comm, ierr)
-         call par_check(ierr, 'MPI_Allgather (counts)')
+         c = par_counts(size(sbuf))
       end if
-      d(0) = 0
-      do r = 1, nranks - 1
-         d(r) = d(r - 1) + c(r - 1)
-      end do
+      d = par_displs(c)
       allocate(rbuf(sum(c)))
       call MPI_Allgatherv(sbuf, size(sbuf), MPI_DOUBLE_PRECISION, rbuf, c, d, &
                           MPI_DOUBLE_PRECISION, comm, ierr)

@@ -11,12 +11,12 @@
 !> in the serial order. With one rank every plan is the identity (no MPI call).
 !> No module state: a plan is built once (setup) and passed to each call.
 module dx_par_plan
-   use mpi_f08, only: MPI_Allgather, MPI_Allgatherv, MPI_DOUBLE_PRECISION, MPI_Gatherv, &
+   use mpi_f08, only: MPI_Allgatherv, MPI_DOUBLE_PRECISION, MPI_Gatherv, &
                         MPI_INTEGER, MPI_Irecv, MPI_Isend, MPI_Request, MPI_STATUSES_IGNORE, &
                         MPI_Waitall
    use dx_kinds, only: wp
    use dx_sort, only: sort_index
-   use dx_par, only: par_comm, par_check, par_active, par_rank, par_size
+   use dx_par, only: par_comm, par_check, par_active, par_rank, par_size, par_displs, par_counts
    implicit none
    private
    public :: shared_sum_t, par_shared_setup, par_shared_sum, par_shared_sum_plain, &
@@ -304,19 +304,14 @@ contains
       real(wp), allocatable, intent(out) :: all_vals(:, :)
       integer, allocatable :: counts(:), displs(:), idx(:), kk(:)
       real(wp), allocatable :: vv(:, :)
-      integer :: ncomp, ntot, r, ierr, i
+      integer :: ncomp, ntot, ierr, i
       ncomp = size(vals, 1)
       if (.not. par_active()) then
          kk = keys
          vv = vals
       else
-         allocate(counts(0:par_size() - 1), displs(0:par_size() - 1))
-         call MPI_Allgather(size(keys), 1, MPI_INTEGER, counts, 1, MPI_INTEGER, par_comm(), ierr)
-         call par_check(ierr, 'MPI_Allgather (ordered gather counts)')
-         displs(0) = 0
-         do r = 1, par_size() - 1
-            displs(r) = displs(r - 1) + counts(r - 1)
-         end do
+         counts = par_counts(size(keys))
+         displs = par_displs(counts)
          ntot = sum(counts)
          allocate(kk(ntot), vv(ncomp, ntot))
          call MPI_Allgatherv(keys, size(keys), MPI_INTEGER, kk, counts, displs, MPI_INTEGER, &
@@ -337,21 +332,14 @@ contains
       type(gather_plan_t), intent(out) :: plan
       integer, intent(in) :: keys(:)
       integer, allocatable :: kk(:)
-      integer :: r, ierr, i
+      integer :: ierr, i
       plan%n = size(keys)
       if (.not. par_active()) then
          kk = keys
          plan%counts = [size(keys)]
          plan%displs = [0]
       else
-         allocate(plan%counts(0:par_size() - 1), plan%displs(0:par_size() - 1))
-         call MPI_Allgather(size(keys), 1, MPI_INTEGER, plan%counts, 1, MPI_INTEGER, &
-                            par_comm(), ierr)
-         call par_check(ierr, 'MPI_Allgather (gather plan counts)')
-         plan%displs(0) = 0
-         do r = 1, par_size() - 1
-            plan%displs(r) = plan%displs(r - 1) + plan%counts(r - 1)
-         end do
+         call plan_counts(plan, size(keys))
          allocate(kk(sum(plan%counts)))
          call MPI_Allgatherv(keys, size(keys), MPI_INTEGER, kk, plan%counts, plan%displs, &
                              MPI_INTEGER, par_comm(), ierr)
@@ -367,19 +355,17 @@ contains
       type(gather_plan_t), intent(in) :: plan
       real(wp), intent(in) :: vals(:, :)
       real(wp), intent(out) :: all_vals(:, :)
-      real(wp), allocatable :: vv(:, :)
-      integer :: ncomp, ierr
-      ncomp = size(vals, 1)
-      if (.not. par_active()) then
-         all_vals(:, 1:plan%n) = vals(:, plan%perm)
-         return
-      end if
-      allocate(vv(ncomp, size(plan%keys)))
-      call MPI_Allgatherv(vals, ncomp*plan%n, MPI_DOUBLE_PRECISION, vv, ncomp*plan%counts, &
-                          ncomp*plan%displs, MPI_DOUBLE_PRECISION, par_comm(), ierr)
-      call par_check(ierr, 'MPI_Allgatherv (gather plan values)')
-      all_vals(:, 1:size(plan%keys)) = vv(:, plan%perm)
+      call gather_values(plan, vals, all_vals, .false.)
    end subroutine par_gather_values
+
+   !> plan%counts (0:np-1, every rank's number of keys) and plan%displs.
+   subroutine plan_counts(plan, n)
+      type(gather_plan_t), intent(inout) :: plan
+      integer, intent(in) :: n
+      allocate(plan%counts(0:par_size() - 1), plan%displs(0:par_size() - 1))
+      plan%counts = par_counts(n)
+      plan%displs = par_displs(plan%counts)
+   end subroutine plan_counts
 
    !> par_gather_setup for a gather to rank 0 only (par_gather_values_root): rank 0 gets
    !> every rank's keys (plan%keys, ascending; plan%perm), the other ranks keep only the
@@ -389,19 +375,13 @@ contains
       type(gather_plan_t), intent(out) :: plan
       integer, intent(in) :: keys(:)
       integer, allocatable :: kk(:)
-      integer :: r, ierr, i
+      integer :: ierr, i
       plan%n = size(keys)
       if (.not. par_active()) then
          call par_gather_setup(plan, keys)
          return
       end if
-      allocate(plan%counts(0:par_size() - 1), plan%displs(0:par_size() - 1))
-      call MPI_Allgather(size(keys), 1, MPI_INTEGER, plan%counts, 1, MPI_INTEGER, par_comm(), ierr)
-      call par_check(ierr, 'MPI_Allgather (root gather plan counts)')
-      plan%displs(0) = 0
-      do r = 1, par_size() - 1
-         plan%displs(r) = plan%displs(r - 1) + plan%counts(r - 1)
-      end do
+      call plan_counts(plan, size(keys))
       allocate(kk(merge(sum(plan%counts), 0, par_rank() == 0)))
       call MPI_Gatherv(keys, size(keys), MPI_INTEGER, kk, plan%counts, plan%displs, &
                        MPI_INTEGER, 0, par_comm(), ierr)
@@ -418,6 +398,16 @@ contains
       type(gather_plan_t), intent(in) :: plan
       real(wp), intent(in) :: vals(:, :)
       real(wp), intent(inout) :: all_vals(:, :)
+      call gather_values(plan, vals, all_vals, .true.)
+   end subroutine par_gather_values_root
+
+   !> The gather of a plan: to every rank (MPI_Allgatherv) or to rank 0 only (MPI_Gatherv,
+   !> all_vals untouched elsewhere); serial: this rank's values in key order.
+   subroutine gather_values(plan, vals, all_vals, root)
+      type(gather_plan_t), intent(in) :: plan
+      real(wp), intent(in) :: vals(:, :)
+      real(wp), intent(inout) :: all_vals(:, :)
+      logical, intent(in) :: root
       real(wp), allocatable :: vv(:, :)
       integer :: ncomp, ierr
       ncomp = size(vals, 1)
@@ -426,9 +416,16 @@ contains
          return
       end if
       allocate(vv(ncomp, size(plan%keys)))
-      call MPI_Gatherv(vals, ncomp*plan%n, MPI_DOUBLE_PRECISION, vv, ncomp*plan%counts, &
-                       ncomp*plan%displs, MPI_DOUBLE_PRECISION, 0, par_comm(), ierr)
-      call par_check(ierr, 'MPI_Gatherv (root gather plan values)')
-      if (par_rank() == 0) all_vals(:, 1:size(plan%keys)) = vv(:, plan%perm)
-   end subroutine par_gather_values_root
+      if (root) then
+         call MPI_Gatherv(vals, ncomp*plan%n, MPI_DOUBLE_PRECISION, vv, ncomp*plan%counts, &
+                          ncomp*plan%displs, MPI_DOUBLE_PRECISION, 0, par_comm(), ierr)
+         call par_check(ierr, 'MPI_Gatherv (root gather plan values)')
+         if (par_rank() == 0) all_vals(:, 1:size(plan%keys)) = vv(:, plan%perm)
+      else
+         call MPI_Allgatherv(vals, ncomp*plan%n, MPI_DOUBLE_PRECISION, vv, ncomp*plan%counts, &
+                             ncomp*plan%displs, MPI_DOUBLE_PRECISION, par_comm(), ierr)
+         call par_check(ierr, 'MPI_Allgatherv (gather plan values)')
+         all_vals(:, 1:size(plan%keys)) = vv(:, plan%perm)
+      end if
+   end subroutine gather_values
 end module dx_par_plan

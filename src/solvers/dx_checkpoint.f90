@@ -28,7 +28,6 @@ module dx_checkpoint
    use dx_timer, only: wall_time
    use dx_model, only: model_t
    use dx_output, only: output_t
-   use dx_par, only: par_allreduce, PAR_MAX
    use dx_domain, only: domain_t, requests_t
    use dx_signals, only: signal_stop_requested, signal_dump_requested, signal_name, &
                          signal_raise, signal_dump_count, signal_dump_served, signal_dump_serve
@@ -215,9 +214,15 @@ contains
    !> checkpoint: --raise-at-cycle, then this rank's stop signal, SIGUSR1 and wall-clock
    !> limit, reduced (MAX) over the ranks into ck%coll, which checkpoint_stage acts on at the
    !> same step on every rank. No-op otherwise.
-   subroutine checkpoint_requests(ck, model)
+   subroutine checkpoint_requests(ck, model, reduce_max)
       type(checkpoint_t), intent(inout) :: ck
       type(model_t), intent(in) :: model
+      !> the reduction (MAX over the ranks, in place) the engine provides (dx_par_emc)
+      interface
+         subroutine reduce_max(flags)
+            integer, intent(inout) :: flags(:)
+         end subroutine reduce_max
+      end interface
       integer :: flags(3)
       real(wp) :: est, now
       if (.not. ck%replicated) return
@@ -232,7 +237,7 @@ contains
          if (est < 0.0_wp) est = estimated_dump_cost(model)
          if (now - ck%wall0 + 3.0_wp*ck%cycle_cost + 2.0_wp*est >= ck%walltime) flags(3) = 1
       end if
-      call par_allreduce(flags, PAR_MAX)
+      call reduce_max(flags)
       if (flags(2) <= signal_dump_served()) flags(2) = 0   ! every SIGUSR1 already served
       ck%coll = flags
    end subroutine checkpoint_requests

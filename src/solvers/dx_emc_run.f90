@@ -19,7 +19,8 @@ module dx_emc_run
    use dx_domain, only: domain_t
    use dx_signals, only: signal_stop_requested, signal_dump_pending
    use dx_append_file, only: append_from
-   use dx_par_emc, only: par_emc_on, par_emc_writer, par_emc_set_together, par_emc_report
+   use dx_par_emc, only: par_emc_on, par_emc_writer, par_emc_set_together, par_emc_report, &
+                         par_emc_max
    use dx_integrator, only: integrator_t, run_options_t, END_STOPPED
    implicit none
    private
@@ -174,7 +175,7 @@ contains
       type(checkpoint_t), intent(inout) :: ck
       model%time = self%t
       model%cycle = self%cyc
-      call checkpoint_requests(ck, model)    ! MPI: every rank's requests, reduced
+      call checkpoint_requests(ck, model, par_emc_max)   ! MPI: every rank's requests, reduced
       if (checkpoint_due(ck, model, self%cyc)) then
          call emc_to_model(self%st, model)
          call to_snapshot(self, model)

@@ -6,12 +6,13 @@ program test_card
    use dx_error, only: error_t
    use dx_card, only: card_t, block_t, param_t, open_card
    use dx_assert, only: check, check_close, assert_summary
+   use dx_strings, only: str
    implicit none
    type(block_t) :: blk
    type(card_t) :: c
    type(param_t) :: pars(1)
    type(error_t), allocatable :: err
-   integer :: mid, n
+   integer :: mid, n, ids(8), nid, tc, k
    real(wp) :: ro, e, pr
    character(*), parameter :: card1 = '         1    7.8e-9 -210000.0       0.3'
    character(:), allocatable :: want
@@ -67,6 +68,70 @@ program test_card
    call check(allocated(err), 'cursor: comma card, bad number')
    if (allocated(err)) call check(index(err%message, 'deck.k:11:10: *MAT_ELASTIC: field E: '// &
                                   'expected a number, got ''steel''') == 1, 'cursor: comma column')
+   ! ---- the list readers' calls: id, list_id, zero_int, need, at, widths, fail_here
+   call make_block(blk, [character(40) :: '         0', '         3        -2', &
+                                          '         0         5'])
+   call open_card('deck.k', pars, blk, c)
+   call c%id('SID', n, 'set id must be > 0')
+   call c%done(err)
+   call check(allocated(err), 'cursor: id 0 is an error')
+   if (allocated(err)) call check(index(err%message, 'deck.k:11:1: *MAT_ELASTIC: field SID: '// &
+                                  'set id must be > 0, got 0') == 1, 'cursor: id message')
+   call open_card('deck.k', pars, blk, c)
+   n = 0
+   call c%seek(2)
+   call c%list_id('NID1', ids, n)
+   call c%list_id('NID2', ids, n)
+   call c%done(err)
+   call check(n == 1 .and. ids(1) == 3, 'cursor: list_id appends the ids > 0')
+   call check(allocated(err), 'cursor: list_id, a negative id')
+   if (allocated(err)) call check(index(err%message, 'deck.k:12:11: *MAT_ELASTIC: field NID2: '// &
+                                  'must be >= 0, got -2') == 1, 'cursor: list_id message')
+   call open_card('deck.k', pars, blk, c)
+   call c%seek(3)
+   call c%zero_int('CID', 'local systems')
+   call c%zero_int('BOXID', 'boxes')
+   call c%done(err)
+   call check(allocated(err), 'cursor: zero_int')
+   if (allocated(err)) call check(index(err%message, 'deck.k:13:11: *MAT_ELASTIC: field BOXID: '// &
+      'nonzero value 5 is not supported: boxes') == 1, 'cursor: zero_int message')
+   call open_card('deck.k', pars, blk, c)
+   call c%need(4, 'missing card 4 (X)')
+   call c%done(err)
+   call check(allocated(err), 'cursor: need')
+   if (allocated(err)) call check(err%message == 'deck.k:10: *MAT_ELASTIC: missing card 4 (X)', &
+                                  'cursor: need message')
+   call open_card('deck.k', pars, blk, c)
+   call c%seek(3)
+   call c%at(2)
+   call c%int('B', 0, n)
+   call c%done(err)
+   call check(.not. allocated(err) .and. n == 5, 'cursor: at(2) reads field 2')
+   ! a *NODE card: widths 8, 16, ...; many cards keep one position per field name
+   call make_block(blk, [character(64) :: '       1             1.5', &
+                                          '       2             2.5                                       9'])
+   call open_card('deck.k', pars, blk, c)
+   call c%widths([8, 16, 16, 16, 8, 8])
+   do k = 1, 2
+      call c%seek(k)
+      call c%id('NID', nid)
+      call c%real('X', 0.0_wp, ro)
+      call c%skip(2)
+      call c%int('TC', 0, tc)
+      if (c%ok() .and. tc > 7) call c%fail('TC', 'must be 0 to 7, got '//str(tc))
+   end do
+   call check(c%nseen == 3, 'cursor: one remembered position per field name')
+   call c%done(err)
+   call check(allocated(err), 'cursor: widths, TC on card 2')
+   if (allocated(err)) call check(index(err%message, 'deck.k:12:57: *MAT_ELASTIC: field TC: '// &
+                                  'must be 0 to 7, got 9') == 1, 'cursor: widths column')
+   call open_card('deck.k', pars, blk, c)
+   call c%skip(1)
+   call c%fail_here('OPTION', 'bad')
+   call c%done(err)
+   call check(allocated(err), 'cursor: fail_here')
+   if (allocated(err)) call check(index(err%message, 'deck.k:11:1: *MAT_ELASTIC: field OPTION: '// &
+                                  'bad') == 1, 'cursor: fail_here column')
    call assert_summary()
 
 contains
