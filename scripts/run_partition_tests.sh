@@ -49,14 +49,19 @@ partition() {
         # weight (decks with rigid parts: 4 and 1), the list-scheduling bound
         # (W/n + wmax (1 - 1/n))/(W/n) with wmax the heaviest element; or, with contact
         # pairs kept whole, the heaviest pair over the mean (a pair that is the whole model
-        # puts everything on one rank)
+        # puts everything on one rank); with fewer vertices than ranks (elements and merged
+        # contact groups: overlapping pairs merge, e.g. three rods in a row with two contacts
+        # are one group) dynx-part puts one vertex per rank without METIS, and the heaviest
+        # vertex, possibly the whole model, sets the balance: any value up to n is allowed
         lim=$(awk -v m="$MAXBAL" -v n="$n" '/^ *[0-9]+ +[0-9]+ +[0-9]+ +[0-9]+ +[0-9]+ +[0-9]+ *$/ { w += $3 }
+              /fewer elements or contact groups than ranks/ { few = 1 }
               /^heaviest element weight:/ { x = $4 }
               /^contact pairs kept whole/ { cp = 1; next }
               cp && /^ *[0-9]+ +[0-9]+ +[0-9]+ +[0-9]+/ { if ($3 > gw) gw = $3 }
               END { q = w / n; c = int(q); if (c < q) c++; g = c / q
                     if (x > 1) { h = (q + x * (1 - 1 / n)) / q; if (h > g) g = h }
                     if (gw / q > g) g = gw / q
+                    if (few) g = n
                     print (g > m ? g : m) }' \
               "$dir/partition.txt")
         if awk -v b="$bal" -v m="$lim" 'BEGIN { exit !(b != "" && b + 0 <= m + 1e-4) }'; then
