@@ -14,7 +14,7 @@ module dx_read_nodes_elements
    use dx_model_input, only: model_input_t, add_node, add_element, origin, input_add_part
    implicit none
    private
-   public :: register_nodes_elements, read_section_id
+   public :: register_nodes_elements, read_section_id, add_section
 
 contains
 
@@ -229,8 +229,7 @@ contains
          if (c%ok() .and. s%aet /= 0) call c%fail('AET', 'ambient element types are not '// &
                                                   'supported')
          if (.not. c%ok()) exit
-         inp%sections = [inp%sections, s]
-         inp%section_src = [inp%section_src, origin(blk%ifile, blk%cards(ic)%line, blk%name)]
+         call add_section(inp, s, blk, ic)
          ic = ic + step
       end do
       call c%done(error)
@@ -250,6 +249,16 @@ contains
       if (c%ok() .and. s%label <= 0) call c%fail('SECID', 'section id must be > 0, got '// &
                                                  str(s%label))
    end subroutine read_section_id
+
+   !> Append section s, read from card ic of blk, to the input (and where it was read).
+   subroutine add_section(inp, s, blk, ic)
+      type(model_input_t), intent(inout) :: inp
+      type(section_t), intent(in) :: s
+      type(block_t), intent(in) :: blk
+      integer, intent(in) :: ic
+      inp%sections = [inp%sections, s]
+      inp%section_src = [inp%section_src, origin(blk%ifile, blk%cards(ic)%line, blk%name)]
+   end subroutine add_section
 
    !> *HOURGLASS: HGID IHQ QM IBQ Q1 Q2 QB/VDC QW; blank or zero values defer to *CONTROL_*.
    subroutine read_hourglass(deck, blk, inp, error)
