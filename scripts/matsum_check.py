@@ -28,6 +28,8 @@ The matsum labels are parsed as LS-DYNA's readers do (after 'time =', the 'mat.#
 import re
 import sys
 
+from ascii_out import read_columns, unknown_option
+
 PAIR = re.compile(r'([A-Za-z_+.#-]+)=\s*([-+0-9.Ee]+)')
 
 
@@ -56,17 +58,6 @@ def read_matsum(path):
     return times, masses, recs
 
 
-def read_glstat(path):
-    cols, rows = None, {}
-    for line in open(path):
-        if line.startswith('#'):
-            cols = line[1:].split()
-            continue
-        w = line.split()
-        rows[float(w[0])] = dict(zip(cols, [float(x) for x in w]))
-    return rows
-
-
 def main():
     a = sys.argv[1:]
     out = a.pop(0)
@@ -79,7 +70,7 @@ def main():
     while a:
         opt = a.pop(0)
         if opt == '--sum':
-            g = read_glstat(out + '/glstat')
+            g = read_columns(out + '/glstat')
             pairs = [('inten', 'internal'), ('kinen', 'kinetic'), ('hgeng', 'hourglass'),
                      ('x-mom', 'xmom'), ('y-mom', 'ymom'), ('z-mom', 'zmom')]
             n = 0
@@ -160,7 +151,7 @@ def main():
             print('part %d final inten %.6e > 0: %s' % (pid, last[pid]['inten'],
                                                         'ok' if good else 'FAIL'))
         else:
-            print('unknown option ' + opt); sys.exit(2)
+            unknown_option(opt)
     sys.exit(0 if ok else 1)
 
 

@@ -20,6 +20,8 @@ The file is parsed by its labels ('time =', 'interface=', 'slave=', 'master=', '
 import re
 import sys
 
+from ascii_out import read_columns, unknown_option
+
 PAIR = re.compile(r'([a-z]+(?: energy)?)=\s*([-+0-9.Ee]+)')
 
 
@@ -37,22 +39,11 @@ def read_sleout(path):
     return recs
 
 
-def read_glstat(path):
-    cols, rows = None, {}
-    for line in open(path):
-        if line.startswith('#'):
-            cols = line[1:].split()
-            continue
-        w = line.split()
-        rows[float(w[0])] = dict(zip(cols, [float(x) for x in w]))
-    return rows
-
-
 def main():
     a = sys.argv[1:]
     out = a.pop(0)
     recs = read_sleout(out + '/sleout')
-    g = read_glstat(out + '/glstat')
+    g = read_columns(out + '/glstat')
     ok = bool(recs)
     scale = max([abs(r['sum'][k]) for r in recs for k in ('slave', 'master', 'total energy')]
                 + [abs(d[k]) for r in recs for d in r['if'].values() for k in ('slave', 'master')])
@@ -90,7 +81,7 @@ def main():
             print('interface %d first nonzero at %s, interface %d at %s (at least %g later): %s'
                   % (i, ti, j, tj, dt, 'ok' if good else 'FAIL'))
         else:
-            print('unknown option ' + opt); sys.exit(2)
+            unknown_option(opt)
     sys.exit(0 if ok else 1)
 
 

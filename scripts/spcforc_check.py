@@ -13,6 +13,8 @@ The file is parsed by its labels ('output at time =', 'node=', 'local x,y,z forc
 """
 import sys
 
+from ascii_out import read_columns, unknown_option
+
 
 def read_spcforc(path):
     recs, t = [], None
@@ -32,18 +34,6 @@ def read_spcforc(path):
     return recs
 
 
-def read_nodout(path, node):
-    cols, d = None, {}
-    for line in open(path):
-        if line.startswith('#'):
-            cols = line[1:].split()
-            continue
-        w = line.split()
-        if int(w[1]) == node:
-            d[float(w[0])] = dict(zip(cols, [float(x) for x in w]))
-    return d
-
-
 def main():
     a = sys.argv[1:]
     out = a.pop(0)
@@ -55,7 +45,7 @@ def main():
         if opt == '--bar':
             e, area, length = float(a.pop(0)), float(a.pop(0)), float(a.pop(0))
             node, t0, tol = int(a.pop(0)), float(a.pop(0)), float(a.pop(0))
-            nod = read_nodout(out + '/nodout', node)
+            nod = read_columns(out + '/nodout', node)
             worst, worst_yz, worst_sum, n = 0.0, 0.0, 0.0, 0
             for r in recs:
                 s = [sum(f[c] for f in r['nodes'].values()) for c in range(3)]
@@ -74,7 +64,7 @@ def main():
                   '%.3e: %s' % (n, t0, worst, tol, worst_yz, worst_sum,
                                 'ok' if good else 'FAIL'))
         else:
-            print('unknown option ' + opt); sys.exit(2)
+            unknown_option(opt)
     sys.exit(0 if ok else 1)
 
 

@@ -14,7 +14,7 @@ module dx_read_nodes_elements
    use dx_model_input, only: model_input_t, add_node, add_element, origin, input_add_part
    implicit none
    private
-   public :: register_nodes_elements
+   public :: register_nodes_elements, read_section_id, add_section
 
 contains
 
@@ -218,12 +218,7 @@ contains
       ic = step
       do while (ic <= blk%n .and. c%ok())
          s = section_t()
-         s%title = ''
-         if (blk%opt_title) s%title = trim(adjustl(blk%cards(ic-1)%text))
-         call c%seek(ic)
-         call c%int('SECID', 0, s%label)
-         if (c%ok() .and. s%label <= 0) call c%fail('SECID', 'section id must be > 0, got '// &
-                                                    str(s%label))
+         call read_section_id(blk, ic, c, s)
          call c%int('ELFORM', 1, s%elform)
          if (s%elform == 0) s%elform = 1
          if (c%ok() .and. s%elform /= 1 .and. s%elform /= 2 .and. s%elform /= 10) &
@@ -234,12 +229,36 @@ contains
          if (c%ok() .and. s%aet /= 0) call c%fail('AET', 'ambient element types are not '// &
                                                   'supported')
          if (.not. c%ok()) exit
-         inp%sections = [inp%sections, s]
-         inp%section_src = [inp%section_src, origin(blk%ifile, blk%cards(ic)%line, blk%name)]
+         call add_section(inp, s, blk, ic)
          ic = ic + step
       end do
       call c%done(error)
    end subroutine read_section_solid
+
+   !> A section's title (with _TITLE: the card before ic, else blank) and its SECID (> 0) on
+   !> card ic; leaves c at card ic (*SECTION_SOLID, *SECTION_SHELL).
+   subroutine read_section_id(blk, ic, c, s)
+      type(block_t), intent(in) :: blk
+      integer, intent(in) :: ic
+      type(card_t), intent(inout) :: c
+      type(section_t), intent(inout) :: s
+      s%title = ''
+      if (blk%opt_title) s%title = trim(adjustl(blk%cards(ic-1)%text))
+      call c%seek(ic)
+      call c%int('SECID', 0, s%label)
+      if (c%ok() .and. s%label <= 0) call c%fail('SECID', 'section id must be > 0, got '// &
+                                                 str(s%label))
+   end subroutine read_section_id
+
+   !> Append section s, read from card ic of blk, to the input (and where it was read).
+   subroutine add_section(inp, s, blk, ic)
+      type(model_input_t), intent(inout) :: inp
+      type(section_t), intent(in) :: s
+      type(block_t), intent(in) :: blk
+      integer, intent(in) :: ic
+      inp%sections = [inp%sections, s]
+      inp%section_src = [inp%section_src, origin(blk%ifile, blk%cards(ic)%line, blk%name)]
+   end subroutine add_section
 
    !> *HOURGLASS: HGID IHQ QM IBQ Q1 Q2 QB/VDC QW; blank or zero values defer to *CONTROL_*.
    subroutine read_hourglass(deck, blk, inp, error)

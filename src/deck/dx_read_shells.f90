@@ -16,7 +16,8 @@ module dx_read_shells
    use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, data_start
    use dx_deck_registry, only: registry_t
    use dx_model, only: section_t
-   use dx_model_input, only: model_input_t, add_element, origin, SOLID_CARD_NODES
+   use dx_model_input, only: model_input_t, add_element, SOLID_CARD_NODES
+   use dx_read_nodes_elements, only: read_section_id, add_section
    implicit none
    private
    public :: register_shells
@@ -53,12 +54,7 @@ contains
       do while (ic <= blk%n .and. c%ok())
          s = section_t()
          s%shell = .true.
-         s%title = ''
-         if (blk%opt_title) s%title = trim(adjustl(blk%cards(ic-1)%text))
-         call c%seek(ic)
-         call c%int('SECID', 0, s%label)
-         if (c%ok() .and. s%label <= 0) call c%fail('SECID', 'section id must be > 0, got '// &
-                                                    str(s%label))
+         call read_section_id(blk, ic, c, s)
          call c%int('ELFORM', 2, s%elform)
          if (s%elform == 0) s%elform = 2
          if (c%ok() .and. s%elform /= 2) call c%fail('ELFORM', 'shell formulation '// &
@@ -109,8 +105,7 @@ contains
          call c%int('IDOF', 0, idof)           ! ELFORM 25/26 only: no meaning for ELFORM 2
          call c%int('EDGSET', 0, edgset)       ! an edge set for output: no effect on results
          if (.not. c%ok()) exit
-         inp%sections = [inp%sections, s]
-         inp%section_src = [inp%section_src, origin(blk%ifile, blk%cards(ic)%line, blk%name)]
+         call add_section(inp, s, blk, ic)
          ic = ic + step
       end do
       call c%done(error)

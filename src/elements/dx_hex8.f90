@@ -35,7 +35,7 @@ module dx_hex8
    !> proportional to V (L = V/A_max) it would approach zero geometrically, never crossing it
    !> (extreme_crushed_element), until tr D = dV/(V dt) overflows.
    real(wp), parameter :: vcrush = epsilon(1.0_wp)
-   public :: hex8_block, hex8_volume, hex8_mass_share, centred_work
+   public :: hex8_block, hex8_volume, hex8_mass_share, centred_work, stable_time_step
 
 
 contains

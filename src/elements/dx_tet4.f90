@@ -17,7 +17,8 @@ module dx_tet4
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_material, only: material_t
    use dx_element_types, only: elem_block_t, part_t, ES_WORK, block_result_t, ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL
-   use dx_hex8, only: centred_work   ! one copy, inlined in dx_hex8 (dx_solid_kernels)
+   use dx_hex8, only: centred_work, stable_time_step   ! one copy, inlined in dx_hex8
+                                                        ! (dx_solid_kernels)
    implicit none
    private
    real(wp), parameter :: vcrush = epsilon(1.0_wp)   !< collapsed below eps*V0 (as dx_hex8)
@@ -240,25 +241,4 @@ contains
          lc(i) = vol(i)/max(sqrt(b2), tiny(1.0_wp))
       end do
    end subroutine char_lengths
-
-   !> Smallest element step L/(Q + sqrt(Q**2 + c**2)), L = lc, Q = Q2*c + Q1*L*|e_kk|
-   !> (compression only); eroded elements do not count.
-   subroutine stable_time_step(blk, part, lc, trd, c, res)
-      type(elem_block_t), intent(in) :: blk
-      type(part_t), intent(in) :: part
-      real(wp), intent(in) :: lc(:), trd(:), c(:)
-      type(block_result_t), intent(inout) :: res
-      real(wp) :: qb, trde
-      integer :: i
-      do i = 1, blk%nel
-         qb = 0.0_wp
-         if (trd(i) < 0.0_wp) qb = part%q2*c(i) + part%q1*lc(i)*abs(trd(i))
-         trde = lc(i)/(qb + sqrt(qb*qb + c(i)*c(i)))
-         if (blk%failed(i)) trde = huge_wp
-         if (trde < res%dt) then
-            res%dt = trde; res%imin = i
-         end if
-         res%dte(i) = trde
-      end do
-   end subroutine stable_time_step
 end module dx_tet4

@@ -85,39 +85,25 @@ contains
    !> block order, as the lumped mass itself is. Also allocates the sums.
    subroutine part_mass_map(model)
       type(model_t), intent(inout) :: model
-      integer, allocatable :: stamp(:), touched(:), idx(:), cnt(:)
-      real(wp), allocatable :: w(:)
+      integer, allocatable :: stamp(:), touched(:), idx(:), node(:)
+      real(wp), allocatable :: w(:), m(:)
       type(family_t) :: fam
       real(wp) :: rho
       integer :: np, p, b, i, k, nd, nt, pos
       if (allocated(model%psum%ptr)) return
       np = size(model%parts)
-      allocate(stamp(model%nn), w(model%nn), touched(model%nn), cnt(np))
-      stamp = 0; w = 0.0_wp; cnt = 0
-      ! pass 1: the number of distinct nodes of each part
-      do p = 1, np
-         do b = 1, size(model%blocks)
-            if (model%blocks(b)%ipart /= p) cycle
-            fam = element_family(model%blocks(b)%etype)
-            do i = 1, model%blocks(b)%nel
-               do k = 1, fam%nen
-                  nd = model%blocks(b)%conn(k, i)
-                  if (stamp(nd) /= p) then
-                     stamp(nd) = p; cnt(p) = cnt(p) + 1
-                  end if
-               end do
-            end do
-         end do
+      ! at most one entry per element node: the parts' lists, one after the other
+      pos = 0
+      do b = 1, size(model%blocks)
+         fam = element_family(model%blocks(b)%etype)
+         pos = pos + model%blocks(b)%nel*fam%nen
       end do
+      allocate(stamp(model%nn), w(model%nn), touched(model%nn), node(pos), m(pos))
+      stamp = 0; w = 0.0_wp
       associate (ps => model%psum)
          allocate(ps%ptr(np + 1))
          ps%ptr(1) = 1
-         do p = 1, np
-            ps%ptr(p + 1) = ps%ptr(p) + cnt(p)
-         end do
-         allocate(ps%node(ps%ptr(np + 1) - 1), ps%m(ps%ptr(np + 1) - 1))
-         ! pass 2: the shares, summed element by element in block order
-         stamp = 0
+         ! each part's distinct nodes and their shares, summed element by element in block order
          do p = 1, np
             nt = 0
             rho = model%mats(model%parts(p)%imat)%m%ro
@@ -139,10 +125,13 @@ contains
             call sort_index(idx, touched(1:nt))
             pos = ps%ptr(p)
             do i = 1, nt
-               ps%node(pos + i - 1) = touched(idx(i))
-               ps%m(pos + i - 1) = w(touched(idx(i)))
+               node(pos + i - 1) = touched(idx(i))
+               m(pos + i - 1) = w(touched(idx(i)))
             end do
+            ps%ptr(p + 1) = ps%ptr(p) + nt
          end do
+         ps%node = node(1:ps%ptr(np + 1) - 1)
+         ps%m = m(1:ps%ptr(np + 1) - 1)
          allocate(ps%mass(np), ps%added(np), ps%ie(np), ps%ke(np), ps%hge(np), ps%mom(3, np))
          do p = 1, np
             ps%mass(p) = sum(ps%m(ps%ptr(p):ps%ptr(p + 1) - 1))

@@ -105,40 +105,37 @@ contains
          end if
       end if
       self%matsum_on = model%db%matsum_dt > 0
-      if (self%matsum_on .and. .not. allocated(error)) then
-         if (cont) then
-            call self%matsum%resume(self%dir//'/matsum', 'matsum', title, '', &
-                                    model%run%matsum_bytes, error, matsum_header(model))
-         else
-            call self%matsum%open(self%dir//'/matsum', 'matsum', title, '', error, &
-                                  matsum_header(model))
-         end if
-      end if
+      if (self%matsum_on .and. .not. allocated(error)) &
+         call open_layout_file(self%matsum, self%dir, 'matsum', title, matsum_header(model), cont, &
+                               model%run%matsum_bytes, error)
       if (self%matsum_on .and. .not. cont .and. model%ctrl%dt2ms /= 0) call log_warn('matsum: '// &
          'the +mass= column (added mass per part) is written as 0 under mass scaling '// &
          '(*CONTROL_TIMESTEP DT2MS); glstat''s added_mass column has the model''s total')
       self%spcforc_on = model%db%spcforc_dt > 0
-      if (self%spcforc_on .and. .not. allocated(error)) then
-         if (cont) then
-            call self%spcforc%resume(self%dir//'/spcforc', 'spcforc', title, '', &
-                                     model%run%spcforc_bytes, error, spcforc_header(model))
-         else
-            call self%spcforc%open(self%dir//'/spcforc', 'spcforc', title, '', error, &
-                                   spcforc_header(model))
-         end if
-      end if
+      if (self%spcforc_on .and. .not. allocated(error)) &
+         call open_layout_file(self%spcforc, self%dir, 'spcforc', title, spcforc_header(model), &
+                               cont, model%run%spcforc_bytes, error)
       self%sleout_on = model%db%sleout_dt > 0
-      if (self%sleout_on .and. .not. allocated(error)) then
-         if (cont) then
-            call self%sleout%resume(self%dir//'/sleout', 'sleout', title, '', &
-                                    model%run%sleout_bytes, error, sleout_header(model))
-         else
-            call self%sleout%open(self%dir//'/sleout', 'sleout', title, '', error, &
-                                  sleout_header(model))
-         end if
-      end if
+      if (self%sleout_on .and. .not. allocated(error)) &
+         call open_layout_file(self%sleout, self%dir, 'sleout', title, sleout_header(model), cont, &
+                               model%run%sleout_bytes, error)
       if (allocated(error)) call self%close(err2)   ! keep the first error
    end subroutine output_open
+
+   !> Open dir/what, one of the files that keep LS-DYNA's own layout (header: its lines), or
+   !> with cont resume it at nbytes (output_open).
+   subroutine open_layout_file(file, dir, what, title, header, cont, nbytes, error)
+      type(thist_file_t), intent(inout) :: file
+      character(*), intent(in) :: dir, what, title, header
+      logical, intent(in) :: cont
+      integer(8), intent(in) :: nbytes
+      type(error_t), allocatable, intent(out) :: error
+      if (cont) then
+         call file%resume(dir//'/'//what, what, title, '', nbytes, error, header)
+      else
+         call file%open(dir//'/'//what, what, title, '', error, header)
+      end if
+   end subroutine open_layout_file
 
    !> What a restart dump records about the output: plot states, glstat, nodout, matsum,
    !> spcforc and sleout bytes.

@@ -54,29 +54,23 @@ program test_card
    call c%real('RO', 0.0_wp, ro)
    call c%real('E', 0.0_wp, e)
    call c%fail('RO', 'material 1: density must be > 0')
-   call c%done(err)
-   call check(allocated(err), 'cursor: fail by name')
-   if (allocated(err)) call check(index(err%message, 'deck.k:11:11: *MAT_ELASTIC: field RO: '// &
-                                  'material 1: density must be > 0') == 1, 'cursor: fail column')
+   call check_fails('cursor: fail by name', 'deck.k:11:11: *MAT_ELASTIC: field RO: '// &
+                    'material 1: density must be > 0', 'cursor: fail column')
    ! ---- free format: field 3 of '1,7.8e-9,steel' starts at column 10
    call make_block(blk, [character(40) :: '1,7.8e-9,steel'])
    call open_card('deck.k', pars, blk, c)
    call c%int('MID', 0, mid)
    call c%real('RO', 0.0_wp, ro)
    call c%real('E', 0.0_wp, e)
-   call c%done(err)
-   call check(allocated(err), 'cursor: comma card, bad number')
-   if (allocated(err)) call check(index(err%message, 'deck.k:11:10: *MAT_ELASTIC: field E: '// &
-                                  'expected a number, got ''steel''') == 1, 'cursor: comma column')
+   call check_fails('cursor: comma card, bad number', 'deck.k:11:10: *MAT_ELASTIC: field E: '// &
+                    'expected a number, got ''steel''', 'cursor: comma column')
    ! ---- the list readers' calls: id, list_id, zero_int, need, at, widths, fail_here
    call make_block(blk, [character(40) :: '         0', '         3        -2', &
                                           '         0         5'])
    call open_card('deck.k', pars, blk, c)
    call c%id('SID', n, 'set id must be > 0')
-   call c%done(err)
-   call check(allocated(err), 'cursor: id 0 is an error')
-   if (allocated(err)) call check(index(err%message, 'deck.k:11:1: *MAT_ELASTIC: field SID: '// &
-                                  'set id must be > 0, got 0') == 1, 'cursor: id message')
+   call check_fails('cursor: id 0 is an error', 'deck.k:11:1: *MAT_ELASTIC: field SID: '// &
+                    'set id must be > 0, got 0', 'cursor: id message')
    call open_card('deck.k', pars, blk, c)
    n = 0
    call c%seek(2)
@@ -91,10 +85,8 @@ program test_card
    call c%seek(3)
    call c%zero_int('CID', 'local systems')
    call c%zero_int('BOXID', 'boxes')
-   call c%done(err)
-   call check(allocated(err), 'cursor: zero_int')
-   if (allocated(err)) call check(index(err%message, 'deck.k:13:11: *MAT_ELASTIC: field BOXID: '// &
-      'nonzero value 5 is not supported: boxes') == 1, 'cursor: zero_int message')
+   call check_fails('cursor: zero_int', 'deck.k:13:11: *MAT_ELASTIC: field BOXID: '// &
+                    'nonzero value 5 is not supported: boxes', 'cursor: zero_int message')
    call open_card('deck.k', pars, blk, c)
    call c%need(4, 'missing card 4 (X)')
    call c%done(err)
@@ -121,20 +113,24 @@ program test_card
       if (c%ok() .and. tc > 7) call c%fail('TC', 'must be 0 to 7, got '//str(tc))
    end do
    call check(c%nseen == 3, 'cursor: one remembered position per field name')
-   call c%done(err)
-   call check(allocated(err), 'cursor: widths, TC on card 2')
-   if (allocated(err)) call check(index(err%message, 'deck.k:12:57: *MAT_ELASTIC: field TC: '// &
-                                  'must be 0 to 7, got 9') == 1, 'cursor: widths column')
+   call check_fails('cursor: widths, TC on card 2', 'deck.k:12:57: *MAT_ELASTIC: field TC: '// &
+                    'must be 0 to 7, got 9', 'cursor: widths column')
    call open_card('deck.k', pars, blk, c)
    call c%skip(1)
    call c%fail_here('OPTION', 'bad')
-   call c%done(err)
-   call check(allocated(err), 'cursor: fail_here')
-   if (allocated(err)) call check(index(err%message, 'deck.k:11:1: *MAT_ELASTIC: field OPTION: '// &
-                                  'bad') == 1, 'cursor: fail_here column')
+   call check_fails('cursor: fail_here', 'deck.k:11:1: *MAT_ELASTIC: field OPTION: '// &
+                    'bad', 'cursor: fail_here column')
    call assert_summary()
 
 contains
+
+   !> c%done fails (check what) with a message that starts with msg (check what_msg).
+   subroutine check_fails(what, msg, what_msg)
+      character(*), intent(in) :: what, msg, what_msg
+      call c%done(err)
+      call check(allocated(err), what)
+      if (allocated(err)) call check(index(err%message, msg) == 1, what_msg)
+   end subroutine check_fails
 
    subroutine make_block(b, cards)
       type(block_t), intent(out) :: b

@@ -19,32 +19,18 @@ program test_shell
    use dx_shell_bt, only: thickness_rule, shell_bt_block
    use dx_assert, only: check, check_close, assert_summary
    implicit none
-   real(wp) :: zeta(5), wt(5), exact, q, e(3, 3), xl(2, 4), area, xe(3, 4), r(3, 3)
+   real(wp) :: zeta(5), wt(5), e(3, 3), xl(2, 4), area, xe(3, 4), r(3, 3)
    real(wp) :: c, s
-   integer :: n, k
+   integer :: n
    logical :: ok
 
    ! ---- through-thickness rules
    do n = 1, 5
-      call thickness_rule(n, .false., zeta, wt, ok)
-      call check(ok, 'Gauss rule with '//achar(48 + n)//' points exists')
-      do k = 0, 2*n - 1
-         exact = merge(2.0_wp/real(k + 1, wp), 0.0_wp, mod(k, 2) == 0)
-         q = sum(wt(1:n)*zeta(1:n)**k)
-         call check_close(q, exact, 4.0_wp*epsilon(1.0_wp), 0.0_wp, &
-                          'Gauss '//achar(48 + n)//': zeta**'//achar(48 + k)//' exact')
-      end do
+      call check_rule(n, .false., 'Gauss', 2*n - 1)
    end do
    do n = 3, 5
-      call thickness_rule(n, .true., zeta, wt, ok)
-      call check(ok, 'Lobatto rule with '//achar(48 + n)//' points exists')
+      call check_rule(n, .true., 'Lobatto', 2*n - 3)
       call check(zeta(1) == -1.0_wp .and. zeta(n) == 1.0_wp, 'Lobatto: points on the surfaces')
-      do k = 0, 2*n - 3
-         exact = merge(2.0_wp/real(k + 1, wp), 0.0_wp, mod(k, 2) == 0)
-         q = sum(wt(1:n)*zeta(1:n)**k)
-         call check_close(q, exact, 4.0_wp*epsilon(1.0_wp), 0.0_wp, &
-                          'Lobatto '//achar(48 + n)//': zeta**'//achar(48 + k)//' exact')
-      end do
    end do
    call thickness_rule(6, .false., zeta, wt, ok)
    call check(.not. ok, 'Gauss 6 points: not supported')
@@ -72,6 +58,25 @@ program test_shell
    call assert_summary()
 
 contains
+
+   !> The n-point rule (lobatto or Gauss, called name) exists and integrates zeta**k exactly
+   !> on [-1, 1] for k = 0..kmax; leaves its points and weights in zeta, wt.
+   subroutine check_rule(n, lobatto, name, kmax)
+      integer, intent(in) :: n, kmax
+      logical, intent(in) :: lobatto
+      character(*), intent(in) :: name
+      real(wp) :: exact, q
+      integer :: k
+      logical :: ok
+      call thickness_rule(n, lobatto, zeta, wt, ok)
+      call check(ok, name//' rule with '//achar(48 + n)//' points exists')
+      do k = 0, kmax
+         exact = merge(2.0_wp/real(k + 1, wp), 0.0_wp, mod(k, 2) == 0)
+         q = sum(wt(1:n)*zeta(1:n)**k)
+         call check_close(q, exact, 4.0_wp*epsilon(1.0_wp), 0.0_wp, &
+                          name//' '//achar(48 + n)//': zeta**'//achar(48 + k)//' exact')
+      end do
+   end subroutine check_rule
 
    subroutine one_element_resultants()
       type(mat_elastic_t) :: mat
