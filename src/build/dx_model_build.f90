@@ -12,7 +12,7 @@ module dx_model_build
    use dx_error, only: error_t, set_error
    use dx_strings, only: str, rstr
    use dx_model, only: model_t, part_t, family_t, element_family, elem_volume, etype_of_elform, &
-                       solid_shape, MAX_NEN, ES_WORK, ES_HGS, elem_quality, ASPECT_WARN, &
+                       solid_shape, MAX_NEN, ES_WORK, ES_HGS, ES_DMG, elem_quality, ASPECT_WARN, &
                        WARP_WARN
    use dx_log, only: log_warn
    use dx_model_input, only: model_input_t, origin_t
@@ -168,7 +168,7 @@ contains
       type(model_t), intent(inout) :: model
       type(maps_t), intent(inout) :: mp
       type(error_t), allocatable, intent(out) :: error
-      integer :: i
+      integer :: i, k
       integer, allocatable :: lab(:)
       character(:), allocatable :: w
       lab = inp%parts(:)%label
@@ -192,6 +192,16 @@ contains
             end if
             call attach_eos(inp, model, p, w, error)
             if (allocated(error)) return
+            ! *MAT_ADD_EROSION of the part's material (dx_erosion)
+            do k = 1, size(inp%erosions)
+               if (inp%erosions(k)%mid == p%mid) p%ero = inp%erosions(k)
+            end do
+            if (p%ero%on .and. model%sections(p%isec)%shell) then
+               call set_error(error, w//'part '//str(p%label)//': *MAT_ADD_EROSION of '// &
+                  'material '//str(p%mid)//' on a shell part is not implemented (solids only)')
+               return
+            end if
+            if (p%ero%on .or. c%erode == 1) model%erodes = .true.
             if (model%sections(p%isec)%shell) then
                call shell_part(inp, model, p, w, error)
                if (allocated(error)) return
@@ -512,6 +522,9 @@ contains
                   if (fam%es_ncol(ES_WORK) > 0) call b%es_add(ES_WORK, fam%es_ncol(ES_WORK))
                   if ((p%ihq == 4 .or. p%ihq == 5) .and. fam%es_ncol(ES_HGS) > 0) &
                      call b%es_add(ES_HGS, fam%es_ncol(ES_HGS))
+                  ! erosion: the Tuler-Butcher damage (parts whose *MAT_ADD_EROSION has it)
+                  if (p%ero%on .and. p%ero%impulse /= p%ero%excl .and. &
+                      fam%es_ncol(ES_DMG) > 0) call b%es_add(ES_DMG, fam%es_ncol(ES_DMG))
                   if (fam%es_ncol(ES_THK) > 0) then   ! shells: thickness, hourglass forces
                      call b%es_add(ES_THK, fam%es_ncol(ES_THK))
                      b%es(:, b%esc(ES_THK)) = thk(b%elem)

@@ -13,6 +13,7 @@ module dx_deck
    use dx_read_nodes_elements, only: register_nodes_elements
    use dx_read_shells, only: register_shells
    use dx_read_materials, only: register_materials, unknown_model_hint
+   use dx_read_erosion, only: register_erosion
    use dx_read_controls, only: register_controls
    use dx_read_sets, only: register_sets, sets_finish
    use dx_read_loads, only: register_loads, loads_finish
@@ -35,6 +36,7 @@ contains
       call register_nodes_elements(reg)
       call register_shells(reg)
       call register_materials(reg)
+      call register_erosion(reg)
       call register_controls(reg)
       call register_sets(reg)
       call register_loads(reg)

@@ -75,8 +75,8 @@ contains
 
    !> DTINIT TSSFAC ISDO TSLIMT DT2MS LCTM ERODE MS1ST; card 2 (selective mass scaling)
    !> must be empty. ISDO and TSLIMT act on shells only (dynx has none): accepted. DT2MS and
-   !> MS1ST: mass scaling (dx_mass_scaling). ERODE /= 0 (deletion of solids whose step falls
-   !> below DTMIN) would change the results and is not implemented (issue 18): an error.
+   !> MS1ST: mass scaling (dx_mass_scaling). ERODE = 1: solids whose step falls below DTMIN
+   !> times the first step are eroded (dx_erosion) instead of stopping the run.
    subroutine read_timestep(deck, blk, inp, error)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
@@ -99,10 +99,9 @@ contains
          call c%real('TSLIMT', 0.0_wp, t%tslimt)
          call c%real('DT2MS', 0.0_wp, t%dt2ms)
          call c%int('LCTM', 0, inp%lctm)
-         call c%int('ERODE', 0, t%erode)
-         if (c%ok() .and. t%erode /= 0) call c%fail('ERODE', 'ERODE = '//str(t%erode)// &
-            ': the deletion of solid elements whose time step falls below DTMIN is not '// &
-            'implemented (issue 18)')
+         ! ERODE = 1: solids whose step falls below DTMIN * the first step are eroded
+         ! (dx_erosion); 0: the run stops there (LS-DYNA's meaning)
+         call c%int('ERODE', 0, t%erode, min=0, max=1)
          call c%int('MS1ST', 0, t%ms1st, min=0, max=1)
       end associate
       call c%max_cards(2)

@@ -16,6 +16,7 @@ module dx_element
    use dx_hex8, only: hex8_block, hex8_mass_share
    use dx_tet4, only: tet4_block
    use dx_shell_bt, only: shell_bt_block, shell_bt_rotary_inertia
+   use dx_erosion, only: erosion_block_pass
    implicit none
    private
    public :: element_block_pass, element_mass_share, block_result_t, family_t, element_family
@@ -27,8 +28,10 @@ contains
    !> One explicit pass over a block: x = x(n), v = v(n-1/2), dt_old = dt(n-1/2). Updates
    !> stress/history to t(n), subtracts the internal force from f, returns the block's
    !> smallest element step, energy increments and first error. w = w(n-1/2), mom: the
-   !> angular velocities and moments of a deck with shells (absent otherwise).
-   subroutine element_block_pass(blk, mat, part, x, v, dt_old, f, res, w, mom)
+   !> angular velocities and moments of a deck with shells (absent otherwise). time, dtfloor:
+   !> a deck whose elements can erode (dx_erosion): the time t(n) and the element step below
+   !> which an element erodes (*CONTROL_TIMESTEP ERODE = 1; 0: none).
+   subroutine element_block_pass(blk, mat, part, x, v, dt_old, f, res, w, mom, time, dtfloor)
       type(elem_block_t), intent(inout) :: blk
       class(material_t), intent(in) :: mat
       type(part_t), intent(in) :: part
@@ -38,6 +41,7 @@ contains
       type(block_result_t), intent(out) :: res
       real(wp), intent(in), optional :: w(:, :)
       real(wp), intent(inout), optional :: mom(:, :)
+      real(wp), intent(in), optional :: time, dtfloor
       select case (blk%etype)
       case (ETYPE_SHELL_BT)
          call shell_bt_block(blk, mat, part, part%shrf, part%lobatto, part%istupd, x, v, w, &
@@ -47,6 +51,8 @@ contains
       case default
          call hex8_block(blk, mat, part, x, v, dt_old, f, res)
       end select
+      if (present(time) .and. blk%etype /= ETYPE_SHELL_BT) &
+         call erosion_block_pass(blk, part, time, dtfloor, res)
    end subroutine element_block_pass
 
    !> After the lumped masses are known: the family's own-mass share of the element time-step

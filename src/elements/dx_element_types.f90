@@ -33,7 +33,8 @@ module dx_element_types
    public :: MAX_NEN, MAX_FACE_NODES, MAX_FACES
    public :: ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, etype_of_elform, ETYPES
    public :: solid_shape, elem_quality, ASPECT_WARN, WARP_WARN
-   public :: ES_WORK, ES_HGS, ES_PHIM, MAX_ES, ES_NAMES, ES_DUMP
+   public :: ES_WORK, ES_HGS, ES_PHIM, ES_DMG, MAX_ES, ES_NAMES, ES_DUMP
+   public :: erosion_t
    public :: WORK_Q, WORK_QBV, WORK_DT, WORK_PN
    public :: elem_block_t, part_t
 
@@ -69,12 +70,15 @@ module dx_element_types
    !> shells: current thickness (1) and the hourglass generalized forces (8: membrane x, y,
    !> out-of-plane, bending x, y; 3 more columns spare for the warping terms)
    integer, parameter :: ES_THK = 4
-   integer, parameter :: MAX_ES = 4
+   !> erosion (dx_erosion): the damage variable D of *MAT_ADD_EROSION's Tuler-Butcher
+   !> criterion, the stress impulse integral over IMPULSE (1 column; parts that use it only)
+   integer, parameter :: ES_DMG = 5
+   integer, parameter :: MAX_ES = 5
    !> restart dataset of each slot (the columns in order, flat; ES_DUMP: phim is derived at
    !> start, not dumped); dumps write the slots in id order
    character(8), parameter :: ES_NAMES(MAX_ES) = [character(8) :: 'hgs', 'ework', 'phim', &
-                                                  'shthk']
-   logical, parameter :: ES_DUMP(MAX_ES) = [.true., .true., .false., .true.]
+                                                  'shthk', 'damage']
+   logical, parameter :: ES_DUMP(MAX_ES) = [.true., .true., .false., .true., .true.]
    !> column offsets inside ES_WORK (dx_hex8's centred_work: q, q B.v, dt, sigma:D V of the
    !> last pass)
    integer, parameter :: WORK_Q = 0, WORK_QBV = 1, WORK_DT = 2, WORK_PN = 3
@@ -110,6 +114,21 @@ module dx_element_types
       real(wp) :: pend = 0.0_wp
    end type block_result_t
 
+   !> *MAT_ADD_EROSION criteria of one material (LS-DYNA Keyword User's Manual Vol. II,
+   !> *MAT_ADD_EROSION, cards 1 and 2), checked by dx_erosion. A criterion whose value equals
+   !> EXCL is off (EXCL default 0: a blank field is off). lambda: the Tuler-Butcher exponent
+   !> (LS-DYNA: 2; dynx keyword *DYNX_TULER_BUTCHER sets another).
+   type :: erosion_t
+      logical :: on = .false.
+      integer :: mid = 0
+      real(wp) :: excl = 0.0_wp, mxpres = 0.0_wp, mneps = 0.0_wp, effeps = 0.0_wp
+      real(wp) :: voleps = 0.0_wp, mnpres = 0.0_wp, sigp1 = 0.0_wp, sigvm = 0.0_wp
+      real(wp) :: mxeps = 0.0_wp, epssh = 0.0_wp, sigth = 0.0_wp, impulse = 0.0_wp
+      real(wp) :: failtm = 0.0_wp
+      real(wp) :: lambda = 2.0_wp
+      integer :: numfip = 1, ncs = 1
+   end type erosion_t
+
    !> *PART with its resolved section, material and hourglass settings
    type :: part_t
       integer :: label = 0
@@ -125,6 +144,7 @@ module dx_element_types
       real(wp) :: shrf = 1.0_wp
       logical :: lobatto = .false.
       integer :: istupd = 0
+      type(erosion_t) :: ero      !< *MAT_ADD_EROSION of the part's material (dx_erosion)
    end type part_t
 
    !> A group of at most nv_chunk elements of one part and one formulation.
@@ -181,7 +201,7 @@ contains
          f%edges(:, 1:12) = HEX_EDGES
          f%mass_share = 0.125_wp
          f%hgmodes = 4
-         f%es_ncol = [3*f%hgmodes, 4, 1, 0]
+         f%es_ncol = [3*f%hgmodes, 4, 1, 0, 1]
          f%nip = 1; f%weight = 1
          ! ELFORM 2 measured at about 8x ELFORM 1 per element-cycle (docs/history.md,
          ! "Partition weights")
@@ -194,7 +214,7 @@ contains
          f%faces(:, 1:4) = TET_FACES
          f%edges(:, 1:6) = TET_EDGES
          f%mass_share = 0.25_wp
-         f%es_ncol = [0, 4, 0, 0]
+         f%es_ncol = [0, 4, 0, 0, 1]
          f%nip = 1; f%weight = 1
       case (ETYPE_SHELL_BT)
          ! one face (the mid-surface, normal by the right-hand rule on N1..N4; a triangle
@@ -205,7 +225,7 @@ contains
          f%edges(:, 1:4) = QUAD_EDGES
          f%mass_share = 0.25_wp
          f%hgmodes = 5
-         f%es_ncol = [0, 0, 0, 1 + 8]
+         f%es_ncol = [0, 0, 0, 1 + 8, 0]
          f%nip = 2; f%weight = 1
          f%rot = .true.
       end select

@@ -22,6 +22,7 @@
 module dx_hex8
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_material, only: material_t
+   use dx_erosion, only: erosion_points
    use dx_element_types, only: elem_block_t, part_t, ES_WORK, ES_HGS, ES_PHIM, block_result_t, &
                                HEX_ERR_NEGVOL => ELEM_ERR_NEGVOL, &
                                HEX_ERR_MATERIAL => ELEM_ERR_MATERIAL
@@ -116,6 +117,7 @@ contains
       real(wp) :: dtl, hdt, d1, d2, d3, d4, d5, d6, l1, l2, l3, l4, l5, l6, l7, l8, l9
       integer :: ierr(nv_chunk)
       logical :: failed(nv_chunk)
+      integer :: nfp(nv_chunk)
       integer :: i, k, n, nn, w
       n = blk%nel
       w = blk%esc(ES_WORK)
@@ -212,9 +214,16 @@ contains
       end do
       call mat%update(n, dt_old, deps, rv, ein, blk%sig(:, :, 1), blk%hv(:, :, 1), ierr)
       call mat%fails(n, blk%hv(:, :, 1), failed)
+      if (part%ero%on) then   ! *MAT_ADD_EROSION (dx_erosion)
+         nfp(1:n) = 0
+         call erosion_points(blk, part%ero, n, blk%sig(:, :, 1), rv, dt_old, 1.0_wp, nfp)
+         do i = 1, n
+            if (nfp(i) > 0) failed(i) = .true.
+         end do
+      end if
       call mat%wave_speed(n, rv, blk%hv(:, :, 1), c)
-      ! ---- erosion (an eroded element keeps zero stress and carries no force; the work of
-      ! its last step still counts)
+      ! ---- erosion (an eroded element keeps zero stress and carries no force from the pass
+      ! it erodes in; the work of its last step with the forces it applied still counts)
       do i = 1, n
          if (failed(i) .and. .not. blk%failed(i)) blk%failed(i) = .true.
       end do
@@ -231,6 +240,10 @@ contains
                  + 2.0_wp*(so(i,4)*de6(i,4) + so(i,5)*de6(i,5) + so(i,6)*de6(i,6)))
          wn(i) = volm(i)*(sn(i,1)*de6(i,1) + sn(i,2)*de6(i,2) + sn(i,3)*de6(i,3) &
                  + 2.0_wp*(sn(i,4)*de6(i,4) + sn(i,5)*de6(i,5) + sn(i,6)*de6(i,6)))
+         ! an element eroding now applies no force f(n): W(n) is 0 (its energy then stays)
+         if (blk%failed(i)) then
+            wn(i) = 0.0_wp; q(i) = 0.0_wp
+         end if
       end do
       e1(1:n) = blk%es(1:n, w); e2(1:n) = blk%es(1:n, w + 1)
       e3(1:n) = blk%es(1:n, w + 2); e4(1:n) = blk%es(1:n, w + 3)
@@ -616,6 +629,7 @@ contains
       real(wp) :: jwg(8, blk%nel), wm(blk%nel), dtl, rho, a, pend, trp, pm, ein_sum
       integer :: ierr(blk%nel)
       logical :: failed(blk%nel), fpt(blk%nel)
+      integer :: nfe(blk%nel)
       integer :: i, k, n, nn, ip, w
       n = blk%nel
       w = blk%esc(ES_WORK)
@@ -655,6 +669,7 @@ contains
       pbar = 0.0_wp
       wold = 0.0_wp; wnew = 0.0_wp
       fpt = .false.
+      nfe = 0
       ! geometry at t(n) per Gauss point for the forces
       do i = 1, n
          p8 = xe(i, :); q8 = ye(i, :); r8 = ze(i, :)
@@ -687,6 +702,8 @@ contains
          call mat%update(n, dt_old, deps, rv, ein, blk%sig(:, :, ip), blk%hv(:, :, ip), ierr)
          call mat%fails(n, blk%hv(:, :, ip), failed)
          fpt = fpt .or. failed
+         if (part%ero%on) call erosion_points(blk, part%ero, n, blk%sig(:, :, ip), rv, &
+                                              dt_old, 0.125_wp, nfe)
          do i = 1, n
             wold(i) = wold(i) + wm(i)*(sold(i,1)*deps(i,1) + sold(i,2)*deps(i,2) &
                       + sold(i,3)*deps(i,3) + 2.0_wp*(sold(i,4)*deps(i,4) &
@@ -713,6 +730,11 @@ contains
       do i = 1, n
          rho = mat%ro/rv(i)
          q(i) = bulk_viscosity(part, rho, lc(i), trd(i), c(i))
+         if (fpt(i) .or. nfe(i) >= min(part%ero%numfip, 8)) blk%failed(i) = .true.
+         ! an element eroding now applies no force f(n): W(n) is 0 (its energy then stays)
+         if (blk%failed(i)) then
+            wnew(i) = 0.0_wp; q(i) = 0.0_wp
+         end if
          call centred_work(blk%es(i, w), blk%es(i, w + 1), blk%es(i, w + 2), blk%es(i, w + 3), &
                            dt_old, wold(i), wnew(i), q(i), vol(i), blk%vol0(i)*relv_old(i), &
                            bv(i), trd(i)*volm(i), a)
@@ -720,7 +742,6 @@ contains
          blk%eint(i) = blk%eint(i) + a
          ein_sum = ein_sum + a
          pend = pend + alive(i)*(blk%es(i, w + 3) - blk%es(i, w + 1))
-         if (fpt(i)) blk%failed(i) = .true.
          if (blk%failed(i)) then
             alive(i) = 0.0_wp
             blk%sig(i, :, :) = 0.0_wp

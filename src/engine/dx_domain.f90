@@ -28,7 +28,7 @@ module dx_domain
    use dx_restart, only: restart_write
    use dx_par_restart, only: serial_restart_read
    use dx_energy_sums, only: constraint_work, element_energies, set_energy, part_mass_map, &
-                             part_energies, interface_work
+                             part_energies, interface_work, eroded_energies
    use dx_par_emc, only: par_emc_t, par_emc_together
    implicit none
    private
@@ -413,6 +413,7 @@ contains
       eint = eint + dfac*epend   ! the part of W(n) booked next cycle
       call set_energy(model, ke, eint, ehg, wsum, erw)
       if (need) call part_energies(model, vold, dfac)   ! matsum (when the deck asks)
+      if (model%erodes .and. need) call eroded_energies(model, vold)
    end subroutine s_energies
 
    subroutine s_write_plot(d, model, out, error)

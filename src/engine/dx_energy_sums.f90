@@ -25,7 +25,7 @@ module dx_energy_sums
    private
    public :: initial_kinetic, kinetic_energy, element_energies, constraint_work, &
              constraint_terms, set_energy, constrained_nodes, energy_bits, part_mass_map, &
-             part_energies, interface_work
+             part_energies, interface_work, eroded_energies
 
 contains
 
@@ -138,6 +138,8 @@ contains
          end do
          ps%added = 0.0_wp    ! mass scaling (branch "mass") adds each part's added mass here
          ps%ie = 0.0_wp; ps%ke = 0.0_wp; ps%hge = 0.0_wp; ps%mom = 0.0_wp
+         allocate(ps%eie(np), ps%eke(np))
+         ps%eie = 0.0_wp; ps%eke = 0.0_wp
       end associate
    end subroutine part_mass_map
 
@@ -212,6 +214,68 @@ contains
          end do
       end associate
    end subroutine part_energies
+
+   !> Element erosion (dx_erosion): the internal energy of the eroded elements (their energy
+   !> when they eroded: an eroded element's eint no longer changes) and the time-centred
+   !> kinetic energy 1/2 m v(n-1/2).v(n+1/2) of the nodes that some element holds and no
+   !> living element does (blocks, elements and nodes in order), into model%energy; with
+   !> the per-part sums allocated (matsum), each part's share too (the part's eroded
+   !> elements; its mass share of the free nodes). As in LS-DYNA's glstat both are parts of
+   !> the internal and kinetic energy, reported apart.
+   subroutine eroded_energies(model, vold)
+      type(model_t), intent(inout) :: model
+      real(wp), intent(in) :: vold(:, :)
+      integer(1), allocatable :: held(:)    ! 0 no element, 1 eroded elements only, 2 alive
+      type(family_t) :: fam
+      real(wp) :: eie, eke
+      integer :: b, i, k, nd, p
+      allocate(held(model%nn))
+      held = 0
+      eie = 0.0_wp
+      do b = 1, size(model%blocks)
+         associate (blk => model%blocks(b))
+            fam = element_family(blk%etype)
+            do i = 1, blk%nel
+               if (blk%failed(i)) then
+                  eie = eie + blk%eint(i)
+                  do k = 1, fam%nen
+                     nd = blk%conn(k, i)
+                     if (held(nd) == 0) held(nd) = 1
+                  end do
+               else
+                  do k = 1, fam%nen
+                     held(blk%conn(k, i)) = 2
+                  end do
+               end if
+            end do
+         end associate
+      end do
+      eke = 0.0_wp
+      do nd = 1, model%nn
+         if (held(nd) == 1) eke = eke + model%mass(nd)*dot_product(vold(:, nd), model%v(:, nd))
+      end do
+      model%energy%eroded_ie = eie
+      model%energy%eroded_ke = 0.5_wp*eke
+      associate (ps => model%psum)
+         if (.not. allocated(ps%eie)) return
+         do p = 1, size(ps%eie)
+            eie = 0.0_wp
+            do b = 1, size(model%blocks)
+               if (model%blocks(b)%ipart /= p) cycle
+               do i = 1, model%blocks(b)%nel
+                  if (model%blocks(b)%failed(i)) eie = eie + model%blocks(b)%eint(i)
+               end do
+            end do
+            eke = 0.0_wp
+            do k = ps%ptr(p), ps%ptr(p + 1) - 1
+               nd = ps%node(k)
+               if (held(nd) == 1) eke = eke + ps%m(k)*dot_product(vold(:, nd), model%v(:, nd))
+            end do
+            ps%eie(p) = eie
+            ps%eke(p) = 0.5_wp*eke
+         end do
+      end associate
+   end subroutine eroded_energies
 
    !> Work of the constraint reactions over one step, added to wcon node by node (cnodes in
    !> ascending order; vfree(:, i) is node cnodes(i)'s velocity before the constraints).

@@ -36,7 +36,7 @@ module dx_par_engine
    use dx_sort, only: sort_index
    use dx_par_model, only: par_model_t, par_fill_slots, par_exchange_forces, par_exchange_mass
    use dx_energy_sums, only: initial_kinetic, kinetic_energy, element_energies, &
-                             constraint_terms, set_energy, part_energies
+                             constraint_terms, set_energy, part_energies, eroded_energies
    use dx_constraints, only: apply_rigidwalls, wall_hits_t
    use dx_par_contact, only: par_contact_t, par_contact_report
    use dx_par_plot, only: par_plot_t, par_plot_write, par_plot_finish
@@ -512,8 +512,8 @@ contains
       real(wp), intent(in) :: vold(:, :), wsum, erw, dfac
       logical, intent(in) :: needed
       real(wp), allocatable :: vals(:, :), gv(:, :)
-      real(wp) :: ke, eint, ehg, t0, epend, erec(13)
-      integer :: i, e
+      real(wp) :: ke, eint, ehg, t0, epend, erec(15)
+      integer :: i, e, nv
       logical :: root
       if (.not. needed) return
       t0 = par_wtime()
@@ -533,11 +533,14 @@ contains
          eng%gvold(:, eng%plan_own%keys) = gv(4:6, :)
       end if
       deallocate(vals, gv)
-      allocate(vals(3, size(eng%elem_loc, 2)), gv(3, size(eng%plan_elem%keys)))
+      nv = 3
+      if (model%erodes) nv = 4   ! the eroded flags too (dx_erosion)
+      allocate(vals(nv, size(eng%elem_loc, 2)), gv(nv, size(eng%plan_elem%keys)))
       do i = 1, size(eng%elem_loc, 2)
          associate (pb => model%blocks(eng%elem_loc(1, i)), j => eng%elem_loc(2, i))
             vals(1, i) = pb%eint(j)
             vals(2, i) = pb%ehg(j)
+            if (nv == 4) vals(4, i) = merge(1.0_wp, 0.0_wp, pb%failed(j))
             vals(3, i) = 0.0_wp
             if (pb%esc(ES_WORK) > 0) vals(3, i) = merge(0.0_wp, 1.0_wp, pb%failed(j))* &
                (pb%es(j, pb%esc(ES_WORK) + WORK_PN) - pb%es(j, pb%esc(ES_WORK) + WORK_QBV))
@@ -551,6 +554,7 @@ contains
             associate (gb => eng%g%blocks(eng%g%elem_block(e)), p => eng%g%elem_pos(e))
                gb%eint(p) = gv(1, i)
                gb%ehg(p) = gv(2, i)
+               if (nv == 4) gb%failed(p) = gv(4, i) > 0.5_wp
                ! the global copy only reports: its ework carries the pending term in col. 4
                if (gb%esc(ES_WORK) > 0) then
                   gb%es(p, gb%esc(ES_WORK) + WORK_PN) = gv(3, i)
@@ -565,9 +569,11 @@ contains
          eng%g%energy%initial = model%energy%initial
          call set_energy(eng%g, ke, eint, ehg, wsum, erw)
          call part_energies(eng%g, eng%gvold, dfac)   ! matsum (when the deck asks)
+         if (model%erodes) call eroded_energies(eng%g, eng%gvold)
          associate (en => eng%g%energy)
             erec = [en%kinetic, en%internal, en%hourglass, en%external_work, en%rigidwall, &
-                   en%sliding, en%total, en%initial, en%ratio, en%momentum, en%mass]
+                   en%sliding, en%total, en%initial, en%ratio, en%momentum, en%mass, &
+                   en%eroded_ie, en%eroded_ke]
          end associate
       end if
       call par_bcast_real(erec, 0)
@@ -576,6 +582,7 @@ contains
          en%external_work = erec(4); en%rigidwall = erec(5); en%sliding = erec(6)
          en%total = erec(7); en%initial = erec(8); en%ratio = erec(9)
          en%momentum = erec(10:12); en%mass = erec(13)
+         en%eroded_ie = erec(14); en%eroded_ke = erec(15)
       end associate
       eng%g%energy = model%energy
       eng%t_gath = eng%t_gath + (par_wtime() - t0)

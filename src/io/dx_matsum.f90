@@ -12,8 +12,11 @@
 !> 'x-rbv=', ..., 'hgeng=', '+mass=', 'eroded_he=' after 'time ='). 'mat.#' is the part id
 !> (LS-DYNA's old "material" naming). Numbers are written with 10 significant digits
 !> (es18.10e3, as glstat) instead of LS-DYNA's 5, so the sums can be checked to round-off.
-!> rbv is the part's rigid-body velocity, momentum / (mass + added mass). The eroded terms
-!> are 0 until element erosion exists. The header lists each part's mass (rho V0).
+!> rbv is the part's rigid-body velocity, momentum / (mass + added mass). eroded_ie and
+!> eroded_ke: the part's eroded elements' internal energy and its share of the kinetic
+!> energy of the nodes no living element holds (dx_energy_sums%eroded_energies; parts of
+!> inten and kinen, as in glstat); eroded_he is 0 (an eroded element's hourglass energy
+!> stays in hgeng). The header lists each part's mass (rho V0).
 !> The numbers come from dx_energy_sums%part_energies (model%psum).
 module dx_matsum
    use dx_kinds, only: wp
@@ -100,7 +103,7 @@ contains
             if (mt > 0.0_wp) rbv = ps%mom(:, p)/mt
             write(line, '(" mat.#=",i10,8x,"inten=",'//NUM//',5x,"kinen=",'//NUM// &
                   ',5x,"eroded_ie=",'//NUM//',5x,"eroded_ke=",'//NUM//')', iostat=ios, &
-                  iomsg=msg) model%parts(p)%label, ps%ie(p), ps%ke(p), 0.0_wp, 0.0_wp
+                  iomsg=msg) model%parts(p)%label, ps%ie(p), ps%ke(p), ps%eie(p), ps%eke(p)
             if (ios /= 0) exit fmt
             text = text//trim(line)//nl
             write(line, '(25x,"x-mom=",'//NUM//',5x,"y-mom=",'//NUM//',5x,"z-mom=",'//NUM// &

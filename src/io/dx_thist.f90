@@ -12,6 +12,7 @@ module dx_thist
    use dx_error, only: error_t, set_error, EXIT_IO
    use dx_model, only: model_t
    use dx_append_file, only: cut_back
+   use dx_strings, only: str
    use dx_io_sys, only: sys_truncate, sys_open_write, sys_write_all, sys_close_fd, &
                         sys_ftruncate_fd
    implicit none
@@ -27,6 +28,10 @@ module dx_thist
    !> lines "added mass" and "percentage increase" (100 * added / the model's mass)
    character(*), parameter :: GLSTAT_MS_COLUMNS = ' added_mass percent_increase'
    character(*), parameter :: GLSTAT_MS_FMT = '(es18.10e3, 1x, i10, 14(1x, es18.10e3))'
+   !> with element erosion (model%erodes: *MAT_ADD_EROSION, *CONTROL_TIMESTEP ERODE = 1) two
+   !> more, LS-DYNA's glstat names: parts of kinetic and internal, reported apart (dx_erosion)
+   character(*), parameter :: GLSTAT_ERO_COLUMNS = ' eroded_internal_energy ' // &
+      'eroded_kinetic_energy'
    character(*), parameter :: NODOUT_FMT = '(es18.10e3, 1x, i10, 12(1x, es18.10e3))'
 
    !> One ASCII history file (unit: its file descriptor while opened).
@@ -52,6 +57,7 @@ contains
       character(:), allocatable :: cols
       cols = GLSTAT_COLUMNS
       if (model%ctrl%dt2ms /= 0.0_wp) cols = cols//GLSTAT_MS_COLUMNS
+      if (model%erodes) cols = cols//GLSTAT_ERO_COLUMNS
    end function glstat_run_columns
 
    !> Create path and write the header: '# dynx <what>', '# title: ...', '# <columns>'
@@ -136,12 +142,26 @@ contains
       class(thist_file_t), intent(inout) :: self
       type(model_t), intent(in) :: model
       type(error_t), allocatable, intent(out) :: error
-      character(320) :: line
+      character(400) :: line
       integer :: ios
       character(256) :: msg
       real(wp) :: pct
+      real(wp), allocatable :: extra(:)
       associate (en => model%energy)
-         if (model%ctrl%dt2ms /= 0.0_wp) then
+         if (model%erodes) then
+            ! the optional columns in the order of glstat_run_columns
+            pct = 0.0_wp
+            if (en%mass > 0.0_wp) pct = 100.0_wp*en%added_mass/en%mass
+            if (model%ctrl%dt2ms /= 0.0_wp) then
+               extra = [en%added_mass, pct, en%eroded_ie, en%eroded_ke]
+            else
+               extra = [en%eroded_ie, en%eroded_ke]
+            end if
+            write(line, '(es18.10e3, 1x, i10, '//str(12 + size(extra))// &
+                  '(1x, es18.10e3))', iostat=ios, iomsg=msg) model%time, model%cycle, &
+               model%dt, en%kinetic, en%internal, en%hourglass, en%external_work, &
+               en%rigidwall, en%total, en%ratio, en%momentum, en%sliding, extra
+         else if (model%ctrl%dt2ms /= 0.0_wp) then
             pct = 0.0_wp
             if (en%mass > 0.0_wp) pct = 100.0_wp*en%added_mass/en%mass
             write(line, GLSTAT_MS_FMT, iostat=ios, iomsg=msg) model%time, model%cycle, &

@@ -16,7 +16,7 @@ module dx_model
    use dx_element_types, only: elem_block_t, part_t, family_t, element_family, elem_volume, elem_moments, elem_length, &
                                etype_of_elform, solid_shape, MAX_NEN, MAX_FACE_NODES, &
                                MAX_FACES, ETYPE_DEFAULT, ETYPES, ES_WORK, ES_HGS, ES_PHIM, &
-                               MAX_ES, ES_NAMES, ES_DUMP, WORK_Q, WORK_QBV, WORK_DT, &
+                               ES_DMG, erosion_t, MAX_ES, ES_NAMES, ES_DUMP, WORK_Q, WORK_QBV, WORK_DT, &
                                WORK_PN
    implicit none
    private
@@ -31,8 +31,8 @@ module dx_model
    public :: family_t, element_family, elem_volume, elem_moments, elem_length, etype_of_elform, &
              solid_shape, MAX_NEN, MAX_FACE_NODES, MAX_FACES, ETYPES
    !> the family-state slots of a block's es array (dx_element_types)
-   public :: ES_WORK, ES_HGS, ES_PHIM, MAX_ES, ES_NAMES, ES_DUMP, WORK_Q, WORK_QBV, &
-             WORK_DT, WORK_PN
+   public :: ES_WORK, ES_HGS, ES_PHIM, ES_DMG, MAX_ES, ES_NAMES, ES_DUMP, WORK_Q, WORK_QBV, &
+             WORK_DT, WORK_PN, erosion_t
 
    !> *SECTION_SOLID or *SECTION_SHELL (shell = .true.; the shell fields of
    !> dx_read_shells with their LS-DYNA meaning)
@@ -187,6 +187,11 @@ module dx_model
       real(wp) :: momentum(3) = 0.0_wp
       real(wp) :: mass = 0.0_wp
       real(wp) :: added_mass = 0.0_wp   !< mass added by mass scaling (DT2MS), whole model
+      !> element erosion (dx_erosion): the internal energy of the eroded elements and the
+      !> kinetic energy of the nodes no element holds any more; as in LS-DYNA's glstat they
+      !> are parts of internal and kinetic (so of total and of the ratio), reported apart
+      real(wp) :: eroded_ie = 0.0_wp
+      real(wp) :: eroded_ke = 0.0_wp
    end type energy_t
 
    !> Per-part sums of *DATABASE_MATSUM (dx_energy_sums%part_energies): each part's share of
@@ -202,6 +207,7 @@ module dx_model
       real(wp), allocatable :: added(:)
       real(wp), allocatable :: ie(:), ke(:), hge(:)   !< (np) internal, kinetic, hourglass
       real(wp), allocatable :: mom(:, :)      !< (3, np) momentum
+      real(wp), allocatable :: eie(:), eke(:) !< (np) eroded internal and kinetic energy
    end type part_sums_t
 
    type :: model_t
@@ -266,6 +272,9 @@ module dx_model
       integer :: cycle = 0
       integer :: dt_elem = 0                   !< dense element controlling dt
       type(energy_t) :: energy
+      !> some part can erode (*MAT_ADD_EROSION, *CONTROL_TIMESTEP ERODE): glstat's eroded
+      !> energy columns and the erosion pass (dx_erosion) are on
+      logical :: erodes = .false.
       type(part_sums_t) :: psum                !< matsum's per-part sums (matsum_dt > 0)
       type(run_state_t) :: run                 !< explicit loop state (restart dumps it)
       type(restart_ctrl_t) :: rst              !< *DATABASE_BINARY_D3DUMP/RUNRSF

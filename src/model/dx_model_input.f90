@@ -5,7 +5,7 @@
 module dx_model_input
    use dx_kinds, only: wp
    use dx_strings, only: string_t
-   use dx_model, only: part_t, section_t, hourglass_t, control_t
+   use dx_model, only: part_t, section_t, hourglass_t, control_t, erosion_t
    use dx_material, only: mat_holder_t
    use dx_eos, only: eos_holder_t
    use dx_curve, only: curve_t
@@ -154,6 +154,9 @@ module dx_model_input
       type(origin_t), allocatable :: mat_src(:)
       type(eos_holder_t), allocatable :: eoss(:)     !< *EOS_ (attached to parts by EOSID)
       type(origin_t), allocatable :: eos_src(:)
+      !> *MAT_ADD_EROSION (dx_read_erosion; attached to the parts of material MID)
+      type(erosion_t), allocatable :: erosions(:)
+      type(origin_t), allocatable :: erosion_src(:)
       type(curve_t), allocatable :: curves(:)
       type(origin_t), allocatable :: curve_src(:)
       type(label_list_t), allocatable :: node_sets(:), part_sets(:)
@@ -201,6 +204,7 @@ contains
                inp%part_sets(0), inp%segment_sets(0), inp%spcs(0), inp%motions(0), &
                inp%ivels(0), inp%node_loads(0), inp%seg_loads(0), inp%walls(0), &
                inp%hist_nodes(0), inp%hist_node_sets(0), inp%eoss(0), inp%eos_src(0), &
+               inp%erosions(0), inp%erosion_src(0), &
                inp%out_notes(0), inp%set_gens(0), inp%node_set_loads(0))
       allocate(inp%body_loads(0), inp%rigid%inertias(0), inp%rigid%nrbs(0), &
                inp%rigid%extras(0), inp%rigid%motions(0))

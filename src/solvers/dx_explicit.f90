@@ -153,7 +153,7 @@ contains
       type(checkpoint_t), intent(inout) :: ck
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
-      real(wp) :: dt, dtavg, dtcrit, t, ke, wrig, tend, krot
+      real(wp) :: dt, dtavg, dtcrit, t, ke, wrig, tend, krot, dtfloor
       integer :: b, i, ibmin, iemin
       logical :: done, need, ms, mchanged
       type(block_result_t) :: res
@@ -172,13 +172,25 @@ contains
          dtcrit = huge_wp; ibmin = 0; iemin = 0
          ms = allocated(model%added_mass)
          mchanged = .false.
+         ! *CONTROL_TIMESTEP ERODE = 1: an element whose step TSSFAC*dt_e falls below
+         ! DTMIN * first step erodes (dx_erosion) instead of stopping the run
+         dtfloor = 0.0_wp
+         if (model%ctrl%erode == 1) dtfloor = tsmin/model%ctrl%tssfac
          do b = 1, size(model%blocks)
             if (dom%pending()) exit    ! MPI: a failure kept on this rank skips the pass
             if (model%mats(model%parts(model%blocks(b)%ipart)%imat)%m%is_rigid) cycle
             associate (blk => model%blocks(b), part => model%parts(model%blocks(b)%ipart))
-               if (allocated(model%w)) then
+               if (allocated(model%w) .and. model%erodes) then
+                  call element_block_pass(blk, model%mats(part%imat)%m, part, model%x, &
+                                          model%v, dt_old, model%f, res, model%w, model%mom, &
+                                          time=t, dtfloor=dtfloor)
+               else if (allocated(model%w)) then
                   call element_block_pass(blk, model%mats(part%imat)%m, part, model%x, &
                                           model%v, dt_old, model%f, res, model%w, model%mom)
+               else if (model%erodes) then
+                  call element_block_pass(blk, model%mats(part%imat)%m, part, model%x, &
+                                          model%v, dt_old, model%f, res, time=t, &
+                                          dtfloor=dtfloor)
                else
                   call element_block_pass(blk, model%mats(part%imat)%m, part, model%x, &
                                           model%v, dt_old, model%f, res)

@@ -1,0 +1,137 @@
+!> Element erosion, one place for every solid family: the *MAT_ADD_EROSION criteria at an
+!> integration point (called by the kernels right after the material update, beside the
+!> material's own failure, so an element that fails at t(n) carries no force from t(n) on)
+!> and the block-level criteria after a pass (FAILTM, and *CONTROL_TIMESTEP ERODE = 1: the
+!> element whose step falls below DTMIN times the first step). An eroded element keeps zero
+!> stress, carries no force, no longer limits the step and keeps its internal energy, which
+!> glstat and matsum report as eroded internal energy (dx_energy_sums); its nodal mass stays
+!> on the nodes (as LS-DYNA does), a node no living element holds any more flies on freely
+!> and its kinetic energy is reported as eroded kinetic energy.
+!> Criteria (LS-DYNA Keyword User's Manual Vol. II, *MAT_ADD_EROSION; a field equal to EXCL
+!> is off): pressure p = -tr(sigma)/3 >= MXPRES or <= MNPRES; largest principal stress
+!> sigma_1 >= SIGP1; von Mises stress >= SIGVM; volumetric strain ln(V/V0) >= VOLEPS
+!> (VOLEPS > 0) or <= VOLEPS (VOLEPS < 0); time >= FAILTM; Tuler-Butcher: the damage
+!> D = (1/IMPULSE) int max(0, sigma_1 - SIGTH)^lambda dt reaches 1 (Tuler & Butcher 1968,
+!> "A criterion for the time dependence of dynamic fracture", Int. J. Fract. Mech.
+!> 4:431-437, with the exponent lambda = 2 that LS-DYNA's *MAT_ADD_EROSION uses). A point
+!> fails when NCS criteria hold at once (Tuler-Butcher counts as one), an element when
+!> min(NUMFIP, points) of its points have failed.
+!> Principal stresses: the trigonometric solution of the characteristic cubic (Smith 1961,
+!> "Eigenvalues of a symmetric 3x3 matrix", Comm. ACM 4:168).
+module dx_erosion
+   use dx_kinds, only: wp, huge_wp
+   use dx_element_types, only: elem_block_t, part_t, block_result_t, erosion_t, ES_DMG
+   implicit none
+   private
+   public :: erosion_points, erosion_block_pass, largest_principal, von_mises
+
+contains
+
+   !> The *MAT_ADD_EROSION criteria of part at one integration point of elements 1..n:
+   !> sig(n, 6) the stress at t(n) (xx yy zz xy yz zx), rv the relative volume V/V0, dt the
+   !> step the stress acts over (the Tuler-Butcher integral, weighted by wip: 1/points);
+   !> nfail(i) counts the points of element i that fail. Elements already eroded are
+   !> skipped.
+   subroutine erosion_points(blk, ero, n, sig, rv, dt, wip, nfail)
+      type(elem_block_t), intent(inout) :: blk
+      type(erosion_t), intent(in) :: ero
+      integer, intent(in) :: n
+      real(wp), intent(in) :: sig(:, :), rv(:), dt, wip
+      integer, intent(inout) :: nfail(:)
+      real(wp) :: p, s1, d
+      integer :: i, nc, jd
+      if (.not. ero%on) return
+      jd = blk%esc(ES_DMG)
+      do i = 1, n
+         if (blk%failed(i)) cycle
+         nc = 0
+         p = -(sig(i, 1) + sig(i, 2) + sig(i, 3))/3.0_wp
+         if (ero%mxpres /= ero%excl) then
+            if (p >= ero%mxpres) nc = nc + 1
+         end if
+         if (ero%mnpres /= ero%excl) then
+            if (p <= ero%mnpres) nc = nc + 1
+         end if
+         s1 = largest_principal(sig(i, :))
+         if (ero%sigp1 /= ero%excl) then
+            if (s1 >= ero%sigp1) nc = nc + 1
+         end if
+         if (ero%sigvm /= ero%excl) then
+            if (von_mises(sig(i, :)) >= ero%sigvm) nc = nc + 1
+         end if
+         if (ero%voleps /= ero%excl) then
+            if (ero%voleps >= 0.0_wp) then
+               if (log(rv(i)) >= ero%voleps) nc = nc + 1
+            else
+               if (log(rv(i)) <= ero%voleps) nc = nc + 1
+            end if
+         end if
+         if (jd > 0) then
+            d = max(0.0_wp, s1 - ero%sigth)
+            blk%es(i, jd) = blk%es(i, jd) + wip*dt*d**ero%lambda/ero%impulse
+            if (blk%es(i, jd) >= 1.0_wp) nc = nc + 1
+         end if
+         if (nc >= ero%ncs) nfail(i) = nfail(i) + 1
+      end do
+   end subroutine erosion_points
+
+   !> After the kernel pass of a block at time t: erode the elements whose step is below
+   !> dtfloor (> 0 only with *CONTROL_TIMESTEP ERODE = 1: DTMIN * first step / TSSFAC) and,
+   !> past FAILTM, every element of the part; res's smallest step is then taken over the
+   !> elements left.
+   subroutine erosion_block_pass(blk, part, t, dtfloor, res)
+      type(elem_block_t), intent(inout) :: blk
+      type(part_t), intent(in) :: part
+      real(wp), intent(in) :: t, dtfloor
+      type(block_result_t), intent(inout) :: res
+      logical :: changed, all_time
+      integer :: i
+      changed = .false.
+      all_time = .false.
+      if (part%ero%on .and. part%ero%failtm /= part%ero%excl) all_time = t >= part%ero%failtm
+      do i = 1, blk%nel
+         if (blk%failed(i)) cycle
+         if (all_time .or. res%dte(i) < dtfloor) then
+            blk%failed(i) = .true.
+            blk%sig(i, :, :) = 0.0_wp
+            res%dte(i) = huge_wp
+            changed = .true.
+         end if
+      end do
+      if (.not. changed) return
+      res%dt = huge_wp
+      res%imin = 0
+      do i = 1, blk%nel
+         if (res%dte(i) < res%dt) then
+            res%dt = res%dte(i); res%imin = i
+         end if
+      end do
+      if (res%imin == 0) res%imin = 1
+   end subroutine erosion_block_pass
+
+   !> The largest principal value of the symmetric tensor s (xx yy zz xy yz zx).
+   pure real(wp) function largest_principal(s) result(s1)
+      real(wp), intent(in) :: s(6)
+      real(wp) :: m, a, b, c, j2, j3, r, phi
+      m = (s(1) + s(2) + s(3))/3.0_wp
+      a = s(1) - m; b = s(2) - m; c = s(3) - m
+      j2 = 0.5_wp*(a*a + b*b + c*c) + s(4)**2 + s(5)**2 + s(6)**2
+      if (.not. j2 > 0.0_wp) then
+         s1 = m
+         return
+      end if
+      ! J3 = det of the deviator
+      j3 = a*(b*c - s(5)**2) - s(4)*(s(4)*c - s(5)*s(6)) + s(6)*(s(4)*s(5) - b*s(6))
+      r = 1.5_wp*sqrt(3.0_wp)*j3/j2**1.5_wp
+      r = max(-1.0_wp, min(1.0_wp, r))
+      phi = acos(r)/3.0_wp
+      s1 = m + 2.0_wp*sqrt(j2/3.0_wp)*cos(phi)
+   end function largest_principal
+
+   !> The von Mises stress of s (xx yy zz xy yz zx).
+   pure real(wp) function von_mises(s) result(v)
+      real(wp), intent(in) :: s(6)
+      v = sqrt(0.5_wp*((s(1) - s(2))**2 + (s(2) - s(3))**2 + (s(3) - s(1))**2) + &
+               3.0_wp*(s(4)**2 + s(5)**2 + s(6)**2))
+   end function von_mises
+end module dx_erosion
