@@ -39,7 +39,7 @@ with open(a.out, 'w') as f:
     w('*CONTROL_TERMINATION\n%10.6f\n' % a.tend)
     w('*CONTROL_TIMESTEP\n$   DTINIT    TSSFAC\n       0.0    0.9000\n')
     w('*CONTROL_HOURGLASS\n         2       0.1\n')
-    w('*DATABASE_GLSTAT\n%10.3e\n' % (a.tend / 50))
+    w('*DATABASE_GLSTAT\n%10.3e\n' % a.dtout)
     w('*DATABASE_MATSUM\n%10.3e\n' % (a.tend / 10))
     w('*DATABASE_BINARY_D3PLOT\n%10.3e\n' % (a.tend / 5))
     w('*DATABASE_NODOUT\n%10.3e\n' % a.dtout)
