@@ -352,7 +352,9 @@ contains
       end if
       do k = 1, size(eng%g%blocks)
          associate (b => eng%g%blocks(k))
-            if (allocated(b%conn)) deallocate(b%conn)
+            ! (a deck that erodes keeps the connectivity: rank 0 finds the nodes no living
+            ! element holds for the eroded kinetic energy, dx_energy_sums)
+            if (allocated(b%conn) .and. .not. eng%g%erodes) deallocate(b%conn)
             if (allocated(b%elem)) deallocate(b%elem)
             if (allocated(b%vol0)) deallocate(b%vol0)
             if (allocated(b%relvol)) deallocate(b%relvol)
