@@ -164,6 +164,7 @@ studies: deps
 	@/usr/bin/python3 scripts/studies_emc.py
 	@sh scripts/studies_scenes.sh
 	@sh scripts/studies_lamina.sh
+	@sh scripts/studies_spall.sh
 
 # each deck of tests/public/index.tsv: --check, a --walltime-capped run, a physics check
 public-decks: all
