@@ -18,11 +18,11 @@ module dx_par_plot
    use dx_model, only: model_t
    use dx_par, only: par_rank, par_size, par_barrier, par_allreduce, PAR_MAX
    use dx_io_sys, only: sys_mkdir_p, sys_epoch_seconds
-   use dx_plot_hdf5, only: element_average, plot_merge_states
+   use dx_plot_hdf5, only: element_average, plot_merge_states, plot_rows, element_damage
    use dx_plot_part, only: plot_part_t, plot_combine
    use dx_plot_fields, only: plot_state_t, plot_state_alloc, plot_state_read, field_in_part, &
                              PLOT_FIELDS, NSTATE_FIELDS, CENTRE_NODE, F_COORD, F_VEL, &
-                             F_STRESS, F_EPSP, F_FAILED
+                             F_STRESS, F_EPSP, F_FAILED, F_DAMAGE
    use dx_plot_cells, only: cells_width, cell_column
    implicit none
    private
@@ -193,8 +193,10 @@ contains
             if (allocated(error)) exit work
             ! this rank's nodes and elements of each part field of the schema
             sp%time = st%time
+            sp%on = st%on
             do j = 1, NSTATE_FIELDS
                if (.not. field_in_part(j)) cycle
+               if (.not. st%on(j)) cycle
                if (PLOT_FIELDS(j)%centre == CENTRE_NODE) then
                   sp%f(j)%r = st%f(j)%r(:, nodes)
                else
@@ -220,7 +222,8 @@ contains
          if (allocated(error)) return
       end if
       ! the schema's part fields (dx_plot_fields): nodal, then element averages
-      call plot_state_alloc(st, size(pp%own), size(pp%eloc, 2), part=.true.)
+      call plot_state_alloc(st, size(pp%own), size(pp%eloc, 2), part=.true., &
+                            rows=plot_rows(model))
       st%time = model%time
       st%f(F_COORD)%r = model%x(:, pp%own)
       st%f(F_VEL)%r = model%v(:, pp%own)
@@ -229,6 +232,8 @@ contains
          call element_average(model%blocks(b), pp%eloc(2, i), pp%khv(b), st%f(F_STRESS)%r(:, i), &
                               st%f(F_EPSP)%r(1, i), fl)
          st%f(F_FAILED)%r(1, i) = real(fl, wp)
+         if (st%on(F_DAMAGE)) st%f(F_DAMAGE)%r(1, i) = element_damage(model%blocks(b), &
+                                                                    pp%eloc(2, i))
       end do
       call pp%part%write_state(st, error)
    end subroutine par_plot_write

@@ -12,19 +12,25 @@
 !> writer and the combiner alike, so the bits agree. SRC_MESH rows are /mesh datasets that
 !> the XDMF lists as attributes. The row order is the order of the writes (HDF5 lays a file
 !> out by its sequence of calls) and of the XDMF attributes.
+!> Optional rows (opt = .true.): a field present only when the model uses it (the damage D of
+!> the Tuler-Butcher erosion, dx_erosion: when some part has it); a state's rows in use are
+!> plot_state_t%on (set by plot_state_alloc's rows, found in a file by plot_state_read), the
+!> XDMF lists the rows in use (xdmf_write's rows), so a deck that uses no optional row writes
+!> the very files it wrote before the row existed.
 !> Von Mises stress and pressure: Malvern, "Introduction to the Mechanics of a Continuous
 !> Medium" (1969), sec. 6.5 (J2 = s:s/2, sigma_vm = sqrt(3 J2), p = -tr(sigma)/3).
 module dx_plot_fields
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_IO
    use dx_strings, only: str
-   use dx_h5, only: h5_file_t, h5_write, h5_read, h5_create_group, h5_write_attr, h5_read_attr
+   use dx_h5, only: h5_file_t, h5_write, h5_read, h5_create_group, h5_write_attr, h5_read_attr, &
+                    h5_exists
    use dx_plot_cells, only: write_cells, read_cells
    implicit none
    private
    public :: plot_field_t, PLOT_FIELDS, NSTATE_FIELDS, plot_state_t, CENTRE_NODE, CENTRE_CELL, &
              SRC_NODAL, SRC_ELEMENT, SRC_DERIVED, SRC_MESH, F_COORD, F_DISP, F_VEL, F_STRESS, &
-             F_VM, F_PRES, F_EPSP, F_FAILED, field_in_part, xdmf_attribute_type, &
+             F_VM, F_PRES, F_EPSP, F_FAILED, F_DAMAGE, field_in_part, plot_rows_in_file, xdmf_attribute_type, &
              plot_state_alloc, plot_state_derive, plot_state_write, plot_state_read, &
              stress_invariants, plot_mesh_write, plot_mesh_read
 
@@ -39,14 +45,15 @@ module dx_plot_fields
       integer :: ncomp = 1           !< 1 scalar, 3 vector, 6 symmetric tensor (xx yy zz xy yz zx)
       logical :: int = .false.       !< written as 4-byte integers (values are whole numbers)
       integer :: source = SRC_NODAL
+      logical :: opt = .false.       !< optional row: present only when the model uses it
    end type plot_field_t
 
    !> The schema. State fields first (NSTATE_FIELDS rows, in write order), then the /mesh
    !> datasets the XDMF also lists.
-   integer, parameter :: NSTATE_FIELDS = 8
+   integer, parameter :: NSTATE_FIELDS = 9
    integer, parameter :: F_COORD = 1, F_DISP = 2, F_VEL = 3, F_STRESS = 4, F_VM = 5, &
-                         F_PRES = 6, F_EPSP = 7, F_FAILED = 8
-   type(plot_field_t), parameter :: PLOT_FIELDS(11) = [ &
+                         F_PRES = 6, F_EPSP = 7, F_FAILED = 8, F_DAMAGE = 9
+   type(plot_field_t), parameter :: PLOT_FIELDS(12) = [ &
       plot_field_t('coordinates', '', CENTRE_NODE, 3, .false., SRC_NODAL), &
       plot_field_t('displacement', 'displacement', CENTRE_NODE, 3, .false., SRC_DERIVED), &
       plot_field_t('velocity', 'velocity', CENTRE_NODE, 3, .false., SRC_NODAL), &
@@ -56,6 +63,7 @@ module dx_plot_fields
       plot_field_t('eff_plastic_strain', 'eff_plastic_strain', CENTRE_CELL, 1, .false., &
                    SRC_ELEMENT), &
       plot_field_t('failed', 'failed', CENTRE_CELL, 1, .true., SRC_ELEMENT), &
+      plot_field_t('damage', 'damage', CENTRE_CELL, 1, .false., SRC_ELEMENT, .true.), &
       plot_field_t('/mesh/part_ids', 'part_id', CENTRE_CELL, 1, .true., SRC_MESH), &
       plot_field_t('/mesh/element_ids', 'element_id', CENTRE_CELL, 1, .true., SRC_MESH), &
       plot_field_t('/mesh/node_ids', 'node_id', CENTRE_NODE, 1, .true., SRC_MESH)]
@@ -68,6 +76,8 @@ module dx_plot_fields
    type :: plot_state_t
       real(wp) :: time = 0.0_wp
       type(field_values_t) :: f(NSTATE_FIELDS)
+      !> the rows this state has (every row but the optional ones unless asked for)
+      logical :: on(NSTATE_FIELDS) = .not. PLOT_FIELDS(1:NSTATE_FIELDS)%opt
    end type plot_state_t
 
 contains
@@ -91,14 +101,19 @@ contains
    end function xdmf_attribute_type
 
    !> Allocate the state fields for nn nodes and ne elements (values zero); part = .true.:
-   !> only the fields a rank writes to its part.
-   subroutine plot_state_alloc(st, nn, ne, part)
+   !> only the fields a rank writes to its part; rows: the optional rows in use (default
+   !> none).
+   subroutine plot_state_alloc(st, nn, ne, part, rows)
       type(plot_state_t), intent(inout) :: st
       integer, intent(in) :: nn, ne
       logical, intent(in), optional :: part
+      logical, intent(in), optional :: rows(NSTATE_FIELDS)
       integer :: i
+      st%on = .not. PLOT_FIELDS(1:NSTATE_FIELDS)%opt
+      if (present(rows)) st%on = st%on .or. rows
       do i = 1, NSTATE_FIELDS
          if (allocated(st%f(i)%r)) deallocate(st%f(i)%r)
+         if (.not. st%on(i)) cycle
          if (present(part)) then
             if (part .and. .not. field_in_part(i)) cycle
          end if
@@ -155,6 +170,7 @@ contains
       if (allocated(error)) return
       do i = 1, NSTATE_FIELDS
          if (only_part .and. .not. field_in_part(i)) cycle
+         if (.not. st%on(i)) cycle
          fld = PLOT_FIELDS(i)
          if (fld%int) then
             call h5_write(f, g//'/'//trim(fld%name), nint(st%f(i)%r(1, :)), error)
@@ -178,8 +194,11 @@ contains
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: part
       real(wp), allocatable :: buf(:)
+      logical :: rows(NSTATE_FIELDS)
       integer :: i, n
-      call plot_state_alloc(st, nn, ne, part)
+      call plot_rows_in_file(f, g, rows, error)
+      if (allocated(error)) return
+      call plot_state_alloc(st, nn, ne, part, rows)
       call h5_read_attr(f, g, 'time', st%time, error)
       if (allocated(error)) return
       do i = 1, NSTATE_FIELDS
@@ -195,6 +214,21 @@ contains
          st%f(i)%r = reshape(buf, shape(st%f(i)%r))
       end do
    end subroutine plot_state_read
+
+   !> The optional rows that state group g of f holds (a dataset of that name).
+   subroutine plot_rows_in_file(f, g, rows, error)
+      type(h5_file_t), intent(in) :: f
+      character(*), intent(in) :: g
+      logical, intent(out) :: rows(NSTATE_FIELDS)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i
+      rows = .false.
+      do i = 1, NSTATE_FIELDS
+         if (.not. PLOT_FIELDS(i)%opt) cycle
+         call h5_exists(f, g//'/'//trim(PLOT_FIELDS(i)%name), rows(i), error)
+         if (allocated(error)) return
+      end do
+   end subroutine plot_rows_in_file
 
    !> The /mesh group of a plot file (serial d3plot.h5, its mesh file, the combined file):
    !> coordinates, node ids, cells, element ids, part ids, then the title attribute.

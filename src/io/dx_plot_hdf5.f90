@@ -16,7 +16,8 @@
 module dx_plot_hdf5
    use dx_kinds, only: wp
    use dx_error, only: error_t
-   use dx_model, only: model_t, elem_block_t, family_t, element_family, shell_stress_global
+   use dx_model, only: model_t, elem_block_t, family_t, element_family, shell_stress_global, &
+                       ES_DMG
    use dx_h5, only: h5_file_t, h5_create, h5_close, h5_flush, h5_create_group, h5_write, &
                     h5_write_attr, h5_create_extendible, h5_append, h5_open_read, h5_read, &
                     h5_read_attr, h5_close_keep
@@ -30,11 +31,12 @@ module dx_plot_hdf5
    use dx_plot_cells, only: cell_topo_t, model_cells, cells_topology, read_cells
    use dx_plot_fields, only: plot_state_t, plot_state_alloc, plot_state_derive, plot_state_write, &
                              plot_state_read, plot_mesh_write, plot_mesh_read, stress_invariants, F_COORD, F_VEL, &
-                             F_STRESS, F_EPSP, F_FAILED
+                             F_STRESS, F_EPSP, F_FAILED, F_DAMAGE, NSTATE_FIELDS, &
+                             plot_rows_in_file
    implicit none
    private
    public :: plot_file_t, element_results, stress_invariants, element_average, &
-             plot_merge_states
+             plot_merge_states, plot_rows, element_damage
 
    character(*), parameter :: H5NAME = 'd3plot.h5', XMFNAME = 'd3plot.xdmf'
 
@@ -49,6 +51,8 @@ module dx_plot_hdf5
       !> .true. while the run writes its states to d3plot.states/ (dx_plot_states) and
       !> d3plot.h5.tmp; plot_close then renames d3plot.h5.tmp into place
       logical :: live = .false.
+      !> the rows of the schema its states hold (the optional ones: dx_plot_fields)
+      logical :: rows(NSTATE_FIELDS) = .false.
    contains
       procedure :: open => plot_open
       procedure :: resume => plot_resume
@@ -139,7 +143,7 @@ contains
          ! an empty XDMF first: an older one must not list states of an older run; then
          ! the older run's files go, and the mesh file of this run is published
          call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, self%topo, &
-                         self%times(1:0), error, states_dir=STATES_DIR)
+                         self%times(1:0), error, states_dir=STATES_DIR, rows=self%rows)
          if (allocated(error)) exit work
          call file_remove(dir//'/'//H5NAME)
          call states_remove_all(dir)
@@ -185,6 +189,8 @@ contains
          if (allocated(error)) return
       end if
       if (.not. allocated(error)) call plot_mesh_read(f, x0, nlab, cells, elab, ids, title, error)
+      if (.not. allocated(error) .and. there .and. nmerged > 0) &
+         call plot_rows_in_file(f, state_group(1), self%rows, error)
       call h5_close_keep(f, error)
       if (allocated(error)) return
       if (there) then
@@ -194,7 +200,7 @@ contains
             return
          end if
          call xdmf_write(dir//'/'//XMFNAME, H5NAME, title, size(nlab), size(ids), &
-                         cells_topology(cells), x(1:nmerged), error)
+                         cells_topology(cells), x(1:nmerged), error, rows=self%rows)
          if (allocated(error)) return
          call file_remove(dir//'/'//H5NAME//'.tmp')
          call states_remove_all(dir)
@@ -285,7 +291,7 @@ contains
             end if
             call model_cells(model, cells)
             call xdmf_write(dir//'/'//XMFNAME, H5NAME, self%title, nn, ne, &
-                            cells_topology(cells), t(1:nkeep), error)
+                            cells_topology(cells), t(1:nkeep), error, rows=plot_rows(model))
             if (allocated(error)) exit work
          end if
          call self%open(model, dir, error, publish=.false.)
@@ -316,7 +322,7 @@ contains
          self%live = .true.
          call xdmf_write(self%xdmf_path, H5NAME, self%title, nn, ne, self%topo, &
                          self%times(1:nkeep), &
-                         error, states_dir=STATES_DIR)
+                         error, states_dir=STATES_DIR, rows=self%rows)
          if (allocated(error)) exit work
          call states_clear(dir, nkeep + 1)
          call file_remove(dir//'/'//H5NAME)
@@ -331,9 +337,10 @@ contains
    !> Element results: stress averaged over integration points, effective plastic strain
    !> (0 where the material has none) and the failed flag (1.0 = eroded), the SRC_ELEMENT
    !> fields of the schema (dx_plot_fields); the invariants are derived from the stress.
-   subroutine element_results(model, stress, epsp, failed)
+   subroutine element_results(model, stress, epsp, failed, damage)
       type(model_t), intent(in) :: model
       real(wp), intent(out) :: stress(:, :), epsp(:), failed(:)
+      real(wp), intent(out), optional :: damage(:)   !< the damage D (F_DAMAGE; 0: none)
       integer :: ib, i, e, k, imat, fl
       type(family_t) :: fam
       logical :: rot
@@ -341,6 +348,7 @@ contains
       stress = 0.0_wp
       epsp = 0.0_wp
       failed = 0.0_wp
+      if (present(damage)) damage = 0.0_wp
       if (allocated(model%blocks)) then
          do ib = 1, size(model%blocks)
             associate (blk => model%blocks(ib))
@@ -357,6 +365,7 @@ contains
                   e = blk%elem(i)
                   call element_average(blk, i, k, stress(:, e), epsp(e), fl)
                   failed(e) = real(fl, wp)
+                  if (present(damage)) damage(e) = element_damage(blk, i)
                   ! shells: the mean over the laminae (the membrane stress N/t) is held
                   ! in the element's co-rotational frame; the plot shows it in global axes
                   if (rot) call shell_stress_global(model%x(:, blk%conn(:, i)), stress(:, e))
@@ -391,6 +400,32 @@ contains
       end if
    end subroutine element_average
 
+   !> An element's damage D for the plot: the Tuler-Butcher integral over IMPULSE of the
+   !> erosion (dx_erosion, family-state slot ES_DMG; 1 at failure), 0 where the block has
+   !> none.
+   real(wp) function element_damage(blk, i) result(d)
+      type(elem_block_t), intent(in) :: blk
+      integer, intent(in) :: i
+      d = 0.0_wp
+      if (blk%esc(ES_DMG) > 0) d = blk%es(i, blk%esc(ES_DMG))
+   end function element_damage
+
+   !> The rows of the plot schema this model uses (dx_plot_fields: the optional ones): the
+   !> damage D when some part's *MAT_ADD_EROSION has the Tuler-Butcher criterion (from the
+   !> parts, so every rank of an MPI run agrees).
+   function plot_rows(model) result(rows)
+      type(model_t), intent(in) :: model
+      logical :: rows(NSTATE_FIELDS)
+      integer :: p
+      rows = .false.
+      if (.not. allocated(model%parts)) return
+      do p = 1, size(model%parts)
+         associate (e => model%parts(p)%ero)
+            if (e%on .and. e%impulse /= e%excl) rows(F_DAMAGE) = .true.
+         end associate
+      end do
+   end function plot_rows
+
    !> Write one plot state at model%time (see the module header for the order of writes):
    !> the schema's fields (dx_plot_fields) filled from the model.
    subroutine plot_write_state(self, model, error)
@@ -398,7 +433,7 @@ contains
       type(model_t), intent(in) :: model
       type(error_t), allocatable, intent(out) :: error
       type(plot_state_t) :: st
-      call plot_state_alloc(st, self%nn, self%ne)
+      call plot_state_alloc(st, self%nn, self%ne, rows=plot_rows(model))
       st%time = model%time
       if (allocated(model%x)) then
          st%f(F_COORD)%r = model%x
@@ -406,8 +441,13 @@ contains
          st%f(F_COORD)%r = model%x0
       end if
       if (allocated(model%v)) st%f(F_VEL)%r = model%v
-      call element_results(model, st%f(F_STRESS)%r, st%f(F_EPSP)%r(1, :), &
-                           st%f(F_FAILED)%r(1, :))
+      if (st%on(F_DAMAGE)) then
+         call element_results(model, st%f(F_STRESS)%r, st%f(F_EPSP)%r(1, :), &
+                              st%f(F_FAILED)%r(1, :), st%f(F_DAMAGE)%r(1, :))
+      else
+         call element_results(model, st%f(F_STRESS)%r, st%f(F_EPSP)%r(1, :), &
+                              st%f(F_FAILED)%r(1, :))
+      end if
       call plot_state_derive(st, model%x0)
       call write_arrays(self, st, error)
    end subroutine plot_write_state
@@ -422,6 +462,7 @@ contains
       real(wp), allocatable :: tmp(:)
       integer :: k, n
       k = self%nstates + 1
+      self%rows = st%on
       call plot_state_write(self%h5, state_group(k), st, error)
       if (allocated(error)) return
       ! the state is complete: publish it
@@ -447,7 +488,7 @@ contains
          if (.not. xdmf) return
       end if
       call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, self%topo, &
-                      self%times(1:k), error, states_dir=STATES_DIR)
+                      self%times(1:k), error, states_dir=STATES_DIR, rows=self%rows)
    end subroutine write_arrays
 
    !> Flush and close (safe to call twice and after errors).
@@ -469,7 +510,7 @@ contains
       call sys_rename(self%dir//'/'//H5NAME//'.tmp', self%dir//'/'//H5NAME, error)
       if (allocated(error)) return
       call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, self%topo, &
-                      self%times(1:self%nstates), error)
+                      self%times(1:self%nstates), error, rows=self%rows)
       if (allocated(error)) return
       call states_remove_all(self%dir)
    end subroutine plot_close

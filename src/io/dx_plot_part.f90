@@ -33,7 +33,7 @@ module dx_plot_part
    use dx_plot_cells, only: write_cells, read_cells, cells_topology, cell_topo_t
    use dx_plot_fields, only: plot_state_t, plot_state_alloc, plot_state_derive, plot_state_write, &
                              plot_mesh_write, field_in_part, PLOT_FIELDS, NSTATE_FIELDS, &
-                             CENTRE_NODE
+                             CENTRE_NODE, plot_rows_in_file
    implicit none
    private
    public :: plot_part_t, plot_part_name, plot_part_state_name, plot_part_count, plot_combine, &
@@ -280,6 +280,7 @@ contains
                               cells(:, :), elem_ids(:), part_ids(:), rc(:, :)
       type(plot_state_t) :: st
       type(cell_topo_t) :: topo
+      logical :: rows(NSTATE_FIELDS)
       type :: idx_t
          integer, allocatable :: n(:), e(:)
       end type idx_t
@@ -410,15 +411,21 @@ contains
          if (allocated(error)) exit work
          topo = cells_topology(cells)
          deallocate(cells, elem_ids, part_ids, node_ids)
-         call plot_state_alloc(st, nn, ne)
          do k = 1, nst
             g = state_group(k)
             do r = 0, np - 1
                call h5_open_read(pf(r), plot_part_state_name(dir, r, k), error)
                if (allocated(error)) exit work
+               ! the optional rows of the schema the parts hold (from the first state)
+               if (k == 1 .and. r == 0) then
+                  call plot_rows_in_file(pf(r), g, rows, error)
+                  if (allocated(error)) exit work
+                  call plot_state_alloc(st, nn, ne, rows=rows)
+               end if
                ! each part field of the schema, scattered to the global nodes or elements
                do j = 1, NSTATE_FIELDS
                   if (.not. field_in_part(j)) cycle
+                  if (.not. st%on(j)) cycle
                   call h5_read(pf(r), g//'/'//trim(PLOT_FIELDS(j)%name), buf, error)
                   if (allocated(error)) exit work
                   n = PLOT_FIELDS(j)%ncomp
@@ -448,7 +455,8 @@ contains
          if (allocated(error)) exit work
          call sys_rename(dir//'/'//H5NAME//'.tmp', dir//'/'//H5NAME, error)
          if (allocated(error)) exit work
-         call xdmf_write(dir//'/'//XMFNAME, H5NAME, title, nn, ne, topo, times, error)
+         call xdmf_write(dir//'/'//XMFNAME, H5NAME, title, nn, ne, topo, times, error, &
+                         rows=st%on)
          if (allocated(error)) exit work
          nstates_out = nst
       end block work

@@ -34,9 +34,11 @@ contains
    !> Write the XDMF file path listing states 1..size(times) of h5name (relative name).
    !> With states_dir (a running job, dx_plot_states): the mesh is states_dir/mesh.h5 and
    !> state k is states_dir/NNNNNN.h5, each under the path it has in h5name.
-   subroutine xdmf_write(path, h5name, title, nn, ne, topo, times, error, states_dir)
+   subroutine xdmf_write(path, h5name, title, nn, ne, topo, times, error, states_dir, rows)
       character(*), intent(in) :: path, h5name, title
       character(*), intent(in), optional :: states_dir
+      !> the optional rows of the schema the states hold (dx_plot_fields; default none)
+      logical, intent(in), optional :: rows(:)
       integer, intent(in) :: nn, ne
       type(cell_topo_t), intent(in) :: topo     !< the cells (dx_plot_cells)
       real(wp), intent(in) :: times(:)
@@ -83,6 +85,10 @@ contains
          do i = 1, size(PLOT_FIELDS)
             fld = PLOT_FIELDS(i)
             if (len_trim(fld%label) == 0) cycle      ! the geometry
+            if (fld%opt) then                        ! an optional row: only when in use
+               if (.not. present(rows)) cycle
+               if (.not. rows(i)) cycle
+            end if
             dims = sne
             if (fld%centre == CENTRE_NODE) dims = snn
             if (fld%ncomp > 1) dims = dims//' '//str(fld%ncomp)
