@@ -8,7 +8,9 @@ Loads the XDMF with the XDMF3 reader, checks the number of time steps (against N
 against the nstates attribute of d3plot.h5 read with h5dump when NSTATES is not given), the
 mesh size and the expected point/cell arrays at every time step, that every cell of the first
 state has a positive volume (solids) or area (shells) (connectivity order), then colours the last state
-by von Mises stress and saves a PNG (default: next to the XDMF as d3plot_check.png).
+by von Mises stress and saves a PNG (default: next to the XDMF as d3plot_check.png). When the
+last state has eroded elements (cell field failed = 1), a Threshold on failed in [0, 0.5]
+(how a user hides them) must keep exactly the other cells.
 Exit status 0 when all checks pass, 1 otherwise. Not part of `make test` (needs ParaView).
 """
 import os
@@ -18,7 +20,7 @@ import sys
 
 from paraview import servermanager
 from paraview.simple import (Xdmf3ReaderS, CellSize, GetActiveViewOrCreate, Show, ColorBy,
-                             ResetCamera, Render, SaveScreenshot)
+                             ResetCamera, Render, SaveScreenshot, Threshold)
 
 POINT_ARRAYS = ["displacement", "velocity"]
 CELL_ARRAYS = ["stress", "von_mises", "pressure", "eff_plastic_strain", "failed", "part_id"]
@@ -88,6 +90,26 @@ def main():
         failures.append("stress has %d components, expected 6" % stress.GetNumberOfComponents())
     if stress is not None:
         print("von_mises range at last step:", reader.CellData["von_mises"].GetRange())
+
+    if times and "failed" in reader.CellData.keys():
+        reader.UpdatePipeline(times[-1])
+        data = servermanager.Fetch(reader)
+        fl = data.GetCellData().GetArray("failed")
+        nfail = sum(1 for i in range(data.GetNumberOfCells()) if fl.GetValue(i) > 0)
+        if nfail:
+            th = Threshold(Input=reader)
+            th.Scalars = ["CELLS", "failed"]
+            try:
+                th.LowerThreshold, th.UpperThreshold = 0.0, 0.5
+            except AttributeError:          # older ParaView: one range property
+                th.ThresholdRange = [0.0, 0.5]
+            th.UpdatePipeline(times[-1])
+            kept = th.GetDataInformation().GetNumberOfCells()
+            print("eroded cells at the last step: %d; Threshold failed <= 0.5 keeps %d of %d"
+                  % (nfail, kept, data.GetNumberOfCells()))
+            if kept != data.GetNumberOfCells() - nfail:
+                failures.append("Threshold on failed keeps %d cells, expected %d"
+                                % (kept, data.GetNumberOfCells() - nfail))
 
     view = GetActiveViewOrCreate("RenderView")
     view.ViewSize = [640, 480]
