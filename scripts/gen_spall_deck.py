@@ -21,6 +21,8 @@ ap.add_argument('--v', type=float, default=200.0)
 ap.add_argument('--sigth', type=float, default=2.0)
 ap.add_argument('--impulse', type=float, default=3.0e-4)
 ap.add_argument('--no-erosion', action='store_true')
+ap.add_argument('--failtm', type=float, default=None,
+                help='instead of Tuler-Butcher: every target element erodes at t = FAILTM')
 ap.add_argument('--tend', type=float, default=0.0025)
 ap.add_argument('--dtout', type=float, default=1.0e-5)
 ap.add_argument('out')
@@ -49,7 +51,12 @@ with open(a.out, 'w') as f:
     w('*SECTION_SOLID\n         1         1\n')
     w('*MAT_ELASTIC\n$      MID        RO         E        PR\n         1   7.85E-6     210.0       0.3\n')
     w('*MAT_ELASTIC\n$      MID        RO         E        PR\n         2   7.85E-6     210.0       0.3\n')
-    if not a.no_erosion:
+    if a.failtm is not None:
+        w('*MAT_ADD_EROSION\n$      MID      EXCL    MXPRES     MNEPS    EFFEPS    VOLEPS    NUMFIP       NCS\n'
+          '         2\n'
+          '$   MNPRES     SIGP1     SIGVM     MXEPS     EPSSH     SIGTH   IMPULSE    FAILTM\n'
+          '                                                                      %10.4g\n' % a.failtm)
+    elif not a.no_erosion:
         w('*MAT_ADD_EROSION\n$      MID      EXCL    MXPRES     MNEPS    EFFEPS    VOLEPS    NUMFIP       NCS\n'
           '         2\n'
           '$   MNPRES     SIGP1     SIGVM     MXEPS     EPSSH     SIGTH   IMPULSE    FAILTM\n'

@@ -16,7 +16,6 @@ module dx_element
    use dx_hex8, only: hex8_block, hex8_mass_share
    use dx_tet4, only: tet4_block
    use dx_shell_bt, only: shell_bt_block, shell_bt_rotary_inertia
-   use dx_erosion, only: erosion_block_pass
    implicit none
    private
    public :: element_block_pass, element_mass_share, block_result_t, family_t, element_family
@@ -47,12 +46,10 @@ contains
          call shell_bt_block(blk, mat, part, part%shrf, part%lobatto, part%istupd, x, v, w, &
                              dt_old, f, mom, res)
       case (ETYPE_TET4)
-         call tet4_block(blk, mat, part, x, v, dt_old, f, res)
+         call tet4_block(blk, mat, part, x, v, dt_old, f, res, time, dtfloor)
       case default
-         call hex8_block(blk, mat, part, x, v, dt_old, f, res)
+         call hex8_block(blk, mat, part, x, v, dt_old, f, res, time, dtfloor)
       end select
-      if (present(time) .and. blk%etype /= ETYPE_SHELL_BT) &
-         call erosion_block_pass(blk, part, time, dtfloor, res)
    end subroutine element_block_pass
 
    !> After the lumped masses are known: the family's own-mass share of the element time-step

@@ -1,8 +1,9 @@
 !> Element erosion, one place for every solid family: the *MAT_ADD_EROSION criteria at an
 !> integration point (called by the kernels right after the material update, beside the
 !> material's own failure, so an element that fails at t(n) carries no force from t(n) on)
-!> and the block-level criteria after a pass (FAILTM, and *CONTROL_TIMESTEP ERODE = 1: the
-!> element whose step falls below DTMIN times the first step). An eroded element keeps zero
+!> and the criteria that need no stress (erosion_now, after the wave speed: FAILTM, and
+!> *CONTROL_TIMESTEP ERODE = 1: the element whose step falls below DTMIN times the first
+!> step). An eroded element keeps zero
 !> stress, carries no force, no longer limits the step and keeps its internal energy, which
 !> glstat and matsum report as eroded internal energy (dx_energy_sums); its nodal mass stays
 !> on the nodes (as LS-DYNA does), a node no living element holds any more flies on freely
@@ -19,11 +20,11 @@
 !> Principal stresses: the trigonometric solution of the characteristic cubic (Smith 1961,
 !> "Eigenvalues of a symmetric 3x3 matrix", Comm. ACM 4:168).
 module dx_erosion
-   use dx_kinds, only: wp, huge_wp
-   use dx_element_types, only: elem_block_t, part_t, block_result_t, erosion_t, ES_DMG
+   use dx_kinds, only: wp
+   use dx_element_types, only: elem_block_t, part_t, erosion_t, ES_DMG
    implicit none
    private
-   public :: erosion_points, erosion_block_pass, largest_principal, von_mises
+   public :: erosion_points, erosion_now, largest_principal, von_mises
 
 contains
 
@@ -75,39 +76,30 @@ contains
       end do
    end subroutine erosion_points
 
-   !> After the kernel pass of a block at time t: erode the elements whose step is below
-   !> dtfloor (> 0 only with *CONTROL_TIMESTEP ERODE = 1: DTMIN * first step / TSSFAC) and,
-   !> past FAILTM, every element of the part; res's smallest step is then taken over the
-   !> elements left.
-   subroutine erosion_block_pass(blk, part, t, dtfloor, res)
-      type(elem_block_t), intent(inout) :: blk
+   !> The criteria of the pass at time t that need no stress (called by the kernels after
+   !> the wave speed): FAILTM (every element of the part at t >= FAILTM) and, dtfloor > 0
+   !> (*CONTROL_TIMESTEP ERODE = 1: DTMIN * first step / TSSFAC), the element whose stable
+   !> step lc/(Q + sqrt(Q^2 + c^2)) (Q = Q2 c + Q1 lc |tr D| in compression, as
+   !> dx_hex8's stable_time_step) is below it. Decided in the pass, before the forces, so
+   !> the element applies no force from it on and books no work for it (energy exact).
+   subroutine erosion_now(part, n, t, dtfloor, lc, trd, c, failed)
       type(part_t), intent(in) :: part
-      real(wp), intent(in) :: t, dtfloor
-      type(block_result_t), intent(inout) :: res
-      logical :: changed, all_time
+      integer, intent(in) :: n
+      real(wp), intent(in) :: t, dtfloor, lc(:), trd(:), c(:)
+      logical, intent(inout) :: failed(:)
+      real(wp) :: qb, dte
       integer :: i
-      changed = .false.
-      all_time = .false.
-      if (part%ero%on .and. part%ero%failtm /= part%ero%excl) all_time = t >= part%ero%failtm
-      do i = 1, blk%nel
-         if (blk%failed(i)) cycle
-         if (all_time .or. res%dte(i) < dtfloor) then
-            blk%failed(i) = .true.
-            blk%sig(i, :, :) = 0.0_wp
-            res%dte(i) = huge_wp
-            changed = .true.
-         end if
+      if (part%ero%on .and. part%ero%failtm /= part%ero%excl) then
+         if (t >= part%ero%failtm) failed(1:n) = .true.
+      end if
+      if (.not. dtfloor > 0.0_wp) return
+      do i = 1, n
+         qb = 0.0_wp
+         if (trd(i) < 0.0_wp) qb = part%q2*c(i) + part%q1*lc(i)*abs(trd(i))
+         dte = lc(i)/(qb + sqrt(qb*qb + c(i)*c(i)))
+         if (dte < dtfloor) failed(i) = .true.
       end do
-      if (.not. changed) return
-      res%dt = huge_wp
-      res%imin = 0
-      do i = 1, blk%nel
-         if (res%dte(i) < res%dt) then
-            res%dt = res%dte(i); res%imin = i
-         end if
-      end do
-      if (res%imin == 0) res%imin = 1
-   end subroutine erosion_block_pass
+   end subroutine erosion_now
 
    !> The largest principal value of the symmetric tensor s (xx yy zz xy yz zx).
    pure real(wp) function largest_principal(s) result(s1)

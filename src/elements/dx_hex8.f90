@@ -22,7 +22,7 @@
 module dx_hex8
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_material, only: material_t
-   use dx_erosion, only: erosion_points
+   use dx_erosion, only: erosion_points, erosion_now
    use dx_element_types, only: elem_block_t, part_t, ES_WORK, ES_HGS, ES_PHIM, block_result_t, &
                                HEX_ERR_NEGVOL => ELEM_ERR_NEGVOL, &
                                HEX_ERR_MATERIAL => ELEM_ERR_MATERIAL
@@ -62,7 +62,7 @@ contains
 
    !> One explicit pass over a block: x = x(n), v = v(n-1/2), dt_old = dt(n-1/2).
    !> Updates stress/history to t(n) and subtracts the internal force from f.
-   subroutine hex8_block(blk, mat, part, x, v, dt_old, f, res)
+   subroutine hex8_block(blk, mat, part, x, v, dt_old, f, res, time, dtfloor)
       type(elem_block_t), intent(inout) :: blk
       class(material_t), intent(in) :: mat
       type(part_t), intent(in) :: part
@@ -70,13 +70,14 @@ contains
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: f(:, :)
       type(block_result_t), intent(out) :: res
+      real(wp), intent(in), optional :: time, dtfloor   !< erosion (dx_erosion%erosion_now)
       ! blocks built elsewhere than dx_model_build (tests, restart) may lack it
       if (blk%esc(ES_WORK) == 0) call blk%es_add(ES_WORK, 4)
       select case (blk%nip)
       case (1)
-         call hex8_1pt(blk, mat, part, x, v, dt_old, f, res)
+         call hex8_1pt(blk, mat, part, x, v, dt_old, f, res, time, dtfloor)
       case default
-         call hex8_sri(blk, mat, part, x, v, dt_old, f, res)
+         call hex8_sri(blk, mat, part, x, v, dt_old, f, res, time, dtfloor)
       end select
    end subroutine hex8_block
 
@@ -99,7 +100,7 @@ contains
       end do
    end subroutine jaumann
 
-   subroutine hex8_1pt(blk, mat, part, x, v, dt_old, f, res)
+   subroutine hex8_1pt(blk, mat, part, x, v, dt_old, f, res, time, dtfloor)
       type(elem_block_t), intent(inout) :: blk
       class(material_t), intent(in) :: mat
       type(part_t), intent(in) :: part
@@ -107,6 +108,7 @@ contains
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: f(:, :)
       type(block_result_t), intent(out) :: res
+      real(wp), intent(in), optional :: time, dtfloor
       ! work arrays have the compile-time leading dimension nv_chunk, so that loops that touch
       ! several columns of one array vectorize; deps is (nel, 6) as the material expects
       real(wp), dimension(nv_chunk, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
@@ -222,6 +224,7 @@ contains
          end do
       end if
       call mat%wave_speed(n, rv, blk%hv(:, :, 1), c)
+      if (present(time)) call erosion_now(part, n, time, dtfloor, lc, trd, c, failed)
       ! ---- erosion (an eroded element keeps zero stress and carries no force from the pass
       ! it erodes in; the work of its last step with the forces it applied still counts)
       do i = 1, n
@@ -612,7 +615,7 @@ contains
 
    !> ELFORM 2: 2x2x2 Gauss points, deviatoric strain per point, volumetric strain rate
    !> replaced by the element mean (mean dilatation); pressure work through the mean B.
-   subroutine hex8_sri(blk, mat, part, x, v, dt_old, f, res)
+   subroutine hex8_sri(blk, mat, part, x, v, dt_old, f, res, time, dtfloor)
       type(elem_block_t), intent(inout) :: blk
       class(material_t), intent(in) :: mat
       type(part_t), intent(in) :: part
@@ -620,6 +623,7 @@ contains
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: f(:, :)
       type(block_result_t), intent(out) :: res
+      real(wp), intent(in), optional :: time, dtfloor
       real(wp), dimension(blk%nel, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
       real(wp), dimension(blk%nel) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive, pbar
       real(wp), dimension(blk%nel) :: bv, relv_old, wold, wnew, lc
@@ -727,6 +731,7 @@ contains
       call mat%wave_speed(n, rv, blk%hv(:, :, 1), c)
       ! bulk viscosity, mean pressure through the exact mean B, erosion
       call char_lengths(blk, xe, ye, ze, bx, by, bz, vol, lc)   ! of the step and viscosity
+      if (present(time)) call erosion_now(part, n, time, dtfloor, lc, trd, c, fpt)
       do i = 1, n
          rho = mat%ro/rv(i)
          q(i) = bulk_viscosity(part, rho, lc(i), trd(i), c(i))

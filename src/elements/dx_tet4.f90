@@ -16,7 +16,7 @@
 module dx_tet4
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_material, only: material_t
-   use dx_erosion, only: erosion_points
+   use dx_erosion, only: erosion_points, erosion_now
    use dx_element_types, only: elem_block_t, part_t, ES_WORK, block_result_t, ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL
    use dx_hex8, only: centred_work, stable_time_step   ! one copy, inlined in dx_hex8
                                                         ! (dx_solid_kernels)
@@ -57,7 +57,7 @@ contains
 
    !> One explicit pass over a block of tetrahedra: x = x(n), v = v(n-1/2), dt_old =
    !> dt(n-1/2). Updates stress/history to t(n) and subtracts the internal force from f.
-   subroutine tet4_block(blk, mat, part, x, v, dt_old, f, res)
+   subroutine tet4_block(blk, mat, part, x, v, dt_old, f, res, time, dtfloor)
       type(elem_block_t), intent(inout) :: blk
       class(material_t), intent(in) :: mat
       type(part_t), intent(in) :: part
@@ -65,6 +65,7 @@ contains
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: f(:, :)
       type(block_result_t), intent(out) :: res
+      real(wp), intent(in), optional :: time, dtfloor   !< erosion (dx_erosion%erosion_now)
       real(wp), dimension(nv_chunk, NEN) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm
       real(wp), dimension(nv_chunk, NEN) :: fx, fy, fz
       real(wp), dimension(nv_chunk) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive
@@ -170,6 +171,7 @@ contains
          end do
       end if
       call mat%wave_speed(n, rv, blk%hv(:, :, 1), c)
+      if (present(time)) call erosion_now(part, n, time, dtfloor, lc, trd, c, failed)
       do i = 1, n
          if (failed(i) .and. .not. blk%failed(i)) blk%failed(i) = .true.
       end do
