@@ -105,6 +105,8 @@ contains
          call box_segments(inp, model, c, c%sboxid, 'SBOXID', ss, error)
          if (allocated(error)) return
          snodes = surface_nodes(model%nn, ss)
+         call no_eroding_part(inp, model, c, 'SSID', ss, error)
+         if (allocated(error)) return
       end if
       if (size(snodes) == 0) then
          call set_error(error, where(inp, c)//'field SSID: the slave side (set '// &
@@ -120,6 +122,8 @@ contains
       call side_surface(inp, model, c, c%msid, c%mstyp, 'MSID', ms, error)
       if (allocated(error)) return
       call box_segments(inp, model, c, c%mboxid, 'MBOXID', ms, error)
+      if (allocated(error)) return
+      call no_eroding_part(inp, model, c, 'MSID', ms, error)
       if (allocated(error)) return
       if (ms%nseg == 0) then
          call set_error(error, where(inp, c)//'field MSID: the master side (set '// &
@@ -141,6 +145,31 @@ contains
          end if
       end select
    end subroutine build_iface
+
+   !> A contact surface with segments of a part that erodes (*MAT_ADD_EROSION) is an input
+   !> error naming the field: the contact surfaces are not updated after erosion yet (the
+   !> faces of eroded elements would stay in them, the interior faces they expose would not
+   !> join), which would give wrong contact forces, not a clear message.
+   subroutine no_eroding_part(inp, model, c, field, s, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(in) :: model
+      type(contact_in_t), intent(in) :: c
+      character(*), intent(in) :: field
+      type(surface_t), intent(in) :: s
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k, ip
+      if (.not. model%erodes) return
+      do k = 1, s%nseg
+         if (s%elem(k) <= 0) cycle
+         ip = model%elem_part(s%elem(k))
+         if (.not. model%parts(ip)%ero%on) cycle
+         call set_error(error, where(inp, c)//'field '//field//': part '// &
+            str(model%parts(ip)%label)//' of this surface erodes (*MAT_ADD_EROSION of '// &
+            'material '//str(model%parts(ip)%mid)//'); contact surfaces are not updated '// &
+            'after element erosion yet (issue 18)')
+         return
+      end do
+   end subroutine no_eroding_part
 
    !> the nodes of a surface, each once, in increasing order
    function surface_nodes(nn, s) result(nodes)
