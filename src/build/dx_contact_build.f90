@@ -31,6 +31,10 @@ module dx_contact_build
       integer, allocatable :: seg(:, :)     !< (4, nseg), a triangle repeats node 3
       integer, allocatable :: nsn(:)
       integer, allocatable :: elem(:)       !< owning element (dense)
+      !> decks that erode: the element across the face (0: exterior; an interior face of
+      !> the parts is in the surface twice, once from each side, dormant until the element
+      !> across it erodes)
+      integer, allocatable :: nbr(:)
    end type surface_t
 
 contains
@@ -105,8 +109,6 @@ contains
          call box_segments(inp, model, c, c%sboxid, 'SBOXID', ss, error)
          if (allocated(error)) return
          snodes = surface_nodes(model%nn, ss)
-         call no_eroding_part(inp, model, c, 'SSID', ss, error)
-         if (allocated(error)) return
       end if
       if (size(snodes) == 0) then
          call set_error(error, where(inp, c)//'field SSID: the slave side (set '// &
@@ -122,8 +124,6 @@ contains
       call side_surface(inp, model, c, c%msid, c%mstyp, 'MSID', ms, error)
       if (allocated(error)) return
       call box_segments(inp, model, c, c%mboxid, 'MBOXID', ms, error)
-      if (allocated(error)) return
-      call no_eroding_part(inp, model, c, 'MSID', ms, error)
       if (allocated(error)) return
       if (ms%nseg == 0) then
          call set_error(error, where(inp, c)//'field MSID: the master side (set '// &
@@ -145,31 +145,6 @@ contains
          end if
       end select
    end subroutine build_iface
-
-   !> A contact surface with segments of a part that erodes (*MAT_ADD_EROSION) is an input
-   !> error naming the field: the contact surfaces are not updated after erosion yet (the
-   !> faces of eroded elements would stay in them, the interior faces they expose would not
-   !> join), which would give wrong contact forces, not a clear message.
-   subroutine no_eroding_part(inp, model, c, field, s, error)
-      type(model_input_t), intent(in) :: inp
-      type(model_t), intent(in) :: model
-      type(contact_in_t), intent(in) :: c
-      character(*), intent(in) :: field
-      type(surface_t), intent(in) :: s
-      type(error_t), allocatable, intent(out) :: error
-      integer :: k, ip
-      if (.not. model%erodes) return
-      do k = 1, s%nseg
-         if (s%elem(k) <= 0) cycle
-         ip = model%elem_part(s%elem(k))
-         if (.not. model%parts(ip)%ero%on) cycle
-         call set_error(error, where(inp, c)//'field '//field//': part '// &
-            str(model%parts(ip)%label)//' of this surface erodes (*MAT_ADD_EROSION of '// &
-            'material '//str(model%parts(ip)%mid)//'); contact surfaces are not updated '// &
-            'after element erosion yet (issue 18)')
-         return
-      end do
-   end subroutine no_eroding_part
 
    !> the nodes of a surface, each once, in increasing order
    function surface_nodes(nn, s) result(nodes)
@@ -231,6 +206,22 @@ contains
          p%nloc = 0
          p%nloc(p%node) = [(i, i = 1, p%nnode)]
          p%nnrm = 0.0_wp
+      end if
+      if (model%erodes) then       ! erosion: owners, neighbours, live masks (dx_contact)
+         p%oelem = s%elem(1:s%nseg)
+         allocate(p%onbr(s%nseg))
+         p%onbr = 0
+         if (allocated(s%nbr)) p%onbr = s%nbr(1:s%nseg)
+         p%live = p%onbr == 0
+         allocate(p%nlive(p%nnode))
+         p%nlive = .true.
+         if (present(own)) then
+            p%soelem = own%elem(1:own%nseg)
+            allocate(p%snbr(own%nseg))
+            p%snbr = 0
+            if (allocated(own%nbr)) p%snbr = own%nbr(1:own%nseg)
+            p%slive = p%snbr == 0
+         end if
       end if
       allocate(p%ft(3, p%nnode), p%iseg(p%nnode), p%gap(p%nnode))
       p%ft = 0.0_wp
@@ -328,6 +319,10 @@ contains
       idx = [(i, i = 1, nf)]
       call merge_sort(key, idx)
       allocate(s%seg(4, nf), s%nsn(nf), s%elem(nf))
+      if (model%erodes) then
+         allocate(s%nbr(nf))
+         s%nbr = 0
+      end if
       s%nseg = 0
       i = 1
       do while (i <= nf)
@@ -345,6 +340,19 @@ contains
             call face_segment(model%blocks(b)%conn(fam%faces(:, ffc(idx(i))), q), &
                               s%seg(:, s%nseg), s%nsn(s%nseg))
             s%elem(s%nseg) = e
+         else if (j == i + 1 .and. model%erodes) then
+            ! an interior face of two elements: one dormant segment from each side
+            do k = i, j
+               e = fel(idx(k))
+               b = model%elem_block(e)
+               q = model%elem_pos(e)
+               s%nseg = s%nseg + 1
+               fam = element_family(model%blocks(b)%etype)
+               call face_segment(model%blocks(b)%conn(fam%faces(:, ffc(idx(k))), q), &
+                                 s%seg(:, s%nseg), s%nsn(s%nseg))
+               s%elem(s%nseg) = e
+               s%nbr(s%nseg) = fel(idx(i + j - k))
+            end do
          end if
          i = j + 1
       end do
@@ -631,6 +639,7 @@ contains
                s%seg(:, n) = s%seg(:, i)
                s%nsn(n) = s%nsn(i)
                s%elem(n) = s%elem(i)
+               if (allocated(s%nbr)) s%nbr(n) = s%nbr(i)
             end if
          end do
       end associate

@@ -44,12 +44,79 @@ contains
       real(wp), intent(inout) :: dtcrit
       real(wp) :: w2max, vmax
       logical :: due
+      if (model%erodes) call erosion_refresh(model)
       vmax = contact_vmax(model%v, model%contact%node)
       call contact_prepare(model, dt_old, vmax, due)
       call contact_search_nodes(model, dt_old, dtcrit, vmax, w2max)
       call contact_assemble(model, w2max, .true.)
       call contact_dt(model%contact, w2max, dtcrit)
    end subroutine contact_forces
+
+   !> Element erosion (dx_erosion): the live masks of every pass from the eroded flags. A
+   !> segment is live when its owner element lives and the element across its face (if
+   !> any) does not: the faces of eroded elements leave the surface and the interior faces
+   !> they expose join it (the automatic and part-based surfaces hold the interior faces of
+   !> a deck that erodes, dormant; dx_contact_build). A slave node takes part while a living
+   !> element holds it (LS-DYNA deletes the nodes of eroded elements from contact). When a
+   !> mask changes the pass sorts again (its candidates and the slave nodes' normals) and
+   !> a slave node loses a contact segment that left. The first call forms the masks
+   !> without a sort, so a restarted run (masks not dumped) sorts when the first did.
+   !> Serial model only (an MPI run with erosion and contact is an input error).
+   subroutine erosion_refresh(model)
+      type(model_t), intent(inout) :: model
+      logical, allocatable :: alive(:), held(:)
+      integer :: e, b, q, k, i, j, n
+      logical :: changed, l
+      allocate(alive(model%ne), held(model%nn))
+      held = .false.
+      do b = 1, size(model%blocks)
+         associate (blk => model%blocks(b))
+            n = size(blk%conn, 1)
+            do q = 1, blk%nel
+               alive(blk%elem(q)) = .not. blk%failed(q)
+               if (.not. blk%failed(q)) held(blk%conn(1:n, q)) = .true.
+            end do
+         end associate
+      end do
+      do i = 1, size(model%contact%iface)
+         do j = 1, size(model%contact%iface(i)%pass)
+            associate (p => model%contact%iface(i)%pass(j))
+               if (.not. allocated(p%live)) cycle
+               changed = .false.
+               do k = 1, p%nseg
+                  e = p%oelem(k)
+                  l = .true.
+                  if (e > 0) l = alive(e)
+                  if (p%onbr(k) > 0) l = l .and. .not. alive(p%onbr(k))
+                  if (l .neqv. p%live(k)) changed = .true.
+                  p%live(k) = l
+               end do
+               if (allocated(p%slive)) then
+                  do k = 1, p%nsseg
+                     e = p%soelem(k)
+                     l = .true.
+                     if (e > 0) l = alive(e)
+                     if (p%snbr(k) > 0) l = l .and. .not. alive(p%snbr(k))
+                     if (l .neqv. p%slive(k)) changed = .true.
+                     p%slive(k) = l
+                  end do
+               end if
+               do k = 1, p%nnode
+                  l = held(p%node(k))
+                  if (l .neqv. p%nlive(k)) changed = .true.
+                  p%nlive(k) = l
+                  if (p%iseg(k) > 0) then
+                     if (.not. (l .and. p%live(p%iseg(k)))) then
+                        p%iseg(k) = 0; p%gap(k) = 0.0_wp; p%ft(:, k) = 0.0_wp
+                     end if
+                  end if
+               end do
+               if (changed .and. p%live_set) p%last_sort = -1000000
+               p%live_set = .true.
+            end associate
+         end do
+      end do
+   end subroutine erosion_refresh
 
    !> The largest speed |v| over the given nodes (the contact nodes, or in an MPI run the
    !> rank's owned contact nodes, then the maximum over the ranks: the same bits).

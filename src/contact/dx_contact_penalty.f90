@@ -180,11 +180,17 @@ contains
       k = p%node(i)
       p%rint(:, i) = 0
       p%rval(:, i) = 0.0_wp
+      if (allocated(p%nlive)) then   ! erosion: a node no living element holds
+         if (.not. p%nlive(i)) return
+      end if
       sb = 0
       gbest = -huge(1.0_wp)
       near = .false.
       do c = p%cand_ptr(i), p%cand_ptr(i + 1) - 1
          s = p%cand(c)
+         if (allocated(p%live)) then  ! erosion: a face that left, or a dormant one
+            if (.not. p%live(s)) cycle
+         end if
          n = p%nsn(s)
          xe(:, 1:n) = x(:, p%seg(1:n, s))
          ! cheap rejections before the projection: outside the segment's box grown by

@@ -203,6 +203,9 @@ contains
       integer :: s, k, i
       p%nnrm = 0.0_wp
       do s = 1, p%nsseg
+         if (allocated(p%slive)) then   ! erosion: only the live faces of the slave surface
+            if (.not. p%slive(s)) cycle
+         end if
          associate (sg => p%sseg(:, s))
             if (p%ssn(s) == 4) then
                d1 = x(:, sg(3)) - x(:, sg(1)); d2 = x(:, sg(4)) - x(:, sg(2))

@@ -299,6 +299,9 @@ contains
       what = ''   ! (the conserving solver runs under MPI: dx_par_emc)
       if (has_shells(model)) what = '*SECTION_SHELL (shell elements: their rotational '// &
          'degrees of freedom are not yet under MPI)'
+      if (model%erodes .and. allocated(model%contact)) what = '*CONTACT_ with element '// &
+         'erosion (*MAT_ADD_EROSION or *CONTROL_TIMESTEP ERODE = 1: the contact surfaces '// &
+         'after erosion are formed on the serial model only)'
       if (len(what) > 0) call set_error(error, model%deck_file//': '//what// &
          ' is not supported in an MPI run yet; run this deck serially (without mpirun)', &
          EXIT_INPUT)

@@ -62,6 +62,16 @@ module dx_contact_types
       logical, allocatable :: mine(:)          !< (nnode) computed by this rank (MPI only)
       integer :: strip_axis = 0                !< axis of the strips at the last sort
       logical :: sort_due = .false.            !< this cycle sorts (contact_prepare)
+      ! --- element erosion (decks that erode only; dx_contact%erosion_refresh): each
+      !     segment's owner element and the element across its face (0: an exterior face;
+      !     interior faces are dormant until that element erodes), whether it is live now,
+      !     the same for the slave surface, and whether a living element holds the slave node
+      integer, allocatable :: oelem(:), onbr(:)   !< (nseg) dense element indices
+      logical, allocatable :: live(:)             !< (nseg)
+      integer, allocatable :: soelem(:), snbr(:)  !< (nsseg)
+      logical, allocatable :: slive(:)            !< (nsseg)
+      logical, allocatable :: nlive(:)            !< (nnode)
+      logical :: live_set = .false.               !< masks formed (the first refresh)
    end type contact_pass_t
 
    !> One *CONTACT_... interface: parameters, one or two passes, resultant forces.
