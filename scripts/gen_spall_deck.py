@@ -21,6 +21,9 @@ ap.add_argument('--v', type=float, default=200.0)
 ap.add_argument('--sigth', type=float, default=2.0)
 ap.add_argument('--impulse', type=float, default=3.0e-4)
 ap.add_argument('--no-erosion', action='store_true')
+ap.add_argument('--gruneisen', default=None,
+                help='RHO,C,S1,GAMMA0,A: *MAT_NULL + *EOS_GRUNEISEN (S2 = S3 = 0) instead of '
+                     'the elastic steel (PC -1e3: tension allowed, MU 0)')
 ap.add_argument('--failtm', type=float, default=None,
                 help='instead of Tuler-Butcher: every target element erodes at t = FAILTM')
 ap.add_argument('--tend', type=float, default=0.0025)
@@ -46,11 +49,23 @@ with open(a.out, 'w') as f:
     w('*DATABASE_BINARY_D3PLOT\n%10.3e\n' % (a.tend / 5))
     w('*DATABASE_NODOUT\n%10.3e\n' % a.dtout)
     w('*DATABASE_HISTORY_NODE\n%10d%10d\n' % (nid(nx, 0, 0), nid(2 * nx // 3, 0, 0)))
-    w('*PART\nflyer\n         1         1         1\n')
-    w('*PART\ntarget\n         2         1         2\n')
+    if a.gruneisen is None:
+        w('*PART\nflyer\n         1         1         1\n')
+        w('*PART\ntarget\n         2         1         2\n')
+    else:
+        w('*PART\nflyer\n$      PID     SECID       MID     EOSID\n         1         1         1         1\n')
+        w('*PART\ntarget\n$      PID     SECID       MID     EOSID\n         2         1         2         1\n')
     w('*SECTION_SOLID\n         1         1\n')
-    w('*MAT_ELASTIC\n$      MID        RO         E        PR\n         1   7.85E-6     210.0       0.3\n')
-    w('*MAT_ELASTIC\n$      MID        RO         E        PR\n         2   7.85E-6     210.0       0.3\n')
+    if a.gruneisen is None:
+        w('*MAT_ELASTIC\n$      MID        RO         E        PR\n         1   7.85E-6     210.0       0.3\n')
+        w('*MAT_ELASTIC\n$      MID        RO         E        PR\n         2   7.85E-6     210.0       0.3\n')
+    else:
+        rho, c0, s1, g0, aa = [float(x) for x in a.gruneisen.split(',')]
+        for mid in (1, 2):
+            w('*MAT_NULL\n$      MID        RO        PC        MU\n%10d%10.4g    -1.0E3       0.0\n' % (mid, rho))
+        w('*EOS_GRUNEISEN\n$    EOSID         C        S1        S2        S3     GAMAO         A        E0\n'
+          '         1%10.5g%10.5g         0         0%10.5g%10.5g       0.0\n'
+          '$       V0                LCID\n       1.0                   0\n' % (c0, s1, g0, aa))
     if a.failtm is not None:
         w('*MAT_ADD_EROSION\n$      MID      EXCL    MXPRES     MNEPS    EFFEPS    VOLEPS    NUMFIP       NCS\n'
           '         2\n'
