@@ -21,6 +21,8 @@ ap.add_argument('--v', type=float, default=200.0)
 ap.add_argument('--sigth', type=float, default=2.0)
 ap.add_argument('--impulse', type=float, default=3.0e-4)
 ap.add_argument('--no-erosion', action='store_true')
+ap.add_argument('--lam', type=float, default=None,
+                help='Tuler-Butcher exponent (*DYNX_TULER_BUTCHER; default: LS-DYNA\'s 2)')
 ap.add_argument('--gruneisen', default=None,
                 help='RHO,C,S1,GAMMA0,A: *MAT_NULL + *EOS_GRUNEISEN (S2 = S3 = 0) instead of '
                      'the elastic steel (PC -1e3: tension allowed, MU 0)')
@@ -76,6 +78,8 @@ with open(a.out, 'w') as f:
           '         2\n'
           '$   MNPRES     SIGP1     SIGVM     MXEPS     EPSSH     SIGTH   IMPULSE    FAILTM\n'
           '                                                  %10.4g%10.4g\n' % (a.sigth, a.impulse))
+        if a.lam is not None:
+            w('*DYNX_TULER_BUTCHER\n$      MID    LAMBDA\n         2%10.4g\n' % a.lam)
     w('*NODE\n')
     for k in range(2):
         for j in range(2):

@@ -25,6 +25,7 @@ ap.add_argument('--v', type=float, default=200.0)
 ap.add_argument('--sigth', type=float, default=2.0)
 ap.add_argument('--impulse', type=float, default=3.0e-4)
 ap.add_argument('--toln', type=float, default=2.0)
+ap.add_argument('--lam', type=float, default=2.0, help='Tuler-Butcher exponent')
 ap.add_argument('--table', action='store_true')
 a = ap.parse_args()
 rho, E, nu = 7.85e-6, 210.0, 0.3
@@ -33,7 +34,7 @@ c = (M / rho) ** 0.5
 H, V, nx = a.h, a.v, a.nx
 dx = 3 * H / nx
 sig = rho * c * V / 2
-dtb = a.impulse / (sig - a.sigth) ** 2
+dtb = a.impulse / (sig - a.sigth) ** a.lam
 t_arr, t_sp, t_ret = 2 * H / c, 3 * H / c + dtb, 4 * H / c + dtb
 d = np.loadtxt(a.out + '/nodout')
 fs = d[d[:, 1] == nx + 1]

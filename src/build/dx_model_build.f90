@@ -196,6 +196,16 @@ contains
             do k = 1, size(inp%erosions)
                if (inp%erosions(k)%mid == p%mid) p%ero = inp%erosions(k)
             end do
+            do k = 1, size(inp%tb_lambdas)     ! *DYNX_TULER_BUTCHER: the exponent
+               if (inp%tb_lambdas(k)%mid /= p%mid) cycle
+               if (.not. p%ero%on .or. p%ero%impulse == p%ero%excl) then
+                  call set_error(error, inp%files(inp%tb_src(k)%ifile)%s//':'// &
+                     str(inp%tb_src(k)%line)//': *DYNX_TULER_BUTCHER: field MID: material '// &
+                     str(p%mid)//' has no *MAT_ADD_EROSION with SIGTH and IMPULSE')
+                  return
+               end if
+               p%ero%lambda = inp%tb_lambdas(k)%lambda
+            end do
             if (p%ero%on .and. model%sections(p%isec)%shell) then
                call set_error(error, w//'part '//str(p%label)//': *MAT_ADD_EROSION of '// &
                   'material '//str(p%mid)//' on a shell part is not implemented (solids only)')

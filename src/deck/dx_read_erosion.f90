@@ -14,6 +14,12 @@
 !> value is an input error naming the field (exit 2; listed by --check). Card 3 onwards
 !> (IDAM, the GISSMO/DIEM damage cards) are not read: an error.
 !> The criteria are attached to every part of material MID in the build (dx_model_build).
+!> *DYNX_TULER_BUTCHER (a dynx keyword): card MID LAMBDA, the exponent of the Tuler-Butcher
+!> integral int max(0, sigma_1 - SIGTH)^LAMBDA dt >= IMPULSE for material MID. Tuler &
+!> Butcher 1968 leave the exponent a material constant (their fits to 1100-O aluminium and
+!> 4340 steel spall data use values of about 2 and above); LS-DYNA's *MAT_ADD_EROSION fixes it
+!> at 2, which stays the default. IMPULSE then has the units stress^LAMBDA time. The material
+!> must have a *MAT_ADD_EROSION with SIGTH and IMPULSE (checked in the build).
 module dx_read_erosion
    use dx_kinds, only: wp
    use dx_error, only: error_t
@@ -33,6 +39,7 @@ contains
    subroutine register_erosion(reg)
       type(registry_t), intent(inout) :: reg
       call reg%add('MAT_ADD_EROSION', read_add_erosion, title=.true.)
+      call reg%add('DYNX_TULER_BUTCHER', read_tuler_butcher)
    end subroutine register_erosion
 
    subroutine read_add_erosion(deck, blk, inp, error)
@@ -108,6 +115,38 @@ contains
       inp%erosions = [inp%erosions, e]
       inp%erosion_src = [inp%erosion_src, origin(blk%ifile, blk%cards(i0)%line, blk%name)]
    end subroutine read_add_erosion
+
+   !> *DYNX_TULER_BUTCHER: MID LAMBDA (> 0).
+   subroutine read_tuler_butcher(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      type(card_t) :: c
+      type(erosion_t) :: e
+      integer :: i0, k
+      i0 = data_start(blk)
+      if (blk%n < i0) then
+         call block_error(deck, blk, 0, 'missing card 1 (MID LAMBDA)', error)
+         return
+      end if
+      call deck_cursor(deck, blk, c)
+      call c%max_cards(1)
+      call c%id('MID', e%mid)
+      call c%real('LAMBDA', 2.0_wp, e%lambda, gt=0.0_wp)
+      if (c%ok()) then
+         do k = 1, size(inp%tb_lambdas)
+            if (inp%tb_lambdas(k)%mid == e%mid) then
+               call c%fail('MID', 'material '//str(e%mid)//' has a *DYNX_TULER_BUTCHER already')
+               exit
+            end if
+         end do
+      end if
+      call c%done(error)
+      if (allocated(error)) return
+      inp%tb_lambdas = [inp%tb_lambdas, e]
+      inp%tb_src = [inp%tb_src, origin(blk%ifile, blk%cards(i0)%line, blk%name)]
+   end subroutine read_tuler_butcher
 
    !> A strain criterion dynx does not check yet: an error naming the field when it is on.
    subroutine unsupported(c, e, name, v)

@@ -157,6 +157,9 @@ module dx_model_input
       !> *MAT_ADD_EROSION (dx_read_erosion; attached to the parts of material MID)
       type(erosion_t), allocatable :: erosions(:)
       type(origin_t), allocatable :: erosion_src(:)
+      !> *DYNX_TULER_BUTCHER (mid and lambda of each card; dx_read_erosion)
+      type(erosion_t), allocatable :: tb_lambdas(:)
+      type(origin_t), allocatable :: tb_src(:)
       type(curve_t), allocatable :: curves(:)
       type(origin_t), allocatable :: curve_src(:)
       type(label_list_t), allocatable :: node_sets(:), part_sets(:)
@@ -204,7 +207,7 @@ contains
                inp%part_sets(0), inp%segment_sets(0), inp%spcs(0), inp%motions(0), &
                inp%ivels(0), inp%node_loads(0), inp%seg_loads(0), inp%walls(0), &
                inp%hist_nodes(0), inp%hist_node_sets(0), inp%eoss(0), inp%eos_src(0), &
-               inp%erosions(0), inp%erosion_src(0), &
+               inp%erosions(0), inp%erosion_src(0), inp%tb_lambdas(0), inp%tb_src(0), &
                inp%out_notes(0), inp%set_gens(0), inp%node_set_loads(0))
       allocate(inp%body_loads(0), inp%rigid%inertias(0), inp%rigid%nrbs(0), &
                inp%rigid%extras(0), inp%rigid%motions(0))
