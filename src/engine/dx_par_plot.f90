@@ -18,7 +18,8 @@ module dx_par_plot
    use dx_model, only: model_t
    use dx_par, only: par_rank, par_size, par_barrier, par_allreduce, PAR_MAX
    use dx_io_sys, only: sys_mkdir_p, sys_epoch_seconds
-   use dx_plot_hdf5, only: element_average, plot_merge_states, plot_rows, element_damage
+   use dx_plot_hdf5, only: element_average, plot_merge_states, plot_rows, element_damage, &
+                           block_damage_slot
    use dx_plot_part, only: plot_part_t, plot_combine
    use dx_plot_fields, only: plot_state_t, plot_state_alloc, plot_state_read, field_in_part, &
                              PLOT_FIELDS, NSTATE_FIELDS, CENTRE_NODE, F_COORD, F_VEL, &
@@ -233,7 +234,7 @@ contains
                               st%f(F_EPSP)%r(1, i), fl)
          st%f(F_FAILED)%r(1, i) = real(fl, wp)
          if (st%on(F_DAMAGE)) st%f(F_DAMAGE)%r(1, i) = element_damage(model%blocks(b), &
-                                                                    pp%eloc(2, i))
+            pp%eloc(2, i), block_damage_slot(model, model%blocks(b)))
       end do
       call pp%part%write_state(st, error)
    end subroutine par_plot_write

@@ -36,7 +36,7 @@ module dx_plot_hdf5
    implicit none
    private
    public :: plot_file_t, element_results, stress_invariants, element_average, &
-             plot_merge_states, plot_rows, element_damage
+             plot_merge_states, plot_rows, element_damage, block_damage_slot
 
    character(*), parameter :: H5NAME = 'd3plot.h5', XMFNAME = 'd3plot.xdmf'
 
@@ -341,7 +341,7 @@ contains
       type(model_t), intent(in) :: model
       real(wp), intent(out) :: stress(:, :), epsp(:), failed(:)
       real(wp), intent(out), optional :: damage(:)   !< the damage D (F_DAMAGE; 0: none)
-      integer :: ib, i, e, k, imat, fl
+      integer :: ib, i, e, k, imat, fl, kd
       type(family_t) :: fam
       logical :: rot
 
@@ -361,11 +361,12 @@ contains
                      if (allocated(model%mats(imat)%m)) k = model%mats(imat)%m%hv_eps_p
                   end if
                end if
+               kd = block_damage_slot(model, blk)
                do i = 1, blk%nel
                   e = blk%elem(i)
                   call element_average(blk, i, k, stress(:, e), epsp(e), fl)
                   failed(e) = real(fl, wp)
-                  if (present(damage)) damage(e) = element_damage(blk, i)
+                  if (present(damage)) damage(e) = element_damage(blk, i, kd)
                   ! shells: the mean over the laminae (the membrane stress N/t) is held
                   ! in the element's co-rotational frame; the plot shows it in global axes
                   if (rot) call shell_stress_global(model%x(:, blk%conn(:, i)), stress(:, e))
@@ -400,19 +401,36 @@ contains
       end if
    end subroutine element_average
 
-   !> An element's damage D for the plot: the Tuler-Butcher integral over IMPULSE of the
-   !> erosion (dx_erosion, family-state slot ES_DMG; 1 at failure), 0 where the block has
-   !> none.
-   real(wp) function element_damage(blk, i) result(d)
+   !> An element's damage D for the plot: the average over the integration points of the
+   !> material's damage history variable kd (material_t%hv_damage; 0: none), else the
+   !> Tuler-Butcher integral over IMPULSE of the erosion (dx_erosion, family-state slot
+   !> ES_DMG; 1 at failure), else 0.
+   real(wp) function element_damage(blk, i, kd) result(d)
       type(elem_block_t), intent(in) :: blk
-      integer, intent(in) :: i
+      integer, intent(in) :: i, kd
       d = 0.0_wp
-      if (blk%esc(ES_DMG) > 0) d = blk%es(i, blk%esc(ES_DMG))
+      if (kd > 0 .and. kd <= blk%nhv .and. allocated(blk%hv)) then
+         d = sum(blk%hv(i, kd, 1:blk%nip))/real(blk%nip, wp)
+      else if (blk%esc(ES_DMG) > 0) then
+         d = blk%es(i, blk%esc(ES_DMG))
+      end if
    end function element_damage
 
+   !> The damage history offset of block blk's material (0: none).
+   integer function block_damage_slot(model, blk) result(kd)
+      type(model_t), intent(in) :: model
+      type(elem_block_t), intent(in) :: blk
+      integer :: imat
+      kd = 0
+      if (.not. allocated(model%mats)) return
+      imat = model%parts(blk%ipart)%imat
+      if (imat < 1 .or. imat > size(model%mats)) return
+      if (allocated(model%mats(imat)%m)) kd = model%mats(imat)%m%hv_damage
+   end function block_damage_slot
+
    !> The rows of the plot schema this model uses (dx_plot_fields: the optional ones): the
-   !> damage D when some part's *MAT_ADD_EROSION has the Tuler-Butcher criterion (from the
-   !> parts, so every rank of an MPI run agrees).
+   !> damage D when some part's *MAT_ADD_EROSION has the Tuler-Butcher criterion or its
+   !> material a damage variable (from the parts, so every rank of an MPI run agrees).
    function plot_rows(model) result(rows)
       type(model_t), intent(in) :: model
       logical :: rows(NSTATE_FIELDS)
@@ -423,6 +441,15 @@ contains
          associate (e => model%parts(p)%ero)
             if (e%on .and. e%impulse /= e%excl) rows(F_DAMAGE) = .true.
          end associate
+         if (allocated(model%mats)) then
+            associate (ip => model%parts(p)%imat)
+               if (ip >= 1 .and. ip <= size(model%mats)) then
+                  if (allocated(model%mats(ip)%m)) then
+                     if (model%mats(ip)%m%hv_damage > 0) rows(F_DAMAGE) = .true.
+                  end if
+               end if
+            end associate
+         end if
       end do
    end function plot_rows
 
