@@ -12,8 +12,8 @@ module dx_model_build
    use dx_error, only: error_t, set_error
    use dx_strings, only: str, rstr
    use dx_model, only: model_t, part_t, family_t, element_family, elem_volume, etype_of_elform, &
-                       solid_shape, MAX_NEN, ES_WORK, ES_HGS, ES_DMG, elem_quality, ASPECT_WARN, &
-                       WARP_WARN
+                       solid_shape, MAX_NEN, ES_WORK, ES_HGS, ES_DMG, ES_EPS, elem_quality, ASPECT_WARN, &
+                       WARP_WARN, erosion_t
    use dx_log, only: log_warn
    use dx_model_input, only: model_input_t, origin_t
    use dx_element_types, only: ETYPE_SHELL_BT, ES_THK, shell_area
@@ -212,6 +212,12 @@ contains
                return
             end if
             if (p%ero%on .or. c%erode == 1) model%erodes = .true.
+            if (strain_criteria(p%ero) .and. model%sections(p%isec)%elform == 2) then
+               call set_error(error, w//'part '//str(p%label)//': *MAT_ADD_EROSION of '// &
+                  'material '//str(p%mid)//': the strain criteria (MNEPS EFFEPS MXEPS EPSSH) '// &
+                  'on ELFORM 2 are not implemented (ELFORM 1 and 10 have them)')
+               return
+            end if
             if (model%sections(p%isec)%shell) then
                call shell_part(inp, model, p, w, error)
                if (allocated(error)) return
@@ -535,6 +541,9 @@ contains
                   ! erosion: the Tuler-Butcher damage (parts whose *MAT_ADD_EROSION has it)
                   if (p%ero%on .and. p%ero%impulse /= p%ero%excl .and. &
                       fam%es_ncol(ES_DMG) > 0) call b%es_add(ES_DMG, fam%es_ncol(ES_DMG))
+                  ! erosion: the total strain (parts with a strain criterion)
+                  if (strain_criteria(p%ero) .and. fam%es_ncol(ES_EPS) > 0) &
+                     call b%es_add(ES_EPS, fam%es_ncol(ES_EPS))
                   if (fam%es_ncol(ES_THK) > 0) then   ! shells: thickness, hourglass forces
                      call b%es_add(ES_THK, fam%es_ncol(ES_THK))
                      b%es(:, b%esc(ES_THK)) = thk(b%elem)
@@ -780,4 +789,11 @@ contains
          seen(node) = .true.
       end subroutine add_hist
    end subroutine build_controls
+
+   !> Whether the erosion criteria of a part use the total strain (dx_erosion).
+   pure logical function strain_criteria(e)
+      type(erosion_t), intent(in) :: e
+      strain_criteria = e%on .and. (e%mneps /= e%excl .or. e%effeps /= e%excl .or. &
+                                    e%mxeps /= e%excl .or. e%epssh /= e%excl)
+   end function strain_criteria
 end module dx_model_build

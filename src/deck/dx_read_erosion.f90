@@ -8,10 +8,11 @@
 !> (largest principal stress), SIGVM (von Mises stress), VOLEPS (volumetric strain
 !> ln(V/V0), positive in tension), FAILTM (time), SIGTH + IMPULSE (Tuler & Butcher 1968,
 !> Int. J. Fract. Mech. 4:431-437: integral of max(0, sigma_1 - SIGTH)^2 dt >= IMPULSE,
-!> LS-DYNA's exponent 2). NUMFIP (failed points before the element erodes; one-point
-!> elements have one) and NCS (criteria met at once at a point before it fails). The
-!> criteria on the total strain (MNEPS, EFFEPS, MXEPS, EPSSH) are not implemented yet: a
-!> value is an input error naming the field (exit 2; listed by --check). Card 3 onwards
+!> LS-DYNA's exponent 2), MXEPS, MNEPS (largest and smallest principal strain), EFFEPS
+!> (effective strain), EPSSH (tensorial shear strain) of the total strain (ELFORM 1 and 10;
+!> ELFORM 2 is an error in the build). NUMFIP (failed points before the element erodes;
+!> one-point elements have one) and NCS (criteria met at once at a point before it fails).
+!> Card 3 onwards
 !> (IDAM, the GISSMO/DIEM damage cards) are not read: an error.
 !> The criteria are attached to every part of material MID in the build (dx_model_build).
 !> *DYNX_TULER_BUTCHER (a dynx keyword): card MID LAMBDA, the exponent of the Tuler-Butcher
@@ -62,9 +63,7 @@ contains
       call c%real('EXCL', 0.0_wp, e%excl)
       call c%real('MXPRES', e%excl, e%mxpres)
       call c%real('MNEPS', e%excl, e%mneps)
-      call unsupported(c, e, 'MNEPS', e%mneps)
       call c%real('EFFEPS', e%excl, e%effeps)
-      call unsupported(c, e, 'EFFEPS', e%effeps)
       call c%real('VOLEPS', e%excl, e%voleps)
       call c%int('NUMFIP', 1, e%numfip)
       if (c%ok() .and. e%numfip < 1) call c%fail('NUMFIP', 'NUMFIP = '//str(e%numfip)// &
@@ -78,10 +77,8 @@ contains
          call c%real('SIGP1', e%excl, e%sigp1)
          call c%real('SIGVM', e%excl, e%sigvm)
          call c%real('MXEPS', e%excl, e%mxeps)
-         call unsupported(c, e, 'MXEPS', e%mxeps)
-         call c%real('EPSSH', e%excl, e%epssh)
-         call unsupported(c, e, 'EPSSH', e%epssh)
-         call c%real('SIGTH', e%excl, e%sigth)
+            call c%real('EPSSH', e%excl, e%epssh)
+            call c%real('SIGTH', e%excl, e%sigth)
          call c%real('IMPULSE', e%excl, e%impulse)
          call c%real('FAILTM', e%excl, e%failtm)
          if (c%ok() .and. (e%sigth /= e%excl .neqv. e%impulse /= e%excl)) then
@@ -148,14 +145,4 @@ contains
       inp%tb_src = [inp%tb_src, origin(blk%ifile, blk%cards(i0)%line, blk%name)]
    end subroutine read_tuler_butcher
 
-   !> A strain criterion dynx does not check yet: an error naming the field when it is on.
-   subroutine unsupported(c, e, name, v)
-      type(card_t), intent(inout) :: c
-      type(erosion_t), intent(in) :: e
-      character(*), intent(in) :: name
-      real(wp), intent(in) :: v
-      if (c%ok() .and. v /= e%excl) call c%fail(name, 'the erosion criteria on the total '// &
-         'strain (MNEPS, EFFEPS, MXEPS, EPSSH) are not implemented; the stress, pressure, '// &
-         'volumetric strain, time and Tuler-Butcher (SIGTH, IMPULSE) criteria are')
-   end subroutine unsupported
 end module dx_read_erosion

@@ -33,7 +33,7 @@ module dx_element_types
    public :: MAX_NEN, MAX_FACE_NODES, MAX_FACES
    public :: ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, etype_of_elform, ETYPES
    public :: solid_shape, elem_quality, ASPECT_WARN, WARP_WARN
-   public :: ES_WORK, ES_HGS, ES_PHIM, ES_DMG, MAX_ES, ES_NAMES, ES_DUMP
+   public :: ES_WORK, ES_HGS, ES_PHIM, ES_DMG, ES_EPS, MAX_ES, ES_NAMES, ES_DUMP
    public :: erosion_t
    public :: WORK_Q, WORK_QBV, WORK_DT, WORK_PN
    public :: elem_block_t, part_t
@@ -73,12 +73,15 @@ module dx_element_types
    !> erosion (dx_erosion): the damage variable D of *MAT_ADD_EROSION's Tuler-Butcher
    !> criterion, the stress impulse integral over IMPULSE (1 column; parts that use it only)
    integer, parameter :: ES_DMG = 5
-   integer, parameter :: MAX_ES = 5
+   !> erosion: the total strain (6: xx yy zz xy yz zx, tensor shear), the sum of the
+   !> strain increments turned with the material (parts with a strain criterion only)
+   integer, parameter :: ES_EPS = 6
+   integer, parameter :: MAX_ES = 6
    !> restart dataset of each slot (the columns in order, flat; ES_DUMP: phim is derived at
    !> start, not dumped); dumps write the slots in id order
    character(8), parameter :: ES_NAMES(MAX_ES) = [character(8) :: 'hgs', 'ework', 'phim', &
-                                                  'shthk', 'damage']
-   logical, parameter :: ES_DUMP(MAX_ES) = [.true., .true., .false., .true., .true.]
+                                                  'shthk', 'damage', 'strain']
+   logical, parameter :: ES_DUMP(MAX_ES) = [.true., .true., .false., .true., .true., .true.]
    !> column offsets inside ES_WORK (dx_hex8's centred_work: q, q B.v, dt, sigma:D V of the
    !> last pass)
    integer, parameter :: WORK_Q = 0, WORK_QBV = 1, WORK_DT = 2, WORK_PN = 3
@@ -201,7 +204,7 @@ contains
          f%edges(:, 1:12) = HEX_EDGES
          f%mass_share = 0.125_wp
          f%hgmodes = 4
-         f%es_ncol = [3*f%hgmodes, 4, 1, 0, 1]
+         f%es_ncol = [3*f%hgmodes, 4, 1, 0, 1, 6]
          f%nip = 1; f%weight = 1
          ! ELFORM 2 measured at about 8x ELFORM 1 per element-cycle (docs/history.md,
          ! "Partition weights")
@@ -214,7 +217,7 @@ contains
          f%faces(:, 1:4) = TET_FACES
          f%edges(:, 1:6) = TET_EDGES
          f%mass_share = 0.25_wp
-         f%es_ncol = [0, 4, 0, 0, 1]
+         f%es_ncol = [0, 4, 0, 0, 1, 6]
          f%nip = 1; f%weight = 1
       case (ETYPE_SHELL_BT)
          ! one face (the mid-surface, normal by the right-hand rule on N1..N4; a triangle
@@ -225,7 +228,7 @@ contains
          f%edges(:, 1:4) = QUAD_EDGES
          f%mass_share = 0.25_wp
          f%hgmodes = 5
-         f%es_ncol = [0, 0, 0, 1 + 8, 0]
+         f%es_ncol = [0, 0, 0, 1 + 8, 0, 0]
          f%nip = 2; f%weight = 1
          f%rot = .true.
       end select

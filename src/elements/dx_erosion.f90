@@ -17,14 +17,19 @@
 !> 4:431-437, with the exponent lambda = 2 that LS-DYNA's *MAT_ADD_EROSION uses). A point
 !> fails when NCS criteria hold at once (Tuler-Butcher counts as one), an element when
 !> min(NUMFIP, points) of its points have failed.
+!> Strain criteria (parts that have one: the family-state slot ES_EPS, ELFORM 1 and 10): the
+!> total strain is the sum of the strain increments D dt turned with the material like the
+!> stress (Jaumann, first order; a logarithmic strain for rotation-free stretching): largest
+!> principal strain >= MXEPS, smallest <= MNEPS, effective strain sqrt(2/3 e':e') >= EFFEPS,
+!> tensorial shear strain (eps_1 - eps_3)/2 >= EPSSH.
 !> Principal stresses: the trigonometric solution of the characteristic cubic (Smith 1961,
 !> "Eigenvalues of a symmetric 3x3 matrix", Comm. ACM 4:168).
 module dx_erosion
    use dx_kinds, only: wp
-   use dx_element_types, only: elem_block_t, part_t, erosion_t, ES_DMG
+   use dx_element_types, only: elem_block_t, part_t, erosion_t, ES_DMG, ES_EPS
    implicit none
    private
-   public :: erosion_points, erosion_now, largest_principal, von_mises
+   public :: erosion_points, erosion_now, erosion_strain, largest_principal, von_mises
 
 contains
 
@@ -39,10 +44,11 @@ contains
       integer, intent(in) :: n
       real(wp), intent(in) :: sig(:, :), rv(:), dt, wip
       integer, intent(inout) :: nfail(:)
-      real(wp) :: p, s1, d
-      integer :: i, nc, jd
+      real(wp) :: p, s1, d, e(6), e1, e3, em
+      integer :: i, nc, jd, je
       if (.not. ero%on) return
       jd = blk%esc(ES_DMG)
+      je = blk%esc(ES_EPS)
       do i = 1, n
          if (blk%failed(i)) cycle
          nc = 0
@@ -65,6 +71,26 @@ contains
                if (log(rv(i)) >= ero%voleps) nc = nc + 1
             else
                if (log(rv(i)) <= ero%voleps) nc = nc + 1
+            end if
+         end if
+         if (je > 0) then         ! the total-strain criteria
+            e = blk%es(i, je:je + 5)
+            e1 = largest_principal(e)
+            e3 = -largest_principal(-e)
+            if (ero%mxeps /= ero%excl) then
+               if (e1 >= ero%mxeps) nc = nc + 1
+            end if
+            if (ero%mneps /= ero%excl) then
+               if (e3 <= ero%mneps) nc = nc + 1
+            end if
+            if (ero%epssh /= ero%excl) then
+               if (0.5_wp*(e1 - e3) >= ero%epssh) nc = nc + 1
+            end if
+            if (ero%effeps /= ero%excl) then
+               em = (e(1) + e(2) + e(3))/3.0_wp
+               d = sqrt(2.0_wp/3.0_wp*((e(1) - em)**2 + (e(2) - em)**2 + (e(3) - em)**2 &
+                        + 2.0_wp*(e(4)**2 + e(5)**2 + e(6)**2)))
+               if (d >= ero%effeps) nc = nc + 1
             end if
          end if
          if (jd > 0) then
@@ -100,6 +126,30 @@ contains
          if (dte < dtfloor) failed(i) = .true.
       end do
    end subroutine erosion_now
+
+   !> The total strain of elements 1..n (slot ES_EPS; nothing when the block has none):
+   !> turned by the spin increments w12, w23, w31 (Jaumann, as the stress), then the strain
+   !> increment de (n, 6: xx yy zz xy yz zx, tensor shear) added.
+   subroutine erosion_strain(blk, n, de, w12, w23, w31)
+      type(elem_block_t), intent(inout) :: blk
+      integer, intent(in) :: n
+      real(wp), intent(in) :: de(:, :), w12(:), w23(:), w31(:)
+      real(wp) :: e(6), d(6)
+      integer :: i, je
+      je = blk%esc(ES_EPS)
+      if (je == 0) return
+      do i = 1, n
+         if (blk%failed(i)) cycle
+         e = blk%es(i, je:je + 5)
+         d(1) = 2.0_wp*(w12(i)*e(4) - w31(i)*e(6))
+         d(2) = 2.0_wp*(w23(i)*e(5) - w12(i)*e(4))
+         d(3) = 2.0_wp*(w31(i)*e(6) - w23(i)*e(5))
+         d(4) = w12(i)*(e(2) - e(1)) + w23(i)*e(6) - w31(i)*e(5)
+         d(5) = w23(i)*(e(3) - e(2)) + w31(i)*e(4) - w12(i)*e(6)
+         d(6) = w31(i)*(e(1) - e(3)) + w12(i)*e(5) - w23(i)*e(4)
+         blk%es(i, je:je + 5) = e + d + de(i, 1:6)
+      end do
+   end subroutine erosion_strain
 
    !> The largest principal value of the symmetric tensor s (xx yy zz xy yz zx).
    pure real(wp) function largest_principal(s) result(s1)

@@ -22,7 +22,7 @@
 module dx_hex8
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_material, only: material_t
-   use dx_erosion, only: erosion_points, erosion_now
+   use dx_erosion, only: erosion_points, erosion_now, erosion_strain
    use dx_element_types, only: elem_block_t, part_t, ES_WORK, ES_HGS, ES_PHIM, block_result_t, &
                                HEX_ERR_NEGVOL => ELEM_ERR_NEGVOL, &
                                HEX_ERR_MATERIAL => ELEM_ERR_MATERIAL
@@ -176,6 +176,7 @@ contains
       do k = 1, 6
          deps(1:n, k) = de6(1:n, k)
       end do
+      if (part%ero%on) call erosion_strain(blk, n, de6, w12, w23, w31)   ! strain criteria
       ! ---- geometry at t(n): forces, volume, time step; B(n).v(n-1/2) for the viscous work
       call hex8_bvectors_chunk(n, xe, ye, ze, bx, by, bz, vol)
       do i = 1, n

@@ -16,7 +16,7 @@
 module dx_tet4
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_material, only: material_t
-   use dx_erosion, only: erosion_points, erosion_now
+   use dx_erosion, only: erosion_points, erosion_now, erosion_strain
    use dx_element_types, only: elem_block_t, part_t, ES_WORK, block_result_t, ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL
    use dx_hex8, only: centred_work, stable_time_step   ! one copy, inlined in dx_hex8
                                                         ! (dx_solid_kernels)
@@ -127,6 +127,7 @@ contains
       do k = 1, 6
          deps(1:n, k) = de6(1:n, k)
       end do
+      if (part%ero%on) call erosion_strain(blk, n, de6, w12, w23, w31)   ! strain criteria
       ! ---- geometry at t(n): forces, volume, time step; B(n).v(n-1/2) for the viscous work
       call tet4_bvectors(n, xe, ye, ze, bx, by, bz, vol)
       bv(1:n) = 0.0_wp

@@ -230,6 +230,8 @@ contains
          dt = model%ctrl%tssfac*dtcrit
          if (model%cycle == 0 .and. model%ctrl%dtinit > 0.0_wp) dt = min(dt, model%ctrl%dtinit)
          if (model%ctrl%lctm > 0) dt = min(dt, model%curves(model%ctrl%lctm)%eval(t))
+         ! every element eroded (nothing bounds the step): go on with the last step
+         if (model%erodes .and. .not. (dtcrit < huge_wp) .and. dt_old > 0.0_wp) dt = dt_old
          if (model%cycle == 0) then
             dt_first = dt
             if (model%ctrl%dtmin > 0.0_wp) tsmin = model%ctrl%dtmin*dt
