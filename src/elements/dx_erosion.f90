@@ -29,7 +29,7 @@ module dx_erosion
    use dx_element_types, only: elem_block_t, part_t, erosion_t, ES_DMG, ES_EPS
    implicit none
    private
-   public :: erosion_points, erosion_now, erosion_strain, largest_principal, von_mises
+   public :: erosion_points, erosion_one_point, erosion_now, erosion_strain, largest_principal, von_mises
 
 contains
 
@@ -101,6 +101,21 @@ contains
          if (nc >= ero%ncs) nfail(i) = nfail(i) + 1
       end do
    end subroutine erosion_points
+
+   !> One-point elements (ELFORM 1, 10): the criteria of part at the point of elements 1..n
+   !> (stress blk%sig(:, :, 1)), failed(i) set where the point fails.
+   subroutine erosion_one_point(blk, part, n, rv, dt, failed)
+      type(elem_block_t), intent(inout) :: blk
+      type(part_t), intent(in) :: part
+      integer, intent(in) :: n
+      real(wp), intent(in) :: rv(:), dt
+      logical, intent(inout) :: failed(:)
+      integer :: nfp(n)
+      if (.not. part%ero%on) return
+      nfp = 0
+      call erosion_points(blk, part%ero, n, blk%sig(:, :, 1), rv, dt, 1.0_wp, nfp)
+      failed(1:n) = failed(1:n) .or. nfp > 0
+   end subroutine erosion_one_point
 
    !> The criteria of the pass at time t that need no stress (called by the kernels after
    !> the wave speed): FAILTM (every element of the part at t >= FAILTM) and, dtfloor > 0

@@ -22,7 +22,7 @@
 module dx_hex8
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_material, only: material_t
-   use dx_erosion, only: erosion_points, erosion_now, erosion_strain
+   use dx_erosion, only: erosion_points, erosion_one_point, erosion_now, erosion_strain
    use dx_element_types, only: elem_block_t, part_t, ES_WORK, ES_HGS, ES_PHIM, block_result_t, &
                                HEX_ERR_NEGVOL => ELEM_ERR_NEGVOL, &
                                HEX_ERR_MATERIAL => ELEM_ERR_MATERIAL
@@ -119,7 +119,6 @@ contains
       real(wp) :: dtl, hdt, d1, d2, d3, d4, d5, d6, l1, l2, l3, l4, l5, l6, l7, l8, l9
       integer :: ierr(nv_chunk)
       logical :: failed(nv_chunk)
-      integer :: nfp(nv_chunk)
       integer :: i, k, n, nn, w
       n = blk%nel
       w = blk%esc(ES_WORK)
@@ -217,13 +216,7 @@ contains
       end do
       call mat%update(n, dt_old, deps, rv, ein, blk%sig(:, :, 1), blk%hv(:, :, 1), ierr)
       call mat%fails(n, blk%hv(:, :, 1), failed)
-      if (part%ero%on) then   ! *MAT_ADD_EROSION (dx_erosion)
-         nfp(1:n) = 0
-         call erosion_points(blk, part%ero, n, blk%sig(:, :, 1), rv, dt_old, 1.0_wp, nfp)
-         do i = 1, n
-            if (nfp(i) > 0) failed(i) = .true.
-         end do
-      end if
+      call erosion_one_point(blk, part, n, rv, dt_old, failed)   ! *MAT_ADD_EROSION
       call mat%wave_speed(n, rv, blk%hv(:, :, 1), c)
       if (present(time)) call erosion_now(part, n, time, dtfloor, lc, trd, c, failed)
       ! ---- erosion (an eroded element keeps zero stress and carries no force from the pass
@@ -244,10 +237,8 @@ contains
                  + 2.0_wp*(so(i,4)*de6(i,4) + so(i,5)*de6(i,5) + so(i,6)*de6(i,6)))
          wn(i) = volm(i)*(sn(i,1)*de6(i,1) + sn(i,2)*de6(i,2) + sn(i,3)*de6(i,3) &
                  + 2.0_wp*(sn(i,4)*de6(i,4) + sn(i,5)*de6(i,5) + sn(i,6)*de6(i,6)))
-         ! an element eroding now applies no force f(n): W(n) is 0 (its energy then stays)
-         if (blk%failed(i)) then
-            wn(i) = 0.0_wp; q(i) = 0.0_wp
-         end if
+         if (blk%failed(i)) wn(i) = 0.0_wp   ! eroding now: no force f(n), W(n) = 0
+         if (blk%failed(i)) q(i) = 0.0_wp
       end do
       e1(1:n) = blk%es(1:n, w); e2(1:n) = blk%es(1:n, w + 1)
       e3(1:n) = blk%es(1:n, w + 2); e4(1:n) = blk%es(1:n, w + 3)
@@ -737,10 +728,8 @@ contains
          rho = mat%ro/rv(i)
          q(i) = bulk_viscosity(part, rho, lc(i), trd(i), c(i))
          if (fpt(i) .or. nfe(i) >= min(part%ero%numfip, 8)) blk%failed(i) = .true.
-         ! an element eroding now applies no force f(n): W(n) is 0 (its energy then stays)
-         if (blk%failed(i)) then
-            wnew(i) = 0.0_wp; q(i) = 0.0_wp
-         end if
+         if (blk%failed(i)) wnew(i) = 0.0_wp   ! eroding now: no force f(n), W(n) = 0
+         if (blk%failed(i)) q(i) = 0.0_wp
          call centred_work(blk%es(i, w), blk%es(i, w + 1), blk%es(i, w + 2), blk%es(i, w + 3), &
                            dt_old, wold(i), wnew(i), q(i), vol(i), blk%vol0(i)*relv_old(i), &
                            bv(i), trd(i)*volm(i), a)

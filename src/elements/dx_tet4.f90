@@ -16,7 +16,7 @@
 module dx_tet4
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_material, only: material_t
-   use dx_erosion, only: erosion_points, erosion_now, erosion_strain
+   use dx_erosion, only: erosion_one_point, erosion_now, erosion_strain
    use dx_element_types, only: elem_block_t, part_t, ES_WORK, block_result_t, ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL
    use dx_hex8, only: centred_work, stable_time_step   ! one copy, inlined in dx_hex8
                                                         ! (dx_solid_kernels)
@@ -75,7 +75,6 @@ contains
       real(wp) :: dtl, hdt, d1, d2, d3, d4, d5, d6
       integer :: ierr(nv_chunk)
       logical :: failed(nv_chunk)
-      integer :: nfp(nv_chunk)
       integer :: i, k, n, nn, w
       if (blk%esc(ES_WORK) == 0) call blk%es_add(ES_WORK, 4)
       w = blk%esc(ES_WORK)
@@ -164,13 +163,7 @@ contains
       end do
       call mat%update(n, dt_old, deps, rv, ein, blk%sig(:, :, 1), blk%hv(:, :, 1), ierr)
       call mat%fails(n, blk%hv(:, :, 1), failed)
-      if (part%ero%on) then   ! *MAT_ADD_EROSION (dx_erosion)
-         nfp(1:n) = 0
-         call erosion_points(blk, part%ero, n, blk%sig(:, :, 1), rv, dt_old, 1.0_wp, nfp)
-         do i = 1, n
-            if (nfp(i) > 0) failed(i) = .true.
-         end do
-      end if
+      call erosion_one_point(blk, part, n, rv, dt_old, failed)   ! *MAT_ADD_EROSION
       call mat%wave_speed(n, rv, blk%hv(:, :, 1), c)
       if (present(time)) call erosion_now(part, n, time, dtfloor, lc, trd, c, failed)
       do i = 1, n
@@ -191,10 +184,8 @@ contains
                  + 2.0_wp*(so(i,4)*de6(i,4) + so(i,5)*de6(i,5) + so(i,6)*de6(i,6)))
          wn(i) = volm(i)*(sn(i,1)*de6(i,1) + sn(i,2)*de6(i,2) + sn(i,3)*de6(i,3) &
                  + 2.0_wp*(sn(i,4)*de6(i,4) + sn(i,5)*de6(i,5) + sn(i,6)*de6(i,6)))
-         ! an element eroding now applies no force f(n): W(n) is 0 (its energy then stays)
-         if (blk%failed(i)) then
-            wn(i) = 0.0_wp; q(i) = 0.0_wp
-         end if
+         if (blk%failed(i)) wn(i) = 0.0_wp   ! eroding now: no force f(n), W(n) = 0
+         if (blk%failed(i)) q(i) = 0.0_wp
       end do
       e1(1:n) = blk%es(1:n, w); e2(1:n) = blk%es(1:n, w + 1)
       e3(1:n) = blk%es(1:n, w + 2); e4(1:n) = blk%es(1:n, w + 3)
