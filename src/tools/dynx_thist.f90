@@ -5,7 +5,9 @@
 !> spectra: dx_fft (FFTW).
 !>   dynx-thist FILE --col NAME[@ID] [--col ...] [--dt DT] [--time-unit s|ms|us|ns]
 !>              [--cfc CFC [--iso]] [--lowpass FC] [--psd [--nseg N] [--rect]]
-!>              [--h1 IN OUT] [-o out.csv] [--png out.png] [--list]
+!>              [--h1 IN OUT] [--raw] [-o out.csv] [--png out.png] [--list]
+!> Every column is resampled (linear interpolation) onto a uniform step over the time window
+!> the columns share, except with --raw (the file's own output times, no filter).
 !> Exit status: 0 done, 2 bad arguments or input (message naming the file and line),
 !> 4 a file cannot be read or written.
 program dynx_thist
@@ -24,7 +26,7 @@ program dynx_thist
    character(64) :: colbuf(64)
    integer :: i, n, ncol, nseg, std, ios
    real(wp) :: dt, cfc, fc, tscale
-   logical :: list, psd, hann, h1
+   logical :: list, psd, hann, h1, raw
 
    n = command_argument_count()
    ncol = 0
@@ -39,6 +41,7 @@ program dynx_thist
    psd = .false.
    hann = .true.
    h1 = .false.
+   raw = .false.
    i = 0
    do while (i < n)
       i = i + 1
@@ -83,6 +86,8 @@ program dynx_thist
          csv = next('-o needs a file')
       case ('--png')
          png = next('--png needs a file')
+      case ('--raw')
+         raw = .true.
       case ('--list')
          list = .true.
       case ('-h', '--help')
@@ -103,6 +108,8 @@ program dynx_thist
    if (ncol == 0) call usage('no --col')
    if (cfc > 0.0_wp .and. fc > 0.0_wp) call usage('--cfc and --lowpass: one filter at a time')
    if (h1 .and. (ncol /= 2 .or. psd)) call usage('--h1 takes exactly its two columns, no --psd')
+   if (raw .and. (h1 .or. psd .or. cfc > 0.0_wp .or. fc > 0.0_wp .or. dt > 0.0_wp)) &
+      call usage('--raw keeps the file''s own times: no --dt, filter, --psd or --h1 with it')
    if (allocated(png) .and. .not. allocated(csv)) csv = png//'.csv'
    call run()
    call sys_exit(0)
@@ -116,6 +123,10 @@ contains
       character(:), allocatable :: head, name
       real(wp) :: t0, t1
       integer :: k, m, id, j
+      if (raw) then
+         call run_raw()
+         return
+      end if
       ! the common time window and the step (default: the mean spacing of the first column)
       do k = 1, ncol
          call split_col(cols(k), name, id)
@@ -212,6 +223,32 @@ contains
       call write_csv(head, out)
       if (allocated(png)) call plot_png(.false., 'time ('//unit_name//')', 1 + j*ncol)
    end subroutine run
+
+   !> --raw: the columns at the file's own output times (they must share them).
+   subroutine run_raw()
+      real(wp), allocatable :: t(:), x(:), t1(:), out(:, :)
+      character(:), allocatable :: head, name
+      integer :: k, id
+      head = 'time'
+      do k = 1, ncol
+         call split_col(cols(k), name, id)
+         call tab%select(name, id, t, x, error)
+         call stop_on(error)
+         if (k == 1) then
+            t1 = t
+            allocate(out(size(t), ncol + 1))
+            out(:, 1) = t
+         else if (size(t) /= size(t1)) then
+            call usage('--raw: '//trim(cols(k))//' has other output times than '//trim(cols(1)))
+         else if (any(t /= t1)) then
+            call usage('--raw: '//trim(cols(k))//' has other output times than '//trim(cols(1)))
+         end if
+         out(:, k + 1) = x
+         head = head//','//col_label(cols(k))
+      end do
+      call write_csv(head, out)
+      if (allocated(png)) call plot_png(.false., 'time ('//unit_name//')', ncol + 1)
+   end subroutine run_raw
 
    !> '_cfc60' (SAE), '_iso60' (ISO) or '_lp500' for the filter in force, else ''.
    function suffix() result(s)
@@ -366,7 +403,7 @@ contains
       if (len(msg) > 0) write(error_unit, '(a)') 'dynx-thist: error: '//msg
       write(error_unit, '(a)') 'usage: dynx-thist FILE --col NAME[@ID] [--col ...] '// &
          '[--dt DT] [--time-unit s|ms|us|ns] [--cfc CFC [--iso]] [--lowpass FC_HZ] '// &
-         '[--psd [--nseg N] [--rect]] [--h1 IN OUT] [-o out.csv] [--png out.png] [--list]'
+         '[--psd [--nseg N] [--rect]] [--h1 IN OUT] [--raw] [-o out.csv] [--png out.png] [--list]'
       if (len(msg) == 0) call sys_exit(0)
       call sys_exit(2)
    end subroutine usage
