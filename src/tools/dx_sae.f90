@@ -30,10 +30,13 @@
 !> the steady state of the straight line through its first two samples (one_pass), so a
 !> constant passes unchanged and a ramp stays the ramp; the padding is dropped afterwards.
 !>
-!> The response corridor (cfc_corridor) is J211-1's Figure 1 / ISO 6487's Figure 1 for
-!> CFC 60 to 1000: FL = 0.1 Hz, FH = CFC, FN = 5/3 CFC; between FL and FH +0.5/-0.5 dB
-!> (-1 dB at FH), at FN +0.5/-4 dB, above FN the upper bound falls by 9 dB/octave to -30 dB
-!> and the lower bound by 24 dB/octave (then unbounded).
+!> The response corridor (cfc_corridor) follows J211-1's Figure 1 / ISO 6487's Figure 1 for
+!> CFC 60 to 1000: FL = 0.1 Hz, FH = CFC, FN = 5/3 CFC (the standards print FN = 100, 300,
+!> 1000, 1650 Hz); between FL and FH +0.5/-0.5 dB (-1 dB at FH), at FN +0.5/-4 dB, above FN
+!> the upper bound falls by 9 dB/octave to -30 dB and the lower bound by 24 dB/octave (then
+!> unbounded). The printed standard was not at hand when this was written: the breakpoints
+!> are the commonly quoted ones and should be checked against it; the gain G(f) lies well
+!> inside them (tests/unit/test_sae.f90).
 !>
 !> Resampling: dynx writes a history at the first cycle after each requested time, so the
 !> spacing jitters by a few per cent. resample_linear puts the samples on t0 + k dt by
