@@ -146,6 +146,8 @@ contains
             t1 = min(t1, t(size(t)))
          end if
       end do
+      if ((t1 - t0)/dt > 1.0e7_wp) call usage('--dt '//rstr(dt)//' makes more than 1e7 '// &
+         'samples of the window '//rstr(t0)//' to '//rstr(t1)//' (80 MB a column): a larger --dt')
       m = floor((t1 - t0)/dt*(1.0_wp + 1.0e-12_wp)) + 1
       if (m < 3) call usage('the columns share fewer than 3 samples at --dt '//rstr(dt))
       allocate(xu(m, ncol), tu(m))
