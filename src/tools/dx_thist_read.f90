@@ -2,9 +2,11 @@
 !> records, and picking one column of one entity as a time series (dynx-thist, dynx-plot).
 !>
 !> Two layouts (docs/output-format.md):
-!>  * column files (glstat, nodout, rcforc, rbdout, ...): '#' header lines, the last one
-!>    naming the columns, the first column the time; a second column whose name ends in
-!>    '_id' (node_id, contact_id, ...) is the entity id of the row, otherwise the entity is 0.
+!>  * column files (glstat, nodout, rcforc, rbdout, ...): '#' header lines, the names line
+!>    the last of them with as many words as the first data line has fields (rbdout writes
+!>    one '#' line per body after it), the first column the time; a second column named
+!>    '*_id' (node_id, contact_id, ...), body, node, part or id is the entity id of the row,
+!>    otherwise the entity is 0.
 !>  * LS-DYNA block files (matsum, sleout, spcforc, ...): a line holding 'time =' starts a
 !>    record; the other lines are 'label= value' pairs. The entity keys 'mat.#=',
 !>    'interface=', 'node=', 'part=', 'id=' at the start of a line set the entity of that line
@@ -87,12 +89,12 @@ contains
       character(*), intent(in) :: path
       type(error_t), allocatable, intent(out) :: error
       character(4096) :: buf
-      character(NAME_LEN), allocatable :: hdr(:)
+      character(NAME_LEN), allocatable :: hdr(:), words(:)
       integer, allocatable :: cidx(:)
       real(wp), allocatable :: vals(:)
-      integer :: ios, lineno, nc, k, first, e
+      integer :: ios, lineno, nc, k, first, e, nfirst
       logical :: has_id
-      character(:), allocatable :: header
+      character(:), allocatable :: header, line
       header = ''
       lineno = 0
       nc = 0
@@ -102,19 +104,28 @@ contains
          lineno = lineno + 1
          if (len_trim(buf) == 0) cycle
          if (adjustl(buf(1:1)) == '#' .or. buf(1:1) == '#') then
-            header = trim(adjustl(buf(index(buf, '#') + 1:)))
-            if (index(header, 'title:') == 1) tab%title = trim(adjustl(header(7:)))
+            line = trim(adjustl(buf(index(buf, '#') + 1:)))
+            if (index(line, 'title:') == 1) tab%title = trim(adjustl(line(7:)))
+            ! the names line: the last '#' line with as many words as the data lines
+            ! have fields (rbdout's per-body '#' lines come after its names line)
+            if (nc == 0) then
+               call split_words(line, words)
+               nfirst = count_fields(next_data_line(u))
+               if (size(words) == nfirst .and. nfirst >= 2) header = line
+            end if
             cycle
          end if
          if (nc == 0) then
             call split_words(header, hdr)
             nc = size(hdr)
             if (nc < 2) then
-               call set_error(error, path//':'//str(lineno - 1)//': the last # line '// &
-                              'names no columns', EXIT_INPUT)
+               call set_error(error, path//':'//str(lineno)//': no # header line names '// &
+                              'the '//str(count_fields(trim(buf)))//' columns of this line', &
+                              EXIT_INPUT)
                return
             end if
-            has_id = ends_with(hdr(2), '_id')
+            has_id = ends_with(hdr(2), '_id') .or. hdr(2) == 'body' .or. hdr(2) == 'node' &
+                     .or. hdr(2) == 'part' .or. hdr(2) == 'id'
             first = 2
             if (has_id) first = 3
             allocate(cidx(nc), vals(nc))
@@ -240,6 +251,37 @@ contains
          ! trailing words without '=' (setid 0 of spcforc) carry no column
       end do
    end subroutine read_blocks
+
+   !> The next line of u that is not blank and not a '#' line ('' at the end), the file
+   !> position left where it was.
+   function next_data_line(u) result(l)
+      integer, intent(in) :: u
+      character(:), allocatable :: l
+      character(4096) :: buf
+      integer :: ios, nread, k
+      l = ''
+      nread = 0
+      do
+         read(u, '(a)', iostat=ios) buf
+         if (ios /= 0) exit
+         nread = nread + 1
+         if (len_trim(buf) == 0) cycle
+         if (adjustl(buf(1:1)) == '#' .or. buf(1:1) == '#') cycle
+         l = trim(buf)
+         exit
+      end do
+      do k = 1, nread
+         backspace(u)
+      end do
+   end function next_data_line
+
+   !> The number of blank-separated fields of s.
+   integer function count_fields(s) result(n)
+      character(*), intent(in) :: s
+      character(NAME_LEN), allocatable :: w(:)
+      call split_words(s, w)
+      n = size(w)
+   end function count_fields
 
    logical function is_entity_key(label)
       character(*), intent(in) :: label
