@@ -5,7 +5,9 @@
 !>    relative (N = 4096: an FFT's relative error grows as eps log2 N, about 3e-15).
 !>  * a sine of amplitude A on a bin: one rectangular segment puts A^2/2 (its mean square)
 !>    in that one bin (PSD df), the other bins hold round-off (1e-12 of it).
-!>  * H1 of y = 2.5 x is 2.5 with zero phase and coherence 1 in every bin (round-off).
+!>  * H1 of y = 2.5 x is 2.5 with zero phase and coherence 1 in every bin (round-off); H1
+!>    from noise to its CFC-filtered copy is the filter's gain G(f) within 5 standard errors
+!>    of the H1 estimate (Bendat & Piersol eq. 9.90).
 !>  * FFT low pass against its definition (a naive O(N^2) DFT of the detrended signal,
 !>    truncated above fc, plus the line; 1e-11 relative for N = 200); a line and any signal
 !>    cut above Nyquist come back unchanged.
@@ -15,11 +17,13 @@ program test_fft
    use dx_error, only: error_t
    use dx_assert, only: check, check_close, assert_summary
    use dx_fft, only: rfft_t, psd_welch, transfer_h1, fft_lowpass
+   use dx_sae, only: cfc_filter, cfc_gain, SAE_J211
    implicit none
    real(wp), parameter :: PI = 3.14159265358979323846264338327950288_wp
    call test_parseval()
    call test_sine_bin()
    call test_h1()
+   call test_h1_cfc()
    call test_lowpass()
    call test_plan_reuse()
    call assert_summary()
@@ -107,6 +111,43 @@ contains
 
    !> Against the definition: the line through the end samples plus the inverse of the
    !> truncated DFT of the rest, by a naive O(N^2) DFT (relative error about N eps).
+   !> H1 from white noise to its CFC-filtered copy is the filter's gain G(f) (real: the
+   !> forward-backward filter has zero phase), within the random error of an H1 estimate
+   !> (Bendat & Piersol, Random Data, 4th ed., eq. 9.90): |H1 - G| <= 5 |G| e with
+   !> e = sqrt((1 - gamma^2)/(2 nd gamma^2)), nd the number of segments. The "noise" is the
+   !> filter acting on the whole record while the window cuts each segment (coherence
+   !> 1 - gamma^2 about 1e-5 to 1e-3 here); 5 standard errors over 150 bins.
+   subroutine test_h1_cfc()
+      integer, parameter :: n = 16384
+      real(wp), parameter :: dt = 1.0e-4_wp, cfc = 240.0_wp   ! fd = 498.6 Hz = 0.05 fs
+      real(wp) :: x(n), g, e, worst
+      real(wp), allocatable :: y(:), f(:), coh(:)
+      complex(wp), allocatable :: h(:)
+      type(error_t), allocatable :: error
+      integer :: k, nb, m, nd
+      logical :: ok
+      call noise(x)
+      call cfc_filter(x, dt, cfc, y, error)
+      call transfer_h1(x, y, dt, 31, .true., f, h, coh, error)
+      call check(.not. allocated(error) .and. size(f) == 513, 'H1 of a CFC filter runs')
+      m = 2*(size(f) - 1)
+      nd = (n - m)/(m/2) + 1
+      ok = .true.
+      nb = 0
+      worst = 0.0_wp
+      do k = 1, size(f) - 1
+         g = cfc_gain(cfc, dt, SAE_J211, f(k))
+         if (g < 0.01_wp) cycle
+         nb = nb + 1
+         e = sqrt((1.0_wp - coh(k))/(2.0_wp*real(nd, wp)*coh(k)))
+         worst = max(worst, abs(h(k) - g)/(g*e + 1.0e-300_wp))
+         ok = ok .and. abs(h(k) - g) <= 5.0_wp*g*e + 1.0e-12_wp
+      end do
+      write(*, '(a,f6.2,a,i0,a,i0,a)') '  H1 vs G(f): worst |H1 - G| = ', worst, &
+         ' standard errors (', nb, ' bins, ', nd, ' segments)'
+      call check(ok .and. nb > 100, 'H1 of noise through CFC 240 = G(f) within 5 standard errors')
+   end subroutine test_h1_cfc
+
    subroutine test_lowpass()
       integer, parameter :: n = 200
       real(wp) :: x(n), ref(n), line(n), r(n), dt, t, fc

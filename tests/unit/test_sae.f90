@@ -8,7 +8,7 @@
 !>    G also lies within 4 u^2/3 (relative, u = pi f T: the bilinear warping, tan(u)/u =
 !>    1 + u^2/3 + ...) of the analog 1/(1 + (f/fd)^4), G = 1/sqrt(2)
 !>    (-3 dB) at 100 Hz = 5/3 CFC within 0.3 %, and every measured gain lies in the
-!>    standard's corridor (cfc_corridor).
+!>    standard's corridor (cfc_corridor); the phase is the input's to 1e-9 (zero phase).
 !>  * the step response: 0 before and 1 after (1e-6: 50 ms = 28 time constants from the
 !>    step), 0.5 at the step (the forward-backward filter's kernel is symmetric, the step
 !>    lies half-way between two samples: 1e-9), the overshoot of the 4-pole zero-phase
@@ -39,7 +39,7 @@ contains
                                         200.0_wp, 300.0_wp]
       real(wp), allocatable :: x(:), y(:)
       type(error_t), allocatable :: error
-      real(wp) :: f, g, amp, fd, lo, hi, gdb
+      real(wp) :: f, g, amp, fd, lo, hi, gdb, ph
       integer :: n, k, i
       character(16) :: lab
       n = 20001
@@ -52,7 +52,7 @@ contains
          end do
          call cfc_filter(x, dt, cfc, y, error)
          call check(.not. allocated(error), 'cfc_filter runs')
-         amp = fit_amplitude(y, dt, f, 5001, 15000)
+         amp = fit_amplitude(y, dt, f, 5001, 15000, ph)
          g = cfc_gain(cfc, dt, SAE_J211, f)
          write(lab, '(f6.1)') f
          call check_close(amp, g, 0.0_wp, 1.0e-9_wp, 'CFC 60 gain at '//trim(adjustl(lab))// &
@@ -62,6 +62,8 @@ contains
          call check_close(g, 1.0_wp/(1.0_wp + (f/fd)**4), 0.0_wp, &
                           4.0_wp/3.0_wp*(PI*f*dt)**2, &
                           'G(f) near the analog 1/(1+(f/fd)^4) at '//trim(adjustl(lab))//' Hz')
+         call check_close(ph, 0.3_wp, 1.0e-9_wp, 0.0_wp, 'CFC 60 phase at '// &
+                          trim(adjustl(lab))//' Hz = the input''s (zero phase)')
          call cfc_corridor(cfc, f, lo, hi)
          gdb = 20.0_wp*log10(amp)
          call check(gdb >= lo .and. gdb <= hi, 'CFC 60 gain in the J211 corridor at '// &
@@ -71,10 +73,11 @@ contains
                        3.0e-3_wp, 'CFC 60: -3 dB at 100 Hz')
    end subroutine test_sine_gain
 
-   !> Amplitude of the sine of frequency f in y(i0:i1) (least squares on sin, cos).
-   function fit_amplitude(y, dt, f, i0, i1) result(a)
+   !> Amplitude and phase of the sine of frequency f in y(i0:i1) (least squares on sin, cos).
+   function fit_amplitude(y, dt, f, i0, i1, phase) result(a)
       real(wp), intent(in) :: y(:), dt, f
       integer, intent(in) :: i0, i1
+      real(wp), intent(out) :: phase
       real(wp) :: a, s11, s12, s22, r1, r2, c, s, det, p, q
       integer :: k
       s11 = 0; s12 = 0; s22 = 0; r1 = 0; r2 = 0
@@ -91,6 +94,7 @@ contains
       p = (r1*s22 - r2*s12)/det
       q = (s11*r2 - s12*r1)/det
       a = sqrt(p**2 + q**2)
+      phase = atan2(q, p)
    end function fit_amplitude
 
    subroutine test_step()
