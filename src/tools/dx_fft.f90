@@ -29,7 +29,8 @@
 !> FFT low pass: the signal less the straight line through its first and last samples (so
 !> the periodic extension has no jump), transformed, every bin above fc set to zero, back
 !> transformed, the line added again. A brick-wall filter: no attenuation below fc, total
-!> above, with ringing near sharp events (the CFC filter of dx_sae has none of it).
+!> above, with long ringing near sharp events (Gibbs, about 9 % of a jump; the CFC filter of
+!> dx_sae overshoots a step by 3.4 % and settles within a few 1/fd).
 module dx_fft
    use, intrinsic :: iso_c_binding
    use dx_kinds, only: wp

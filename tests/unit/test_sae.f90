@@ -11,8 +11,11 @@
 !>    standard's corridor (cfc_corridor); the phase is the input's to 1e-9 (zero phase).
 !>  * the step response: 0 before and 1 after (1e-6: 50 ms = 28 time constants from the
 !>    step), 0.5 at the step (the forward-backward filter's kernel is symmetric, the step
-!>    lies half-way between two samples: 1e-9), the overshoot of the 4-pole zero-phase
-!>    Butterworth below 10 % and the response within the step corridor 0..1.1.
+!>    lies half-way between two samples: 1e-9), and the overshoot of the analog gain
+!>    1/(1 + (w/wd)^4): its impulse response is (wd/(2 sqrt 2)) exp(-a|t|)(cos(a t) +
+!>    sin(a|t|)), a = wd/sqrt 2, first zero at a t = 3 pi/4, so the step peaks at
+!>    1 + exp(-3 pi/4)/(2 sqrt 2) = 1.03352; the digital filter within 2 (pi fd T)^2
+!>    relative (the bilinear warping), the undershoot before the step its mirror image.
 !>  * a constant through every class is the constant (a0 + a1 + a2 + b1 + b2 = 1 to
 !>    round-off; the gain 4 a0/(1 - b1 - b2) sums O(1) terms to 4 a0, so the tolerance is
 !>    8 eps/a0 for the two passes); a ramp stays a ramp (the point-reflected padding and the steady start).
@@ -113,9 +116,11 @@ contains
                        'step: 0.5 half-way (zero phase)')
       call check_close(y(n/2) + y(n/2 + 1), 1.0_wp, 1.0e-9_wp, 0.0_wp, &
                        'step: antisymmetric about the step')
-      call check(maxval(y) - 1.0_wp < 0.1_wp .and. maxval(y) > 1.0_wp, &
-                 'step: overshoot in (0, 10 %)')
-      call check(minval(y) > -0.1_wp, 'step: undershoot above -10 %')
+      call check_close(maxval(y) - 1.0_wp, exp(-0.75_wp*PI)/(2.0_wp*sqrt(2.0_wp)), 0.0_wp, &
+                       2.0_wp*(PI*cfc_design_frequency(60.0_wp, SAE_J211)*dt)**2, &
+                       'step: overshoot = exp(-3 pi/4)/(2 sqrt 2) of the analog filter')
+      call check_close(minval(y), 1.0_wp - maxval(y), 1.0e-9_wp, 0.0_wp, &
+                       'step: undershoot mirrors the overshoot')
    end subroutine test_step
 
    subroutine test_constant()
