@@ -190,36 +190,19 @@ contains
       real(wp), intent(in) :: t(:), x(:), dt
       real(wp), allocatable, intent(out) :: tu(:), xu(:)
       type(error_t), allocatable, intent(out) :: error
-      integer :: n, m, k, j
-      real(wp) :: tk, w
+      integer :: n, m, k
       n = size(t)
-      if (n < 2) then
-         call set_error(error, 'resample: need at least 2 samples', EXIT_INPUT)
+      if (n < 2 .or. .not. (dt > 0.0_wp)) then
+         call set_error(error, 'resample: need at least 2 samples and a step > 0', EXIT_INPUT)
          return
       end if
-      if (.not. (dt > 0.0_wp)) then
-         call set_error(error, 'resample: the step must be > 0', EXIT_INPUT)
-         return
-      end if
-      do k = 2, n
-         if (.not. (t(k) > t(k - 1))) then
-            call set_error(error, 'resample: the times do not increase', EXIT_INPUT)
-            return
-         end if
-      end do
       ! the last sample within round-off of t(n) counts (t(n) - t(1) a multiple of dt)
-      m = floor((t(n) - t(1))/dt*(1.0_wp + 1.0e-12_wp)) + 1
-      allocate(tu(m), xu(m))
-      j = 1
+      m = max(1, floor((t(n) - t(1))/dt*(1.0_wp + 1.0e-12_wp)) + 1)
+      allocate(tu(m))
       do k = 1, m
-         tk = t(1) + real(k - 1, wp)*dt
-         tu(k) = tk
-         do while (j < n - 1 .and. t(j + 1) < tk)
-            j = j + 1
-         end do
-         w = (tk - t(j))/(t(j + 1) - t(j))
-         xu(k) = (1.0_wp - w)*x(j) + w*x(j + 1)
+         tu(k) = min(t(1) + real(k - 1, wp)*dt, t(n))
       end do
+      call interp_linear(t, x, tu, xu, error)
    end subroutine resample_linear
 
    !> xq = x(t) at the increasing times tq (each within [t(1), t(n)]), linear interpolation;

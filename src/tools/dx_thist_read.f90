@@ -22,7 +22,7 @@ module dx_thist_read
    use dx_strings, only: lower, str
    implicit none
    private
-   public :: thist_table_t, thist_read, NAME_LEN
+   public :: thist_table_t, thist_read, parse_column, NAME_LEN
 
    integer, parameter :: NAME_LEN = 48
 
@@ -251,6 +251,26 @@ contains
          ! trailing words without '=' (setid 0 of spcforc) carry no column
       end do
    end subroutine read_blocks
+
+   !> A column as the tools name it: NAME or NAME@ID (id -1: none given); a bad id is an
+   !> error (exit 2).
+   subroutine parse_column(spec, name, id, error)
+      character(*), intent(in) :: spec
+      character(:), allocatable, intent(out) :: name
+      integer, intent(out) :: id
+      type(error_t), allocatable, intent(out) :: error
+      integer :: p, st
+      p = index(spec, '@')
+      id = -1
+      if (p == 0) then
+         name = trim(spec)
+         return
+      end if
+      name = trim(spec(1:p - 1))
+      read(spec(p + 1:), *, iostat=st) id
+      if (st /= 0 .or. id < 0) call set_error(error, 'column '//trim(spec)// &
+                                              ': the id after @ is not an integer >= 0', EXIT_INPUT)
+   end subroutine parse_column
 
    !> The next line of u that is not blank and not a '#' line ('' at the end), the file
    !> position left where it was.

@@ -16,7 +16,7 @@ program dynx_plot
    use dx_error, only: error_t
    use dx_io_sys, only: sys_exit
    use dx_strings, only: command_arg, str, lower
-   use dx_thist_read, only: thist_table_t, thist_read
+   use dx_thist_read, only: thist_table_t, thist_read, parse_column
    implicit none
    character(256) :: files(32), ycols(32)
    character(:), allocatable :: arg, png, xcol, title, deck, units, ulen, utime, umass, dir
@@ -307,16 +307,9 @@ contains
       character(*), intent(in) :: c
       character(:), allocatable, intent(out) :: name
       integer, intent(out) :: id
-      integer :: p, s
-      p = index(c, '@')
-      id = -1
-      if (p == 0) then
-         name = trim(c)
-         return
-      end if
-      name = trim(c(1:p - 1))
-      read(c(p + 1:), *, iostat=s) id
-      if (s /= 0 .or. id < 0) call usage(c//': the id after @ is not an integer >= 0')
+      type(error_t), allocatable :: error
+      call parse_column(c, name, id, error)
+      if (allocated(error)) call fail(error%message, error%code)
    end subroutine split_col
 
    function next(msg) result(v)

@@ -16,7 +16,7 @@ program dynx_thist
    use dx_error, only: error_t
    use dx_io_sys, only: sys_exit
    use dx_strings, only: command_arg, str, rstr
-   use dx_thist_read, only: thist_table_t, thist_read
+   use dx_thist_read, only: thist_table_t, thist_read, parse_column
    use dx_sae, only: cfc_filter, interp_linear, SAE_J211, ISO_6487
    use dx_fft, only: psd_welch, transfer_h1, fft_lowpass
    implicit none
@@ -357,16 +357,8 @@ contains
       character(*), intent(in) :: c
       character(:), allocatable, intent(out) :: name
       integer, intent(out) :: id
-      integer :: p, st
-      p = index(c, '@')
-      id = -1
-      if (p == 0) then
-         name = trim(c)
-         return
-      end if
-      name = trim(c(1:p - 1))
-      read(c(p + 1:), *, iostat=st) id
-      if (st /= 0 .or. id < 0) call usage('--col '//c//': the id after @ is not an integer >= 0')
+      call parse_column(c, name, id, error)
+      call stop_on(error)
    end subroutine split_col
 
    subroutine add_col(c)
