@@ -4,9 +4,10 @@
 !> Two layouts (docs/output-format.md):
 !>  * column files (glstat, nodout, rcforc, rbdout, ...): '#' header lines, the names line
 !>    the last of them with as many words as the first data line has fields (rbdout writes
-!>    one '#' line per body after it), the first column the time; a second column named
-!>    '*_id' (node_id, contact_id, ...), body, node, part or id is the entity id of the row,
-!>    otherwise the entity is 0.
+!>    one '#' line per body after it) or one whose '[per body: ...]' group repeats to that
+!>    count (emcstat: entities 1, 2, ...); the time is the column named time (else the
+!>    first); the column after it, when named '*_id' (node_id, contact_id, ...), body, node,
+!>    part or id, is the entity id of the row, otherwise the entity is 0.
 !>  * LS-DYNA block files (matsum, sleout, spcforc, ...): a line holding 'time =' starts a
 !>    record; the other lines are 'label= value' pairs. The entity keys 'mat.#=',
 !>    'interface=', 'node=', 'part=', 'id=' at the start of a line set the entity of that line
@@ -90,10 +91,9 @@ contains
       type(error_t), allocatable, intent(out) :: error
       character(4096) :: buf
       character(NAME_LEN), allocatable :: hdr(:), words(:)
-      integer, allocatable :: cidx(:)
+      integer, allocatable :: cidx(:), cent(:)
       real(wp), allocatable :: vals(:)
-      integer :: ios, lineno, nc, k, first, e, nfirst
-      logical :: has_id
+      integer :: ios, lineno, nc, k, e, nfirst, tcol, icol
       character(:), allocatable :: header, line
       header = ''
       lineno = 0
@@ -107,31 +107,46 @@ contains
             line = trim(adjustl(buf(index(buf, '#') + 1:)))
             if (index(line, 'title:') == 1) tab%title = trim(adjustl(line(7:)))
             ! the names line: the last '#' line with as many words as the data lines
-            ! have fields (rbdout's per-body '#' lines come after its names line)
+            ! have fields (rbdout's per-body '#' lines come after its names line), or
+            ! one with a '[per body: ...]' group that repeats to that count (emcstat)
             if (nc == 0) then
-               call split_words(line, words)
                nfirst = count_fields(next_data_line(u))
-               if (size(words) == nfirst .and. nfirst >= 2) header = line
+               call expand_names(line, nfirst, words, cent)
+               if (size(words) == nfirst .and. nfirst >= 2) then
+                  header = line
+                  hdr = words
+               end if
             end if
             cycle
          end if
          if (nc == 0) then
-            call split_words(header, hdr)
-            nc = size(hdr)
-            if (nc < 2) then
+            if (len(header) == 0) then
                call set_error(error, path//':'//str(lineno)//': no # header line names '// &
                               'the '//str(count_fields(trim(buf)))//' columns of this line', &
                               EXIT_INPUT)
                return
             end if
-            has_id = ends_with(hdr(2), '_id') .or. hdr(2) == 'body' .or. hdr(2) == 'node' &
-                     .or. hdr(2) == 'part' .or. hdr(2) == 'id'
-            first = 2
-            if (has_id) first = 3
+            call expand_names(header, size(hdr), hdr, cent)
+            nc = size(hdr)
+            ! the time column (the first unless one is named time), the entity column (the
+            ! one after it when its name is *_id, body, node, part or id)
+            tcol = 1
+            do k = 1, nc
+               if (hdr(k) == 'time') then
+                  tcol = k
+                  exit
+               end if
+            end do
+            icol = 0
+            if (tcol < nc) then
+               if (ends_with(hdr(tcol + 1), '_id') .or. hdr(tcol + 1) == 'body' .or. &
+                   hdr(tcol + 1) == 'node' .or. hdr(tcol + 1) == 'part' .or. &
+                   hdr(tcol + 1) == 'id') icol = tcol + 1
+            end if
             allocate(cidx(nc), vals(nc))
             cidx = 0
-            do k = first, nc
-               cidx(k) = add_name(tab, hdr(k))
+            do k = 1, nc
+               if (k /= tcol .and. k /= icol) cidx(k) = add_name(tab, hdr(k))
             end do
          end if
          read(buf, *, iostat=ios) vals
@@ -141,9 +156,14 @@ contains
             return
          end if
          e = 0
-         if (has_id) e = nint(vals(2))
-         do k = first, nc
-            call add_rec(tab, vals(1), e, cidx(k), vals(k))
+         if (icol > 0) e = nint(vals(icol))
+         do k = 1, nc
+            if (cidx(k) == 0) cycle
+            if (cent(k) > 0) then
+               call add_rec(tab, vals(tcol), cent(k), cidx(k), vals(k))
+            else
+               call add_rec(tab, vals(tcol), e, cidx(k), vals(k))
+            end if
          end do
       end do
    end subroutine read_columns
@@ -251,6 +271,51 @@ contains
          ! trailing words without '=' (setid 0 of spcforc) carry no column
       end do
    end subroutine read_blocks
+
+   !> The column names of a header line and each column's entity (0: the row's own). A
+   !> group '[per body: a b c (note)]' after the plain names repeats a, b, c once per body
+   !> (entities 1, 2, ...) to fill nfields columns (emcstat); otherwise the words as they are.
+   subroutine expand_names(line, nfields, names, ent)
+      character(*), intent(in) :: line
+      integer, intent(in) :: nfields
+      character(NAME_LEN), allocatable, intent(out) :: names(:)
+      integer, allocatable, intent(out) :: ent(:)
+      character(NAME_LEN), allocatable :: base(:), per(:)
+      integer :: p, q, r, nb, b, k
+      p = index(line, '[per body:')
+      if (p == 0) then
+         call split_words(line, names)
+         allocate(ent(size(names)))
+         ent = 0
+         return
+      end if
+      call split_words(line(1:p - 1), base)
+      q = index(line(p:), ']') + p - 1
+      if (q < p) q = len(line) + 1
+      r = index(line(p:q - 1), '(')
+      if (r > 0) then
+         call split_words(line(p + 10:p + r - 2), per)
+      else
+         call split_words(line(p + 10:q - 1), per)
+      end if
+      nb = 0
+      if (size(per) > 0) nb = (nfields - size(base))/size(per)
+      if (size(per) == 0 .or. nb < 1 .or. size(base) + nb*size(per) /= nfields) then
+         call split_words(line, names)        ! no fit: the plain words (they will not match)
+         allocate(ent(size(names)))
+         ent = 0
+         return
+      end if
+      allocate(names(nfields), ent(nfields))
+      names(1:size(base)) = base
+      ent(1:size(base)) = 0
+      k = size(base)
+      do b = 1, nb
+         names(k + 1:k + size(per)) = per
+         ent(k + 1:k + size(per)) = b
+         k = k + size(per)
+      end do
+   end subroutine expand_names
 
    !> A column as the tools name it: NAME or NAME@ID (id -1: none given); a bad id is an
    !> error (exit 2).
