@@ -87,6 +87,11 @@ bin/dynx-asan: build/asan/dynx.o $(MAIN_SRC:src/main/%.f90=build/asan/%.o) build
 	$(FC) $(ASAN_FLAGS) -o $@ $^ $(LIBS)
 bin/dynx-%: build/release/dynx_%.o build/release/libdynx.a | bin
 	$(FC) $(REL_FLAGS) -o $@ $^ $(LIBS)
+# FFTW is linked into the one tool that calls it (through src/tools/dx_fft.f90, the only
+# module that includes fftw3.f03: scripts/check_layers.py) and its unit test
+FFTW_LIBS := -lfftw3
+bin/dynx-thist: build/release/dynx_thist.o build/release/libdynx.a | bin
+	$(FC) $(REL_FLAGS) -o $@ $^ $(LIBS) $(FFTW_LIBS)
 
 UNIT_TESTS := $(patsubst tests/unit/%.f90,build/debug/tests/%,$(filter tests/unit/test_%,$(TEST_SRC)))
 MPI_TESTS := build/debug/tests/mpi_par_test build/debug/tests/mpi_par_model_test build/debug/tests/mpi_fail_test
@@ -97,6 +102,9 @@ build/release/bench/%: build/release/%.o build/release/libdynx.a
 build/debug/tests/%: build/debug/%.o build/debug/dx_assert.o build/debug/libdynx.a
 	@mkdir -p build/debug/tests
 	$(FC) $(DBG_FLAGS) -o $@ $^ $(LIBS)
+build/debug/tests/test_fft: build/debug/test_fft.o build/debug/dx_assert.o build/debug/libdynx.a
+	@mkdir -p build/debug/tests
+	$(FC) $(DBG_FLAGS) -o $@ $^ $(LIBS) $(FFTW_LIBS)
 
 debug: bin/dynx-debug
 

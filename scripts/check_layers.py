@@ -11,7 +11,8 @@
 A module's layer is the folder under src/ that holds its file (src/materials/eos counts as
 materials). `use` of a module in the same folder is always allowed. Intrinsic modules are
 ignored, except that mpi_f08 may be used only in src/parallel/ and hdf5 only in
-src/io/dx_h5*.f90 (dx_h5: datasets, dx_h5_file: files and attributes).
+src/io/dx_h5*.f90 (dx_h5: datasets, dx_h5_file: files and attributes), and fftw3.f03 may be
+included only by src/tools/dx_fft.f90.
 """
 import os
 import re
@@ -43,6 +44,8 @@ TOP = {'main', 'tools'}
 INTRINSIC = {'iso_fortran_env', 'iso_c_binding', 'ieee_arithmetic', 'ieee_exceptions',
              'ieee_features', 'omp_lib'}
 
+FFTW_USER = 'src/tools/dx_fft.f90'
+INCLUDE_FFTW_RE = re.compile(r'''^\s*include\s*['"]fftw3''', re.I)
 USE_RE = re.compile(r'^\s*use\s*(?:,\s*(intrinsic|non_intrinsic)\s*)?(?:::)?\s*(\w+)', re.I)
 MOD_RE = re.compile(r'^\s*module\s+(\w+)\s*(?:!.*)?$', re.I)
 
@@ -111,6 +114,15 @@ def crossings():
             bad.append((path, line, name, '%s -> %s' % (layer, target)))
     for p in sorted(h5users):
         bad.append((p, 0, 'hdf5', 'hdf5 outside src/io/dx_h5*.f90'))
+    # FFTW: one module includes fftw3.f03 (only bin/dynx-thist links -lfftw3)
+    for path in sources():
+        rel = os.path.relpath(path, ROOT)
+        if rel == FFTW_USER:
+            continue
+        with open(path, encoding='utf-8', errors='replace') as fh:
+            for i, line in enumerate(fh, 1):
+                if INCLUDE_FFTW_RE.match(line.split('!', 1)[0]):
+                    bad.append((rel, i, 'fftw3', 'fftw3.f03 outside ' + FFTW_USER))
     return bad
 
 

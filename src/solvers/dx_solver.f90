@@ -25,6 +25,14 @@ module dx_solver
    private
    public :: make_integrator, integrator_choice, run_driver
 
+   !> The status line before, for eta_left: wall time since this run started, cycle, time,
+   !> and the mean step of the interval that ended there with its mid time (0: none yet).
+   type :: eta_t
+      real(wp) :: el = 0.0_wp
+      integer :: cycle = 0
+      real(wp) :: t = 0.0_wp, dtm = 0.0_wp, tm = 0.0_wp
+   end type eta_t
+
 contains
 
    !> The integrator the deck asks for, and why (one line for --check and the log).
@@ -68,6 +76,7 @@ contains
       type(energy_guard_t) :: guard
       type(error_t), allocatable :: ioerr
       real(wp) :: t0wall, next_status, t_line
+      type(eta_t) :: eta
       logical :: stopped, writer
       ck = opts%ck
       guard = opts%guard
@@ -85,6 +94,7 @@ contains
                        'integrator (it writes its own emcstat); their files hold the header only')
       if (integ%energies) call guard_bounds(guard)
       t0wall = wall_time()
+      eta = eta_t(0.0_wp, model%cycle, model%time, 0.0_wp, 0.0_wp)   ! this run's start
       writer = dom%writer()
       next_status = model%run%next_status
       t_line = -huge_wp
@@ -112,7 +122,7 @@ contains
          end if
          if ((integ%t >= next_status .or. integ%done) .and. writer .and. &
              integ%t /= t_line) then   ! (a conserving run's last call only notes the end)
-            call status_line(model, integ, t0wall)
+            call status_line(model, integ, t0wall, eta)
             t_line = integ%t
             if (integ%tend < huge_wp) then
                next_status = next_status + integ%tend/real(max(1, opts%nstatus), wp)
@@ -222,22 +232,68 @@ contains
       end subroutine history_file
    end subroutine histories
 
+   !> The wall time left, from the recent cycle rate and the time-step trend. Over the
+   !> interval since the status line before (or since the start of this run: a restart counts
+   !> from its own start, not from time 0): w = wall time per cycle and dtm = the mean step
+   !> (time advanced / cycles), at the interval's mid time tm. The trend s = d(dtm)/dt is the
+   !> slope between this interval's dtm and the previous one's (0 on the first interval of a
+   !> run). The step is taken on that line from now to the end, floored at half its value:
+   !>    d0 = max(dtm + s (t - tm), dtm/2),  d1 = max(d0 + s (tend - t), d0/2)
+   !> so the cycles left are N = (tend - t) ln(d1/d0)/(d1 - d0) ((tend - t)/d0 when d1 = d0;
+   !> the integral of dtau/dt(tau) for a step linear in time) and the time left N w. The
+   !> floor: a trend seen over one interval is not carried into a step that falls to zero;
+   !> measured on the Taylor bar and the steady bar in docs/toolbox.md. Mean steps, not the
+   !> step at the line, so one small element's momentary step does not turn into a trend.
+   !> The estimate before this one, elapsed wall times (tend - t)/t, assumed a constant step
+   !> and a run started at time 0 (3 times too optimistic while dt fell, 15 times off after
+   !> a restart: issue 21). 0 until this run has done a cycle.
+   function eta_left(eta, el, cycle, t, tend) result(left)
+      type(eta_t), intent(inout) :: eta
+      real(wp), intent(in) :: el, t, tend
+      integer, intent(in) :: cycle
+      real(wp) :: left, w, s, d0, d1, rest, ncyc, dtm, tm
+      left = 0.0_wp
+      if (cycle <= eta%cycle .or. .not. (t > eta%t)) return
+      rest = max(tend - t, 0.0_wp)
+      w = (el - eta%el)/real(cycle - eta%cycle, wp)
+      dtm = (t - eta%t)/real(cycle - eta%cycle, wp)
+      tm = 0.5_wp*(t + eta%t)
+      s = 0.0_wp
+      if (eta%dtm > 0.0_wp .and. tm > eta%tm) s = (dtm - eta%dtm)/(tm - eta%tm)
+      if (tend < huge(tend)) then
+         d0 = max(dtm + s*(t - tm), 0.5_wp*dtm)
+         d1 = max(d0 + s*rest, 0.5_wp*d0)
+         if (abs(d1 - d0) > 1.0e-9_wp*d0) then
+            ncyc = rest*log(d1/d0)/(d1 - d0)
+         else
+            ncyc = rest/d0
+         end if
+         left = max(ncyc*w, 0.0_wp)
+      end if
+      eta%el = el
+      eta%cycle = cycle
+      eta%t = t
+      eta%dtm = dtm
+      eta%tm = tm
+   end function eta_left
+
    !> The first output time on the grid next + k*interval (k >= 1) that lies after t.
    pure real(wp) function next_output_time(next, interval, t) result(tn)
       real(wp), intent(in) :: next, interval, t
       tn = next + interval*real(max(1, ceiling((t - next)/interval + 1.0e-9_wp)), wp)
    end function next_output_time
 
-   subroutine status_line(model, integ, t0wall)
+   !> One status line: cycle, time, dt, the element setting dt, the wall time of this run
+   !> (since its start or restart) and the estimated wall time left (eta_left).
+   subroutine status_line(model, integ, t0wall, eta)
       type(model_t), intent(in) :: model
       class(integrator_t), intent(in) :: integ
       real(wp), intent(in) :: t0wall
+      type(eta_t), intent(inout) :: eta
       character(120) :: line
       real(wp) :: el, left
       el = wall_time() - t0wall
-      left = 0.0_wp
-      if (integ%t > 0.0_wp .and. integ%tend < huge_wp) &
-         left = el*max(integ%tend - integ%t, 0.0_wp)/integ%t
+      left = eta_left(eta, el, model%cycle, integ%t, integ%tend)
       write(line, '(i11,2es12.4,i12,2f11.2)') model%cycle, integ%t, integ%dt, &
          elem_label(model), el, left
       if (integ%energies) write(line(71:), '(f14.6)') model%energy%ratio
