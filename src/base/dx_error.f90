@@ -17,6 +17,8 @@ module dx_error
       integer :: code = EXIT_INPUT           !< exit code the main program uses
       character(:), allocatable :: field     !< the input field at fault (set_field_error)
       character(:), allocatable :: detail    !< the message without the 'field NAME: ' prefix
+      character(:), allocatable :: more      !< further errors of the same keyword block, one
+                                             !< line each (dynx --check lists them: dx_card)
    end type error_t
 
    interface

@@ -37,6 +37,7 @@ module dx_deck_cards
       integer :: nparams = 0
       character(:), allocatable :: title
       logical :: long = .false.             !< *KEYWORD LONG=Y seen
+      logical :: check = .false.            !< --check: card cursors collect every error
       !> blank cards stripped from the end of each block (a blank line may stand for a
       !> card of defaults: dx_deck gives one back when a block has no data card else)
       integer, allocatable :: trailing(:)
@@ -537,6 +538,7 @@ contains
       else
          call open_card(deck%files(blk%ifile)%s, none, blk, c)
       end if
+      c%collect = deck%check     ! --check: every bad field of the block, not the first only
    end subroutine deck_cursor
 
    !> Integer field k (widths w) of card ic; blank or missing -> def.
