@@ -71,6 +71,7 @@ module dx_card
       procedure :: ncard => cursor_ncard    !< number of cards in the block
       procedure :: text_field => cursor_text_field  !< field k (widths w) of the card as text
       procedure :: ok => cursor_ok          !< no error so far
+      procedure :: halt => cursor_halt      !< stop reading the block: an error, not collecting
       procedure :: done => cursor_done      !< hand the first error (if any) to the caller
       procedure :: title => cursor_title    !< the _TITLE card text
       procedure :: card_line => cursor_card_line  !< line number of the current card
@@ -169,6 +170,13 @@ contains
       cursor_ok = .not. allocated(c%error)
    end function cursor_ok
 
+   !> Whether a reader stops reading the block now: an error and no collect mode (collect
+   !> mode: the next cards are read too, each error is kept).
+   pure logical function cursor_halt(c)
+      class(card_t), intent(in) :: c
+      cursor_halt = allocated(c%error) .and. .not. c%collect
+   end function cursor_halt
+
    !> Move the first error (if any) to error.
    subroutine cursor_done(c, error)
       class(card_t), intent(inout) :: c
@@ -248,6 +256,8 @@ contains
       integer, intent(out) :: val
       integer, intent(in), optional :: min, max
       type(error_t), allocatable :: e
+      integer :: n0
+      n0 = c%nerr
       c%k = c%k + 1
       val = def
       if (allocated(c%error) .and. .not. c%collect) return
@@ -265,6 +275,8 @@ contains
       if (present(max)) then
          if (val > max) call c%fail(name, 'must be <= '//str(max)//', got '//str(val))
       end if
+      ! collect mode reads on: a value out of its bounds is not handed on, its default is
+      if (c%collect .and. c%nerr > n0) val = def
    end subroutine cursor_int
 
    !> Next field as a real NAME (blank: def); optional bounds min <= val <= max, val > gt.
@@ -275,6 +287,8 @@ contains
       real(wp), intent(out) :: val
       real(wp), intent(in), optional :: min, max, gt
       type(error_t), allocatable :: e
+      integer :: n0
+      n0 = c%nerr
       c%k = c%k + 1
       val = def
       if (allocated(c%error) .and. .not. c%collect) return
@@ -295,6 +309,7 @@ contains
       if (present(gt)) then
          if (.not. (val > gt)) call c%fail(name, 'must be > '//bound(gt)//', got '//rstr(val))
       end if
+      if (c%collect .and. c%nerr > n0) val = def
    end subroutine cursor_real
 
    !> A bound as written in a message: an integral value without exponent (0, 1), else rstr.

@@ -24,7 +24,7 @@ module dx_deck_cards
    public :: card_t, block_t, deck_t, param_t, read_cards, get_int, get_list_id, get_real, get_text, &
              field_error, block_error, card_error, std_widths, ncards, card_where, &
              card_is_blank, check_max_cards, MAX_INCLUDE_DEPTH, data_start, block_title, &
-             deck_cursor
+             deck_cursor, collect_error
 
    integer, parameter :: MAX_INCLUDE_DEPTH = 20
 
@@ -526,6 +526,26 @@ contains
 
    ! ----------------------------------------------------------------------------------------
    ! the deck's view of the dx_card field readers: the file name and *PARAMETER table of deck
+
+   !> Keep error e of a card: the first of the block in first, a later one (--check
+   !> lists every bad card) as one more line of first%more (its first line).
+   subroutine collect_error(first, e)
+      type(error_t), allocatable, intent(inout) :: first, e
+      integer :: k
+      if (.not. allocated(e)) return
+      if (.not. allocated(first)) then
+         call move_alloc(e, first)
+         return
+      end if
+      k = index(e%message, new_line('a'))
+      if (k == 0) k = len(e%message) + 1
+      if (allocated(first%more)) then
+         first%more = first%more//new_line('a')//e%message(1:k - 1)
+      else
+         first%more = e%message(1:k - 1)
+      end if
+      deallocate(e)
+   end subroutine collect_error
 
    !> A card cursor on the data cards of blk (dx_card).
    subroutine deck_cursor(deck, blk, c)
