@@ -14,7 +14,7 @@
 !> commas) and *PARAMETER.
 module dx_card
    use dx_kinds, only: wp
-   use dx_error, only: error_t
+   use dx_error, only: error_t, MAX_MORE
    use dx_strings, only: str, rstr
    use dx_card_fields, only: card_line_t, block_t, param_t, find_param, std_widths, &
                              data_start, block_title, ncards, card_is_blank, field_text, &
@@ -48,6 +48,7 @@ module dx_card
       logical :: collect = .false.          !< keep reading after an error (--check)
       integer :: nerr = 0                   !< errors so far (collect: all of them)
       character(:), allocatable :: more     !< collect: first lines of the later errors
+      integer :: nmore = 0, ndrop = 0       !< lines in more; later errors only counted
    contains
       procedure :: next => cursor_next      !< go to the next data card
       procedure :: seek => cursor_seek      !< go to card ic of the block (field 0)
@@ -183,6 +184,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       if (allocated(c%error)) then
          if (allocated(c%more)) c%error%more = c%more
+         c%error%nmore = c%nmore
+         c%error%ndrop = c%ndrop
          call move_alloc(c%error, error)
       end if
    end subroutine cursor_done
@@ -198,7 +201,10 @@ contains
          call move_alloc(e, c%error)
          return
       end if
-      if (c%collect) then
+      if (c%collect .and. c%nmore >= MAX_MORE) then
+         c%ndrop = c%ndrop + 1
+      else if (c%collect) then
+         c%nmore = c%nmore + 1
          k = index(e%message, new_line('a'))
          if (k == 0) k = len(e%message) + 1
          if (.not. allocated(c%more)) then

@@ -113,6 +113,9 @@ contains
                call add_reader_error(found, blk%name, error%message, where)
                if (allocated(error%more)) call add_more_errors(found, blk%name, error%more, &
                                                                where)
+               do k = 1, error%ndrop     ! past MAX_MORE: counted in the keyword's last line
+                  call found%record(blk%name, found%more_line(blk%name), where)
+               end do
                deallocate(error)
             end if
          end associate

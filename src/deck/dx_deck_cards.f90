@@ -10,7 +10,7 @@
 !> *INCLUDE, *PARAMETER. Fields and messages: dx_card (file:line:col, the card and a caret).
 module dx_deck_cards
    use dx_kinds, only: wp
-   use dx_error, only: error_t, set_error
+   use dx_error, only: error_t, set_error, MAX_MORE
    use dx_strings, only: upper, str, rstr
    use dx_model_input, only: string_t
    use dx_io_sys, only: sys_file_kind
@@ -537,6 +537,12 @@ contains
          call move_alloc(e, first)
          return
       end if
+      if (first%nmore >= MAX_MORE) then
+         first%ndrop = first%ndrop + 1
+         deallocate(e)
+         return
+      end if
+      first%nmore = first%nmore + 1
       k = index(e%message, new_line('a'))
       if (k == 0) k = len(e%message) + 1
       if (allocated(first%more)) then
