@@ -3,7 +3,8 @@
 #   make test   unit tests (debug build) and regression tests (release build)
 #   make bench  benchmarks (recorded in docs/performance.md)
 #   make studies  error-against-run-time studies (docs/studies/)
-#   make fuzz   N (default 10000) mutated decks and restart dumps through bin/dynx-asan (docs/errors.md)
+#   make fuzz   N (default 10000) mutated decks and restart dumps through the in-process harness
+#               bin/dynx-fuzz-debug, then NPROC (1000) through bin/dynx-debug processes (docs/errors.md)
 #   make restart-long  interrupt-and-continue on every scene deck, 20 kill -9 on the full Taylor impact
 #   make kill9-sweep   kill -9 at every write/rename/fsync/unlink of a short run (plot crash safety)
 #   make mpi-sweep     every regression deck serially and at NP 2, 3, 4: bitwise equal (about 15 min)
@@ -85,6 +86,12 @@ build/asan/libdynx.a: $(patsubst %.f90,build/asan/%.o,$(notdir $(LIB_SRC)))
 	ar rcs $@ $^
 bin/dynx-asan: build/asan/dynx.o $(MAIN_SRC:src/main/%.f90=build/asan/%.o) build/asan/libdynx.a | bin
 	$(FC) $(ASAN_FLAGS) -o $@ $^ $(LIBS)
+# the fuzz harness (src/tools/dynx_fuzz.f90) in the debug build (-fcheck=all, FPE traps): the
+# campaign's binary (make fuzz); and with the sanitizers too (FUZZ_BIN=bin/dynx-fuzz-asan)
+bin/dynx-fuzz-debug: build/debug/dynx_fuzz.o build/debug/libdynx.a | bin
+	$(FC) $(DBG_FLAGS) -o $@ $^ $(LIBS)
+bin/dynx-fuzz-asan: build/asan/dynx_fuzz.o build/asan/libdynx.a | bin
+	$(FC) $(ASAN_FLAGS) -o $@ $^ $(LIBS)
 bin/dynx-%: build/release/dynx_%.o build/release/libdynx.a | bin
 	$(FC) $(REL_FLAGS) -o $@ $^ $(LIBS)
 # FFTW is linked into the one tool that calls it (through src/tools/dx_fft.f90, the only
@@ -116,11 +123,11 @@ run: deps
 unit: $(UNIT_TESTS)
 	@sh scripts/run_unit_tests.sh $(UNIT_TESTS)
 
-regression: all bin/dynx-debug
+regression: all bin/dynx-debug bin/dynx-fuzz-debug
 	@sh scripts/run_regression.sh
 
 test: deps
-	@$(MAKE) --no-print-directory all debug bin/dynx-asan $(UNIT_TESTS) $(MPI_TESTS)
+	@$(MAKE) --no-print-directory all debug bin/dynx-asan bin/dynx-fuzz-debug $(UNIT_TESTS) $(MPI_TESTS)
 	@sh scripts/test_suites.sh $(UNIT_TESTS) -- $(MPI_TESTS)
 
 # long interrupt-and-continue and kill -9 checks: every scene deck in decks/, every mode
@@ -151,9 +158,17 @@ mpi-sweep: deps
 N ?= 10000
 JOBS ?= 2
 SEED ?=
+# N inputs through the in-process harness (bin/dynx-fuzz-debug: one process per batch of
+# 500, debug build with the FPE traps); then NPROC inputs (default 1000, half of them
+# mutated restart dumps that run their cycles) each through its own bin/dynx-debug process
+NPROC ?= 1000
+FUZZ_BIN ?= bin/dynx-fuzz-debug
 fuzz: deps
-	@$(MAKE) --no-print-directory bin/dynx-asan
-	@python3 scripts/fuzz_decks.py --count $(N) --jobs $(JOBS) --watchdog 10 $(if $(SEED),--seed $(SEED))
+	@$(MAKE) --no-print-directory bin/dynx-debug $(FUZZ_BIN)
+	@python3 scripts/fuzz_decks.py --count $(N) --jobs $(JOBS) --watchdog 10 $(if $(SEED),--seed $(SEED)) \
+	   --harness $(FUZZ_BIN) --dynx bin/dynx-debug --workdir build/fuzz
+	@python3 scripts/fuzz_decks.py --count $(NPROC) --jobs $(JOBS) --watchdog 10 $(if $(SEED),--seed $(SEED)) \
+	   --restart-share 0.5 --dynx bin/dynx-debug --workdir build/fuzz-proc
 
 bench: deps
 	@$(MAKE) --no-print-directory all $(MPI_BENCH)

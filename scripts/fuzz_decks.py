@@ -314,6 +314,199 @@ def run_one(args, idx, name, text, files, base, workdir, dynx, timeout):
     return idx, name, ok, outcome, cls, first, secs, len(text)
 
 
+def write_input(d, text, files, name):
+    """The mutant's folder: deck.k (dump mutants: dump.h5) and its extra files."""
+    os.makedirs(d, exist_ok=True)
+    for fn, data in files.items():
+        with open(os.path.join(d, fn), 'wb') as f:
+            f.write(data)
+    fn = 'dump.h5' if name.startswith('restart-dump') else 'deck.k'
+    with open(os.path.join(d, fn), 'wb') as f:
+        f.write(text)
+
+
+def list_line(idx, name, d, base):
+    """The harness's list line of an input (src/tools/dynx_fuzz.f90): index, kind, folder,
+    deck, extra; the same commands as run_one's per-process runs."""
+    if base is None:
+        return '%d\tcheck\t%s\tdeck.k\t' % (idx, d)
+    if name.startswith('restart-dump'):
+        return '%d\tdump\t%s\t%s\tdump.h5' % (idx, d, base)
+    return '%d\trdeck\t%s\t%s\tdeck.k' % (idx, d, base)
+
+
+def judge(name, rc, err):
+    """classify() plus the dump rules of run_one: (ok, outcome, class, first)."""
+    ok, outcome, cls, first = classify(rc, err)
+    if name.startswith('restart-dump') and not ok and outcome.startswith('exit 2 without'):
+        ok, outcome = True, 'exit 2'
+    if name.startswith('restart-dump') and outcome == 'exit 4' and 'dump.h5' in err:
+        ok = True
+    return ok, outcome, cls, first
+
+
+def harness_env():
+    env = dict(os.environ)
+    env['ASAN_OPTIONS'] = ('detect_leaks=0:halt_on_error=1:abort_on_error=0:'
+                           'allocator_may_return_null=1')
+    env['UBSAN_OPTIONS'] = 'print_stacktrace=1:halt_on_error=1'
+    env['GFORTRAN_ERROR_BACKTRACE'] = '1'
+    return env
+
+
+def harness_verdicts(harness, items, workdir, tag, watchdog):
+    """Run the in-process harness over items [(idx, name, folder, base)]: one process for
+    the lot, restarted after an input that crashed or hung it (the watchdog: no verdict
+    line within `watchdog` seconds of the input's start). Returns {idx: (rc, err, secs,
+    crash)}: rc and err as a per-process run's exit code and stderr would give them for
+    that input; crash: the harness died or hung on it (err is then its stderr)."""
+    import select
+    lst = os.path.join(workdir, 'list-%s.txt' % tag)
+    with open(lst, 'w') as f:
+        for idx, name, d, base in items:
+            f.write(list_line(idx, name, d, base) + '\n')
+    out = {}
+    first = 1
+    env = harness_env()
+    errpath = os.path.join(workdir, 'stderr-%s.txt' % tag)
+    while first <= len(items):
+        with open(errpath, 'wb') as ef:
+            p = subprocess.Popen([harness, lst, str(first)], stdout=subprocess.PIPE,
+                                 stderr=ef, env=env, cwd=workdir)
+        fd = p.stdout.fileno()
+        buf = b''
+        cur, t_cur, done, hung = None, None, False, False
+        while True:
+            wait = None if cur is None else max(0.0, watchdog + 1 - (time.time() - t_cur))
+            r, _, _ = select.select([fd], [], [], wait)
+            if not r:                                  # no verdict in time: a hang
+                hung = True
+                p.kill()
+                break
+            chunk = os.read(fd, 65536)
+            if not chunk:
+                break
+            buf += chunk
+            while b'\n' in buf:
+                ln, buf = buf.split(b'\n', 1)
+                ln = ln.decode('latin-1')
+                if ln.startswith('B '):
+                    cur, t_cur = int(ln[2:]), time.time()
+                elif ln.startswith('E '):
+                    head, _, msg = ln.partition(' | ')
+                    _, i, code, secs = head.split()
+                    i, code, secs = int(i), int(code), float(secs)
+                    msg = msg.replace('\x1f', '\n')
+                    err = ('dynx: error: ' + msg + '\n') if code != 0 else ''
+                    if secs > watchdog:
+                        code = 125                    # ended, but past the watchdog
+                    out[i] = (code, err, secs, False)
+                    cur = None
+                elif ln.startswith('L '):              # state left behind by an input
+                    _, i, what = ln.split(' ', 2)
+                    out[int(i)] = (1, 'Error termination: harness state leak: ' + what,
+                                   0.0, True)
+                elif ln == 'DONE':
+                    done = True
+        p.wait()
+        if done:
+            break
+        with open(errpath, 'rb') as ef:
+            err = ef.read().decode('latin-1')[-6000:]
+        if cur is None:                               # died between inputs: harness defect
+            raise RuntimeError('dynx-fuzz died outside an input (exit %d): %s' % (
+                p.returncode, err[-500:]))
+        rc = 124 if hung else p.returncode
+        secs = time.time() - t_cur
+        out[cur] = (rc, err, secs, True)
+        pos = [k for k, it in enumerate(items) if it[0] == cur][0]
+        first = pos + 2                               # the next input after the culprit
+    return out
+
+
+def run_batch(args, batch, workdir, harness, tag):
+    """A batch of inputs through the harness; the same result tuples as run_one."""
+    items = []
+    for idx, name, text, files, base in batch:
+        d = os.path.join(workdir, 'c%06d' % idx)
+        write_input(d, text, files, name)
+        items.append((idx, name, d, base))
+    verd = harness_verdicts(harness, items, workdir, tag, args.watchdog)
+    res = []
+    for (idx, name, text, files, base), (_, _, d, _) in zip(batch, items):
+        rc, err, secs, crash = verd[idx]
+        if crash and rc > 128:
+            rc = -(rc - 128) if rc < 255 else rc
+        ok, outcome, cls, first = judge(name, rc, err)
+        if ok:
+            shutil.rmtree(d, ignore_errors=True)
+        else:
+            keep = os.path.join(workdir, 'fail-%06d' % idx)
+            shutil.rmtree(keep, ignore_errors=True)
+            os.rename(d, keep)
+            with open(os.path.join(keep, 'why.txt'), 'w') as f:
+                f.write('source %s\noutcome %s\nexit %d (in-process harness %s)\n'
+                        'replay: %s\n\n%s\n' % (name, outcome, rc, harness,
+                                                list_line(idx, name, keep, base), err[-6000:]))
+        res.append((idx, name, ok, outcome, cls, first, secs, len(text)))
+    if all(r[2] for r in res):
+        for fn in ('list-%s.txt' % tag, 'stderr-%s.txt' % tag):
+            try:
+                os.remove(os.path.join(workdir, fn))
+            except OSError:
+                pass
+    return res
+
+
+def proc_verdict(dynx, d, name, base):
+    """(exit code, first error line) of the per-process run of an input (as run_one)."""
+    env = harness_env()
+    if base is None:
+        cmd = [dynx, '--check', '-i', 'deck.k']
+    elif name.startswith('restart-dump'):
+        cmd = [dynx, '-i', base, '-o', 'out', '-r', 'dump.h5']
+    else:
+        cmd = [dynx, '--check', '-i', base, '-R', 'deck.k']
+    p = subprocess.run(cmd, capture_output=True, env=env, cwd=d, timeout=300)
+    first = ''
+    for l in p.stderr.decode('latin-1').splitlines():
+        if l.startswith('dynx: error: '):
+            first = l[len('dynx: error: '):]
+            break
+    return p.returncode, first[:300]
+
+
+def compare(args, inputs, dynx, harness):
+    """--compare: every input through the harness (one process) and through its own
+    dynx process; the verdicts (exit code, first error line) must be equal."""
+    items = []
+    for idx, name, text, files, base in inputs:
+        d = os.path.join(args.workdir, 'c%06d' % idx)
+        write_input(d, text, files, name)
+        items.append((idx, name, d, base))
+    t0 = time.time()
+    verd = harness_verdicts(harness, items, args.workdir, 'cmp', args.watchdog)
+    th = time.time() - t0
+    t0 = time.time()
+    ndiff = 0
+    codes = collections.Counter()
+    for idx, name, d, base in items:
+        rc, first = proc_verdict(dynx, d, name, base)
+        hrc, herr, _, crash = verd[idx]
+        hfirst = herr[len('dynx: error: '):].split('\n')[0] if herr.startswith('dynx: error: ') else ''
+        codes[rc] += 1
+        if crash or rc != hrc or first != hfirst[:300]:
+            ndiff += 1
+            print('fuzz_decks: DIFFER %06d %s: process exit %d %r, harness exit %d %r' % (
+                idx, name, rc, first[:200], hrc, hfirst[:200]))
+    tp = time.time() - t0
+    print('fuzz_decks: compare: %d inputs, %d equal verdicts (exit code and first error '
+          'line), %d differ; exits %s; harness %.1f s, processes %.1f s' % (
+              len(items), len(items) - ndiff, ndiff,
+              ', '.join('%d: %d' % kv for kv in sorted(codes.items())), th, tp))
+    return 1 if ndiff else 0
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument('--count', type=int, default=300)
@@ -329,6 +522,16 @@ def main():
                          'every dataset is read and restored at the restart whatever the cycle, '
                          'so a late dump only saves the cycles after it (before: 5)')
     ap.add_argument('--dynx', default=None)
+    ap.add_argument('--harness', default=None,
+                    help='the in-process harness (bin/dynx-fuzz-debug): every input through '
+                         'one process per batch (src/tools/dynx_fuzz.f90); without it, one '
+                         'dynx process per input (the solver part: dump mutants run cycles)')
+    ap.add_argument('--batch', type=int, default=500,
+                    help='inputs per harness process (--harness)')
+    ap.add_argument('--compare', action='store_true',
+                    help='run every input through --harness and through its own --dynx '
+                         'process and compare the verdicts (restart dumps excluded: the '
+                         'process runs their cycles, the harness stops at the restored state)')
     ap.add_argument('--workdir', default=os.path.join(ROOT, 'build', 'fuzz'))
     ap.add_argument('--report', default=None, help='write the message-class table (markdown)')
     ap.add_argument('--profile', default=None,
@@ -344,9 +547,18 @@ def main():
         if not os.access(dynx, os.X_OK):
             dynx = os.path.join(ROOT, 'bin', 'dynx-debug')
     dynx = os.path.abspath(dynx)
-    if not os.access(dynx, os.X_OK):
+    if not os.access(dynx, os.X_OK) and not args.harness:
         print('fuzz_decks: %s not found (make debug or make bin/dynx-asan)' % dynx)
         return 2
+    harness = os.path.abspath(args.harness) if args.harness else None
+    if harness and not os.access(harness, os.X_OK):
+        print('fuzz_decks: %s not found (make bin/dynx-fuzz-debug)' % harness)
+        return 2
+    if args.compare:
+        if not harness:
+            print('fuzz_decks: --compare needs --harness')
+            return 2
+        args.restart_share = 0.0
     seed = args.seed if args.seed is not None else random.randrange(1 << 30)
     rng = random.Random(seed)
     src = decks()
@@ -378,8 +590,12 @@ def main():
                 ncount['rdeck'] += 1
             yield (i, name + ':' + '+'.join(tags), text, files, base)
 
+    if args.compare:
+        return compare(args, list(gen()), dynx, harness)
     outcomes = collections.Counter()
     classes = collections.OrderedDict()
+    kinds = collections.Counter()
+    tmax = [0.0, '']
     fails = []
     window = 8 * max(1, args.jobs)
     prof = open(args.profile, 'w') if args.profile else None
@@ -388,7 +604,20 @@ def main():
         it = gen()
         done_all = False
         while pending or not done_all:
-            while not done_all and len(pending) < window:
+            while not done_all and len(pending) < (window if not harness else
+                                                    max(1, args.jobs)):
+                if harness:
+                    batch = []
+                    for _ in range(args.batch):
+                        try:
+                            batch.append(next(it))
+                        except StopIteration:
+                            done_all = True
+                            break
+                    if batch:
+                        pending.add(ex.submit(run_batch, args, batch, args.workdir, harness,
+                                              'b%06d' % batch[0][0]))
+                    continue
                 try:
                     i, n, t, f, b = next(it)
                 except StopIteration:
@@ -399,8 +628,15 @@ def main():
             if not pending:
                 break
             finished, pending = cf.wait(pending, return_when=cf.FIRST_COMPLETED)
+            results = []
             for fu in finished:
-                idx, name, ok, outcome, cls, first, secs, nbytes = fu.result()
+                r = fu.result()
+                results.extend(r if harness else [r])
+            for idx, name, ok, outcome, cls, first, secs, nbytes in results:
+                for k in name.split(':', 1)[1].split('+'):
+                    kinds[k] += 1
+                if secs > tmax[0]:
+                    tmax[:] = [secs, '%06d %s' % (idx, name)]
                 if prof is not None:
                     prof.write('%d %.4f %d %s %s\n' % (idx, secs, nbytes,
                                                        outcome.replace(' ', '_'), name))
@@ -431,7 +667,8 @@ def main():
               cpu, args.count, time.time() - tm0, cpu / max(args.count, 1),
               max(1, args.jobs) * args.count / max(cpu, 1e-9), max(1, args.jobs)))
     print('fuzz_decks: %d inputs (seed %d, %s, %d jobs) in %.1f s (%.2f inputs/s): %s' % (
-        args.count, seed, os.path.basename(dynx), args.jobs, dt, args.count / max(dt, 1e-9),
+        args.count, seed, os.path.basename(harness or dynx) + (' in-process' if harness else ''),
+        args.jobs, dt, args.count / max(dt, 1e-9),
         ', '.join('%s %d' % kv for kv in sorted(outcomes.items()))))
     ncrash = sum(v for k, v in outcomes.items() if k.startswith('crash') or
                  k.startswith('signal') or (k.startswith('exit') and k not in
@@ -443,6 +680,8 @@ def main():
     print('fuzz_decks: %d of the inputs were restart decks (-R), %d restart dumps (-r)' % (
         ncount['rdeck'], ncount['dump']))
     print('fuzz_decks: %d distinct exit-2 message classes' % len(classes))
+    print('fuzz_decks: %d distinct mutation kinds (%s); longest input %.3f s (%s)' % (
+        len(kinds), ', '.join('%s %d' % kv for kv in sorted(kinds.items())), tmax[0], tmax[1]))
     for idx, name, outcome, first in sorted(fails):
         print('  FAIL %06d %s: %s: %s (kept in %s/fail-%06d)' % (idx, name, outcome, first[:160],
                                                                   args.workdir, idx))

@@ -41,7 +41,8 @@ suite mpi sh scripts/run_mpi_tests.sh $mpi
 suite partition sh scripts/run_partition_tests.sh
 suite regression sh scripts/run_regression.sh
 suite diskfull sh scripts/diskfull_check.sh
-suite fuzz python3 scripts/fuzz_decks.py --count 1000 --seed 7 --jobs 2 --restart-share 0.05
+suite fuzz python3 scripts/fuzz_decks.py --count 2000 --seed 7 --jobs 2 --harness bin/dynx-fuzz-debug --dynx bin/dynx-debug
+suite fuzz-proc python3 scripts/fuzz_decks.py --count 200 --seed 7 --jobs 2 --restart-share 0.5 --workdir build/fuzz-proc
 suite kill9 python3 scripts/kill9_check.py --runs 20 --seed 7
 suite kill9-sweep-dump python3 scripts/kill9_sweep.py --endtim 0.009 --target d3dump02 --stride 7
 suite kill9-sweep python3 scripts/kill9_sweep.py --workdir build/kill9_sweep_sample --stride 23

@@ -5,12 +5,16 @@
 !>    call c%int('MID', 0, mid); call c%real('FS', 0.0_wp, fs, min=0.0_wp); call c%done(error)
 !> It remembers where each named field was read, so a later check (a material's setup) can
 !> point at the field by name (c%fail) without parsing a message.
+!> Collect mode (c%collect, set for `dynx --check` by dx_deck_cards' deck_cursor): the reads
+!> go on after an error, and every later error of the block is kept too (the first line of
+!> each, in error%more), so --check lists every bad field of a block in one run; without it
+!> the first error stops the reading of the block (the later reads give their defaults).
 !> Reference: LS-DYNA Keyword User's Manual, Vol. I, "General card format" (fixed 10-column
 !> fields, 8 per card; 20 columns with *KEYWORD LONG=Y or the '+' suffix; free format with
 !> commas) and *PARAMETER.
 module dx_card
    use dx_kinds, only: wp
-   use dx_error, only: error_t
+   use dx_error, only: error_t, MAX_MORE
    use dx_strings, only: str, rstr
    use dx_card_fields, only: card_line_t, block_t, param_t, find_param, std_widths, &
                              data_start, block_title, ncards, card_is_blank, field_text, &
@@ -41,6 +45,10 @@ module dx_card
       type(field_pos_t), allocatable :: seen(:)
       integer :: nseen = 0
       type(error_t), allocatable :: error   !< the first error
+      logical :: collect = .false.          !< keep reading after an error (--check)
+      integer :: nerr = 0                   !< errors so far (collect: all of them)
+      character(:), allocatable :: more     !< collect: first lines of the later errors
+      integer :: nmore = 0, ndrop = 0       !< lines in more; later errors only counted
    contains
       procedure :: next => cursor_next      !< go to the next data card
       procedure :: seek => cursor_seek      !< go to card ic of the block (field 0)
@@ -64,6 +72,7 @@ module dx_card
       procedure :: ncard => cursor_ncard    !< number of cards in the block
       procedure :: text_field => cursor_text_field  !< field k (widths w) of the card as text
       procedure :: ok => cursor_ok          !< no error so far
+      procedure :: halt => cursor_halt      !< stop reading the block: an error, not collecting
       procedure :: done => cursor_done      !< hand the first error (if any) to the caller
       procedure :: title => cursor_title    !< the _TITLE card text
       procedure :: card_line => cursor_card_line  !< line number of the current card
@@ -162,12 +171,50 @@ contains
       cursor_ok = .not. allocated(c%error)
    end function cursor_ok
 
+   !> Whether a reader stops reading the block now: an error and no collect mode (collect
+   !> mode: the next cards are read too, each error is kept).
+   pure logical function cursor_halt(c)
+      class(card_t), intent(in) :: c
+      cursor_halt = allocated(c%error) .and. .not. c%collect
+   end function cursor_halt
+
    !> Move the first error (if any) to error.
    subroutine cursor_done(c, error)
       class(card_t), intent(inout) :: c
       type(error_t), allocatable, intent(out) :: error
-      if (allocated(c%error)) call move_alloc(c%error, error)
+      if (allocated(c%error)) then
+         if (allocated(c%more)) c%error%more = c%more
+         c%error%nmore = c%nmore
+         c%error%ndrop = c%ndrop
+         call move_alloc(c%error, error)
+      end if
    end subroutine cursor_done
+
+   !> Keep the error e: the first of the block, or (collect mode) one more line.
+   subroutine keep(c, e)
+      class(card_t), intent(inout) :: c
+      type(error_t), allocatable, intent(inout) :: e
+      integer :: k
+      if (.not. allocated(e)) return
+      c%nerr = c%nerr + 1
+      if (.not. allocated(c%error)) then
+         call move_alloc(e, c%error)
+         return
+      end if
+      if (c%collect .and. c%nmore >= MAX_MORE) then
+         c%ndrop = c%ndrop + 1
+      else if (c%collect) then
+         c%nmore = c%nmore + 1
+         k = index(e%message, new_line('a'))
+         if (k == 0) k = len(e%message) + 1
+         if (.not. allocated(c%more)) then
+            c%more = e%message(1:k - 1)
+         else
+            c%more = c%more//new_line('a')//e%message(1:k - 1)
+         end if
+      end if
+      deallocate(e)
+   end subroutine keep
 
    function cursor_title(c) result(t)
       class(card_t), intent(in) :: c
@@ -214,19 +261,28 @@ contains
       integer, intent(in) :: def
       integer, intent(out) :: val
       integer, intent(in), optional :: min, max
+      type(error_t), allocatable :: e
+      integer :: n0
+      n0 = c%nerr
       c%k = c%k + 1
       val = def
-      if (allocated(c%error)) return
+      if (allocated(c%error) .and. .not. c%collect) return
       call remember(c, name)
       if (c%k > c%nw) return
-      call field_int(c%file, c%params, c%blk, c%ic, c%k, c%w(1:c%nw), name, def, val, c%error)
-      if (allocated(c%error)) return
+      call field_int(c%file, c%params, c%blk, c%ic, c%k, c%w(1:c%nw), name, def, val, e)
+      if (allocated(e)) then
+         val = def
+         call keep(c, e)
+         return
+      end if
       if (present(min)) then
          if (val < min) call c%fail(name, 'must be >= '//str(min)//', got '//str(val))
       end if
       if (present(max)) then
          if (val > max) call c%fail(name, 'must be <= '//str(max)//', got '//str(val))
       end if
+      ! collect mode reads on: a value out of its bounds is not handed on, its default is
+      if (c%collect .and. c%nerr > n0) val = def
    end subroutine cursor_int
 
    !> Next field as a real NAME (blank: def); optional bounds min <= val <= max, val > gt.
@@ -236,14 +292,20 @@ contains
       real(wp), intent(in) :: def
       real(wp), intent(out) :: val
       real(wp), intent(in), optional :: min, max, gt
+      type(error_t), allocatable :: e
+      integer :: n0
+      n0 = c%nerr
       c%k = c%k + 1
       val = def
-      if (allocated(c%error)) return
+      if (allocated(c%error) .and. .not. c%collect) return
       call remember(c, name)
       if (c%k > c%nw) return
-      call field_real(c%file, c%params, c%blk, c%ic, c%k, c%w(1:c%nw), name, def, val, &
-                      c%error)
-      if (allocated(c%error)) return
+      call field_real(c%file, c%params, c%blk, c%ic, c%k, c%w(1:c%nw), name, def, val, e)
+      if (allocated(e)) then
+         val = def
+         call keep(c, e)
+         return
+      end if
       if (present(min)) then
          if (.not. (val >= min)) call c%fail(name, 'must be >= '//bound(min)//', got '//rstr(val))
       end if
@@ -253,6 +315,7 @@ contains
       if (present(gt)) then
          if (.not. (val > gt)) call c%fail(name, 'must be > '//bound(gt)//', got '//rstr(val))
       end if
+      if (c%collect .and. c%nerr > n0) val = def
    end subroutine cursor_real
 
    !> A bound as written in a message: an integral value without exponent (0, 1), else rstr.
@@ -272,23 +335,28 @@ contains
       class(card_t), intent(inout) :: c
       character(*), intent(in) :: name, what
       integer :: j
-      if (allocated(c%error)) return
+      type(error_t), allocatable :: e
+      if (allocated(c%error) .and. .not. c%collect) return
       do j = c%nseen, 1, -1
          if (c%seen(j)%name == name) then
             call error_at_field(c%file, c%blk, c%seen(j)%ic, c%seen(j)%k, c%w(1:c%nw), name, &
-                                what, c%error)
+                                what, e)
+            call keep(c, e)
             return
          end if
       end do
-      call error_at_block(c%file, c%blk, data_start(c%blk), 'field '//name//': '//what, c%error)
+      call error_at_block(c%file, c%blk, data_start(c%blk), 'field '//name//': '//what, e)
+      call keep(c, e)
    end subroutine cursor_fail
 
    !> Error at the current field (the last read or skipped) of the current card, named NAME.
    subroutine cursor_fail_here(c, name, what)
       class(card_t), intent(inout) :: c
       character(*), intent(in) :: name, what
-      if (allocated(c%error)) return
-      call error_at_field(c%file, c%blk, c%ic, max(c%k, 1), c%w(1:c%nw), name, what, c%error)
+      type(error_t), allocatable :: e
+      if (allocated(c%error) .and. .not. c%collect) return
+      call error_at_field(c%file, c%blk, c%ic, max(c%k, 1), c%w(1:c%nw), name, what, e)
+      call keep(c, e)
    end subroutine cursor_fail_here
 
    !> Error about card ic as a whole (the card is shown, no caret).
@@ -296,16 +364,20 @@ contains
       class(card_t), intent(inout) :: c
       integer, intent(in) :: ic
       character(*), intent(in) :: what
-      if (allocated(c%error)) return
-      call error_at_card(c%file, c%blk, ic, what, c%error)
+      type(error_t), allocatable :: e
+      if (allocated(c%error) .and. .not. c%collect) return
+      call error_at_card(c%file, c%blk, ic, what, e)
+      call keep(c, e)
    end subroutine cursor_fail_card
 
    !> Error when the block holds more than nmax cards (a card dynx would otherwise ignore).
    subroutine cursor_max_cards(c, nmax)
       class(card_t), intent(inout) :: c
       integer, intent(in) :: nmax
-      if (allocated(c%error)) return
-      call max_cards_check(c%file, c%blk, nmax, c%error)
+      type(error_t), allocatable :: e
+      if (allocated(c%error) .and. .not. c%collect) return
+      call max_cards_check(c%file, c%blk, nmax, e)
+      call keep(c, e)
    end subroutine cursor_max_cards
 
    !> Next field NAME: an unsupported option, error unless blank or 0 ('value V is not
@@ -314,9 +386,11 @@ contains
       class(card_t), intent(inout) :: c
       character(*), intent(in) :: name, why
       real(wp) :: v
+      integer :: n0
+      n0 = c%nerr
       call c%real(name, 0.0_wp, v)
-      if (c%ok() .and. v /= 0.0_wp) call c%fail(name, 'value '//rstr(v)//' is not supported: '// &
-                                                why)
+      if (c%nerr == n0 .and. v /= 0.0_wp) call c%fail(name, 'value '//rstr(v)// &
+                                                       ' is not supported: '//why)
    end subroutine cursor_zero
 
    !> Next field NAME: an integer option dynx lacks, error unless blank or 0 ('nonzero value
@@ -324,10 +398,11 @@ contains
    subroutine cursor_zero_int(c, name, why)
       class(card_t), intent(inout) :: c
       character(*), intent(in) :: name, why
-      integer :: v
+      integer :: v, n0
+      n0 = c%nerr
       call c%int(name, 0, v)
-      if (c%ok() .and. v /= 0) call c%fail(name, 'nonzero value '//str(v)// &
-                                           ' is not supported: '//why)
+      if (c%nerr == n0 .and. v /= 0) call c%fail(name, 'nonzero value '//str(v)// &
+                                                  ' is not supported: '//why)
    end subroutine cursor_zero_int
 
    !> Next field NAME: a real option dynx lacks, error unless blank or 0.
@@ -335,9 +410,11 @@ contains
       class(card_t), intent(inout) :: c
       character(*), intent(in) :: name, why
       real(wp) :: v
+      integer :: n0
+      n0 = c%nerr
       call c%real(name, 0.0_wp, v)
-      if (c%ok() .and. v /= 0.0_wp) call c%fail(name, 'nonzero value '//rstr(v)// &
-                                                ' is not supported: '//why)
+      if (c%nerr == n0 .and. v /= 0.0_wp) call c%fail(name, 'nonzero value '//rstr(v)// &
+                                                       ' is not supported: '//why)
    end subroutine cursor_zero_real
 
    !> Next field as an id NAME > 0 (blank: 0, an error); the message is what (default 'an id
@@ -347,8 +424,10 @@ contains
       character(*), intent(in) :: name
       integer, intent(out) :: val
       character(*), intent(in), optional :: what
+      integer :: n0
+      n0 = c%nerr
       call c%int(name, 0, val)
-      if (.not. c%ok() .or. val > 0) return
+      if (c%nerr /= n0 .or. val > 0) return
       if (present(what)) then
          call c%fail(name, what//', got '//str(val))
       else
@@ -375,7 +454,9 @@ contains
       class(card_t), intent(inout) :: c
       integer, intent(in) :: ic
       character(*), intent(in) :: what
-      if (allocated(c%error)) return
-      call error_at_block(c%file, c%blk, ic, what, c%error)
+      type(error_t), allocatable :: e
+      if (allocated(c%error) .and. .not. c%collect) return
+      call error_at_block(c%file, c%blk, ic, what, e)
+      call keep(c, e)
    end subroutine cursor_fail_block
 end module dx_card

@@ -11,12 +11,19 @@ module dx_error
 
    integer, parameter :: EXIT_OK = 0, EXIT_INPUT = 2, EXIT_NUMERIC = 3, EXIT_IO = 4
    integer, parameter :: EXIT_CHECKPOINT = 5   !< clean stop with a restart dump
+   !> further errors of one block kept as text (--check); the rest are counted (a damaged
+   !> block of thousands of cards: the text grew with the square of their number)
+   integer, parameter, public :: MAX_MORE = 200
 
    type :: error_t
       character(:), allocatable :: message   !< full message, may span lines
       integer :: code = EXIT_INPUT           !< exit code the main program uses
       character(:), allocatable :: field     !< the input field at fault (set_field_error)
       character(:), allocatable :: detail    !< the message without the 'field NAME: ' prefix
+      character(:), allocatable :: more      !< further errors of the same keyword block, one
+                                             !< line each (dynx --check lists them: dx_card)
+      integer :: nmore = 0                   !< lines in more (at most MAX_MORE)
+      integer :: ndrop = 0                   !< further errors past MAX_MORE, only counted
    end type error_t
 
    interface

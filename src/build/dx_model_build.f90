@@ -350,11 +350,11 @@ contains
       logical :: ok
       real(wp), allocatable :: vol(:)
       real(wp) :: hb(3), hm, asp, warp, cj
-      integer :: kc, nasp, nwarp, nfold
+      integer :: kc, nasp, nwarp, nfold, ncoin, kj
       integer, parameter :: NLIST = 10      ! elements named per kind of warning
       character(:), allocatable :: w
       ne = inp%ne
-      nasp = 0; nwarp = 0; nfold = 0
+      nasp = 0; nwarp = 0; nfold = 0; ncoin = 0
       model%ne = ne
       allocate(conn(MAX_NEN, ne), vol(ne), etyp(ne), grp(ne), model%elem_part(ne), &
                model%elem_block(ne), model%elem_pos(ne))
@@ -447,6 +447,28 @@ contains
                   '(volume '//rstr(vol(e))//'; flat or collapsed: check its nodes N1..N8)')
                return
             end if
+            ! coincident nodes: two distinct node ids at one point (within 1e-12 of the
+            ! largest extent), a zero-length edge the volume check above does not see when
+            ! the rest of the element keeps a volume: a warning, as the shape checks below
+            ! (the element runs as a collapsed one; a repeated node id is the way to ask for
+            ! a degenerate element, and the nodes may separate during the run)
+            kj = 0
+            do k = 2, nen
+               do j = 1, k - 1
+                  if (kj /= 0) exit
+                  if (conn(k, e) == conn(j, e)) cycle
+                  hb = abs(model%x0(:, conn(k, e)) - model%x0(:, conn(j, e)))
+                  if (all(hb <= 2.0e-12_wp*hm)) kj = 100*j + k
+               end do
+            end do
+            if (kj /= 0) then
+               ncoin = ncoin + 1
+               if (ncoin <= NLIST) call log_warn(w//'element '//str(lab)//': nodes '// &
+                  str(model%node_label(conn(kj/100, e)))//' and '// &
+                  str(model%node_label(conn(mod(kj, 100), e)))//' are at the same point '// &
+                  '(distinct ids, a zero-length edge): a collapsed element; repeat one '// &
+                  'node id for a degenerate element, or move the node')
+            end if
             ! shape (elem_quality; bounds in docs/extreme-cases.md, "Geometry checks"): a
             ! folded corner, a thin or a warped element is a warning (one-point elements run
             ! with them, as in LS-DYNA; a negative total volume is the error above)
@@ -472,6 +494,8 @@ contains
       end do
       if (nfold > NLIST) call log_warn('*ELEMENT_SOLID: '//str(nfold - NLIST)// &
          ' more elements folded at a corner ('//str(nfold)//' in all)')
+      if (ncoin > NLIST) call log_warn('*ELEMENT_SOLID: '//str(ncoin - NLIST)// &
+         ' more elements with two nodes at the same point ('//str(ncoin)//' in all)')
       if (nasp > NLIST) call log_warn('*ELEMENT_SOLID: '//str(nasp - NLIST)// &
          ' more elements with an aspect ratio above '//rstr(ASPECT_WARN)//' ('//str(nasp)//' in all)')
       if (nwarp > NLIST) call log_warn('*ELEMENT_SOLID: '//str(nwarp - NLIST)// &

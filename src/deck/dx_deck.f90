@@ -72,6 +72,7 @@ contains
       call input_init(inp)
       call read_cards(path, deck, error)
       if (allocated(error)) return
+      deck%check = checking
       reg = new_registry()
       do ib = 1, deck%nblocks
          associate (blk => deck%blocks(ib))
@@ -112,6 +113,11 @@ contains
             if (allocated(error)) then
                if (.not. checking) return
                call add_reader_error(found, blk%name, error%message, where)
+               if (allocated(error%more)) call add_more_errors(found, blk%name, error%more, &
+                                                               where)
+               do k = 1, error%ndrop     ! past MAX_MORE: counted in the keyword's last line
+                  call found%record(blk%name, found%more_line(blk%name), where)
+               end do
                deallocate(error)
             end if
          end associate
@@ -145,6 +151,24 @@ contains
       if (allocated(error)) return
       call emc_finish(inp, error)
    end subroutine read_deck_input
+
+   !> The further errors of a block (error%more, one per line: every bad field, dx_card's
+   !> collect mode) as --check findings, each with its own place.
+   subroutine add_more_errors(found, name, more, where0)
+      type(check_list_t), intent(inout) :: found
+      character(*), intent(in) :: name, more, where0
+      integer :: a, k
+      a = 1
+      do while (a <= len(more))
+         k = index(more(a:), new_line('a'))
+         if (k == 0) then
+            call add_reader_error(found, name, more(a:), where0)
+            exit
+         end if
+         call add_reader_error(found, name, more(a:a + k - 2), where0)
+         a = a + k
+      end do
+   end subroutine add_more_errors
 
    !> A reader's error as a --check finding: its first line without the file:line:col
    !> prefix (the place is kept apart), so the same problem on many cards counts once.

@@ -10,7 +10,7 @@
 !> *INCLUDE, *PARAMETER. Fields and messages: dx_card (file:line:col, the card and a caret).
 module dx_deck_cards
    use dx_kinds, only: wp
-   use dx_error, only: error_t, set_error
+   use dx_error, only: error_t, set_error, MAX_MORE
    use dx_strings, only: upper, str, rstr
    use dx_model_input, only: string_t
    use dx_io_sys, only: sys_file_kind
@@ -24,7 +24,7 @@ module dx_deck_cards
    public :: card_t, block_t, deck_t, param_t, read_cards, get_int, get_list_id, get_real, get_text, &
              field_error, block_error, card_error, std_widths, ncards, card_where, &
              card_is_blank, check_max_cards, MAX_INCLUDE_DEPTH, data_start, block_title, &
-             deck_cursor
+             deck_cursor, collect_error
 
    integer, parameter :: MAX_INCLUDE_DEPTH = 20
 
@@ -37,6 +37,7 @@ module dx_deck_cards
       integer :: nparams = 0
       character(:), allocatable :: title
       logical :: long = .false.             !< *KEYWORD LONG=Y seen
+      logical :: check = .false.            !< --check: card cursors collect every error
       !> blank cards stripped from the end of each block (a blank line may stand for a
       !> card of defaults: dx_deck gives one back when a block has no data card else)
       integer, allocatable :: trailing(:)
@@ -526,6 +527,32 @@ contains
    ! ----------------------------------------------------------------------------------------
    ! the deck's view of the dx_card field readers: the file name and *PARAMETER table of deck
 
+   !> Keep error e of a card: the first of the block in first, a later one (--check
+   !> lists every bad card) as one more line of first%more (its first line).
+   subroutine collect_error(first, e)
+      type(error_t), allocatable, intent(inout) :: first, e
+      integer :: k
+      if (.not. allocated(e)) return
+      if (.not. allocated(first)) then
+         call move_alloc(e, first)
+         return
+      end if
+      if (first%nmore >= MAX_MORE) then
+         first%ndrop = first%ndrop + 1
+         deallocate(e)
+         return
+      end if
+      first%nmore = first%nmore + 1
+      k = index(e%message, new_line('a'))
+      if (k == 0) k = len(e%message) + 1
+      if (allocated(first%more)) then
+         first%more = first%more//new_line('a')//e%message(1:k - 1)
+      else
+         first%more = e%message(1:k - 1)
+      end if
+      deallocate(e)
+   end subroutine collect_error
+
    !> A card cursor on the data cards of blk (dx_card).
    subroutine deck_cursor(deck, blk, c)
       type(deck_t), intent(in) :: deck
@@ -537,6 +564,7 @@ contains
       else
          call open_card(deck%files(blk%ifile)%s, none, blk, c)
       end if
+      c%collect = deck%check     ! --check: every bad field of the block, not the first only
    end subroutine deck_cursor
 
    !> Integer field k (widths w) of card ic; blank or missing -> def.

@@ -26,7 +26,14 @@ module dx_deck_check
       integer :: family = 0
       character(:), allocatable :: what, where
       integer :: count = 0
+      character(:), allocatable :: key      !< the keyword (its findings are capped)
    end type finding_t
+
+   !> distinct findings listed per keyword; the rest of a keyword's findings are counted in
+   !> one line (a damaged block of thousands of cards made thousands of distinct messages,
+   !> and the list's cost and size grew with their square: fuzz find, case
+   !> fuzz_check_many_findings)
+   integer, parameter :: MAX_PER_KEY = 50
 
    type :: check_list_t
       integer :: n = 0
@@ -35,6 +42,7 @@ module dx_deck_check
       procedure :: record => list_add
       procedure :: report => list_report
       procedure :: nproblems => list_nproblems
+      procedure, nopass :: more_line => list_more_line
    end type check_list_t
 
    !> keyword prefixes and their families; the first match wins (specific ones first)
@@ -95,27 +103,50 @@ contains
       class(check_list_t), intent(inout) :: self
       character(*), intent(in) :: key, what, where
       type(finding_t), allocatable :: t(:)
-      integer :: i, fam
+      integer :: i, fam, nkey
+      character(:), allocatable :: more
       if (len(key) == 0) then
          fam = NFAMILY
       else
          fam = family_index(key)
       end if
       if (.not. allocated(self%f)) allocate(self%f(16))
+      more = list_more_line(key)
+      nkey = 0
       do i = 1, self%n
          if (self%f(i)%family == fam .and. self%f(i)%what == what) then
             self%f(i)%count = self%f(i)%count + 1
             return
          end if
+         if (self%f(i)%key == key) nkey = nkey + 1
       end do
+      if (nkey >= MAX_PER_KEY .and. len(key) > 0) then
+         do i = 1, self%n
+            if (self%f(i)%family == fam .and. self%f(i)%what == more) then
+               self%f(i)%count = self%f(i)%count + 1
+               return
+            end if
+         end do
+      end if
       if (self%n == size(self%f)) then
          allocate(t(2*self%n))
          t(1:self%n) = self%f(1:self%n)
          call move_alloc(t, self%f)
       end if
       self%n = self%n + 1
-      self%f(self%n) = finding_t(fam, what, where, 1)
+      if (nkey >= MAX_PER_KEY .and. len(key) > 0) then
+         self%f(self%n) = finding_t(fam, more, where, 1, key)
+      else
+         self%f(self%n) = finding_t(fam, what, where, 1, key)
+      end if
    end subroutine list_add
+
+   !> The line that counts a keyword's findings past the first MAX_PER_KEY.
+   function list_more_line(key) result(s)
+      character(*), intent(in) :: key
+      character(:), allocatable :: s
+      s = '*'//key//': more findings past the first '//str(MAX_PER_KEY)//' (not listed)'
+   end function list_more_line
 
    !> Findings that stop the run (everything but 'output not written').
    pure integer function list_nproblems(self) result(n)
@@ -154,9 +185,13 @@ contains
          integer, intent(in) :: n
          character(:), allocatable :: p
          ! a keyword of thousands of characters (a damaged line: one token, no blank) is
-         ! named by its start; messages (with blanks) are kept whole
+         ! named by its start; so is a message past 200 characters (a field's text echoed
+         ! from a damaged line of 40 kB put 'first at' out of sight: fuzz case
+         ! fuzz_check_long_value)
          if (len(t) > 100 .and. index(t(1:min(len(t), 100)), ' ') == 0) then
             p = t(1:80)//'... ('//str(len(t))//' characters)'
+         else if (len(t) > 200) then
+            p = t(1:160)//'... ('//str(len(t))//' characters)'
          else
             p = t
          end if

@@ -153,7 +153,7 @@ contains
       call deck_cursor(deck, blk, c)
       call c%need(data_start(blk), 'missing card 1 (CID SPID MPID FORM EPS FS DFRIC)')
       do ic = data_start(blk), blk%n
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          call c%seek(ic)
          e%ifile = blk%ifile
          e%line = c%card_line()
@@ -176,7 +176,7 @@ contains
          call c%real('DFRIC', 0.0_wp, e%dfric)
          if (c%ok() .and. e%dfric < 0.0_wp) call c%fail('DFRIC', 'the friction regularization '// &
                                                         'slip must be >= 0')
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          if (.not. allocated(inp%emc%contacts)) allocate(inp%emc%contacts(0))
          inp%emc%contacts = [inp%emc%contacts, e]
       end do
@@ -195,7 +195,7 @@ contains
       call deck_cursor(deck, blk, c)
       call c%need(data_start(blk), 'missing card 1 (PID SIDE TOL)')
       do ic = data_start(blk), blk%n
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          call c%seek(ic)
          s%ifile = blk%ifile
          s%line = c%card_line()
@@ -207,7 +207,7 @@ contains
          call c%real('TOL', 1.0e-3_wp, s%tol)
          if (s%tol == 0.0_wp) s%tol = 1.0e-3_wp
          if (c%ok() .and. s%tol < 0.0_wp) call c%fail('TOL', 'must be > 0')
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          if (.not. allocated(inp%emc%spheres)) allocate(inp%emc%spheres(0))
          inp%emc%spheres = [inp%emc%spheres, s]
       end do

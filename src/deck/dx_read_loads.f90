@@ -51,7 +51,7 @@ contains
       call c%need(data_start(blk), 'missing card '//str(data_start(blk))//' (NID CID DOFX '// &
                   'DOFY DOFZ DOFRX DOFRY DOFRZ)')
       do ic = data_start(blk), blk%n
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          call c%seek(ic)
          s = spc_in_t()
          s%is_set = blk%base == 'BOUNDARY_SPC_SET'
@@ -63,7 +63,7 @@ contains
                '(free) or 1 (constrained), got '//str(d))
             s%dof(k) = d == 1
          end do
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          s%src = origin(blk%ifile, c%card_line(), blk%name)
          inp%spcs = [inp%spcs, s]
       end do
@@ -83,7 +83,7 @@ contains
       call c%need(data_start(blk), 'missing card '//str(data_start(blk))//' (NID DOF VAD '// &
                   'LCID SF VID DEATH BIRTH)')
       do ic = data_start(blk), blk%n
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          call c%seek(ic)
          m = motion_in_t()
          m%is_set = blk%base == 'BOUNDARY_PRESCRIBED_MOTION_SET'
@@ -96,7 +96,7 @@ contains
          if (c%ok() .and. m%dof >= 5 .and. m%vad == 2) call c%fail('VAD', 'VAD 2 (a '// &
             'prescribed rotation angle) on DOF '//str(m%dof)//' is not supported (supported '// &
             'on rotations: 0 angular velocity, 1 angular acceleration)')
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          m%src = origin(blk%ifile, c%card_line(), blk%name)
          inp%motions = [inp%motions, m]
       end do
@@ -161,7 +161,7 @@ contains
             call velocity(c, ['VXE ', 'VYE ', 'VZE ', 'VXRE', 'VYRE', 'VZRE'], r%vex)
             ic = ic + 1
          end if
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          inp%ivels = [inp%ivels, r]
       end do
       call c%done(error)
@@ -184,7 +184,7 @@ contains
          call c%id('NID', r%id)
          call velocity(c, ['VX ', 'VY ', 'VZ ', 'VXR', 'VYR', 'VZR'], r%v, r%vr)
          call c%zero_int('ICID', 'local coordinate systems')
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          r%src = origin(blk%ifile, c%card_line(), blk%name)
          inp%ivels = [inp%ivels, r]
       end do
@@ -220,7 +220,7 @@ contains
          end do
          call c%zero_int('IVATN', 'rigid body slave parts')
          call c%zero_int('ICID', 'local coordinate systems')
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          r%src = origin(blk%ifile, c%card_line(), blk%name)
          if (ic + 1 > blk%n) then
             ! the last record's card 2 left blank (stripped as layout: a blank line before
@@ -251,7 +251,7 @@ contains
                call c%fail('NX', 'OMEGA is nonzero but the rotation axis (NX, NY, NZ) is zero')
             end if
          end if
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          inp%ivels = [inp%ivels, r]
          ic = ic + 1
       end do
@@ -284,7 +284,7 @@ contains
          do k = 1, 3
             call c%zero_int('M'//str(k), 'follower forces')
          end do
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          l%src = origin(blk%ifile, c%card_line(), blk%name)
          if (is_set) then
             inp%node_set_loads = [inp%node_set_loads, l]   ! nid holds NSID: loads_finish
@@ -340,7 +340,7 @@ contains
       call c%need(data_start(blk), 'missing card '//str(data_start(blk))//' ('// &
                   trim(merge('SSID LCID SF AT        ', 'LCID SF AT N1 N2 N3 N4 ', is_set))//')')
       do ic = data_start(blk), blk%n
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          l = load_seg_in_t()
          call c%seek(ic)
          if (is_set) call c%id('SSID', l%ssid)
@@ -359,7 +359,7 @@ contains
             if (l%n(4) == 0) l%n(4) = l%n(3)
             call c%zero_int('N5', 'higher-order segments')
          end if
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          l%src = origin(blk%ifile, c%card_line(), blk%name)
          inp%seg_loads = [inp%seg_loads, l]
       end do

@@ -8,7 +8,7 @@ module dx_read_nodes_elements
    use dx_error, only: error_t
    use dx_strings, only: str, rstr
    use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, get_int, get_real, &
-                            field_error, card_error, data_start
+                            field_error, card_error, data_start, collect_error
    use dx_deck_registry, only: registry_t
    use dx_model, only: part_t, section_t, hourglass_t
    use dx_model_input, only: model_input_t, add_node, add_element, origin, input_add_part
@@ -36,15 +36,27 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(6), ic, nid, tc, rc, k
-      real(wp) :: x(3)
-      character(len=1), parameter :: xyz(3) = ['X', 'Y', 'Z']
+      integer :: w(6), ic
+      type(error_t), allocatable :: e
       if (blk%long) then
          w = 20
       else
          w = [8, 16, 16, 16, 8, 8]
       end if
       do ic = 1, blk%n
+         call node_card(ic, e)
+         if (.not. allocated(e)) cycle
+         ! --check (deck%check): every bad card of the block; else the first stops it
+         call collect_error(error, e)
+         if (.not. deck%check) return
+      end do
+   contains
+      subroutine node_card(ic, error)
+         integer, intent(in) :: ic
+         type(error_t), allocatable, intent(out) :: error
+         integer :: nid, tc, rc, k
+         real(wp) :: x(3)
+         character(len=1), parameter :: xyz(3) = ['X', 'Y', 'Z']
          call get_int(deck, blk, ic, 1, w, 'NID', 0, nid, error)
          if (allocated(error)) return
          if (nid <= 0) then
@@ -74,7 +86,7 @@ contains
             return
          end if
          call add_node(inp, nid, x, tc, rc, blk%ifile, blk%cards(ic)%line)
-      end do
+      end subroutine node_card
    end subroutine read_node
 
    subroutine read_element_solid(deck, blk, inp, error)
@@ -196,7 +208,7 @@ contains
          end do
          if (c%ok() .and. p%secid <= 0) call c%fail('SECID', 'a section id is required')
          if (c%ok() .and. p%mid <= 0) call c%fail('MID', 'a material id is required')
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          call input_add_part(inp, p, origin(blk%ifile, blk%cards(ic)%line, blk%name))
          ic = ic + 1
       end do
@@ -228,7 +240,7 @@ contains
          call c%int('AET', 0, s%aet)
          if (c%ok() .and. s%aet /= 0) call c%fail('AET', 'ambient element types are not '// &
                                                   'supported')
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          call add_section(inp, s, blk, ic)
          ic = ic + step
       end do
@@ -288,7 +300,7 @@ contains
          call c%real('Q2', -1.0_wp, h%q2)
          call c%real('QB', -1.0_wp, h%qb)
          call c%real('QW', -1.0_wp, h%qw)
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          inp%hourglasses = [inp%hourglasses, h]
          inp%hourglass_src = [inp%hourglass_src, origin(blk%ifile, blk%cards(ic)%line, &
                                                         blk%name)]

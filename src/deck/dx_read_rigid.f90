@@ -197,7 +197,7 @@ contains
       call deck_cursor(deck, blk, c)
       call c%need(data_start(blk), 'missing card 1 (PID CID NSID PNODE IPRT DRFLAG RRFLAG)')
       do ic = data_start(blk), blk%n
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          r = nrb_in_t()
          call c%seek(ic)
          call c%id('PID', r%pid)
@@ -207,7 +207,7 @@ contains
          call c%int('IPRT', 0, r%iprt)
          call c%zero_int('DRFLAG', 'displacement release')
          call c%zero_int('RRFLAG', 'rotation release')
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          r%src = rorigin(blk, ic)
          inp%rigid%nrbs = [inp%rigid%nrbs, r]
       end do
@@ -226,14 +226,14 @@ contains
       call deck_cursor(deck, blk, c)
       call c%need(1, 'missing card 1 (PID NID/NSID IFLAG)')
       do ic = 1, blk%n
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          r = extra_in_t()
          r%is_set = blk%base == 'CONSTRAINED_EXTRA_NODES_SET'
          call c%seek(ic)
          call c%id('PID', r%pid)
          call c%id(trim(merge('NSID', 'NID ', r%is_set)), r%id)
          call c%zero_int('IFLAG', 'mass property update flag')
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          r%src = rorigin(blk, ic)
          inp%rigid%extras = [inp%rigid%extras, r]
       end do
@@ -252,7 +252,7 @@ contains
       call deck_cursor(deck, blk, c)
       call c%need(data_start(blk), 'missing card 1 (PID DOF VAD LCID SF VID DEATH BIRTH)')
       do ic = data_start(blk), blk%n
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          m = rmotion_in_t()
          call c%seek(ic)
          call c%id('PID', m%pid)
@@ -261,7 +261,7 @@ contains
             str(m%dof)//' is not supported (supported: 1, 2, 3 translation along x, y, z; '// &
             '5, 6, 7 rotation about x, y, z)')
          call read_motion_fields(c, m%vad, m%lcid, m%sf, m%death, m%birth)
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          m%src = rorigin(blk, ic)
          inp%rigid%motions = [inp%rigid%motions, m]
       end do

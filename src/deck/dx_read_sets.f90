@@ -58,7 +58,7 @@ contains
          do k = 1, 8
             call c%list_id(what//str(k), ids, n)
          end do
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
       end do
       call c%done(error)
       if (allocated(error)) return
@@ -109,7 +109,7 @@ contains
          do k = 1, 4
             call c%int('B'//str(k)//'BEG', 0, b)
             call c%int('B'//str(k)//'END', 0, e)
-            if (.not. c%ok()) exit
+            if (c%halt()) exit
             if (b == 0 .and. e == 0) cycle
             if (b <= 0 .or. e < b) then
                call c%fail('B'//str(k)//'END', 'a range needs 0 < BEG <= END, got '//str(b)// &
@@ -119,7 +119,7 @@ contains
             ids(n + 1:n + 2) = [b, e]
             n = n + 2
          end do
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
       end do
       call c%done(error)
       if (allocated(error)) return
@@ -168,7 +168,7 @@ contains
          do k = 1, 7
             call c%list_id('E'//str(k), ids, n)
          end do
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          st%op = op
          st%ids = ids(1:n)
          st%src = origin(blk%ifile, c%card_line(), blk%name)
@@ -335,7 +335,7 @@ contains
             if (c%ok() .and. k <= 3 .and. s%seg(k, n) <= 0) call c%fail('N'//str(k), &
                                                                        'node id must be > 0')
          end do
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          if (s%seg(4, n) == 0) s%seg(4, n) = s%seg(3, n)
       end do
       call c%done(error)

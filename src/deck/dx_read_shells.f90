@@ -79,7 +79,7 @@ contains
          call c%int('SETYP', 1, setyp)
          if (c%ok() .and. (setyp < 0 .or. setyp > 3)) call c%fail('SETYP', 'must be 1, 2 or '// &
             '3, got '//str(setyp))
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          if (ic + 1 > blk%n) then
             call c%fail_card(ic, 'missing card 2 (T1 T2 T3 T4 NLOC MAREA IDOF EDGSET) of '// &
                              'section '//str(s%label))
@@ -104,7 +104,7 @@ contains
             'area '//rstr(marea)//' is not supported (supported: 0)')
          call c%int('IDOF', 0, idof)           ! ELFORM 25/26 only: no meaning for ELFORM 2
          call c%int('EDGSET', 0, edgset)       ! an edge set for output: no effect on results
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          call add_section(inp, s, blk, ic)
          ic = ic + step
       end do
@@ -143,7 +143,7 @@ contains
             if (c%ok() .and. nextra /= 0) call c%fail('N'//str(k), '8-node shells are not '// &
                                                       'supported (N5..N8 must be blank)')
          end do
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          if (conn(4) == 0) conn(4) = conn(3)
          th = 0.0_wp
          if (thick) then
@@ -168,7 +168,7 @@ contains
             call c%real('BETA', 0.0_wp, beta)   ! material angle: isotropic laminae only
             if (c%ok() .and. beta /= 0.0_wp) call c%fail('BETA', 'material angle '// &
                rstr(beta)//' is not supported (isotropic laminae only)')
-            if (.not. c%ok()) exit
+            if (c%halt()) exit
          end if
          call add_element(inp, eid, pid, conn, blk%ifile, blk%cards(ic)%line)
          call add_thickness(inp, th)
