@@ -43,6 +43,7 @@ module dx_material
       real(wp) :: bulk = 0.0_wp        !< elastic bulk modulus K (set by setup)
       real(wp) :: shear = 0.0_wp       !< elastic shear modulus G (set by setup)
       integer :: hv_eps_p = 0          !< history offset of effective plastic strain (0: none)
+      integer :: hv_damage = 0         !< history offset of the damage variable D (0: none)
       logical :: is_rigid = .false.
       integer :: ps_alg = 1            !< plane-stress algorithm (MITER: 1 secant3, 2 full, 3 radial, 4 one-step)
       class(eos_t), allocatable :: eos !< equation of state from the part's EOSID (hydro models)

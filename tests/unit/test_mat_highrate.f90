@@ -18,11 +18,21 @@
 !>  - melt (G = Y = 0 above the melt energy), SPALL 1 (cut-off at PC), 2 (largest principal
 !>    stress >= -PC spalls: no deviator, no tension after), 3 (p <= PC spalls);
 !>  - the largest principal stress of a rotated tensor.
+!> Johnson-Cook (4340 steel flow constants of Johnson & Cook 1983 as in physics-references.md
+!> 3.6: A 0.792, B 0.510 GPa, N 0.26, C 0.014, M 1.03, TM 1793 K, TR 294 K, EPSO 1/s; G 77.5,
+!> E 200 GPa, PR 0.29, rho 7.83, CP 477e-6 GPa/(K g/cm3) = 477 J/(kg K)), pure shear (no pressure):
+!>  - one large step, CP = 0: sigma_eq = (A + B eps_p**N)(1 + C ln rate*) to round-off (IT = 1),
+!>    and IT = 0 (yield at the step's start): sigma_eq = A (1 + C ln rate*);
+!>  - 400 steps with adiabatic heating: sigma_eq = (A + B eps_p**N)(1 + C ln rate*)(1 - T*** M)
+!>    with T = TR + Wp/(rho CP) from the history, to round-off;
+!>  - damage at constant triaxiality 0 (pure shear, CP = 0), D1 = 0.05, D2 = 0.15, D4 = 0.002:
+!>    D = eps_p/eps_f, eps_f = 0.2 (1 + 0.002 ln rate*), to round-off; the point fails at D = 1.
 program test_mat_highrate
    use dx_kinds, only: wp
    use dx_error, only: error_t
    use dx_mat_steinberg, only: mat_steinberg_t, max_principal
    use dx_eos_linear_polynomial, only: eos_linear_polynomial_t
+   use dx_mat_johnson_cook, only: mat_johnson_cook_t
    use dx_assert, only: check, check_close, assert_summary
    implicit none
    real(wp), parameter :: k_bulk = 137.0_wp, cv = 3.42e-3_wp
@@ -31,6 +41,7 @@ program test_mat_highrate
    call steinberg_formulas()
    call steinberg_uniaxial_strain()
    call steinberg_melt_spall()
+   call johnson_cook_checks()
    call check_close(max_principal([2.0_wp, 2.0_wp, 1.0_wp, 1.0_wp, 0.0_wp, 0.0_wp]), 3.0_wp, &
                     0.0_wp, 8.0_wp*epsilon(1.0_wp), 'largest principal stress of [[2,1,0],[1,2,0],[0,0,1]] = 3')
    call check_close(max_principal([-1.0_wp, -1.0_wp, -1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp]), -1.0_wp, &
@@ -200,4 +211,88 @@ contains
       call check(hv(1, 7) == 0.0_wp, 'SG SPALL 1: no spall')
       call check_close(hv(1, 2), -1.0_wp, 0.0_wp, 0.0_wp, 'SG SPALL 1: p cut off at PC')
    end subroutine steinberg_melt_spall
+
+   subroutine steel(m, it, cp, dmg)
+      type(mat_johnson_cook_t), intent(out) :: m
+      integer, intent(in) :: it
+      real(wp), intent(in) :: cp
+      logical, intent(in) :: dmg
+      type(error_t), allocatable :: err
+      m%ro = 7.83_wp; m%g = 77.5_wp; m%e = 200.0_wp; m%pr = 0.29_wp
+      m%a = 0.792_wp; m%b = 0.510_wp; m%n = 0.26_wp; m%c = 0.014_wp; m%m = 1.03_wp
+      m%tm = 1793.0_wp; m%tr = 294.0_wp; m%epso = 1.0_wp; m%cp = cp; m%it = it
+      m%pc = -1.0e30_wp
+      if (dmg) m%d = [0.05_wp, 0.15_wp, 0.0_wp, 0.002_wp, 0.0_wp]
+      call m%setup(err)
+      call check(.not. allocated(err), 'JC setup')
+   end subroutine steel
+
+   !> sigma_eq of a stress state
+   pure real(wp) function vm(s) result(q)
+      real(wp), intent(in) :: s(6)
+      real(wp) :: d(3)
+      d = s(1:3) - sum(s(1:3))/3.0_wp
+      q = sqrt(1.5_wp*(sum(d**2) + 2.0_wp*sum(s(4:6)**2)))
+   end function vm
+
+   subroutine johnson_cook_checks()
+      type(mat_johnson_cook_t) :: m
+      real(wp) :: sig(1, 6), hv(1, 10), deps(1, 6), dt, rate, ref, ts, ef
+      integer :: ierr(1), k
+      logical :: failed(1)
+      ! one large shear step: tensor shear 0.02, dt 1e-5 s: rate = 2 x 0.02/sqrt(3)/1e-5
+      dt = 1.0e-5_wp
+      deps = 0.0_wp; deps(1, 4) = 0.02_wp
+      rate = 2.0_wp*0.02_wp/sqrt(3.0_wp)/dt
+      call steel(m, 1, 0.0_wp, .false.)
+      sig = 0.0_wp; hv = 0.0_wp; ierr = 0
+      call m%update(1, dt, deps, [1.0_wp], [0.0_wp], sig, hv, ierr)
+      ref = (0.792_wp + 0.510_wp*hv(1, 1)**0.26_wp)*(1.0_wp + 0.014_wp*log(rate))
+      call check(hv(1, 1) > 0.0_wp, 'JC shear step yields')
+      call check_close(vm(sig(1, :)), ref, 0.0_wp, 64.0_wp*epsilon(1.0_wp), &
+                       'JC IT=1: sigma_eq = (A + B eps_p**N)(1 + C ln rate*)')
+      call check_close(3.0_wp*77.5_wp*hv(1, 1) + vm(sig(1, :)), sqrt(3.0_wp)*2.0_wp*77.5_wp*0.02_wp, &
+                       0.0_wp, 64.0_wp*epsilon(1.0_wp), 'JC radial return: 3 G deps_p + sigma_eq = trial')
+      call steel(m, 0, 0.0_wp, .false.)
+      sig = 0.0_wp; hv = 0.0_wp
+      call m%update(1, dt, deps, [1.0_wp], [0.0_wp], sig, hv, ierr)
+      call check_close(vm(sig(1, :)), 0.792_wp*(1.0_wp + 0.014_wp*log(rate)), 0.0_wp, &
+                       64.0_wp*epsilon(1.0_wp), 'JC IT=0: sigma_eq = A (1 + C ln rate*) (yield at the start)')
+      ! adiabatic heating over 400 steps of shear 0.002 (eps_p ~ 0.9)
+      call steel(m, 1, 477.0e-6_wp, .false.)
+      sig = 0.0_wp; hv = 0.0_wp
+      deps(1, 4) = 0.002_wp
+      rate = 2.0_wp*0.002_wp/sqrt(3.0_wp)/dt
+      do k = 1, 400
+         call m%update(1, dt, deps, [1.0_wp], [0.0_wp], sig, hv, ierr)
+      end do
+      call check_close(hv(1, 3), 294.0_wp + hv(1, 10)/(7.83_wp*477.0e-6_wp), 0.0_wp, &
+                       8.0_wp*epsilon(1.0_wp), 'JC T = TR + Wp/(rho CP)')
+      call check(hv(1, 3) > 400.0_wp, 'JC adiabatic heating over 100 K')
+      ts = (hv(1, 3) - 294.0_wp)/(1793.0_wp - 294.0_wp)
+      ref = (0.792_wp + 0.510_wp*hv(1, 1)**0.26_wp)*(1.0_wp + 0.014_wp*log(rate))* &
+            (1.0_wp - ts**1.03_wp)
+      ! the return of the last step used T of the step before: compare the history's yield
+      call check_close(hv(1, 9), ref, 0.0_wp, 64.0_wp*epsilon(1.0_wp), &
+                       'JC sigma_y = (A + B eps_p**N)(1 + C ln rate*)(1 - T*** M)')
+      call check(abs(vm(sig(1, :)) - ref) < 1.0e-3_wp*ref, &
+                 'JC on the yield surface within the one-step lag of T (0.1 %)')
+      ! damage, pure shear: D = eps_p/eps_f
+      call steel(m, 1, 0.0_wp, .true.)
+      sig = 0.0_wp; hv = 0.0_wp
+      ef = 0.2_wp*(1.0_wp + 0.002_wp*log(rate))
+      do k = 1, 50
+         call m%update(1, dt, deps, [1.0_wp], [0.0_wp], sig, hv, ierr)
+      end do
+      call check_close(hv(1, 2), hv(1, 1)/ef, 0.0_wp, 1.0e-13_wp, 'JC damage D = eps_p/eps_f (triaxiality 0)')
+      call m%fails(1, hv, failed)
+      call check(.not. failed(1) .and. hv(1, 2) < 1.0_wp, 'JC not failed below D = 1')
+      call check(m%hv_damage == 2, 'JC damage history slot')
+      do k = 1, 200
+         call m%update(1, dt, deps, [1.0_wp], [0.0_wp], sig, hv, ierr)
+      end do
+      call m%fails(1, hv, failed)
+      call check(failed(1) .and. hv(1, 2) == 1.0_wp, 'JC fails at D = 1 (EROD = 0)')
+      call check(maxval(abs(sig(1, :))) == 0.0_wp, 'JC failed point carries no stress in shear')
+   end subroutine johnson_cook_checks
 end program test_mat_highrate
