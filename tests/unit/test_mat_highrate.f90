@@ -27,12 +27,23 @@
 !>    with T = TR + Wp/(rho CP) from the history, to round-off;
 !>  - damage at constant triaxiality 0 (pure shear, CP = 0), D1 = 0.05, D2 = 0.15, D4 = 0.002:
 !>    D = eps_p/eps_f, eps_f = 0.2 (1 + 0.002 ln rate*), to round-off; the point fails at D = 1.
+!> *MAT_ELASTIC_PLASTIC_HYDRO: a 4-point yield table (EPS 0, 0.05, 0.2, 1; ES 0.3, 0.4, 0.5,
+!> 0.55 GPa) in pure shear at p = 0 (the linear EOS p = K mu at V = 1): sigma_eq = h(eps_p) by
+!> linear interpolation to round-off in each segment and extrapolated past the last point;
+!> then at p = K mu after a volumetric compression, sigma_eq = h + (A1 + A2 p) p; a
+!> non-monotone table is refused naming the EPS field; FS erodes.
+!> *MAT_ELASTIC_PLASTIC_HYDRO: a 4-point yield table (EPS 0, 0.05, 0.2, 1; ES 0.3, 0.4, 0.5,
+!> 0.55 GPa) in pure shear at p = 0 (the linear EOS p = K mu at V = 1): sigma_eq = h(eps_p) by
+!> linear interpolation to round-off in each segment and extrapolated past the last point;
+!> then at p = K mu after a volumetric compression, sigma_eq = h + (A1 + A2 p) p; a
+!> non-monotone table is refused naming the EPS field; FS erodes.
 program test_mat_highrate
    use dx_kinds, only: wp
    use dx_error, only: error_t
    use dx_mat_steinberg, only: mat_steinberg_t, max_principal
    use dx_eos_linear_polynomial, only: eos_linear_polynomial_t
    use dx_mat_johnson_cook, only: mat_johnson_cook_t
+   use dx_mat_hydro, only: mat_hydro_t
    use dx_assert, only: check, check_close, assert_summary
    implicit none
    real(wp), parameter :: k_bulk = 137.0_wp, cv = 3.42e-3_wp
@@ -42,6 +53,7 @@ program test_mat_highrate
    call steinberg_uniaxial_strain()
    call steinberg_melt_spall()
    call johnson_cook_checks()
+   call hydro_checks()
    call check_close(max_principal([2.0_wp, 2.0_wp, 1.0_wp, 1.0_wp, 0.0_wp, 0.0_wp]), 3.0_wp, &
                     0.0_wp, 8.0_wp*epsilon(1.0_wp), 'largest principal stress of [[2,1,0],[1,2,0],[0,0,1]] = 3')
    call check_close(max_principal([-1.0_wp, -1.0_wp, -1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp]), -1.0_wp, &
@@ -295,4 +307,83 @@ contains
       call check(failed(1) .and. hv(1, 2) == 1.0_wp, 'JC fails at D = 1 (EROD = 0)')
       call check(maxval(abs(sig(1, :))) == 0.0_wp, 'JC failed point carries no stress in shear')
    end subroutine johnson_cook_checks
+   !> the table h of hydro_checks, by hand
+   pure real(wp) function htab(ep) result(h)
+      real(wp), intent(in) :: ep
+      if (ep <= 0.05_wp) then
+         h = 0.3_wp + (0.4_wp - 0.3_wp)*ep/0.05_wp
+      else if (ep <= 0.2_wp) then
+         h = 0.4_wp + (0.5_wp - 0.4_wp)*(ep - 0.05_wp)/0.15_wp
+      else
+         h = 0.5_wp + (0.55_wp - 0.5_wp)*(ep - 0.2_wp)/0.8_wp
+      end if
+   end function htab
+
+   subroutine hydro_checks()
+      type(mat_hydro_t) :: m
+      type(error_t), allocatable :: err
+      real(wp) :: sig(1, 6), hv(1, 6), deps(1, 6), p, v
+      integer :: ierr(1), k
+      logical :: failed(1), seen(4)
+      m%ro = 7.83_wp; m%g = 77.5_wp
+      m%eps(1:4) = [0.0_wp, 0.05_wp, 0.2_wp, 1.0_wp]
+      m%es(1:4) = [0.3_wp, 0.4_wp, 0.5_wp, 0.55_wp]
+      m%fs = 1.5_wp
+      call m%setup(err)
+      call check(.not. allocated(err), 'MAT_010 setup')
+      allocate(eos_linear_polynomial_t :: m%eos)
+      select type (q => m%eos)
+      type is (eos_linear_polynomial_t)
+         q%c = 0.0_wp
+         q%c(1) = 160.0_wp
+      end select
+      m%eos%rho0 = m%ro
+      sig = 0.0_wp; hv = 0.0_wp; ierr = 0
+      deps = 0.0_wp; deps(1, 4) = 0.004_wp
+      seen = .false.
+      do k = 1, 500
+         call m%update(1, 1.0e-6_wp, deps, [1.0_wp], [0.0_wp], sig, hv, ierr)
+         if (hv(1, 1) <= 0.0_wp) cycle
+         if (hv(1, 1) < 0.05_wp .and. .not. seen(1)) then
+            seen(1) = .true.
+            call check_close(vm(sig(1, :)), htab(hv(1, 1)), 0.0_wp, 64.0_wp*epsilon(1.0_wp), &
+                             'MAT_010 segment 1: sigma_eq = h(eps_p)')
+         else if (hv(1, 1) > 0.05_wp .and. hv(1, 1) < 0.2_wp .and. .not. seen(2)) then
+            seen(2) = .true.
+            call check_close(vm(sig(1, :)), htab(hv(1, 1)), 0.0_wp, 64.0_wp*epsilon(1.0_wp), &
+                             'MAT_010 segment 2: sigma_eq = h(eps_p)')
+         else if (hv(1, 1) > 0.2_wp .and. hv(1, 1) < 1.0_wp .and. .not. seen(3)) then
+            seen(3) = .true.
+            call check_close(vm(sig(1, :)), htab(hv(1, 1)), 0.0_wp, 64.0_wp*epsilon(1.0_wp), &
+                             'MAT_010 segment 3: sigma_eq = h(eps_p)')
+         else if (hv(1, 1) > 1.0_wp .and. .not. seen(4)) then
+            seen(4) = .true.
+            call check_close(vm(sig(1, :)), htab(hv(1, 1)), 0.0_wp, 64.0_wp*epsilon(1.0_wp), &
+                             'MAT_010 past the last point: extrapolated')
+         end if
+      end do
+      call check(all(seen), 'MAT_010 every segment visited')
+      call m%fails(1, hv, failed)
+      call check(failed(1) .eqv. (hv(1, 1) >= 1.5_wp), 'MAT_010 fails at eps_p >= FS')
+      ! pressure term: compress to V = 0.99, then shear at that volume
+      m%a1 = 0.01_wp; m%a2 = 0.002_wp
+      sig = 0.0_wp; hv = 0.0_wp
+      deps = 0.0_wp; deps(1, 1:3) = log(0.99_wp)/3.0_wp
+      v = 0.99_wp
+      call m%update(1, 1.0e-6_wp, deps, [v], [0.0_wp], sig, hv, ierr)
+      p = 160.0_wp*(1.0_wp/v - 1.0_wp)
+      call check_close(hv(1, 2), p, 0.0_wp, 16.0_wp*epsilon(1.0_wp), 'MAT_010 p = C1 mu')
+      deps = 0.0_wp; deps(1, 4) = 0.004_wp
+      do k = 1, 3
+         call m%update(1, 1.0e-6_wp, deps, [v], [hv(1, 4)], sig, hv, ierr)
+      end do
+      call check(hv(1, 1) > 0.0_wp, 'MAT_010 yields under pressure')
+      call check_close(vm(sig(1, :)), htab(hv(1, 1)) + (0.01_wp + 0.002_wp*p)*p, 0.0_wp, &
+                       64.0_wp*epsilon(1.0_wp), 'MAT_010 sigma_eq = h + (A1 + A2 p) p')
+      ! a non-monotone table
+      m%eps(3) = 0.04_wp
+      call m%setup(err)
+      call check(allocated(err), 'MAT_010 non-monotone EPS refused')
+      if (allocated(err)) call check(err%field == 'EPS3', 'MAT_010 the error names EPS3')
+   end subroutine hydro_checks
 end program test_mat_highrate
