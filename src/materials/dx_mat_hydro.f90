@@ -214,6 +214,7 @@ contains
          call self%eos%energy_update(v, v - vold, estar, pn, e1, p1)
          p1 = max(p1, self%pc)
          if (.not. (abs(p1) < huge(1.0_wp))) ierr(i) = 2   ! a material failure
+         if (.not. self%eos%in_range(v)) ierr(i) = 2   ! compressed past the EOS's range
          sig(i, :) = s
          sig(i, 1:3) = s(1:3) - p1
          hv(i, 1) = ep + dep

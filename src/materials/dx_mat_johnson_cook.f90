@@ -330,6 +330,9 @@ contains
             p1 = max(p1, 0.0_wp)
          end if
          if (.not. (abs(p1) < huge(1.0_wp))) ierr(i) = 2   ! a material failure
+         if (allocated(self%eos)) then
+            if (.not. self%eos%in_range(v)) ierr(i) = 2   ! compressed past the EOS's range
+         end if
          sig(i, :) = s
          sig(i, 1:3) = s(1:3) - p1
          hv(i, 1) = ep + dep

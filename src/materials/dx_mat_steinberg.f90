@@ -431,7 +431,8 @@ contains
             s = 0.0_wp
             p1 = max(p1, 0.0_wp)
          end if
-         if (.not. (abs(p1) < huge(1.0_wp) .and. abs(e1) < huge(1.0_wp))) ierr(i) = 2   ! a material failure (not an inverted element)
+         if (.not. (abs(p1) < huge(1.0_wp) .and. abs(e1) < huge(1.0_wp))) ierr(i) = 2   ! a material failure
+         if (.not. self%eos%in_range(v)) ierr(i) = 2   ! compressed past the EOS's range (not an inverted element)
          sig(i, :) = s
          sig(i, 1:3) = s(1:3) - p1
          hv(i, 1) = v

@@ -44,6 +44,7 @@ program test_mat_highrate
    use dx_eos_linear_polynomial, only: eos_linear_polynomial_t
    use dx_mat_johnson_cook, only: mat_johnson_cook_t
    use dx_mat_hydro, only: mat_hydro_t
+   use dx_eos_gruneisen, only: eos_gruneisen_t
    use dx_assert, only: check, check_close, assert_summary
    implicit none
    real(wp), parameter :: k_bulk = 137.0_wp, cv = 3.42e-3_wp
@@ -53,6 +54,7 @@ program test_mat_highrate
    call steinberg_uniaxial_strain()
    call steinberg_melt_spall()
    call johnson_cook_checks()
+   call pole_check()
    call hydro_checks()
    call check_close(max_principal([2.0_wp, 2.0_wp, 1.0_wp, 1.0_wp, 0.0_wp, 0.0_wp]), 3.0_wp, &
                     0.0_wp, 8.0_wp*epsilon(1.0_wp), 'largest principal stress of [[2,1,0],[1,2,0],[0,0,1]] = 3')
@@ -386,4 +388,30 @@ contains
       call check(allocated(err), 'MAT_010 non-monotone EPS refused')
       if (allocated(err)) call check(err%field == 'EPS3', 'MAT_010 the error names EPS3')
    end subroutine hydro_checks
+
+   !> Steinberg with *EOS_GRUNEISEN (copper, S1 = 1.489: pole at mu = 1/0.489, V = 0.3284):
+   !> V = 0.5 updates; V = 0.3 is past the pole: the point is flagged (ierr = 2), no NaN.
+   subroutine pole_check()
+      type(mat_steinberg_t) :: m
+      type(error_t), allocatable :: err
+      real(wp) :: sig(1, 9), hv(1, 9), deps(1, 6)
+      integer :: ierr(1)
+      m%ro = 8.93_wp; m%g0 = 47.7_wp; m%sigo = 0.12_wp
+      call m%setup(err)
+      allocate(eos_gruneisen_t :: m%eos)
+      select type (q => m%eos)
+      type is (eos_gruneisen_t)
+         q%c = 3.94_wp; q%s1 = 1.489_wp; q%gamma0 = 2.02_wp; q%a = 0.47_wp
+      end select
+      m%eos%rho0 = m%ro
+      call m%eos_ready(err)
+      call check(.not. allocated(err), 'SG + Gruneisen cold-energy table')
+      deps = 0.0_wp; deps(1, 1) = log(0.5_wp)
+      sig = 0.0_wp; hv = 0.0_wp; ierr = 0
+      call m%update(1, 1.0e-3_wp, deps, [0.5_wp], [0.0_wp], sig(:, 1:6), hv, ierr)
+      call check(ierr(1) == 0 .and. all(abs(sig(1, 1:6)) < huge(1.0_wp)), 'SG + Gruneisen at V = 0.5')
+      deps(1, 1) = log(0.3_wp/0.5_wp)
+      call m%update(1, 1.0e-3_wp, deps, [0.3_wp], [hv(1, 4)], sig(:, 1:6), hv, ierr)
+      call check(ierr(1) == 2, 'SG + Gruneisen past the pole V = 0.3284: the point is flagged')
+   end subroutine pole_check
 end program test_mat_highrate

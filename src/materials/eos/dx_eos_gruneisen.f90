@@ -20,6 +20,8 @@
 !> density, or the linear fit's own singular compression eta = 1/S1 when that comes first,
 !> whose end point itself is excluded): S2 and S3 must not put a pole of p inside it. The
 !> range is dynx's choice (LS-DYNA checks nothing); Hugoniot data of metals end well inside it.
+!> At run time in_range is false past the first pole (D <= 0): the material models that use it
+!> (*MAT_010, 011, 015) flag the point, and the run stops with exit 3 naming the element.
 module dx_eos_gruneisen
    use dx_kinds, only: wp
    use dx_strings, only: str, rstr
@@ -35,6 +37,7 @@ module dx_eos_gruneisen
    contains
       procedure :: read_cards => gr_read_cards
       procedure :: state => gr_state
+      procedure :: in_range => gr_in_range
    end type eos_gruneisen_t
 
 contains
@@ -82,6 +85,17 @@ contains
       q = 1.0_wp/(mu + 1.0_wp)
       d = 1.0_wp - (self%s1 - 1.0_wp)*mu - self%s2*mu**2*q - self%s3*mu**3*q**2
    end function gr_denominator
+
+   !> Compression up to the first pole of the fit (D > 0); beyond it p is meaningless.
+   pure logical function gr_in_range(self, relvol) result(ok)
+      class(eos_gruneisen_t), intent(in) :: self
+      real(wp), intent(in) :: relvol
+      real(wp) :: mu
+      ok = relvol > 0.0_wp
+      if (.not. ok) return
+      mu = 1.0_wp/relvol - 1.0_wp
+      if (mu > 0.0_wp) ok = gr_denominator(self, mu) > 0.0_wp
+   end function gr_in_range
 
    !> D > 0 on 0 < mu <= mu_chk (module header), sampled at 2000 points (the end point
    !> excluded when it is the linear fit's pole 1/(S1 - 1)); the first sign change is named.
