@@ -124,6 +124,19 @@ contains
                        k_bulk*1.0e-6_wp/8.0_wp, 0.0_wp, 'SG cold energy Ec(mu = 0.3) of p = K mu')
       call check_close(m%cold_energy(1.0_wp/0.8_wp), ec_linear(1.0_wp/0.8_wp), &
                        k_bulk*1.0e-6_wp/8.0_wp, 0.0_wp, 'SG cold energy Ec(mu = -0.2) of p = K mu')
+      ! EC0-EC9 given (LS-DYNA's fit): Ec = sum ECi x**i, x = mu (FLAG 0) or eta (FLAG 1)
+      m%ec = 0.0_wp
+      m%ec(2) = 0.5_wp*k_bulk
+      m%ec(3) = -0.1_wp*k_bulk
+      m%ec_table = .false.
+      call check_close(m%cold_energy(1.0_wp/1.2_wp), k_bulk*(0.5_wp*0.04_wp - 0.1_wp*0.008_wp), &
+                       0.0_wp, 8.0_wp*epsilon(1.0_wp), 'SG EC0-9 polynomial in mu (FLAG 0)')
+      m%flag = 1
+      call check_close(m%cold_energy(1.0_wp/1.2_wp), k_bulk*(0.5_wp*1.44_wp - 0.1_wp*1.728_wp), &
+                       0.0_wp, 8.0_wp*epsilon(1.0_wp), 'SG EC0-9 polynomial in eta (FLAG 1)')
+      m%mmn = 0.9_wp; m%mmx = 1.1_wp
+      call check_close(m%cold_energy(1.0_wp/1.2_wp), k_bulk*(0.5_wp*1.21_wp - 0.1_wp*1.331_wp), &
+                       0.0_wp, 8.0_wp*epsilon(1.0_wp), 'SG EC0-9: x limited to [MMN, MMX]')
    end subroutine steinberg_formulas
 
    subroutine steinberg_uniaxial_strain()
