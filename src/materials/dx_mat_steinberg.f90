@@ -39,7 +39,8 @@
 !>      E(n+1) = E* - (p(n) + p(n+1))/2 (V(n+1) - V(n)), exact for an EOS linear in E (dx_eos);
 !>   4. T(n+1) from E(n+1), the spall test, the pressure cut-off.
 !> History: 1 V(n) (0: reference state), 2 p, 3 c**2 (EOS plus 4G/3rho), 4 E, 5 eps_p, 6 T,
-!> 7 spalled (0/1), 8 G, 9 Y of the last update.
+!> 7 spalled (0/1), 8 G, 9 Y of the last update, 10 Y0'(eps_p) (a cache: 0 = not yet evaluated,
+!> so an elastic step costs no power law).
 module dx_mat_steinberg
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_field_error
@@ -192,7 +193,7 @@ contains
 
    pure integer function sg_nhist(self)
       class(mat_steinberg_t), intent(in) :: self
-      sg_nhist = 9
+      sg_nhist = 10
       if (.false.) sg_nhist = int(self%ro)
    end function sg_nhist
 
@@ -328,21 +329,30 @@ contains
    end subroutine sg_hardening
 
    !> G and the yield factor yf (Y = Y0' yf) at pressure p, relative volume v, temperature t and
-   !> internal energy e per reference volume; melted: both 0.
-   pure subroutine sg_moduli(self, p, v, t, e, g, yf)
+   !> internal energy e per reference volume; melted: both 0. ec: the cold energy at v when the
+   !> caller has it (else looked up). V**(1/3) and the melt law share one log(V).
+   pure subroutine sg_moduli(self, p, v, t, e, g, yf, ec)
       class(mat_steinberg_t), intent(in) :: self
       real(wp), intent(in) :: p, v, t, e
       real(wp), intent(out) :: g, yf
-      real(wp) :: v3, em, fx
+      real(wp), intent(in), optional :: ec
+      real(wp) :: v3, em, fx, lv, tm
       g = 0.0_wp
       yf = 0.0_wp
       fx = 1.0_wp
+      lv = log(v)
       if (self%tmo > 0.0_wp .and. self%cv > 0.0_wp) then
-         em = self%cold_energy(v) + self%cv*(self%melt_temperature(v) - 300.0_wp)
+         tm = self%tmo*exp(2.0_wp*self%sa*(1.0_wp - v) - &
+                           2.0_wp*(self%gamo - self%sa - 1.0_wp/3.0_wp)*lv)
+         if (present(ec)) then
+            em = ec + self%cv*(tm - 300.0_wp)
+         else
+            em = self%cold_energy(v) + self%cv*(tm - 300.0_wp)
+         end if
          if (e >= em) return
          if (self%f > 0.0_wp) fx = exp(-self%f*e/(em - e))
       end if
-      v3 = v**(1.0_wp/3.0_wp)
+      v3 = exp(lv/3.0_wp)
       g = self%g0*max(0.0_wp, 1.0_wp + self%b*p*v3 - self%h*(t - 300.0_wp))*fx
       yf = max(0.0_wp, 1.0_wp + self%bp*p*v3 - self%h*(t - 300.0_wp))*fx
    end subroutine sg_moduli
@@ -358,7 +368,7 @@ contains
       integer, intent(inout) :: ierr(nv)
       real(wp), parameter :: w(6) = [1.0_wp, 1.0_wp, 1.0_wp, 2.0_wp, 2.0_wp, 2.0_wp]
       real(wp) :: v, vold, pn, tn, en, g, yf, so(6), s(6), de(6), tr, seq, ep, dep, y, dy, r
-      real(wp) :: lo, hi, estar, e1, p1, t1, pm, sm(6)
+      real(wp) :: lo, hi, estar, e1, p1, t1, pm, sm(6), ecv
       integer :: i, it
       do i = 1, nv
          v = relvol(i)
@@ -380,14 +390,17 @@ contains
          tr = (deps(i, 1) + deps(i, 2) + deps(i, 3))/3.0_wp
          de = deps(i, :)
          de(1:3) = de(1:3) - tr
-         call self%moduli(pn, v, tn, en, g, yf)
+         ecv = 0.0_wp
+         if (self%cv > 0.0_wp) ecv = self%cold_energy(v)
+         call self%moduli(pn, v, tn, en, g, yf, ecv)
          if (hv(i, 7) /= 0.0_wp) then
             g = 0.0_wp
             yf = 0.0_wp
          end if
          s = so + 2.0_wp*g*de
          seq = sqrt(1.5_wp*sum(w*s**2))
-         call self%hardening(ep, y, dy)
+         y = hv(i, 10)                           ! Y0'(eps_p), cached (0: not yet evaluated)
+         if (y == 0.0_wp) call self%hardening(ep, y, dy)
          dep = 0.0_wp
          if (seq > y*yf) then
             if (g > 0.0_wp .and. yf > 0.0_wp) then
@@ -416,7 +429,7 @@ contains
          estar = en + sum(w*sm*de)*0.5_wp*(v + vold)
          call self%eos%energy_update(v, v - vold, estar, pn, e1, p1)
          t1 = 300.0_wp
-         if (self%cv > 0.0_wp) t1 = 300.0_wp + (e1 - self%cold_energy(v))/self%cv
+         if (self%cv > 0.0_wp) t1 = 300.0_wp + (e1 - ecv)/self%cv
          ! ---- spall and pressure cut-off
          if (hv(i, 7) == 0.0_wp) then
             select case (self%spall)
@@ -442,7 +455,9 @@ contains
          hv(i, 5) = ep
          hv(i, 6) = t1
          hv(i, 8) = g
+         if (dep > 0.0_wp) call self%hardening(ep, y, dy)
          hv(i, 9) = yf*y
+         hv(i, 10) = y
       end do
       if (.false.) hv(1, 1) = dt
    end subroutine sg_update

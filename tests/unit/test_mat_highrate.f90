@@ -141,7 +141,7 @@ contains
 
    subroutine steinberg_uniaxial_strain()
       type(mat_steinberg_t) :: m
-      real(wp) :: sig(1, 6), hv(1, 9), hp(1, 9), so(6), de(6), deps(1, 6), v, vold, eint, y, dy
+      real(wp) :: sig(1, 6), hv(1, 10), hp(1, 10), so(6), de(6), deps(1, 6), v, vold, eint, y, dy
       real(wp) :: g, yf, en, ehand, mu, tr
       integer :: ierr(1), k, nstep
       call copper(m, 2, -1.0e30_wp, 1.0e-3_wp)
@@ -204,7 +204,7 @@ contains
 
    subroutine steinberg_melt_spall()
       type(mat_steinberg_t) :: m
-      real(wp) :: sig(1, 6), hv(1, 9), deps(1, 6), g, yf, em
+      real(wp) :: sig(1, 6), hv(1, 10), deps(1, 6), g, yf, em
       integer :: ierr(1)
       call copper(m, 2, -1.0_wp, 0.0_wp)
       em = cv*(1790.0_wp - 300.0_wp)
@@ -407,7 +407,7 @@ contains
    subroutine pole_check()
       type(mat_steinberg_t) :: m
       type(error_t), allocatable :: err
-      real(wp) :: sig(1, 9), hv(1, 9), deps(1, 6)
+      real(wp) :: sig(1, 9), hv(1, 10), deps(1, 6)
       integer :: ierr(1)
       m%ro = 8.93_wp; m%g0 = 47.7_wp; m%sigo = 0.12_wp
       call m%setup(err)
