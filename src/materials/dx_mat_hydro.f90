@@ -174,6 +174,11 @@ contains
       g = self%g
       do i = 1, nv
          v = relvol(i)
+         if (self%fs > 0.0_wp .and. hv(i, 1) >= self%fs) then
+            sig(i, :) = 0.0_wp          ! eroded (fails): no stress, no EOS, never flagged
+            hv(i, 3) = v
+            cycle
+         end if
          vold = hv(i, 3)
          if (vold == 0.0_wp) then
             vold = 1.0_wp

@@ -242,6 +242,11 @@ contains
       g = self%g
       do i = 1, nv
          v = relvol(i)
+         if (self%damage .and. self%erod == 0 .and. hv(i, 2) >= 1.0_wp) then
+            sig(i, :) = 0.0_wp          ! eroded (fails): no stress, no EOS, never flagged
+            hv(i, 5) = v
+            cycle
+         end if
          vold = hv(i, 5)
          if (vold == 0.0_wp) then
             vold = 1.0_wp
