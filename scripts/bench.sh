@@ -1,7 +1,8 @@
 #!/bin/sh
 # make bench: ns per element-cycle and peak memory per element of the explicit hex8 kernel on
 # an elastic-plastic cube of growing size (1e3 .. 1e6 elements), and the 10,368-element
-# copper Taylor bar of the performance target. Appends a dated table to docs/performance.md.
+# copper Taylor bar of the performance target; the 22**3 cube again with *MAT_NULL + *EOS_GRUNEISEN
+# and with *MAT_STEINBERG + *EOS_GRUNEISEN (issue 18). Appends a dated table to docs/performance.md.
 set -e
 cd "$(dirname "$0")/.."
 B=build/bench
@@ -31,6 +32,29 @@ for n in 10 22 46 100; do
     python3 scripts/gen_cube_deck.py $n $cyc $B/cube_$n.k
     run_case cube_$ne $B/cube_$n.k $ne
 done
+# the high-rate materials beside the piecewise-linear figure of the same 22**3 cube (issue 18):
+# *MAT_NULL + *EOS_GRUNEISEN and *MAT_STEINBERG + *EOS_GRUNEISEN (copper constants)
+hydro_deck() {   # in out kind
+    python3 - "$1" "$2" "$3" <<'PYEOF'
+import sys
+src, out, kind = sys.argv[1:]
+s = open(src).read()
+i, j = s.index('*PART'), s.index('*NODE')
+eos = ('*EOS_GRUNEISEN\n         1    3940.0     1.489       0.0       0.0      2.02      0.47'
+       '       0.0\n       1.0                   0\n')
+mat = {'null': '*MAT_NULL\n         1    7.8E-6    -1.0E3       0.0\n',
+       'steinberg': '*MAT_STEINBERG\n         1    7.8E-6      47.7      0.12      36.0      0.45'
+       '       0.0      0.64\n    0.0283    0.0283   3.77e-4     0.001       0.0    1790.0      2.02'
+       '       1.5\n     -1.e3       1.0   1.14e-3\n\n'}[kind]
+open(out, 'w').write(s[:i] + '*PART\ncube\n         1         1         1         1\n'
+                     '*SECTION_SOLID\n         1         1\n' + mat + eos + s[j:])
+PYEOF
+}
+ne=10648
+hydro_deck $B/cube_22.k $B/null_gruneisen_22.k null
+run_case null_gruneisen_$ne $B/null_gruneisen_22.k $ne
+hydro_deck $B/cube_22.k $B/steinberg_22.k steinberg
+run_case steinberg_$ne $B/steinberg_22.k $ne
 if [ -f ../shared/bench/gen_taylor.py ]; then
     python3 ../shared/bench/gen_taylor.py 8 4 54 0.080 $B/taylor_10k.k > /dev/null
     run_case taylor_10k $B/taylor_10k.k 10368

@@ -308,7 +308,8 @@ contains
          who = w//'part '//str(p%label)//': field EOSID: material '//str(p%mid)//' (type '// &
                str(m%mtype)//')'
          if (p%eosid == 0) then
-            if (m%takes_eos()) call set_error(error, who//' needs an equation of state '// &
+            if (m%takes_eos() .and. m%needs_eos()) call set_error(error, who//' needs an '// &
+                                              'equation of state '// &
                                               '(EOSID of an *EOS_ keyword)')
             return
          end if
@@ -333,6 +334,8 @@ contains
          allocate(m%eos, source=inp%eoss(k)%e)
          m%eos%rho0 = m%ro
          m%bulk = m%ro*m%eos%sound_speed2(m%ro, 1.0_wp, m%eos%e0)
+         call m%eos_ready(error)
+         if (allocated(error)) error%message = who//': '//error%message
       end associate
    end subroutine attach_eos
 

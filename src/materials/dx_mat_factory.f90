@@ -13,6 +13,9 @@ module dx_mat_factory
    use dx_mat_null, only: mat_null_t
    use dx_mat_piecewise_linear, only: mat_piecewise_linear_t
    use dx_mat_rigid, only: mat_rigid_t
+   use dx_mat_steinberg, only: mat_steinberg_t
+   use dx_mat_johnson_cook, only: mat_johnson_cook_t
+   use dx_mat_hydro, only: mat_hydro_t
    use dx_eos, only: eos_t
    use dx_eos_linear_polynomial, only: eos_linear_polynomial_t
    use dx_eos_gruneisen, only: eos_gruneisen_t
@@ -41,6 +44,9 @@ contains
       t = [mat_row('MAT_ELASTIC', 1, 1, .true., mat_elastic_t()), &
            mat_row('MAT_PLASTIC_KINEMATIC', 3, 2, .true., mat_plastic_kinematic_t()), &
            mat_row('MAT_NULL', 9, 1, .true., mat_null_t()), &
+           mat_row('MAT_ELASTIC_PLASTIC_HYDRO', 10, 6, .true., mat_hydro_t()), &
+           mat_row('MAT_STEINBERG', 11, 4, .true., mat_steinberg_t()), &
+           mat_row('MAT_JOHNSON_COOK', 15, 4, .true., mat_johnson_cook_t()), &
            mat_row('MAT_RIGID', 20, 3, .false., mat_rigid_t()), &
            mat_row('MAT_PIECEWISE_LINEAR_PLASTICITY', 24, 4, .true., mat_piecewise_linear_t())]
    end function material_kinds

@@ -39,6 +39,7 @@ module dx_eos
       procedure :: pressure => eos_pressure         !< p(V, E)
       procedure :: sound_speed2 => eos_sound_speed2 !< c**2 at (V, E) for density rho0
       procedure :: energy_update => eos_energy_update !< time-centred E and p at V(n+1)
+      procedure :: in_range => eos_in_range         !< V inside the range where p is defined
    end type eos_t
 
    !> A holder so the model input can keep a list of polymorphic equations of state.
@@ -72,6 +73,16 @@ contains
       real(wp) :: dpdmu, dpde
       call self%state(relvol, eint, p, dpdmu, dpde)
    end function eos_pressure
+
+   !> Whether the pressure is defined at relative volume relvol (default: any V > 0). A model
+   !> flags a point outside as a failed update (ierr), so the run stops with a message
+   !> instead of going on with a meaningless pressure.
+   pure logical function eos_in_range(self, relvol) result(ok)
+      class(eos_t), intent(in) :: self
+      real(wp), intent(in) :: relvol
+      ok = relvol > 0.0_wp
+      if (.false.) ok = self%rho0 < 0.0_wp
+   end function eos_in_range
 
    !> Isentropic sound speed squared (dp/dmu + dp/dE p V**2)/rho0, at least 0.
    pure real(wp) function eos_sound_speed2(self, rho0, relvol, eint) result(c2)
