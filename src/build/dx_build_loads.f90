@@ -52,6 +52,7 @@ contains
             end do
          end associate
       end do
+      call twod_fixes(model, fix)
       n = count(any(fix, dim=1))
       allocate(model%spcs(n))
       n = 0
@@ -93,6 +94,24 @@ contains
       end do
       call move_alloc(pr, model%prescribed)
    end subroutine build_bcs
+
+   !> A 2D deck (dx_quad2d; all its parts are 2D, dx_model_build): the z DOF of every node is
+   !> fixed, so every z component of a nodal quantity stays zero whatever the loads; in
+   !> axisymmetry the nodes on the axis (x = r = 0 at t = 0) also have their radial DOF fixed.
+   subroutine twod_fixes(model, fix)
+      type(model_t), intent(in) :: model
+      logical, intent(inout) :: fix(:, :)
+      type(family_t) :: fam
+      integer :: i
+      if (size(model%blocks) == 0) return
+      fam = element_family(model%blocks(1)%etype)
+      if (.not. fam%twod) return
+      fix(3, :) = .true.
+      if (.not. fam%axisym) return
+      do i = 1, model%nn
+         if (model%x0(1, i) == 0.0_wp) fix(1, i) = .true.
+      end do
+   end subroutine twod_fixes
 
    !> rot(i): node i belongs to an element of a family with rotations (shells)
    subroutine rotation_nodes(model, rot)

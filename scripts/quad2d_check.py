@@ -1,0 +1,207 @@
+#!/usr/bin/python3
+"""Checks of the 2D solid regression cases (tests/regression/quad2d_*/check; dx_quad2d).
+
+  quad2d_check.py patch OUT DECK TOL_V TOL_S TOL_A
+      plane-strain patch test: the free (history) nodes keep their initial velocity to TOL_V
+      relative; the elements' stresses of the last plot state agree to TOL_S relative, and
+      with plane-strain Hooke of the mean strain (sigma_zz = nu (sigma_xx + sigma_yy)) to TOL_A.
+  quad2d_check.py lame OUT1 OUT2 OUT3 T0 TOL ORDER_MIN
+      thick-walled cylinder a = 10, b = 20, p = 0.1 (gen_quad2d_decks.py lame) on three meshes
+      (nr = 4, 8, 16): the radial displacement of the inner and outer history nodes averaged
+      over t >= T0 (the held load; the dynamic overshoot averages out) against Lame's plane-
+      strain u_r; the finest error <= TOL relative, and the observed order from the inner
+      errors log2(e1/e2), log2(e2/e3) >= ORDER_MIN each (printed).
+  quad2d_check.py bar OUT TOL_C
+      axisymmetric bar (gen_quad2d_decks.py bar): the arrival time of the front at the axis
+      history nodes (displacement first above half the far-field value v t_after) against
+      the bar speed sqrt(E/rho); the fitted front speed within TOL_C relative.
+  quad2d_check.py energy OUT BAND [AFTER]
+      |energy ratio - 1| <= BAND on every glstat line at t >= AFTER, and z components of every
+      nodout displacement, velocity and acceleration exactly 0.
+"""
+import math
+import subprocess
+import sys
+
+RHO, E, NU = 7.85e-6, 210.0, 0.3
+A_IN, B_OUT, P_IN = 10.0, 20.0, 0.1
+
+
+def read_table(path):
+    rows = []
+    for line in open(path):
+        if line.startswith('#') or not line.strip():
+            continue
+        rows.append([float(v) for v in line.split()])
+    return rows
+
+
+def nodout(out):
+    """{node: [(t, disp(3), vel(3), acc(3), coor(3))]}"""
+    d = {}
+    for r in read_table(out + '/nodout'):
+        d.setdefault(int(r[1]), []).append((r[0], r[2:5], r[5:8], r[8:11], r[11:14]))
+    return d
+
+
+def h5_dataset(path, name):
+    txt = subprocess.run(['h5dump', '-m', '%.17g', '-d', name, path], capture_output=True,
+                         text=True, check=True).stdout
+    body = txt[txt.index('DATA {') + 6:]
+    body = body[:body.index('}')]
+    vals = []
+    for line in body.splitlines():
+        if ':' in line:
+            line = line.split(':', 1)[1]
+        vals += [float(v) for v in line.replace(',', ' ').split()]
+    return vals
+
+
+def h5_last_state(path):
+    txt = subprocess.run(['h5ls', path + '/states'], capture_output=True, text=True,
+                         check=True).stdout
+    return sorted(w for w in (line.split()[0] for line in txt.splitlines() if line.strip())
+                  if w.isdigit())[-1]
+
+
+def fail(msg):
+    print('FAIL:', msg)
+    sys.exit(1)
+
+
+def initial_velocities(deck):
+    v, on = {}, False
+    for line in open(deck):
+        if line.startswith('*'):
+            on = line.startswith('*INITIAL_VELOCITY_NODE')
+            continue
+        if on and line.strip():
+            v[int(line[:20])] = (float(line[20:40]), float(line[40:60]))
+    return v
+
+
+def patch(out, deck, tol_v, tol_s, tol_a):
+    v0 = initial_velocities(deck)
+    dv = 0.0
+    for n, rows in nodout(out).items():
+        for r in rows:
+            dv = max(dv, max(abs(r[2][k] - v0[n][k]) for k in range(2))/math.hypot(*v0[n]))
+    print(f'free nodes: largest relative change of velocity {dv:.3e} (tol {tol_v})')
+    h5 = out + '/d3plot.h5'
+    st = h5_last_state(h5)
+    s = h5_dataset(h5, f'/states/{st}/stress')
+    ne = len(s)//6
+    sig = [s[6*e:6*e + 6] for e in range(ne)]
+    smax = max(abs(x) for x in sig[0])
+    ds = max(abs(sig[e][k] - sig[0][k]) for e in range(ne) for k in range(6))/smax
+    print(f'element stresses: largest relative spread {ds:.3e} (tol {tol_s})')
+    # mean strain from the displacement of the corners: u = (F - I) x0, F from nodes 1, 2, 4
+    u = h5_dataset(h5, f'/states/{st}/displacement')
+    x0 = h5_dataset(h5, '/mesh/coordinates')
+    ux2, uy2 = u[3], u[4]
+    ux4, uy4 = u[9], u[10]
+    hx, hy = x0[3], x0[10]
+    exx, eyy = ux2/hx, uy4/hy
+    exy = 0.5*(uy2/hx + ux4/hy)
+    lam, mu = E*NU/((1 + NU)*(1 - 2*NU)), E/(2*(1 + NU))
+    ref = [lam*(exx + eyy) + 2*mu*exx, lam*(exx + eyy) + 2*mu*eyy, lam*(exx + eyy),
+           2*mu*exy, 0.0, 0.0]
+    da = max(abs(sig[0][k] - ref[k]) for k in range(6))/max(abs(x) for x in ref)
+    print(f'stress against plane-strain Hooke of the mean strain: {da:.3e} (tol {tol_a}); '
+          f'sigma = {[round(x, 6) for x in sig[0][:4]]}, ref {[round(x, 6) for x in ref[:4]]}')
+    if dv > tol_v or ds > tol_s or da > tol_a:
+        fail('patch test')
+
+
+def lame_ur(r):
+    """plane-strain Lame radial displacement"""
+    a2, b2 = A_IN**2, B_OUT**2
+    ca = P_IN*a2/(b2 - a2)
+    cb = P_IN*a2*b2/(b2 - a2)
+    return (1 + NU)/E*((1 - 2*NU)*ca*r + cb/r)
+
+
+def mean_ur(out, t0):
+    d = nodout(out)
+    res = []
+    for n in sorted(d):
+        rows = [r for r in d[n] if r[0] >= t0]
+        x0 = rows[0][4][0] - rows[0][1][0], rows[0][4][1] - rows[0][1][1]
+        r0 = math.hypot(*x0)
+        ur = [(r[1][0]*x0[0] + r[1][1]*x0[1])/r0 for r in rows]
+        res.append((r0, sum(ur)/len(ur)))
+    return res
+
+
+def lame(outs, t0, tol, order_min):
+    errs = []
+    for out in outs:
+        (ra, ua), (rb, ub) = sorted(mean_ur(out, t0))
+        ea = (ua - lame_ur(ra))/lame_ur(ra)
+        eb = (ub - lame_ur(rb))/lame_ur(rb)
+        errs.append((abs(ea), abs(eb)))
+        print(f'{out}: u_r(a) = {ua:.6e} (Lame {lame_ur(ra):.6e}, err {ea:+.3e}); '
+              f'u_r(b) = {ub:.6e} (Lame {lame_ur(rb):.6e}, err {eb:+.3e})')
+    orders = [math.log(errs[k][0]/errs[k + 1][0], 2) for k in range(len(errs) - 1)]
+    print('observed order (inner radius, halving h): ' + ', '.join(f'{o:.2f}' for o in orders))
+    if max(errs[-1]) > tol:
+        fail(f'finest error {max(errs[-1]):.3e} above {tol}')
+    if min(orders) < order_min:
+        fail(f'observed order {min(orders):.2f} below {order_min}')
+
+
+def bar(out, tol_c):
+    d = nodout(out)
+    c = math.sqrt(E/RHO)
+    vend = 1.0
+    pts = []
+    for n in sorted(d):
+        rows = d[n]
+        y0 = rows[0][4][1] - rows[0][1][1]
+        if y0 <= 0.0:
+            continue
+        # the front: displacement first above half its plateau v (t - y/c) a little later
+        for r in rows:
+            if r[1][1] > 0.5*vend*2.0*(BAR_DT := rows[1][0] - rows[0][0]):
+                pts.append((y0, r[0]))
+                break
+    if len(pts) < 3:
+        fail('the front reached fewer than 3 history nodes')
+    n = len(pts)
+    my = sum(p[0] for p in pts)/n
+    mt = sum(p[1] for p in pts)/n
+    slope = sum((p[0] - my)*(p[1] - mt) for p in pts)/sum((p[0] - my)**2 for p in pts)
+    cf = 1.0/slope
+    print(f'front speed {cf:.1f} mm/ms over {n} nodes, bar speed sqrt(E/rho) {c:.1f}: '
+          f'{cf/c - 1:+.3e} (tol {tol_c})')
+    if abs(cf/c - 1) > tol_c:
+        fail('front speed')
+
+
+def energy(out, band, after):
+    worst = 0.0
+    for r in read_table(out + '/glstat'):
+        if r[0] >= after:
+            worst = max(worst, abs(r[9] - 1.0))
+    print(f'energy ratio: largest |ratio - 1| = {worst:.3e} after t = {after} (band {band})')
+    zmax = 0.0
+    for rows in nodout(out).values():
+        for r in rows:
+            zmax = max(zmax, abs(r[1][2]), abs(r[2][2]), abs(r[3][2]), abs(r[4][2]))
+    print(f'z components in nodout: largest {zmax:.3e} (must be 0)')
+    if worst > band or zmax != 0.0:
+        fail('energy or z components')
+
+
+if __name__ == '__main__':
+    w = sys.argv[1]
+    if w == 'patch':
+        patch(sys.argv[2], sys.argv[3], *map(float, sys.argv[4:7]))
+    elif w == 'lame':
+        lame(sys.argv[2:5], float(sys.argv[5]), float(sys.argv[6]), float(sys.argv[7]))
+    elif w == 'bar':
+        bar(sys.argv[2], float(sys.argv[3]))
+    elif w == 'energy':
+        energy(sys.argv[2], float(sys.argv[3]), float(sys.argv[4]) if len(sys.argv) > 4 else 0.0)
+    else:
+        raise SystemExit(__doc__)
