@@ -84,7 +84,7 @@ def ramp_curve(lcid, tr, tend, n=40):
     return s
 
 
-A_IN, B_OUT, P_IN = 10.0, 20.0, 0.1     # mm, mm, GPa (100 MPa)
+A_IN, B_OUT, P_IN = 10.0, 20.0, 1.0e-4   # mm, mm, GPa (0.1 MPa: linear, strain 5e-7)
 T_RAMP, T_END = 0.3, 0.6                # ms: smooth ramp, then held (averaged in the check)
 
 

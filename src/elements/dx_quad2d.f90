@@ -14,13 +14,16 @@
 !>   N_I over the area, int N_I (div sigma + (sigma_rr - sigma_tt)/r, ...) dA, integrated by
 !>   parts: f_rI = A (sigma_rr b_r + sigma_rz b_z) - A/4 (sigma_rr - sigma_tt)/rbar, f_zI = A
 !>   (sigma_rz b_r + sigma_zz b_z) - A/4 sigma_rz/rbar (Goudreau & Hallquist 1982, CMAME 33:
-!>   725-757; DYNA2D's default). dynx multiplies the element's equations by its rbar, so both
-!>   axisymmetric forms share the lumped mass per radian rho0 V0/4 per node and report masses,
-!>   forces and energies per radian (LS-DYNA's convention for 2D axisymmetric output, Keyword
-!>   User's Manual, *SECTION_SHELL ELFORM 14/15 and *DATABASE_GLSTAT); the element's internal
-!>   energy is the work of its nodal forces (with 14 that differs from sigma:D V by -A
-!>   (sigma_rr vbar_r + sigma_rz vbar_z) dt: a Petrov-Galerkin form conserves no energy by
-!>   construction, and its work term keeps glstat's balance).
+!>   725-757; DYNA2D's default). dynx keeps both axisymmetric forms per radian (LS-DYNA's
+!>   convention for 2D axisymmetric masses, loads and energies): one lumped mass rho0 V0/4 per
+!>   node, and the area-weighted nodal equation multiplied by a radius: the radial one by the
+!>   node's r_I (then m_I a = r_I sum_e f_e + F_ext with m_I ~ r_I sum rho A/4: the area-
+!>   weighted acceleration to O(h^2) on a smooth mesh, and no division by r_I), the axial one
+!>   by each element's rbar (sum_e rbar (A sigma.b - A/4 sigma_rz/rbar) is r (d sigma_rz/dr +
+!>   d sigma_zz/dz) to the same order, and stays finite on the axis, where r_I = 0). (Each
+!>   element's radial equation by its own rbar would be d(r sigma_rr)/dr - sigma_rr: wrong by
+!>   sigma_rr, 26 % in the Lame test.) The element's internal energy is the work of its own
+!>   nodal forces (a Petrov-Galerkin form has no stress power sigma:D V to match).
 !> - The axis r = 0: no division by a nodal radius anywhere (rbar = V/A > 0 for any element
 !>   with area); nodes on the axis have their radial DOF fixed at build (v_r = 0 by symmetry).
 !> The cycle is dx_hex8's one-point pass in 2D: strain increment and spin at the mid-step
@@ -100,14 +103,15 @@ contains
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: f(:, :)
       type(block_result_t), intent(out) :: res
-      real(wp), dimension(nv_chunk, 4) :: xe, ye, vx, vy, xm, ym, bx, by, fx, fy, g
+      real(wp), dimension(nv_chunk, 4) :: xe, ye, vx, vy, xm, ym, bx, by, fx, fy, g, bxm, bym
       real(wp), dimension(nv_chunk) :: ar, arm, vol, volm, rb, rbm, rv, c, q, trd, w12, ein
       real(wp), dimension(nv_chunk) :: alive, bv, bvm, vold, lc, wo, wn, de, e1, e2, e3, e4
       real(wp), dimension(nv_chunk) :: vr, vz, dh
       real(wp) :: de6(nv_chunk, 6), so(nv_chunk, 6), sn(nv_chunk, 6)
       real(wp) :: deps(blk%nel, 6)
       real(wp) :: l11, l22, l12, l21, dtl, hdt, d1, d4, s1, s2, s4, hx, hy, hr, hz, ah, qx, qy
-      real(wp) :: e, diam
+      real(wp) :: e, diam, pw(2)
+      integer :: m
       integer :: ierr(nv_chunk)
       logical :: failed(nv_chunk), axi, aw
       integer :: i, k, n, nn, w
@@ -127,14 +131,14 @@ contains
          end do
       end do
       ! ---- mid-step geometry: velocity gradient times A, L_ij A = v_iI B_jI, hoop rate
-      call quad2d_geometry(n, axi, xm, ym, bx, by, arm, volm)
+      call quad2d_geometry(n, axi, xm, ym, bxm, bym, arm, volm)
       do i = 1, n
          l11 = 0.0_wp; l22 = 0.0_wp; l12 = 0.0_wp; l21 = 0.0_wp
          do k = 1, 4
-            l11 = l11 + vx(i, k)*bx(i, k)
-            l22 = l22 + vy(i, k)*by(i, k)
-            l12 = l12 + vx(i, k)*by(i, k)
-            l21 = l21 + vy(i, k)*bx(i, k)
+            l11 = l11 + vx(i, k)*bxm(i, k)
+            l22 = l22 + vy(i, k)*bym(i, k)
+            l12 = l12 + vx(i, k)*bym(i, k)
+            l21 = l21 + vy(i, k)*bxm(i, k)
          end do
          vr(i) = 0.25_wp*(vx(i, 1) + vx(i, 2) + vx(i, 3) + vx(i, 4))
          vz(i) = 0.25_wp*(vy(i, 1) + vy(i, 2) + vy(i, 3) + vy(i, 4))
@@ -156,9 +160,15 @@ contains
          de6(i, 6) = 0.0_wp
          w12(i) = 0.5_wp*(l12 - l21)*dtl
          trd(i) = (l11 + l22)/arm(i) + dh(i)
-         ! B(n-1/2).v of the viscosity force (14: no hoop share, the hoop term has no q)
+         ! B(n-1/2).v of the viscosity force (14: r_I and rbar scale the B terms, no hoop q)
          bvm(i) = rbm(i)*(l11 + l22)
          if (axi .and. .not. aw) bvm(i) = bvm(i) + arm(i)*vr(i)
+         if (aw) then
+            bvm(i) = rbm(i)*l22
+            do k = 1, 4
+               bvm(i) = bvm(i) + xm(i, k)*bxm(i, k)*vx(i, k)
+            end do
+         end if
       end do
       do k = 1, 6
          deps(1:n, k) = de6(1:n, k)
@@ -181,6 +191,12 @@ contains
          end do
          bv(i) = rb(i)*bv(i)
          if (axi .and. .not. aw) bv(i) = bv(i) + ar(i)*vr(i)
+         if (aw) then
+            bv(i) = 0.0_wp
+            do k = 1, 4
+               bv(i) = bv(i) + xe(i, k)*bx(i, k)*vx(i, k) + rb(i)*by(i, k)*vy(i, k)
+            end do
+         end if
          ! the one length of the step and the viscosity: area / diameter
          diam = max((xe(i, 3) - xe(i, 1))**2 + (ye(i, 3) - ye(i, 1))**2, &
                     (xe(i, 4) - xe(i, 2))**2 + (ye(i, 4) - ye(i, 2))**2)
@@ -225,9 +241,20 @@ contains
                  + 2.0_wp*so(i, 4)*de6(i, 4))
          wn(i) = volm(i)*(sn(i, 1)*de6(i, 1) + sn(i, 2)*de6(i, 2) + sn(i, 3)*de6(i, 3) &
                  + 2.0_wp*sn(i, 4)*de6(i, 4))
-         if (aw) then      ! the Petrov-Galerkin hoop term's own work (header)
-            wo(i) = wo(i) - dt_old*arm(i)*(so(i, 1)*vr(i) + so(i, 4)*vz(i))
-            wn(i) = wn(i) - dt_old*arm(i)*(sn(i, 1)*vr(i) + sn(i, 4)*vz(i))
+         if (aw) then      ! the work of the nodal forces at the mid-step geometry (header)
+            do m = 1, 2
+               pw(m) = 0.0_wp
+               associate (t => merge(so(i, :), sn(i, :), m == 1))
+                  do k = 1, 4
+                     pw(m) = pw(m) + xm(i, k)*vx(i, k)*(t(1)*bxm(i, k) + t(4)*bym(i, k) &
+                             - 0.25_wp*arm(i)*(t(1) - t(3))/rbm(i)) &
+                             + vy(i, k)*(rbm(i)*(t(4)*bxm(i, k) + t(2)*bym(i, k)) &
+                             - 0.25_wp*arm(i)*t(4))
+                  end do
+               end associate
+            end do
+            wo(i) = dt_old*pw(1)
+            wn(i) = dt_old*pw(2)
          end if
       end do
       e1(1:n) = blk%es(1:n, w); e2(1:n) = blk%es(1:n, w + 1)
@@ -251,14 +278,16 @@ contains
       do i = 1, n
          s1 = sn(i, 1) - q(i); s2 = sn(i, 2) - q(i); s4 = sn(i, 4)
          hr = 0.0_wp; hz = 0.0_wp
-         if (axi) then
-            if (aw) then
-               hr = -0.25_wp*ar(i)*(sn(i, 1) - sn(i, 3))
-               hz = -0.25_wp*ar(i)*sn(i, 4)
-            else
-               hr = 0.25_wp*ar(i)*(sn(i, 3) - q(i))
-            end if
+         if (aw) then         ! radial by the node's r_I, axial by the element's rbar
+            hr = -0.25_wp*ar(i)*(sn(i, 1) - sn(i, 3))/rb(i)
+            hz = -0.25_wp*ar(i)*sn(i, 4)
+            do k = 1, 4
+               fx(i, k) = alive(i)*xe(i, k)*(s1*bx(i, k) + s4*by(i, k) + hr)
+               fy(i, k) = alive(i)*(rb(i)*(s4*bx(i, k) + s2*by(i, k)) + hz)
+            end do
+            cycle
          end if
+         if (axi) hr = 0.25_wp*ar(i)*(sn(i, 3) - q(i))
          do k = 1, 4
             fx(i, k) = alive(i)*(rb(i)*(s1*bx(i, k) + s4*by(i, k)) + hr)
             fy(i, k) = alive(i)*(rb(i)*(s4*bx(i, k) + s2*by(i, k)) + hz)
