@@ -147,8 +147,8 @@ def lame(d, elform, nr):
     write(d + '/deck.k', s)
 
 
-BAR_R, BAR_L, BAR_V = 5.0, 100.0, 1.0e3 * 1.0e-3   # mm, mm, mm/ms (1 m/s)
-BAR_T = 0.012                                      # ms: the front at ~62 mm
+BAR_R, BAR_L, BAR_V = 5.0, 150.0, 1.0   # mm, mm, mm/ms (1 m/s)
+BAR_T = 0.021                                      # ms: the front at ~109 mm
 
 
 def bar(d, elform, nr, nz):
@@ -159,9 +159,9 @@ def bar(d, elform, nr, nz):
     nid = lambda i, j: j*(nr + 1) + i + 1
     quads = [(nid(i, j), nid(i + 1, j), nid(i + 1, j + 1), nid(i, j + 1))
              for j in range(nz) for i in range(nr)]
-    hist = [nid(0, j) for j in range(0, nz + 1, nz//10)]
+    hist = [nid(0, j) for j in range(0, nz + 1, nz//15)]
     s = head(f'Axisymmetric elastic bar (ELFORM {elform}) R={BAR_R} L={BAR_L}, {nr}x{nz}',
-             BAR_T, BAR_T/2, BAR_T/40, hist, ihq=1, elform=elform)
+             BAR_T, BAR_T/2, BAR_T/200, hist, ihq=1, elform=elform)
     s += nodes(xy) + shells(quads)
     s += ['*DEFINE_CURVE', f'{1:10d}', f'{0.0:20.4f}{1.0:20.4f}', f'{100.0:20.4f}{1.0:20.4f}']
     s.append('*BOUNDARY_PRESCRIBED_MOTION_NODE')
