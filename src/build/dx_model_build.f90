@@ -16,8 +16,8 @@ module dx_model_build
                        WARP_WARN
    use dx_log, only: log_warn
    use dx_model_input, only: model_input_t, origin_t
-   use dx_element_types, only: ETYPE_SHELL_BT, ES_THK, shell_area, etype_of_shell_elform, &
-                               quad2d_area
+   use dx_element_types, only: ES_THK, shell_area, etype_of_shell_elform
+   use dx_build_twod, only: part_dim, check_dimension, twod_element
    use dx_label_map, only: label_map_t
    use dx_build_common, only: maps_t, at, at_line, set_nodes, curve_index, node_index, &
                               dense_segments
@@ -231,42 +231,6 @@ contains
       end do
       call check_dimension(inp, model, error)
    end subroutine build_parts
-
-   !> 0: part ip is 3D; 1: a 2D plane-strain part; 2: a 2D axisymmetric part (ELFORM 14, 15)
-   integer function part_dim(model, ip)
-      type(model_t), intent(in) :: model
-      integer, intent(in) :: ip
-      type(family_t) :: f
-      part_dim = 0
-      associate (sec => model%sections(model%parts(ip)%isec))
-         if (.not. sec%shell) return
-         f = element_family(etype_of_shell_elform(sec%elform))
-      end associate
-      if (f%twod) part_dim = merge(2, 1, f%axisym)
-   end function part_dim
-
-   !> A deck is 2D when all its parts are 2D, all plane strain or all axisymmetric (x is r in
-   !> one, a coordinate in the other): any mixture is an input error at the later *PART.
-   subroutine check_dimension(inp, model, error)
-      type(model_input_t), intent(in) :: inp
-      type(model_t), intent(in) :: model
-      type(error_t), allocatable, intent(out) :: error
-      character(*), parameter :: kind(0:2) = [character(40) :: &
-         '3D', '2D plane strain (ELFORM 13)', '2D axisymmetric (ELFORM 14/15)']
-      integer :: i, d0
-      if (size(model%parts) == 0) return
-      d0 = part_dim(model, 1)
-      do i = 2, size(model%parts)
-         if (part_dim(model, i) == d0) cycle
-         call set_error(error, at(inp, inp%part_src(i))//'part '// &
-            str(model%parts(i)%label)//': field SECID: section '// &
-            str(model%parts(i)%secid)//' makes the part '// &
-            trim(kind(part_dim(model, i)))//', but part '//str(model%parts(1)%label)// &
-            ' (section '//str(model%parts(1)%secid)//') is '//trim(kind(d0))// &
-            ': a deck is 2D only when all its parts are, of one kind')
-         return
-      end do
-   end subroutine check_dimension
 
    !> A part with a *SECTION_SHELL: its section's shell settings, and the checks of what
    !> shells do not have yet (rigid shells, ISDO, TSLIMT, the Lobatto range).
@@ -603,7 +567,9 @@ contains
          etyp(e) = etype_of_section(model%parts(model%elem_part(e))%isec)
          f2 = element_family(etyp(e))
          if (f2%twod) then
-            call twod_element(e, lab, w, f2%axisym, error)
+            call twod_element(inp, model, conn(1:4, e), e, etyp(e), lab, w, f2%axisym, vol(e), &
+                              error)
+            if (allocated(thk)) thk(e) = 0.0_wp
             return
          end if
          t4 = inp%elem_thk(:, e)
@@ -638,45 +604,6 @@ contains
                '; the Belytschko-Lin-Tsay shell has no warping correction)')
          end if
       end subroutine shell_element
-
-      !> one 2D element e (*SECTION_SHELL ELFORM 13-15): its nodes in the x-y plane (z = 0),
-      !> r = x >= 0 when axisymmetric, counter-clockwise with an area > 0; V0 the area or the
-      !> volume per radian (elem_volume)
-      subroutine twod_element(e, lab, w, axi, error)
-         integer, intent(in) :: e, lab
-         character(*), intent(in) :: w
-         logical, intent(in) :: axi
-         type(error_t), allocatable, intent(out) :: error
-         integer :: kk, nd
-         real(wp) :: a
-         do kk = 1, 4
-            nd = conn(kk, e)
-            if (model%x0(3, nd) /= 0.0_wp) then
-               call set_error(error, at_line(inp, inp%node_src(:, nd), 'NODE')//'node '// &
-                  str(model%node_label(nd))//': field Z: '//rstr(model%x0(3, nd))// &
-                  ': a node of a 2D element (element '//str(lab)//', *SECTION_SHELL ELFORM '// &
-                  str(model%sections(model%parts(model%elem_part(e))%isec)%elform)// &
-                  ') must lie in the x-y plane (z = 0)')
-               return
-            end if
-            if (axi .and. model%x0(1, nd) < 0.0_wp) then
-               call set_error(error, at_line(inp, inp%node_src(:, nd), 'NODE')//'node '// &
-                  str(model%node_label(nd))//': field X: r = x = '//rstr(model%x0(1, nd))// &
-                  ' < 0: an axisymmetric deck (element '//str(lab)//', *SECTION_SHELL '// &
-                  'ELFORM 14/15) has x = r >= 0 and y along the axis')
-               return
-            end if
-         end do
-         a = quad2d_area(model%x0(:, conn(1:4, e)))
-         vol(e) = elem_volume(etyp(e), model%x0(:, conn(1:4, e)))
-         if (.not. (a > 0.0_wp .and. vol(e) > 0.0_wp)) then
-            call set_error(error, w//'element '//str(lab)//' is inverted or has no area at '// &
-               't = 0 (area '//rstr(a)//' <= 0: the nodes N1..N4 of a 2D element go '// &
-               'counter-clockwise in the x-y plane)')
-            return
-         end if
-         if (allocated(thk)) thk(e) = 0.0_wp
-      end subroutine twod_element
 
       !> the element type of the part's section (dense section index isec)
       integer function etype_of_section(isec)
