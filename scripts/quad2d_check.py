@@ -18,6 +18,9 @@
       through them against the bar speed sqrt(E/rho) within TOL_C relative (Skalak 1957:
       far from the end, the step's head is an Airy integral centred on y = c0 t, where it has
       risen to 1/3).
+  quad2d_check.py barcmp OUT2D OUT3D TOL_T YMIN
+      the same bar in 2D and as 3D hexahedra (gen_quad2d_decks.py hexbar): the arrival times
+      of the front (as in bar) at the axis nodes y >= YMIN differ by at most TOL_T.
   quad2d_check.py energy OUT BAND [AFTER]
       |energy ratio - 1| <= BAND on every glstat line at t >= AFTER, and z components of every
       nodout displacement, velocity and acceleration exactly 0.
@@ -188,6 +191,34 @@ def bar(out, tol_c, ymin, vend=1.0):
         fail('front speed')
 
 
+def front_times(out, ymin, vend=1.0):
+    """{y: time the axial velocity of the axis history node at y >= ymin reaches vend/3}"""
+    res = {}
+    for n, rows in nodout(out).items():
+        x0 = [rows[0][4][k] - rows[0][1][k] for k in range(3)]
+        if x0[1] < ymin or abs(x0[0]) + abs(x0[2]) > 0.0:
+            continue
+        for r0, r1 in zip(rows, rows[1:]):
+            a, b = r0[2][1] - vend/3.0, r1[2][1] - vend/3.0
+            if a < 0.0 <= b:
+                res[round(x0[1], 6)] = r0[0] + (r1[0] - r0[0])*(-a)/(b - a)
+                break
+    return res
+
+
+def barcmp(out2, out3, tol_t, ymin):
+    t2, t3 = front_times(out2, ymin), front_times(out3, ymin)
+    ys = sorted(set(t2) & set(t3))
+    if len(ys) < 3:
+        fail('fewer than 3 axis nodes reached by both fronts')
+    dt = max(abs(t2[y] - t3[y]) for y in ys)
+    print('front arrival (y: 2D, 3D): ' + ', '.join(f'{y:.0f}: {t2[y]:.5f}, {t3[y]:.5f}'
+                                                   for y in ys))
+    print(f'largest difference {dt:.3e} ms (tol {tol_t})')
+    if dt > tol_t:
+        fail('2D and 3D fronts differ')
+
+
 def energy(out, band, after):
     worst = 0.0
     for r in read_table(out + '/glstat'):
@@ -211,6 +242,8 @@ if __name__ == '__main__':
         lame(sys.argv[2:5], float(sys.argv[5]), float(sys.argv[6]), float(sys.argv[7]))
     elif w == 'bar':
         bar(sys.argv[2], float(sys.argv[3]), float(sys.argv[4]))
+    elif w == 'barcmp':
+        barcmp(sys.argv[2], sys.argv[3], float(sys.argv[4]), float(sys.argv[5]))
     elif w == 'energy':
         energy(sys.argv[2], float(sys.argv[3]), float(sys.argv[4]) if len(sys.argv) > 4 else 0.0)
     else:
