@@ -5,6 +5,8 @@
   gen_quad2d_decks.py lame DIR ELFORM NR   thick-walled cylinder under internal pressure,
                                            NR elements through the wall (13: quarter ring in
                                            plane strain; 14, 15: axisymmetric ring section)
+  gen_quad2d_decks.py lameseg DIR ELFORM NR the same with the pressure as 2-node *LOAD_SEGMENT
+                                           edges instead of nodal loads
   gen_quad2d_decks.py bar DIR ELFORM NR NZ axisymmetric elastic bar, velocity step at one end
   gen_quad2d_decks.py hexbar DIR NR NQ NZ the same bar as 3D hexahedra: a quarter of it, NR
                                            rings of NQ elements, NZ along the axis
@@ -88,7 +90,7 @@ A_IN, B_OUT, P_IN = 10.0, 20.0, 1.0e-4   # mm, mm, GPa (0.1 MPa: linear, strain 
 T_RAMP, T_END = 0.3, 0.6                # ms: smooth ramp, then held (averaged in the check)
 
 
-def lame(d, elform, nr):
+def lame(d, elform, nr, seg=False):
     """Thick-walled cylinder a = 10, b = 20 mm, internal pressure 0.1 GPa, plane strain
     (u_z = 0). ELFORM 13: a quarter ring, 2 nr elements around, symmetry on both cut planes;
     ELFORM 14/15: the section a <= r <= b, 0 <= z <= h with h = (b - a)/nr, one element
@@ -136,11 +138,20 @@ def lame(d, elform, nr):
     s = head(f'Lame cylinder a={A_IN} b={B_OUT} p={P_IN}, {title} (ELFORM {elform}), nr={nr}',
              T_END, T_END/2, 0.005, hist, elform=elform)
     s += nodes(xy) + shells(quads) + ramp_curve(1, T_RAMP, T_END)
-    s.append('*LOAD_NODE_POINT')
-    for n, (fx, fy) in sorted(loads.items()):
-        for dof, fv in ((1, fx), (2, fy)):
-            if fv != 0.0:
-                s.append(f'{n:10d}{dof:10d}{1:10d}{fv:10.4e}')
+    if seg:     # the pressure on the inner edges as 2-node *LOAD_SEGMENT cards (N3, N4 blank)
+        s.append('*LOAD_SEGMENT')
+        if elform == 13:
+            edges = [(nid(0, j + 1), nid(0, j)) for j in range(nt)]
+        else:
+            edges = [(nid(0, 1), nid(0, 0))]
+        for n1, n2 in edges:
+            s.append(f'{1:10d}{P_IN:10.4e}{0.0:10.1f}{n1:10d}{n2:10d}')
+    else:
+        s.append('*LOAD_NODE_POINT')
+        for n, (fx, fy) in sorted(loads.items()):
+            for dof, fv in ((1, fx), (2, fy)):
+                if fv != 0.0:
+                    s.append(f'{n:10d}{dof:10d}{1:10d}{fv:10.4e}')
     s.append('*BOUNDARY_SPC_NODE')
     for n, fx, fy in spc:
         s.append(f'{n:10d}{0:10d}{fx:10d}{fy:10d}')
@@ -229,6 +240,8 @@ if __name__ == '__main__':
         patch(d)
     elif what == 'lame':
         lame(d, int(sys.argv[3]), int(sys.argv[4]))
+    elif what == 'lameseg':
+        lame(d, int(sys.argv[3]), int(sys.argv[4]), seg=True)
     elif what == 'bar':
         bar(d, int(sys.argv[3]), int(sys.argv[4]), int(sys.argv[5]))
     elif what == 'hexbar':

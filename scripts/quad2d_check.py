@@ -12,6 +12,8 @@
       strain u_r; the finest error <= TOL relative, and the observed order from the inner
       errors log2(e1/e2), log2(e2/e3) >= ORDER_MIN each (printed); ORDER_MIN <= 0: the
       errors are at the floor of the time averaging, every mesh's within TOL (order printed).
+  quad2d_check.py lame1 OUT T0 TOL
+      one mesh of the same: both errors within TOL.
   quad2d_check.py bar OUT TOL_C YMIN
       axisymmetric bar (gen_quad2d_decks.py bar): the time the axial velocity of each axis
       history node at y >= YMIN first reaches a third of the end's 1 m/s; the speed fitted
@@ -160,6 +162,15 @@ def lame(outs, t0, tol, order_min):
         fail(f'observed order {min(orders):.2f} below {order_min}')
 
 
+def lame1(out, t0, tol):
+    (ra, ua), (rb, ub) = sorted(mean_ur(out, t0))
+    ea = (ua - lame_ur(ra))/lame_ur(ra)
+    eb = (ub - lame_ur(rb))/lame_ur(rb)
+    print(f'{out}: u_r(a) err {ea:+.3e}, u_r(b) err {eb:+.3e} (tol {tol})')
+    if max(abs(ea), abs(eb)) > tol:
+        fail('Lame error')
+
+
 def bar(out, tol_c, ymin, vend=1.0):
     """front of a velocity step in a round bar: the time the axial velocity of each axis
     history node first reaches vend/2 (linear between nodout lines); its motion is the
@@ -240,6 +251,8 @@ if __name__ == '__main__':
         patch(sys.argv[2], sys.argv[3], *map(float, sys.argv[4:7]))
     elif w == 'lame':
         lame(sys.argv[2:5], float(sys.argv[5]), float(sys.argv[6]), float(sys.argv[7]))
+    elif w == 'lame1':
+        lame1(sys.argv[2], float(sys.argv[3]), float(sys.argv[4]))
     elif w == 'bar':
         bar(sys.argv[2], float(sys.argv[3]), float(sys.argv[4]))
     elif w == 'barcmp':

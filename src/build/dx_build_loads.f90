@@ -243,6 +243,7 @@ contains
       integer, allocatable :: seg(:, :), nodes(:), ex(:)
       logical, allocatable :: keep(:)
       real(wp) :: d
+      type(family_t) :: fam
       allocate(model%node_loads(size(inp%node_loads)))
       do i = 1, size(inp%node_loads)
          associate (l => inp%node_loads(i))
@@ -274,7 +275,19 @@ contains
          associate (l => inp%seg_loads(i))
             c = curve_index(inp, mp, l%lcid, l%src, 'LCID', error)
             if (allocated(error)) return
-            if (l%ssid == 0) then
+            if (l%ssid == 0 .and. l%n(3) == 0) then    ! a 2-node edge of a 2D deck
+               call dense_segments(inp, mp, reshape([l%n(1:2), l%n(2), l%n(2)], [4, 1]), &
+                                   l%src, seg, error)
+               if (allocated(error)) return
+               seg(3:4, 1) = 0
+               fam = element_family(model%blocks(1)%etype)
+               if (.not. fam%twod) then
+                  call set_error(error, at(inp, l%src)//'field N3: a 2-node segment (N3, N4 '// &
+                     'blank) is an edge of a 2D deck (*SECTION_SHELL ELFORM 13-15); this '// &
+                     'deck is 3D: give N3 (and N4) of the face')
+                  return
+               end if
+            else if (l%ssid == 0) then
                call dense_segments(inp, mp, reshape(l%n, [4, 1]), l%src, seg, error)
                if (allocated(error)) return
             else
