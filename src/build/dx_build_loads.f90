@@ -279,8 +279,11 @@ contains
                call dense_segments(inp, mp, reshape([l%n(1:2), l%n(2), l%n(2)], [4, 1]), &
                                    l%src, seg, error)
                if (allocated(error)) return
-               seg(3:4, 1) = 0
                fam = element_family(model%blocks(1)%etype)
+               ! N3 = 0 marks the edge, N4 its kind: 0 plane strain, -1 axisymmetric (the
+               ! load pass may see a model without blocks: the MPI loads model)
+               seg(3, 1) = 0
+               seg(4, 1) = merge(-1, 0, fam%axisym)
                if (.not. fam%twod) then
                   call set_error(error, at(inp, l%src)//'field N3: a 2-node segment (N3, N4 '// &
                      'blank) is an edge of a 2D deck (*SECTION_SHELL ELFORM 13-15); this '// &
