@@ -23,6 +23,9 @@
   quad2d_check.py barcmp OUT2D OUT3D TOL_T YMIN
       the same bar in 2D and as 3D hexahedra (gen_quad2d_decks.py hexbar): the arrival times
       of the front (as in bar) at the axis nodes y >= YMIN differ by at most TOL_T.
+  quad2d_check.py taylor OUT LF TOL_L RF TOL_R
+      axisymmetric Taylor bar: final length and foot radius within TOL_L, TOL_R relative of
+      LF, RF (the converged 3D values).
   quad2d_check.py energy OUT BAND [AFTER]
       |energy ratio - 1| <= BAND on every glstat line at t >= AFTER, and z components of every
       nodout displacement, velocity and acceleration exactly 0.
@@ -230,6 +233,20 @@ def barcmp(out2, out3, tol_t, ymin):
         fail('2D and 3D fronts differ')
 
 
+def taylor(out, lf_ref, tol_l, rf_ref, tol_r):
+    """Taylor bar (gen_quad2d_decks.py taylor): final length = y of the top axis node, foot
+    radius = x of the bottom corner node (the two history nodes), last nodout line."""
+    d = nodout(out)
+    top, foot = sorted(d)[1], sorted(d)[0]
+    lf = d[top][-1][4][1]
+    rf = d[foot][-1][4][0]
+    el, er = lf/lf_ref - 1.0, rf/rf_ref - 1.0
+    print(f'{out}: Lf = {lf:.4f} mm ({el:+.3e} of {lf_ref}, tol {tol_l}), Rf = {rf:.4f} mm '
+          f'({er:+.3e} of {rf_ref}, tol {tol_r})')
+    if abs(el) > tol_l or abs(er) > tol_r:
+        fail('Taylor bar')
+
+
 def energy(out, band, after):
     worst = 0.0
     for r in read_table(out + '/glstat'):
@@ -257,6 +274,8 @@ if __name__ == '__main__':
         bar(sys.argv[2], float(sys.argv[3]), float(sys.argv[4]))
     elif w == 'barcmp':
         barcmp(sys.argv[2], sys.argv[3], float(sys.argv[4]), float(sys.argv[5]))
+    elif w == 'taylor':
+        taylor(sys.argv[2], *map(float, sys.argv[3:7]))
     elif w == 'energy':
         energy(sys.argv[2], float(sys.argv[3]), float(sys.argv[4]) if len(sys.argv) > 4 else 0.0)
     else:
