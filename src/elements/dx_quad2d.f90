@@ -47,8 +47,8 @@ module dx_quad2d
    use dx_kinds, only: wp, nv_chunk
    use dx_material, only: material_t
    use dx_element_types, only: elem_block_t, part_t, ES_WORK, block_result_t, ELEM_ERR_NEGVOL, &
-                               ELEM_ERR_MATERIAL, ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW
-   use dx_hex8, only: centred_work, stable_time_step
+                               ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW
+   use dx_hex8, only: centred_work, stable_time_step, first_error
    implicit none
    private
    public :: quad2d_block, quad2d_geometry
@@ -328,12 +328,6 @@ contains
          end do
       end do
       call stable_time_step(blk, part, lc, trd, c, res)
-      do i = 1, n
-         if (ierr(i) /= 0) then
-            res%ibad = i
-            res%errcode = merge(ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, ierr(i) == ELEM_ERR_NEGVOL)
-            exit
-         end if
-      end do
+      call first_error(n, ierr, res)
    end subroutine quad2d_block
 end module dx_quad2d
