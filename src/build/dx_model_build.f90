@@ -761,7 +761,9 @@ contains
             rstr(inp%ctrl%dt2ms)//') is not available with the conserving rigid-body '// &
             'integrator (*DYNX_CONSERVING_CONTACT); set DT2MS = 0')
       ! shells: the rotary inertia is lumped once from the unscaled mass (not yet rescaled)
-      if (.not. allocated(error) .and. inp%ctrl%dt2ms /= 0.0_wp .and. allocated(inp%elem_thk)) &
+      ! (the 2D solids of *SECTION_SHELL ELFORM 13-15 have no rotations: part_dim > 0)
+      if (.not. allocated(error) .and. inp%ctrl%dt2ms /= 0.0_wp .and. allocated(inp%elem_thk) &
+          .and. part_dim(model, 1) == 0) &
          call set_error(error, at(inp, inp%timestep_src)//'field DT2MS: mass scaling (DT2MS = '// &
             rstr(inp%ctrl%dt2ms)//') is not yet available for decks with shells '// &
             '(*ELEMENT_SHELL): their rotary inertia would not be scaled; set DT2MS = 0')
