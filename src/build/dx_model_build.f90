@@ -221,12 +221,6 @@ contains
                               str(p%ihq)//' is not supported (supported: 1 to 5)')
                return
             end if
-            if (part_dim(model, i) > 0 .and. p%ihq > 3) then
-               call set_error(error, w//'part '//str(p%label)//': field IHQ: hourglass type '// &
-                  str(p%ihq)//' is not supported on 2D solids (*SECTION_SHELL ELFORM 13-15; '// &
-                  'supported: 1 to 3, Flanagan-Belytschko viscous)')
-               return
-            end if
          end associate
       end do
       call check_dimension(inp, model, error)

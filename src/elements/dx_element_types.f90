@@ -226,7 +226,7 @@ contains
          f%edges(:, 1:4) = QUAD_EDGES
          f%mass_share = 0.25_wp
          f%hgmodes = 1
-         f%es_ncol = [0, 4, 0, 0]
+         f%es_ncol = [2*f%hgmodes, 4, 0, 0]
          f%nip = 1; f%weight = 1
          f%twod = .true.
          f%axisym = etype /= ETYPE_QUAD2D_PS

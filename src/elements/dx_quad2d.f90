@@ -35,7 +35,10 @@
 !> gamma_I = h_I - (h.x) b_xI - (h.y) b_yI, h = (1, -1, 1, -1), modal rates q_i = gamma_I v_iI,
 !> f_iI += a_h q_i gamma_I with a_h = QH rho c sqrt(A) t (t = 1 plane strain, rbar per radian):
 !> dx_hex8's QH rho c V**(2/3)/4 on the brick of the quad extruded by sqrt(A), its two layers'
-!> modes summed (IHQ 1-3 alike; the stiffness forms IHQ 4, 5 are refused at build).
+!> modes summed (IHQ 1-3 alike). Stiffness (IHQ 4, 5 alike): FB's kappa = QH (lambda + 2 mu)
+!> b_jJ b_jJ/(2A) on the modes normalized by 1/2 (|h|**2 = 4), i.e. the stored resisting force
+!> Q_i += k_h dt qdot_i with k_h = QH (K + 4G/3) B_jJ B_jJ/(8A) t (as dx_hex8's /(24V) in 3D),
+!> corotated with the in-plane spin, f_iI += Q_i gamma_I.
 !> Stable step dt_e = L/(Q + sqrt(Q**2 + c**2)), L = A / (the element's diameter: its longest
 !> diagonal or edge) - DYNA2D's area over the longest diagonal for every quadrilateral whose
 !> diagonal is its longest span, the triangle's and the trapezoid's longest edge otherwise
@@ -46,7 +49,7 @@
 module dx_quad2d
    use dx_kinds, only: wp, nv_chunk
    use dx_material, only: material_t
-   use dx_element_types, only: elem_block_t, part_t, ES_WORK, block_result_t, ELEM_ERR_NEGVOL, &
+   use dx_element_types, only: elem_block_t, part_t, ES_WORK, ES_HGS, block_result_t, ELEM_ERR_NEGVOL, &
                                ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW
    use dx_hex8, only: centred_work, stable_time_step, first_error
    implicit none
@@ -110,8 +113,8 @@ contains
       real(wp) :: de6(nv_chunk, 6), so(nv_chunk, 6), sn(nv_chunk, 6)
       real(wp) :: deps(blk%nel, 6)
       real(wp) :: l11, l22, l12, l21, dtl, hdt, d1, d4, s1, s2, s4, hx, hy, hr, hz, ah, qx, qy
-      real(wp) :: e, diam, pw(2)
-      integer :: m
+      real(wp) :: e, diam, pw(2), kx, ky
+      integer :: m, h
       integer :: ierr(nv_chunk)
       logical :: failed(nv_chunk), axi, aw
       integer :: i, k, n, nn, w
@@ -293,7 +296,7 @@ contains
             fy(i, k) = alive(i)*(rb(i)*(s4*bx(i, k) + s2*by(i, k)) + hz)
          end do
       end do
-      ! ---- hourglass control (Flanagan-Belytschko viscous)
+      ! ---- hourglass control (Flanagan-Belytschko: viscous IHQ 1-3, stiffness IHQ 4, 5)
       res%dehg = 0.0_wp
       if (part%qh > 0.0_wp) then
          do i = 1, n
@@ -308,14 +311,34 @@ contains
                qx = qx + g(i, k)*vx(i, k)
                qy = qy + g(i, k)*vy(i, k)
             end do
-            ah = part%qh*(mat%ro/rv(i))*c(i)*sqrt(ar(i))*rb(i)*alive(i)
-            e = ah*dt_old*(qx*qx + qy*qy)
+            if (part%ihq >= 4) then
+               ! stiffness: corotate the stored resisting force, add k_h dt qdot; the energy
+               ! is the trapezoid of the old and new force (exact spring energy)
+               ah = 0.0_wp
+               do k = 1, 4
+                  ah = ah + bx(i, k)**2 + by(i, k)**2
+               end do
+               ah = part%qh*(mat%bulk + 4.0_wp*mat%shear/3.0_wp)*ah/(8.0_wp*ar(i))*rb(i)
+               h = blk%esc(ES_HGS)
+               kx = blk%es(i, h) + w12(i)*blk%es(i, h + 1)
+               ky = blk%es(i, h + 1) - w12(i)*blk%es(i, h)
+               blk%es(i, h) = kx + ah*dt_old*qx
+               blk%es(i, h + 1) = ky + ah*dt_old*qy
+               e = 0.5_wp*dt_old*((kx + blk%es(i, h))*qx + (ky + blk%es(i, h + 1))*qy)*alive(i)
+               qx = blk%es(i, h)*alive(i)
+               qy = blk%es(i, h + 1)*alive(i)
+            else
+               ah = part%qh*(mat%ro/rv(i))*c(i)*sqrt(ar(i))*rb(i)*alive(i)
+               e = ah*dt_old*(qx*qx + qy*qy)
+               qx = ah*qx
+               qy = ah*qy
+            end if
             e = e + 0.0_wp     ! one use of the product (no FMA into two sums: as dx_hex8)
             blk%ehg(i) = blk%ehg(i) + e
             res%dehg = res%dehg + e
             do k = 1, 4
-               fx(i, k) = fx(i, k) + ah*qx*g(i, k)
-               fy(i, k) = fy(i, k) + ah*qy*g(i, k)
+               fx(i, k) = fx(i, k) + qx*g(i, k)
+               fy(i, k) = fy(i, k) + qy*g(i, k)
             end do
          end do
       end if
