@@ -14,16 +14,16 @@
 !>   N_I over the area, int N_I (div sigma + (sigma_rr - sigma_tt)/r, ...) dA, integrated by
 !>   parts: f_rI = A (sigma_rr b_r + sigma_rz b_z) - A/4 (sigma_rr - sigma_tt)/rbar, f_zI = A
 !>   (sigma_rz b_r + sigma_zz b_z) - A/4 sigma_rz/rbar (Goudreau & Hallquist 1982, CMAME 33:
-!>   725-757; DYNA2D's default). dynx keeps both axisymmetric forms per radian (LS-DYNA's
-!>   convention for 2D axisymmetric masses, loads and energies): one lumped mass rho0 V0/4 per
-!>   node, and the area-weighted nodal equation multiplied by a radius: the radial one by the
-!>   node's r_I (then m_I a = r_I sum_e f_e + F_ext with m_I ~ r_I sum rho A/4: the area-
-!>   weighted acceleration to O(h^2) on a smooth mesh, and no division by r_I), the axial one
-!>   by each element's rbar (sum_e rbar (A sigma.b - A/4 sigma_rz/rbar) is r (d sigma_rz/dr +
-!>   d sigma_zz/dz) to the same order, and stays finite on the axis, where r_I = 0). (Each
-!>   element's radial equation by its own rbar would be d(r sigma_rr)/dr - sigma_rr: wrong by
-!>   sigma_rr, 26 % in the Lame test.) The element's internal energy is the work of its own
-!>   nodal forces (a Petrov-Galerkin form has no stress power sigma:D V to match).
+!>   725-757; DYNA2D's default). dynx keeps both axisymmetric forms per radian (masses, loads and
+!>   energies; LS-DYNA's convention as we read it, not checked against a run): one lumped mass rho0
+!>   V0/4 per node, and the area-weighted nodal equation multiplied by a radius: the radial one by
+!>   the node's r_I (then m_I a = r_I sum_e f_e + F_ext with m_I ~ r_I sum rho A/4: the area-
+!>   weighted acceleration to O(h^2) on a smooth mesh, and no division by r_I), the axial one by
+!>   each element's rbar (sum_e rbar (A sigma.b - A/4 sigma_rz/rbar) is r (d sigma_rz/dr + d
+!>   sigma_zz/dz) to the same order, and stays finite on the axis, where r_I = 0). (Each element's
+!>   radial equation by its own rbar would be d(r sigma_rr)/dr - sigma_rr: wrong by sigma_rr, 26 %
+!>   in the Lame test.) The element's internal energy is the work of its own nodal forces (a Petrov-
+!>   Galerkin form has no stress power sigma:D V to match).
 !> - The axis r = 0: no division by a nodal radius anywhere (rbar = V/A > 0 for any element
 !>   with area); nodes on the axis have their radial DOF fixed at build (v_r = 0 by symmetry).
 !> The cycle is dx_hex8's one-point pass in 2D: strain increment and spin at the mid-step
@@ -49,8 +49,8 @@
 module dx_quad2d
    use dx_kinds, only: wp, nv_chunk
    use dx_material, only: material_t
-   use dx_element_types, only: elem_block_t, part_t, ES_WORK, ES_HGS, block_result_t, ELEM_ERR_NEGVOL, &
-                               ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW
+   use dx_element_types, only: elem_block_t, part_t, ES_WORK, ES_HGS, block_result_t, &
+                               ELEM_ERR_NEGVOL, ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW
    use dx_hex8, only: centred_work, stable_time_step, first_error
    implicit none
    private
