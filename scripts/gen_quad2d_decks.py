@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Decks of the 2D solid regression cases (tests/regression/quad2d_*; dx_quad2d).
 
-  gen_quad2d_decks.py patch DIR            plane-strain patch test (ELFORM 13)
+  gen_quad2d_decks.py patch DIR [ELFORM]   plane-strain (13, default) or plane-stress (12,
+                                           thickness 0.5) patch test
   gen_quad2d_decks.py lame DIR ELFORM NR   thick-walled cylinder under internal pressure,
                                            NR elements through the wall (13: quarter ring in
                                            plane strain; 14, 15: axisymmetric ring section)
@@ -54,7 +55,7 @@ def write(path, lines):
         f.write('\n'.join(lines + ['*END']) + '\n')
 
 
-def patch(d):
+def patch(d, elform=13):
     """MacNeal & Harder's 5-element patch (1985) in the x-y plane, scaled x100 (mm): the four
     corners move with the velocity of a uniform velocity gradient G (with spin), the inner
     nodes start with it and are free."""
@@ -62,8 +63,11 @@ def patch(d):
     quads = [(1, 2, 6, 5), (2, 3, 7, 6), (3, 4, 8, 7), (4, 1, 5, 8), (5, 6, 7, 8)]
     g = ((1.0e-3, 4.0e-4), (-2.0e-4, -5.0e-4))
     vel = [(g[0][0]*x + g[0][1]*y, g[1][0]*x + g[1][1]*y) for x, y in xy]
-    s = head('Plane-strain patch test (MacNeal-Harder 1985, 5 quadrilaterals, ELFORM 13)',
-             1.0, 0.5, 0.05, [5, 6, 7, 8])
+    kind = {12: 'Plane-stress', 13: 'Plane-strain'}[elform]
+    s = head(f'{kind} patch test (MacNeal-Harder 1985, 5 quadrilaterals, ELFORM {elform})',
+             1.0, 0.5, 0.05, [5, 6, 7, 8], elform=elform)
+    if elform == 12:      # thickness 0.5 mm
+        s[s.index('       0.0')] = '       0.5'
     s += nodes(xy) + shells(quads)
     s += ['*DEFINE_CURVE', f'{1:10d}', f'{0.0:20.4f}{1.0:20.4f}', f'{100.0:20.4f}{1.0:20.4f}']
     s.append('*INITIAL_VELOCITY_NODE +')
@@ -265,7 +269,7 @@ def taylor(d, elform, nr, nz):
 if __name__ == '__main__':
     what, d = sys.argv[1], sys.argv[2]
     if what == 'patch':
-        patch(d)
+        patch(d, int(sys.argv[3]) if len(sys.argv) > 3 else 13)
     elif what == 'lame':
         lame(d, int(sys.argv[3]), int(sys.argv[4]))
     elif what == 'lameseg':

@@ -5,6 +5,8 @@
       plane-strain patch test: the free (history) nodes keep their initial velocity to TOL_V
       relative; the elements' stresses of the last plot state agree to TOL_S relative, and
       with plane-strain Hooke of the mean strain (sigma_zz = nu (sigma_xx + sigma_yy)) to TOL_A.
+  quad2d_check.py patchps OUT DECK TOL_V TOL_S TOL_A
+      the same for plane stress (ELFORM 12): Hooke with sigma_zz = 0.
   quad2d_check.py lame OUT1 OUT2 OUT3 T0 TOL ORDER_MIN
       thick-walled cylinder a = 10, b = 20, p = 0.1 (gen_quad2d_decks.py lame) on three meshes
       (nr = 4, 8, 16): the radial displacement of the inner and outer history nodes averaged
@@ -91,7 +93,7 @@ def initial_velocities(deck):
     return v
 
 
-def patch(out, deck, tol_v, tol_s, tol_a):
+def patch(out, deck, tol_v, tol_s, tol_a, plane_stress=False):
     v0 = initial_velocities(deck)
     dv = 0.0
     for n, rows in nodout(out).items():
@@ -117,8 +119,11 @@ def patch(out, deck, tol_v, tol_s, tol_a):
     lam, mu = E*NU/((1 + NU)*(1 - 2*NU)), E/(2*(1 + NU))
     ref = [lam*(exx + eyy) + 2*mu*exx, lam*(exx + eyy) + 2*mu*eyy, lam*(exx + eyy),
            2*mu*exy, 0.0, 0.0]
+    if plane_stress:
+        e1 = E/(1 - NU*NU)
+        ref = [e1*(exx + NU*eyy), e1*(eyy + NU*exx), 0.0, 2*mu*exy, 0.0, 0.0]
     da = max(abs(sig[0][k] - ref[k]) for k in range(6))/max(abs(x) for x in ref)
-    print(f'stress against plane-strain Hooke of the mean strain: {da:.3e} (tol {tol_a}); '
+    print(f'stress against {"plane-stress" if plane_stress else "plane-strain"} Hooke of the mean strain: {da:.3e} (tol {tol_a}); '
           f'sigma = {[round(x, 6) for x in sig[0][:4]]}, ref {[round(x, 6) for x in ref[:4]]}')
     if dv > tol_v or ds > tol_s or da > tol_a:
         fail('patch test')
@@ -264,8 +269,8 @@ def energy(out, band, after):
 
 if __name__ == '__main__':
     w = sys.argv[1]
-    if w == 'patch':
-        patch(sys.argv[2], sys.argv[3], *map(float, sys.argv[4:7]))
+    if w in ('patch', 'patchps'):
+        patch(sys.argv[2], sys.argv[3], *map(float, sys.argv[4:7]), plane_stress=w == 'patchps')
     elif w == 'lame':
         lame(sys.argv[2:5], float(sys.argv[5]), float(sys.argv[6]), float(sys.argv[7]))
     elif w == 'lame1':

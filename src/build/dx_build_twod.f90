@@ -16,7 +16,7 @@ module dx_build_twod
 
 contains
 
-   !> 0: part ip is 3D; 1: a 2D plane-strain part; 2: a 2D axisymmetric part (ELFORM 14, 15)
+   !> 0: part ip is 3D; 1: a 2D planar part (ELFORM 12, 13); 2: a 2D axisymmetric part (14, 15)
    integer function part_dim(model, ip)
       type(model_t), intent(in) :: model
       integer, intent(in) :: ip
@@ -36,7 +36,7 @@ contains
       type(model_t), intent(in) :: model
       type(error_t), allocatable, intent(out) :: error
       character(*), parameter :: kind(0:2) = [character(40) :: &
-         '3D', '2D plane strain (ELFORM 13)', '2D axisymmetric (ELFORM 14/15)']
+         '3D', '2D planar (ELFORM 12/13)', '2D axisymmetric (ELFORM 14/15)']
       integer :: i, d0
       if (size(model%parts) == 0) return
       d0 = part_dim(model, 1)

@@ -564,8 +564,8 @@ contains
             call twod_element(inp, model, conn(1:4, e), e, etyp(e), lab, w, f2%axisym, vol(e), &
                               error)
             if (allocated(thk)) thk(e) = 0.0_wp
-            return
-         end if
+            if (allocated(error) .or. f2%es_ncol(ES_THK) == 0) return
+         end if   ! plane stress (ELFORM 12) goes on to its thickness
          t4 = inp%elem_thk(:, e)
          tf = 'THIC1'
          if (t4(1) == 0.0_wp) then
@@ -580,6 +580,11 @@ contains
          if (.not. (tm > 0.0_wp)) then
             call set_error(error, w//'element '//str(lab)//': field '//tf//': the shell '// &
                'thickness must be > 0, got '//rstr(tm))
+            return
+         end if
+         if (f2%twod) then        ! plane stress: V0 = A t
+            thk(e) = tm
+            vol(e) = vol(e)*tm
             return
          end if
          a = shell_area(model%x0(:, conn(1:4, e)))

@@ -15,7 +15,7 @@ module dx_element
    use dx_material, only: material_t
    use dx_element_types, only: elem_block_t, part_t, ES_PHIM, block_result_t, family_t, element_family, ELEM_ERR_NEGVOL, &
                                ELEM_ERR_MATERIAL, ETYPE_TET4, ETYPE_SHELL_BT, ETYPE_QUAD2D_PS, &
-                               ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW
+                               ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS
    use dx_hex8, only: hex8_block, hex8_mass_share
    use dx_tet4, only: tet4_block
    use dx_shell_bt, only: shell_bt_block, shell_bt_rotary_inertia
@@ -48,7 +48,7 @@ contains
                              dt_old, f, mom, res)
       case (ETYPE_TET4)
          call tet4_block(blk, mat, part, x, v, dt_old, f, res)
-      case (ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW)
+      case (ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS)
          call quad2d_block(blk, mat, part, x, v, dt_old, f, res)
       case default
          call hex8_block(blk, mat, part, x, v, dt_old, f, res)
@@ -63,7 +63,8 @@ contains
       real(wp), intent(in) :: rho, mass(:)
       integer, intent(in) :: cnodes(:)
       select case (blk%etype)
-      case (ETYPE_TET4, ETYPE_SHELL_BT, ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW)
+      case (ETYPE_TET4, ETYPE_SHELL_BT, ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, &
+            ETYPE_QUAD2D_PSS)
          call blk%es_drop(ES_PHIM)
       case default
          call hex8_mass_share(blk, rho, mass, cnodes)

@@ -33,7 +33,8 @@ module dx_element_types
    public :: family_t, element_family, elem_volume, elem_moments, elem_length, block_result_t
    public :: ETYPE_HEX8_1PT, ETYPE_HEX8_SRI, ETYPE_TET4, ETYPE_DEFAULT, ETYPE_SHELL_BT
    public :: etype_of_shell_elform, ES_THK, shell_area, shell_frame, shell_stress_global
-   public :: ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, quad2d_area, quad2d_rvol
+   public :: ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS, quad2d_area, &
+             quad2d_rvol
    public :: MAX_NEN, MAX_FACE_NODES, MAX_FACES
    public :: ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, etype_of_elform, ETYPES
    public :: solid_shape, elem_quality, ASPECT_WARN, WARP_WARN
@@ -51,6 +52,7 @@ module dx_element_types
    !> 2D solids in the x-y plane (dx_quad2d): plane strain (ELFORM 13), area-weighted (14) and
    !> volume-weighted (15) axisymmetric quadrilaterals, x = r, y = z (the axis)
    integer, parameter :: ETYPE_QUAD2D_PS = 1013, ETYPE_QUAD2D_AW = 1014, ETYPE_QUAD2D_VW = 1015
+   integer, parameter :: ETYPE_QUAD2D_PSS = 1012   !< plane stress (ELFORM 12), thickness t
    !> every element type, one per family first (lookups by nen or XDMF code take the first)
    integer, parameter :: ETYPES(4) = [ETYPE_HEX8_1PT, ETYPE_TET4, ETYPE_SHELL_BT, &
                                       ETYPE_HEX8_SRI]
@@ -217,7 +219,7 @@ contains
          f%es_ncol = [0, 0, 0, 1 + 8]
          f%nip = 2; f%weight = 1
          f%rot = .true.
-      case (ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW)
+      case (ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS)
          ! a 2D quadrilateral (a triangle repeats N3): no faces (its boundary is edges), one
          ! hourglass mode per direction; V0 is the area (plane strain, unit thickness) or
          ! int r dA (axisymmetric, per radian), a quarter of rho V0 per node
@@ -229,7 +231,8 @@ contains
          f%es_ncol = [2*f%hgmodes, 4, 0, 0]
          f%nip = 1; f%weight = 1
          f%twod = .true.
-         f%axisym = etype /= ETYPE_QUAD2D_PS
+         f%axisym = etype == ETYPE_QUAD2D_AW .or. etype == ETYPE_QUAD2D_VW
+         if (etype == ETYPE_QUAD2D_PSS) f%es_ncol(ES_THK) = 1     ! its thickness
       end select
    end function element_family
 
@@ -252,6 +255,8 @@ contains
       select case (elform)
       case (2)
          etype = ETYPE_SHELL_BT
+      case (12)
+         etype = ETYPE_QUAD2D_PSS
       case (13)
          etype = ETYPE_QUAD2D_PS
       case (14)
@@ -396,7 +401,7 @@ contains
          vol = tet_volume(xe)
       case (ETYPE_SHELL_BT)      ! the mid-surface area: the caller multiplies by the thickness
          vol = shell_area(xe)
-      case (ETYPE_QUAD2D_PS)     ! per unit thickness
+      case (ETYPE_QUAD2D_PS, ETYPE_QUAD2D_PSS)   ! per unit thickness (12: times t, by the caller)
          vol = quad2d_area(xe)
       case (ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW)   ! per radian
          vol = quad2d_rvol(xe)
@@ -414,7 +419,7 @@ contains
       select case (etype)
       case (ETYPE_TET4)
          call tet_moments(xe, xref, vol, m1, m2)
-      case (ETYPE_SHELL_BT, ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW)
+      case (ETYPE_SHELL_BT, ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS)
          ! rigid shells and rigid 2D parts are refused at build: no moments yet
          vol = 0.0_wp; m1 = 0.0_wp; m2 = 0.0_wp
       case default

@@ -4,6 +4,9 @@
 !> Interactive Rezoning and Graphical Display, LLNL UCID-18756 Rev. 3, 1988; LS-DYNA Theory
 !> Manual, "Two Dimensional Solid Elements"):
 !> - ELFORM 13, plane strain: per unit thickness, d_zz = 0 (sigma_zz from the material).
+!> - ELFORM 12, plane stress: thickness t (the section's T1..T4 or the card's, fixed: no
+!>   thickness update), sigma_zz = 0 by the material's lamina update (update_plane_stress, as
+!>   the shells' layers); everything else as 13 with t in place of the unit thickness.
 !> - ELFORM 15, volume-weighted axisymmetric (x = r, y = z, the axis): the Galerkin form over
 !>   the volume per radian V = int r dA; one point at the centre with the in-plane B vectors
 !>   B_I = dA/dx_I (b_I = B_I/A = dN_I/dx there) scaled by rbar = V/A, and the hoop term
@@ -49,8 +52,9 @@
 module dx_quad2d
    use dx_kinds, only: wp, nv_chunk
    use dx_material, only: material_t
-   use dx_element_types, only: elem_block_t, part_t, ES_WORK, ES_HGS, block_result_t, &
-                               ELEM_ERR_NEGVOL, ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW
+   use dx_element_types, only: elem_block_t, part_t, ES_WORK, ES_HGS, ES_THK, block_result_t, &
+                               ELEM_ERR_NEGVOL, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, &
+                               ETYPE_QUAD2D_PSS
    use dx_hex8, only: centred_work, stable_time_step, first_error
    implicit none
    private
@@ -116,10 +120,15 @@ contains
       real(wp) :: e, diam, pw(2), kx, ky
       integer :: m, h
       integer :: ierr(nv_chunk)
-      logical :: failed(nv_chunk), axi, aw
+      logical :: failed(nv_chunk), axi, aw, pss
+      real(wp) :: de5(blk%nel, 5), s5(blk%nel, 5), ez(blk%nel)
+      integer :: th
       integer :: i, k, n, nn, w
-      axi = blk%etype /= ETYPE_QUAD2D_PS
+      axi = blk%etype == ETYPE_QUAD2D_AW .or. blk%etype == ETYPE_QUAD2D_VW
       aw = blk%etype == ETYPE_QUAD2D_AW
+      pss = blk%etype == ETYPE_QUAD2D_PSS
+      th = 0
+      if (pss) th = blk%esc(ES_THK)
       if (blk%esc(ES_WORK) == 0) call blk%es_add(ES_WORK, 4)
       w = blk%esc(ES_WORK)
       n = blk%nel
@@ -135,6 +144,7 @@ contains
       end do
       ! ---- mid-step geometry: velocity gradient times A, L_ij A = v_iI B_jI, hoop rate
       call quad2d_geometry(n, axi, xm, ym, bxm, bym, arm, volm)
+      if (pss) volm(1:n) = arm(1:n)*blk%es(1:n, th)   ! plane stress: V = A t (t fixed)
       do i = 1, n
          l11 = 0.0_wp; l22 = 0.0_wp; l12 = 0.0_wp; l21 = 0.0_wp
          do k = 1, 4
@@ -178,6 +188,7 @@ contains
       end do
       ! ---- geometry at t(n): forces, volume, time step
       call quad2d_geometry(n, axi, xe, ye, bx, by, ar, vol)
+      if (pss) vol(1:n) = ar(1:n)*blk%es(1:n, th)
       do i = 1, n
          vold(i) = blk%vol0(i)*blk%relvol(i)
          if (.not. (ar(i) > 0.0_wp .and. vol(i) > vcrush*blk%vol0(i))) then
@@ -223,7 +234,21 @@ contains
       do k = 1, 6
          blk%sig(1:n, k, 1) = so(1:n, k)
       end do
-      call mat%update(n, dt_old, deps, rv, ein, blk%sig(:, :, 1), blk%hv(:, :, 1), ierr)
+      if (pss) then      ! plane stress: the lamina update, sigma_zz = 0 (engineering shear)
+         do i = 1, n
+            de5(i, 1) = deps(i, 1); de5(i, 2) = deps(i, 2); de5(i, 3) = 2.0_wp*deps(i, 4)
+            de5(i, 4) = 0.0_wp; de5(i, 5) = 0.0_wp
+            s5(i, 1) = blk%sig(i, 1, 1); s5(i, 2) = blk%sig(i, 2, 1)
+            s5(i, 3) = blk%sig(i, 4, 1); s5(i, 4) = 0.0_wp; s5(i, 5) = 0.0_wp
+         end do
+         call mat%update_plane_stress(n, dt_old, de5, s5, blk%hv(:, :, 1), ierr, ez)
+         do i = 1, n
+            blk%sig(i, 1, 1) = s5(i, 1); blk%sig(i, 2, 1) = s5(i, 2)
+            blk%sig(i, 3, 1) = 0.0_wp; blk%sig(i, 4, 1) = s5(i, 3)
+         end do
+      else
+         call mat%update(n, dt_old, deps, rv, ein, blk%sig(:, :, 1), blk%hv(:, :, 1), ierr)
+      end if
       call mat%fails(n, blk%hv(:, :, 1), failed)
       call mat%wave_speed(n, rv, blk%hv(:, :, 1), c)
       do i = 1, n
