@@ -52,6 +52,7 @@ contains
             end do
          end associate
       end do
+      call twod_fixes(model, fix)
       n = count(any(fix, dim=1))
       allocate(model%spcs(n))
       n = 0
@@ -93,6 +94,24 @@ contains
       end do
       call move_alloc(pr, model%prescribed)
    end subroutine build_bcs
+
+   !> A 2D deck (dx_quad2d; all its parts are 2D, dx_model_build): the z DOF of every node is
+   !> fixed, so every z component of a nodal quantity stays zero whatever the loads; in
+   !> axisymmetry the nodes on the axis (x = r = 0 at t = 0) also have their radial DOF fixed.
+   subroutine twod_fixes(model, fix)
+      type(model_t), intent(in) :: model
+      logical, intent(inout) :: fix(:, :)
+      type(family_t) :: fam
+      integer :: i
+      if (size(model%blocks) == 0) return
+      fam = element_family(model%blocks(1)%etype)
+      if (.not. fam%twod) return
+      fix(3, :) = .true.
+      if (.not. fam%axisym) return
+      do i = 1, model%nn
+         if (model%x0(1, i) == 0.0_wp) fix(1, i) = .true.
+      end do
+   end subroutine twod_fixes
 
    !> rot(i): node i belongs to an element of a family with rotations (shells)
    subroutine rotation_nodes(model, rot)
@@ -224,6 +243,7 @@ contains
       integer, allocatable :: seg(:, :), nodes(:), ex(:)
       logical, allocatable :: keep(:)
       real(wp) :: d
+      type(family_t) :: fam
       allocate(model%node_loads(size(inp%node_loads)))
       do i = 1, size(inp%node_loads)
          associate (l => inp%node_loads(i))
@@ -255,7 +275,22 @@ contains
          associate (l => inp%seg_loads(i))
             c = curve_index(inp, mp, l%lcid, l%src, 'LCID', error)
             if (allocated(error)) return
-            if (l%ssid == 0) then
+            if (l%ssid == 0 .and. l%n(3) == 0) then    ! a 2-node edge of a 2D deck
+               call dense_segments(inp, mp, reshape([l%n(1:2), l%n(2), l%n(2)], [4, 1]), &
+                                   l%src, seg, error)
+               if (allocated(error)) return
+               fam = element_family(model%blocks(1)%etype)
+               ! N3 = 0 marks the edge, N4 its kind: 0 plane strain, -1 axisymmetric (the
+               ! load pass may see a model without blocks: the MPI loads model)
+               seg(3, 1) = 0
+               seg(4, 1) = merge(-1, 0, fam%axisym)
+               if (.not. fam%twod) then
+                  call set_error(error, at(inp, l%src)//'field N3: a 2-node segment (N3, N4 '// &
+                     'blank) is an edge of a 2D deck (*SECTION_SHELL ELFORM 13-15); this '// &
+                     'deck is 3D: give N3 (and N4) of the face')
+                  return
+               end if
+            else if (l%ssid == 0) then
                call dense_segments(inp, mp, reshape(l%n, [4, 1]), l%src, seg, error)
                if (allocated(error)) return
             else

@@ -16,7 +16,8 @@ module dx_model_build
                        WARP_WARN, erosion_t
    use dx_log, only: log_warn
    use dx_model_input, only: model_input_t, origin_t
-   use dx_element_types, only: ETYPE_SHELL_BT, ES_THK, shell_area
+   use dx_element_types, only: ES_THK, shell_area, etype_of_shell_elform
+   use dx_build_twod, only: part_dim, check_dimension, twod_element
    use dx_label_map, only: label_map_t
    use dx_build_common, only: maps_t, at, at_line, set_nodes, curve_index, node_index, &
                               dense_segments
@@ -248,6 +249,7 @@ contains
             end if
          end associate
       end do
+      call check_dimension(inp, model, error)
    end subroutine build_parts
 
    !> A part with a *SECTION_SHELL: its section's shell settings, and the checks of what
@@ -595,6 +597,7 @@ contains
          real(wp) :: a, t4(4), tm
          integer :: kk, jj
          character(:), allocatable :: tf
+         type(family_t) :: f2
          do kk = 1, 4
             conn(kk, e) = mp%node%get(inp%elem_conn(kk, e))
             if (conn(kk, e) == 0) then
@@ -615,6 +618,13 @@ contains
             end do
          end do
          etyp(e) = etype_of_section(model%parts(model%elem_part(e))%isec)
+         f2 = element_family(etyp(e))
+         if (f2%twod) then
+            call twod_element(inp, model, conn(1:4, e), e, etyp(e), lab, w, f2%axisym, vol(e), &
+                              error)
+            if (allocated(thk)) thk(e) = 0.0_wp
+            if (allocated(error) .or. f2%es_ncol(ES_THK) == 0) return
+         end if   ! plane stress (ELFORM 12) goes on to its thickness
          t4 = inp%elem_thk(:, e)
          tf = 'THIC1'
          if (t4(1) == 0.0_wp) then
@@ -629,6 +639,11 @@ contains
          if (.not. (tm > 0.0_wp)) then
             call set_error(error, w//'element '//str(lab)//': field '//tf//': the shell '// &
                'thickness must be > 0, got '//rstr(tm))
+            return
+         end if
+         if (f2%twod) then        ! plane stress: V0 = A t
+            thk(e) = tm
+            vol(e) = vol(e)*tm
             return
          end if
          a = shell_area(model%x0(:, conn(1:4, e)))
@@ -652,7 +667,7 @@ contains
       integer function etype_of_section(isec)
          integer, intent(in) :: isec
          if (model%sections(isec)%shell) then
-            etype_of_section = ETYPE_SHELL_BT
+            etype_of_section = etype_of_shell_elform(model%sections(isec)%elform)
          else
             etype_of_section = etype_of_elform(model%sections(isec)%elform)
          end if
@@ -804,7 +819,9 @@ contains
             rstr(inp%ctrl%dt2ms)//') is not available with the conserving rigid-body '// &
             'integrator (*DYNX_CONSERVING_CONTACT); set DT2MS = 0')
       ! shells: the rotary inertia is lumped once from the unscaled mass (not yet rescaled)
-      if (.not. allocated(error) .and. inp%ctrl%dt2ms /= 0.0_wp .and. allocated(inp%elem_thk)) &
+      ! (the 2D solids of *SECTION_SHELL ELFORM 13-15 have no rotations: part_dim > 0)
+      if (.not. allocated(error) .and. inp%ctrl%dt2ms /= 0.0_wp .and. allocated(inp%elem_thk) &
+          .and. part_dim(model, 1) == 0) &
          call set_error(error, at(inp, inp%timestep_src)//'field DT2MS: mass scaling (DT2MS = '// &
             rstr(inp%ctrl%dt2ms)//') is not yet available for decks with shells '// &
             '(*ELEMENT_SHELL): their rotary inertia would not be scaled; set DT2MS = 0')

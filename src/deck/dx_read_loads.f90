@@ -353,9 +353,14 @@ contains
          else
             do k = 1, 4
                call c%int('N'//str(k), 0, l%n(k))
-               if (c%ok() .and. k <= 3 .and. l%n(k) <= 0) call c%fail('N'//str(k), &
+               if (c%ok() .and. k <= 2 .and. l%n(k) <= 0) call c%fail('N'//str(k), &
                   'node id must be > 0')
+               if (c%ok() .and. k >= 3 .and. l%n(k) < 0) call c%fail('N'//str(k), &
+                  'node id must be > 0 (or N3 and N4 blank: a 2-node edge of a 2D deck)')
             end do
+            ! N3 = N4 = 0: a 2-node edge (2D decks; checked at build), kept as (N1, N2, 0, 0)
+            if (c%ok() .and. l%n(3) == 0 .and. l%n(4) /= 0) call c%fail('N3', &
+               'node id must be > 0 (or N3 and N4 blank: a 2-node edge of a 2D deck)')
             if (l%n(4) == 0) l%n(4) = l%n(3)
             call c%zero_int('N5', 'higher-order segments')
          end if

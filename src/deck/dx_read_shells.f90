@@ -2,7 +2,9 @@
 !> *CONTROL_SHELL, with the fields and defaults of the LS-DYNA Keyword User's Manual, Vol. I
 !> (R13). Every field is read; a value that would change LS-DYNA's results and that dynx
 !> does not implement is an error naming the field (docs/keywords.md, "Shells").
-!> *SECTION_SHELL card 1: SECID ELFORM SHRF NIP PROPT QR/IRID ICOMP SETYP;
+!> *SECTION_SHELL card 1: SECID ELFORM SHRF NIP PROPT QR/IRID ICOMP SETYP (ELFORM 2 the shell;
+!>   13, 14, 15 the 2D solids of dx_quad2d, for which NIP, SHRF and the thicknesses T1..T4
+!>   have no meaning: plane strain is per unit thickness, axisymmetry per radian);
 !>   card 2: T1 T2 T3 T4 NLOC MAREA IDOF EDGSET (one pair per section; _TITLE first).
 !> *ELEMENT_SHELL: EID PID N1 N2 N3 N4 N5 N6 N7 N8 (i8; long i20); a triangle repeats N3
 !>   (N4 = N3); _THICKNESS adds card 2: THIC1 THIC2 THIC3 THIC4 BETA (e16; long e20).
@@ -57,14 +59,17 @@ contains
          call read_section_id(blk, ic, c, s)
          call c%int('ELFORM', 2, s%elform)
          if (s%elform == 0) s%elform = 2
-         if (c%ok() .and. s%elform /= 2) call c%fail('ELFORM', 'shell formulation '// &
-            str(s%elform)//' is not supported (supported: 2 Belytschko-Lin-Tsay)')
+         if (c%ok() .and. all(s%elform /= [2, 12, 13, 14, 15])) call c%fail('ELFORM', 'shell '// &
+            'formulation '//str(s%elform)//' is not supported (supported: 2 Belytschko-Lin-'// &
+            'Tsay; 2D solids 12 plane stress, 13 plane strain, 14 area-weighted and 15 '// &
+            'volume-weighted axisymmetric)')
          call c%real('SHRF', 1.0_wp, s%shrf)
          if (s%shrf == 0.0_wp) s%shrf = 1.0_wp
          if (c%ok() .and. s%shrf < 0.0_wp) call c%fail('SHRF', 'shear factor must be > 0, '// &
                                                        'got '//rstr(s%shrf))
          call c%int('NIP', 2, s%nip)
          if (s%nip == 0) s%nip = 2
+         if (s%elform >= 12) s%nip = 1     ! 2D solids (dx_quad2d): one point, NIP unused
          if (c%ok() .and. (s%nip < 1 .or. s%nip > MAX_NIP)) call c%fail('NIP', &
             'through-thickness points '//str(s%nip)//' are not supported (supported: 1 to '// &
             str(MAX_NIP)//'; 3 to '//str(MAX_NIP)//' with *CONTROL_SHELL INTGRD = 1)')

@@ -7,15 +7,19 @@
 !> Families: hexahedron ELFORM 1 and 2 (dx_hex8: Flanagan & Belytschko 1981, IJNME
 !> 17:679-706; Hughes 1980, IJNME 15:1413-1418), tetrahedron ELFORM 10 (dx_tet4: one-point
 !> constant-strain tetrahedron; Zienkiewicz, Taylor & Zhu 2013, ch. 6), Belytschko-Lin-Tsay
-!> shell ELFORM 2 of *SECTION_SHELL (dx_shell_bt: Belytschko, Lin & Tsay 1984, CMAME 42).
+!> shell ELFORM 2 of *SECTION_SHELL (dx_shell_bt: Belytschko, Lin & Tsay 1984, CMAME 42), 2D
+!> quadrilaterals ELFORM 13, 14, 15 of *SECTION_SHELL (dx_quad2d: plane strain, area- and
+!> volume-weighted axisymmetric; Hallquist, DYNA2D, UCID-18756; Flanagan & Belytschko 1981).
 module dx_element
    use dx_kinds, only: wp
    use dx_material, only: material_t
    use dx_element_types, only: elem_block_t, part_t, ES_PHIM, block_result_t, family_t, element_family, ELEM_ERR_NEGVOL, &
-                               ELEM_ERR_MATERIAL, ETYPE_TET4, ETYPE_SHELL_BT
+                               ELEM_ERR_MATERIAL, ETYPE_TET4, ETYPE_SHELL_BT, ETYPE_QUAD2D_PS, &
+                               ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS
    use dx_hex8, only: hex8_block, hex8_mass_share
    use dx_tet4, only: tet4_block
    use dx_shell_bt, only: shell_bt_block, shell_bt_rotary_inertia
+   use dx_quad2d, only: quad2d_block
    implicit none
    private
    public :: element_block_pass, element_mass_share, block_result_t, family_t, element_family
@@ -47,6 +51,8 @@ contains
                              dt_old, f, mom, res)
       case (ETYPE_TET4)
          call tet4_block(blk, mat, part, x, v, dt_old, f, res, time, dtfloor)
+      case (ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS)
+         call quad2d_block(blk, mat, part, x, v, dt_old, f, res)
       case default
          call hex8_block(blk, mat, part, x, v, dt_old, f, res, time, dtfloor)
       end select
@@ -60,7 +66,8 @@ contains
       real(wp), intent(in) :: rho, mass(:)
       integer, intent(in) :: cnodes(:)
       select case (blk%etype)
-      case (ETYPE_TET4, ETYPE_SHELL_BT)
+      case (ETYPE_TET4, ETYPE_SHELL_BT, ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, &
+            ETYPE_QUAD2D_PSS)
          call blk%es_drop(ES_PHIM)
       case default
          call hex8_mass_share(blk, rho, mass, cnodes)

@@ -15,6 +15,9 @@
 !> and moments int x dV = V xbar, int x_i x_j dV = V/20 (sum_a x_ai x_aj + 16 xbar_i xbar_j)
 !> (the exact integral of a quadratic over a simplex: Zienkiewicz, Taylor & Zhu, The Finite
 !> Element Method: Its Basis and Fundamentals, 7th ed., 2013, eq. 6.29 / Table 6.3).
+!> 2D quadrilaterals (*SECTION_SHELL ELFORM 13, 14, 15; dx_quad2d): exact area (half the cross
+!> product of the diagonals) and, axisymmetric, the exact volume per radian int r dA (Green's
+!> theorem over the straight edges); time-step length area / diameter (dx_quad2d).
 !> Element error codes and the result record of one block pass live here too (dx_element),
 !> and the element block and the part the kernels work on (elem_block_t with its family state
 !> es, part_t): the model holds and re-exports them, so src/elements/ never imports src/model/
@@ -30,6 +33,8 @@ module dx_element_types
    public :: family_t, element_family, elem_volume, elem_moments, elem_length, block_result_t
    public :: ETYPE_HEX8_1PT, ETYPE_HEX8_SRI, ETYPE_TET4, ETYPE_DEFAULT, ETYPE_SHELL_BT
    public :: etype_of_shell_elform, ES_THK, shell_area, shell_frame, shell_stress_global
+   public :: ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS, quad2d_area, &
+             quad2d_rvol
    public :: MAX_NEN, MAX_FACE_NODES, MAX_FACES
    public :: ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, etype_of_elform, ETYPES
    public :: solid_shape, elem_quality, ASPECT_WARN, WARP_WARN
@@ -45,6 +50,10 @@ module dx_element_types
    integer, parameter :: ETYPE_DEFAULT = ETYPE_HEX8_1PT   !< a block built without a section
    !> shells: 1000 + the *SECTION_SHELL ELFORM (the solid and shell ELFORM numbers overlap)
    integer, parameter :: ETYPE_SHELL_BT = 1002   !< Belytschko-Lin-Tsay quadrilateral (dx_shell_bt)
+   !> 2D solids in the x-y plane (dx_quad2d): plane strain (ELFORM 13), area-weighted (14) and
+   !> volume-weighted (15) axisymmetric quadrilaterals, x = r, y = z (the axis)
+   integer, parameter :: ETYPE_QUAD2D_PS = 1013, ETYPE_QUAD2D_AW = 1014, ETYPE_QUAD2D_VW = 1015
+   integer, parameter :: ETYPE_QUAD2D_PSS = 1012   !< plane stress (ELFORM 12), thickness t
    !> every element type, one per family first (lookups by nen or XDMF code take the first)
    integer, parameter :: ETYPES(4) = [ETYPE_HEX8_1PT, ETYPE_TET4, ETYPE_SHELL_BT, &
                                       ETYPE_HEX8_SRI]
@@ -101,6 +110,8 @@ module dx_element_types
       integer :: weight = 1                !< partition cost weight (measured ns/element-cycle)
       integer :: es_ncol(MAX_ES) = 0       !< columns of each family-state slot (0: none)
       logical :: rot = .false.             !< nodes carry rotations (shells)
+      logical :: twod = .false.            !< a 2D family: x-y plane, the z DOF fixed
+      logical :: axisym = .false.          !< 2D axisymmetric: x = r >= 0, volumes per radian
    end type family_t
 
    !> results of one block pass
@@ -231,6 +242,20 @@ contains
          f%es_ncol = [0, 0, 0, 1 + 8, 0, 0]
          f%nip = 2; f%weight = 1
          f%rot = .true.
+      case (ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS)
+         ! a 2D quadrilateral (a triangle repeats N3): no faces (its boundary is edges), one
+         ! hourglass mode per direction; V0 is the area (plane strain, unit thickness) or
+         ! int r dA (axisymmetric, per radian), a quarter of rho V0 per node
+         f%name = 'quad4'; f%xdmf = 'Quadrilateral'; f%xdmf_code = 5
+         f%nen = 4; f%nfaces = 0; f%nedges = 4
+         f%edges(:, 1:4) = QUAD_EDGES
+         f%mass_share = 0.25_wp
+         f%hgmodes = 1
+         f%es_ncol = [2*f%hgmodes, 4, 0, 0]
+         f%nip = 1; f%weight = 1
+         f%twod = .true.
+         f%axisym = etype == ETYPE_QUAD2D_AW .or. etype == ETYPE_QUAD2D_VW
+         if (etype == ETYPE_QUAD2D_PSS) f%es_ncol(ES_THK) = 1     ! its thickness
       end select
    end function element_family
 
@@ -250,9 +275,47 @@ contains
    !> Element type of a *SECTION_SHELL ELFORM (0: not supported).
    pure integer function etype_of_shell_elform(elform) result(etype)
       integer, intent(in) :: elform
-      etype = 0
-      if (elform == 2) etype = ETYPE_SHELL_BT
+      select case (elform)
+      case (2)
+         etype = ETYPE_SHELL_BT
+      case (12)
+         etype = ETYPE_QUAD2D_PSS
+      case (13)
+         etype = ETYPE_QUAD2D_PS
+      case (14)
+         etype = ETYPE_QUAD2D_AW
+      case (15)
+         etype = ETYPE_QUAD2D_VW
+      case default
+         etype = 0
+      end select
    end function etype_of_shell_elform
+
+   !> Signed area of a 2D quadrilateral with nodes xe(2+, 4) in the x-y plane (a triangle
+   !> repeats N3): half the cross product of the diagonals, exact for the bilinear map
+   !> (positive for counter-clockwise nodes).
+   pure function quad2d_area(xe) result(a)
+      real(wp), intent(in) :: xe(:, :)
+      real(wp) :: a
+      a = 0.5_wp*((xe(1, 3) - xe(1, 1))*(xe(2, 4) - xe(2, 2)) - &
+                  (xe(1, 4) - xe(1, 2))*(xe(2, 3) - xe(2, 1)))
+   end function quad2d_area
+
+   !> Volume per radian int r dA of an axisymmetric quadrilateral (x = r) with nodes
+   !> xe(2+, 4): the first moment of the area about the axis by Green's theorem over its four
+   !> straight edges, (1/6) sum_k (r_k + r_k+1)(r_k z_k+1 - r_k+1 z_k); exact (the bilinear
+   !> map's edges are straight); a repeated N3 adds a zero edge.
+   pure function quad2d_rvol(xe) result(v)
+      real(wp), intent(in) :: xe(:, :)
+      real(wp) :: v
+      integer :: k, m
+      v = 0.0_wp
+      do k = 1, 4
+         m = mod(k, 4) + 1
+         v = v + (xe(1, k) + xe(1, m))*(xe(1, k)*xe(2, m) - xe(1, m)*xe(2, k))
+      end do
+      v = v/6.0_wp
+   end function quad2d_rvol
 
    !> Mid-surface area of a shell with nodes xe(3, 4) (a triangle repeats N3): half the
    !> norm of the cross product of the diagonals (exact for a plane quadrilateral).
@@ -361,6 +424,10 @@ contains
          vol = tet_volume(xe)
       case (ETYPE_SHELL_BT)      ! the mid-surface area: the caller multiplies by the thickness
          vol = shell_area(xe)
+      case (ETYPE_QUAD2D_PS, ETYPE_QUAD2D_PSS)   ! per unit thickness (12: times t, by the caller)
+         vol = quad2d_area(xe)
+      case (ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW)   ! per radian
+         vol = quad2d_rvol(xe)
       case default
          vol = hex_volume(xe)
       end select
@@ -375,7 +442,8 @@ contains
       select case (etype)
       case (ETYPE_TET4)
          call tet_moments(xe, xref, vol, m1, m2)
-      case (ETYPE_SHELL_BT)      ! rigid shells are refused at build: no moments yet
+      case (ETYPE_SHELL_BT, ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS)
+         ! rigid shells and rigid 2D parts are refused at build: no moments yet
          vol = 0.0_wp; m1 = 0.0_wp; m2 = 0.0_wp
       case default
          call hex_moments(xe, xref, vol, m1, m2)
@@ -394,6 +462,14 @@ contains
       real(wp) :: amax, a(3)
       integer :: k
       f = element_family(etype)
+      if (f%twod) then     ! 2D: area over the element's diameter (dx_quad2d, quad2d_length)
+         amax = max(norm2(xe(1:2, 3) - xe(1:2, 1)), norm2(xe(1:2, 4) - xe(1:2, 2)))
+         do k = 1, f%nedges
+            amax = max(amax, norm2(xe(1:2, f%edges(2, k)) - xe(1:2, f%edges(1, k))))
+         end do
+         l = quad2d_area(xe)/amax
+         return
+      end if
       if (etype == ETYPE_SHELL_BT) then    ! the shell's length (dx_shell_bt, ISDO = 0)
          amax = 0.0_wp
          do k = 1, f%nedges

@@ -36,7 +36,7 @@ module dx_hex8
    !> proportional to V (L = V/A_max) it would approach zero geometrically, never crossing it
    !> (extreme_crushed_element), until tr D = dV/(V dt) overflows.
    real(wp), parameter :: vcrush = epsilon(1.0_wp)
-   public :: hex8_block, hex8_volume, hex8_mass_share, centred_work, stable_time_step
+   public :: hex8_block, hex8_volume, hex8_mass_share, centred_work, stable_time_step, first_error
 
 
 contains
@@ -592,6 +592,7 @@ contains
       end do
    end subroutine stable_time_step
 
+   !> The first element of a block in error (res%ibad, res%errcode: negative volume or material).
    subroutine first_error(n, ierr, res)
       integer, intent(in) :: n, ierr(:)
       type(block_result_t), intent(inout) :: res

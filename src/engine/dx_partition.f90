@@ -487,6 +487,7 @@ contains
                do i = part%nr_ptr(nd(1)), part%nr_ptr(nd(1) + 1) - 1
                   all_here = .true.
                   do j = 2, 4
+                     if (nd(j) <= 0) cycle      ! a 2-node edge of a 2D deck (N3 = 0, N4 <= 0)
                      if (.not. any(part%nr_rank(part%nr_ptr(nd(j)):part%nr_ptr(nd(j) + 1) - 1) &
                                    == part%nr_rank(i))) all_here = .false.
                   end do

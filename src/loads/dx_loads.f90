@@ -4,7 +4,11 @@
 !> pressure acts against the segment normal given by the right-hand rule on n1..n4
 !> (LS-DYNA convention). Nodal shares: area vector A = (d13 x d24)/2 split 1/4 per node for a
 !> quadrilateral (exact for a flat segment under uniform pressure), (d12 x d13)/2 in thirds
-!> for a triangle.
+!> for a triangle. A 2-node edge (N3 = 0) of a 2D deck (dx_quad2d): normal (dy, -dx) (outward
+!> for an edge in its element's counter-clockwise order), the load against it: p L/2 per node
+!> in plane strain (unit thickness), int N_I p r ds per radian in axisymmetry (x = r):
+!> p L (2 r1 + r2)/6 and p L (r1 + 2 r2)/6 (exact for the linear edge). Such an edge is stored
+!> as nodes (N1, N2, 0, 0) in plane strain and (N1, N2, 0, -1) in axisymmetry (dx_build_loads).
 module dx_loads
    use dx_kinds, only: wp
    use dx_vec3, only: cross
@@ -32,7 +36,7 @@ contains
       real(wp), intent(in) :: t
       real(wp), intent(inout) :: fext(:, :)
       integer :: k, nd, n1, n2, n3, n4
-      real(wp) :: val, p, d1(3), d2(3), area(3)
+      real(wp) :: val, p, d1(3), d2(3), area(3), w1, w2
       if (allocated(model%body_loads)) call add_body_loads(model%body_loads, model%curves, &
                                                            model%mass, t, fext)
       if (allocated(model%node_loads)) then
@@ -51,7 +55,17 @@ contains
                p = ls%sf*model%curves(ls%curve)%eval(t - ls%at)
                if (p == 0.0_wp) cycle
                n1 = ls%nodes(1); n2 = ls%nodes(2); n3 = ls%nodes(3); n4 = ls%nodes(4)
-               if (n4 == 0 .or. n4 == n3) then
+               if (n3 == 0) then          ! a 2-node edge of a 2D deck (n4 = -1: axisymmetric)
+                  d1 = model%x(:, n2) - model%x(:, n1)
+                  area = [d1(2), -d1(1), 0.0_wp]
+                  w1 = 0.5_wp; w2 = 0.5_wp
+                  if (n4 < 0) then
+                     w1 = (2.0_wp*model%x(1, n1) + model%x(1, n2))/6.0_wp
+                     w2 = (model%x(1, n1) + 2.0_wp*model%x(1, n2))/6.0_wp
+                  end if
+                  fext(:, n1) = fext(:, n1) - w1*p*area
+                  fext(:, n2) = fext(:, n2) - w2*p*area
+               else if (n4 == 0 .or. n4 == n3) then
                   d1 = model%x(:, n2) - model%x(:, n1)
                   d2 = model%x(:, n3) - model%x(:, n1)
                   area = 0.5_wp*cross(d1, d2)
