@@ -210,13 +210,18 @@ def stretch(path):
     d.write(path)
 
 
-def plastic(path):
+def plastic(path, auto=False):
     """The bar of stretch() in *MAT_024 (E 200000, nu 0.3, SIGY 250, ETAN 2000) pulled to
     2 % in 10 steps: the stress-strain path against the bilinear curve."""
     nodes, elems, nid = box(4, 1, 1, 4.0, 1.0, 1.0)
-    d = Deck('implicit *MAT_024 bar past yield: uniaxial stress against the curve')
-    d.controls(1.0, 0.1, nsolvr=12, dctol=1.0e-10, ectol=1.0e-16, rctol=1.0e-10,
-               abstol=1.0e-9)
+    if auto:
+        d = Deck('implicit *MAT_024 bar, one step of 2 %, MAXREF 6, IAUTO 1: step cuts')
+        d.controls(1.0, 1.0, nsolvr=12, dctol=1.0e-10, ectol=1.0e-16, rctol=1.0e-10,
+                   abstol=1.0e-9, maxref=6, iauto=1)
+    else:
+        d = Deck('implicit *MAT_024 bar past yield: uniaxial stress against the curve')
+        d.controls(1.0, 0.1, nsolvr=12, dctol=1.0e-10, ectol=1.0e-16, rctol=1.0e-10,
+                   abstol=1.0e-9)
     d.part(2, ('plastic', 7.85e-9, 200000.0, 0.3, 250.0, 2000.0))
     d.mesh(nodes, elems)
     d.curve(1, [(0.0, 0.0), (1.0, 1.0)])
@@ -253,4 +258,5 @@ if __name__ == '__main__':
     lame(16, 24, 0.4999, os.path.join(lm, 'nu4999.k'))
     stretch(os.path.join(ROOT, 'implicit_bar_stretch', 'deck.k'))
     plastic(os.path.join(ROOT, 'implicit_plastic_bar', 'deck.k'))
+    plastic(os.path.join(ROOT, 'implicit_auto_cut', 'deck.k'), auto=True)
     singular(os.path.join(ROOT, 'bad_implicit_singular', 'deck.k'))

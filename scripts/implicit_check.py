@@ -64,7 +64,16 @@ def patch(out):
     for s in last_stress(out):
         worst = max(worst, max(abs(s[k] - ref[k]) for k in range(6)))
     ok &= report('max stress error / max|sigma|', worst/smax, 0.0, 1e-10, 0.0)
+    ok &= energy_ratio(out)
     return ok
+
+
+def energy_ratio(out):
+    """A linear elastic step: the stress work equals the work of the applied forces and
+    reactions (both trapezoids of quantities linear in u: exact), ratio 1 to 1e-10."""
+    names, rows = columns(os.path.join(out, 'glstat'))
+    r = rows[-1][names.index('energy_ratio')]
+    return report('glstat energy ratio (internal/external work)', r, 1.0, 1e-10, 0.0)
 
 
 def cantilever(out):
@@ -86,12 +95,13 @@ def cantilever(out):
         run(os.path.join(here, m + '.k'), os.path.join(out, m))
         d.append(tip(os.path.join(out, m)))
     d.append(tip(out))
+    ok = energy_ratio(out)
     err = [timo - x for x in d]
     print('Euler-Bernoulli %.6g  Timoshenko %.6g' % (eb, timo))
     for m, x, e in zip(('10x1x1', '20x2x2', '40x4x4'), d, err):
         print('mesh %-8s tip deflection %.8g  error against Timoshenko %.4g (%.3g %%)'
               % (m, x, e, 100*e/timo))
-    ok = err[0] > err[1] > err[2] > 0.0
+    ok &= err[0] > err[1] > err[2] > 0.0
     print('errors fall with the mesh: %s' % ('PASS' if ok else 'FAIL'))
     p = math.log(err[1]/err[2])/math.log(2.0)
     ok &= report('observed order (20x2x2 -> 40x4x4)', p, 2.0, 0.5, 0.0) and p >= 1.5

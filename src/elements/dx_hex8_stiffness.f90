@@ -167,7 +167,8 @@ contains
          end if
          cauchy = cauchy + dv(g)*[c(1, 1), c(2, 2), c(3, 3), c(1, 2), c(2, 3), c(3, 1)]
          if (.not. want_k) cycle
-         call mat%tangent(dt, deps(g, :), relvol(g), eint(g), sc(:, g), hv_of(g), d, ierrt)
+         dsig = deps(g, :)     ! (a contiguous copy of the point's increment)
+         call mat%tangent(dt, dsig, relvol(g), eint(g), sc(:, g), hv_of(g), d, ierrt)
          if (ierrt /= 0) then
             ierr = TL_ERR_MAT; return
          end if

@@ -33,7 +33,7 @@ module dx_implicit
    use dx_model, only: model_t
    use dx_output, only: output_t
    use dx_checkpoint, only: checkpoint_t
-   use dx_domain, only: domain_t
+   use dx_domain, only: domain_t, serial_domain_t
    use dx_integrator, only: integrator_t, run_options_t, END_FAILED, END_STOPPED
    use dx_explicit, only: init_state
    use dx_sparse, only: sparse_matvec
@@ -84,6 +84,13 @@ contains
                         'not in the dump)', EXIT_INPUT)
          return
       end if
+      select type (dom)
+      type is (serial_domain_t)
+      class default
+         call set_error(error, 'the implicit solver (IMFLAG = 1) runs serially: run bin/dynx '// &
+                        'without mpirun and dynx-part', EXIT_INPUT)
+         return
+      end select
       if (.not. allocated(model%x)) call init_state(model, dom)
       model%v = 0.0_wp
       call isys_setup(model, self%sys, error)
@@ -167,9 +174,8 @@ contains
          if (.not. allocated(error)) call set_error(error, 'no convergence', EXIT_NUMERIC)
          if (model%ctrl%imp%iauto /= 1 .or. 0.5_wp*h < dtmin_of(model) .or. &
              error%code == EXIT_INPUT) return
-         call log_info('dynx: implicit: step at time '//rstr(tn)//' failed ('// &
-                       trim(first_line(error%message))//'); retried at half the step '// &
-                       rstr(0.5_wp*h, 4))
+         call log_info('dynx: implicit: '//first_line(error%message)//' (iterations above): '// &
+                       'retried at half the step, '//rstr(0.5_wp*h, 4))
          deallocate(error)
          self%ncut = self%ncut + 1
          h = 0.5_wp*h
@@ -205,7 +211,8 @@ contains
       character(*), intent(in) :: s
       character(:), allocatable :: l
       integer :: k
-      k = index(s, new_line('a'))
+      k = index(s, '; residual history:')
+      if (k == 0) k = index(s, new_line('a'))
       if (k == 0) then
          l = s
       else
