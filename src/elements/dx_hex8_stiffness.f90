@@ -22,6 +22,7 @@ module dx_hex8_stiffness
    use dx_kinds, only: wp
    use dx_material, only: material_t
    use dx_element_types, only: ETYPE_HEX8_1PT, ETYPE_HEX8_SRI
+   use dx_hex8_geometry, only: inv3, XI => XI_NODE
    implicit none
    private
    public :: tl_solid_element, tl_supported, TL_ERR_JAC, TL_ERR_MAT, TL_NGP, TL_NEN
@@ -30,9 +31,6 @@ module dx_hex8_stiffness
    integer, parameter :: TL_NEN = 8   !< nodes per element
    integer, parameter :: TL_ERR_JAC = 1   !< reference or current Jacobian <= 0
    integer, parameter :: TL_ERR_MAT = 2   !< the material update failed
-   real(wp), parameter :: XI(3, 8) = reshape([-1, -1, -1,  1, -1, -1,  1, 1, -1,  -1, 1, -1, &
-                                              -1, -1, 1,  1, -1, 1,  1, 1, 1,  -1, 1, 1], &
-                                             [3, 8])*1.0_wp
 
 contains
 
@@ -77,7 +75,7 @@ contains
                           (1.0_wp + XI(2, a)*XI(2, g)*g3)
          end do
          jac = matmul(xe0, dndxi)          ! dX_i/dxi_j
-         call inv3x3(jac, ji, det)
+         call inv3(jac, ji, det)
          if (.not. (det > 0.0_wp)) then
             ierr = TL_ERR_JAC; return
          end if
@@ -92,7 +90,7 @@ contains
             el = 0.5_wp*(hg + transpose(hg))
          else
             el = 0.5_wp*(hg + transpose(hg) + matmul(transpose(hg), hg))
-            det = det3(f(:, :, g))
+            det = jdet(f(:, :, g))
             if (.not. (det > 0.0_wp)) then
                ierr = TL_ERR_JAC; return
             end if
@@ -138,7 +136,7 @@ contains
          if (linear) then
             relvol(g) = 1.0_wp
          else
-            relvol(g) = det3(f(:, :, g))
+            relvol(g) = jdet(f(:, :, g))
          end if
       end do
       eint = 0.0_wp
@@ -163,7 +161,7 @@ contains
          if (linear) then
             c = sg
          else
-            c = matmul(f(:, :, g), matmul(sg, transpose(f(:, :, g))))/det3(f(:, :, g))
+            c = matmul(f(:, :, g), matmul(sg, transpose(f(:, :, g))))/jdet(f(:, :, g))
          end if
          cauchy = cauchy + dv(g)*[c(1, 1), c(2, 2), c(3, 3), c(1, 2), c(2, 3), c(3, 1)]
          if (.not. want_k) cycle
@@ -208,29 +206,10 @@ contains
       m = reshape([v(1), v(4), v(6), v(4), v(2), v(5), v(6), v(5), v(3)], [3, 3])
    end function voigt_mat
 
-   pure real(wp) function det3(a)
+   !> det a (through the hexahedron's 3x3 inverse, dx_hex8_geometry%inv3)
+   pure real(wp) function jdet(a)
       real(wp), intent(in) :: a(3, 3)
-      det3 = a(1, 1)*(a(2, 2)*a(3, 3) - a(2, 3)*a(3, 2)) - &
-             a(1, 2)*(a(2, 1)*a(3, 3) - a(2, 3)*a(3, 1)) + &
-             a(1, 3)*(a(2, 1)*a(3, 2) - a(2, 2)*a(3, 1))
-   end function det3
-
-   pure subroutine inv3x3(a, ai, det)
-      real(wp), intent(in) :: a(3, 3)
-      real(wp), intent(out) :: ai(3, 3), det
-      det = det3(a)
-      if (det == 0.0_wp) then
-         ai = 0.0_wp; return
-      end if
-      ai(1, 1) = a(2, 2)*a(3, 3) - a(2, 3)*a(3, 2)
-      ai(1, 2) = a(1, 3)*a(3, 2) - a(1, 2)*a(3, 3)
-      ai(1, 3) = a(1, 2)*a(2, 3) - a(1, 3)*a(2, 2)
-      ai(2, 1) = a(2, 3)*a(3, 1) - a(2, 1)*a(3, 3)
-      ai(2, 2) = a(1, 1)*a(3, 3) - a(1, 3)*a(3, 1)
-      ai(2, 3) = a(1, 3)*a(2, 1) - a(1, 1)*a(2, 3)
-      ai(3, 1) = a(2, 1)*a(3, 2) - a(2, 2)*a(3, 1)
-      ai(3, 2) = a(1, 2)*a(3, 1) - a(1, 1)*a(3, 2)
-      ai(3, 3) = a(1, 1)*a(2, 2) - a(1, 2)*a(2, 1)
-      ai = ai/det
-   end subroutine inv3x3
+      real(wp) :: ai(3, 3)
+      call inv3(a, ai, jdet)
+   end function jdet
 end module dx_hex8_stiffness
