@@ -234,6 +234,35 @@ def plastic(path, auto=False):
     d.write(path)
 
 
+def bar_wave(path, alpha=0.0):
+    """Bar L = 10 (20x1x1 elements, h = 0.5), E = 1000, rho = 1, nu = 0, fixed at x = 0,
+    lateral motion fixed: a chain of lumped masses whose first fixed-free mode is exactly
+    sin(pi x/(2L)) sampled at the nodes; started with that velocity shape (v0 = 0.01) and
+    stepped by Newmark (ALPHA 0: GAMMA 1/2, BETA 1/4) or HHT (ALPHA < 0), DT0 = 0.03 (about
+    T/42), two periods."""
+    nodes, elems, nid = box(20, 1, 1, 10.0, 1.0, 1.0)
+    d = Deck('implicit dynamics: bar in its first mode, %s' % ('HHT ALPHA %g' % alpha if alpha
+                                                                 else 'Newmark trapezoidal'))
+    d.controls(2.6, 0.03, nsolvr=1)
+    if alpha:
+        d.kw('CONTROL_IMPLICIT_DYNAMICS', '$    IMASS     GAMMA      BETA    TDYBIR    TDYDTH    '
+             'TDYBUR     IRATE     ALPHA', d.f(1, 0.0, 0.0, 0, 0, 0, 0, float(alpha)))
+    else:
+        d.kw('CONTROL_IMPLICIT_DYNAMICS', '$    IMASS     GAMMA      BETA',
+             d.f(1, 0.5, 0.25))
+    d.part(2, ('elastic', 1.0, 1000.0, 0.0))
+    d.mesh(nodes, elems)
+    d.curve(1, [(0.0, 0.0), (1.0, 1.0)])
+    vel = []
+    for n, x in sorted(nodes.items()):
+        d.spc(n, 1 if abs(x[0]) < 1e-9 else 0, 1, 1)
+        if x[0] > 1e-9:
+            vel.append('%d,%.17g,0.0,0.0' % (n, 0.01*math.sin(math.pi*x[0]/20.0)))  # free format
+    d.kw('INITIAL_VELOCITY_NODE', *vel)
+    d.history([nid(20, 1, 1)])
+    d.write(path)
+
+
 def singular(path):
     """One cube, a load and no constraint at all: singular stiffness."""
     nodes, elems, nid = box(1, 1, 1, 1.0, 1.0, 1.0)
@@ -260,3 +289,5 @@ if __name__ == '__main__':
     plastic(os.path.join(ROOT, 'implicit_plastic_bar', 'deck.k'))
     plastic(os.path.join(ROOT, 'implicit_auto_cut', 'deck.k'), auto=True)
     singular(os.path.join(ROOT, 'bad_implicit_singular', 'deck.k'))
+    bar_wave(os.path.join(ROOT, 'implicit_newmark_bar', 'deck.k'))
+    bar_wave(os.path.join(ROOT, 'implicit_hht_bar', 'deck.k'), alpha=-0.1)

@@ -139,6 +139,7 @@ contains
       inp%ctrl%imp%gamma = gamma
       inp%ctrl%imp%beta = beta
       inp%ctrl%imp%alpha = alpha
+      inp%ctrl%imp%dynamic = .true.   ! (the Newton solver: Newmark/HHT instead of statics)
    end subroutine read_implicit_dynamics
 
    !> CID SPID MPID FORM EPS: a conserving contact between two rigid parts.

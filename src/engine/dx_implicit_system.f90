@@ -21,7 +21,8 @@ module dx_implicit_system
    implicit none
    private
    public :: implicit_system_t, isys_setup, isys_assemble, isys_commit, isys_external, &
-             isys_prescribe, isys_comm, isys_gather, isys_scatter, isys_dof_name
+             isys_prescribe, isys_comm, isys_gather, isys_scatter, isys_dof_name, &
+             isys_fix
 
    !> One block's committed (c) and trial (t) point state: S, Ebar (6, 8, nel), history
    !> (nh, 8, nel); the element's stress work w (committed) and its trial increment dw.
@@ -275,6 +276,13 @@ contains
          end do
       end do
    end subroutine isys_scatter
+
+   !> Zero the SPC-fixed components of a nodal field (velocities of a dynamic step).
+   subroutine isys_fix(sys, v)
+      type(implicit_system_t), intent(in) :: sys
+      real(wp), intent(inout) :: v(:, :)
+      where (sys%eqn == 0) v = 0.0_wp
+   end subroutine isys_fix
 
    !> 'node L dof x' of equation q (messages).
    function isys_dof_name(model, sys, q) result(s)

@@ -136,6 +136,7 @@ module dx_model
       real(wp) :: lstol = 0.9_wp, abstol = 1.0e-10_wp
       integer :: iauto = 0, iteopt = 11, itewin = 5
       real(wp) :: dtmin = 0.0_wp, dtmax = 0.0_wp
+      logical :: dynamic = .false.      !< *CONTROL_IMPLICIT_DYNAMICS given (IMASS = 1)
    end type implicit_ctrl_t
 
    !> *CONTROL_TERMINATION, *CONTROL_TIMESTEP, *CONTROL_HOURGLASS, *CONTROL_BULK_VISCOSITY,

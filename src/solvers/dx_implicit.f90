@@ -40,7 +40,7 @@ module dx_implicit
    use dx_mumps, only: mumps_t
    use dx_implicit_system, only: implicit_system_t, isys_setup, isys_assemble, isys_commit, &
                                  isys_external, isys_prescribe, isys_comm, isys_gather, &
-                                 isys_scatter, isys_dof_name
+                                 isys_scatter, isys_dof_name, isys_fix
    implicit none
    private
    public :: implicit_t
@@ -50,6 +50,12 @@ module dx_implicit
       type(mumps_t) :: ms
       real(wp), allocatable :: u(:, :), uc(:, :), fint(:, :), fintc(:, :), fext(:, :)
       real(wp), allocatable :: r(:), du(:), rk(:)
+      !> dynamics (*CONTROL_IMPLICIT_DYNAMICS): committed velocity and acceleration, the
+      !> committed out-of-balance force f_ext - f_int (HHT), the trial acceleration, the
+      !> lumped mass per equation
+      real(wp), allocatable :: vc(:, :), ac(:, :), rsc(:, :), at(:, :), meq(:)
+      logical :: dyn = .false.
+      real(wp) :: kin = 0.0_wp             !< kinetic energy of the committed state
       real(wp) :: wext = 0.0_wp            !< external work so far
       real(wp) :: h = 0.0_wp               !< the next step's length
       real(wp) :: t0wall = 0.0_wp
@@ -73,6 +79,7 @@ contains
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: t0
+      real(wp), allocatable :: m3(:, :)
       if (.not. (model%ctrl%endtim > 0.0_wp)) then
          call set_error(error, '*CONTROL_TERMINATION: field ENDTIM: the implicit solver '// &
             '(IMFLAG = 1) steps the loads from 0 to ENDTIM, which must be > 0, got '// &
@@ -93,12 +100,36 @@ contains
       end select
       if (.not. allocated(model%x)) call init_state(model, dom)
       model%v = 0.0_wp
+      if (model%ctrl%imp%dynamic .and. model%ctrl%imp%nsolvr /= 1) then
+         call set_error(error, '*CONTROL_IMPLICIT_DYNAMICS: the implicit dynamics of dynx '// &
+            'is linear for now: it needs *CONTROL_IMPLICIT_SOLUTION NSOLVR = 1', EXIT_INPUT)
+         return
+      end if
       call isys_setup(model, self%sys, error)
       if (allocated(error)) return
       allocate(self%u(3, model%nn), self%uc(3, model%nn), self%fint(3, model%nn), &
                self%fintc(3, model%nn), self%fext(3, model%nn))
       self%u = 0.0_wp; self%uc = 0.0_wp; self%fint = 0.0_wp; self%fintc = 0.0_wp
       allocate(self%r(self%sys%neq), self%du(self%sys%neq), self%rk(self%sys%neq))
+      self%dyn = model%ctrl%imp%dynamic
+      if (self%dyn) then
+         allocate(self%vc(3, model%nn), self%ac(3, model%nn), self%rsc(3, model%nn), &
+                  self%at(3, model%nn), self%meq(self%sys%neq), m3(3, model%nn))
+         self%vc = model%v0
+         m3 = spread(model%mass, 1, 3)
+         call isys_gather(self%sys, m3, self%meq)
+         ! a(0) = M^-1 (f_ext(0) - f_int(0)), u = 0 (f_int = 0)
+         model%x = model%x0
+         call isys_external(model, 0.0_wp, self%rsc)
+         self%ac = 0.0_wp
+         where (m3 > 0.0_wp) self%ac = self%rsc/m3
+         self%at = self%ac
+         self%kin = 0.5_wp*sum(m3*self%vc**2)
+         model%v = self%vc
+         call log_info('dynx: implicit: dynamics (*CONTROL_IMPLICIT_DYNAMICS): Newmark GAMMA '// &
+            rstr(model%ctrl%imp%gamma, 6)//', BETA '//rstr(model%ctrl%imp%beta, 6)// &
+            ', HHT ALPHA '//rstr(model%ctrl%imp%alpha, 6)//', lumped mass')
+      end if
       t0 = wall_time()
       call self%ms%analyse(self%sys%k, isys_comm(), error)
       if (allocated(error)) return
@@ -128,7 +159,7 @@ contains
       self%histories = .true.
       self%energies = .false.
       self%first = .true.
-      model%energy%initial = 0.0_wp
+      model%energy%initial = self%kin
       self%t0wall = wall_time()
       if (ck%wall0 <= 0.0_wp) ck%wall0 = self%t0wall
    end subroutine i_start
@@ -161,7 +192,7 @@ contains
          self%t = 0.0_wp
          self%dt = 0.0_wp
          self%done = .false.
-         call dom%energies(model, 0.0_wp, model%v, 0.0_wp, 0.0_wp, 0.0_wp, .true.)
+         call dom%energies(model, self%kin, model%v, 0.0_wp, 0.0_wp, 0.0_wp, .true.)
          model%energy%ratio = 1.0_wp
          return
       end if
@@ -183,11 +214,23 @@ contains
       end do
       ! ---- converged: commit, energies, the next step's length
       call isys_commit(model, self%sys)
-      self%wext = self%wext + 0.5_wp*sum((self%fintc + self%fint)*(self%u - self%uc))
+      if (self%dyn) then
+         ! work of the applied forces (trapezoid; reactions of SPCs do no work)
+         self%wext = self%wext + 0.5_wp*sum((self%rsc + self%fext)*(self%u - self%uc))
+         self%vc = self%vc + (tn - self%t)*((1.0_wp - model%ctrl%imp%gamma)*self%ac + &
+                                            model%ctrl%imp%gamma*self%at)
+         self%ac = self%at
+         self%rsc = self%fext
+         call isys_fix(self%sys, self%vc)
+         self%kin = 0.5_wp*sum(spread(model%mass, 1, 3)*self%vc**2)
+      else
+         self%wext = self%wext + 0.5_wp*sum((self%fintc + self%fint)*(self%u - self%uc))
+      end if
       self%uc = self%u
       self%fintc = self%fint
       model%x = model%x0 + self%u
       model%v = 0.0_wp
+      if (self%dyn) model%v = self%vc
       self%dt = tn - self%t
       self%t = tn
       self%done = tn >= self%tend
@@ -195,7 +238,7 @@ contains
       model%time = tn
       model%cycle = self%nsteps
       model%dt = self%dt
-      call dom%energies(model, 0.0_wp, model%v, self%wext, 0.0_wp, 0.0_wp, .true.)
+      call dom%energies(model, self%kin, model%v, self%wext, 0.0_wp, 0.0_wp, .true.)
       if (model%ctrl%imp%iauto == 1) then
          if (nit < model%ctrl%imp%iteopt - model%ctrl%imp%itewin) then
             h = 1.25_wp*h
@@ -319,7 +362,23 @@ contains
          call isys_external(model, tn, self%fext)
          call isys_assemble(model, self%sys, self%u, h, want_k, self%fint, error)
          if (allocated(error)) return
-         call isys_gather(self%sys, self%fext - self%fint, self%r)
+         if (.not. self%dyn) then
+            call isys_gather(self%sys, self%fext - self%fint, self%r)
+            return
+         end if
+         ! Newmark: a(n+1) from u(n+1); HHT: r = (1 + alpha)(f_ext - f_int)(n+1)
+         ! - alpha (f_ext - f_int)(n) - M a(n+1); K_eff = (1 + alpha) K + M/(beta h^2)
+         associate (al => model%ctrl%imp%alpha, be => model%ctrl%imp%beta)
+            self%at = (self%u - self%uc - h*self%vc)/(be*h*h) - (0.5_wp/be - 1.0_wp)*self%ac
+            call isys_gather(self%sys, (1.0_wp + al)*(self%fext - self%fint) - &
+                             al*(self%rsc - self%fintc) - spread(model%mass, 1, 3)*self%at, &
+                             self%r)
+            if (want_k) then
+               self%sys%k%a = (1.0_wp + al)*self%sys%k%a
+               self%sys%k%a(self%sys%k%rowptr(1:self%sys%neq)) = &
+                  self%sys%k%a(self%sys%k%rowptr(1:self%sys%neq)) + self%meq/(be*h*h)
+            end if
+         end associate
       end subroutine residual
 
       !> du = K^-1 r (a singular K: the free nodes and modes).
