@@ -100,11 +100,6 @@ contains
       end select
       if (.not. allocated(model%x)) call init_state(model, dom)
       model%v = 0.0_wp
-      if (model%ctrl%imp%dynamic .and. model%ctrl%imp%nsolvr /= 1) then
-         call set_error(error, '*CONTROL_IMPLICIT_DYNAMICS: the implicit dynamics of dynx '// &
-            'is linear for now: it needs *CONTROL_IMPLICIT_SOLUTION NSOLVR = 1', EXIT_INPUT)
-         return
-      end if
       call isys_setup(model, self%sys, error)
       if (allocated(error)) return
       allocate(self%u(3, model%nn), self%uc(3, model%nn), self%fint(3, model%nn), &
