@@ -61,6 +61,7 @@ module dx_implicit
       real(wp) :: t0wall = 0.0_wp
       logical :: first = .true.            !< the first call reports the initial state
       integer :: nfactor = 0, niter = 0, nsteps = 0, ncut = 0
+      real(wp) :: tfac = 0.0_wp, tasm = 0.0_wp, tana = 0.0_wp   !< wall seconds: factor+solve, assembly, analysis
    contains
       procedure :: start => i_start
       procedure :: step => i_step
@@ -127,6 +128,7 @@ contains
       end if
       t0 = wall_time()
       call self%ms%analyse(self%sys%k, isys_comm(), error)
+      self%tana = wall_time() - t0
       if (allocated(error)) return
       call log_info('dynx: implicit: '//str(self%sys%neq)//' equations, '// &
          str(self%sys%k%nnz)//' stored entries (upper triangle), MUMPS analysis (METIS) '// &
@@ -349,13 +351,16 @@ contains
       !> r = f_ext - f_int at self%u over the equations (with want_k: K at u too).
       subroutine residual(want_k)
          logical, intent(in) :: want_k
+         real(wp) :: t0
          if (self%sys%linear) then
             model%x = model%x0
          else
             model%x = model%x0 + self%u
          end if
+         t0 = wall_time()
          call isys_external(model, tn, self%fext)
          call isys_assemble(model, self%sys, self%u, h, want_k, self%fint, error)
+         self%tasm = self%tasm + (wall_time() - t0)
          if (allocated(error)) return
          if (.not. self%dyn) then
             call isys_gather(self%sys, self%fext - self%fint, self%r)
@@ -378,6 +383,8 @@ contains
 
       !> du = K^-1 r (a singular K: the free nodes and modes).
       subroutine factor_solve()
+         real(wp) :: t0
+         t0 = wall_time()
          call self%ms%factor(self%sys%k, error)
          if (allocated(error)) return
          self%nfactor = self%nfactor + 1
@@ -387,6 +394,7 @@ contains
          end if
          self%du = self%r
          call self%ms%solve(self%du, error)
+         self%tfac = self%tfac + (wall_time() - t0)
       end subroutine factor_solve
    end subroutine newton
 
@@ -483,8 +491,10 @@ contains
       call log_info('dynx: normal termination at step '//str(self%nsteps)//', time '// &
          rstr(self%t)//': '//str(self%niter)//' iterations (solves), '//str(self%nfactor)// &
          ' factorizations, '//str(self%ncut)//' step cuts')
-      call log_info('dynx: wall time '//rstr(wall_time() - self%t0wall, 4)//' s, peak '// &
-                    'memory '//str(peak_memory_kb())//' KiB')
+      call log_info('dynx: wall time '//rstr(wall_time() - self%t0wall, 4)//' s (MUMPS '// &
+         'analysis '//rstr(self%tana, 3)//' s before it, factorizations and solves '// &
+         rstr(self%tfac, 3)//' s, assembly '//rstr(self%tasm, 3)//' s), peak memory '// &
+         str(peak_memory_kb())//' KiB')
       if (dom%writer()) call out%close(ioerr)
       if (allocated(ioerr)) call move_alloc(ioerr, error)
       call dom%plot_finish(ioerr, .false.)
