@@ -210,7 +210,7 @@ def stretch(path):
     d.write(path)
 
 
-def plastic(path, auto=False):
+def plastic(path, auto=False, linear=False):
     """The bar of stretch() in *MAT_024 (E 200000, nu 0.3, SIGY 250, ETAN 2000) pulled to
     2 % in 10 steps: the stress-strain path against the bilinear curve."""
     nodes, elems, nid = box(4, 1, 1, 4.0, 1.0, 1.0)
@@ -218,6 +218,9 @@ def plastic(path, auto=False):
         d = Deck('implicit *MAT_024 bar, one step of 2 %, MAXREF 6, IAUTO 1: step cuts')
         d.controls(1.0, 1.0, nsolvr=12, dctol=1.0e-10, ectol=1.0e-16, rctol=1.0e-10,
                    abstol=1.0e-9, maxref=6, iauto=1)
+    elif linear:
+        d = Deck('implicit: NSOLVR 1 (linear) with *MAT_024 is refused')
+        d.controls(1.0, 0.1, nsolvr=1)
     else:
         d = Deck('implicit *MAT_024 bar past yield: uniaxial stress against the curve')
         d.controls(1.0, 0.1, nsolvr=12, dctol=1.0e-10, ectol=1.0e-16, rctol=1.0e-10,
@@ -288,6 +291,7 @@ if __name__ == '__main__':
     stretch(os.path.join(ROOT, 'implicit_bar_stretch', 'deck.k'))
     plastic(os.path.join(ROOT, 'implicit_plastic_bar', 'deck.k'))
     plastic(os.path.join(ROOT, 'implicit_auto_cut', 'deck.k'), auto=True)
+    plastic(os.path.join(ROOT, 'bad_implicit_linear_plastic', 'deck.k'), linear=True)
     singular(os.path.join(ROOT, 'bad_implicit_singular', 'deck.k'))
     bar_wave(os.path.join(ROOT, 'implicit_newmark_bar', 'deck.k'))
     bar_wave(os.path.join(ROOT, 'implicit_hht_bar', 'deck.k'), alpha=-0.1)

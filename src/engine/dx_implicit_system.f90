@@ -78,6 +78,12 @@ contains
                   'formulation is not in the implicit solver (solid ELFORM 1 and 2 are)'// &
                   why); return
             end if
+            if (sys%linear .and. model%blocks(b)%nhv > 0) then
+               call set_error(error, '*CONTROL_IMPLICIT_SOLUTION: field NSOLVR: 1 (linear, '// &
+                  'one solve per step) takes elastic materials; *PART '//str(p%label)// &
+                  ' has *MAT_ type '//str(model%mats(p%imat)%m%mtype)//' with history '// &
+                  '(plasticity): use NSOLVR 12'); return
+            end if
             if (model%mats(p%imat)%m%is_rigid) then
                call set_error(error, '*PART '//str(p%label)//': rigid material is not yet '// &
                               'in the implicit solver'//why); return
