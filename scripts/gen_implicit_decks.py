@@ -41,11 +41,20 @@ class Deck:
             self.lines.append(c)
 
     @staticmethod
+    def num(v):
+        """v in at most 10 characters with the most significant digits (g or e form)."""
+        for p in range(9, 0, -1):
+            for t in ('%.*g' % (p, v), ('%.*e' % (p - 1, v)).replace('e-0', 'e-').replace('e+0', 'e')):
+                if len(t) <= 10:
+                    return t
+        return '%.3e' % v
+
+    @staticmethod
     def f(*vals):
         out = ''
         for v in vals:
-            if isinstance(v, float):
-                out += ('%10.4g' % v).rjust(10) if abs(v) < 1e9 else ('%10.3e' % v)
+            if isinstance(v, float):   # the most digits that fit the 10 columns
+                out += Deck.num(v).rjust(10)
             else:
                 out += str(v).rjust(10)
         return out
@@ -135,15 +144,18 @@ def patch():
     d.write(os.path.join(ROOT, 'implicit_patch', 'deck.k'))
 
 
-def cantilever(n, path, nsolvr=1):
+def cantilever(n, path, nsolvr=1, P=1.0e-2, dt0=1.0, tols=None):
     """L = 10, 1 x 1 section, clamped at x = 0, end load P = 1e-3 E h^2... along -z at
     x = L spread bilinearly over the end face; nu = 0; 2n x n/5... mesh (10 n/ 1 ... )."""
     nx, ny, nz = 10*n, n, n
     L, h, E = 10.0, 1.0, 1000.0
-    P = 1.0e-2
     nodes, elems, nid = box(nx, ny, nz, L, h, h)
-    d = Deck('implicit cantilever %dx%dx%d: end load, Timoshenko' % (nx, ny, nz))
-    d.controls(1.0, 1.0, nsolvr=nsolvr)
+    if tols:
+        d = Deck('implicit cantilever %dx%dx%d: large deflection, elastica' % (nx, ny, nz))
+        d.controls(1.0, dt0, nsolvr=nsolvr, **tols)
+    else:
+        d = Deck('implicit cantilever %dx%dx%d: end load, Timoshenko' % (nx, ny, nz))
+        d.controls(1.0, dt0, nsolvr=nsolvr)
     d.part(2, ('elastic', 1.0e-9, E, 0.0))
     d.mesh(nodes, elems)
     d.curve(1, [(0.0, 0.0), (1.0, 1.0)])
@@ -284,6 +296,9 @@ if __name__ == '__main__':
     cantilever(1, os.path.join(c, 'mesh1.k'))
     cantilever(2, os.path.join(c, 'mesh2.k'))
     cantilever(4, os.path.join(c, 'deck.k'))
+    # P L^2/(E I) = 2 in 10 steps (Bisshopp & Drucker's elastica)
+    cantilever(2, os.path.join(ROOT, 'implicit_elastica', 'deck.k'), nsolvr=12, P=2.0*1000.0/12.0/100.0,
+               dt0=0.2, tols=dict(dctol=1.0e-8, ectol=1.0e-14, rctol=1.0e-8, abstol=1.0e-12))
     lm = os.path.join(ROOT, 'implicit_lame')
     lame(8, 12, 0.3, os.path.join(lm, 'mesh1.k'))
     lame(16, 24, 0.3, os.path.join(lm, 'deck.k'))
