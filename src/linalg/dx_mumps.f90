@@ -22,6 +22,14 @@ module dx_mumps
    public :: mumps_t
    include 'dmumps_struc.h'
 
+   interface
+      !> MUMPS's double-precision driver (the JOB in id says what it does)
+      subroutine dmumps(id)
+         import :: dmumps_struc
+         type(dmumps_struc), intent(inout) :: id
+      end subroutine dmumps
+   end interface
+
    type :: mumps_t
       type(dmumps_struc) :: id
       logical :: on = .false.          !< JOB = -1 done
