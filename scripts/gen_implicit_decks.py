@@ -222,7 +222,7 @@ def stretch(path):
     d.write(path)
 
 
-def plastic(path, auto=False, linear=False):
+def plastic(path, auto=False, linear=False, kinematic=False):
     """The bar of stretch() in *MAT_024 (E 200000, nu 0.3, SIGY 250, ETAN 2000) pulled to
     2 % in 10 steps: the stress-strain path against the bilinear curve."""
     nodes, elems, nid = box(4, 1, 1, 4.0, 1.0, 1.0)
@@ -238,6 +238,9 @@ def plastic(path, auto=False, linear=False):
         d.controls(1.0, 0.1, nsolvr=12, dctol=1.0e-10, ectol=1.0e-16, rctol=1.0e-10,
                    abstol=1.0e-9)
     d.part(2, ('plastic', 7.85e-9, 200000.0, 0.3, 250.0, 2000.0))
+    if kinematic:   # *MAT_003 (BETA 0: kinematic hardening; the same curve in monotonic tension)
+        d.lines[d.lines.index('*MAT_PIECEWISE_LINEAR_PLASTICITY')] = '*MAT_PLASTIC_KINEMATIC'
+        d.lines[2] = 'implicit *MAT_003 bar past yield: uniaxial stress against the curve'
     d.mesh(nodes, elems)
     d.curve(1, [(0.0, 0.0), (1.0, 1.0)])
     for n, x in sorted(nodes.items()):
@@ -306,6 +309,7 @@ if __name__ == '__main__':
     stretch(os.path.join(ROOT, 'implicit_bar_stretch', 'deck.k'))
     plastic(os.path.join(ROOT, 'implicit_plastic_bar', 'deck.k'))
     plastic(os.path.join(ROOT, 'implicit_auto_cut', 'deck.k'), auto=True)
+    plastic(os.path.join(ROOT, 'implicit_mat003_bar', 'deck.k'), kinematic=True)
     plastic(os.path.join(ROOT, 'bad_implicit_linear_plastic', 'deck.k'), linear=True)
     singular(os.path.join(ROOT, 'bad_implicit_singular', 'deck.k'))
     bar_wave(os.path.join(ROOT, 'implicit_newmark_bar', 'deck.k'))
