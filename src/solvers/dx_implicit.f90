@@ -62,6 +62,7 @@ module dx_implicit
       logical :: first = .true.            !< the first call reports the initial state
       integer :: nfactor = 0, niter = 0, nsteps = 0, ncut = 0
       real(wp) :: tfac = 0.0_wp, tasm = 0.0_wp, tana = 0.0_wp   !< wall seconds: factor+solve, assembly, analysis
+      real(wp) :: hfac = -1.0_wp           !< linear runs: the step of the factorization kept
    contains
       procedure :: start => i_start
       procedure :: step => i_step
@@ -385,9 +386,14 @@ contains
       subroutine factor_solve()
          real(wp) :: t0
          t0 = wall_time()
-         call self%ms%factor(self%sys%k, error)
-         if (allocated(error)) return
-         self%nfactor = self%nfactor + 1
+         ! NSOLVR 1 takes elastic materials only: K (and K_eff at the same step) is the same
+         ! matrix every step, so its factorization is kept
+         if (.not. (self%sys%linear .and. h == self%hfac)) then
+            call self%ms%factor(self%sys%k, error)
+            if (allocated(error)) return
+            self%nfactor = self%nfactor + 1
+            if (self%sys%linear .and. self%ms%nnull == 0) self%hfac = h
+         end if
          if (self%ms%nnull > 0) then
             call singular(self, model, tn, error)
             return
