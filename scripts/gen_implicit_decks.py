@@ -34,6 +34,7 @@ def box(nx, ny, nz, lx, ly, lz, perturb=None):
 class Deck:
     def __init__(self, title):
         self.lines = ['*KEYWORD', '*TITLE', title]
+        self.lists = {}    # keyword -> cards, written once each at the end (list keywords)
 
     def kw(self, name, *cards):
         self.lines.append('*' + name)
@@ -99,22 +100,26 @@ class Deck:
         self.kw('DEFINE_CURVE', self.f(lcid), *['%20.6g%20.6g' % p for p in pts])
 
     def spc(self, node, dx, dy, dz):
-        self.kw('BOUNDARY_SPC_NODE', self.f(node, 0, dx, dy, dz, 0, 0, 0))
+        self.lists.setdefault('BOUNDARY_SPC_NODE', []).append(self.f(node, 0, dx, dy, dz, 0, 0, 0))
 
     def prescribed(self, node, dof, lcid, sf):
         if sf == 0.0:    # (SF = 0 reads as LS-DYNA's default 1: a zero value is an SPC)
             self.spc(node, *[1 if d == dof else 0 for d in (1, 2, 3)])
             return
-        self.kw('BOUNDARY_PRESCRIBED_MOTION_NODE', self.f(node, dof, 2, lcid, float(sf)))
+        self.lists.setdefault('BOUNDARY_PRESCRIBED_MOTION_NODE', []).append(
+            self.f(node, dof, 2, lcid, float(sf)))
 
     def load(self, node, dof, lcid, sf):
-        self.kw('LOAD_NODE_POINT', self.f(node, dof, lcid, float(sf)))
+        self.lists.setdefault('LOAD_NODE_POINT', []).append(self.f(node, dof, lcid, float(sf)))
 
     def history(self, nodes):
         self.kw('DATABASE_HISTORY_NODE', *[''.join(self.f(n) for n in nodes[i:i + 8])
                                            for i in range(0, len(nodes), 8)])
 
     def write(self, path):
+        for k, cards in self.lists.items():
+            self.kw(k, *cards)
+        self.lists = {}
         os.makedirs(os.path.dirname(path), exist_ok=True)
         with open(path, 'w') as fh:
             fh.write('\n'.join(self.lines + ['*END']) + '\n')

@@ -11,8 +11,8 @@
 !> (dx_sparse) and its analysis is done once by the caller.
 module dx_implicit_system
    use dx_kinds, only: wp
-   use dx_error, only: error_t, set_error, EXIT_INPUT, EXIT_NUMERIC
-   use dx_strings, only: str, rstr
+   use dx_error, only: error_t, set_error, EXIT_NUMERIC
+   use dx_strings, only: str
    use dx_model, only: model_t
    use dx_hex8_stiffness, only: tl_solid_element, tl_supported, TL_ERR_JAC, TL_NGP, TL_NEN
    use dx_sparse, only: sparse_sym_t, sparse_symbolic, sparse_zero, sparse_add_element

@@ -25,7 +25,7 @@
 !> work = the trapezoid of the internal force (= the applied loads and reactions) over the
 !> step's displacement, kinetic 0. Serial only; no restart dumps of the implicit state.
 module dx_implicit
-   use dx_kinds, only: wp, huge_wp
+   use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_NUMERIC, EXIT_INPUT
    use dx_strings, only: str, rstr
    use dx_log, only: log_info
