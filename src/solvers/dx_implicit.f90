@@ -486,7 +486,9 @@ contains
       if (how == END_STOPPED) return
       model%time = self%t
       if (how == END_FAILED) then
-         call dom%write_plot(model, out, ioerr)   ! the last converged state
+         if (allocated(self%uc)) model%x = model%x0 + self%uc   ! the last converged state
+         if (allocated(self%vc)) model%v = self%vc
+         call dom%write_plot(model, out, ioerr)
          if (allocated(ioerr)) deallocate(ioerr)
          if (dom%writer()) call out%close(ioerr)
          if (allocated(ioerr)) deallocate(ioerr)
