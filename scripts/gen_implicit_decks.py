@@ -125,7 +125,24 @@ class Deck:
             fh.write('\n'.join(self.lines + ['*END']) + '\n')
 
 
-def patch():
+def tets(nodes, elems):
+    """Each hexahedron as 6 tetrahedra around its 1-7 diagonal (Kuhn: conforming when every
+    hexahedron is split alike), each oriented to a positive volume."""
+    out = []
+    for c in elems:
+        for a, b in ((1, 2), (2, 3), (3, 7), (7, 4), (4, 5), (5, 1)):
+            t = [c[0], c[a], c[b], c[6]]
+            x = [nodes[n] for n in t]
+            d = [[x[k][i] - x[0][i] for i in range(3)] for k in (1, 2, 3)]
+            vol = (d[0][0]*(d[1][1]*d[2][2] - d[1][2]*d[2][1]) - d[0][1]*(d[1][0]*d[2][2] -
+                   d[1][2]*d[2][0]) + d[0][2]*(d[1][0]*d[2][1] - d[1][1]*d[2][0]))
+            if vol < 0:
+                t[1], t[2] = t[2], t[1]
+            out.append(t + [t[3]]*4)
+    return out
+
+
+def patch(tet=False):
     """2x2x2 cube with its interior node moved: every boundary node prescribed the linear
     field u = G x; NSOLVR 1 (one solve)."""
     pert = lambda x: [0.56, 0.46, 0.53]
@@ -136,9 +153,13 @@ def patch():
         if sum(on) == 1:     # face centre nodes
             nodes[n] = [x[d] if on[d] else x[d] + (0.04 if d == 0 else -0.03) for d in range(3)]
     g = [[1.0e-3, 2.0e-4, -3.0e-4], [4.0e-4, -5.0e-4, 1.0e-4], [-2.0e-4, 3.0e-4, 8.0e-4]]
-    d = Deck('implicit patch test: linear field on the boundary of 8 irregular hexahedra')
+    if tet:
+        d = Deck('implicit patch test: linear field on the boundary of 48 irregular tetrahedra')
+        elems = tets(nodes, elems)
+    else:
+        d = Deck('implicit patch test: linear field on the boundary of 8 irregular hexahedra')
     d.controls(1.0, 1.0, nsolvr=1)
-    d.part(2, ('elastic', 7.85e-9, 210000.0, 0.3))
+    d.part(10 if tet else 2, ('elastic', 7.85e-9, 210000.0, 0.3))
     d.mesh(nodes, elems)
     d.curve(1, [(0.0, 0.0), (1.0, 1.0)])
     for n, x in sorted(nodes.items()):
@@ -146,7 +167,7 @@ def patch():
             for i in range(3):
                 d.prescribed(n, i + 1, 1, sum(g[i][j]*x[j] for j in range(3)))
     d.history([nid(1, 1, 1)])
-    d.write(os.path.join(ROOT, 'implicit_patch', 'deck.k'))
+    d.write(os.path.join(ROOT, 'implicit_patch_tet' if tet else 'implicit_patch', 'deck.k'))
 
 
 def cantilever(n, path, nsolvr=1, P=1.0e-2, dt0=1.0, tols=None):
@@ -300,6 +321,7 @@ def singular(path):
 
 if __name__ == '__main__':
     patch()
+    patch(tet=True)
     c = os.path.join(ROOT, 'implicit_cantilever')
     cantilever(1, os.path.join(c, 'mesh1.k'))
     cantilever(2, os.path.join(c, 'mesh2.k'))

@@ -5,6 +5,8 @@
 !> method (Hughes, "Generalization of selective integration procedures to anisotropic and
 !> nonlinear media", IJNME 15 (1980) 1413-1418) so that nearly incompressible materials do
 !> not lock (ELFORM 1 and 2 both take this element in the implicit solver; dynx's choice).
+!> The 4-node tetrahedron (ELFORM 10) takes the same routine with one point (constant strain;
+!> the mean dilatation is then the point's own: no B-bar, it locks as nu -> 1/2).
 !> Strain: the Green-Lagrange strain E = (H + H^T + H^T H)/2 (H = Grad u) of each point with
 !> its volumetric part replaced by the element's reference-volume mean,
 !>    Ebar = E + (tr E_mean - tr E)/3 I,    tr E_mean = sum_g w_g tr E_g / V0,
@@ -21,14 +23,14 @@
 module dx_hex8_stiffness
    use dx_kinds, only: wp
    use dx_material, only: material_t
-   use dx_element_types, only: ETYPE_HEX8_1PT, ETYPE_HEX8_SRI
+   use dx_element_types, only: ETYPE_HEX8_1PT, ETYPE_HEX8_SRI, ETYPE_TET4
    use dx_hex8_geometry, only: inv3, XI => XI_NODE
    implicit none
    private
-   public :: tl_solid_element, tl_supported, TL_ERR_JAC, TL_ERR_MAT, TL_NGP, TL_NEN
+   public :: tl_solid_element, tl_supported, tl_points, TL_ERR_JAC, TL_ERR_MAT, TL_NGP, TL_NEN
 
-   integer, parameter :: TL_NGP = 8   !< integration points per element
-   integer, parameter :: TL_NEN = 8   !< nodes per element
+   integer, parameter :: TL_NGP = 8   !< integration points per element (at most)
+   integer, parameter :: TL_NEN = 8   !< nodes per element (at most)
    integer, parameter :: TL_ERR_JAC = 1   !< reference or current Jacobian <= 0
    integer, parameter :: TL_ERR_MAT = 2   !< the material update failed
 
@@ -37,8 +39,15 @@ contains
    !> Whether the implicit solver has an element for the block's element type.
    pure logical function tl_supported(etype)
       integer, intent(in) :: etype
-      tl_supported = etype == ETYPE_HEX8_1PT .or. etype == ETYPE_HEX8_SRI
+      tl_supported = etype == ETYPE_HEX8_1PT .or. etype == ETYPE_HEX8_SRI .or. etype == ETYPE_TET4
    end function tl_supported
+
+   !> Integration points of the implicit element of a block's type: 2x2x2 for the
+   !> hexahedron, 1 for the 4-node tetrahedron (constant strain).
+   pure integer function tl_points(etype)
+      integer, intent(in) :: etype
+      tl_points = merge(1, TL_NGP, etype == ETYPE_TET4)
+   end function tl_points
 
    !> One element. xe0(3, 8) reference coordinates, ue(3, 8) displacements; the committed
    !> state sc(6, 8) (S, Voigt xx yy zz xy yz zx), ec(6, 8) (Ebar, tensor shears), hc(:, 8)
@@ -48,25 +57,38 @@ contains
    subroutine tl_solid_element(mat, xe0, ue, dt, linear, sc, ec, hc, s, e, h, fint, want_k, &
                               ke, dw, cauchy, havg, ierr)
       class(material_t), intent(in) :: mat
-      real(wp), intent(in) :: xe0(3, 8), ue(3, 8), dt
+      real(wp), intent(in) :: xe0(:, :), ue(:, :), dt
       logical, intent(in) :: linear, want_k
-      real(wp), intent(in) :: sc(6, 8), ec(6, 8), hc(:, :)
-      real(wp), intent(out) :: s(6, 8), e(6, 8), h(:, :)
-      real(wp), intent(out) :: fint(24), ke(24, 24), dw, cauchy(6), havg(:)
+      real(wp), intent(in) :: sc(:, :), ec(:, :), hc(:, :)
+      real(wp), intent(out) :: s(:, :), e(:, :), h(:, :)
+      real(wp), intent(out) :: fint(:), ke(:, :), dw, cauchy(6), havg(:)
       integer, intent(out) :: ierr
-      real(wp) :: g3, dndxi(8, 3), jac(3, 3), ji(3, 3), det, dndx(8, 3, 8), dv(8), f(3, 3, 8)
-      real(wp) :: hg(3, 3), el(3, 3), tre(8), trem, v0, b(6, 24, 8), bv(24, 8), bvm(24)
-      real(wp) :: deps(8, 6), sig(8, 6), relvol(8), eint(8), d(6, 6), st(3, 3), pm, p
-      real(wp) :: hv(8, max(1, size(hc, 1))), dsig(6), sg(3, 3), c(3, 3), bd(24, 6), tmp(3)
-      integer :: g, a, i, col, nh, ie(8), ierrt, bb
+      real(wp) :: g3, dndxi(size(xe0, 2), 3), jac(3, 3), ji(3, 3), det
+      real(wp) :: dndx(size(xe0, 2), 3, size(s, 2)), dv(size(s, 2)), f(3, 3, size(s, 2))
+      real(wp) :: hg(3, 3), el(3, 3), tre(size(s, 2)), trem, v0
+      real(wp) :: b(6, 3*size(xe0, 2), size(s, 2)), bv(3*size(xe0, 2), size(s, 2))
+      real(wp) :: bvm(3*size(xe0, 2)), deps(size(s, 2), 6), sig(size(s, 2), 6)
+      real(wp) :: relvol(size(s, 2)), eint(size(s, 2)), d(6, 6), st(3, 3), pm, p
+      real(wp) :: hv(size(s, 2), max(1, size(hc, 1))), dsig(6), sg(3, 3), c(3, 3)
+      real(wp) :: bd(3*size(xe0, 2), 6), tmp(3)
+      integer :: g, a, i, col, nh, ie(size(s, 2)), ierrt, bb, nen, ngp
       ierr = 0
+      nen = size(xe0, 2)
+      ngp = size(s, 2)
       nh = size(hc, 1)
       g3 = 1.0_wp/sqrt(3.0_wp)
       fint = 0.0_wp
       if (want_k) ke = 0.0_wp
       ! ---- pass 1: geometry, deformation gradient and strain at each point
-      do g = 1, 8
-         do a = 1, 8
+      do g = 1, ngp
+         if (nen == 4) then      ! the tetrahedron: N = 1 - xi - eta - zeta, xi, eta, zeta
+            dndxi = 0.0_wp
+            dndxi(1, :) = -1.0_wp
+            do a = 2, 4
+               dndxi(a, a - 1) = 1.0_wp
+            end do
+         end if
+         do a = 1, merge(8, 0, nen == 8)
             dndxi(a, 1) = 0.125_wp*XI(1, a)*(1.0_wp + XI(2, a)*XI(2, g)*g3)* &
                           (1.0_wp + XI(3, a)*XI(3, g)*g3)
             dndxi(a, 2) = 0.125_wp*XI(2, a)*(1.0_wp + XI(1, a)*XI(1, g)*g3)* &
@@ -80,6 +102,7 @@ contains
             ierr = TL_ERR_JAC; return
          end if
          dv(g) = det
+         if (nen == 4) dv(g) = det/6.0_wp
          dndx(:, :, g) = matmul(dndxi, ji)  ! dN_a/dX_j
          hg = matmul(ue, dndx(:, :, g))     ! H_ij = du_i/dX_j
          f(:, :, g) = hg
@@ -98,7 +121,7 @@ contains
          e(:, g) = [el(1, 1), el(2, 2), el(3, 3), el(1, 2), el(2, 3), el(3, 1)]
          tre(g) = el(1, 1) + el(2, 2) + el(3, 3)
          ! B: dE (engineering shears) per nodal displacement, at F (linear: at I)
-         do a = 1, 8
+         do a = 1, nen
             do i = 1, 3
                col = 3*(a - 1) + i
                if (linear) then
@@ -121,14 +144,14 @@ contains
       v0 = sum(dv)
       trem = sum(dv*tre)/v0
       bvm = matmul(bv, dv)/v0
-      do g = 1, 8
+      do g = 1, ngp
          e(1:3, g) = e(1:3, g) + (trem - tre(g))/3.0_wp
          do i = 1, 3
             b(i, :, g) = b(i, :, g) + (bvm - bv(:, g))/3.0_wp
          end do
       end do
       ! ---- pass 2: the material's update from the committed state
-      do g = 1, 8
+      do g = 1, ngp
          deps(g, :) = e(:, g) - ec(:, g)
          sig(g, :) = sc(:, g)
          hv(g, :) = 0.0_wp
@@ -141,12 +164,12 @@ contains
       end do
       eint = 0.0_wp
       ie = 0
-      call mat%update(8, dt, deps, relvol, eint, sig, hv, ie)
+      call mat%update(ngp, dt, deps, relvol, eint, sig, hv, ie)
       if (any(ie /= 0)) then
          ierr = TL_ERR_MAT; return
       end if
       dw = 0.0_wp
-      do g = 1, 8
+      do g = 1, ngp
          s(:, g) = sig(g, :)
          if (nh > 0) h(:, g) = hv(g, 1:nh)
          dsig = 0.5_wp*(s(:, g) + sc(:, g))
@@ -155,7 +178,7 @@ contains
       ! ---- internal force, tangent, Cauchy stress
       pm = sum(dv*(s(1, :) + s(2, :) + s(3, :)))/(3.0_wp*v0)
       cauchy = 0.0_wp
-      do g = 1, 8
+      do g = 1, ngp
          fint = fint + dv(g)*matmul(s(:, g), b(:, :, g))
          sg = voigt_mat(s(:, g))
          if (linear) then
@@ -179,8 +202,8 @@ contains
          do i = 1, 3
             st(i, i) = st(i, i) - p + pm
          end do
-         do a = 1, 8
-            do bb = 1, 8
+         do a = 1, nen
+            do bb = 1, nen
                det = dv(g)*dot_product(dndx(a, :, g), matmul(st, dndx(bb, :, g)))
                do i = 1, 3
                   ke(3*(a - 1) + i, 3*(bb - 1) + i) = ke(3*(a - 1) + i, 3*(bb - 1) + i) + det

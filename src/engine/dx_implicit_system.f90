@@ -14,7 +14,7 @@ module dx_implicit_system
    use dx_error, only: error_t, set_error, EXIT_NUMERIC
    use dx_strings, only: str
    use dx_model, only: model_t
-   use dx_hex8_stiffness, only: tl_solid_element, tl_supported, TL_ERR_JAC, TL_NGP, TL_NEN
+   use dx_hex8_stiffness, only: tl_solid_element, tl_supported, tl_points, TL_ERR_JAC, TL_NEN
    use dx_sparse, only: sparse_sym_t, sparse_symbolic, sparse_zero, sparse_add_element
    use dx_loads, only: add_external_loads
    use dx_par, only: par_self_handle
@@ -51,7 +51,7 @@ contains
       type(model_t), intent(in) :: model
       type(implicit_system_t), intent(inout) :: sys
       type(error_t), allocatable, intent(out) :: error
-      integer :: b, e, a, i, k, n, nh, ne, d
+      integer :: b, e, a, i, k, n, nh, ne, d, ngp
       character(*), parameter :: why = ' (the implicit Newton solver of IMFLAG = 1, issue 20)'
       sys%linear = model%ctrl%imp%nsolvr == 1
       if (allocated(model%contact)) then
@@ -75,7 +75,7 @@ contains
          associate (p => model%parts(model%blocks(b)%ipart))
             if (.not. tl_supported(model%blocks(b)%etype)) then
                call set_error(error, '*PART '//str(p%label)//': its *SECTION_* element '// &
-                  'formulation is not in the implicit solver (solid ELFORM 1 and 2 are)'// &
+                  'formulation is not in the implicit solver (solid ELFORM 1, 2, 10 are)'// &
                   why); return
             end if
             if (sys%linear .and. model%blocks(b)%nhv > 0) then
@@ -139,8 +139,9 @@ contains
       allocate(sys%emap(3*TL_NEN, ne))
       do b = 1, size(model%blocks)
          associate (blk => model%blocks(b))
+            sys%emap(:, sys%eoff(b) + 1:sys%eoff(b) + blk%nel) = 0
             do e = 1, blk%nel
-               do a = 1, TL_NEN
+               do a = 1, size(blk%conn, 1)
                   do d = 1, 3
                      sys%emap(3*(a - 1) + d, sys%eoff(b) + e) = max(0, sys%eqn(d, blk%conn(a, e)))
                   end do
@@ -153,8 +154,9 @@ contains
       do b = 1, size(model%blocks)
          associate (blk => model%blocks(b), s => sys%bs(b))
             nh = blk%nhv
-            allocate(s%sc(6, TL_NGP, blk%nel), s%ec(6, TL_NGP, blk%nel), &
-                     s%hc(nh, TL_NGP, blk%nel), s%wc(blk%nel), s%dw(blk%nel), &
+            ngp = tl_points(blk%etype)
+            allocate(s%sc(6, ngp, blk%nel), s%ec(6, ngp, blk%nel), &
+                     s%hc(nh, ngp, blk%nel), s%wc(blk%nel), s%dw(blk%nel), &
                      s%cauchy(6, blk%nel), s%havg(nh, blk%nel))
             s%sc = 0.0_wp; s%ec = 0.0_wp; s%hc = 0.0_wp; s%wc = 0.0_wp; s%dw = 0.0_wp
             s%cauchy = 0.0_wp; s%havg = 0.0_wp
@@ -174,21 +176,24 @@ contains
       logical, intent(in) :: want_k
       real(wp), intent(out) :: fint(:, :)
       type(error_t), allocatable, intent(out) :: error
-      integer :: b, e, a, ierr
+      integer :: b, e, a, ierr, nen
       real(wp) :: xe0(3, TL_NEN), ue(3, TL_NEN), fe(3*TL_NEN), ke(3*TL_NEN, 3*TL_NEN)
       fint = 0.0_wp
+      ke = 0.0_wp
       if (want_k) call sparse_zero(sys%k)
       do b = 1, size(model%blocks)
          associate (blk => model%blocks(b), s => sys%bs(b), &
                     mat => model%mats(model%parts(model%blocks(b)%ipart)%imat)%m)
+            nen = size(blk%conn, 1)
             do e = 1, blk%nel
-               do a = 1, TL_NEN
+               do a = 1, nen
                   xe0(:, a) = model%x0(:, blk%conn(a, e))
                   ue(:, a) = u(:, blk%conn(a, e))
                end do
-               call tl_solid_element(mat, xe0, ue, dt, sys%linear, s%sc(:, :, e), &
-                  s%ec(:, :, e), s%hc(:, :, e), s%st(:, :, e), s%et(:, :, e), s%ht(:, :, e), &
-                  fe, want_k, ke, s%dw(e), s%cauchy(:, e), s%havg(:, e), ierr)
+               call tl_solid_element(mat, xe0(:, 1:nen), ue(:, 1:nen), dt, sys%linear, &
+                  s%sc(:, :, e), s%ec(:, :, e), s%hc(:, :, e), s%st(:, :, e), s%et(:, :, e), &
+                  s%ht(:, :, e), fe(1:3*nen), want_k, ke(1:3*nen, 1:3*nen), s%dw(e), &
+                  s%cauchy(:, e), s%havg(:, e), ierr)
                if (ierr /= 0) then
                   if (ierr == TL_ERR_JAC) then
                      call set_error(error, 'element '//str(model%elem_label(blk%elem(e)))// &
@@ -201,7 +206,7 @@ contains
                   end if
                   return
                end if
-               do a = 1, TL_NEN
+               do a = 1, nen
                   fint(:, blk%conn(a, e)) = fint(:, blk%conn(a, e)) + fe(3*a - 2:3*a)
                end do
                if (want_k) call sparse_add_element(sys%k, sys%eoff(b) + e, ke)

@@ -6,7 +6,9 @@
 !>    at h = 1e-5 (displacements ~0.3), its round-off eps |f|/h ~ 1e-11 relative;
 !> 2. objectivity: a rigid rotation of 60 degrees gives no strain, no stress, no force
 !>    (bound 1e-12 of E: round-off of E = (H + H^T + H^T H)/2 with |H| ~ 1);
-!> 3. the linear form (NSOLVR 1): f = K u exactly (to 1e-12 relative) and K symmetric.
+!> 3. the linear form (NSOLVR 1): f = K u exactly (to 1e-12 relative) and K symmetric;
+!> 4. the 4-node tetrahedron (one point) through the same routine: tangent = differences of
+!>    the force at finite strain (same bound as 1).
 program test_hex8_stiffness
    use dx_kinds, only: wp
    use dx_error, only: error_t
@@ -77,8 +79,42 @@ program test_hex8_stiffness
    call check_close(maxval(abs(fp - f))/maxval(abs(f)), 0.0_wp, 1.0e-12_wp, 0.0_wp, &
                     'linear form: f = K u')
    call check(maxval(abs(k - transpose(k))) <= 1.0e-14_wp*maxval(abs(k)), 'linear form: K symmetric')
+
+   ! 4. tetrahedron
+   call tet_consistency()
    call assert_summary()
 contains
+   subroutine tet_consistency()
+      real(wp) :: xt(3, 4), ut(3, 4), upt(3, 4), sct(6, 1), ect(6, 1), hct(0, 1), st(6, 1), &
+                  et(6, 1), ht(0, 1), ft(12), fpt(12), fmt(12), kt(12, 12), kdt(12, 12), &
+                  kdumt(12, 12)
+      integer :: jj, nn, d0
+      xt = reshape([0.0_wp, 0.0_wp, 0.0_wp,  1.1_wp, 0.1_wp, -0.05_wp,  0.2_wp, 0.9_wp, 0.1_wp, &
+                    0.1_wp, 0.2_wp, 1.05_wp], [3, 4])
+      sct = 0.0_wp; ect = 0.0_wp
+      do i = 1, 4
+         ut(:, i) = matmul(r, xt(:, i)*[1.1_wp, 0.95_wp, 1.02_wp] + 0.02_wp*sin(real(5*i, wp))) &
+                    - xt(:, i)
+      end do
+      call tl_solid_element(el, xt, ut, 1.0_wp, .false., sct, ect, hct, st, et, ht, ft, .true., &
+                            kt, dw, cauchy, havg, ierr)
+      call check(ierr == 0, 'tetrahedron at a finite-strain state')
+      do jj = 1, 12
+         nn = (jj + 2)/3
+         d0 = jj - 3*(nn - 1)
+         upt = ut
+         upt(d0, nn) = upt(d0, nn) + hstep
+         call tl_solid_element(el, xt, upt, 1.0_wp, .false., sct, ect, hct, st, et, ht, fpt, &
+                               .false., kdumt, dw, cauchy, havg, ierr)
+         upt(d0, nn) = upt(d0, nn) - 2*hstep
+         call tl_solid_element(el, xt, upt, 1.0_wp, .false., sct, ect, hct, st, et, ht, fmt, &
+                               .false., kdumt, dw, cauchy, havg, ierr)
+         kdt(:, jj) = (fpt - fmt)/(2.0_wp*hstep)
+      end do
+      call check_close(maxval(abs(kt - kdt))/maxval(abs(kt)), 0.0_wp, 1.0e-6_wp, 0.0_wp, &
+                       'tetrahedron: tangent = d fint/du by central differences')
+   end subroutine tet_consistency
+
    subroutine rotation(angle, ax, rm)
       real(wp), intent(in) :: angle, ax(3)
       real(wp), intent(out) :: rm(3, 3)
