@@ -192,6 +192,7 @@ def cantilever(n, path, nsolvr=1, P=1.0e-2, dt0=1.0, tols=None):
             wz = (0.5 if k in (0, nz) else 1.0)/nz
             d.load(nid(nx, j, k), 3, 1, -P*wy*wz)
     d.history([nid(nx, 0, 0), nid(nx, ny, nz), nid(nx, ny//2, nz//2)])
+    d.kw('DATABASE_SPCFORC', d.f(float(dt0)))
     d.write(path)
 
 

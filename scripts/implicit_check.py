@@ -97,6 +97,11 @@ def cantilever(out):
         d.append(tip(os.path.join(out, m)))
     d.append(tip(out))
     ok = energy_ratio(out)
+    # spcforc: the clamp's reactions balance the end load (resultant z = +P; the solve's
+    # relative residual is ~4e-11, so 1e-9 of P)
+    res = [l for l in open(os.path.join(out, 'spcforc')) if 'force resultants' in l][-1]
+    rz = float(res.split('=')[1].split()[2])
+    ok &= report('spcforc resultant z (= P)', rz, P, 0.0, 1e-9)
     err = [timo - x for x in d]
     print('Euler-Bernoulli %.6g  Timoshenko %.6g' % (eb, timo))
     for m, x, e in zip(('10x1x1', '20x2x2', '40x4x4'), d, err):

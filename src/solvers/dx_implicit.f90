@@ -226,6 +226,7 @@ contains
       end if
       self%uc = self%u
       self%fintc = self%fint
+      model%f = self%fext - self%fint    ! (spcforc: the reactions are -f on the SPC dofs)
       model%x = model%x0 + self%u
       model%v = 0.0_wp
       if (self%dyn) model%v = self%vc
