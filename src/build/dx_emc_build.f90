@@ -64,13 +64,8 @@ contains
       nc = 0
       if (allocated(inp%emc%contacts)) nc = size(inp%emc%contacts)
       if (nc == 0) then
-         if (inp%ctrl%imp%imflag == 1) then
-            call set_error(error, at(inp, inp%ctrl%imp%ifile, inp%ctrl%imp%line, &
-               'CONTROL_IMPLICIT_GENERAL')//'field IMFLAG: IMFLAG = 1 without '// &
-               '*DYNX_CONSERVING_CONTACT asks for the implicit Newton solver, which dynx '// &
-               'does not have yet (issue 20); the implicit solver of dynx is the conserving '// &
-               'rigid-body contact solver and needs *DYNX_CONSERVING_CONTACT')
-         else if (allocated(inp%emc%spheres)) then
+         ! (IMFLAG = 1 without it: the implicit Newton solver, dx_implicit)
+         if (allocated(inp%emc%spheres)) then
             if (size(inp%emc%spheres) > 0) call set_error(error, at(inp, &
                inp%emc%spheres(1)%ifile, inp%emc%spheres(1)%line, 'DYNX_RIGID_SPHERE')// &
                'a spherical part is used only by *DYNX_CONSERVING_CONTACT, which the deck lacks')

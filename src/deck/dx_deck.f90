@@ -22,6 +22,7 @@ module dx_deck
    use dx_read_contact, only: register_contact
    use dx_read_restart, only: register_restart
    use dx_read_emc, only: register_emc, emc_finish
+   use dx_read_implicit, only: register_implicit
    use dx_read_output, only: register_output
    use dx_model_input, only: model_input_t, input_init, input_finish
    implicit none
@@ -45,6 +46,7 @@ contains
       call register_contact(reg)
       call register_restart(reg)
       call register_emc(reg)
+      call register_implicit(reg)
       call register_output(reg)
    end function new_registry
 

@@ -44,11 +44,11 @@ contains
       call c%int('IMFLAG', 0, inp%ctrl%imp%imflag)
       if (c%ok() .and. inp%ctrl%imp%imflag == 2) then
          call c%fail('IMFLAG', 'IMFLAG = 2 (explicit, then implicit springback) is not '// &
-            'supported; 0 (explicit) and 1 (implicit: the conserving rigid-body solver with '// &
-            '*DYNX_CONSERVING_CONTACT) are')
+            'supported; 0 (explicit) and 1 (implicit: the Newton solver, or the conserving '// &
+            'rigid-body solver with *DYNX_CONSERVING_CONTACT) are')
       else if (c%ok() .and. inp%ctrl%imp%imflag /= 0 .and. inp%ctrl%imp%imflag /= 1) then
-         call c%fail('IMFLAG', 'only 0 (explicit) and 1 (implicit, conserving rigid-body '// &
-                     'solver) are supported, got '//str(inp%ctrl%imp%imflag))
+         call c%fail('IMFLAG', 'only 0 (explicit) and 1 (implicit: Newton, or conserving '// &
+                     'rigid-body) are supported, got '//str(inp%ctrl%imp%imflag))
       end if
       call c%real('DT0', 0.0_wp, inp%ctrl%imp%dt0)
       ! DT0 = 0 with IMFLAG = 1 is judged after the whole deck (emc_finish): without
@@ -139,6 +139,7 @@ contains
       inp%ctrl%imp%gamma = gamma
       inp%ctrl%imp%beta = beta
       inp%ctrl%imp%alpha = alpha
+      inp%ctrl%imp%dynamic = .true.   ! (the Newton solver: Newmark/HHT instead of statics)
    end subroutine read_implicit_dynamics
 
    !> CID SPID MPID FORM EPS: a conserving contact between two rigid parts.
@@ -237,17 +238,28 @@ contains
       call c%done(error)
    end subroutine read_emc_control
 
-   !> After the whole deck: IMFLAG = 1 for the conserving solver (*DYNX_CONSERVING_CONTACT
-   !> present) needs DT0 > 0; without it the build names IMFLAG (the Newton solver of issue
-   !> 20), so a DT0 of 0 there is not the first thing to say.
+   !> After the whole deck: IMFLAG = 1 needs DT0 > 0, for the conserving solver
+   !> (*DYNX_CONSERVING_CONTACT present) and for the implicit Newton solver (without it).
    subroutine emc_finish(inp, error)
       type(model_input_t), intent(in) :: inp
       type(error_t), allocatable, intent(out) :: error
       integer :: nc
       nc = 0
       if (allocated(inp%emc%contacts)) nc = size(inp%emc%contacts)
-      if (inp%ctrl%imp%imflag /= 1 .or. nc == 0) return
+      if (inp%ctrl%imp%imflag /= 1) return
+      if (nc == 0 .and. inp%ctrl%imp%dt0 > 0.0_wp .and. .not. (inp%ctrl%endtim > 0.0_wp)) then
+         call set_error(error, inp%files(inp%ctrl%imp%ifile)%s//':'//str(inp%ctrl%imp%line)// &
+            ': *CONTROL_IMPLICIT_GENERAL: field IMFLAG: IMFLAG = 1 (the implicit Newton '// &
+            'solver) steps the loads from 0 to *CONTROL_TERMINATION ENDTIM, which must be > 0')
+         return
+      end if
       if (inp%ctrl%imp%dt0 > 0.0_wp) return
+      if (nc == 0) then
+         call set_error(error, inp%files(inp%ctrl%imp%ifile)%s//':'//str(inp%ctrl%imp%line)// &
+            ': *CONTROL_IMPLICIT_GENERAL: field DT0: the implicit step size must be > 0 '// &
+            '(the implicit Newton solver of IMFLAG = 1 steps the loads by DT0)')
+         return
+      end if
       call set_error(error, inp%files(inp%ctrl%imp%ifile)%s//':'//str(inp%ctrl%imp%line)// &
          ': *CONTROL_IMPLICIT_GENERAL: field DT0: the implicit step size must be > 0 '// &
          '(the conserving solver of *DYNX_CONSERVING_CONTACT steps by DT0)')

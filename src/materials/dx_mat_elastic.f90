@@ -20,6 +20,7 @@ module dx_mat_elastic
       procedure :: setup => elastic_setup
       procedure :: nhist => elastic_nhist
       procedure :: update => elastic_update
+      procedure :: tangent => elastic_tangent
    end type mat_elastic_t
 
 contains
@@ -93,4 +94,22 @@ contains
          sig(i, 6) = sig(i, 6) + g2*deps(i, 6)
       end do
    end subroutine elastic_update
+
+   !> The exact tangent of the update: d(i,j) = lambda (i, j <= 3) + 2G delta_ij (Voigt,
+   !> tensor shears), so the implicit solver's elastic stiffness has no difference error.
+   subroutine elastic_tangent(self, dt, deps, relvol, eint, sig, hv, d, ierr)
+      class(mat_elastic_t), intent(in) :: self
+      real(wp), intent(in) :: dt, deps(6), relvol, eint, sig(6), hv(:)
+      real(wp), intent(out) :: d(6, 6)
+      integer, intent(out) :: ierr
+      real(wp) :: g2
+      integer :: i
+      g2 = 2.0_wp*self%shear
+      d = 0.0_wp
+      d(1:3, 1:3) = self%bulk - g2/3.0_wp
+      do i = 1, 6
+         d(i, i) = d(i, i) + g2
+      end do
+      ierr = 0
+   end subroutine elastic_tangent
 end module dx_mat_elastic

@@ -27,7 +27,7 @@ module dx_material
    use dx_eos, only: eos_t
    implicit none
    private
-   public :: material_t, mat_holder_t, read_mid_ro, fd_step
+   public :: material_t, mat_holder_t, read_mid_ro, fd_step, fd_tangent
    public :: MAT_ERR_NO_PLANE_STRESS, MAT_ERR_PS_ALG
 
    !> ierr of update_plane_stress for a model that has no plane-stress (lamina) form

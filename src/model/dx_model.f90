@@ -123,11 +123,20 @@ module dx_model
    !> Earthq. Eng. Struct. Dyn. 5:283-292; LS-DYNA's sign, -1/3 <= ALPHA <= 0) and the
    !> high-frequency spectral radius rho_inf they ask for (1: no numerical damping).
    !> ifile, line: where IMFLAG was read (messages; line 0: no *CONTROL_IMPLICIT_GENERAL).
+   !> The Newton solver's *CONTROL_IMPLICIT_SOLUTION (NSOLVR 1 linear, else full Newton;
+   !> ILIMIT, MAXREF, DCTOL, ECTOL, RCTOL, LSTOL, ABSTOL with LS-DYNA's defaults) and
+   !> *CONTROL_IMPLICIT_AUTO (IAUTO, ITEOPT, ITEWIN, DTMIN, DTMAX; 0: DT0/1000 and 10 DT0).
    type :: implicit_ctrl_t
       integer :: imflag = 0
       real(wp) :: dt0 = 0.0_wp
       real(wp) :: gamma = 0.5_wp, beta = 0.25_wp, alpha = 0.0_wp, rho_inf = 1.0_wp
       integer :: ifile = 0, line = 0
+      integer :: nsolvr = 12, ilimit = 11, maxref = 15
+      real(wp) :: dctol = 1.0e-3_wp, ectol = 1.0e-2_wp, rctol = 1.0e10_wp
+      real(wp) :: lstol = 0.9_wp, abstol = 1.0e-10_wp
+      integer :: iauto = 0, iteopt = 11, itewin = 5
+      real(wp) :: dtmin = 0.0_wp, dtmax = 0.0_wp
+      logical :: dynamic = .false.      !< *CONTROL_IMPLICIT_DYNAMICS given (IMASS = 1)
    end type implicit_ctrl_t
 
    !> *CONTROL_TERMINATION, *CONTROL_TIMESTEP, *CONTROL_HOURGLASS, *CONTROL_BULK_VISCOSITY,

@@ -16,7 +16,8 @@ module dx_par
                         MPI_Finalize, MPI_Get_count, MPI_Init, MPI_INTEGER, MPI_Irecv, &
                         MPI_Isend, MPI_MAX, MPI_MAX_ERROR_STRING, MPI_MIN, MPI_MINLOC, MPI_Op, &
                         MPI_Probe, MPI_Recv, MPI_Request, MPI_Status, MPI_STATUS_IGNORE, &
-                        MPI_STATUSES_IGNORE, MPI_SUCCESS, MPI_SUM, MPI_Waitall, MPI_Wtime
+                        MPI_STATUSES_IGNORE, MPI_SUCCESS, MPI_SUM, MPI_Waitall, MPI_Wtime, &
+                        MPI_COMM_SELF, MPI_Initialized, MPI_Finalized
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, exit_process, EXIT_NUMERIC
    use dx_strings, only: str
@@ -28,6 +29,7 @@ module dx_par
    public :: par_bcast_real, par_minloc8, par_comm, par_check
    public :: par_allgatherv_real, par_sparse_exchange, par_allgather_probe   ! (contact)
    public :: par_displs, par_counts
+   public :: par_self_handle   ! (the sparse direct solver, dx_mumps)
 
    integer, parameter :: PAR_SUM = 1, PAR_MIN = 2, PAR_MAX = 3
 
@@ -80,11 +82,27 @@ contains
    !> Finalize MPI if it was started.
    subroutine par_finalize()
       integer :: ierr
-      if (.not. mpi_on) return
+      logical :: started, ended
+      if (.not. mpi_on) then   ! a serial run that started MPI for a library (par_self_handle)
+         call MPI_Initialized(started, ierr)
+         call MPI_Finalized(ended, ierr)
+         if (started .and. .not. ended) call MPI_Finalize(ierr)
+         return
+      end if
       call MPI_Comm_free(comm, ierr)
       call MPI_Finalize(ierr)
       mpi_on = .false.
    end subroutine par_finalize
+
+   !> The Fortran handle of MPI_COMM_SELF for a library that needs MPI in any run (MUMPS);
+   !> a serial run (no launcher) starts MPI here, once, and par_finalize ends it.
+   integer function par_self_handle()
+      integer :: ierr
+      logical :: started
+      call MPI_Initialized(started, ierr)
+      if (.not. started) call MPI_Init(ierr)
+      par_self_handle = MPI_COMM_SELF%MPI_VAL
+   end function par_self_handle
 
    integer function par_rank()
       par_rank = my_rank

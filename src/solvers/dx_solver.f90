@@ -4,9 +4,8 @@
 !> and the wall-clock limit (dx_checkpoint) at each cycle boundary, and the end.
 !> Which integrator runs (docs/design.md): *DYNX_CONSERVING_CONTACT (with
 !> *CONTROL_IMPLICIT_GENERAL IMFLAG = 1) the conserving rigid-body solver (dx_emc_solver),
-!> else the explicit central-difference loop (dx_explicit). IMFLAG = 1 without conserving
-!> contact (the implicit Newton solver) and IMFLAG = 2 are refused when the deck is built or
-!> read (exit 2).
+!> IMFLAG = 1 without it the implicit Newton solver (dx_implicit), else the explicit
+!> central-difference loop (dx_explicit). IMFLAG = 2 is refused when the deck is read (exit 2).
 module dx_solver
    use dx_kinds, only: wp, huge_wp
    use dx_error, only: error_t, set_error, EXIT_NUMERIC
@@ -21,6 +20,7 @@ module dx_solver
                             END_FAILED, END_STOPPED
    use dx_explicit, only: explicit_t, elem_label, explicit_rbdout
    use dx_emc_run, only: conserving_t
+   use dx_implicit, only: implicit_t
    implicit none
    private
    public :: make_integrator, integrator_choice, run_driver
@@ -42,6 +42,9 @@ contains
       if (allocated(model%emc)) then
          name = 'conserving rigid-body (Simo & Wong midpoint rule)'
          why = '*DYNX_CONSERVING_CONTACT with *CONTROL_IMPLICIT_GENERAL IMFLAG = 1'
+      else if (model%ctrl%imp%imflag == 1) then
+         name = 'implicit Newton statics (NIKE3D: Newton-Raphson, line search, MUMPS)'
+         why = '*CONTROL_IMPLICIT_GENERAL IMFLAG = 1 without *DYNX_CONSERVING_CONTACT'
       else if (model%ctrl%imp%imflag == 0 .and. model%ctrl%imp%line > 0) then
          name = 'explicit central difference'
          why = '*CONTROL_IMPLICIT_GENERAL IMFLAG = 0'
@@ -57,6 +60,8 @@ contains
       class(integrator_t), allocatable, intent(out) :: integ
       if (allocated(model%emc)) then
          allocate(conserving_t :: integ)
+      else if (model%ctrl%imp%imflag == 1) then
+         allocate(implicit_t :: integ)
       else
          allocate(explicit_t :: integ)
       end if

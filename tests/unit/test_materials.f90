@@ -8,7 +8,7 @@
 program test_materials
    use dx_kinds, only: wp
    use dx_error, only: error_t
-   use dx_material, only: material_t
+   use dx_material, only: material_t, fd_tangent
    use dx_mat_elastic, only: mat_elastic_t
    use dx_mat_plastic_kinematic, only: mat_plastic_kinematic_t
    use dx_mat_piecewise_linear, only: mat_piecewise_linear_t
@@ -131,7 +131,7 @@ program test_materials
    de0 = [1.0e-3_wp, -2.0e-4_wp, 3.0e-4_wp, 1.0e-4_wp, -5.0e-5_wp, 2.0e-4_wp]
    sig = 0.0_wp
    sig(1, :) = [100.0_wp, -20.0_wp, 5.0_wp, 30.0_wp, 0.0_wp, -10.0_wp]
-   call el%tangent(1.0_wp, de0, 1.0_wp, 0.0_wp, sig(1, :), hv(1, 1:0), dfd, ierr)
+   call fd_tangent(el, 1.0_wp, de0, 1.0_wp, 0.0_wp, sig(1, :), hv(1, 1:0), dfd, ierr)
    call elastic_matrix(el%bulk, el%shear, dan)
    h = fd_h(de0)
    smax = maxval(abs(sig)) + maxval(abs(dan))*(maxval(abs(de0)) + h)
@@ -139,6 +139,11 @@ program test_materials
    call check(ierr == 0, 'tangent: elastic update ok')
    call check_close(maxval(abs(dfd - dan)), 0.0_wp, tol, 0.0_wp, &
                     'FD tangent = analytic elastic tangent (round-off bound 4 eps smax/h)')
+   ! *MAT_ELASTIC's own tangent (the implicit solver's) is the same matrix exactly (both are
+   ! lambda + 2G on the diagonal, formed from the same K and G)
+   call el%tangent(1.0_wp, de0, 1.0_wp, 0.0_wp, sig(1, :), hv(1, 1:0), dfd, ierr)
+   call check(ierr == 0 .and. maxval(abs(dfd - dan)) <= 4.0_wp*epsilon(1.0_wp)*maxval(abs(dan)), &
+              'elastic analytic tangent = lambda + 2G matrix')
 
    ! ---- at a yielded point of *MAT_PLASTIC_KINEMATIC (beta = 0.5, no rate effect): load past
    ! yield, then the tangent of the next plastic step against the consistent tangent

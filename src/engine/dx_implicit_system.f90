@@ -1,0 +1,321 @@
+!> The implicit solver's system (issue 20): equation numbers, the element loop that forms
+!> the internal force and the tangent stiffness, the trial/committed split of the element and
+!> material state, the external loads and the prescribed displacements. The Newton iteration
+!> itself is dx_implicit (solvers); this module is the engine stage it calls, so that the
+!> solvers layer reaches elements, loads and MPI only through the engine.
+!> Constraints by elimination (NIKE3D: Maker, Ferencz & Hallquist, UCRL-MA-105268, "Boundary
+!> conditions"): a *BOUNDARY_SPC translation is no equation; a *BOUNDARY_PRESCRIBED_MOTION
+!> displacement (VAD = 2, DOF 1-3) is no equation and takes its value sf*curve(t) at each
+!> step, so the first residual of a step carries the imposed increment.
+!> Equations are numbered node by node (x, y, z), the sparse pattern is formed once
+!> (dx_sparse) and its analysis is done once by the caller.
+module dx_implicit_system
+   use dx_kinds, only: wp
+   use dx_error, only: error_t, set_error, EXIT_NUMERIC
+   use dx_strings, only: str
+   use dx_model, only: model_t
+   use dx_hex8_stiffness, only: tl_solid_element, tl_supported, tl_points, TL_ERR_JAC, TL_NEN
+   use dx_sparse, only: sparse_sym_t, sparse_symbolic, sparse_zero, sparse_add_element
+   use dx_loads, only: add_external_loads
+   use dx_par, only: par_self_handle
+   implicit none
+   private
+   public :: implicit_system_t, isys_setup, isys_assemble, isys_commit, isys_external, &
+             isys_prescribe, isys_comm, isys_gather, isys_scatter, isys_dof_name, &
+             isys_fix
+
+   !> One block's committed (c) and trial (t) point state: S, Ebar (6, 8, nel), history
+   !> (nh, 8, nel); the element's stress work w (committed) and its trial increment dw.
+   type :: block_state_t
+      real(wp), allocatable :: sc(:, :, :), ec(:, :, :), hc(:, :, :)
+      real(wp), allocatable :: st(:, :, :), et(:, :, :), ht(:, :, :)
+      real(wp), allocatable :: wc(:), dw(:), cauchy(:, :), havg(:, :)
+   end type block_state_t
+
+   type :: implicit_system_t
+      integer :: neq = 0
+      integer, allocatable :: eqn(:, :)     !< (3, nn) equation; 0 fixed; -k prescribed k
+      integer, allocatable :: pres(:)       !< model%prescribed entries taken (their index)
+      integer, allocatable :: emap(:, :)    !< (24, ne) element equation maps
+      integer, allocatable :: eoff(:)       !< block b's elements start at eoff(b) + 1
+      type(sparse_sym_t) :: k               !< the tangent stiffness
+      type(block_state_t), allocatable :: bs(:)
+      logical :: linear = .false.           !< NSOLVR = 1
+   end type implicit_system_t
+
+contains
+
+   !> Check the model for what the implicit solver has, number the equations, form the
+   !> sparse pattern and the zero state. Errors are input errors (exit 2).
+   subroutine isys_setup(model, sys, error)
+      type(model_t), intent(in) :: model
+      type(implicit_system_t), intent(inout) :: sys
+      type(error_t), allocatable, intent(out) :: error
+      integer :: b, e, a, i, k, n, nh, ne, d, ngp
+      character(*), parameter :: why = ' (the implicit Newton solver of IMFLAG = 1, issue 20)'
+      sys%linear = model%ctrl%imp%nsolvr == 1
+      if (allocated(model%contact)) then
+         call set_error(error, '*CONTACT_*: contact is not yet in the implicit solver'//why); return
+      end if
+      if (allocated(model%rigid)) then
+         call set_error(error, 'rigid bodies (*MAT_RIGID, *CONSTRAINED_*) are not yet in '// &
+                        'the implicit solver'//why); return
+      end if
+      if (allocated(model%walls)) then
+         if (size(model%walls) > 0) then
+            call set_error(error, '*RIGIDWALL_*: not yet in the implicit solver'//why); return
+         end if
+      end if
+      if (allocated(model%body_loads)) then
+         if (size(model%body_loads) > 0) then
+            call set_error(error, '*LOAD_BODY_*: not yet in the implicit solver'//why); return
+         end if
+      end if
+      do b = 1, size(model%blocks)
+         associate (p => model%parts(model%blocks(b)%ipart))
+            if (.not. tl_supported(model%blocks(b)%etype)) then
+               call set_error(error, '*PART '//str(p%label)//': its *SECTION_* element '// &
+                  'formulation is not in the implicit solver (solid ELFORM 1, 2, 10 are)'// &
+                  why); return
+            end if
+            if (sys%linear .and. model%blocks(b)%nhv > 0) then
+               call set_error(error, '*CONTROL_IMPLICIT_SOLUTION: field NSOLVR: 1 (linear, '// &
+                  'one solve per step) takes elastic materials; *PART '//str(p%label)// &
+                  ' has *MAT_ type '//str(model%mats(p%imat)%m%mtype)//' with history '// &
+                  '(plasticity): use NSOLVR 12'); return
+            end if
+            if (model%mats(p%imat)%m%is_rigid) then
+               call set_error(error, '*PART '//str(p%label)//': rigid material is not yet '// &
+                              'in the implicit solver'//why); return
+            end if
+         end associate
+      end do
+      ! ---- equations: SPCs and prescribed displacements are none
+      allocate(sys%eqn(3, model%nn))
+      sys%eqn = 1
+      if (allocated(model%spcs)) then
+         do k = 1, size(model%spcs)
+            do d = 1, 3
+               if (model%spcs(k)%dof(d)) sys%eqn(d, model%spcs(k)%node) = 0
+            end do
+         end do
+      end if
+      allocate(sys%pres(0))
+      if (allocated(model%prescribed)) then
+         do k = 1, size(model%prescribed)
+            associate (pr => model%prescribed(k))
+               if (pr%vad /= 2 .or. pr%dof < 1 .or. pr%dof > 3) then
+                  call set_error(error, '*BOUNDARY_PRESCRIBED_MOTION_*: node '// &
+                     str(model%node_label(pr%node))//': field VAD/DOF: the implicit solver '// &
+                     'takes displacements (VAD = 2) along x, y or z (DOF 1-3), got VAD = '// &
+                     str(pr%vad)//', DOF = '//str(pr%dof)); return
+               end if
+               sys%pres = [sys%pres, k]
+               sys%eqn(pr%dof, pr%node) = -size(sys%pres)
+            end associate
+         end do
+      end if
+      n = 0
+      do i = 1, model%nn
+         do d = 1, 3
+            if (sys%eqn(d, i) > 0) then
+               n = n + 1
+               sys%eqn(d, i) = n
+            end if
+         end do
+      end do
+      sys%neq = n
+      if (n == 0) then
+         call set_error(error, 'the implicit solver found no free degree of freedom (every '// &
+                        'node is constrained)'); return
+      end if
+      ! ---- element maps and pattern
+      ne = 0
+      allocate(sys%eoff(size(model%blocks)))
+      do b = 1, size(model%blocks)
+         sys%eoff(b) = ne
+         ne = ne + model%blocks(b)%nel
+      end do
+      allocate(sys%emap(3*TL_NEN, ne))
+      do b = 1, size(model%blocks)
+         associate (blk => model%blocks(b))
+            sys%emap(:, sys%eoff(b) + 1:sys%eoff(b) + blk%nel) = 0
+            do e = 1, blk%nel
+               do a = 1, size(blk%conn, 1)
+                  do d = 1, 3
+                     sys%emap(3*(a - 1) + d, sys%eoff(b) + e) = max(0, sys%eqn(d, blk%conn(a, e)))
+                  end do
+               end do
+            end do
+         end associate
+      end do
+      call sparse_symbolic(n, sys%emap, sys%k)
+      allocate(sys%bs(size(model%blocks)))
+      do b = 1, size(model%blocks)
+         associate (blk => model%blocks(b), s => sys%bs(b))
+            nh = blk%nhv
+            ngp = tl_points(blk%etype)
+            allocate(s%sc(6, ngp, blk%nel), s%ec(6, ngp, blk%nel), &
+                     s%hc(nh, ngp, blk%nel), s%wc(blk%nel), s%dw(blk%nel), &
+                     s%cauchy(6, blk%nel), s%havg(nh, blk%nel))
+            s%sc = 0.0_wp; s%ec = 0.0_wp; s%hc = 0.0_wp; s%wc = 0.0_wp; s%dw = 0.0_wp
+            s%cauchy = 0.0_wp; s%havg = 0.0_wp
+            s%st = s%sc; s%et = s%ec; s%ht = s%hc
+         end associate
+      end do
+   end subroutine isys_setup
+
+   !> Internal forces fint(3, nn) at the displacements u(3, nn) from the committed state
+   !> (the trial state kept), and with want_k the tangent stiffness into sys%k.
+   !> A failed element (a Jacobian <= 0, a material update that failed) is a numerical
+   !> error naming it (exit 3); the caller may retry with a smaller step.
+   subroutine isys_assemble(model, sys, u, dt, want_k, fint, error)
+      type(model_t), intent(in) :: model
+      type(implicit_system_t), intent(inout) :: sys
+      real(wp), intent(in) :: u(:, :), dt
+      logical, intent(in) :: want_k
+      real(wp), intent(out) :: fint(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: b, e, a, ierr, nen
+      real(wp) :: xe0(3, TL_NEN), ue(3, TL_NEN), fe(3*TL_NEN), ke(3*TL_NEN, 3*TL_NEN)
+      fint = 0.0_wp
+      ke = 0.0_wp
+      if (want_k) call sparse_zero(sys%k)
+      do b = 1, size(model%blocks)
+         associate (blk => model%blocks(b), s => sys%bs(b), &
+                    mat => model%mats(model%parts(model%blocks(b)%ipart)%imat)%m)
+            nen = size(blk%conn, 1)
+            do e = 1, blk%nel
+               do a = 1, nen
+                  xe0(:, a) = model%x0(:, blk%conn(a, e))
+                  ue(:, a) = u(:, blk%conn(a, e))
+               end do
+               call tl_solid_element(mat, xe0(:, 1:nen), ue(:, 1:nen), dt, sys%linear, &
+                  s%sc(:, :, e), s%ec(:, :, e), s%hc(:, :, e), s%st(:, :, e), s%et(:, :, e), &
+                  s%ht(:, :, e), fe(1:3*nen), want_k, ke(1:3*nen, 1:3*nen), s%dw(e), &
+                  s%cauchy(:, e), s%havg(:, e), ierr)
+               if (ierr /= 0) then
+                  if (ierr == TL_ERR_JAC) then
+                     call set_error(error, 'element '//str(model%elem_label(blk%elem(e)))// &
+                        ' (part '//str(model%parts(blk%ipart)%label)//'): a Jacobian <= 0 '// &
+                        '(inverted element)', EXIT_NUMERIC)
+                  else
+                     call set_error(error, 'element '//str(model%elem_label(blk%elem(e)))// &
+                        ' (part '//str(model%parts(blk%ipart)%label)//'): the material '// &
+                        'update failed', EXIT_NUMERIC)
+                  end if
+                  return
+               end if
+               do a = 1, nen
+                  fint(:, blk%conn(a, e)) = fint(:, blk%conn(a, e)) + fe(3*a - 2:3*a)
+               end do
+               if (want_k) call sparse_add_element(sys%k, sys%eoff(b) + e, ke)
+            end do
+         end associate
+      end do
+   end subroutine isys_assemble
+
+   !> The trial state (of the last assembly) becomes the committed one; the blocks' plot
+   !> fields: Cauchy stress and history (element averages in every point slot) and the
+   !> stress work (glstat's internal energy).
+   subroutine isys_commit(model, sys)
+      type(model_t), intent(inout) :: model
+      type(implicit_system_t), intent(inout) :: sys
+      integer :: b, ip, k
+      do b = 1, size(model%blocks)
+         associate (blk => model%blocks(b), s => sys%bs(b))
+            s%sc = s%st; s%ec = s%et; s%hc = s%ht
+            s%wc = s%wc + s%dw
+            blk%eint = s%wc
+            do ip = 1, blk%nip
+               do k = 1, 6
+                  blk%sig(:, k, ip) = s%cauchy(k, :)
+               end do
+               do k = 1, blk%nhv
+                  blk%hv(:, k, ip) = s%havg(k, :)
+               end do
+            end do
+         end associate
+      end do
+   end subroutine isys_commit
+
+   !> External forces at time t on the geometry model%x (zeroed first).
+   subroutine isys_external(model, t, fext)
+      type(model_t), intent(in) :: model
+      real(wp), intent(in) :: t
+      real(wp), intent(out) :: fext(:, :)
+      fext = 0.0_wp
+      call add_external_loads(model, t, fext)
+   end subroutine isys_external
+
+   !> The prescribed displacements at time t into u.
+   subroutine isys_prescribe(model, sys, t, u)
+      type(model_t), intent(in) :: model
+      type(implicit_system_t), intent(in) :: sys
+      real(wp), intent(in) :: t
+      real(wp), intent(inout) :: u(:, :)
+      integer :: k
+      do k = 1, size(sys%pres)
+         associate (pr => model%prescribed(sys%pres(k)))
+            u(pr%dof, pr%node) = pr%sf*model%curves(pr%curve)%eval(t)
+         end associate
+      end do
+   end subroutine isys_prescribe
+
+   !> The equations' entries of a nodal field v(3, nn) into r(neq).
+   subroutine isys_gather(sys, v, r)
+      type(implicit_system_t), intent(in) :: sys
+      real(wp), intent(in) :: v(:, :)
+      real(wp), intent(out) :: r(:)
+      integer :: i, d
+      do i = 1, size(sys%eqn, 2)
+         do d = 1, 3
+            if (sys%eqn(d, i) > 0) r(sys%eqn(d, i)) = v(d, i)
+         end do
+      end do
+   end subroutine isys_gather
+
+   !> v(3, nn) += alpha r(neq) on the equations' entries.
+   subroutine isys_scatter(sys, r, alpha, v)
+      type(implicit_system_t), intent(in) :: sys
+      real(wp), intent(in) :: r(:), alpha
+      real(wp), intent(inout) :: v(:, :)
+      integer :: i, d
+      do i = 1, size(sys%eqn, 2)
+         do d = 1, 3
+            if (sys%eqn(d, i) > 0) v(d, i) = v(d, i) + alpha*r(sys%eqn(d, i))
+         end do
+      end do
+   end subroutine isys_scatter
+
+   !> Zero the SPC-fixed components of a nodal field (velocities of a dynamic step).
+   subroutine isys_fix(sys, v)
+      type(implicit_system_t), intent(in) :: sys
+      real(wp), intent(inout) :: v(:, :)
+      where (sys%eqn == 0) v = 0.0_wp
+   end subroutine isys_fix
+
+   !> 'node L dof x' of equation q (messages).
+   function isys_dof_name(model, sys, q) result(s)
+      type(model_t), intent(in) :: model
+      type(implicit_system_t), intent(in) :: sys
+      integer, intent(in) :: q
+      character(:), allocatable :: s
+      integer :: i, d
+      character(1), parameter :: ax(3) = ['x', 'y', 'z']
+      s = 'equation '//str(q)
+      do i = 1, size(sys%eqn, 2)
+         do d = 1, 3
+            if (sys%eqn(d, i) == q) then
+               s = 'node '//str(model%node_label(i))//' '//ax(d); return
+            end if
+         end do
+      end do
+   end function isys_dof_name
+
+   !> The communicator handle the sparse solver takes (serial: MPI_COMM_SELF, MPI started
+   !> for it).
+   integer function isys_comm()
+      isys_comm = par_self_handle()
+   end function isys_comm
+end module dx_implicit_system
