@@ -12,6 +12,11 @@ shells, nx by ny elements, length L along x, width B along y, thickness T.
       stretched to 5 % with *CONTROL_SHELL ISTUPD = 1)
   gen_shell_deck.py rotation [OUT]           a free plate spinning as a rigid body about an
       in-plane axis (initial velocity omega x r): no strain, internal energy 0
+  gen_shell_deck.py mixed [OUT]              hexahedra and shells sharing nodes: a 100 x 10 mm
+      plate of 10x2 shells whose root (x <= 30) lies on a 3x2x2 block of hexahedra clamped
+      at its base; the free end starts with a transverse velocity and a twist rate (VXR), a
+      prescribed twist rate (DOF 5, a ramp) drives the tip and DOFRY holds one tip node: the
+      MPI case of shells beside solids (mpi_shell_mixed)
 """
 import math
 import sys
@@ -192,6 +197,63 @@ def rotation():
     return s
 
 
+def mixed():
+    """shell plate on a hex block (shared nodes), initial and prescribed rotations"""
+    nx, ny = 10, 2
+    nodes, elems = grid(nx, ny, 100.0, 10.0)
+    tip = [j*(nx + 1) + nx + 1 for j in range(ny + 1)]
+    s = head('Shell plate on a block of hexahedra (shared nodes)', 3.0, 0.5, 0.02, tip)
+    # the block: x 0..30 (3), y 0..10 (2), z -10..0 (2); its top layer is the plate's nodes
+    hx, hy, hz = 3, 2, 2
+    nid = {}
+    for j in range(ny + 1):
+        for i in range(hx + 1):
+            nid[(i, j, hz)] = j*(nx + 1) + i + 1
+    nxt = len(nodes) + 1
+    hnodes = []
+    for k in range(hz):
+        for j in range(hy + 1):
+            for i in range(hx + 1):
+                nid[(i, j, k)] = nxt
+                hnodes.append((nxt, 10.0*i, 5.0*j, -10.0 + 5.0*k))
+                nxt += 1
+    hexes = []
+    for k in range(hz):
+        for j in range(hy):
+            for i in range(hx):
+                c = [nid[(i, j, k)], nid[(i + 1, j, k)], nid[(i + 1, j + 1, k)],
+                     nid[(i, j + 1, k)], nid[(i, j, k + 1)], nid[(i + 1, j, k + 1)],
+                     nid[(i + 1, j + 1, k + 1)], nid[(i, j + 1, k + 1)]]
+                hexes.append((100 + len(hexes) + 1, c))
+    s += ['*PART', 'block', '         2         2         2',
+          '*SECTION_SOLID', '         2         1',
+          '*MAT_ELASTIC', '$      MID        RO         E        PR',
+          f'         2{RHO:10.3e}{70.0:10.1f}{0.3:10.3f}']
+    s += node_cards(nodes + hnodes) + elem_cards(elems)
+    s += ['*ELEMENT_SOLID']
+    for e, c in hexes:
+        s.append(f'{e:8d}{2:8d}' + ''.join(f'{n:8d}' for n in c))
+    s += ['*INITIAL_VELOCITY_NODE']
+    for n, x, y, z in nodes:
+        if x > 30.0:
+            a = (x - 30.0)/70.0
+            s.append(f'{n:10d}{0.0:10.4g}{0.0:10.4g}{0.02*a*a:10.3e}{0.0002*a:10.3e}'
+                     f'{0.0:10.4g}{0.0:10.4g}')
+    s += ['*DEFINE_CURVE', '         1', f'{0.0:20.4f}{0.0:20.4f}', f'{3.0:20.4f}{0.003:20.4f}']
+    for n in tip:
+        s += ['*BOUNDARY_PRESCRIBED_MOTION_NODE', f'{n:10d}         5         0         1'
+              '       1.0']
+    s += ['*BOUNDARY_SPC_NODE', f'{tip[1]:10d}         0         0         0         0'
+          '         0         1         0']
+    s += ['*SET_NODE_LIST', '         1']
+    base = [nid[(i, j, 0)] for j in range(hy + 1) for i in range(hx + 1)]
+    for k in range(0, len(base), 8):
+        s.append(''.join(f'{n:10d}' for n in base[k:k + 8]))
+    s += ['*BOUNDARY_SPC_SET', '         1         0         1         1         1'
+          '         0         0         0', '*END']
+    return s
+
+
 def main():
     kind = sys.argv[1]
     if kind == 'cantilever':
@@ -202,6 +264,9 @@ def main():
         out = sys.argv[2] if len(sys.argv) > 2 else None
     elif kind == 'rotation':
         lines = rotation()
+        out = sys.argv[2] if len(sys.argv) > 2 else None
+    elif kind == 'mixed':
+        lines = mixed()
         out = sys.argv[2] if len(sys.argv) > 2 else None
     else:
         raise SystemExit('unknown kind ' + kind)

@@ -94,6 +94,9 @@ module dx_element_types
       integer :: weight = 1                !< partition cost weight (measured ns/element-cycle)
       integer :: es_ncol(MAX_ES) = 0       !< columns of each family-state slot (0: none)
       logical :: rot = .false.             !< nodes carry rotations (shells)
+      !> the kernel scatters its forces element-major (do i; do k), not corner-major: the
+      !> MPI engine keys the shared-node sums in that order (dx_par_model)
+      logical :: scatter_em = .false.
    end type family_t
 
    !> results of one block pass
@@ -206,8 +209,11 @@ contains
          f%mass_share = 0.25_wp
          f%hgmodes = 5
          f%es_ncol = [0, 0, 0, 1 + 8]
-         f%nip = 2; f%weight = 1
-         f%rot = .true.
+         ! weight: 828 against the hexahedron's 263 ns of CPU per element-cycle (NIP 3,
+         ! elastic; 100x80 plate and 20x20x20 cube, 300 cycles less 1, three runs each;
+         ! docs/history.md, "Shells under MPI")
+         f%nip = 2; f%weight = 3
+         f%rot = .true.; f%scatter_em = .true.
       end select
    end function element_family
 

@@ -10,7 +10,7 @@ module dx_par_engine_setup
    use, intrinsic :: iso_fortran_env, only: int64
    use dx_kinds, only: wp, nv_chunk
    use dx_timer, only: current_memory_kb
-   use dx_error, only: error_t, set_error, EXIT_INPUT
+   use dx_error, only: error_t
    use dx_strings, only: str, rstr
    use dx_log, only: log_info, log_set_quiet
    use dx_model, only: model_t, elem_block_t, ES_HGS, ES_PHIM
@@ -65,8 +65,6 @@ contains
       np = par_size()
       me = par_rank()
       if (np <= 1) return
-      call unsupported(model, error)
-      if (allocated(error)) return
       if (me > 0) call log_set_quiet(.true.)
       call deck_content_hash(model%deck_files, hash, error)   ! the files read_deck read
       if (allocated(error)) return
@@ -148,6 +146,10 @@ contains
                          [3, model%nn])
       model%v0 = reshape([eng%g%v0(:, rp%nodes), eng%g%v0(:, rp%nodes(eng%pm%slot_node))], &
                          [3, model%nn])
+      if (allocated(eng%g%w0)) model%w0 = reshape([eng%g%w0(:, rp%nodes), &   ! VXR, VYR, VZR
+         eng%g%w0(:, rp%nodes(eng%pm%slot_node))], [3, model%nn])
+      ! shells: rotations, moments and rotary inertia summed at shared nodes as the forces
+      eng%rot = has_shells(eng%g)
       call move_alloc(eng%pm%blocks, model%blocks)
       if (allocated(model%spcs)) then
          model%spcs = eng%g%spcs(rp%spcs)
@@ -221,6 +223,10 @@ contains
                end associate
             end do
          end if
+         if (eng%rot) then      ! the constraint moments' terms, keyed by global node
+            kmax = max(kmax, eng%g%nn)
+            nb = nb + 1
+         end if
          call par_allreduce(nb, PAR_MAX)
          eng%have_bc = nb > 0
          eng%key_mult = real(kmax, wp) + 1.0_wp
@@ -290,19 +296,6 @@ contains
          end if
       end subroutine partition_here
    end subroutine par_engine_setup
-
-   !> What the engine does not run across ranks yet: exit 2 naming the keyword.
-   subroutine unsupported(model, error)
-      type(model_t), intent(in) :: model
-      type(error_t), allocatable, intent(out) :: error
-      character(:), allocatable :: what
-      what = ''   ! (the conserving solver runs under MPI: dx_par_emc)
-      if (has_shells(model)) what = '*SECTION_SHELL (shell elements: their rotational '// &
-         'degrees of freedom are not yet under MPI)'
-      if (len(what) > 0) call set_error(error, model%deck_file//': '//what// &
-         ' is not supported in an MPI run yet; run this deck serially (without mpirun)', &
-         EXIT_INPUT)
-   end subroutine unsupported
 
    !> element_mass_share (the element dt bound of one-element-wide blocks) on the rank's
    !> blocks: their slot corners carry no mass (the mass is at the shared node), so each
