@@ -148,6 +148,7 @@ contains
                          [3, model%nn])
       if (allocated(eng%g%w0)) model%w0 = reshape([eng%g%w0(:, rp%nodes), &   ! VXR, VYR, VZR
          eng%g%w0(:, rp%nodes(eng%pm%slot_node))], [3, model%nn])
+      if (allocated(eng%g%w0)) deallocate(eng%g%w0)   ! (the rank's own copy is enough)
       ! shells: rotations, moments and rotary inertia summed at shared nodes as the forces
       eng%rot = has_shells(eng%g)
       call move_alloc(eng%pm%blocks, model%blocks)
@@ -379,6 +380,9 @@ contains
             if (allocated(eng%g%spcs)) deallocate(eng%g%spcs)
             if (allocated(eng%g%prescribed)) deallocate(eng%g%prescribed)
             if (allocated(eng%gvold)) deallocate(eng%gvold)
+            if (allocated(eng%g%w)) deallocate(eng%g%w)            ! shells
+            if (allocated(eng%g%rinert)) deallocate(eng%g%rinert)
+            if (allocated(eng%gwold)) deallocate(eng%gwold)
          end if
       end if
       call mem_report(eng)
@@ -423,6 +427,9 @@ contains
       if (allocated(eng%g%mass)) node = node + 8*size(eng%g%mass, kind=int64)
       if (allocated(eng%g%node_label)) node = node + 4*size(eng%g%node_label, kind=int64)
       if (allocated(eng%gvold)) node = node + 8*size(eng%gvold, kind=int64)
+      if (allocated(eng%g%w)) node = node + 8*size(eng%g%w, kind=int64)
+      if (allocated(eng%g%rinert)) node = node + 8*size(eng%g%rinert, kind=int64)
+      if (allocated(eng%gwold)) node = node + 8*size(eng%gwold, kind=int64)
       if (allocated(eng%plan_own%keys)) node = node + 4*size(eng%plan_own%keys, kind=int64)
       if (allocated(eng%plan_own%perm)) node = node + 4*size(eng%plan_own%perm, kind=int64)
    end subroutine global_bytes
