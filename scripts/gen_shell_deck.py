@@ -17,6 +17,12 @@ shells, nx by ny elements, length L along x, width B along y, thickness T.
       at its base; the free end starts with a transverse velocity and a twist rate (VXR), a
       prescribed twist rate (DOF 5, a ramp) drives the tip and DOFRY holds one tip node: the
       MPI case of shells beside solids (mpi_shell_mixed)
+  gen_shell_deck.py ball SIDE KW SOFT[,MST] [OUT]  a sphere of hexahedra (R 5 mm, 4x4x4 cube mapped
+      radially, steel) dropped at 5 mm/ms on a free 40 x 40 x 1 mm steel plate of 8x8 BT
+      shells from above (SIDE = above: the plate's normal side) or below (SIDE = below),
+      *CONTACT_KW (AUTOMATIC_SURFACE_TO_SURFACE, AUTOMATIC_NODES_TO_SURFACE,
+      AUTOMATIC_SINGLE_SURFACE, SURFACE_TO_SURFACE ...) with SOFT; the first gap 0.1 mm to the
+      contact surface half a thickness (or MST/2) off the mid-surface (shell_contact_* cases)
 """
 import math
 import sys
@@ -254,6 +260,65 @@ def mixed():
     return s
 
 
+def ball(side, kw, soft, mst=0.0):
+    """hex sphere on a free shell plate (contact on shells)"""
+    n, R, t, gap, v0 = 4, 5.0, 1.0, 0.1, 5.0
+    tc = mst if mst > 0.0 else t        # the contact thickness of the plate
+    nodes, elems = grid(8, 8, 40.0, 40.0)
+    nodes = [(k, x - 20.0, y - 20.0, z) for k, x, y, z in nodes]
+    sgn = 1.0 if side == 'above' else -1.0
+    zc = sgn*(R + gap + 0.5*tc)
+    centre = 41
+    s = head(f'Sphere of hexahedra on a shell plate ({side}), *CONTACT_{kw}, SOFT {soft}'
+             + (f', MST {mst:g}' if mst > 0.0 else ''),
+             0.3, 0.05, 0.005, [centre])
+    s[s.index('$       T1') + 1] = f'{t:10.4f}'
+    ids = {}
+    hn = []
+    nid = len(nodes) + 1
+    for k in range(n + 1):
+        for j in range(n + 1):
+            for i in range(n + 1):
+                q = [2.0*i/n - 1.0, 2.0*j/n - 1.0, 2.0*k/n - 1.0]
+                linf = max(abs(c) for c in q)
+                l2 = math.sqrt(sum(c*c for c in q))
+                f = R*linf/l2 if l2 > 0.0 else 0.0
+                ids[(i, j, k)] = nid
+                hn.append((nid, f*q[0], f*q[1], zc + f*q[2]))
+                nid += 1
+    hexes = []
+    for k in range(n):
+        for j in range(n):
+            for i in range(n):
+                c = [ids[(i, j, k)], ids[(i + 1, j, k)], ids[(i + 1, j + 1, k)], ids[(i, j + 1, k)],
+                     ids[(i, j, k + 1)], ids[(i + 1, j, k + 1)], ids[(i + 1, j + 1, k + 1)],
+                     ids[(i, j + 1, k + 1)]]
+                hexes.append((1000 + len(hexes) + 1, c))
+    bottom = ids[(n//2, n//2, 0 if side == 'above' else n)]
+    s[s.index('*DATABASE_HISTORY_NODE') + 1] = f'{centre:10d}{bottom:10d}'
+    s += ['*PART', 'sphere', '         2         2         2',
+          '*SECTION_SOLID', '         2         1',
+          '*MAT_ELASTIC', '$      MID        RO         E        PR',
+          f'         2{RHO:10.3e}{E:10.1f}{0.3:10.3f}']
+    s += node_cards(nodes + hn) + elem_cards(elems)
+    s += ['*ELEMENT_SOLID']
+    for e, c in hexes:
+        s.append(f'{e:8d}{2:8d}' + ''.join(f'{m:8d}' for m in c))
+    s += ['*INITIAL_VELOCITY_NODE']
+    for m, x, y, z in hn:
+        s.append(f'{m:10d}{0.0:10.4g}{0.0:10.4g}{-sgn*v0:10.4g}')
+    s += [f'*CONTACT_{kw}', '$     SSID      MSID     SSTYP     MSTYP',
+          '         0         0         5' if 'SINGLE' in kw else
+          '         2         1         3         3',
+          '$       FS        FD        DC        VC       VDC    PENCHK        BT        DT',
+          '       0.0       0.0       0.0       0.0       0.0         0       0.0       0.0',
+          '$      SFS       SFM       SST       MST      SFST      SFMT       FSF       VSF',
+          f'       1.0       1.0       0.0{mst:10.4g}       1.0       1.0       1.0       1.0',
+          '$     SOFT    SOFSCL',
+          f'{soft:10d}       0.1', '*END']
+    return s
+
+
 def main():
     kind = sys.argv[1]
     if kind == 'cantilever':
@@ -265,6 +330,10 @@ def main():
     elif kind == 'rotation':
         lines = rotation()
         out = sys.argv[2] if len(sys.argv) > 2 else None
+    elif kind == 'ball':
+        sm = sys.argv[4].split(',')
+        lines = ball(sys.argv[2], sys.argv[3], int(sm[0]), float(sm[1]) if len(sm) > 1 else 0.0)
+        out = sys.argv[5] if len(sys.argv) > 5 else None
     elif kind == 'mixed':
         lines = mixed()
         out = sys.argv[2] if len(sys.argv) > 2 else None
