@@ -95,8 +95,7 @@ contains
       type(rigid_system_t), allocatable :: rs
       real(wp), allocatable :: mass(:), mrig(:), bm(:), bm1(:, :), bm2(:, :, :), xref(:, :)
       integer, allocatable :: body_of_part(:), nodes(:), inert(:)
-      logical, allocatable :: inbody(:), rotn(:)
-      type(family_t) :: fam
+      logical, allocatable :: inbody(:)
       integer :: nb, ip, b, k, i, e, nd, j, nrb
       real(wp) :: vol, m1(3), m2(3, 3), rho
       character(:), allocatable :: w
@@ -183,17 +182,6 @@ contains
             end do
          end associate
       end do
-      ! shell nodes carry rotations, which the rigid bodies do not take yet: such a node may
-      ! not be added to a body (its rotation would stay free: a hinge, silently)
-      allocate(rotn(model%nn))
-      rotn = .false.
-      do k = 1, size(model%blocks)
-         fam = element_family(model%blocks(k)%etype)
-         if (.not. fam%rot) cycle
-         do e = 1, model%blocks(k)%nel
-            rotn(model%blocks(k)%conn(:, e)) = .true.
-         end do
-      end do
       ! ---- nodal rigid bodies
       do k = 1, nrb
          associate (r => inp%rigid%nrbs(k), bd => rs%bodies(nb + k))
@@ -225,8 +213,6 @@ contains
             inbody = .false.
             inbody(model%node_sets(j)%nodes) = .true.
             bd%nodes = pack([(i, i = 1, model%nn)], inbody)
-            call no_shell_nodes(bd%nodes, w, 'NSID', error)
-            if (allocated(error)) return
             xref(:, nb + k) = sum(model%x0(:, bd%nodes), dim=2)/real(size(bd%nodes), wp)
          end associate
       end do
@@ -252,8 +238,6 @@ contains
                   return
                end if
             end if
-            call no_shell_nodes(nodes, w, merge('NSID', 'NID ', r%is_set), error)
-            if (allocated(error)) return
             inbody = .false.
             inbody(rs%bodies(b)%nodes) = .true.
             inbody(nodes) = .true.
@@ -377,22 +361,6 @@ contains
       rs%dtcrit = rigid_element_step(model)
       rs%rbdout_dt = inp%rigid%rbdout_dt
       call move_alloc(rs, model%rigid)
-   contains
-      !> A shell node (rotations) named by the card at w: an input error naming it.
-      subroutine no_shell_nodes(list, w, field, err)
-         integer, intent(in) :: list(:)
-         character(*), intent(in) :: w, field
-         type(error_t), allocatable, intent(inout) :: err
-         integer :: m
-         do m = 1, size(list)
-            if (rotn(list(m))) then
-               call set_error(err, w//'field '//trim(field)//': node '// &
-                  str(model%node_label(list(m)))//' is a node of a shell (it carries '// &
-                  'rotations); shell nodes in a rigid body are not supported yet')
-               return
-            end if
-         end do
-      end subroutine no_shell_nodes
    end subroutine build_rigid
 
    !> The body of part label; none is an input error at w (field PID).
