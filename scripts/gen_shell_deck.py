@@ -23,6 +23,10 @@ shells, nx by ny elements, length L along x, width B along y, thickness T.
       *CONTACT_KW (AUTOMATIC_SURFACE_TO_SURFACE, AUTOMATIC_NODES_TO_SURFACE,
       AUTOMATIC_SINGLE_SURFACE, SURFACE_TO_SURFACE ...) with SOFT; the first gap 0.1 mm to the
       contact surface half a thickness (or MST/2) off the mid-surface (shell_contact_* cases)
+  gen_shell_deck.py plates KW [OUT]          shell on shell: a 20 x 20 x 1 mm plate of 4x4 BT
+      shells (part 2) dropped flat at 5 mm/ms on the free 40 x 40 x 1 mm plate, centred; first
+      gap 0.1 mm between the contact surfaces (both half a thickness off their mid-surfaces),
+      *CONTACT_KW (shell_contact_plates)
 """
 import math
 import sys
@@ -319,6 +323,35 @@ def ball(side, kw, soft, mst=0.0):
     return s
 
 
+def plates(kw):
+    """a small shell plate dropped on a larger one (both offsets)"""
+    t, gap, v0, tilt = 1.0, 0.1, 5.0, 0.0
+    nodes, elems = grid(8, 8, 40.0, 40.0)
+    nodes = [(k, x - 20.0, y - 20.0, z) for k, x, y, z in nodes]
+    small, selems = grid(4, 4, 20.0, 20.0)
+    off = len(nodes)
+    z0 = t + gap + 10.0*math.sin(tilt)     # the lowest edge (y = -10) at t + gap
+    small = [(k + off, x - 10.0, (y - 10.0)*math.cos(tilt), z0 + (y - 10.0)*math.sin(tilt))
+             for k, x, y, z in small]
+    selems = [(e + 100, a + off, b + off, c + off, d + off) for e, a, b, c, d in selems]
+    low = off + 13         # the small plate's centre
+    s = head(f'Shell plate dropped on a shell plate, *CONTACT_{kw}', 0.3, 0.05, 0.005, [41, low])
+    s += ['*PART', 'small plate', '         2         1         1']
+    s += node_cards(nodes + small) + elem_cards(elems)
+    for e in selems:
+        s.append(''.join(f'{k:8d}' for k in (e[0], 2) + tuple(e[1:])))
+    s += ['*INITIAL_VELOCITY_NODE']
+    for m, x, y, z in small:
+        s.append(f'{m:10d}{0.0:10.4g}{0.0:10.4g}{-v0:10.4g}')
+    s += [f'*CONTACT_{kw}', '$     SSID      MSID     SSTYP     MSTYP',
+          '         0         0         5' if 'SINGLE' in kw else
+          '         2         1         3         3',
+          '$       FS        FD        DC        VC       VDC    PENCHK        BT        DT',
+          '       0.0       0.0       0.0       0.0       0.0         0       0.0       0.0',
+          '*END']
+    return s
+
+
 def main():
     kind = sys.argv[1]
     if kind == 'cantilever':
@@ -334,6 +367,9 @@ def main():
         sm = sys.argv[4].split(',')
         lines = ball(sys.argv[2], sys.argv[3], int(sm[0]), float(sm[1]) if len(sm) > 1 else 0.0)
         out = sys.argv[5] if len(sys.argv) > 5 else None
+    elif kind == 'plates':
+        lines = plates(sys.argv[2])
+        out = sys.argv[3] if len(sys.argv) > 3 else None
     elif kind == 'mixed':
         lines = mixed()
         out = sys.argv[2] if len(sys.argv) > 2 else None
