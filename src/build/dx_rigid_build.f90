@@ -316,7 +316,9 @@ contains
       if (allocated(model%spcs)) then
          do k = 1, size(model%spcs)
             nd = model%spcs(k)%node
-            if (rs%node_body(nd) /= 0 .and. any(model%spcs(k)%dof(1:3))) then
+            ! (DOFRX/RY/RZ count on a shell's node: it turns with its body)
+            if (rs%node_body(nd) /= 0 .and. (any(model%spcs(k)%dof(1:3)) .or. &
+                (any(model%spcs(k)%dof(4:6)) .and. shell_node(nd)))) then
                call set_error(error, constraint_where(inp, model, nset_map, nd, .true.)// &
                   'node '//str(model%node_label(nd))//' of rigid body '// &
                   str(rs%bodies(rs%node_body(nd))%label)//' has a nodal constraint '// &
@@ -368,6 +370,22 @@ contains
       rs%dtcrit = rigid_element_step(model)
       rs%rbdout_dt = inp%rigid%rbdout_dt
       call move_alloc(rs, model%rigid)
+   contains
+      !> Whether node nd is a node of a shell element (it carries rotations).
+      logical function shell_node(nd)
+         integer, intent(in) :: nd
+         type(family_t) :: fm
+         integer :: kb
+         shell_node = .false.
+         do kb = 1, size(model%blocks)
+            fm = element_family(model%blocks(kb)%etype)
+            if (.not. fm%rot) cycle
+            if (any(model%blocks(kb)%conn == nd)) then
+               shell_node = .true.
+               return
+            end if
+         end do
+      end function shell_node
    end subroutine build_rigid
 
    !> The body of part label; none is an input error at w (field PID).
