@@ -12,6 +12,21 @@ shells, nx by ny elements, length L along x, width B along y, thickness T.
       stretched to 5 % with *CONTROL_SHELL ISTUPD = 1)
   gen_shell_deck.py rotation [OUT]           a free plate spinning as a rigid body about an
       in-plane axis (initial velocity omega x r): no strain, internal energy 0
+  gen_shell_deck.py mixed [OUT]              hexahedra and shells sharing nodes: a 100 x 10 mm
+      plate of 10x2 shells whose root (x <= 30) lies on a 3x2x2 block of hexahedra clamped
+      at its base; the free end starts with a transverse velocity and a twist rate (VXR), a
+      prescribed twist rate (DOF 5, a ramp) drives the tip and DOFRY holds one tip node: the
+      MPI case of shells beside solids (mpi_shell_mixed)
+  gen_shell_deck.py ball SIDE KW SOFT[,MST] [OUT]  a sphere of hexahedra (R 5 mm, 4x4x4 cube mapped
+      radially, steel) dropped at 5 mm/ms on a free 40 x 40 x 1 mm steel plate of 8x8 BT
+      shells from above (SIDE = above: the plate's normal side) or below (SIDE = below),
+      *CONTACT_KW (AUTOMATIC_SURFACE_TO_SURFACE, AUTOMATIC_NODES_TO_SURFACE,
+      AUTOMATIC_SINGLE_SURFACE, SURFACE_TO_SURFACE ...) with SOFT; the first gap 0.1 mm to the
+      contact surface half a thickness (or MST/2) off the mid-surface (shell_contact_* cases)
+  gen_shell_deck.py plates KW [OUT]          shell on shell: a 20 x 20 x 1 mm plate of 4x4 BT
+      shells (part 2) dropped flat at 5 mm/ms on the free 40 x 40 x 1 mm plate, centred; first
+      gap 0.1 mm between the contact surfaces (both half a thickness off their mid-surfaces),
+      *CONTACT_KW (shell_contact_plates)
 """
 import math
 import sys
@@ -192,6 +207,151 @@ def rotation():
     return s
 
 
+def mixed():
+    """shell plate on a hex block (shared nodes), initial and prescribed rotations"""
+    nx, ny = 10, 2
+    nodes, elems = grid(nx, ny, 100.0, 10.0)
+    tip = [j*(nx + 1) + nx + 1 for j in range(ny + 1)]
+    s = head('Shell plate on a block of hexahedra (shared nodes)', 3.0, 0.5, 0.02, tip)
+    # the block: x 0..30 (3), y 0..10 (2), z -10..0 (2); its top layer is the plate's nodes
+    hx, hy, hz = 3, 2, 2
+    nid = {}
+    for j in range(ny + 1):
+        for i in range(hx + 1):
+            nid[(i, j, hz)] = j*(nx + 1) + i + 1
+    nxt = len(nodes) + 1
+    hnodes = []
+    for k in range(hz):
+        for j in range(hy + 1):
+            for i in range(hx + 1):
+                nid[(i, j, k)] = nxt
+                hnodes.append((nxt, 10.0*i, 5.0*j, -10.0 + 5.0*k))
+                nxt += 1
+    hexes = []
+    for k in range(hz):
+        for j in range(hy):
+            for i in range(hx):
+                c = [nid[(i, j, k)], nid[(i + 1, j, k)], nid[(i + 1, j + 1, k)],
+                     nid[(i, j + 1, k)], nid[(i, j, k + 1)], nid[(i + 1, j, k + 1)],
+                     nid[(i + 1, j + 1, k + 1)], nid[(i, j + 1, k + 1)]]
+                hexes.append((100 + len(hexes) + 1, c))
+    s += ['*PART', 'block', '         2         2         2',
+          '*SECTION_SOLID', '         2         1',
+          '*MAT_ELASTIC', '$      MID        RO         E        PR',
+          f'         2{RHO:10.3e}{70.0:10.1f}{0.3:10.3f}']
+    s += node_cards(nodes + hnodes) + elem_cards(elems)
+    s += ['*ELEMENT_SOLID']
+    for e, c in hexes:
+        s.append(f'{e:8d}{2:8d}' + ''.join(f'{n:8d}' for n in c))
+    s += ['*INITIAL_VELOCITY_NODE']
+    for n, x, y, z in nodes:
+        if x > 30.0:
+            a = (x - 30.0)/70.0
+            s.append(f'{n:10d}{0.0:10.4g}{0.0:10.4g}{0.02*a*a:10.3e}{0.0002*a:10.3e}'
+                     f'{0.0:10.4g}{0.0:10.4g}')
+    s += ['*DEFINE_CURVE', '         1', f'{0.0:20.4f}{0.0:20.4f}', f'{3.0:20.4f}{0.003:20.4f}']
+    for n in tip:
+        s += ['*BOUNDARY_PRESCRIBED_MOTION_NODE', f'{n:10d}         5         0         1'
+              '       1.0']
+    s += ['*BOUNDARY_SPC_NODE', f'{tip[1]:10d}         0         0         0         0'
+          '         0         1         0']
+    s += ['*SET_NODE_LIST', '         1']
+    base = [nid[(i, j, 0)] for j in range(hy + 1) for i in range(hx + 1)]
+    for k in range(0, len(base), 8):
+        s.append(''.join(f'{n:10d}' for n in base[k:k + 8]))
+    s += ['*BOUNDARY_SPC_SET', '         1         0         1         1         1'
+          '         0         0         0', '*END']
+    return s
+
+
+def ball(side, kw, soft, mst=0.0):
+    """hex sphere on a free shell plate (contact on shells)"""
+    n, R, t, gap, v0 = 4, 5.0, 1.0, 0.1, 5.0
+    tc = mst if mst > 0.0 else t        # the contact thickness of the plate
+    nodes, elems = grid(8, 8, 40.0, 40.0)
+    nodes = [(k, x - 20.0, y - 20.0, z) for k, x, y, z in nodes]
+    sgn = 1.0 if side == 'above' else -1.0
+    zc = sgn*(R + gap + 0.5*tc)
+    centre = 41
+    s = head(f'Sphere of hexahedra on a shell plate ({side}), *CONTACT_{kw}, SOFT {soft}'
+             + (f', MST {mst:g}' if mst > 0.0 else ''),
+             0.3, 0.05, 0.005, [centre])
+    s[s.index('$       T1') + 1] = f'{t:10.4f}'
+    ids = {}
+    hn = []
+    nid = len(nodes) + 1
+    for k in range(n + 1):
+        for j in range(n + 1):
+            for i in range(n + 1):
+                q = [2.0*i/n - 1.0, 2.0*j/n - 1.0, 2.0*k/n - 1.0]
+                linf = max(abs(c) for c in q)
+                l2 = math.sqrt(sum(c*c for c in q))
+                f = R*linf/l2 if l2 > 0.0 else 0.0
+                ids[(i, j, k)] = nid
+                hn.append((nid, f*q[0], f*q[1], zc + f*q[2]))
+                nid += 1
+    hexes = []
+    for k in range(n):
+        for j in range(n):
+            for i in range(n):
+                c = [ids[(i, j, k)], ids[(i + 1, j, k)], ids[(i + 1, j + 1, k)], ids[(i, j + 1, k)],
+                     ids[(i, j, k + 1)], ids[(i + 1, j, k + 1)], ids[(i + 1, j + 1, k + 1)],
+                     ids[(i, j + 1, k + 1)]]
+                hexes.append((1000 + len(hexes) + 1, c))
+    bottom = ids[(n//2, n//2, 0 if side == 'above' else n)]
+    s[s.index('*DATABASE_HISTORY_NODE') + 1] = f'{centre:10d}{bottom:10d}'
+    s += ['*PART', 'sphere', '         2         2         2',
+          '*SECTION_SOLID', '         2         1',
+          '*MAT_ELASTIC', '$      MID        RO         E        PR',
+          f'         2{RHO:10.3e}{E:10.1f}{0.3:10.3f}']
+    s += node_cards(nodes + hn) + elem_cards(elems)
+    s += ['*ELEMENT_SOLID']
+    for e, c in hexes:
+        s.append(f'{e:8d}{2:8d}' + ''.join(f'{m:8d}' for m in c))
+    s += ['*INITIAL_VELOCITY_NODE']
+    for m, x, y, z in hn:
+        s.append(f'{m:10d}{0.0:10.4g}{0.0:10.4g}{-sgn*v0:10.4g}')
+    s += [f'*CONTACT_{kw}', '$     SSID      MSID     SSTYP     MSTYP',
+          '         0         0         5' if 'SINGLE' in kw else
+          '         2         1         3         3',
+          '$       FS        FD        DC        VC       VDC    PENCHK        BT        DT',
+          '       0.0       0.0       0.0       0.0       0.0         0       0.0       0.0',
+          '$      SFS       SFM       SST       MST      SFST      SFMT       FSF       VSF',
+          f'       1.0       1.0       0.0{mst:10.4g}       1.0       1.0       1.0       1.0',
+          '$     SOFT    SOFSCL',
+          f'{soft:10d}       0.1', '*END']
+    return s
+
+
+def plates(kw):
+    """a small shell plate dropped on a larger one (both offsets)"""
+    t, gap, v0, tilt = 1.0, 0.1, 5.0, 0.0
+    nodes, elems = grid(8, 8, 40.0, 40.0)
+    nodes = [(k, x - 20.0, y - 20.0, z) for k, x, y, z in nodes]
+    small, selems = grid(4, 4, 20.0, 20.0)
+    off = len(nodes)
+    z0 = t + gap + 10.0*math.sin(tilt)     # the lowest edge (y = -10) at t + gap
+    small = [(k + off, x - 10.0, (y - 10.0)*math.cos(tilt), z0 + (y - 10.0)*math.sin(tilt))
+             for k, x, y, z in small]
+    selems = [(e + 100, a + off, b + off, c + off, d + off) for e, a, b, c, d in selems]
+    low = off + 13         # the small plate's centre
+    s = head(f'Shell plate dropped on a shell plate, *CONTACT_{kw}', 0.3, 0.05, 0.005, [41, low])
+    s += ['*PART', 'small plate', '         2         1         1']
+    s += node_cards(nodes + small) + elem_cards(elems)
+    for e in selems:
+        s.append(''.join(f'{k:8d}' for k in (e[0], 2) + tuple(e[1:])))
+    s += ['*INITIAL_VELOCITY_NODE']
+    for m, x, y, z in small:
+        s.append(f'{m:10d}{0.0:10.4g}{0.0:10.4g}{-v0:10.4g}')
+    s += [f'*CONTACT_{kw}', '$     SSID      MSID     SSTYP     MSTYP',
+          '         0         0         5' if 'SINGLE' in kw else
+          '         2         1         3         3',
+          '$       FS        FD        DC        VC       VDC    PENCHK        BT        DT',
+          '       0.0       0.0       0.0       0.0       0.0         0       0.0       0.0',
+          '*END']
+    return s
+
+
 def main():
     kind = sys.argv[1]
     if kind == 'cantilever':
@@ -202,6 +362,16 @@ def main():
         out = sys.argv[2] if len(sys.argv) > 2 else None
     elif kind == 'rotation':
         lines = rotation()
+        out = sys.argv[2] if len(sys.argv) > 2 else None
+    elif kind == 'ball':
+        sm = sys.argv[4].split(',')
+        lines = ball(sys.argv[2], sys.argv[3], int(sm[0]), float(sm[1]) if len(sm) > 1 else 0.0)
+        out = sys.argv[5] if len(sys.argv) > 5 else None
+    elif kind == 'plates':
+        lines = plates(sys.argv[2])
+        out = sys.argv[3] if len(sys.argv) > 3 else None
+    elif kind == 'mixed':
+        lines = mixed()
         out = sys.argv[2] if len(sys.argv) > 2 else None
     else:
         raise SystemExit('unknown kind ' + kind)

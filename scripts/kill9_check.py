@@ -16,6 +16,9 @@ The deck is the Simo Taylor bar (tests/regression/taylor_simo) with frequent out
 
     python3 scripts/kill9_check.py --runs 20 --seed 7              (make test: first 0.02 ms)
     python3 scripts/kill9_check.py --runs 20 --endtim 0.08         (the whole impact)
+    python3 scripts/kill9_check.py --runs 10 --deck tests/regression/mpi_shell_mixed/deck.k
+        (another deck, e.g. shells: its own end time and histories, a plot state every
+        --dplot, a d3dump every 100 cycles)
 """
 import argparse, os, random, re, shutil, signal, subprocess, sys, time
 import xml.etree.ElementTree as ET
@@ -33,6 +36,15 @@ def make_deck(path, endtim):
     extra = ('*DATABASE_NODOUT\n  0.000100\n*DATABASE_HISTORY_NODE\n         1         5      2013\n'
              '*DATABASE_BINARY_D3DUMP\n       100\n')
     src = src.replace('*PART\n', extra + '*PART\n', 1)
+    with open(path, 'w') as f:
+        f.write(src)
+
+
+def make_other_deck(src_path, path, dplot):
+    """DECK with a plot state every dplot and a d3dump every 100 cycles."""
+    src = open(src_path).read()
+    src = re.sub(r'\*DATABASE_BINARY_D3PLOT\n\s*\S+', '*DATABASE_BINARY_D3PLOT\n%10.6f' % dplot, src)
+    src = src.replace('*PART\n', '*DATABASE_BINARY_D3DUMP\n       100\n*PART\n', 1)
     with open(path, 'w') as f:
         f.write(src)
 
@@ -192,6 +204,10 @@ def main():
     ap.add_argument('--workdir', default=os.path.join(ROOT, 'build', 'kill9'))
     ap.add_argument('--endtim', type=float, default=0.02,
                     help='end time of the Taylor bar (0.08: the whole impact; make test: 0.02)')
+    ap.add_argument('--deck', default='',
+                    help='another deck instead of the Taylor bar (its own end time)')
+    ap.add_argument('--dplot', type=float, default=0.05,
+                    help='with --deck: the plot interval')
     args = ap.parse_args()
     seed = args.seed if args.seed is not None else random.randrange(1 << 30)
     rng = random.Random(seed)
@@ -199,7 +215,10 @@ def main():
     shutil.rmtree(w, ignore_errors=True)
     os.makedirs(w)
     deck = os.path.join(w, 'deck.k')
-    make_deck(deck, args.endtim)
+    if args.deck:
+        make_other_deck(args.deck, deck, args.dplot)
+    else:
+        make_deck(deck, args.endtim)
     ref = os.path.join(w, 'ref')
     t0 = time.time()
     p = subprocess.run([args.dynx, '-i', deck, '-o', ref], capture_output=True)

@@ -21,6 +21,16 @@
   shell_check.py yield OUT SIGY TOL
       every element's von Mises stress in the last plot state equals SIGY within TOL
       relative (a perfectly plastic membrane state).
+  shell_check.py contact OUT BALL PLATE GMIN ETOL
+      a body dropped on a free shell plate (gen_shell_deck.py ball): the z momentum (glstat)
+      stays its initial value to glstat's 11 digits (the contact forces act in equal and
+      opposite pairs: a conservation law), |energy ratio - 1| <= ETOL, the distance along z
+      from history node BALL (the body's lowest/highest node) to PLATE (the plate centre)
+      never below GMIN (the contact surface half a thickness off the mid-surface), and BALL
+      ends moving against its initial direction (it rebounds).
+  shell_check.py mirror OUT1 OUT2 NODE TOL
+      two runs mirrored in z (the plate struck from either side): NODE's z velocity in OUT2
+      is minus that in OUT1 at every nodout line, within TOL relative to the largest.
 """
 import math
 import subprocess
@@ -229,10 +239,40 @@ def yield_check(argv):
     return worst <= tol
 
 
+def contact(argv):
+    out, ball, plate, gmin, etol = argv[0], int(argv[1]), int(argv[2]), float(argv[3]), \
+        float(argv[4])
+    rows = read_table(out + '/glstat')
+    p0 = rows[0][12]
+    dp = max(abs(r[12] - p0) for r in rows)
+    ok = dp <= 1e-10*abs(p0)
+    print(f'z momentum {p0:.10e}: largest change {dp:.3e} (tol 1e-10 relative: the print)')
+    worst = max(abs(r[9] - 1.0) for r in rows)
+    print(f'energy ratio: largest |ratio - 1| {worst:.3e} (tol {etol:.1e})')
+    ok = ok and worst <= etol
+    d = nodout(out)
+    gap = min(abs(b[3][2] - q[3][2]) for b, q in zip(d[ball], d[plate]))
+    print(f'smallest z distance node {ball} to node {plate}: {gap:.6f} (at least {gmin})')
+    ok = ok and gap >= gmin
+    v0, v1 = d[ball][0][2][2], d[ball][-1][2][2]
+    print(f'node {ball} z velocity {v0:.4g} -> {v1:.4g} (rebound: opposite signs)')
+    return ok and v0*v1 < 0.0
+
+
+def mirror(argv):
+    a, b, node, tol = nodout(argv[0])[int(argv[2])], nodout(argv[1])[int(argv[2])], \
+        int(argv[2]), float(argv[3])
+    big = max(abs(r[2][2]) for r in a)
+    worst = max(abs(ra[2][2] + rb[2][2]) for ra, rb in zip(a, b))/big
+    print(f'mirror: node {node} z velocity, largest |v1 + v2| / max|v| {worst:.3e} '
+          f'(tol {tol:.1e}) over {len(a)} lines')
+    return len(a) == len(b) and worst <= tol
+
+
 def main():
     kind, argv = sys.argv[1], sys.argv[2:]
     ok = {'period': period, 'patch': patch, 'rotation': rotation, 'energy': energy,
-          'yield': yield_check}[kind](argv)
+          'yield': yield_check, 'contact': contact, 'mirror': mirror}[kind](argv)
     if not ok:
         print('FAILED')
         sys.exit(1)

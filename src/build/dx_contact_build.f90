@@ -88,8 +88,14 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(surface_t) :: ss, ms
       integer, allocatable :: snodes(:), mnodes(:)
-      real(wp) :: slsfac
+      real(wp), allocatable :: tnode(:)
+      real(wp) :: slsfac, ts(2), tm(2)
       slsfac = inp%contact%slsfac
+      ! shells: each node's largest shell thickness (0: none); the contact thickness of
+      ! each side: (SST or MST when > 0, else the shell's own thickness) times SFST or SFMT
+      call shell_node_thickness(model, tnode)
+      ts = [c%sst, c%sfst]
+      tm = [c%mst, c%sfmt]
       f%label = c%label
       if (f%label == 0) f%label = idx
       f%name = c%key
@@ -118,6 +124,7 @@ contains
       if (c%kind == CT_SINGLE_SURFACE) then
          allocate(f%pass(1))
          call make_pass(model, snodes, ss, slsfac*c%sfs, .true., f%pass(1), ss)
+         call shell_offsets(model, tnode, ss, ts, ts, f%pass(1))
          return
       end if
       ! ---- master side
@@ -134,8 +141,10 @@ contains
       case (CT_SURFACE_TO_SURFACE)
          allocate(f%pass(2))
          call make_pass(model, snodes, ms, slsfac*c%sfm, .false., f%pass(1), ss)
+         call shell_offsets(model, tnode, ms, ts, tm, f%pass(1))
          mnodes = surface_nodes(model%nn, ms)
          call make_pass(model, mnodes, ss, slsfac*c%sfs, .false., f%pass(2), ms)
+         call shell_offsets(model, tnode, ss, tm, ts, f%pass(2))
       case (CT_NODES_TO_SURFACE, CT_ONE_WAY)
          allocate(f%pass(1))
          if (c%sstyp == 4) then
@@ -143,6 +152,7 @@ contains
          else
             call make_pass(model, snodes, ms, slsfac*c%sfm, .false., f%pass(1), ss)
          end if
+         call shell_offsets(model, tnode, ms, ts, tm, f%pass(1))
       end select
    end subroutine build_iface
 
@@ -230,6 +240,87 @@ contains
       allocate(p%cand_ptr(p%nnode + 1), p%cand(0))
       p%cand_ptr = 1
    end subroutine make_pass
+
+   !> Each node's largest shell thickness (initial: vol0 over the shell's area; 0 where no
+   !> shell has the node). Unallocated when the model has no shells.
+   subroutine shell_node_thickness(model, tnode)
+      type(model_t), intent(in) :: model
+      real(wp), allocatable, intent(out) :: tnode(:)
+      type(family_t) :: fam
+      integer :: b, q, k
+      real(wp) :: t, a
+      do b = 1, size(model%blocks)
+         fam = element_family(model%blocks(b)%etype)
+         if (.not. fam%rot) cycle
+         if (.not. allocated(tnode)) then
+            allocate(tnode(model%nn))
+            tnode = 0.0_wp
+         end if
+         associate (blk => model%blocks(b))
+            do q = 1, blk%nel
+               a = seg_area(model%x0, blk%conn(1:4, q), merge(3, 4, blk%conn(3, q) == &
+                            blk%conn(4, q)))
+               if (.not. (a > 0.0_wp)) cycle
+               t = blk%vol0(q)/a
+               do k = 1, 4
+                  tnode(blk%conn(k, q)) = max(tnode(blk%conn(k, q)), t)
+               end do
+            end do
+         end associate
+      end do
+   end subroutine shell_node_thickness
+
+   !> Shells in pass p (segments of s on shell elements, slave nodes on shells): the contact
+   !> surface lies off the mid-surface by half the contact thickness, on either side
+   !> (LS-DYNA's default: half the shell thickness; tn, tseg = [SST or MST, SFST or SFMT] of
+   !> the nodes' and the segments' side: a thickness > 0 replaces the shell's). A shell
+   !> segment's penalty stiffness is LS-DYNA's shell form SF K A / (largest diagonal)
+   !> (Theory Manual, "Penalty method": K A^2 / V of a solid face would make it K A / t),
+   !> its depth the offset. Nothing is allocated for a pass without shells.
+   subroutine shell_offsets(model, tnode, s, tn, tseg, p)
+      type(model_t), intent(in) :: model
+      real(wp), allocatable, intent(in) :: tnode(:)
+      type(surface_t), intent(in) :: s
+      real(wp), intent(in) :: tn(2), tseg(2)
+      type(contact_pass_t), intent(inout) :: p
+      type(family_t) :: fam
+      integer :: i, e, b, q
+      real(wp) :: t, a, dmax
+      if (.not. allocated(tnode)) return
+      allocate(p%soff(p%nseg), p%noff(p%nnode))
+      p%soff = 0.0_wp
+      p%noff = 0.0_wp
+      do i = 1, p%nseg
+         e = s%elem(i)
+         b = model%elem_block(e)
+         q = model%elem_pos(e)
+         fam = element_family(model%blocks(b)%etype)
+         if (.not. fam%rot) cycle
+         a = p%area(i)
+         if (.not. (a > 0.0_wp)) cycle
+         t = model%blocks(b)%vol0(q)/a
+         if (tseg(1) > 0.0_wp) t = tseg(1)
+         p%soff(i) = 0.5_wp*tseg(2)*t
+         dmax = norm2(model%x0(:, p%seg(3, i)) - model%x0(:, p%seg(1, i)))
+         if (p%nsn(i) == 4) then
+            dmax = max(dmax, norm2(model%x0(:, p%seg(4, i)) - model%x0(:, p%seg(2, i))))
+         else
+            dmax = max(dmax, norm2(model%x0(:, p%seg(2, i)) - model%x0(:, p%seg(1, i))), &
+                       norm2(model%x0(:, p%seg(3, i)) - model%x0(:, p%seg(2, i))))
+         end if
+         ! (the solid form's SF K A^2 / V undone: the same scale factor SF)
+         p%kseg(i) = p%kseg(i)*model%blocks(b)%vol0(q)/(a*dmax)
+         p%depth(i) = p%soff(i)
+      end do
+      do i = 1, p%nnode
+         t = tnode(p%node(i))
+         if (t > 0.0_wp .and. tn(1) > 0.0_wp) t = tn(1)
+         p%noff(i) = 0.5_wp*tn(2)*t
+      end do
+      if (p%nnode > 0) p%noffmax = max(0.0_wp, maxval(p%noff))
+      p%shells = any(p%soff > 0.0_wp) .or. p%noffmax > 0.0_wp
+      if (.not. p%shells) deallocate(p%soff, p%noff)
+   end subroutine shell_offsets
 
    !> area of a 3- or 4-node segment (a quad: half the cross product of its diagonals)
    pure real(wp) function seg_area(x, sg, nsn) result(a)

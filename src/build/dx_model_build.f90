@@ -273,11 +273,6 @@ contains
                'INTGRD = 1) are not supported (supported: 3 to 5)')
             return
          end if
-         if (model%mats(p%imat)%m%is_rigid) then
-            call set_error(error, w//'part '//str(p%label)//': field MID: rigid shells '// &
-               '(*MAT_RIGID on a *SECTION_SHELL part) are not supported yet')
-            return
-         end if
          ts = 'deck'
          if (inp%timestep_src%line > 0) ts = inp%files(inp%timestep_src%ifile)%s//':'// &
                                              str(inp%timestep_src%line)//': *CONTROL_TIMESTEP'

@@ -96,6 +96,7 @@ contains
       real(wp), allocatable :: mass(:), mrig(:), bm(:), bm1(:, :), bm2(:, :, :), xref(:, :)
       integer, allocatable :: body_of_part(:), nodes(:), inert(:)
       logical, allocatable :: inbody(:)
+      type(family_t) :: fam
       integer :: nb, ip, b, k, i, e, nd, j, nrb
       real(wp) :: vol, m1(3), m2(3, 3), rho
       character(:), allocatable :: w
@@ -171,10 +172,16 @@ contains
             rho = model%mats(model%parts(ip)%imat)%m%ro
             do k = 1, size(model%blocks)
                if (model%blocks(k)%ipart /= ip) cycle
+               fam = element_family(model%blocks(k)%etype)
                do e = 1, model%blocks(k)%nel
-                  call elem_moments(model%blocks(k)%etype, &
-                                    model%x0(:, model%blocks(k)%conn(:, e)), xref(:, b), vol, &
-                                    m1, m2)
+                  if (fam%rot) then     ! a rigid shell: its thickness from vol0
+                     call shell_moments(model%x0(:, model%blocks(k)%conn(:, e)), &
+                                        model%blocks(k)%vol0(e), xref(:, b), vol, m1, m2)
+                  else
+                     call elem_moments(model%blocks(k)%etype, &
+                                       model%x0(:, model%blocks(k)%conn(:, e)), xref(:, b), &
+                                       vol, m1, m2)
+                  end if
                   bm(b) = bm(b) + rho*vol
                   bm1(:, b) = bm1(:, b) + rho*m1
                   bm2(:, :, b) = bm2(:, :, b) + rho*m2
@@ -309,7 +316,9 @@ contains
       if (allocated(model%spcs)) then
          do k = 1, size(model%spcs)
             nd = model%spcs(k)%node
-            if (rs%node_body(nd) /= 0 .and. any(model%spcs(k)%dof(1:3))) then
+            ! (DOFRX/RY/RZ count on a shell's node: it turns with its body)
+            if (rs%node_body(nd) /= 0 .and. (any(model%spcs(k)%dof(1:3)) .or. &
+                (any(model%spcs(k)%dof(4:6)) .and. shell_node(nd)))) then
                call set_error(error, constraint_where(inp, model, nset_map, nd, .true.)// &
                   'node '//str(model%node_label(nd))//' of rigid body '// &
                   str(rs%bodies(rs%node_body(nd))%label)//' has a nodal constraint '// &
@@ -361,6 +370,22 @@ contains
       rs%dtcrit = rigid_element_step(model)
       rs%rbdout_dt = inp%rigid%rbdout_dt
       call move_alloc(rs, model%rigid)
+   contains
+      !> Whether node nd is a node of a shell element (it carries rotations).
+      logical function shell_node(nd)
+         integer, intent(in) :: nd
+         type(family_t) :: fm
+         integer :: kb
+         shell_node = .false.
+         do kb = 1, size(model%blocks)
+            fm = element_family(model%blocks(kb)%etype)
+            if (.not. fm%rot) cycle
+            if (any(model%blocks(kb)%conn == nd)) then
+               shell_node = .true.
+               return
+            end if
+         end do
+      end function shell_node
    end subroutine build_rigid
 
    !> The body of part label; none is an input error at w (field PID).
@@ -524,6 +549,51 @@ contains
    end subroutine finish_body
 
    !> Gaussian elimination with partial pivoting for the 6x6 system a u = rhs.
+   !> Moments of a shell (*MAT_RIGID on a *SECTION_SHELL part) with corners xe(3, 4) (a
+   !> triangle repeats N3) and volume v0 = A t: the mid-surface's bilinear map integrated by
+   !> 2x2 Gauss points (exact for a flat quadrilateral: the area element is linear there),
+   !> the thickness t = v0/A spread along the normal: vol = A t, m1 = t int (x - xref) dA,
+   !> m2 = t int (x - xref)(x - xref)^T dA + t^3/12 int n n^T dA.
+   pure subroutine shell_moments(xe, v0, xref, vol, m1, m2)
+      real(wp), intent(in) :: xe(3, 4), v0, xref(3)
+      real(wp), intent(out) :: vol, m1(3), m2(3, 3)
+      real(wp), parameter :: g = 0.577350269189625764509_wp
+      real(wp), parameter :: xq(4) = [-1.0_wp, 1.0_wp, 1.0_wp, -1.0_wp]
+      real(wp), parameter :: eq(4) = [-1.0_wp, -1.0_wp, 1.0_wp, 1.0_wp]
+      real(wp) :: da(4), r(3, 4), nn(3, 4), t1(3), t2(3), c(3), sh, a, t
+      integer :: ia, ib, k, q, j
+      q = 0
+      do ib = -1, 1, 2
+         do ia = -1, 1, 2
+            q = q + 1
+            t1 = 0.0_wp; t2 = 0.0_wp; r(:, q) = 0.0_wp
+            do k = 1, 4
+               sh = 0.25_wp*(1.0_wp + xq(k)*ia*g)*(1.0_wp + eq(k)*ib*g)
+               r(:, q) = r(:, q) + sh*xe(:, k)
+               t1 = t1 + 0.25_wp*xq(k)*(1.0_wp + eq(k)*ib*g)*xe(:, k)
+               t2 = t2 + 0.25_wp*eq(k)*(1.0_wp + xq(k)*ia*g)*xe(:, k)
+            end do
+            c = cross(t1, t2)
+            da(q) = norm2(c)
+            nn(:, q) = 0.0_wp
+            if (da(q) > 0.0_wp) nn(:, q) = c/da(q)
+            r(:, q) = r(:, q) - xref
+         end do
+      end do
+      a = sum(da)
+      vol = 0.0_wp; m1 = 0.0_wp; m2 = 0.0_wp
+      if (.not. (a > 0.0_wp)) return
+      t = v0/a
+      vol = v0
+      do q = 1, 4
+         m1 = m1 + t*da(q)*r(:, q)
+         do j = 1, 3
+            m2(:, j) = m2(:, j) + t*da(q)*r(:, q)*r(j, q) + &
+                       t**3/12.0_wp*da(q)*nn(:, q)*nn(j, q)
+         end do
+      end do
+   end subroutine shell_moments
+
    pure subroutine solve6(a, rhs, u, ok)
       real(wp), intent(in) :: a(6, 6), rhs(6)
       real(wp), intent(out) :: u(6)

@@ -15,6 +15,11 @@
 !>  - the slave node gets f, the master nodes -N_i(xi, eta) f (momentum is conserved).
 !> Symbols: x_c the contact point, n the outward unit normal of the master segment,
 !> N_i the segment shape functions.
+!> Shells (p%shells): a shell segment is touched from either side: the normal is turned
+!> towards the slave node and the contact surface lies p%soff off the mid-surface; a slave
+!> node on a shell adds its own offset p%noff (Hallquist, LS-DYNA Theory Manual, "Contact
+!> with shell thickness": g = |(x_s - x_c).n| - (t_s + t_m)/2); a shell slave node meets
+!> segments facing either way (it has no outward side).
 !> Split in two per slave node (pass_node: its result, pass_apply: added in, in slave-node
 !> order) so that MPI runs compute the nodes on their strips and add the results in the
 !> serial order (dx_par_contact).
@@ -102,6 +107,22 @@ contains
       end if
    end subroutine project_point
 
+   !> Shells: the gap g = (x_s - x_c).n of a slave node to a segment becomes the gap to the
+   !> contact surface: on a shell segment (soff > 0) the normal turned to the node's side and
+   !> g = |g| - soff; a shell slave node's own offset noff subtracted (either segment).
+   pure subroutine shell_gap(soff, noff, nrm, g)
+      real(wp), intent(in) :: soff, noff
+      real(wp), intent(inout) :: nrm(3), g
+      if (soff > 0.0_wp) then
+         if (g < 0.0_wp) then
+            nrm = -nrm
+            g = -g
+         end if
+         g = g - soff
+      end if
+      g = g - noff
+   end subroutine shell_gap
+
    !> whether xs lies outside the box of the n points xe grown by d
    pure logical function outside_box(xe, n, xs, d) result(out)
       real(wp), intent(in) :: xe(3, 4), xs(3), d
@@ -174,9 +195,9 @@ contains
       real(wp), intent(in) :: dt_old, dt_est, gtol
       real(wp) :: xe(3, 4), nsh(4), xc(3), nrm(3), xi(2), g, gbest, nb(4), nrmb(3)
       real(wp) :: kk, fn, vrel(3), vn, vt(3), vtm, ms, mm, meff, mu, fy, ftr(3), fsl(3), fmag
-      real(wp) :: inv_mm
+      real(wp) :: inv_mm, dep
       integer :: k, c, s, sb, j, n
-      logical :: inside, near
+      logical :: inside, near, facing
       k = p%node(i)
       p%rint(:, i) = 0
       p%rval(:, i) = 0.0_wp
@@ -186,6 +207,9 @@ contains
       sb = 0
       gbest = -huge(1.0_wp)
       near = .false.
+      ! (a slave node on a shell has no outward side: every facing test is off for it)
+      facing = p%nsseg > 0
+      if (p%shells) facing = facing .and. .not. p%noff(i) > 0.0_wp
       do c = p%cand_ptr(i), p%cand_ptr(i + 1) - 1
          s = p%cand(c)
          if (allocated(p%live)) then  ! erosion: a face that left, or a dormant one
@@ -193,25 +217,32 @@ contains
          end if
          n = p%nsn(s)
          xe(:, 1:n) = x(:, p%seg(1:n, s))
+         dep = p%depth(s)
+         if (p%shells) dep = dep + p%noff(i)
          ! cheap rejections before the projection: outside the segment's box grown by
          ! the depth, or facing away (normal at the centre)
-         if (outside_box(xe, n, x(:, k), p%depth(s))) cycle
-         if (p%nsseg > 0) then
+         if (outside_box(xe, n, x(:, k), dep)) cycle
+         if (facing) then
             if (n == 4) then
                nrm = cross(xe(:, 3) - xe(:, 1), xe(:, 4) - xe(:, 2))
             else
                nrm = cross(xe(:, 2) - xe(:, 1), xe(:, 3) - xe(:, 1))
             end if
+            if (p%shells) then    ! a shell segment faces the node's side
+               if (p%soff(s) > 0.0_wp .and. dot_product(x(:, k) - xe(:, 1), nrm) < 0.0_wp) &
+                  nrm = -nrm
+            end if
             if (dot_product(p%nnrm(:, i), nrm) >= 0.0_wp) cycle
          end if
          call project_point(n, xe, x(:, k), nsh, xc, nrm, xi, inside)
          if (.not. inside) cycle
+         g = dot_product(x(:, k) - xc, nrm)
+         if (p%shells) call shell_gap(p%soff(s), p%noff(i), nrm, g)
          ! only segments facing the node's own surface (rejects the side faces of a
          ! master edge the slave node lies on)
-         if (p%nsseg > 0) then
+         if (facing) then
             if (dot_product(p%nnrm(:, i), nrm) >= 0.0_wp) cycle
          end if
-         g = dot_product(x(:, k) - xc, nrm)
          if (g >= 0.0_wp .and. g < gtol .and. .not. near) then
             near = .true.
             p%rint(1, i) = s
@@ -219,7 +250,7 @@ contains
          end if
          ! a node on the segment's plane up to round-off (an edge shared with the master
          ! body's side) is not penetrating it
-         if (g >= -1.0e-8_wp*p%depth(s) .or. -g > p%depth(s)) cycle
+         if (g >= -1.0e-8_wp*dep .or. -g > dep) cycle
          if (g > gbest) then
             gbest = g; sb = s; nb = nsh; nrmb = nrm
          end if
@@ -233,7 +264,12 @@ contains
          xe(:, 1:n) = x(:, p%seg(1:n, s))
          call project_point(n, xe, x(:, k), nsh, xc, nrm, xi, inside)
          g = dot_product(x(:, k) - xc, nrm)
-         if (g < -1.0e-8_wp*p%depth(s) .and. -g <= p%depth(s) .and. norm2(nrm) > 0.0_wp) then
+         dep = p%depth(s)
+         if (p%shells) then
+            call shell_gap(p%soff(s), p%noff(i), nrm, g)
+            dep = dep + p%noff(i)
+         end if
+         if (g < -1.0e-8_wp*dep .and. -g <= dep .and. norm2(nrm) > 0.0_wp) then
             sb = s; gbest = g; nb = nsh; nrmb = nrm
          end if
       end if
@@ -248,7 +284,9 @@ contains
       ! first contact, or a jump onto another segment deeper than the last gap (a node
       ! coming round an edge already inside), is not taken, since its penalty force
       ! would inject energy
-      if (-gbest > -p%gap(i) + 2.0_wp*abs(vn)*dt_est + 0.02_wp*p%depth(sb)) return
+      dep = p%depth(sb)
+      if (p%shells) dep = dep + p%noff(i)
+      if (-gbest > -p%gap(i) + 2.0_wp*abs(vn)*dt_est + 0.02_wp*dep) return
       ! ---- stiffness and masses
       ms = mass(k)
       inv_mm = 0.0_wp

@@ -19,6 +19,16 @@ module dx_contact_search
 
 contains
 
+   !> Shells: slave node i of pass p meets segment s from either side (s on a shell, or i
+   !> on a shell), so the facing filters do not apply.
+   pure logical function both_sides(p, i, s)
+      type(contact_pass_t), intent(in) :: p
+      integer, intent(in) :: i, s
+      both_sides = .false.
+      if (.not. p%shells) return
+      both_sides = p%soff(s) > 0.0_wp .or. p%noff(i) > 0.0_wp
+   end function both_sides
+
    !> Rebuild the candidate lists of pass p from coordinates x; margin: search distance.
    !> mass (optional): nodal masses, for the frequency bound w2pot of the candidate pairs,
    !> max over slave nodes with candidates of 4 k_max/min(m_slave, m_master nodes): a pair
@@ -51,6 +61,10 @@ contains
          ext = ext + maxval(bhi(:, s) - blo(:, s))
          blo(:, s) = blo(:, s) - (margin + p%depth(s))
          bhi(:, s) = bhi(:, s) + (margin + p%depth(s))
+         if (p%shells) then     ! the slave nodes' shell offsets
+            blo(:, s) = blo(:, s) - p%noffmax
+            bhi(:, s) = bhi(:, s) + p%noffmax
+         end if
       end do
       ext = ext/real(p%nseg, wp)
       ! MPI runs: only the segments whose grown box reaches this strip's slab (the halo) can
@@ -165,7 +179,8 @@ contains
             end if
             ! segments clearly facing the same way as the node's surface (its own face and
             ! its neighbours on a single surface) cannot be hit before the next sort
-            if (p%nsseg > 0) then
+            ! (shells: a shell segment is met from either side, a shell node has no side)
+            if (p%nsseg > 0 .and. .not. both_sides(p, i, s)) then
                if (dot_product(p%nnrm(:, i), snrm(:, s)) > 0.3_wp) cycle
             end if
             if (nc == size(cand)) then

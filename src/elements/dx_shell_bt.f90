@@ -338,7 +338,9 @@ contains
          end if
          blk%relvol(i) = area*blk%es(i, c0)/blk%vol0(i)
          ! stable step: L = (1 + beta) A / max(L1, L2, L3, (1 - beta) L4)
-         tri = blk%conn(3, i) == blk%conn(4, i)
+         ! (a triangle repeats N3; under MPI a shared N3 has one slot node per corner,
+         ! each holding the node's x: the coordinates tell it too)
+         tri = blk%conn(3, i) == blk%conn(4, i) .or. all(xe(:, 3) == xe(:, 4))
          lmax = max(norm2(xe(:, 2) - xe(:, 1)), norm2(xe(:, 3) - xe(:, 2)))
          if (tri) then
             lmax = max(lmax, norm2(xe(:, 1) - xe(:, 3)))

@@ -28,7 +28,7 @@ module dx_domain
    use dx_restart, only: restart_write
    use dx_par_restart, only: serial_restart_read
    use dx_energy_sums, only: constraint_work, element_energies, set_energy, part_mass_map, &
-                             part_energies, interface_work, eroded_energies
+                             part_energies, interface_work, eroded_energies, rotation_work
    use dx_par_emc, only: par_emc_t, par_emc_together
    implicit none
    private
@@ -151,7 +151,9 @@ module dx_domain
          type(model_t), intent(inout), target :: model
          real(wp), intent(in) :: t, dt, dtavg, vold(:, :)
       end subroutine rigid_i
-      subroutine constraints_i(d, model, cnodes, vfree, vold, dt, dtavg, wcon, wrw, need)
+      !> wold: w(n-1/2) of decks with rotations (shells); then the constraint moments'
+      !> work enters wcon first (model%mom holds the free w), in node order
+      subroutine constraints_i(d, model, cnodes, vfree, vold, dt, dtavg, wcon, wrw, need, wold)
          import :: domain_t, model_t, wp
          class(domain_t), intent(inout) :: d
          type(model_t), intent(inout) :: model
@@ -159,6 +161,7 @@ module dx_domain
          real(wp), intent(in) :: vfree(:, :), vold(:, :), dt, dtavg
          real(wp), intent(inout) :: wcon, wrw
          logical, intent(in) :: need
+         real(wp), intent(in), optional :: wold(:, :)
       end subroutine constraints_i
       subroutine load_work_i(d, fext, vold, v, dtavg, wext, need)
          import :: domain_t, wp
@@ -175,12 +178,14 @@ module dx_domain
          character(*), intent(in) :: outdir
          type(error_t), allocatable, intent(out) :: error
       end subroutine contact_work_i
-      subroutine energies_i(d, model, ke, vold, wsum, erw, dfac, need)
+      !> wold: w(n-1/2) of decks with rotations (an MPI run sums their kinetic energy)
+      subroutine energies_i(d, model, ke, vold, wsum, erw, dfac, need, wold)
          import :: domain_t, model_t, wp
          class(domain_t), intent(inout) :: d
          type(model_t), intent(inout) :: model
          real(wp), intent(in) :: ke, vold(:, :), wsum, erw, dfac
          logical, intent(in) :: need
+         real(wp), intent(in), optional :: wold(:, :)
       end subroutine energies_i
       subroutine plot_i(d, model, out, error)
          import :: domain_t, model_t, output_t, error_t
@@ -364,13 +369,15 @@ contains
    end subroutine s_rigid_step
 
    !> Work of the constraint reactions; rigid walls and their work.
-   subroutine s_constraints(d, model, cnodes, vfree, vold, dt, dtavg, wcon, wrw, need)
+   subroutine s_constraints(d, model, cnodes, vfree, vold, dt, dtavg, wcon, wrw, need, wold)
       class(serial_domain_t), intent(inout) :: d
       type(model_t), intent(inout) :: model
       integer, intent(in) :: cnodes(:)
       real(wp), intent(in) :: vfree(:, :), vold(:, :), dt, dtavg
       real(wp), intent(inout) :: wcon, wrw
       logical, intent(in) :: need
+      real(wp), intent(in), optional :: wold(:, :)
+      if (present(wold)) call rotation_work(model, wold, wcon)   ! shells' constraint moments
       if (.not. allocated(d%cterms)) allocate(d%cterms(size(cnodes)))
       call constraint_work(cnodes, model%mass, vfree, vold, model%v, dtavg, wcon, d%cterms)
       if (allocated(model%walls)) then
@@ -403,11 +410,12 @@ contains
    end subroutine s_contact_work
 
    !> The energies at t(n); dfac weighs the element work booked next cycle.
-   subroutine s_energies(d, model, ke, vold, wsum, erw, dfac, need)
+   subroutine s_energies(d, model, ke, vold, wsum, erw, dfac, need, wold)
       class(serial_domain_t), intent(inout) :: d
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: ke, vold(:, :), wsum, erw, dfac
       logical, intent(in) :: need
+      real(wp), intent(in), optional :: wold(:, :)
       real(wp) :: eint, ehg, epend
       call element_energies(model%blocks, eint, ehg, epend)
       eint = eint + dfac*epend   ! the part of W(n) booked next cycle

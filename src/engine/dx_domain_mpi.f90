@@ -208,6 +208,7 @@ contains
       class(mpi_domain_t), intent(inout) :: d
       type(model_t), intent(inout) :: model
       call par_engine_exchange(d%eng, model%f)
+      if (allocated(model%mom)) call par_engine_exchange(d%eng, model%mom)   ! shells' moments
       if (allocated(model%contact)) call par_contact_add(d%contact, model, par_engine_global(d%eng))
    end subroutine m_exchange
 
@@ -218,14 +219,15 @@ contains
       call par_rigid_step(d%rigid, model, t, dt, dtavg, vold)
    end subroutine m_rigid_step
 
-   subroutine m_constraints(d, model, cnodes, vfree, vold, dt, dtavg, wcon, wrw, need)
+   subroutine m_constraints(d, model, cnodes, vfree, vold, dt, dtavg, wcon, wrw, need, wold)
       class(mpi_domain_t), intent(inout) :: d
       type(model_t), intent(inout) :: model
       integer, intent(in) :: cnodes(:)
       real(wp), intent(in) :: vfree(:, :), vold(:, :), dt, dtavg
       real(wp), intent(inout) :: wcon, wrw
       logical, intent(in) :: need
-      call par_engine_constraints(d%eng, model, vfree, vold, dt, dtavg, wcon, wrw, need)
+      real(wp), intent(in), optional :: wold(:, :)
+      call par_engine_constraints(d%eng, model, vfree, vold, dt, dtavg, wcon, wrw, need, wold)
    end subroutine m_constraints
 
    subroutine m_load_work(d, fext, vold, v, dtavg, wext, need)
@@ -245,12 +247,13 @@ contains
       call par_contact_work(d%contact, model, par_engine_global(d%eng), vold, dtavg, outdir)
    end subroutine m_contact_work
 
-   subroutine m_energies(d, model, ke, vold, wsum, erw, dfac, need)
+   subroutine m_energies(d, model, ke, vold, wsum, erw, dfac, need, wold)
       class(mpi_domain_t), intent(inout) :: d
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: ke, vold(:, :), wsum, erw, dfac
       logical, intent(in) :: need
-      call par_engine_energies(d%eng, model, vold, wsum, erw, dfac, need)
+      real(wp), intent(in), optional :: wold(:, :)
+      call par_engine_energies(d%eng, model, vold, wsum, erw, dfac, need, wold)
    end subroutine m_energies
 
    !> Every rank appends its part (no communication).

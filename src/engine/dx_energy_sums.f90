@@ -25,7 +25,8 @@ module dx_energy_sums
    private
    public :: initial_kinetic, kinetic_energy, element_energies, constraint_work, &
              constraint_terms, set_energy, constrained_nodes, energy_bits, part_mass_map, &
-             part_energies, interface_work, eroded_energies
+             part_energies, interface_work, rot_node_term, rotation_work, &
+             rotation_kinetic, rotation_initial, eroded_energies
 
 contains
 
@@ -306,6 +307,51 @@ contains
          terms(i) = mass(nd)*dot_product(v(:, nd) - vfree(:, i), du)/dtavg
       end do
    end subroutine constraint_terms
+
+   !> The work of the constraint moments on the rotations of node i (shells): DOFRX/RY/RZ and
+   !> the prescribed rotations set w(n+1/2) against the free wf; the term is
+   !> I (w - wf).(w(n-1/2) + w)/2 (as constraint_terms for the translations). rot_node_term
+   !> is false (no term) where the constraint left the free w, so the serial sum (node order,
+   !> rotation_work) and an MPI run's gathered terms of its owned nodes add the same numbers.
+   logical function rot_node_term(rinert, wf, wold, w, term)
+      real(wp), intent(in) :: rinert, wf(3), wold(3), w(3)
+      real(wp), intent(out) :: term
+      term = 0.0_wp
+      rot_node_term = any(wf /= w)
+      if (rot_node_term) term = 0.5_wp*rinert*dot_product(w - wf, wold + w)
+   end function rot_node_term
+
+   !> Serial: the rotational constraint work of every node in node order into wcon (after
+   !> the solver's rotation step, model%mom holds the free angular velocities).
+   subroutine rotation_work(model, wold, wcon)
+      type(model_t), intent(in) :: model
+      real(wp), intent(in) :: wold(:, :)
+      real(wp), intent(inout) :: wcon
+      real(wp) :: term
+      integer :: i
+      do i = 1, model%nn
+         if (rot_node_term(model%rinert(i), model%mom(:, i), wold(:, i), model%w(:, i), term)) &
+            wcon = wcon + term
+      end do
+   end subroutine rotation_work
+
+   !> The rotational kinetic energy 1/2 I w(n-1/2).w(n+1/2) summed in node order (serial,
+   !> and rank 0 of an MPI run on the gathered global arrays).
+   real(wp) function rotation_kinetic(nn, rinert, wold, w) result(krot)
+      integer, intent(in) :: nn
+      real(wp), intent(in) :: rinert(:), wold(:, :), w(:, :)
+      integer :: i
+      krot = 0.0_wp
+      do i = 1, nn
+         krot = krot + 0.5_wp*rinert(i)*dot_product(wold(:, i), w(:, i))
+      end do
+   end function rotation_kinetic
+
+   !> The initial rotational kinetic energy 1/2 I w.w (serial and MPI rank 0 alike).
+   real(wp) function rotation_initial(rinert, w) result(k0)
+      real(wp), intent(in) :: rinert(:), w(:, :)
+      k0 = 0.5_wp*sum(rinert*sum(w**2, dim=1))
+   end function rotation_initial
 
    !> Store the energies and momentum of the current step in model%energy.
    subroutine set_energy(model, ke, eint, ehg, wext, erw)

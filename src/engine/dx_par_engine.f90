@@ -36,7 +36,8 @@ module dx_par_engine
    use dx_sort, only: sort_index
    use dx_par_model, only: par_model_t, par_fill_slots, par_exchange_forces, par_exchange_mass
    use dx_energy_sums, only: initial_kinetic, kinetic_energy, element_energies, &
-                             constraint_terms, set_energy, part_energies, eroded_energies
+                             constraint_terms, set_energy, part_energies, rot_node_term, &
+                             rotation_kinetic, rotation_initial, eroded_energies
    use dx_constraints, only: apply_rigidwalls, wall_hits_t
    use dx_par_contact, only: par_contact_t, par_contact_report
    use dx_par_plot, only: par_plot_t, par_plot_write, par_plot_finish
@@ -68,6 +69,10 @@ module dx_par_engine
       integer, allocatable :: key_elem(:)        !< serial order key -> global element
       logical, allocatable :: owned(:)           !< (nloc) this rank owns the node
       real(wp), allocatable :: gvold(:, :)
+      !> Decks with rotations (shells): the global model's g%w, g%rinert (the rank-0 sums
+      !> of the rotational kinetic energy) and w(n-1/2) gathered beside them
+      logical :: rot = .false.
+      real(wp), allocatable :: gwold(:, :)
       !> Work of the constraints and stonewalls (par_engine_constraints): the rank's
       !> constrained nodes (the explicit loop's cnodes), the serial position of each owned
       !> one (0: not owned), the map of each wall's local node list to its serial positions,
@@ -125,6 +130,19 @@ contains
       call par_gather_ordered(eng%pm%node_global(eng%own), &
                               reshape(model%mass(eng%own), [1, size(eng%own)]), keys, vals)
       eng%g%mass(keys) = vals(1, :)
+      if (allocated(model%rinert)) then   ! shells: the rotary inertia as the mass
+         call par_exchange_mass(eng%pm, model%rinert)
+         model%rinert(eng%pm%nloc + 1:) = 0.0_wp
+         call par_gather_ordered(eng%pm%node_global(eng%own), &
+                                 reshape(model%rinert(eng%own), [1, size(eng%own)]), keys, vals)
+         if (allocated(eng%g%rinert)) deallocate(eng%g%rinert)
+         if (allocated(eng%g%w)) deallocate(eng%g%w)
+         if (allocated(eng%gwold)) deallocate(eng%gwold)
+         allocate(eng%g%rinert(eng%g%nn), eng%g%w(3, eng%g%nn), eng%gwold(3, eng%g%nn))
+         eng%g%rinert(keys) = vals(1, :)
+         eng%g%w = 0.0_wp
+         eng%gwold = 0.0_wp
+      end if
       model%energy%mass = sum(eng%g%mass)
       if (allocated(eng%g%rigid)) model%energy%mass = model%energy%mass + eng%g%rigid%mass_corr
       eng%g%energy%mass = model%energy%mass
@@ -188,6 +206,13 @@ contains
             eng%g%v(:, eng%plan_own%keys) = gv
             e0(1) = initial_kinetic(eng%g%mass, eng%g%v)
          end if
+         if (allocated(model%w)) then    ! shells: + 1/2 I w.w, as the serial start
+            call par_gather_values_root(eng%plan_own, model%w(:, eng%own), gv)
+            if (par_rank() == 0) then
+               eng%g%w(:, eng%plan_own%keys) = gv
+               e0(1) = e0(1) + rotation_initial(eng%g%rinert, eng%g%w)
+            end if
+         end if
          call par_bcast_real(e0, 0)
          model%energy%initial = e0(1)
          return
@@ -195,6 +220,11 @@ contains
       call par_gather_ordered(eng%pm%node_global(eng%own), model%v(:, eng%own), keys, gv)
       eng%g%v(:, keys) = gv
       model%energy%initial = initial_kinetic(eng%g%mass, eng%g%v)
+      if (allocated(model%w)) then
+         call par_gather_ordered(eng%pm%node_global(eng%own), model%w(:, eng%own), keys, gv)
+         eng%g%w(:, keys) = gv
+         model%energy%initial = model%energy%initial + rotation_initial(eng%g%rinert, eng%g%w)
+      end if
    end subroutine par_engine_initial
 
    !> Before the element pass: shared nodes' x and v into their slot nodes.
@@ -203,6 +233,7 @@ contains
       type(model_t), intent(inout) :: model
       call par_fill_slots(eng%pm, model%x)
       call par_fill_slots(eng%pm, model%v)
+      if (allocated(model%w)) call par_fill_slots(eng%pm, model%w)   ! shells
    end subroutine par_engine_fill
 
    !> The global critical step and its element (the lowest serial order key among equal
@@ -354,10 +385,12 @@ contains
    subroutine par_engine_plot(eng, plot, model, error)
       type(par_engine_t), intent(inout) :: eng
       type(par_plot_t), intent(inout) :: plot
-      type(model_t), intent(in) :: model
+      type(model_t), intent(inout) :: model
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: t0
       t0 = par_wtime()
+      ! shells turn their stresses by the element frame of x: the slots get this x
+      if (allocated(model%w)) call par_fill_slots(eng%pm, model%x)
       call par_plot_write(plot, model, error)
       eng%t_gath = eng%t_gath + (par_wtime() - t0)
    end subroutine par_engine_plot
@@ -395,15 +428,30 @@ contains
    !> when a sum is needed (or the buffer is full), gathered on every rank and added in the
    !> serial order (cycle, then node for wcon; cycle, wall, node for wrw). Only nodes the
    !> constraints or walls act on travel: nothing per node and cycle otherwise.
-   subroutine par_engine_constraints(eng, model, vfree, vold, dt, dtavg, wcon, wrw, needed)
+   !> wold (decks with rotations): the constraint moments' terms of the owned nodes whose
+   !> rotation a constraint set (rot_node_term) are kept as wall -1, so they come first in
+   !> their cycle and in node order, as the serial rotation_work adds them.
+   subroutine par_engine_constraints(eng, model, vfree, vold, dt, dtavg, wcon, wrw, needed, &
+                                     wold)
       type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: vfree(:, :), vold(:, :), dt, dtavg
       real(wp), intent(inout) :: wcon, wrw
       logical, intent(in) :: needed
-      integer :: i, w, k
+      real(wp), intent(in), optional :: wold(:, :)
+      integer :: i, w, k, nd
+      real(wp) :: term
       if (.not. eng%have_bc) return     ! no constrained or wall node anywhere
       eng%nbuf = eng%nbuf + 1
+      if (present(wold)) then
+         do i = 1, size(eng%own)
+            nd = eng%own(i)
+            if (rot_node_term(model%rinert(nd), model%mom(:, nd), wold(:, nd), model%w(:, nd), &
+                              term)) &
+               call push([real(eng%nbuf, wp), -1.0_wp, real(eng%pm%node_global(nd), wp), term, &
+                          0.0_wp, 0.0_wp, 0.0_wp])
+         end do
+      end if
       if (size(eng%lcn) > 0) then
          call constraint_terms(eng%lcn, model%mass, vfree, vold, model%v, dtavg, eng%lc_term)
          do i = 1, size(eng%lcn)
@@ -473,9 +521,10 @@ contains
       call par_allgather_probe(reshape(eng%rec(:, 1:eng%nrec), [NREC_W*eng%nrec]), rb, cnt)
       n = size(rb)/NREC_W
       allocate(sk(n))
-      do i = 1, n    ! (cycle, wall, position), wall 0 = the constraints
+      do i = 1, n    ! (cycle, wall, position), wall 0 = the constraints, -1 the rotations
          j = NREC_W*(i - 1)
-         sk(i) = ((rb(j + 1) - 1.0_wp)*real(nw + 1, wp) + rb(j + 2))*eng%key_mult + rb(j + 3)
+         sk(i) = ((rb(j + 1) - 1.0_wp)*real(nw + 2, wp) + rb(j + 2) + 1.0_wp)*eng%key_mult + &
+                 rb(j + 3)
       end do
       idx = [(i, i = 1, n)]
       call sort_index(idx, sk)
@@ -487,7 +536,7 @@ contains
       do i = 1, n
          j = NREC_W*(idx(i) - 1)
          w = nint(rb(j + 2))
-         if (w == 0) then
+         if (w <= 0) then
             wcon = wcon + rb(j + 4)
          else
             wrw = wrw + rb(j + 4)
@@ -506,22 +555,29 @@ contains
    !> rigid bodies gather the nodal velocities to every rank (their stages read g's nodes).
    !> dfac = (dt(n+1/2) - dt(n-1/2))/4 weighs the element work still to be booked (epend,
    !> dx_energy_sums), gathered per element as alive*(ework(:,4) - ework(:,2)).
-   subroutine par_engine_energies(eng, model, vold, wsum, erw, dfac, needed)
+   subroutine par_engine_energies(eng, model, vold, wsum, erw, dfac, needed, wold)
       type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: vold(:, :), wsum, erw, dfac
       logical, intent(in) :: needed
+      real(wp), intent(in), optional :: wold(:, :)
       real(wp), allocatable :: vals(:, :), gv(:, :)
       real(wp) :: ke, eint, ehg, t0, epend, erec(15)
-      integer :: i, e, nv
+      integer :: i, e, nv, nr
       logical :: root
       if (.not. needed) return
       t0 = par_wtime()
       root = par_rank() == 0
-      allocate(vals(6, size(eng%own)), gv(6, size(eng%plan_own%keys)))
+      nr = 6
+      if (present(wold)) nr = 12      ! shells: w(n+1/2), w(n-1/2) too
+      allocate(vals(nr, size(eng%own)), gv(nr, size(eng%plan_own%keys)))
       do i = 1, size(eng%own)
          vals(1:3, i) = model%v(:, eng%own(i))
          vals(4:6, i) = vold(:, eng%own(i))
+         if (nr == 12) then
+            vals(7:9, i) = model%w(:, eng%own(i))
+            vals(10:12, i) = wold(:, eng%own(i))
+         end if
       end do
       if (eng%root_only) then
          call par_gather_values_root(eng%plan_own, vals, gv)
@@ -531,6 +587,10 @@ contains
       if (root .or. .not. eng%root_only) then
          eng%g%v(:, eng%plan_own%keys) = gv(1:3, :)
          eng%gvold(:, eng%plan_own%keys) = gv(4:6, :)
+         if (nr == 12) then
+            eng%g%w(:, eng%plan_own%keys) = gv(7:9, :)
+            eng%gwold(:, eng%plan_own%keys) = gv(10:12, :)
+         end if
       end if
       deallocate(vals, gv)
       nv = 3
@@ -563,6 +623,7 @@ contains
             end associate
          end do
          ke = kinetic_energy(eng%g%nn, eng%g%mass, eng%gvold, eng%g%v)
+         if (nr == 12) ke = ke + rotation_kinetic(eng%g%nn, eng%g%rinert, eng%gwold, eng%g%w)
          if (allocated(eng%g%rigid)) ke = ke + eng%g%rigid%ke_corr   ! body KE (dx_par_rigid)
          call element_energies(eng%g%blocks, eint, ehg, epend)
          eint = eint + dfac*epend

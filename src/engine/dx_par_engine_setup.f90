@@ -10,7 +10,7 @@ module dx_par_engine_setup
    use, intrinsic :: iso_fortran_env, only: int64
    use dx_kinds, only: wp, nv_chunk
    use dx_timer, only: current_memory_kb
-   use dx_error, only: error_t, set_error, EXIT_INPUT
+   use dx_error, only: error_t
    use dx_strings, only: str, rstr
    use dx_log, only: log_info, log_set_quiet
    use dx_model, only: model_t, elem_block_t, ES_HGS, ES_PHIM
@@ -148,6 +148,11 @@ contains
                          [3, model%nn])
       model%v0 = reshape([eng%g%v0(:, rp%nodes), eng%g%v0(:, rp%nodes(eng%pm%slot_node))], &
                          [3, model%nn])
+      if (allocated(eng%g%w0)) model%w0 = reshape([eng%g%w0(:, rp%nodes), &   ! VXR, VYR, VZR
+         eng%g%w0(:, rp%nodes(eng%pm%slot_node))], [3, model%nn])
+      if (allocated(eng%g%w0)) deallocate(eng%g%w0)   ! (the rank's own copy is enough)
+      ! shells: rotations, moments and rotary inertia summed at shared nodes as the forces
+      eng%rot = has_shells(eng%g)
       call move_alloc(eng%pm%blocks, model%blocks)
       if (allocated(model%spcs)) then
          model%spcs = eng%g%spcs(rp%spcs)
@@ -220,6 +225,10 @@ contains
                   nb = nb + size(gn)
                end associate
             end do
+         end if
+         if (eng%rot) then      ! the constraint moments' terms, keyed by global node
+            kmax = max(kmax, eng%g%nn)
+            nb = nb + 1
          end if
          call par_allreduce(nb, PAR_MAX)
          eng%have_bc = nb > 0
@@ -297,8 +306,6 @@ contains
       type(error_t), allocatable, intent(out) :: error
       character(:), allocatable :: what
       what = ''   ! (the conserving solver runs under MPI: dx_par_emc)
-      if (has_shells(model)) what = '*SECTION_SHELL (shell elements: their rotational '// &
-         'degrees of freedom are not yet under MPI)'
       if (model%erodes .and. allocated(model%contact)) what = '*CONTACT_ with element '// &
          'erosion (*MAT_ADD_EROSION or *CONTROL_TIMESTEP ERODE = 1: the contact surfaces '// &
          'after erosion are formed on the serial model only)'
@@ -391,6 +398,9 @@ contains
             if (allocated(eng%g%spcs)) deallocate(eng%g%spcs)
             if (allocated(eng%g%prescribed)) deallocate(eng%g%prescribed)
             if (allocated(eng%gvold)) deallocate(eng%gvold)
+            if (allocated(eng%g%w)) deallocate(eng%g%w)            ! shells
+            if (allocated(eng%g%rinert)) deallocate(eng%g%rinert)
+            if (allocated(eng%gwold)) deallocate(eng%gwold)
          end if
       end if
       call mem_report(eng)
@@ -435,6 +445,9 @@ contains
       if (allocated(eng%g%mass)) node = node + 8*size(eng%g%mass, kind=int64)
       if (allocated(eng%g%node_label)) node = node + 4*size(eng%g%node_label, kind=int64)
       if (allocated(eng%gvold)) node = node + 8*size(eng%gvold, kind=int64)
+      if (allocated(eng%g%w)) node = node + 8*size(eng%g%w, kind=int64)
+      if (allocated(eng%g%rinert)) node = node + 8*size(eng%g%rinert, kind=int64)
+      if (allocated(eng%gwold)) node = node + 8*size(eng%gwold, kind=int64)
       if (allocated(eng%plan_own%keys)) node = node + 4*size(eng%plan_own%keys, kind=int64)
       if (allocated(eng%plan_own%perm)) node = node + 4*size(eng%plan_own%perm, kind=int64)
    end subroutine global_bytes

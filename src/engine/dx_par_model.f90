@@ -6,12 +6,14 @@
 !> f(:, nloc + slot) (0 - c, exactly -c), and par_shared_sum adds all ranks' slots of a node
 !> in serial key order (scatter_keys: the serial loop `do k = 1, nen; do i = 1, nel` per
 !> block) - bit for bit the serial sum, with no change to the kernels. The nodal mass is
-!> scattered element-major (`do i; do k` in init_state), so it has its own keys and plan.
+!> scattered element-major (`do i; do k` in init_state), so it has its own keys and plan;
+!> so are the shell kernel's forces and moments (family_t%scatter_em), and the rotary
+!> inertia (par_exchange_mass on it). Moments use the force plan.
 !> Follows the fixed-order idea of OpenRadioss /PARITH/ON and ParaDyn's single shared-node
 !> exchange per cycle (LLNL Engineering Thrust Area Report FY97, article 4 of shared/seed).
 module dx_par_model
    use dx_kinds, only: wp, nv_chunk
-   use dx_model, only: model_t, elem_block_t, MAX_NEN
+   use dx_model, only: model_t, elem_block_t, MAX_NEN, family_t, element_family
    use dx_partition, only: rank_part_t
    use dx_par_plan, only: shared_sum_t, par_shared_setup, par_shared_sum
    implicit none
@@ -41,6 +43,7 @@ contains
       integer, allocatable :: loc(:), snum(:), piece(:), c_node(:), c_fkey(:), &
                               c_mkey(:), nbr_snode(:)
       logical, allocatable :: here(:), shared(:)
+      type(family_t) :: fam
       integer :: i, j, k, b, nb, n, slot, s
       pm%nloc = size(rp%nodes)
       pm%node_global = rp%nodes
@@ -82,6 +85,7 @@ contains
             if (size(piece) == 0) cycle
             nb = nb + 1
             pm%block_serial(nb) = b
+            fam = element_family(sb%etype)
             associate (pb => pm%blocks(nb))
                pb%ipart = sb%ipart
                pb%etype = sb%etype
@@ -114,6 +118,10 @@ contains
                         c_fkey(slot) = ((b - 1)*MAX_NEN + k - 1)*nv_chunk + piece(j)
                         ! mass: element-major serial order (block, position, corner)
                         c_mkey(slot) = ((b - 1)*nv_chunk + piece(j) - 1)*MAX_NEN + k
+                        ! a family that scatters element-major (shells: forces and
+                        ! moments) sums in that order; both keys span the same range
+                        ! per block, so blocks of both kinds interleave in serial order
+                        if (fam%scatter_em) c_fkey(slot) = c_mkey(slot)
                      else
                         pb%conn(k, j) = loc(n)
                      end if

@@ -35,6 +35,7 @@ module dx_par_restart
    use dx_error, only: error_t, set_error, EXIT_INPUT, EXIT_IO
    use dx_strings, only: str, string_t
    use dx_model, only: model_t, family_t, element_family, MAX_ES, ES_HGS, ES_DUMP
+   use dx_element_types, only: ES_THK
    use dx_contact_types, only: contact_set_t
    use dx_contact_strips, only: contact_strips
    use dx_restart, only: restart_write, restart_read
@@ -483,10 +484,14 @@ contains
                if (fam%es_ncol(ES_HGS) > 0 .and. &
                    (gp%parts(blk%ipart)%ihq == 4 .or. gp%parts(blk%ipart)%ihq == 5)) &
                   call blk%es_add(ES_HGS, fam%es_ncol(ES_HGS))
+               ! shells: thickness and hourglass forces (the ranks other than 0 freed g's
+               ! family state after set-up)
+               if (fam%es_ncol(ES_THK) > 0) call blk%es_add(ES_THK, fam%es_ncol(ES_THK))
             else
                if (allocated(blk%sig)) deallocate(blk%sig)
                if (allocated(blk%hv)) deallocate(blk%hv)
                call blk%es_drop(ES_HGS)
+               if (par_rank() > 0) call blk%es_drop(ES_THK)
             end if
          end associate
       end do
@@ -502,6 +507,7 @@ contains
       integer :: b, j, e, p, k, s
       model%x(:, 1:size(ng)) = gp%x(:, ng)
       model%v(:, 1:size(ng)) = gp%v(:, ng)
+      if (allocated(model%w) .and. allocated(gp%w)) model%w(:, 1:size(ng)) = gp%w(:, ng)
       do b = 1, size(model%blocks)
          associate (blk => model%blocks(b))
             do j = 1, blk%nel

@@ -81,8 +81,23 @@ contains
          gp%f(:, keys) = gv(4:6, :)
          gvold(:, keys) = gv(7:9, :)
       end associate
+      if (allocated(model%mom)) then    ! shells: the rigid nodes' moments (summed) too
+         if (.not. allocated(gp%mom)) then
+            allocate(gp%mom(3, gp%nn))
+            gp%mom = 0.0_wp
+         end if
+         deallocate(vals, gv)
+         allocate(vals(3, size(r_own)), gv(3, size(plan_r%keys)))
+         vals = model%mom(:, r_own)
+         call par_gather_values(plan_r, vals, gv)
+         gp%mom(:, plan_r%keys) = gv
+      end if
       call rigid_step(model%rigid, gp, t, dt, dtavg, gvold)
       model%v(:, r_loc) = gp%v(:, r_glob)
+      if (allocated(model%mom)) then    ! the body's omega, no nodal rotary inertia
+         model%w(:, r_loc) = gp%w(:, r_glob)
+         model%rinert(r_loc) = 0.0_wp
+      end if
       ! the global model reports the momentum (set_energy) with the body correction
       gp%rigid%p_corr = model%rigid%p_corr
       gp%rigid%ke_corr = model%rigid%ke_corr

@@ -23,6 +23,7 @@ module dx_partition
    use dx_error, only: error_t, set_error, EXIT_INPUT
    use dx_strings, only: str
    use dx_model, only: model_t, family_t, element_family, etype_of_elform, MAX_NEN
+   use dx_element_types, only: ETYPE_SHELL_BT
    use dx_metis, only: metis_part_kway, METIS_RECURSIVE
    use dx_contact_input, only: CT_SINGLE_SURFACE
    use dx_rank_part_types, only: rank_part_t   ! what one rank holds (re-exported)
@@ -56,6 +57,7 @@ module dx_partition
       integer, allocatable :: node_owner(:)  !< (nn) lowest rank holding the node
       integer, allocatable :: rank_wgt(:)    !< (0:np-1) summed element weight
       integer :: wscale = 1                  !< RIGID_SCALE when the deck has rigid elements
+      integer :: wshell = 0                  !< the shell family's weight (0: no shells)
       integer, allocatable :: rank_ne(:), rank_nn(:), rank_nshared(:)   !< (0:np-1)
       real(wp) :: balance = 1.0_wp           !< max(rank_wgt) / mean(rank_wgt)
       ! node -> ranks holding it (CSR over nodes; ranks ascending)
@@ -354,7 +356,8 @@ contains
       elems = pack([(e, e = 1, size(conn, 2))], take)
    end subroutine face_elements
 
-   !> Whether the model has a block of a family with rotations (shells: serial only).
+   !> Whether the model has a block of a family with rotations (shells: the MPI engine then
+   !> exchanges moments and rotary inertia beside the forces and masses).
    logical function has_shells(model)
       type(model_t), intent(in) :: model
       type(family_t) :: f
@@ -373,12 +376,7 @@ contains
       type(partition_t), intent(out) :: part
       type(error_t), allocatable, intent(out) :: error
       integer, allocatable :: conn(:, :), ewgt(:)
-      if (has_shells(model)) then
-         call set_error(error, model%deck_file//': *SECTION_SHELL: shell elements are not '// &
-            'yet under MPI (their rotational degrees of freedom are not exchanged); run this '// &
-            'deck serially, without dynx-part and mpirun', EXIT_INPUT)
-         return
-      end if
+      type(family_t) :: fs
       call model_conn(model, conn)
       call elem_costs(model, ewgt)
       if (has_auto_contact(model)) then   ! separate bodies joined by proximity edges
@@ -388,6 +386,10 @@ contains
          call partition_elements(conn, model%nn, ewgt, grp_ptr, grp_elem, np, part, error)
       end if
       if (has_rigid_elements(model)) part%wscale = RIGID_SCALE
+      if (has_shells(model)) then
+         fs = element_family(ETYPE_SHELL_BT)
+         part%wshell = part%wscale*fs%weight
+      end if
    end subroutine partition_model
 
    !> Whether the deck has an automatic or single-surface contact (split over the ranks by
@@ -561,6 +563,8 @@ contains
             part%wscale*f1%weight, ', ELFORM 2 = ', part%wscale*f2%weight, &
             ', rigid = ', COST_RIGID, ' (measured per element-cycle ratio)'
       end if
+      if (part%wshell > 0) write(unit, '(a,i0,a)') 'shell cost weight: *SECTION_SHELL '// &
+         'ELFORM 2 (Belytschko-Lin-Tsay) = ', part%wshell, ' (measured at NIP 3)'
       write(unit, '(a)') '  rank   elements     weight      nodes     shared  neighbours'
       do r = 0, part%np - 1
          write(unit, '(i6,4i11,i12)') r, part%rank_ne(r), part%rank_wgt(r), part%rank_nn(r), &

@@ -31,6 +31,13 @@ module dx_contact_types
       real(wp), allocatable :: depth(:)        !< (nseg) largest penetration taken as contact
       real(wp), allocatable :: area(:)         !< (nseg) initial area (VC friction limit)
       integer, allocatable :: owner(:, :)      !< (MAX_NEN, nseg) owning element nodes (0: none)
+      ! --- shells (allocated only when a segment or a slave node is on a shell): the
+      !     contact surface lies half the contact thickness off the mid-surface on either
+      !     side (LS-DYNA: the shell thickness, or SST/MST, times SFST/SFMT)
+      logical :: shells = .false.
+      real(wp), allocatable :: soff(:)         !< (nseg) segment offset (0: a solid's face)
+      real(wp), allocatable :: noff(:)         !< (nnode) slave node offset (0: no shell)
+      real(wp) :: noffmax = 0.0_wp             !< largest slave node offset
       logical :: exclude_owner = .false.       !< single surface: skip the node's own elements
       ! --- the slave nodes' own surface: a node only contacts segments facing it
       !     (n_node . n_seg < 0); none for node-set slaves

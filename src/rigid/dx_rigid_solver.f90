@@ -60,17 +60,20 @@ contains
       real(wp) :: f(3), tq(3), r(3), mn, sm(3), df(3), dtq(3), ten(3, 3), tinv(3, 3)
       real(wp) :: vc_old(3), l_old(3), w_old(3), vfree(3), lfree(3), vnew(3), lnew(3), w(3)
       real(wp) :: wpres(3), pimom(3), rk(3, 3), xn(3), ke_n, val
-      logical :: pres(3), rotc
+      logical :: pres(3), rotc, rot
       integer :: i, nd, k, d
       integer, parameter :: axis(5) = [1, 2, 3, 2, 1]
       real(wp), parameter :: frac(5) = [0.5_wp, 0.5_wp, 1.0_wp, 0.5_wp, 0.5_wp]
-      ! resultant force and torque about the centre of mass at t(n)
+      ! resultant force and torque about the centre of mass at t(n); a node with rotations
+      ! (a shell's, as an extra node) adds its moment
+      rot = allocated(model%mom)
       f = 0.0_wp; tq = 0.0_wp; mn = 0.0_wp; sm = 0.0_wp
       do i = 1, size(bd%nodes)
          nd = bd%nodes(i)
          r = model%x(:, nd) - bd%xc
          f = f + model%f(:, nd)
          tq = tq + cross(r, model%f(:, nd))
+         if (rot) tq = tq + model%mom(:, nd)
          mn = mn + model%mass(nd)
          sm = sm + model%mass(nd)*r
       end do
@@ -168,6 +171,15 @@ contains
          rs%p_corr = rs%p_corr - model%mass(nd)*model%v(:, nd)
       end do
       rs%ke_corr = rs%ke_corr - 0.5_wp*ke_n
+      ! nodes with rotations turn with the body: w(n+1/2) = omega(n+1/2); their rotary
+      ! inertia leaves the nodal update (the solver's rotation step skips I = 0, so w stays)
+      ! and its kinetic energy (the body's inertia is that of its elements and masses)
+      if (rot) then
+         do i = 1, size(bd%nodes)
+            model%w(:, bd%nodes(i)) = w
+            model%rinert(bd%nodes(i)) = 0.0_wp
+         end do
+      end if
    end subroutine step_body
 
    pure function diag(a) result(m)

@@ -27,7 +27,8 @@ module dx_explicit
    use dx_output, only: output_t
    use dx_checkpoint, only: checkpoint_t, checkpoint_failure_dump, checkpoint_energy_band
    use dx_rigid_solver, only: rigid_close, rigid_write_rbdout
-   use dx_energy_sums, only: initial_kinetic, kinetic_energy, constrained_nodes, energy_bits
+   use dx_energy_sums, only: initial_kinetic, kinetic_energy, constrained_nodes, energy_bits, &
+                             rotation_kinetic, rotation_initial
    use dx_domain, only: domain_t
    use dx_mass_scaling, only: ms_init, lump_mass, ms_block, ms_percent, ms_log_start, &
                               ms_endmas_report, MS_WARN_PERCENT
@@ -126,7 +127,7 @@ contains
          model%run%started = .true.
          model%energy%initial = initial_kinetic(model%mass, model%v)
          if (allocated(model%w)) model%energy%initial = model%energy%initial + &
-            0.5_wp*sum(model%rinert*sum(model%w**2, dim=1))
+            rotation_initial(model%rinert, model%w)
          call dom%initial_energy(model)
          if (allocated(model%rigid)) model%energy%initial = model%energy%initial + &
                                                            model%rigid%ke0_corr
@@ -258,14 +259,16 @@ contains
          call apply_spc(model, model%v)
          call apply_prescribed(model, t, dt, dtavg, vold, model%v)
          krot = 0.0_wp
-         if (allocated(model%w)) call rotation_step(model, t, dt, dtavg, self%wold, krot, wcon)
+         if (allocated(model%w)) call rotation_step(model, t, dt, dtavg, self%wold, krot)
          done = t >= tend .or. (model%ctrl%endcyc > 0 .and. model%cycle >= model%ctrl%endcyc) &
                 .or. self%ms_stop
          need = done .or. model%ctrl%endeng > 0.0_wp .or. (model%db%glstat_dt > 0.0_wp .and. &
                                                           t >= next_glstat) .or. &
                 (model%db%matsum_dt > 0.0_wp .and. t >= model%run%next_matsum)
          ! rigid walls; work sums (MPI: terms kept, summed in serial order when needed)
-         call dom%constraints(model, cnodes, vfree, vold, dt, dtavg, wcon, wrw, need)
+         ! (shells: the constraint moments' work first, self%wold present only with them)
+         call dom%constraints(model, cnodes, vfree, vold, dt, dtavg, wcon, wrw, need, &
+                              self%wold)
          if (loads) call dom%load_work(fext, vold, model%v, dtavg, wext, need)
          if (allocated(model%contact)) then
             call dom%contact_work(model, vold, dtavg, self%outdir, ioerr)
@@ -288,7 +291,7 @@ contains
          model%dt = dt
          ! (MPI: global sums, only when glstat, ENDENG or the end need them)
          call dom%energies(model, ke, vold, wext + wcon + wrig, -wrw, 0.25_wp*(dt - dt_old), &
-                           need)
+                           need, self%wold)
          if (model%ctrl%endeng > 0.0_wp) call checkpoint_energy_band(ck, model, t)
       end associate
       self%t = t
@@ -307,6 +310,8 @@ contains
       real(wp) :: pct
       if (model%cycle == 0) then
          model%energy%initial = initial_kinetic(model%mass, model%v)
+         if (allocated(model%w)) model%energy%initial = model%energy%initial + &
+            rotation_initial(model%rinert, model%w)
          call dom%initial_energy(model)
          if (allocated(model%rigid)) model%energy%initial = model%energy%initial + &
                                                            model%rigid%ke0_corr
@@ -331,32 +336,25 @@ contains
    !> w(n+1/2) = w(n-1/2) + dtavg m(n)/I (the lumped rotary inertia I is a scalar per node,
    !> so the update is the same in any axes), then DOFRX/RY/RZ and the prescribed rotations.
    !> krot = 1/2 I w(n-1/2).w(n+1/2), the rotational kinetic energy at t(n) (as for the
-   !> translations); the work of the constraint moments, I (w - w_free).(w(n-1/2) + w)/2,
-   !> enters wcon. (The nodes carry no rotation angle: the Belytschko-Lin-Tsay shell needs
-   !> only the angular velocities.)
-   subroutine rotation_step(model, t, dt, dtavg, wold, krot, wcon)
+   !> translations). model%mom keeps the free w: the domain's constraint stage adds the work
+   !> of the constraint moments, I (w - w_free).(w(n-1/2) + w)/2, to wcon (dx_energy_sums
+   !> rotation_work; under MPI in serial order from the owned nodes' terms). (The nodes carry
+   !> no rotation angle: the Belytschko-Lin-Tsay shell needs only the angular velocities.)
+   subroutine rotation_step(model, t, dt, dtavg, wold, krot)
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: t, dt, dtavg
       real(wp), intent(inout) :: wold(:, :)
       real(wp), intent(out) :: krot
-      real(wp), intent(inout) :: wcon
-      real(wp) :: wf(3)
       integer :: i
       wold = model%w
       do i = 1, model%nn
          if (model%rinert(i) > 0.0_wp) &
             model%w(:, i) = model%w(:, i) + dtavg*model%mom(:, i)/model%rinert(i)
       end do
-      model%mom = model%w       ! (the free w, kept for the constraint work below)
+      model%mom = model%w       ! (the free w, kept for the constraint work)
       call apply_spc_rot(model, model%w)
       call apply_prescribed_rot(model, t, dt, dtavg, wold, model%w)
-      krot = 0.0_wp
-      do i = 1, model%nn
-         krot = krot + 0.5_wp*model%rinert(i)*dot_product(wold(:, i), model%w(:, i))
-         wf = model%mom(:, i)
-         if (any(wf /= model%w(:, i))) wcon = wcon + 0.5_wp*model%rinert(i)* &
-            dot_product(model%w(:, i) - wf, wold(:, i) + model%w(:, i))
-      end do
+      krot = rotation_kinetic(model%nn, model%rinert, wold, model%w)
    end subroutine rotation_step
 
    !> Positions x(n+1) = x(n) + dt(n+1/2) v(n+1/2): the cycle boundary.
