@@ -19,7 +19,7 @@ module dx_par_engine_setup
    use dx_sort, only: sort_index
    use dx_par_model, only: par_model_build
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report, &
-                           has_shells
+                           has_shells, has_beams
    use dx_rank_file, only: read_rank_file, write_rank_file, rank_file_name, deck_content_hash
    use dx_io_sys, only: sys_mkdir_p
    use dx_energy_sums, only: constrained_nodes, part_mass_map
@@ -298,6 +298,8 @@ contains
       character(:), allocatable :: what
       what = ''   ! (the conserving solver runs under MPI: dx_par_emc)
       if (has_shells(model)) what = '*SECTION_SHELL (shell elements: their rotational '// &
+         'degrees of freedom are not yet under MPI)'
+      if (has_beams(model)) what = '*SECTION_BEAM (beam elements: their rotational '// &
          'degrees of freedom are not yet under MPI)'
       if (len(what) > 0) call set_error(error, model%deck_file//': '//what// &
          ' is not supported in an MPI run yet; run this deck serially (without mpirun)', &
