@@ -48,8 +48,23 @@ contains
       type(part_t), intent(inout) :: p
       character(*), intent(in) :: w
       type(error_t), allocatable, intent(out) :: error
+      integer :: k, n, first
       associate (sec => model%sections(p%isec), m => model%mats(p%imat)%m)
          p%bsec = sec%bprop(1:5)
+         ! the default orientation matters when the section is not symmetric: one note
+         if (sec%bprop(2) /= sec%bprop(3)) then
+            n = 0; first = 0
+            do k = 1, inp%nbeam
+               if (inp%beams(k)%n3 /= 0 .or. inp%beams(k)%has_v) cycle
+               if (inp%elem_pid(inp%beams(k)%e) /= p%label) cycle
+               n = n + 1
+               if (first == 0) first = inp%elem_label(inp%beams(k)%e)
+            end do
+            if (n > 0) call log_warn(w//'part '//str(p%label)//': '//str(n)//' beams (the '// &
+               'first: element '//str(first)//') have no orientation node (N3 = 0) nor '// &
+               'vector: their s axis is taken in the plane of the beam and the global z '// &
+               'axis (ISS /= ITT: the orientation matters)')
+         end if
          if (etype_of_beam_elform(sec%elform) == 0) then
             call set_error(error, w//'part '//str(p%label)//': field SECID: beam formulation '// &
                str(sec%elform)//' is not supported (supported: 2)')
@@ -152,9 +167,6 @@ contains
                            'orientation)')
             return
          end if
-         if (b%n3 == 0 .and. .not. b%has_v .and. s%bprop(2) /= s%bprop(3)) &
-            call log_warn(w//'element '//str(lab)//': no orientation node (N3 = 0): the s axis '// &
-               'is taken in the plane of the beam and the global z axis (ISS /= ITT)')
          sec = s%bprop(1:5)
          do k = 1, 5
             if (b%parm(k) > 0.0_wp) sec(k) = b%parm(k)

@@ -22,7 +22,9 @@
 !> about e2 with ISS and about e3 with ITT. Nodal forces and moments are the work conjugates:
 !> N e1 and T e1 at N2 (minus at N1), M_t,a e3 and M_s,a e2 at node a, and the shears
 !> (M_t,1 + M_t,2)/L along -e2 and (M_s,1 + M_s,2)/L along +e3 at N2 (opposite at N1).
-!> Internal energy: the work of the resultants over the step (trapezoid in the resultants).
+!> Internal energy: the work of the resultants over the step (trapezoid in the resultants),
+!> corrected for a change of the step as dx_hex8's centred work (the ES_WORK slot), so that
+!> it partners the centred kinetic energy of dx_explicit for any step sequence.
 !> Lumped mass rho A L0/2 per node (the family table); rotary inertia (beam_bs_rotary_inertia):
 !> the nodal mass times max((ISS + ITT)/A, L0**2/12) - the physical rho I L/2 plus a scaling
 !> of the kind Belytschko, Lin & Tsay 1984 and Hughes & Liu 1981 use for the rotations of
@@ -35,12 +37,16 @@
 !> torsion mode omega**2 = 2 G J/(L beta m L**2) (closed forms of the 12-DOF element's
 !> eigenproblem with the diagonal mass: the modes split into axial, torsion and, per plane,
 !> a symmetric and an antisymmetric bending mode; the antisymmetric one is the larger).
+!> L is the current length (the step then changes every cycle: hence the centred work above;
+!> with the plain trapezoid a 4-element bar released at TSSFAC 0.9 showed an energy ratio of
+!> 1.025 after 10 ms, with the centred work 1.0000000).
 module dx_beam_bs
    use dx_kinds, only: wp, huge_wp
    use dx_vec3, only: cross
    use dx_material, only: material_t
-   use dx_element_types, only: elem_block_t, part_t, ES_BEAM, block_result_t, &
+   use dx_element_types, only: elem_block_t, part_t, ES_BEAM, ES_WORK, block_result_t, &
                                ELEM_ERR_NEGVOL
+   use dx_hex8, only: centred_work
    implicit none
    private
    public :: beam_bs_block, beam_bs_rotary_inertia, beam_bs_init, beam_bs_axes
@@ -150,9 +156,10 @@ contains
       real(wp) :: xm(3, 2), dm(3), lm, e1m(3), e2o(3), e2m(3), e3m(3), om(3), dv(3)
       real(wp) :: e1(3), e2(3), e3(3), l, l0, rate(6), th(5), r(6), rold(6)
       real(wp) :: a, iss, itt, tj, sa, phs, pht, ks, kt, vs, vt, fl(3, 2), ml(3, 2)
-      real(wp) :: r2, beta, wb2, wt2, wmax2, dte
-      integer :: i, k, c, n1, n2
+      real(wp) :: r2, beta, wb2, wt2, wmax2, dte, wo, wn
+      integer :: i, k, c, n1, n2, cw
       c = blk%esc(ES_BEAM)
+      cw = blk%esc(ES_WORK)
       hdt = 0.5_wp*dt_old
       g = mat%shear
       lam = mat%bulk - 2.0_wp*g/3.0_wp
@@ -216,7 +223,16 @@ contains
          if (blk%failed(i)) r = 0.0_wp
          rold = blk%es(i, c + BM_RES:c + BM_RES + 5)
          blk%es(i, c + BM_RES:c + BM_RES + 5) = r
-         de = 0.5_wp*dt_old*dot_product(rold + r, rate)
+         ! the centred work of the resultants (dx_hex8's centred_work without viscosity):
+         ! the trapezoid dt (r_old + r).rate/2 corrected for a change of step, the exact
+         ! partner of the centred kinetic energy
+         wo = dt_old*dot_product(rold, rate)
+         wn = dt_old*dot_product(r, rate)
+         associate (s1 => blk%es(i, cw), s2 => blk%es(i, cw + 1), s3 => blk%es(i, cw + 2), &
+                    s4 => blk%es(i, cw + 3))
+            call centred_work(s1, s2, s3, s4, dt_old, wo, wn, 0.0_wp, 0.0_wp, 0.0_wp, &
+                              0.0_wp, 0.0_wp, de)
+         end associate
          blk%eint(i) = blk%eint(i) + de
          res%deint = res%deint + de
          blk%sig(i, 1, 1) = r(1)/a
@@ -232,7 +248,7 @@ contains
             f(:, blk%conn(k, i)) = f(:, blk%conn(k, i)) - fl(:, k)
             mom(:, blk%conn(k, i)) = mom(:, blk%conn(k, i)) - ml(:, k)
          end do
-         ! ---- stable step: the axial 2c/L and the bending mode with the lumped inertia
+         ! ---- stable step: the axial 2c/L, the bending and torsion modes (current length)
          r2 = max(iss, itt)/a
          beta = rot_factor(iss, itt, a, l0)/(l0*l0)
          wmax2 = 4.0_wp*c2/(l*l)

@@ -74,7 +74,8 @@ module dx_element_types
    integer, parameter :: ES_THK = 4
    !> beams (dx_beam_bs): the transverse axis e2 (3), the deformational angles (5: twist,
    !> end rotations about e2 at N1, N2, about e3 at N1, N2), the resultants (6: N, T, M2 at
-   !> N1, N2, M3 at N1, N2) and the element's section A, ISS, ITT, J, SA (5)
+   !> N1, N2, M3 at N1, N2) and the element's section A, ISS, ITT, J, SA (5); beams have
+   !> ES_WORK too (the centred work of the resultants)
    integer, parameter :: ES_BEAM = 5
    integer, parameter :: MAX_ES = 5
    !> restart dataset of each slot (the columns in order, flat; ES_DUMP: phim is derived at
@@ -226,7 +227,7 @@ contains
          f%nen = 2; f%nfaces = 0; f%nedges = 1
          f%edges(:, 1) = [1, 2]
          f%mass_share = 0.5_wp
-         f%es_ncol = [0, 0, 0, 0, 19]
+         f%es_ncol = [0, 4, 0, 0, 19]
          f%nip = 1; f%weight = 1
          f%rot = .true.
       end select
