@@ -29,22 +29,20 @@ module dx_read_beams
    private
    public :: register_beams
 
-   !> the *ELEMENT_BEAM keywords dynx reads (the option cards in the manual's order)
-   character(len=40), parameter :: BEAM_KEYS(8) = [character(len=40) :: 'ELEMENT_BEAM', &
-      'ELEMENT_BEAM_THICKNESS', 'ELEMENT_BEAM_OFFSET', 'ELEMENT_BEAM_ORIENTATION', &
-      'ELEMENT_BEAM_THICKNESS_OFFSET', 'ELEMENT_BEAM_THICKNESS_ORIENTATION', &
-      'ELEMENT_BEAM_OFFSET_ORIENTATION', 'ELEMENT_BEAM_THICKNESS_OFFSET_ORIENTATION']
-
 contains
 
    !> Add this family's keywords to the registry.
    subroutine register_beams(reg)
       type(registry_t), intent(inout) :: reg
-      integer :: k
       call reg%add('SECTION_BEAM', read_section_beam, title=.true.)
-      do k = 1, size(BEAM_KEYS)
-         call reg%add(trim(BEAM_KEYS(k)), read_element_beam)
-      end do
+      call reg%add('ELEMENT_BEAM', read_element_beam)
+      call reg%add('ELEMENT_BEAM_THICKNESS', read_element_beam)
+      call reg%add('ELEMENT_BEAM_OFFSET', read_element_beam)
+      call reg%add('ELEMENT_BEAM_ORIENTATION', read_element_beam)
+      call reg%add('ELEMENT_BEAM_THICKNESS_OFFSET', read_element_beam)
+      call reg%add('ELEMENT_BEAM_THICKNESS_ORIENTATION', read_element_beam)
+      call reg%add('ELEMENT_BEAM_OFFSET_ORIENTATION', read_element_beam)
+      call reg%add('ELEMENT_BEAM_THICKNESS_OFFSET_ORIENTATION', read_element_beam)
       call reg%add('ELEMENT_MASS', read_element_mass)
       call reg%add('ELEMENT_INERTIA', read_element_inertia)
    end subroutine register_beams
