@@ -9,6 +9,9 @@
       cantilever first period on three meshes (each twice as fine as the one before) against
       Euler-Bernoulli (shell_check.first_period, I/A = T**2/12): prints the errors and the
       observed orders log2(e_i/e_i+1); both orders in [LO, HI].
+  beam_check.py torsion OUT G J L I TOL
+      torsion pendulum: the kinetic energy (glstat) has its minima every pi/omega; omega
+      against sqrt(G J/(L I)) within TOL relative.
   beam_check.py rotation OUT OMEGA TOL_X TOL_E
       free beam spinning about y through the origin: every history node at radius r keeps
       |x| = r within TOL_X relative and turns by the angle omega t (x, z against
@@ -81,9 +84,34 @@ def rotation(argv):
     return ok and ie <= tol_e and rat <= tol_e
 
 
+def torsion(argv):
+    out, g, j, length, inertia, tol = argv[0], *map(float, argv[1:6])
+    rows = sorted(read_columns(out + '/glstat').items())
+    t = [r[0] for r in rows]
+    ke = [r[1]['kinetic'] for r in rows]
+    mins = []
+    for k in range(1, len(ke) - 1):
+        if ke[k] < ke[k - 1] and ke[k] <= ke[k + 1]:
+            # vertex of the parabola through the three samples (glstat lines fall on the
+            # first cycle past each interval: unequal spacing)
+            (a, fa), (b, fb), (c, fc) = (t[k - 1], ke[k - 1]), (t[k], ke[k]), (t[k + 1], ke[k + 1])
+            num = (b - a)**2*(fb - fc) - (b - c)**2*(fb - fa)
+            den = (b - a)*(fb - fc) - (b - c)*(fb - fa)
+            mins.append(b - 0.5*num/den if den != 0.0 else b)
+    if len(mins) < 2:
+        print('fewer than two minima of the kinetic energy')
+        return False
+    omega = math.pi/((mins[-1] - mins[0])/(len(mins) - 1))
+    ref = math.sqrt(g*j/(length*inertia))
+    err = abs(omega - ref)/ref
+    print(f'torsion: omega {omega:.6e} rad/ms, sqrt(G J/(L I)) {ref:.6e}, relative error '
+          f'{err:.2e} (tol {tol:.1e}; {len(mins)} minima of the kinetic energy)')
+    return err <= tol
+
+
 def main():
     cmd, argv = sys.argv[1], sys.argv[2:]
-    fn = {'wave': wave, 'order': order, 'rotation': rotation}.get(cmd)
+    fn = {'wave': wave, 'order': order, 'rotation': rotation, 'torsion': torsion}.get(cmd)
     if fn is None:
         raise SystemExit(__doc__)
     if not fn(argv):

@@ -11,6 +11,9 @@ height 1 along t = z: A = 2, ISS = 1/6, ITT = 2/3), length L = 100 along x.
   gen_beam_deck.py rotation [OUT]       a free beam of 4 elements spinning as a rigid body
       about the y axis through its centre (v = omega x r, VYR = omega): no bending, energy
       conserved
+  gen_beam_deck.py torsion [OUT]        a torsion pendulum: 4 beams clamped at x = 0 with an
+      *ELEMENT_INERTIA (100 kg mm**2, isotropic) at the tip, started with VXR = 0.01 x/L
+      rad/ms: omega = sqrt(G J/(L I))
   gen_beam_deck.py frame [OUT]          a plate of 4x4 BT shells carried by four beam legs
       (a beam-and-shell frame, shared nodes; the plate with stiffness hourglass IHQ 4,
       which keeps its energy: the default viscous one lets a BT plate on point supports
@@ -181,6 +184,30 @@ def frame():
     return s
 
 
+def torsion():
+    """a torsion pendulum: 4 beams (100 mm) clamped at x = 0, an *ELEMENT_INERTIA of
+    100 kg mm**2 (isotropic; with a mass) at the tip, started in the first mode's shape
+    (VXR = 0.01 x/L rad/ms)"""
+    n, L = 4, 100.0
+    nodes = line_nodes(n, L)
+    s = head('Torsion pendulum: a beam with an *ELEMENT_INERTIA at its tip', 120.0, 60.0,
+             0.1, [n + 1])
+    s += beam_part()
+    s += node_cards(nodes + [(n + 2, 0.0, 10.0, 0.0)])
+    s += beam_cards([(i + 1, i + 1, i + 2) for i in range(n)], n3=n + 2)
+    s += ['*ELEMENT_INERTIA', '$    EID     NID    CSID', f'{900:8d}{n + 1:8d}{0:8d}',
+          '$      IXX       IXY       IXZ       IYY       IYZ       IZZ      MASS',
+          f'{100.0:10.4f}{0.0:10.4f}{0.0:10.4f}{100.0:10.4f}{0.0:10.4f}{100.0:10.4f}'
+          f'{0.01:10.4f}']
+    s += ['*INITIAL_VELOCITY_NODE']        # the first mode's shape: VXR linear in x
+    for k, x, y, z in nodes[1:]:
+        s.append(f'{k:10d}{0.0:10.4g}{0.0:10.4g}{0.0:10.4g}{0.01*x/L:10.4g}{0.0:10.4g}'
+                 f'{0.0:10.4g}')
+    s += ['*BOUNDARY_SPC_NODE', '         1         0         1         1         1'
+          '         1         1         1', '*END']
+    return s
+
+
 def main(argv):
     kind = argv[1]
     if kind == 'cantilever':
@@ -191,6 +218,8 @@ def main(argv):
         lines, out = rotation(), argv[2:]
     elif kind == 'frame':
         lines, out = frame(), argv[2:]
+    elif kind == 'torsion':
+        lines, out = torsion(), argv[2:]
     else:
         raise SystemExit(__doc__)
     text = '\n'.join(lines) + '\n'
