@@ -85,12 +85,8 @@ contains
             'orientation)')
          s%nsm = nsm
          if (.not. c%ok()) exit
-         if (ic + 1 > blk%n) then
-            call c%fail_card(ic, 'missing card 2 (A ISS ITT J SA IST) of section '// &
-                             str(s%label))
+         if (.not. card_follows(c, blk, ic, 'A ISS ITT J SA IST) of section '//str(s%label))) &
             exit
-         end if
-         call c%seek(ic + 1)
          do k = 1, 6
             call c%real(trim(PNAME(k)), 0.0_wp, s%bprop(k))
          end do
@@ -240,12 +236,7 @@ contains
             call c%widths([8, 8, 16, 8])
          end if
          m = mass_in_t()
-         call c%int('EID', 0, m%eid)
-         if (c%ok() .and. m%eid <= 0) call c%fail('EID', 'element id must be > 0, got '// &
-                                                  str(m%eid))
-         call c%int('NID', 0, m%nid)
-         if (c%ok() .and. m%nid <= 0) call c%fail('NID', 'node id must be > 0, got '// &
-                                                  str(m%nid))
+         call read_eid_nid(c, m)
          call c%real('MASS', 0.0_wp, m%mass)
          if (c%ok() .and. m%mass < 0.0_wp) call c%fail('MASS', 'mass must be >= 0, got '// &
                                                        rstr(m%mass))
@@ -276,20 +267,11 @@ contains
          call c%widths([(merge(20, 8, blk%long), k = 1, 3)])
          m = mass_in_t()
          m%inertia = .true.
-         call c%int('EID', 0, m%eid)
-         if (c%ok() .and. m%eid <= 0) call c%fail('EID', 'element id must be > 0, got '// &
-                                                  str(m%eid))
-         call c%int('NID', 0, m%nid)
-         if (c%ok() .and. m%nid <= 0) call c%fail('NID', 'node id must be > 0, got '// &
-                                                  str(m%nid))
+         call read_eid_nid(c, m)
          call c%int('CSID', 0, m%csid, min=0)   ! axes of the tensor: none for an isotropic one
          if (.not. c%ok()) exit
-         if (ic + 1 > blk%n) then
-            call c%fail_card(ic, 'missing card 2 (IXX IXY IXZ IYY IYZ IZZ MASS) of element '// &
-                             str(m%eid))
-            exit
-         end if
-         call c%seek(ic + 1)
+         if (.not. card_follows(c, blk, ic, 'IXX IXY IXZ IYY IYZ IZZ MASS) of element '// &
+                                str(m%eid))) exit
          call c%widths([(merge(20, 10, blk%long), k = 1, 7)])
          do k = 1, 6
             call c%real(trim(IN(k)), 0.0_wp, m%ixx(k))
@@ -318,6 +300,33 @@ contains
       end do
       call c%done(error)
    end subroutine read_element_inertia
+
+   !> EID and NID (both > 0) of an *ELEMENT_MASS or *ELEMENT_INERTIA card into m.
+   subroutine read_eid_nid(c, m)
+      type(card_t), intent(inout) :: c
+      type(mass_in_t), intent(inout) :: m
+      call c%int('EID', 0, m%eid)
+      if (c%ok() .and. m%eid <= 0) call c%fail('EID', 'element id must be > 0, got '// &
+                                               str(m%eid))
+      call c%int('NID', 0, m%nid)
+      if (c%ok() .and. m%nid <= 0) call c%fail('NID', 'node id must be > 0, got '// &
+                                               str(m%nid))
+   end subroutine read_eid_nid
+
+   !> The cursor on card ic + 1 of blk, the second card of a record whose first is ic; .false.
+   !> (and the error 'missing card 2 (what') when the block ends first.
+   logical function card_follows(c, blk, ic, what) result(ok)
+      type(card_t), intent(inout) :: c
+      type(block_t), intent(in) :: blk
+      integer, intent(in) :: ic
+      character(*), intent(in) :: what
+      ok = ic + 1 <= blk%n
+      if (ok) then
+         call c%seek(ic + 1)
+      else
+         call c%fail_card(ic, 'missing card 2 ('//what)
+      end if
+   end function card_follows
 
    !> Append one point mass / inertia record.
    subroutine add_mass(inp, m)
