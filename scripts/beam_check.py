@@ -9,6 +9,9 @@
       cantilever first period on three meshes (each twice as fine as the one before) against
       Euler-Bernoulli (shell_check.first_period, I/A = T**2/12): prints the errors and the
       observed orders log2(e_i/e_i+1); both orders in [LO, HI].
+  beam_check.py tip OUT L T0 WREF UREF TOL_W TOL_U
+      large-deflection cantilever: the tip's (first history node) mean transverse
+      displacement w/L and shortening u/L over t >= T0 against the references, relative.
   beam_check.py torsion OUT G J L I TOL
       torsion pendulum: the kinetic energy (glstat) has its minima every pi/omega; omega
       against sqrt(G J/(L I)) within TOL relative.
@@ -109,9 +112,22 @@ def torsion(argv):
     return err <= tol
 
 
+def tip(argv):
+    out, length, t0, wref, uref, tol_w, tol_u = argv[0], *map(float, argv[1:7])
+    d = nodout(out)
+    rows = [r for r in d[sorted(d)[0]] if r[0] >= t0]
+    w = sum(r[1][2] for r in rows)/len(rows)/length
+    u = -sum(r[1][0] for r in rows)/len(rows)/length
+    ew, eu = abs(w - wref)/wref, abs(u - uref)/uref
+    print(f'tip (mean from t = {t0:g}): w/L {w:.6f} (reference {wref}, error {ew:.2e}, tol '
+          f'{tol_w:.1e}), u/L {u:.6f} (reference {uref}, error {eu:.2e}, tol {tol_u:.1e})')
+    return ew <= tol_w and eu <= tol_u
+
+
 def main():
     cmd, argv = sys.argv[1], sys.argv[2:]
-    fn = {'wave': wave, 'order': order, 'rotation': rotation, 'torsion': torsion}.get(cmd)
+    fn = {'wave': wave, 'order': order, 'rotation': rotation, 'torsion': torsion,
+          'tip': tip}.get(cmd)
     if fn is None:
         raise SystemExit(__doc__)
     if not fn(argv):

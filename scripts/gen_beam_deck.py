@@ -11,6 +11,9 @@ height 1 along t = z: A = 2, ISS = 1/6, ITT = 2/3), length L = 100 along x.
   gen_beam_deck.py rotation [OUT]       a free beam of 4 elements spinning as a rigid body
       about the y axis through its centre (v = omega x r, VYR = omega): no bending, energy
       conserved
+  gen_beam_deck.py elastica N [OUT]     the cantilever at rest under a tip force
+      P = E I/L**2 along z raised smoothly over 100 ms and held: large deflection (tip
+      rotation 0.46 rad; Mattiasson 1981's elliptic-integral solution)
   gen_beam_deck.py torsion [OUT]        a torsion pendulum: 4 beams clamped at x = 0 with an
       *ELEMENT_INERTIA (100 kg mm**2, isotropic) at the tip, started with VXR = 0.01 x/L
       rad/ms: omega = sqrt(G J/(L I))
@@ -184,6 +187,30 @@ def frame():
     return s
 
 
+def elastica(n):
+    """the cantilever of cantilever() at rest, a tip force P = E ISS/L**2 (P L**2/(E I) = 1)
+    along z raised smoothly (1 - cos) over 100 ms (8 first periods) and held to 200 ms"""
+    s = cantilever(n)
+    i = s.index('*INITIAL_VELOCITY_NODE')
+    j = [k for k, l in enumerate(s) if l.startswith('*BOUNDARY_SPC_NODE')][0]
+    tr, p = 100.0, E*ISS/100.0**2
+    curve = ['*DEFINE_CURVE', '         1']
+    for k in range(41):
+        t = tr*k/40
+        curve.append(f'{t:20.8f}{0.5*(1.0 - math.cos(math.pi*t/tr)):20.10f}')
+    curve.append(f'{1000.0:20.8f}{1.0:20.10f}')
+    load = ['*LOAD_NODE_POINT', '$     NID       DOF      LCID        SF',
+            f'{n + 1:10d}{3:10d}{1:10d}{p:10.4e}']
+    s = s[:i] + curve + load + s[j:]
+    s[2] = f'Cantilever beam, {n} resultant beams, tip force P L**2/(E I) = 1 (elastica)'
+    k = s.index('*CONTROL_TERMINATION')
+    s[k + 1] = f'{200.0:10.4f}'
+    for key in ('*DATABASE_GLSTAT', '*DATABASE_NODOUT'):
+        s[s.index(key) + 1] = f'{0.1:10.6f}'
+    s[s.index('*DATABASE_BINARY_D3PLOT') + 1] = f'{20.0:10.6f}'
+    return s
+
+
 def torsion():
     """a torsion pendulum: 4 beams (100 mm) clamped at x = 0, an *ELEMENT_INERTIA of
     100 kg mm**2 (isotropic; with a mass) at the tip, started in the first mode's shape
@@ -218,6 +245,8 @@ def main(argv):
         lines, out = rotation(), argv[2:]
     elif kind == 'frame':
         lines, out = frame(), argv[2:]
+    elif kind == 'elastica':
+        lines, out = elastica(int(argv[2])), argv[3:]
     elif kind == 'torsion':
         lines, out = torsion(), argv[2:]
     else:
