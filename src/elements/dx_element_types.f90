@@ -15,6 +15,10 @@
 !> and moments int x dV = V xbar, int x_i x_j dV = V/20 (sum_a x_ai x_aj + 16 xbar_i xbar_j)
 !> (the exact integral of a quadratic over a simplex: Zienkiewicz, Taylor & Zhu, The Finite
 !> Element Method: Its Basis and Fundamentals, 7th ed., 2013, eq. 6.29 / Table 6.3).
+!> Shell (ELFORM 2 of *SECTION_SHELL, 1002): 4 nodes, one face, elem_volume = the mid-surface
+!> area (the caller multiplies by the thickness). Beam (ELFORM 2 of *SECTION_BEAM, 2002):
+!> 2 nodes, no face, elem_volume = the length (the caller multiplies by the area), an XDMF
+!> Polyline. Both carry rotations (family_t%rot).
 !> Element error codes and the result record of one block pass live here too (dx_element),
 !> and the element block and the part the kernels work on (elem_block_t with its family state
 !> es, part_t): the model holds and re-exports them, so src/elements/ never imports src/model/
