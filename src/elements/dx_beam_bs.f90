@@ -13,7 +13,8 @@
 !> plus mean twist: a rigid rotation omega of the element turns the frame by exactly omega),
 !> then re-orthogonalised against e1; e3 = e1 x e2 (the t axis).
 !> Rates at the mid-step geometry x(n) - dt/2 v(n-1/2) and its frame (a rigid motion gives
-!> zero deformation rates exactly):
+!> a zero elongation rate exactly, and end-rotation rates of relative order (omega dt)**2/12:
+!> the chord of a turn against its tangent):
 !>   dL/dt = (v2 - v1).e1, dphi/dt = (w2 - w1).e1,
 !>   dtheta_s,a/dt = w_a.e2 + (v2 - v1).e3/L, dtheta_t,a/dt = w_a.e3 - (v2 - v1).e2/L;
 !> the angles are integrated over the step (element state), the elongation is total:
