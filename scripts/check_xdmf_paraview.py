@@ -7,10 +7,10 @@ Usage: xvfb-run -a -s "-screen 0 1280x1024x24" pvpython scripts/check_xdmf_parav
 Loads the XDMF with the XDMF3 reader, checks the number of time steps (against NSTATES, or
 against the nstates attribute of d3plot.h5 read with h5dump when NSTATES is not given), the
 mesh size and the expected point/cell arrays at every time step, that every cell of the first
-state has a positive volume (solids) or area (shells) (connectivity order), then colours the last state
-by von Mises stress and saves a PNG (default: next to the XDMF as d3plot_check.png). When the
-last state has eroded elements (cell field failed = 1), a Threshold on failed in [0, 0.5]
-(how a user hides them) must keep exactly the other cells.
+state has a positive volume (solids), area (shells) or length (beams) (connectivity order), then
+colours the last state by von Mises stress and saves a PNG (default: next to the XDMF as
+d3plot_check.png). When the last state has eroded elements (cell field failed = 1), a Threshold
+on failed in [0, 0.5] (how a user hides them) must keep exactly the other cells.
 Exit status 0 when all checks pass, 1 otherwise. Not part of `make test` (needs ParaView).
 """
 import os
@@ -69,13 +69,15 @@ def main():
         sizes.UpdatePipeline(times[0])
         vmin, vmax = sizes.CellData["Volume"].GetRange()
         print("cell volume range at first step:", (vmin, vmax))
-        # shells (quadrilaterals, degenerate-quad triangles) have an area and no volume:
-        # each cell must have one of them positive
+        # shells (quadrilaterals, degenerate-quad triangles) have an area and no volume,
+        # beams (polylines) a length: each cell must have one of them positive
         data = servermanager.Fetch(sizes)
         vol = data.GetCellData().GetArray("Volume")
         area = data.GetCellData().GetArray("Area")
+        length = data.GetCellData().GetArray("Length")
         bad = [i for i in range(data.GetNumberOfCells())
-               if not (vol.GetValue(i) > 0.0 or (area is not None and area.GetValue(i) > 0.0))]
+               if not (vol.GetValue(i) > 0.0 or (area is not None and area.GetValue(i) > 0.0)
+                       or (length is not None and length.GetValue(i) > 0.0))]
         if area is not None:
             print("cell area range at first step:", area.GetRange())
         if bad:

@@ -75,13 +75,13 @@ contains
                nodes = [node_index(inp, mp, m%id, m%src, 'NID', error)]
                if (allocated(error)) return
             end if
-            if (m%dof >= 5) then      ! rotations exist on shell nodes only
+            if (m%dof >= 5) then      ! rotations exist on shell and beam nodes only
                if (.not. allocated(rot)) call rotation_nodes(model, rot)
                do k = 1, size(nodes)
                   if (.not. rot(nodes(k))) then
                      call set_error(error, at(inp, m%src)//'field DOF: DOF '//str(m%dof)// &
                         ' (a rotation) on node '//str(model%node_label(nodes(k)))// &
-                        ', which carries no rotation (not a shell node)')
+                        ', which carries no rotation (not a shell or beam node)')
                      return
                   end if
                end do
@@ -113,7 +113,8 @@ contains
       end do
    end subroutine twod_fixes
 
-   !> rot(i): node i belongs to an element of a family with rotations (shells)
+   !> rot(i): node i belongs to an element of a family with rotations (shells, beams) or
+   !> has a rotary inertia of its own (*ELEMENT_INERTIA)
    subroutine rotation_nodes(model, rot)
       type(model_t), intent(in) :: model
       logical, allocatable, intent(out) :: rot(:)
@@ -128,6 +129,7 @@ contains
             rot(model%blocks(b)%conn(:, i)) = .true.
          end do
       end do
+      if (allocated(model%node_rinert)) rot = rot .or. model%node_rinert > 0.0_wp
    end subroutine rotation_nodes
 
    pure function unit_axis(d) result(a)
@@ -220,7 +222,7 @@ contains
             if (.not. allocated(rot)) call rotation_nodes(model, rot)
             if (.not. rot(k)) then
                call set_error(error, at(inp, q%src)//'field VXR: node '//str(q%id)// &
-                  ' carries no rotation (not a shell node): VXR, VYR, VZR must be 0')
+                  ' carries no rotation (not a shell or beam node): VXR, VYR, VZR must be 0')
                return
             end if
             if (.not. allocated(model%w0)) then

@@ -18,6 +18,10 @@ module dx_model_build
    use dx_model_input, only: model_input_t, origin_t
    use dx_element_types, only: ES_THK, shell_area, etype_of_shell_elform
    use dx_build_twod, only: part_dim, check_dimension, twod_element
+   use dx_element_types, only: ETYPE_SHELL_BT, ES_THK, shell_area, ES_BEAM, etype_of_beam_elform
+   use dx_beam_build, only: beam_part, beam_index, beam_element, build_point_masses, &
+                            section_kind, KIND_NAMES, KIND_CARDS, BEAM_NDAT
+   use dx_beam_bs, only: beam_bs_init
    use dx_label_map, only: label_map_t
    use dx_build_common, only: maps_t, at, at_line, set_nodes, curve_index, node_index, &
                               dense_segments
@@ -40,6 +44,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(maps_t) :: mp
       character(:), allocatable :: deck0
+      integer, allocatable :: bof(:)
+      call beam_index(inp, bof)
       deck0 = 'deck'
       if (size(inp%files) > 0) deck0 = inp%files(1)%s
       if (allocated(inp%title)) model%title = inp%title
@@ -59,6 +65,8 @@ contains
       call build_parts(inp, model, mp, error)
       if (allocated(error)) return
       call build_elements(inp, model, mp, error)
+      if (allocated(error)) return
+      call build_point_masses(inp, model, mp, bof, error)   ! *ELEMENT_MASS, _INERTIA, NSM
       if (allocated(error)) return
       call build_sets(inp, model, mp, error)
       if (allocated(error)) return
@@ -182,7 +190,7 @@ contains
             p%isec = mp%sec%get(p%secid)
             if (p%isec == 0) then
                call set_error(error, w//'part '//str(p%label)//': field SECID: section '// &
-                              str(p%secid)//' is not defined (*SECTION_SOLID or *SECTION_SHELL)')
+                              str(p%secid)//' is not defined (*SECTION_SOLID, *SECTION_SHELL or *SECTION_BEAM)')
                return
             end if
             p%imat = mp%mat%get(p%mid)
@@ -221,6 +229,10 @@ contains
             end if
             if (model%sections(p%isec)%shell) then
                call shell_part(inp, model, p, w, error)
+               if (allocated(error)) return
+            end if
+            if (model%sections(p%isec)%beam) then
+               call beam_part(inp, model, p, w, error)
                if (allocated(error)) return
             end if
             p%ihq = c%ihq
@@ -342,8 +354,10 @@ contains
       type(model_t), intent(inout) :: model
       type(maps_t), intent(inout) :: mp
       type(error_t), allocatable, intent(out) :: error
-      integer :: ne, e, k, j, old, ip, nb, ib, nel, pos, nip, nhv, etype, nen, nshw
+      integer :: ne, e, k, j, old, ip, nb, ib, nel, pos, nip, nhv, etype, nen, nshw, kc2
       logical :: shcard
+      integer, allocatable :: bof(:)
+      real(wp), allocatable :: bdat(:, :)
       real(wp), allocatable :: thk(:)
       integer, allocatable :: conn(:, :), npart(:), order(:), start(:), fill(:), etyp(:), grp(:)
       type(family_t) :: fam
@@ -365,9 +379,18 @@ contains
       end if
       model%elem_label = inp%elem_label(1:ne)
       call mp%elem%init(ne)
+      call beam_index(inp, bof)       ! beams: their records and set-up data
+      if (allocated(bof)) allocate(bdat(BEAM_NDAT, ne))
       do e = 1, ne
-         shcard = inp%elem_conn(SHELL_MARK, e) == 0
-         if (shcard) then
+         kc2 = 0                       ! the card's kind: 0 solid, 1 shell, 2 beam
+         if (allocated(bof)) then
+            if (bof(e) > 0) kc2 = 2
+         end if
+         shcard = inp%elem_conn(SHELL_MARK, e) == 0 .and. kc2 == 0
+         if (shcard) kc2 = 1
+         if (kc2 == 2) then
+            w = at_line(inp, inp%elem_src(:, e), 'ELEMENT_BEAM')
+         else if (shcard) then
             w = at_line(inp, inp%elem_src(:, e), 'ELEMENT_SHELL')
          else
             w = at_line(inp, inp%elem_src(:, e), 'ELEMENT_SOLID')
@@ -386,14 +409,21 @@ contains
                               str(inp%elem_pid(e))//' is not defined (*PART)')
                return
             end if
-            if (model%sections(model%parts(model%elem_part(e))%isec)%shell .neqv. shcard) then
+            j = section_kind(model%sections(model%parts(model%elem_part(e))%isec))
+            if (j /= kc2) then
                call set_error(error, w//'element '//str(lab)//': field PID: part '// &
                   str(inp%elem_pid(e))//' has section '// &
                   str(model%sections(model%parts(model%elem_part(e))%isec)%label)//', a '// &
-                  trim(merge('*SECTION_SHELL', '*SECTION_SOLID', .not. shcard))//' (an '// &
-                  trim(merge('*ELEMENT_SHELL', '*ELEMENT_SOLID', shcard))//' needs a '// &
-                  trim(merge('*SECTION_SHELL', '*SECTION_SOLID', shcard))//')')
+                  trim(KIND_NAMES(j))//' (an '//trim(KIND_CARDS(kc2))//' needs a '// &
+                  trim(KIND_NAMES(kc2))//')')
                return
+            end if
+            if (kc2 == 2) then
+               call beam_element(inp, model, mp, e, bof(e), w, conn(:, e), vol(e), &
+                                 bdat(:, e), error)
+               if (allocated(error)) return
+               etyp(e) = etype_of_section(model%parts(model%elem_part(e))%isec)
+               cycle
             end if
             if (shcard) then
                call shell_element(e, lab, w, error)
@@ -572,6 +602,12 @@ contains
                      call b%es_add(ES_THK, fam%es_ncol(ES_THK))
                      b%es(:, b%esc(ES_THK)) = thk(b%elem)
                   end if
+                  if (fam%es_ncol(ES_BEAM) > 0) then  ! beams: frame, angles, section
+                     call b%es_add(ES_BEAM, fam%es_ncol(ES_BEAM))
+                     do k = 1, nel
+                        call beam_bs_init(b, k, bdat(1:3, b%elem(k)), bdat(4:8, b%elem(k)))
+                     end do
+                  end if
                   do k = 1, nel
                      model%elem_block(b%elem(k)) = ib
                      model%elem_pos(b%elem(k)) = k
@@ -663,6 +699,8 @@ contains
          integer, intent(in) :: isec
          if (model%sections(isec)%shell) then
             etype_of_section = etype_of_shell_elform(model%sections(isec)%elform)
+         else if (model%sections(isec)%beam) then
+            etype_of_section = etype_of_beam_elform(model%sections(isec)%elform)
          else
             etype_of_section = etype_of_elform(model%sections(isec)%elform)
          end if

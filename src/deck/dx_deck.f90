@@ -24,6 +24,7 @@ module dx_deck
    use dx_read_emc, only: register_emc, emc_finish
    use dx_read_implicit, only: register_implicit
    use dx_read_output, only: register_output
+   use dx_read_beams, only: register_beams
    use dx_model_input, only: model_input_t, input_init, input_finish
    implicit none
    private
@@ -36,6 +37,7 @@ contains
       type(registry_t) :: reg
       call register_nodes_elements(reg)
       call register_shells(reg)
+      call register_beams(reg)
       call register_materials(reg)
       call register_erosion(reg)
       call register_controls(reg)

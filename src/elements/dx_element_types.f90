@@ -18,6 +18,10 @@
 !> 2D quadrilaterals (*SECTION_SHELL ELFORM 13, 14, 15; dx_quad2d): exact area (half the cross
 !> product of the diagonals) and, axisymmetric, the exact volume per radian int r dA (Green's
 !> theorem over the straight edges); time-step length area / diameter (dx_quad2d).
+!> Shell (ELFORM 2 of *SECTION_SHELL, 1002): 4 nodes, one face, elem_volume = the mid-surface
+!> area (the caller multiplies by the thickness). Beam (ELFORM 2 of *SECTION_BEAM, 2002):
+!> 2 nodes, no face, elem_volume = the length (the caller multiplies by the area), an XDMF
+!> Polyline. Both carry rotations (family_t%rot).
 !> Element error codes and the result record of one block pass live here too (dx_element),
 !> and the element block and the part the kernels work on (elem_block_t with its family state
 !> es, part_t): the model holds and re-exports them, so src/elements/ never imports src/model/
@@ -35,6 +39,7 @@ module dx_element_types
    public :: etype_of_shell_elform, ES_THK, shell_area, shell_frame, shell_stress_global
    public :: ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS, quad2d_area, &
              quad2d_rvol
+   public :: ETYPE_BEAM_BS, etype_of_beam_elform, ES_BEAM, elem_stress_global
    public :: MAX_NEN, MAX_FACE_NODES, MAX_FACES
    public :: ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, etype_of_elform, ETYPES
    public :: solid_shape, elem_quality, ASPECT_WARN, WARP_WARN
@@ -54,9 +59,11 @@ module dx_element_types
    !> volume-weighted (15) axisymmetric quadrilaterals, x = r, y = z (the axis)
    integer, parameter :: ETYPE_QUAD2D_PS = 1013, ETYPE_QUAD2D_AW = 1014, ETYPE_QUAD2D_VW = 1015
    integer, parameter :: ETYPE_QUAD2D_PSS = 1012   !< plane stress (ELFORM 12), thickness t
+   !> beams: 2000 + the *SECTION_BEAM ELFORM
+   integer, parameter :: ETYPE_BEAM_BS = 2002    !< Belytschko-Schwer resultant beam (dx_beam_bs)
    !> every element type, one per family first (lookups by nen or XDMF code take the first)
-   integer, parameter :: ETYPES(4) = [ETYPE_HEX8_1PT, ETYPE_TET4, ETYPE_SHELL_BT, &
-                                      ETYPE_HEX8_SRI]
+   integer, parameter :: ETYPES(5) = [ETYPE_HEX8_1PT, ETYPE_TET4, ETYPE_SHELL_BT, &
+                                      ETYPE_HEX8_SRI, ETYPE_BEAM_BS]
    integer, parameter :: MAX_NEN = 8          !< most nodes of any family (*ELEMENT_SOLID card)
    integer, parameter :: MAX_FACE_NODES = 4   !< most nodes of a face (a segment)
    integer, parameter :: MAX_FACES = 6        !< most faces of a family
@@ -85,12 +92,18 @@ module dx_element_types
    !> erosion: the total strain (6: xx yy zz xy yz zx, tensor shear), the sum of the
    !> strain increments turned with the material (parts with a strain criterion only)
    integer, parameter :: ES_EPS = 6
-   integer, parameter :: MAX_ES = 6
+   !> beams (dx_beam_bs): the transverse axis e2 (3), the deformational angles (5: twist,
+   !> end rotations about e2 at N1, N2, about e3 at N1, N2), the resultants (6: N, T, M2 at
+   !> N1, N2, M3 at N1, N2) and the element's section A, ISS, ITT, J, SA (5); beams have
+   !> ES_WORK too (the centred work of the resultants)
+   integer, parameter :: ES_BEAM = 7
+   integer, parameter :: MAX_ES = 7
    !> restart dataset of each slot (the columns in order, flat; ES_DUMP: phim is derived at
    !> start, not dumped); dumps write the slots in id order
    character(8), parameter :: ES_NAMES(MAX_ES) = [character(8) :: 'hgs', 'ework', 'phim', &
-                                                  'shthk', 'damage', 'strain']
-   logical, parameter :: ES_DUMP(MAX_ES) = [.true., .true., .false., .true., .true., .true.]
+                                                  'shthk', 'damage', 'strain', 'beam']
+   logical, parameter :: ES_DUMP(MAX_ES) = [.true., .true., .false., .true., .true., .true., &
+                                            .true.]
    !> column offsets inside ES_WORK (dx_hex8's centred_work: q, q B.v, dt, sigma:D V of the
    !> last pass)
    integer, parameter :: WORK_Q = 0, WORK_QBV = 1, WORK_DT = 2, WORK_PN = 3
@@ -109,7 +122,7 @@ module dx_element_types
       real(wp) :: mass_share = 0.0_wp      !< lumped mass of each node: rho V0 * mass_share
       integer :: weight = 1                !< partition cost weight (measured ns/element-cycle)
       integer :: es_ncol(MAX_ES) = 0       !< columns of each family-state slot (0: none)
-      logical :: rot = .false.             !< nodes carry rotations (shells)
+      logical :: rot = .false.             !< nodes carry rotations (shells, beams)
       logical :: twod = .false.            !< a 2D family: x-y plane, the z DOF fixed
       logical :: axisym = .false.          !< 2D axisymmetric: x = r >= 0, volumes per radian
       !> the kernel scatters its forces element-major (do i; do k), not corner-major: the
@@ -162,6 +175,9 @@ module dx_element_types
       logical :: lobatto = .false.
       integer :: istupd = 0
       type(erosion_t) :: ero      !< *MAT_ADD_EROSION of the part's material (dx_erosion)
+      !> beam parts (*SECTION_BEAM ELFORM 2): A, ISS, ITT, J, SA (SA = 0: no shear
+      !> deformation, Euler-Bernoulli)
+      real(wp) :: bsec(5) = 0.0_wp
    end type part_t
 
    !> A group of at most nv_chunk elements of one part and one formulation.
@@ -218,7 +234,7 @@ contains
          f%edges(:, 1:12) = HEX_EDGES
          f%mass_share = 0.125_wp
          f%hgmodes = 4
-         f%es_ncol = [3*f%hgmodes, 4, 1, 0, 1, 6]
+         f%es_ncol = [3*f%hgmodes, 4, 1, 0, 1, 6, 0]
          f%nip = 1; f%weight = 1
          ! ELFORM 2 measured at about 8x ELFORM 1 per element-cycle (docs/history.md,
          ! "Partition weights")
@@ -231,7 +247,7 @@ contains
          f%faces(:, 1:4) = TET_FACES
          f%edges(:, 1:6) = TET_EDGES
          f%mass_share = 0.25_wp
-         f%es_ncol = [0, 4, 0, 0, 1, 6]
+         f%es_ncol = [0, 4, 0, 0, 1, 6, 0]
          f%nip = 1; f%weight = 1
       case (ETYPE_SHELL_BT)
          ! one face (the mid-surface, normal by the right-hand rule on N1..N4; a triangle
@@ -242,7 +258,7 @@ contains
          f%edges(:, 1:4) = QUAD_EDGES
          f%mass_share = 0.25_wp
          f%hgmodes = 5
-         f%es_ncol = [0, 0, 0, 1 + 8, 0, 0]
+         f%es_ncol = [0, 0, 0, 1 + 8, 0, 0, 0]
          ! weight: 828 against the hexahedron's 263 ns of CPU per element-cycle (NIP 3,
          ! elastic; 100x80 plate and 20x20x20 cube, 300 cycles less 1, three runs each;
          ! docs/history.md, "Shells under MPI")
@@ -257,11 +273,22 @@ contains
          f%edges(:, 1:4) = QUAD_EDGES
          f%mass_share = 0.25_wp
          f%hgmodes = 1
-         f%es_ncol = [2*f%hgmodes, 4, 0, 0, 0, 0]
+         f%es_ncol = [2*f%hgmodes, 4, 0, 0, 0, 0, 0]
          f%nip = 1; f%weight = 1
          f%twod = .true.
          f%axisym = etype == ETYPE_QUAD2D_AW .or. etype == ETYPE_QUAD2D_VW
          if (etype == ETYPE_QUAD2D_PSS) f%es_ncol(ES_THK) = 1     ! its thickness
+      case (ETYPE_BEAM_BS)
+         ! a line N1-N2 (the orientation node N3 is set-up data, not a node of the cell);
+         ! no face, one edge; an XDMF Polyline of 2 nodes (written in a Mixed topology,
+         ! which names the node count of a polyline cell)
+         f%name = 'line2'; f%xdmf = 'Polyline'; f%xdmf_code = 2
+         f%nen = 2; f%nfaces = 0; f%nedges = 1
+         f%edges(:, 1) = [1, 2]
+         f%mass_share = 0.5_wp
+         f%es_ncol = [0, 4, 0, 0, 0, 0, 19]
+         f%nip = 1; f%weight = 1
+         f%rot = .true.
       end select
    end function element_family
 
@@ -322,6 +349,32 @@ contains
       end do
       v = v/6.0_wp
    end function quad2d_rvol
+   !> Element type of a *SECTION_BEAM ELFORM (0: not supported).
+   pure integer function etype_of_beam_elform(elform) result(etype)
+      integer, intent(in) :: elform
+      etype = 0
+      if (elform == 2) etype = ETYPE_BEAM_BS
+   end function etype_of_beam_elform
+
+   !> An element's plot stress s (xx yy zz xy yz zx, held in the element's own frame by
+   !> the families with rotations) in global axes: the shell's co-rotational frame, the
+   !> beam's axial stress N/A along its axis e1 (s(1)); solids are already global.
+   pure subroutine elem_stress_global(etype, xe, s)
+      integer, intent(in) :: etype
+      real(wp), intent(in) :: xe(:, :)
+      real(wp), intent(inout) :: s(6)
+      real(wp) :: e1(3), l, sa
+      select case (etype)
+      case (ETYPE_SHELL_BT)
+         call shell_stress_global(xe(:, 1:4), s)
+      case (ETYPE_BEAM_BS)
+         e1 = xe(:, 2) - xe(:, 1)
+         l = norm2(e1)
+         if (l > 0.0_wp) e1 = e1/l
+         sa = s(1)
+         s = sa*[e1(1)**2, e1(2)**2, e1(3)**2, e1(1)*e1(2), e1(2)*e1(3), e1(3)*e1(1)]
+      end select
+   end subroutine elem_stress_global
 
    !> Mid-surface area of a shell with nodes xe(3, 4) (a triangle repeats N3): half the
    !> norm of the cross product of the diagonals (exact for a plane quadrilateral).
@@ -434,6 +487,8 @@ contains
          vol = quad2d_area(xe)
       case (ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW)   ! per radian
          vol = quad2d_rvol(xe)
+      case (ETYPE_BEAM_BS)       ! the length: the caller multiplies by the section area
+         vol = norm2(xe(:, 2) - xe(:, 1))
       case default
          vol = hex_volume(xe)
       end select
@@ -448,8 +503,9 @@ contains
       select case (etype)
       case (ETYPE_TET4)
          call tet_moments(xe, xref, vol, m1, m2)
-      case (ETYPE_SHELL_BT, ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS)
-         ! rigid shells and rigid 2D parts are refused at build: no moments yet
+      case (ETYPE_SHELL_BT, ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS, &
+            ETYPE_BEAM_BS)
+         ! rigid shells, rigid 2D parts and beams are refused at build: no moments yet
          vol = 0.0_wp; m1 = 0.0_wp; m2 = 0.0_wp
       case default
          call hex_moments(xe, xref, vol, m1, m2)
@@ -474,6 +530,10 @@ contains
             amax = max(amax, norm2(xe(1:2, f%edges(2, k)) - xe(1:2, f%edges(1, k))))
          end do
          l = quad2d_area(xe)/amax
+         return
+      end if
+      if (etype == ETYPE_BEAM_BS) then     ! the beam's length (its axial wave step L/c)
+         l = norm2(xe(:, 2) - xe(:, 1))
          return
       end if
       if (etype == ETYPE_SHELL_BT) then    ! the shell's length (dx_shell_bt, ISDO = 0)

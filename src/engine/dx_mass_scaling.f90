@@ -72,6 +72,8 @@ contains
             end do
          end associate
       end do
+      ! *ELEMENT_MASS, *ELEMENT_INERTIA, beams' NSM (dx_beam_build)
+      if (allocated(model%node_mass)) model%mass = model%mass + model%node_mass
    end subroutine lump_mass
 
    !> With mass scaling: the elements' added mass (zero; a restart restores it).

@@ -10,7 +10,7 @@ module dx_par_engine_setup
    use, intrinsic :: iso_fortran_env, only: int64
    use dx_kinds, only: wp, nv_chunk
    use dx_timer, only: current_memory_kb
-   use dx_error, only: error_t
+   use dx_error, only: error_t, set_error, EXIT_INPUT
    use dx_strings, only: str, rstr
    use dx_log, only: log_info, log_set_quiet
    use dx_model, only: model_t, elem_block_t, ES_HGS, ES_PHIM
@@ -19,7 +19,7 @@ module dx_par_engine_setup
    use dx_sort, only: sort_index
    use dx_par_model, only: par_model_build
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report, &
-                           has_shells
+                           has_shells, has_beams
    use dx_rank_file, only: read_rank_file, write_rank_file, rank_file_name, deck_content_hash
    use dx_io_sys, only: sys_mkdir_p
    use dx_energy_sums, only: constrained_nodes, part_mass_map
@@ -309,6 +309,8 @@ contains
       if (model%erodes .and. allocated(model%contact)) what = '*CONTACT_ with element '// &
          'erosion (*MAT_ADD_EROSION or *CONTROL_TIMESTEP ERODE = 1: the contact surfaces '// &
          'after erosion are formed on the serial model only)'
+      if (has_beams(model)) what = '*SECTION_BEAM (beam elements: their rotational '// &
+         'degrees of freedom are not yet under MPI)'
       if (len(what) > 0) call set_error(error, model%deck_file//': '//what// &
          ' is not supported in an MPI run yet; run this deck serially (without mpirun)', &
          EXIT_INPUT)

@@ -17,6 +17,10 @@ module dx_plot_cells
    public :: cell_topo_t, cells_width, cell_column, model_cells, cells_topology, write_cells, &
              read_cells
 
+   !> XDMF cell code of a polyline: in a Mixed topology its code is followed by its node
+   !> count (XDMF Model and Format, "Topology", Mixed)
+   integer, parameter :: POLYLINE = 2
+
    !> what the XDMF file says of the cells
    type :: cell_topo_t
       character(:), allocatable :: dset    !< /mesh/<name>
@@ -45,9 +49,12 @@ contains
             else if (w /= f%nen .or. code /= f%xdmf_code) then
                w = MAX_NEN + 1
             end if
+            if (f%xdmf_code == POLYLINE) code = POLYLINE
          end associate
       end do
       if (w == 0) w = f0%nen
+      ! a polyline (beams) names its node count in a Mixed topology: always Mixed
+      if (code == POLYLINE) w = MAX_NEN + 1
       ! one family that is not the first of ETYPES with its node count (the quadrilateral
       ! shell beside the tetrahedron): the Mixed topology names its cell type
       if (w <= MAX_NEN) then
@@ -70,6 +77,11 @@ contains
          col = -1
          f = element_family(etype)
          col(1) = f%xdmf_code
+         if (f%xdmf_code == POLYLINE) then    ! code, node count, nodes
+            col(2) = n
+            col(3:n + 2) = nodes0
+            return
+         end if
          col(2:n + 1) = nodes0
       else
          col = nodes0(1:w)
@@ -158,6 +170,7 @@ contains
                   fam = element_family(ETYPES(k))
                   if (fam%xdmf_code == nint(buf(p))) then
                      n = fam%nen
+                     if (fam%xdmf_code == POLYLINE) n = n + 1   ! the node count first
                      exit
                   end if
                end do

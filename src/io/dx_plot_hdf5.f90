@@ -16,7 +16,7 @@
 module dx_plot_hdf5
    use dx_kinds, only: wp
    use dx_error, only: error_t
-   use dx_model, only: model_t, elem_block_t, family_t, element_family, shell_stress_global, &
+   use dx_model, only: model_t, elem_block_t, family_t, element_family, elem_stress_global, &
                        ES_DMG
    use dx_h5, only: h5_file_t, h5_create, h5_close, h5_flush, h5_create_group, h5_write, &
                     h5_write_attr, h5_create_extendible, h5_append, h5_open_read, h5_read, &
@@ -368,8 +368,10 @@ contains
                   failed(e) = real(fl, wp)
                   if (present(damage)) damage(e) = element_damage(blk, i, kd)
                   ! shells: the mean over the laminae (the membrane stress N/t) is held
-                  ! in the element's co-rotational frame; the plot shows it in global axes
-                  if (rot) call shell_stress_global(model%x(:, blk%conn(:, i)), stress(:, e))
+                  ! in the element's co-rotational frame; beams: the axial stress N/A; the
+                  ! plot shows them in global axes
+                  if (rot) call elem_stress_global(blk%etype, model%x(:, blk%conn(:, i)), &
+                                                   stress(:, e))
                end do
             end associate
          end do

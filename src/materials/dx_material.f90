@@ -59,6 +59,8 @@ module dx_material
       procedure :: read_cards => default_read_cards  !< its *MAT_ cards, through the card cursor
       procedure :: reads_curves => default_reads_curves !< setup must wait for the curves
       procedure :: takes_eos => default_takes_eos    !< may carry an equation of state
+      procedure :: needs_eos => default_needs_eos    !< must carry one (EOSID > 0) if it may
+      procedure :: eos_ready => default_eos_ready    !< derive data from the attached EOS
       procedure :: tangent => fd_tangent             !< consistent tangent of one update
       procedure :: update_plane_stress => default_update_plane_stress !< lamina update, sigma33 = 0
    end type material_t
@@ -128,6 +130,21 @@ contains
       default_takes_eos = .false.
       if (.false.) default_takes_eos = self%label < 0
    end function default_takes_eos
+
+   !> Whether a model that may carry an equation of state must have one (default: yes; LS-DYNA's
+   !> *MAT_JOHNSON_COOK falls back to the elastic bulk modulus when EOSID = 0).
+   logical function default_needs_eos(self)
+      class(material_t), intent(in) :: self
+      default_needs_eos = self%takes_eos()
+   end function default_needs_eos
+
+   !> Called once the part has attached the equation of state (self%eos allocated, its rho0
+   !> set): models that derive data from it (a cold-energy curve) do it here (default: none).
+   subroutine default_eos_ready(self, error)
+      class(material_t), intent(inout) :: self
+      type(error_t), allocatable, intent(out) :: error
+      if (.false.) self%label = 0
+   end subroutine default_eos_ready
 
    !> Finite-difference step for the tangent at strain increment deps: h = eps**(1/3) times the
    !> strain scale max(|deps|, 1e-4), the step that balances the round-off error of a central

@@ -13,6 +13,7 @@ module dx_model
    use dx_run_state, only: run_state_t, restart_ctrl_t
    use dx_emc_types, only: emc_system_t
    use dx_element_types, only: elem_quality, ASPECT_WARN, WARP_WARN, shell_stress_global
+   use dx_element_types, only: elem_stress_global
    use dx_element_types, only: elem_block_t, part_t, family_t, element_family, elem_volume, elem_moments, elem_length, &
                                etype_of_elform, solid_shape, MAX_NEN, MAX_FACE_NODES, &
                                MAX_FACES, ETYPE_DEFAULT, ETYPES, ES_WORK, ES_HGS, ES_PHIM, &
@@ -27,7 +28,7 @@ module dx_model
    public :: elem_block_t, part_t
    !> the element-family table (dx_element_types): what every consumer asks of a block's
    !> element type (nodes, faces, edges, volume, moments, lumped mass, plot cell, weight)
-   public :: elem_quality, ASPECT_WARN, WARP_WARN, shell_stress_global
+   public :: elem_quality, ASPECT_WARN, WARP_WARN, shell_stress_global, elem_stress_global
    public :: family_t, element_family, elem_volume, elem_moments, elem_length, etype_of_elform, &
              solid_shape, MAX_NEN, MAX_FACE_NODES, MAX_FACES, ETYPES
    !> the family-state slots of a block's es array (dx_element_types)
@@ -46,6 +47,10 @@ module dx_model
       integer :: nip = 2               !< through-thickness points
       integer :: intgrd = 0            !< 0 Gauss, 1 Lobatto (*CONTROL_SHELL INTGRD)
       real(wp) :: t(4) = 0.0_wp        !< nodal thicknesses T1..T4
+      !> *SECTION_BEAM (beam = .true.; dx_read_beams): ELFORM 2's A, ISS, ITT, J, SA, IST
+      logical :: beam = .false.
+      real(wp) :: bprop(6) = 0.0_wp
+      real(wp) :: nsm = 0.0_wp         !< non-structural mass per length (beams)
    end type section_t
 
    !> *HOURGLASS (a negative or zero value means: take the *CONTROL_* default)
@@ -276,6 +281,10 @@ module dx_model
       real(wp), allocatable :: w(:, :)         !< (3, nn) angular velocity (global axes)
       real(wp), allocatable :: mom(:, :)       !< (3, nn) moment
       real(wp), allocatable :: rinert(:)       !< (nn) lumped rotary inertia
+      !> *ELEMENT_MASS and *ELEMENT_INERTIA (allocated only when the deck has them): the
+      !> point mass and rotary inertia they add at each node (lump_mass, init_state)
+      real(wp), allocatable :: node_mass(:)    !< (nn)
+      real(wp), allocatable :: node_rinert(:)  !< (nn)
       real(wp) :: time = 0.0_wp
       real(wp) :: dt = 0.0_wp
       integer :: cycle = 0

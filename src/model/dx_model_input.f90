@@ -21,7 +21,8 @@ module dx_model_input
    integer, parameter, public :: SOLID_CARD_NODES = 8
    public :: model_input_t, string_t, origin_t, label_list_t, segment_list_t, spc_in_t, &
              motion_in_t, ivel_in_t, out_note_t, set_step_in_t, set_gen_in_t, load_node_in_t, load_seg_in_t, wall_in_t, &
-             IVEL_SET, IVEL_NODE, IVEL_GEN, add_node, add_element, origin, input_init
+             IVEL_SET, IVEL_NODE, IVEL_GEN, add_node, add_element, origin, input_init, &
+             beam_in_t, mass_in_t
 
    integer, parameter :: IVEL_SET = 1   !< *INITIAL_VELOCITY
    integer, parameter :: IVEL_NODE = 2  !< *INITIAL_VELOCITY_NODE
@@ -125,6 +126,27 @@ module dx_model_input
       type(origin_t) :: src
    end type wall_in_t
 
+   !> one *ELEMENT_BEAM card (dx_read_beams): the element itself is on the element list
+   !> (index e, N1 N2 in its first two node fields); the orientation node N3 (0: none) or
+   !> the _ORIENTATION vector v (has_v), and the _THICKNESS section values (0: the section's)
+   type :: beam_in_t
+      integer :: e = 0
+      integer :: n3 = 0
+      logical :: has_v = .false.
+      real(wp) :: v(3) = 0.0_wp
+      real(wp) :: parm(5) = 0.0_wp
+   end type beam_in_t
+
+   !> *ELEMENT_MASS (inertia = .false.) or *ELEMENT_INERTIA card: the point mass and the
+   !> inertia tensor IXX IXY IXZ IYY IYZ IZZ at node nid
+   type :: mass_in_t
+      integer :: eid = 0, nid = 0, pid = 0, csid = 0
+      logical :: inertia = .false.
+      real(wp) :: mass = 0.0_wp
+      real(wp) :: ixx(6) = 0.0_wp
+      type(origin_t) :: src
+   end type mass_in_t
+
    type :: model_input_t
       type(string_t), allocatable :: files(:)      !< deck file names (index = ifile)
       character(:), allocatable :: title
@@ -142,6 +164,11 @@ module dx_model_input
       !> (4, :) nodal thicknesses of *ELEMENT_SHELL_THICKNESS (0: the section's); allocated
       !> once a shell card is read (dx_read_shells), a shell card has N5..N8 = 0
       real(wp), allocatable :: elem_thk(:, :)
+      !> *ELEMENT_BEAM extras (allocated once a beam card is read; nbeam used)
+      integer :: nbeam = 0
+      type(beam_in_t), allocatable :: beams(:)
+      !> *ELEMENT_MASS, *ELEMENT_INERTIA (allocated once one is read)
+      type(mass_in_t), allocatable :: pmass(:)
       ! --- definitions (parts: grown by input_add_part, cut to nparts by input_finish)
       integer :: nparts = 0
       type(part_t), allocatable :: parts(:)

@@ -71,8 +71,9 @@ contains
       model%f = 0.0_wp
       call ms_init(model)      ! mass scaling: the elements' added mass (none yet)
       call lump_mass(model)    ! rho V0 times the family's share per node
-      ! rotational degrees of freedom: only when a block's family has them (shells)
-      rot = .false.
+      ! rotational degrees of freedom: only when a block's family has them (shells, beams)
+      ! or a node has a rotary inertia of its own (*ELEMENT_INERTIA)
+      rot = allocated(model%node_rinert)
       do b = 1, size(model%blocks)
          fam = element_family(model%blocks(b)%etype)
          rot = rot .or. fam%rot
@@ -89,6 +90,7 @@ contains
                                            model%ctrl%rotascl, model%rinert)
             end associate
          end do
+         if (allocated(model%node_rinert)) model%rinert = model%rinert + model%node_rinert
       end if
       model%time = 0.0_wp
       model%cycle = 0

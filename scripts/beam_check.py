@@ -1,0 +1,139 @@
+#!/usr/bin/python3
+"""Checks of the beam regression cases (tests/regression/beam_*/check).
+
+  beam_check.py wave OUT E RHO V0 TOL X1 [X2 ...]
+      axial bar pushed at x = 0 with velocity V0: the time at which the history node at x
+      first reaches V0/2 (linear interpolation between nodout lines) against x/c,
+      c = sqrt(E/RHO); |t - x/c| <= TOL*x/c for every X (the nodes in nodout order).
+  beam_check.py order OUT1 OUT2 OUT3 L T E RHO LO HI
+      cantilever first period on three meshes (each twice as fine as the one before) against
+      Euler-Bernoulli (shell_check.first_period, I/A = T**2/12): prints the errors and the
+      observed orders log2(e_i/e_i+1); both orders in [LO, HI].
+  beam_check.py tip OUT L T0 WREF UREF TOL_W TOL_U
+      large-deflection cantilever: the tip's (first history node) mean transverse
+      displacement w/L and shortening u/L over t >= T0 against the references, relative.
+  beam_check.py torsion OUT G J L I TOL
+      torsion pendulum: the kinetic energy (glstat) has its minima every pi/omega; omega
+      against sqrt(G J/(L I)) within TOL relative.
+  beam_check.py rotation OUT OMEGA TOL_X TOL_E
+      free beam spinning about y through the origin: every history node at radius r keeps
+      |x| = r within TOL_X relative and turns by the angle omega t (x, z against
+      r cos, -r sin of omega t) within TOL_X relative to r; internal energy over the initial
+      kinetic energy <= TOL_E (the centrifugal stretch only) and |ratio - 1| <= TOL_E.
+"""
+import math
+import sys
+
+from ascii_out import read_columns
+from shell_check import first_period, nodout
+
+
+def wave(argv):
+    out, e, rho, v0, tol = argv[0], *map(float, argv[1:5])
+    xs = [float(a) for a in argv[5:]]
+    c = math.sqrt(e/rho)
+    d = nodout(out)
+    ok = True
+    for x, node in zip(xs, sorted(d)):
+        rows = d[node]
+        t_hit = None
+        for (t0, _, v0r, _), (t1, _, v1r, _) in zip(rows, rows[1:]):
+            a, b = v0r[0] - 0.5*v0, v1r[0] - 0.5*v0
+            if a < 0.0 <= b:
+                t_hit = t0 + (t1 - t0)*(-a)/(b - a)
+                break
+        if t_hit is None:
+            print(f'node {node}: the front (v = V0/2) never arrived')
+            ok = False
+            continue
+        err = abs(t_hit - x/c)/(x/c)
+        print(f'node {node} x {x:g}: front at {t_hit:.6e}, x/c {x/c:.6e}, relative error '
+              f'{err:.2e} (tol {tol:.1e})')
+        ok = ok and err <= tol
+    return ok
+
+
+def order(argv):
+    outs = argv[0:3]
+    length, thick, e, rho, lo, hi = map(float, argv[3:9])
+    w1 = 1.8751040687**2*math.sqrt(e*thick**2/(12.0*rho*length**4))
+    tref = 2.0*math.pi/w1
+    errs = [abs(first_period(o) - tref)/tref for o in outs]
+    ords = [math.log(errs[k]/errs[k + 1])/math.log(2.0) for k in range(2)]
+    print('period errors ' + ' '.join(f'{x:.3e}' for x in errs) + ' observed orders ' +
+          ' '.join(f'{x:.2f}' for x in ords) + f' (range [{lo}, {hi}])')
+    return all(lo <= x <= hi for x in ords)
+
+
+def rotation(argv):
+    out, om, tol_x, tol_e = argv[0], *map(float, argv[1:4])
+    d = nodout(out)
+    ok = True
+    worst = 0.0
+    for node, rows in d.items():
+        x0 = rows[0][3]
+        r = math.hypot(x0[0], x0[2])
+        for t, _, _, xc in rows:
+            ex = math.hypot(xc[0] - r*math.copysign(1.0, x0[0])*math.cos(om*t),
+                            xc[2] + r*math.copysign(1.0, x0[0])*math.sin(om*t))
+            worst = max(worst, ex/r)
+    print(f'largest position error against the rigid rotation: {worst:.2e} r (tol {tol_x:.1e})')
+    ok = worst <= tol_x
+    g = read_columns(out + '/glstat')
+    ke0 = g[min(g)]['kinetic']
+    ie = max(abs(row['internal']) for row in g.values())/ke0
+    rat = max(abs(row['energy_ratio'] - 1.0) for row in g.values())
+    print(f'internal/initial kinetic {ie:.2e}, |ratio - 1| {rat:.2e} (tol {tol_e:.1e})')
+    return ok and ie <= tol_e and rat <= tol_e
+
+
+def torsion(argv):
+    out, g, j, length, inertia, tol = argv[0], *map(float, argv[1:6])
+    rows = sorted(read_columns(out + '/glstat').items())
+    t = [r[0] for r in rows]
+    ke = [r[1]['kinetic'] for r in rows]
+    mins = []
+    for k in range(1, len(ke) - 1):
+        if ke[k] < ke[k - 1] and ke[k] <= ke[k + 1]:
+            # vertex of the parabola through the three samples (glstat lines fall on the
+            # first cycle past each interval: unequal spacing)
+            (a, fa), (b, fb), (c, fc) = (t[k - 1], ke[k - 1]), (t[k], ke[k]), (t[k + 1], ke[k + 1])
+            num = (b - a)**2*(fb - fc) - (b - c)**2*(fb - fa)
+            den = (b - a)*(fb - fc) - (b - c)*(fb - fa)
+            mins.append(b - 0.5*num/den if den != 0.0 else b)
+    if len(mins) < 2:
+        print('fewer than two minima of the kinetic energy')
+        return False
+    omega = math.pi/((mins[-1] - mins[0])/(len(mins) - 1))
+    ref = math.sqrt(g*j/(length*inertia))
+    err = abs(omega - ref)/ref
+    print(f'torsion: omega {omega:.6e} rad/ms, sqrt(G J/(L I)) {ref:.6e}, relative error '
+          f'{err:.2e} (tol {tol:.1e}; {len(mins)} minima of the kinetic energy)')
+    return err <= tol
+
+
+def tip(argv):
+    out, length, t0, wref, uref, tol_w, tol_u = argv[0], *map(float, argv[1:7])
+    d = nodout(out)
+    rows = [r for r in d[sorted(d)[0]] if r[0] >= t0]
+    w = sum(r[1][2] for r in rows)/len(rows)/length
+    u = -sum(r[1][0] for r in rows)/len(rows)/length
+    ew, eu = abs(w - wref)/wref, abs(u - uref)/uref
+    print(f'tip (mean from t = {t0:g}): w/L {w:.6f} (reference {wref}, error {ew:.2e}, tol '
+          f'{tol_w:.1e}), u/L {u:.6f} (reference {uref}, error {eu:.2e}, tol {tol_u:.1e})')
+    return ew <= tol_w and eu <= tol_u
+
+
+def main():
+    cmd, argv = sys.argv[1], sys.argv[2:]
+    fn = {'wave': wave, 'order': order, 'rotation': rotation, 'torsion': torsion,
+          'tip': tip}.get(cmd)
+    if fn is None:
+        raise SystemExit(__doc__)
+    if not fn(argv):
+        print('FAILED')
+        sys.exit(1)
+
+
+if __name__ == '__main__':
+    main()
