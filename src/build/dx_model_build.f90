@@ -12,7 +12,8 @@ module dx_model_build
    use dx_error, only: error_t, set_error
    use dx_strings, only: str, rstr
    use dx_model, only: model_t, part_t, family_t, element_family, elem_volume, etype_of_elform, &
-                       solid_shape, MAX_NEN, ES_WORK, ES_HGS, ES_DMG, ES_EPS, elem_quality, ASPECT_WARN, &
+                       solid_shape, MAX_NEN, ES_WORK, ES_HGS, ES_DMG, ES_EPS, elem_quality, &
+                       ASPECT_WARN, &
                        WARP_WARN, erosion_t
    use dx_log, only: log_warn
    use dx_model_input, only: model_input_t, origin_t

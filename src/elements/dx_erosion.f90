@@ -29,7 +29,8 @@ module dx_erosion
    use dx_element_types, only: elem_block_t, part_t, erosion_t, ES_DMG, ES_EPS
    implicit none
    private
-   public :: erosion_points, erosion_one_point, erosion_now, erosion_strain, largest_principal, von_mises
+   public :: erosion_points, erosion_one_point, erosion_now, erosion_strain, largest_principal, &
+             von_mises
 
 contains
 

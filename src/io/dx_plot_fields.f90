@@ -30,7 +30,8 @@ module dx_plot_fields
    private
    public :: plot_field_t, PLOT_FIELDS, NSTATE_FIELDS, plot_state_t, CENTRE_NODE, CENTRE_CELL, &
              SRC_NODAL, SRC_ELEMENT, SRC_DERIVED, SRC_MESH, F_COORD, F_DISP, F_VEL, F_STRESS, &
-             F_VM, F_PRES, F_EPSP, F_FAILED, F_DAMAGE, field_in_part, plot_rows_in_file, xdmf_attribute_type, &
+             F_VM, F_PRES, F_EPSP, F_FAILED, F_DAMAGE, field_in_part, plot_rows_in_file, &
+             xdmf_attribute_type, &
              plot_state_alloc, plot_state_derive, plot_state_write, plot_state_read, &
              stress_invariants, plot_mesh_write, plot_mesh_read
 

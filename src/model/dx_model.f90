@@ -17,7 +17,8 @@ module dx_model
    use dx_element_types, only: elem_block_t, part_t, family_t, element_family, elem_volume, elem_moments, elem_length, &
                                etype_of_elform, solid_shape, MAX_NEN, MAX_FACE_NODES, &
                                MAX_FACES, ETYPE_DEFAULT, ETYPES, ES_WORK, ES_HGS, ES_PHIM, &
-                               ES_DMG, ES_EPS, erosion_t, MAX_ES, ES_NAMES, ES_DUMP, WORK_Q, WORK_QBV, WORK_DT, &
+                               ES_DMG, ES_EPS, erosion_t, MAX_ES, ES_NAMES, ES_DUMP, WORK_Q, &
+                               WORK_QBV, WORK_DT, &
                                WORK_PN
    implicit none
    private
@@ -32,7 +33,8 @@ module dx_model
    public :: family_t, element_family, elem_volume, elem_moments, elem_length, etype_of_elform, &
              solid_shape, MAX_NEN, MAX_FACE_NODES, MAX_FACES, ETYPES
    !> the family-state slots of a block's es array (dx_element_types)
-   public :: ES_WORK, ES_HGS, ES_PHIM, ES_DMG, ES_EPS, MAX_ES, ES_NAMES, ES_DUMP, WORK_Q, WORK_QBV, &
+   public :: ES_WORK, ES_HGS, ES_PHIM, ES_DMG, ES_EPS, MAX_ES, ES_NAMES, ES_DUMP, WORK_Q, &
+             WORK_QBV, &
              WORK_DT, WORK_PN, erosion_t
 
    !> *SECTION_SOLID or *SECTION_SHELL (shell = .true.; the shell fields of
