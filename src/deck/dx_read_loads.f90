@@ -44,12 +44,16 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: ic, k, d
       type(spc_in_t) :: s
+      type(spc_in_t), allocatable :: buf(:)   ! one per card: no append per card (quadratic)
+      integer :: nb
       type(card_t) :: c
       character(len=5), parameter :: dn(6) = ['DOFX ', 'DOFY ', 'DOFZ ', 'DOFRX', 'DOFRY', &
                                               'DOFRZ']
       call deck_cursor(deck, blk, c)
       call c%need(data_start(blk), 'missing card '//str(data_start(blk))//' (NID CID DOFX '// &
                   'DOFY DOFZ DOFRX DOFRY DOFRZ)')
+      allocate(buf(blk%n))
+      nb = 0
       do ic = data_start(blk), blk%n
          if (c%halt()) exit
          call c%seek(ic)
@@ -65,8 +69,10 @@ contains
          end do
          if (c%halt()) exit
          s%src = origin(blk%ifile, c%card_line(), blk%name)
-         inp%spcs = [inp%spcs, s]
+         nb = nb + 1
+         buf(nb) = s
       end do
+      inp%spcs = [inp%spcs, buf(1:nb)]
       call c%done(error)
    end subroutine read_spc
 
@@ -78,10 +84,14 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: ic
       type(motion_in_t) :: m
+      type(motion_in_t), allocatable :: buf(:)   ! one per card: no append per card
+      integer :: nb
       type(card_t) :: c
       call deck_cursor(deck, blk, c)
       call c%need(data_start(blk), 'missing card '//str(data_start(blk))//' (NID DOF VAD '// &
                   'LCID SF VID DEATH BIRTH)')
+      allocate(buf(blk%n))
+      nb = 0
       do ic = data_start(blk), blk%n
          if (c%halt()) exit
          call c%seek(ic)
@@ -98,8 +108,10 @@ contains
             'on rotations: 0 angular velocity, 1 angular acceleration)')
          if (c%halt()) exit
          m%src = origin(blk%ifile, c%card_line(), blk%name)
-         inp%motions = [inp%motions, m]
+         nb = nb + 1
+         buf(nb) = m
       end do
+      inp%motions = [inp%motions, buf(1:nb)]
       call c%done(error)
    end subroutine read_motion
 
@@ -175,8 +187,12 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: ic
       type(ivel_in_t) :: r
+      type(ivel_in_t), allocatable :: buf(:)   ! one per card: no append per card
+      integer :: nb
       type(card_t) :: c
       call deck_cursor(deck, blk, c)
+      allocate(buf(blk%n))
+      nb = 0
       do ic = 1, blk%n
          r = ivel_in_t()
          r%kind = IVEL_NODE
@@ -186,8 +202,10 @@ contains
          call c%zero_int('ICID', 'local coordinate systems')
          if (c%halt()) exit
          r%src = origin(blk%ifile, c%card_line(), blk%name)
-         inp%ivels = [inp%ivels, r]
+         nb = nb + 1
+         buf(nb) = r
       end do
+      inp%ivels = [inp%ivels, buf(1:nb)]
       call c%done(error)
    end subroutine read_initial_velocity_node
 
