@@ -10,7 +10,8 @@ module dx_build_common
    use dx_label_map, only: label_map_t
    implicit none
    private
-   public :: maps_t, at, at_line, set_nodes, curve_index, node_index, dense_segments
+   public :: maps_t, at, at_line, set_nodes, curve_index, node_index, dense_segments, &
+             map_labels
 
    !> label maps of one build
    type :: maps_t
@@ -106,4 +107,24 @@ contains
          end do
       end do
    end subroutine dense_segments
+   !> unique labels -> map; error naming both cards on a duplicate
+   subroutine map_labels(inp, map, labels, src, what, error)
+      type(model_input_t), intent(in) :: inp
+      type(label_map_t), intent(inout) :: map
+      integer, intent(in) :: labels(:)
+      type(origin_t), intent(in) :: src(:)
+      character(*), intent(in) :: what
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i, old
+      call map%init(size(labels))
+      do i = 1, size(labels)
+         call map%insert(labels(i), i, old)
+         if (old /= 0) then
+            call set_error(error, at(inp, src(i))//'duplicate '//what//' id '// &
+               str(labels(i))//' (first defined at '//inp%files(src(old)%ifile)%s//':'// &
+               str(src(old)%line)//')')
+            return
+         end if
+      end do
+   end subroutine map_labels
 end module dx_build_common

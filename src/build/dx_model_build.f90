@@ -3,7 +3,7 @@
 !> the card that made them, rejects degenerate and inverted solids, groups elements by part
 !> into blocks of at most nv_chunk elements, resolves hourglass and bulk viscosity settings per
 !> part, and expands initial velocities, constraints, loads and rigid walls onto nodes.
-!> Constraints and loads: dx_build_loads; rigid bodies and body loads are built last
+!> Sets and controls: dx_build_sets; constraints and loads: dx_build_loads; rigid bodies and body loads are built last
 !> (dx_rigid_build); label lookups: dx_build_common.
 !> Element type of a part: its section's ELFORM through the element-family table
 !> (dx_element_types), which also gives the nodes per element and the exact initial volume.
@@ -25,8 +25,9 @@ module dx_model_build
    use dx_beam_bs, only: beam_bs_init
    use dx_label_map, only: label_map_t
    use dx_build_common, only: maps_t, at, at_line, set_nodes, curve_index, node_index, &
-                              dense_segments
+                              dense_segments, map_labels
    use dx_build_loads, only: build_bcs, build_initial_velocity, build_loads
+   use dx_build_sets, only: build_sets, build_controls
    use dx_rigid_build, only: build_rigid, build_body_loads
    implicit none
    private
@@ -104,27 +105,6 @@ contains
       model%node_label = inp%node_label(1:inp%nn)
       model%x0 = inp%x(:, 1:inp%nn)
    end subroutine build_nodes
-
-   !> unique labels -> map; error naming both cards on a duplicate
-   subroutine map_labels(inp, map, labels, src, what, error)
-      type(model_input_t), intent(in) :: inp
-      type(label_map_t), intent(inout) :: map
-      integer, intent(in) :: labels(:)
-      type(origin_t), intent(in) :: src(:)
-      character(*), intent(in) :: what
-      type(error_t), allocatable, intent(out) :: error
-      integer :: i, old
-      call map%init(size(labels))
-      do i = 1, size(labels)
-         call map%insert(labels(i), i, old)
-         if (old /= 0) then
-            call set_error(error, at(inp, src(i))//'duplicate '//what//' id '// &
-               str(labels(i))//' (first defined at '//inp%files(src(old)%ifile)%s//':'// &
-               str(src(old)%line)//')')
-            return
-         end if
-      end do
-   end subroutine map_labels
 
    !> curves, sections, hourglass definitions, materials (resolve_curves, setup)
    subroutine build_definitions(inp, model, mp, error)
@@ -709,164 +689,6 @@ contains
    end subroutine build_elements
 
 
-   !> node, part and segment sets
-   subroutine build_sets(inp, model, mp, error)
-      type(model_input_t), intent(in) :: inp
-      type(model_t), intent(inout) :: model
-      type(maps_t), intent(inout) :: mp
-      type(error_t), allocatable, intent(out) :: error
-      integer :: i, k, j
-      integer, allocatable :: lab(:)
-      type(origin_t), allocatable :: src(:)
-      src = [(inp%node_sets(i)%src, i = 1, size(inp%node_sets))]
-      lab = inp%node_sets(:)%label
-      call map_labels(inp, mp%nset, lab, src, 'node set', error)
-      if (allocated(error)) return
-      allocate(model%node_sets(size(inp%node_sets)))
-      do i = 1, size(inp%node_sets)
-         associate (s => inp%node_sets(i))
-            model%node_sets(i)%label = s%label
-            allocate(model%node_sets(i)%nodes(size(s%ids)))
-            do k = 1, size(s%ids)
-               j = mp%node%get(s%ids(k))
-               if (j == 0) then
-                  call set_error(error, at(inp, s%src)//'set '//str(s%label)//': node '// &
-                                 str(s%ids(k))//' is not defined (*NODE)')
-                  return
-               end if
-               model%node_sets(i)%nodes(k) = j
-            end do
-         end associate
-      end do
-      src = [(inp%part_sets(i)%src, i = 1, size(inp%part_sets))]
-      lab = inp%part_sets(:)%label
-      call map_labels(inp, mp%pset, lab, src, 'part set', error)
-      if (allocated(error)) return
-      allocate(model%part_sets(size(inp%part_sets)))
-      do i = 1, size(inp%part_sets)
-         associate (s => inp%part_sets(i))
-            model%part_sets(i)%label = s%label
-            allocate(model%part_sets(i)%parts(size(s%ids)))
-            do k = 1, size(s%ids)
-               j = mp%part%get(s%ids(k))
-               if (j == 0) then
-                  call set_error(error, at(inp, s%src)//'set '//str(s%label)//': part '// &
-                                 str(s%ids(k))//' is not defined (*PART)')
-                  return
-               end if
-               model%part_sets(i)%parts(k) = j
-            end do
-         end associate
-      end do
-      src = [(inp%segment_sets(i)%src, i = 1, size(inp%segment_sets))]
-      lab = inp%segment_sets(:)%label
-      call map_labels(inp, mp%sset, lab, src, 'segment set', error)
-      if (allocated(error)) return
-      allocate(model%segment_sets(size(inp%segment_sets)))
-      do i = 1, size(inp%segment_sets)
-         associate (s => inp%segment_sets(i))
-            model%segment_sets(i)%label = s%label
-            call dense_segments(inp, mp, s%seg, s%src, model%segment_sets(i)%seg, error)
-            if (allocated(error)) return
-         end associate
-      end do
-   end subroutine build_sets
-
-
-   !> controls and output requests; the run must end
-   subroutine build_controls(inp, model, mp, deck0, error)
-      type(model_input_t), intent(in) :: inp
-      type(model_t), intent(inout) :: model
-      type(maps_t), intent(in) :: mp
-      character(*), intent(in) :: deck0
-      type(error_t), allocatable, intent(out) :: error
-      integer :: i, k, j, nh
-      integer, allocatable :: h(:), nodes(:)
-      logical, allocatable :: seen(:)
-      model%ctrl = inp%ctrl
-      model%ctrl%lctm = 0
-      if (inp%lctm /= 0) then
-         model%ctrl%lctm = curve_index(inp, mp, inp%lctm, inp%timestep_src, 'LCTM', error)
-         if (allocated(error)) return
-      end if
-      model%db%d3plot_dt = inp%d3plot_dt
-      if (inp%d3plot_npltc > 0 .and. inp%ctrl%endtim > 0.0_wp) &
-         model%db%d3plot_dt = inp%ctrl%endtim/inp%d3plot_npltc
-      model%db%d3plot_lcdt = 0
-      if (inp%d3plot_lcdt /= 0) then
-         model%db%d3plot_lcdt = curve_index(inp, mp, inp%d3plot_lcdt, inp%d3plot_src, 'LCDT', &
-                                            error)
-         if (allocated(error)) return
-      end if
-      model%db%glstat_dt = inp%glstat_dt
-      model%db%nodout_dt = inp%nodout_dt
-      model%db%matsum_dt = inp%matsum_dt
-      model%db%spcforc_dt = inp%spcforc_dt
-      model%db%sleout_dt = inp%sleout_dt
-      model%rst = inp%rst
-      allocate(h(model%nn), seen(model%nn))    ! each node once: at most nn (linear set-up)
-      seen = .false.
-      nh = 0
-      do i = 1, size(inp%hist_nodes)
-         associate (l => inp%hist_nodes(i))
-            do k = 1, size(l%ids)
-               j = node_index(inp, mp, l%ids(k), l%src, 'ID'//str(k), error)
-               if (allocated(error)) return
-               if (.not. seen(j)) call add_hist(j)
-            end do
-         end associate
-      end do
-      do i = 1, size(inp%hist_node_sets)
-         associate (l => inp%hist_node_sets(i))
-            do k = 1, size(l%ids)
-               call set_nodes(inp, model, mp, l%ids(k), .false., l%src, 'ID'//str(k), nodes, &
-                              error)
-               if (allocated(error)) return
-               do j = 1, size(nodes)
-                  if (.not. seen(nodes(j))) call add_hist(nodes(j))
-               end do
-            end do
-         end associate
-      end do
-      h = h(1:nh)
-      call move_alloc(h, model%db%hist_nodes)
-      if (.not. inp%has_termination) then
-         call set_error(error, deck0//': no *CONTROL_TERMINATION: the run would not end '// &
-                        '(give ENDTIM > 0 or ENDCYC > 0)')
-         return
-      end if
-      if (.not. (inp%ctrl%endtim > 0.0_wp) .and. inp%ctrl%endcyc <= 0) then
-         call set_error(error, at(inp, inp%term_src)//'ENDTIM <= 0 and ENDCYC <= 0: the run '// &
-                        'would not end')
-      end if
-      if (allocated(error)) return
-      ! ENDMAS acts only with mass scaling (DT2MS); 0 and LS-PrePost's default 1e8 are quiet
-      if (inp%ctrl%dt2ms == 0.0_wp .and. inp%ctrl%endmas /= 0.0_wp .and. &
-          inp%ctrl%endmas /= 1.0e8_wp) call log_warn(inp%files(inp%term_src%ifile)%s//':'// &
-         str(inp%term_src%line)//': *CONTROL_TERMINATION ENDMAS = '//rstr(inp%ctrl%endmas)// &
-         ' has no effect: it limits the mass added by mass scaling, and the deck has none '// &
-         '(*CONTROL_TIMESTEP DT2MS = 0)')
-      ! the conserving rigid-body integrator has no element step to scale
-      if (inp%ctrl%dt2ms /= 0.0_wp .and. (allocated(inp%emc%contacts) .or. &
-                                          allocated(inp%emc%spheres))) &
-         call set_error(error, at(inp, inp%timestep_src)//'field DT2MS: mass scaling (DT2MS = '// &
-            rstr(inp%ctrl%dt2ms)//') is not available with the conserving rigid-body '// &
-            'integrator (*DYNX_CONSERVING_CONTACT); set DT2MS = 0')
-      ! shells: the rotary inertia is lumped once from the unscaled mass (not yet rescaled)
-      ! (the 2D solids of *SECTION_SHELL ELFORM 13-15 have no rotations: part_dim > 0)
-      if (.not. allocated(error) .and. inp%ctrl%dt2ms /= 0.0_wp .and. allocated(inp%elem_thk) &
-          .and. part_dim(model, 1) == 0) &
-         call set_error(error, at(inp, inp%timestep_src)//'field DT2MS: mass scaling (DT2MS = '// &
-            rstr(inp%ctrl%dt2ms)//') is not yet available for decks with shells '// &
-            '(*ELEMENT_SHELL): their rotary inertia would not be scaled; set DT2MS = 0')
-   contains
-      subroutine add_hist(node)
-         integer, intent(in) :: node
-         nh = nh + 1
-         h(nh) = node
-         seen(node) = .true.
-      end subroutine add_hist
-   end subroutine build_controls
 
    !> Whether the erosion criteria of a part use the total strain (dx_erosion).
    pure logical function strain_criteria(e)
