@@ -22,11 +22,13 @@ module dx_mat_hydro
    use dx_strings, only: rstr, str
    use dx_card, only: card_t
    use dx_material, only: material_t, read_mid_ro
+   use dx_mat_hydro_common, only: hydro_material_t, deviatoric_split, &
+                                  history_wave_speed
    implicit none
    private
    public :: mat_hydro_t
 
-   type, extends(material_t) :: mat_hydro_t
+   type, extends(hydro_material_t) :: mat_hydro_t
       real(wp) :: g = 0.0_wp, sigo = 0.0_wp, eh = 0.0_wp, pc = 0.0_wp, fs = 0.0_wp
       real(wp) :: a1 = 0.0_wp, a2 = 0.0_wp
       real(wp) :: eps(16) = 0.0_wp, es(16) = 0.0_wp
@@ -38,7 +40,6 @@ module dx_mat_hydro
       procedure :: update => hy_update
       procedure :: wave_speed => hy_wave_speed
       procedure :: fails => hy_fails
-      procedure :: takes_eos => hy_takes_eos
       procedure :: hardening => hy_hardening
    end type mat_hydro_t
 
@@ -129,12 +130,6 @@ contains
       if (.false.) hy_nhist = int(self%ro)
    end function hy_nhist
 
-   logical function hy_takes_eos(self)
-      class(mat_hydro_t), intent(in) :: self
-      hy_takes_eos = .true.
-      if (.false.) hy_takes_eos = self%ro < 0.0_wp
-   end function hy_takes_eos
-
    !> h(eps_p) and its slope (module header).
    pure subroutine hy_hardening(self, ep, h, dh)
       class(mat_hydro_t), intent(in) :: self
@@ -169,7 +164,7 @@ contains
       integer, intent(inout) :: ierr(nv)
       real(wp), parameter :: w(6) = [1.0_wp, 1.0_wp, 1.0_wp, 2.0_wp, 2.0_wp, 2.0_wp]
       real(wp) :: v, vold, pn, so(6), s(6), de(6), tr, seq, ep, dep, h, dh, r, lo, hi, g
-      real(wp) :: yp, estar, e1, p1, pm
+      real(wp) :: yp, estar, e1, p1
       integer :: i, k
       g = self%g
       do i = 1, nv
@@ -186,12 +181,7 @@ contains
          end if
          pn = hv(i, 2)
          ep = hv(i, 1)
-         pm = -(sig(i, 1) + sig(i, 2) + sig(i, 3))/3.0_wp
-         so = sig(i, :)
-         so(1:3) = so(1:3) + pm
-         tr = (deps(i, 1) + deps(i, 2) + deps(i, 3))/3.0_wp
-         de = deps(i, :)
-         de(1:3) = de(1:3) - tr
+         call deviatoric_split(sig(i, :), deps(i, :), so, de, tr)
          yp = (self%a1 + self%a2*pn)*max(pn, 0.0_wp)
          s = so + 2.0_wp*g*de
          seq = sqrt(1.5_wp*sum(w*s**2))
@@ -239,14 +229,7 @@ contains
       real(wp), intent(in) :: relvol(nv)
       real(wp), intent(in) :: hv(:, :)
       real(wp), intent(out) :: c(nv)
-      integer :: i
-      do i = 1, nv
-         if (hv(i, 3) > 0.0_wp) then
-            c(i) = sqrt(max(hv(i, 5), 0.0_wp))
-         else
-            c(i) = sqrt((self%bulk + 4.0_wp*self%g/3.0_wp)*relvol(i)/self%ro)
-         end if
-      end do
+      call history_wave_speed(nv, relvol, hv, 3, 5, self%bulk + 4.0_wp*self%g/3.0_wp, self%ro, c)
    end subroutine hy_wave_speed
 
    !> Erosion at eps_p >= FS (FS > 0).

@@ -33,12 +33,13 @@ module dx_mat_johnson_cook
    use dx_strings, only: rstr
    use dx_card, only: card_t
    use dx_material, only: material_t, read_mid_ro
-   use dx_mat_steinberg, only: max_principal
+   use dx_mat_hydro_common, only: hydro_material_t, deviatoric_split, &
+                                  spall_reached, history_wave_speed
    implicit none
    private
    public :: mat_johnson_cook_t
 
-   type, extends(material_t) :: mat_johnson_cook_t
+   type, extends(hydro_material_t) :: mat_johnson_cook_t
       real(wp) :: g = 0.0_wp, e = 0.0_wp, pr = 0.0_wp
       real(wp) :: a = 0.0_wp, b = 0.0_wp, n = 0.0_wp, c = 0.0_wp, m = 0.0_wp
       real(wp) :: tm = 0.0_wp, tr = 0.0_wp, epso = 0.0_wp, cp = 0.0_wp, pc = 0.0_wp
@@ -52,7 +53,6 @@ module dx_mat_johnson_cook
       procedure :: update => jc_update
       procedure :: wave_speed => jc_wave_speed
       procedure :: fails => jc_fails
-      procedure :: takes_eos => jc_takes_eos
       procedure :: needs_eos => jc_needs_eos
       procedure :: flow_stress => jc_flow_stress
       procedure :: failure_strain => jc_failure_strain
@@ -176,12 +176,6 @@ contains
       if (.false.) jc_nhist = int(self%ro)
    end function jc_nhist
 
-   logical function jc_takes_eos(self)
-      class(mat_johnson_cook_t), intent(in) :: self
-      jc_takes_eos = .true.
-      if (.false.) jc_takes_eos = self%ro < 0.0_wp
-   end function jc_takes_eos
-
    !> Without E the elastic pressure has no bulk modulus: an EOS is then needed.
    logical function jc_needs_eos(self)
       class(mat_johnson_cook_t), intent(in) :: self
@@ -237,7 +231,7 @@ contains
       integer, intent(inout) :: ierr(nv)
       real(wp), parameter :: w(6) = [1.0_wp, 1.0_wp, 1.0_wp, 2.0_wp, 2.0_wp, 2.0_wp]
       real(wp) :: v, vold, pn, so(6), s(6), de(6), tr, seq, ep, dep, y, dy, r, lo, hi, g
-      real(wp) :: rate, rate_s, rf, t, estar, e1, p1, ef, sst, pm
+      real(wp) :: rate, rate_s, rf, t, estar, e1, p1, ef, sst
       integer :: i, k
       g = self%g
       do i = 1, nv
@@ -256,12 +250,7 @@ contains
          pn = hv(i, 4)
          ep = hv(i, 1)
          t = hv(i, 3)
-         pm = -(sig(i, 1) + sig(i, 2) + sig(i, 3))/3.0_wp
-         so = sig(i, :)
-         so(1:3) = so(1:3) + pm
-         tr = (deps(i, 1) + deps(i, 2) + deps(i, 3))/3.0_wp
-         de = deps(i, :)
-         de(1:3) = de(1:3) - tr
+         call deviatoric_split(sig(i, :), deps(i, :), so, de, tr)
          rate = 0.0_wp
          if (dt > 0.0_wp) rate = sqrt(2.0_wp/3.0_wp*sum(w*de**2))/dt
          rate_s = 1.0_wp
@@ -321,12 +310,7 @@ contains
             end if
          end if
          if (hv(i, 8) == 0.0_wp) then
-            select case (self%spall)
-            case (2)
-               if (max_principal(s) - p1 >= -self%pc) hv(i, 8) = 1.0_wp
-            case (3)
-               if (p1 <= self%pc) hv(i, 8) = 1.0_wp
-            end select
+            if (spall_reached(self%spall, self%pc, s, p1)) hv(i, 8) = 1.0_wp
             if (self%damage .and. hv(i, 2) >= 1.0_wp) hv(i, 8) = 1.0_wp
          end if
          p1 = max(p1, self%pc)
@@ -356,14 +340,7 @@ contains
       real(wp), intent(in) :: relvol(nv)
       real(wp), intent(in) :: hv(:, :)
       real(wp), intent(out) :: c(nv)
-      integer :: i
-      do i = 1, nv
-         if (hv(i, 5) > 0.0_wp) then
-            c(i) = sqrt(max(hv(i, 7), 0.0_wp))
-         else
-            c(i) = sqrt((self%bulk + 4.0_wp*self%g/3.0_wp)*relvol(i)/self%ro)
-         end if
-      end do
+      call history_wave_speed(nv, relvol, hv, 5, 7, self%bulk + 4.0_wp*self%g/3.0_wp, self%ro, c)
    end subroutine jc_wave_speed
 
    !> Erosion at D >= 1 with EROD = 0 (damage parameters given).

@@ -15,13 +15,14 @@ module dx_mat_null
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_field_error
    use dx_strings, only: rstr
+   use dx_mat_hydro_common, only: hydro_material_t, history_wave_speed
    use dx_card, only: card_t
    use dx_material, only: material_t, read_mid_ro
    implicit none
    private
    public :: mat_null_t
 
-   type, extends(material_t) :: mat_null_t
+   type, extends(hydro_material_t) :: mat_null_t
       real(wp) :: pc = 0.0_wp, mu = 0.0_wp, terod = 0.0_wp, cerod = 0.0_wp
       real(wp) :: ym = 0.0_wp, pr = 0.0_wp
    contains
@@ -31,7 +32,6 @@ module dx_mat_null
       procedure :: update => null_update
       procedure :: wave_speed => null_wave_speed
       procedure :: fails => null_fails
-      procedure :: takes_eos => null_takes_eos
    end type mat_null_t
 
 contains
@@ -74,11 +74,6 @@ contains
       class(mat_null_t), intent(in) :: self
       null_nhist = 4
    end function null_nhist
-
-   logical function null_takes_eos(self)
-      class(mat_null_t), intent(in) :: self
-      null_takes_eos = .true.
-   end function null_takes_eos
 
    !> Pressure from the EOS with the time-centred energy, cut off at PC; viscous deviator.
    subroutine null_update(self, nv, dt, deps, relvol, eint, sig, hv, ierr)
@@ -127,14 +122,7 @@ contains
       real(wp), intent(in) :: relvol(nv)
       real(wp), intent(in) :: hv(:, :)
       real(wp), intent(out) :: c(nv)
-      integer :: i
-      do i = 1, nv
-         if (hv(i, 1) > 0.0_wp) then
-            c(i) = sqrt(hv(i, 3))
-         else
-            c(i) = sqrt(self%bulk*relvol(i)/self%ro)
-         end if
-      end do
+      call history_wave_speed(nv, relvol, hv, 1, 3, self%bulk, self%ro, c)
    end subroutine null_wave_speed
 
    !> Erosion by relative volume: above TEROD or below CEROD (each when > 0).

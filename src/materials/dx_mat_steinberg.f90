@@ -48,13 +48,15 @@ module dx_mat_steinberg
    use dx_card, only: card_t
    use dx_material, only: material_t, read_mid_ro
    use dx_eos_gruneisen, only: eos_gruneisen_t
+   use dx_mat_hydro_common, only: hydro_material_t, deviatoric_split, &
+                                  spall_reached, history_wave_speed
    implicit none
    private
-   public :: mat_steinberg_t, max_principal
+   public :: mat_steinberg_t
 
    integer, parameter :: NPU = 1000            !< cold-energy grid steps per unit mu
 
-   type, extends(material_t) :: mat_steinberg_t
+   type, extends(hydro_material_t) :: mat_steinberg_t
       real(wp) :: g0 = 0.0_wp, sigo = 0.0_wp, beta = 0.0_wp, n = 0.0_wp, gama = 0.0_wp
       real(wp) :: sigm = 0.0_wp, b = 0.0_wp, bp = 0.0_wp, h = 0.0_wp, f = 0.0_wp
       real(wp) :: a = 0.0_wp, tmo = 0.0_wp, gamo = 0.0_wp, sa = 0.0_wp
@@ -72,7 +74,6 @@ module dx_mat_steinberg
       procedure :: nhist => sg_nhist
       procedure :: update => sg_update
       procedure :: wave_speed => sg_wave_speed
-      procedure :: takes_eos => sg_takes_eos
       procedure :: eos_ready => sg_eos_ready
       procedure :: cold_energy => sg_cold_energy
       procedure :: melt_temperature => sg_melt_temperature
@@ -196,12 +197,6 @@ contains
       sg_nhist = 10
       if (.false.) sg_nhist = int(self%ro)
    end function sg_nhist
-
-   logical function sg_takes_eos(self)
-      class(mat_steinberg_t), intent(in) :: self
-      sg_takes_eos = .true.
-      if (.false.) sg_takes_eos = self%ro < 0.0_wp
-   end function sg_takes_eos
 
    !> The cold-energy table from the attached EOS when all ECi are 0 (module header).
    subroutine sg_eos_ready(self, error)
@@ -368,7 +363,7 @@ contains
       integer, intent(inout) :: ierr(nv)
       real(wp), parameter :: w(6) = [1.0_wp, 1.0_wp, 1.0_wp, 2.0_wp, 2.0_wp, 2.0_wp]
       real(wp) :: v, vold, pn, tn, en, g, yf, so(6), s(6), de(6), tr, seq, ep, dep, y, dy, r
-      real(wp) :: lo, hi, estar, e1, p1, t1, pm, sm(6), ecv
+      real(wp) :: lo, hi, e1, p1, t1, ecv, estar, sm(6)
       integer :: i, it
       do i = 1, nv
          v = relvol(i)
@@ -384,12 +379,7 @@ contains
          tn = hv(i, 6)
          ep = hv(i, 5)
          ! ---- deviatoric trial stress and radial return
-         pm = -(sig(i, 1) + sig(i, 2) + sig(i, 3))/3.0_wp
-         so = sig(i, :)
-         so(1:3) = so(1:3) + pm
-         tr = (deps(i, 1) + deps(i, 2) + deps(i, 3))/3.0_wp
-         de = deps(i, :)
-         de(1:3) = de(1:3) - tr
+         call deviatoric_split(sig(i, :), deps(i, :), so, de, tr)
          ecv = 0.0_wp
          if (self%cv > 0.0_wp) ecv = self%cold_energy(v)
          call self%moduli(pn, v, tn, en, g, yf, ecv)
@@ -432,12 +422,7 @@ contains
          if (self%cv > 0.0_wp) t1 = 300.0_wp + (e1 - ecv)/self%cv
          ! ---- spall and pressure cut-off
          if (hv(i, 7) == 0.0_wp) then
-            select case (self%spall)
-            case (2)
-               if (max_principal(s) - p1 >= -self%pc) hv(i, 7) = 1.0_wp
-            case (3)
-               if (p1 <= self%pc) hv(i, 7) = 1.0_wp
-            end select
+            if (spall_reached(self%spall, self%pc, s, p1)) hv(i, 7) = 1.0_wp
          end if
          p1 = max(p1, self%pc)
          if (hv(i, 7) /= 0.0_wp) then
@@ -462,25 +447,6 @@ contains
       if (.false.) hv(1, 1) = dt
    end subroutine sg_update
 
-   !> Largest eigenvalue of the symmetric tensor s (Voigt xx,yy,zz,xy,yz,zx), by the
-   !> trigonometric solution of the characteristic cubic (Smith, Comm. ACM 4 (1961) 168).
-   pure real(wp) function max_principal(s) result(lmax)
-      real(wp), intent(in) :: s(6)
-      real(wp) :: m, d(3), q, p2, r, phi
-      m = (s(1) + s(2) + s(3))/3.0_wp
-      d = s(1:3) - m
-      q = (d(1)**2 + d(2)**2 + d(3)**2 + 2.0_wp*(s(4)**2 + s(5)**2 + s(6)**2))/6.0_wp
-      if (q <= 0.0_wp) then
-         lmax = m
-         return
-      end if
-      p2 = sqrt(q)
-      r = (d(1)*(d(2)*d(3) - s(5)**2) - s(4)*(s(4)*d(3) - s(5)*s(6)) + &
-           s(6)*(s(4)*s(5) - d(2)*s(6)))/(2.0_wp*p2**3)
-      r = min(1.0_wp, max(-1.0_wp, r))
-      phi = acos(r)/3.0_wp
-      lmax = m + 2.0_wp*p2*cos(phi)
-   end function max_principal
 
    !> sqrt(c**2 of the last update), before any: sqrt((K + 4G0/3) V/rho0).
    subroutine sg_wave_speed(self, nv, relvol, hv, c)
@@ -489,13 +455,6 @@ contains
       real(wp), intent(in) :: relvol(nv)
       real(wp), intent(in) :: hv(:, :)
       real(wp), intent(out) :: c(nv)
-      integer :: i
-      do i = 1, nv
-         if (hv(i, 1) > 0.0_wp) then
-            c(i) = sqrt(max(hv(i, 3), 0.0_wp))
-         else
-            c(i) = sqrt((self%bulk + 4.0_wp*self%g0/3.0_wp)*relvol(i)/self%ro)
-         end if
-      end do
+      call history_wave_speed(nv, relvol, hv, 1, 3, self%bulk + 4.0_wp*self%g0/3.0_wp, self%ro, c)
    end subroutine sg_wave_speed
 end module dx_mat_steinberg
