@@ -8,6 +8,7 @@ Usage: gen_large_input_decks.py OUTDIR [scale]   (scale < 1 shrinks the first tw
 Time the read and set-up with: bin/dynx -i OUTDIR/X.k --check"""
 import os
 import sys
+from dxmesh import box_cards
 
 out = sys.argv[1]
 scale = float(sys.argv[2]) if len(sys.argv) > 2 else 1.0
@@ -18,22 +19,8 @@ HEAD = ('*KEYWORD\n*CONTROL_TERMINATION\n       1.0        10\n'
 
 
 def box(f, nx, ny, nz, part_of):
-    nid = lambda i, j, k: 1 + i + (nx + 1) * (j + (ny + 1) * k)
-    f.write('*NODE\n')
-    for k in range(nz + 1):
-        for j in range(ny + 1):
-            for i in range(nx + 1):
-                f.write('%8d%16.6f%16.6f%16.6f\n' % (nid(i, j, k), i, j, k))
-    f.write('*ELEMENT_SOLID\n')
-    e = 0
-    for k in range(nz):
-        for j in range(ny):
-            for i in range(nx):
-                e += 1
-                n = [nid(i, j, k), nid(i + 1, j, k), nid(i + 1, j + 1, k), nid(i, j + 1, k),
-                     nid(i, j, k + 1), nid(i + 1, j, k + 1), nid(i + 1, j + 1, k + 1),
-                     nid(i, j + 1, k + 1)]
-                f.write('%8d%8d' % (e, part_of(e)) + ''.join('%8d' % x for x in n) + '\n')
+    for line in box_cards(nx, ny, nz, 1, 1, 1, part_of):
+        f.write(line)
     return (nx + 1) * (ny + 1) * (nz + 1)
 
 

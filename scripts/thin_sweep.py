@@ -31,6 +31,7 @@ import math
 import os
 import subprocess
 import sys
+from dxmesh import box_cards, node_list_cards, bottom_ids
 
 ap = argparse.ArgumentParser()
 ap.add_argument('--aspects', default='1,2,4,8,16,32,64,100')
@@ -70,28 +71,10 @@ def deck(aspect):
     w('*SECTION_SOLID\n$    SECID    ELFORM\n         1         1\n')
     w('*MAT_ELASTIC\n$      MID        RO         E        PR\n'
       '         1%10.3e%10.1f%10.2f\n' % (RO, E, PR))
-    w('*NODE\n')
-
-    def nid(i, j, k):
-        return 1 + i + (nx + 1) * (j + (ny + 1) * k)
-    for k in range(nz + 1):
-        for j in range(ny + 1):
-            for i in range(nx + 1):
-                w('%8d%16.9e%16.9e%16.9e\n' % (nid(i, j, k), i * h, j * hy, k * t))
-    w('*ELEMENT_SOLID\n')
-    e = 0
-    for k in range(nz):
-        for j in range(ny):
-            for i in range(nx):
-                e += 1
-                n = [nid(i, j, k), nid(i + 1, j, k), nid(i + 1, j + 1, k), nid(i, j + 1, k),
-                     nid(i, j, k + 1), nid(i + 1, j, k + 1), nid(i + 1, j + 1, k + 1),
-                     nid(i, j + 1, k + 1)]
-                w('%8d%8d' % (e, 1) + ''.join('%8d' % x for x in n) + '\n')
-    bottom = [nid(i, j, 0) for j in range(ny + 1) for i in range(nx + 1)]
-    w('*SET_NODE_LIST\n         1\n')
-    for q in range(0, len(bottom), 8):
-        w(''.join('%10d' % x for x in bottom[q:q + 8]) + '\n')
+    for line in box_cards(nx, ny, nz, h, hy, t, xfmt='%16.9e'):
+        w(line)
+    for line in node_list_cards(1, bottom_ids(nx, ny)):
+        w(line)
     w('*BOUNDARY_SPC_SET\n$     NSID       CID      DOFX      DOFY      DOFZ\n'
       '         1         0         1         1         1\n')
     w('*INITIAL_VELOCITY\n$     NSID    NSIDEX\n         0         1\n')
