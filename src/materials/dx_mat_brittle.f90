@@ -58,6 +58,7 @@ module dx_mat_brittle
       procedure :: nhist => br_nhist
       procedure :: update => br_update
       procedure :: fails => br_fails
+      procedure :: erodes => br_erodes
    end type mat_brittle_t
 
 contains
@@ -331,4 +332,9 @@ contains
          failed(i) = self%erod == 1 .and. hv(i, 2) >= self%dmax
       end do
    end subroutine br_fails
+
+   logical function br_erodes(self)
+      class(mat_brittle_t), intent(in) :: self
+      br_erodes = self%erod == 1
+   end function br_erodes
 end module dx_mat_brittle

@@ -55,6 +55,7 @@ module dx_material
       procedure(update_i), deferred :: update        !< stress update for one chunk
       procedure :: wave_speed => default_wave_speed  !< dilatational wave speed per point
       procedure :: fails => default_fails            !< element erosion flag per point
+      procedure :: erodes => default_erodes          !< its fails may be true: the run erodes
       procedure :: resolve_curves => default_resolve !< look up curve labels after the deck is read
       procedure :: read_cards => default_read_cards  !< its *MAT_ cards, through the card cursor
       procedure :: reads_curves => default_reads_curves !< setup must wait for the curves
@@ -245,6 +246,15 @@ contains
       failed = .false.
       if (.false.) failed(1) = hv(1, 1) > self%ro
    end subroutine default_fails
+
+   !> Whether the model's fails can flag points, so that the run does element erosion (contact
+   !> surfaces refreshed, eroded energies in glstat); default .false.: the models that fail
+   !> points without it (FS, FAIL, Johnson-Cook damage) keep their outputs.
+   logical function default_erodes(self)
+      class(material_t), intent(in) :: self
+      default_erodes = .false.
+      if (.false.) default_erodes = self%label < 0
+   end function default_erodes
 
    !> Materials that reference *DEFINE_CURVE ids copy the curves here (default: none).
    subroutine default_resolve(self, curves, error)
