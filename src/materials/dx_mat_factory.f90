@@ -87,14 +87,15 @@ contains
       allocate(r%eos, source=proto)
    end function eos_row
 
-   !> "1 (*MAT_ELASTIC), 3 (*MAT_PLASTIC_KINEMATIC), ..." for messages.
+   !> "1 (*MAT_ELASTIC), 3 (*MAT_PLASTIC_KINEMATIC), ..." for messages (LS-DYNA types only).
    function known_kinds(t) result(s)
       type(model_kind_t), intent(in) :: t(:)
       character(:), allocatable :: s
       integer :: i
       s = ''
       do i = 1, size(t)
-         if (i > 1) s = s//', '
+         if (t(i)%mtype >= 900) cycle         ! dynx's own models: not *MAT_ types
+         if (len(s) > 0) s = s//', '
          s = s//str(t(i)%mtype)//' (*'//trim(t(i)%keyword)//')'
       end do
    end function known_kinds
