@@ -27,6 +27,8 @@ program test_mat_brittle
    use dx_mat_brittle, only: mat_brittle_t, yield_vs_pressure
    use dx_mat_crack, only: mat_crack_t
    use dx_assert, only: check, check_close, assert_summary
+   use dx_strings, only: str
+   use dx_vec3, only: cross
    implicit none
    real(wp), parameter :: e = 72.0_wp, nu = 0.17_wp, rho = 2.2e-6_wp, dt = 1.0e-6_wp
    real(wp), parameter :: rtol = 1.0e-11_wp, atol = 1.0e-12_wp
@@ -101,7 +103,7 @@ contains
          call m%update(1, dt, deps, [1.0_wp + x], [0.0_wp], sig, hv, ierr)
          d = min(1.0_wp, kk/m%p(3))
          if (n == 100 .or. n == 400 .or. n == 900) call check_close(hv(1, 2), d, 0.0_wp, rtol, &
-            'TB uniaxial tension: D = (1/KF) sum dt (sigma1 - SIGR)**2, step '//itoa(n))
+            'TB uniaxial tension: D = (1/KF) sum dt (sigma1 - SIGR)**2, step '//str(n))
          if (.not. mid_checked .and. d > 0.5_wp .and. d < 1.0_wp) then
             mid_checked = .true.
             pi = -kb*log(1.0_wp + x)
@@ -207,10 +209,10 @@ contains
          ncheck = ncheck + 1
          d = hv(1, 2)
          call check_close(hv(1, 1), ep, 1.0e-15_wp, rtol, 'JH-2 shear under pressure: eps_p = '// &
-                          '(2 sqrt3 G e - SIGY)/(3G), step '//itoa(n))
-         call check_close(d, ep/ef, 0.0_wp, rtol, 'JH-2: D = eps_p/eps_f(p), step '//itoa(n))
+                          '(2 sqrt3 G e - SIGY)/(3G), step '//str(n))
+         call check_close(d, ep/ef, 0.0_wp, rtol, 'JH-2: D = eps_p/eps_f(p), step '//str(n))
          y = (1.0_wp - d)*m%sigy + d*yield_vs_pressure(m%pf, m%yf, m%npf, (1.0_wp - d)*p0 + d*p0)
-         call check_close(vm(sig(1, :)), y, 0.0_wp, rtol, 'JH-2: sigma_eq = Y(D, p), step '//itoa(n))
+         call check_close(vm(sig(1, :)), y, 0.0_wp, rtol, 'JH-2: sigma_eq = Y(D, p), step '//str(n))
       end do
       call check(ncheck >= 3, 'JH-2: at least 3 damaged plastic states checked')
       call check_close(yield_vs_pressure(m%pf, m%yf, m%npf, p0), 0.5_wp*p0, 0.0_wp, rtol, &
@@ -240,7 +242,7 @@ contains
          tact = nact*dt
          d = min(0.9_wp, 0.1_wp + 0.9_wp*min(1.0_wp, (0.4_wp*cl*tact/5.0_wp))**3)
          if (n == 150 .or. n == 400) call check_close(hv(1, 2), d, 0.0_wp, rtol, &
-            'growth: D = D0 + (1 - D0)(CG c_L t/LC)**3, step '//itoa(n))
+            'growth: D = D0 + (1 - D0)(CG c_L t/LC)**3, step '//str(n))
          call m%fails(1, hv, failed)
          if (failed(1) .and. .not. seen_fail) then
             seen_fail = .true.
@@ -280,7 +282,7 @@ contains
       q = reshape(hv(1, 4:12), [3, 3])
       call check_close(abs(dot_product(q(:, 1), n)), 1.0_wp, 1.0e-12_wp, 0.0_wp, &
                        'crack: first fracture surface normal to sigma1 (|e1.n| = 1)')
-      call check_close(abs(dot_product(q(:, 1), cross3(q(:, 2), q(:, 3)))), 1.0_wp, 1.0e-12_wp, &
+      call check_close(abs(dot_product(q(:, 1), cross(q(:, 2), q(:, 3)))), 1.0_wp, 1.0e-12_wp, &
                        0.0_wp, 'crack: the triad is orthonormal')
       call check(hv(1, 1) == 1.0_wp .and. hv(1, 2) == 0.0_wp .and. hv(1, 3) == 0.0_wp, &
                  'crack: uniaxial strain opens one crack only')
@@ -304,11 +306,6 @@ contains
       call check(hv(1, 13) == 0.0_wp, 'crack closed: void strain back to 0')
    end subroutine crack_uniaxial
 
-   pure function cross3(a, b) result(c)
-      real(wp), intent(in) :: a(3), b(3)
-      real(wp) :: c(3)
-      c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
-   end function cross3
 
    subroutine crack_triaxial()
       type(mat_crack_t) :: m
@@ -397,11 +394,4 @@ contains
       field_is = err%field == f
    end function field_is
 
-   function itoa(i) result(s)
-      integer, intent(in) :: i
-      character(:), allocatable :: s
-      character(12) :: b
-      write(b, '(i0)') i
-      s = trim(b)
-   end function itoa
 end program test_mat_brittle
