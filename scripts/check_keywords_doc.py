@@ -8,7 +8,8 @@ The keywords dynx reads are
   - the registry (src/deck/dx_deck_registry.f90): every `reg%add('NAME', ...)` in src/deck/,
     plus the rows of the material and EOS registry (src/materials/dx_mat_factory.f90,
     mat_row/eos_row) that register_materials (src/deck/dx_read_materials.f90) adds with their
-    numeric alias (*MAT_001, *EOS_004); *MAT_RIGID (generic = .false.) registers itself;
+    numeric alias (*MAT_001, *EOS_004; dynx's own models, type 900 and up, have none);
+    *MAT_RIGID (generic = .false.) registers itself;
   - the deck-structure keywords the card reader handles itself (src/deck/dx_deck_cards.f90):
     KEYWORD, TITLE, INCLUDE, PARAMETER, END (each must still appear there as 'NAME').
 
@@ -91,6 +92,8 @@ def registered():
         if kind == 'mat' and generic == 'false':
             continue        # registers itself with its own reader (found above)
         names.add(name)
+        if kind == 'mat' and int(num) >= 900:
+            continue        # dynx's own models (*DYNX_...): no *MAT_nnn alias
         names.add('%s_%03d' % ('MAT' if kind == 'mat' else 'EOS', int(num)))
     with open(os.path.join(DECK, 'dx_deck_cards.f90')) as f:
         cards = f.read()

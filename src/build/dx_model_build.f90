@@ -16,6 +16,7 @@ module dx_model_build
                        ASPECT_WARN, &
                        WARP_WARN, erosion_t
    use dx_log, only: log_warn
+   use dx_material, only: has_lamina_form
    use dx_model_input, only: model_input_t, origin_t
    use dx_element_types, only: ES_THK, shell_area, etype_of_shell_elform
    use dx_build_twod, only: part_dim, check_dimension, twod_element
@@ -202,6 +203,7 @@ contains
                return
             end if
             if (p%ero%on .or. c%erode == 1) model%erodes = .true.
+            if (model%mats(p%imat)%m%erodes()) model%erodes = .true.
             if (strain_criteria(p%ero) .and. model%sections(p%isec)%elform == 2) then
                call set_error(error, w//'part '//str(p%label)//': *MAT_ADD_EROSION of '// &
                   'material '//str(p%mid)//': the strain criteria (MNEPS EFFEPS MXEPS EPSSH) '// &
@@ -260,6 +262,13 @@ contains
          p%istupd = c%istupd
          ! the plane-stress plasticity algorithm of the laminae (*CONTROL_SHELL MITER)
          model%mats(p%imat)%m%ps_alg = c%miter
+         if (.not. has_lamina_form(model%mats(p%imat)%m) .and. sec%elform <= 12) then
+            call set_error(error, w//'part '//str(p%label)//': field MID: material '// &
+               str(p%mid)//' (type '//str(model%mats(p%imat)%m%mtype)//') has no plane-'// &
+               'stress (shell lamina) form: use it on solids (*SECTION_SOLID or 2D ELFORM '// &
+               '13-15)')
+            return
+         end if
          if (p%lobatto .and. (sec%nip < 3 .or. sec%nip > 5)) then
             call set_error(error, at(inp, inp%section_src(p%isec))//'section '// &
                str(sec%label)//': field NIP: '//str(sec%nip)//' Lobatto points (*CONTROL_SHELL '// &

@@ -35,7 +35,7 @@ contains
          if (.not. t(i)%generic) cycle
          write(num, '(i3.3)') t(i)%mtype
          call reg%add(trim(t(i)%keyword), read_mat, title=.true.)
-         call reg%add('MAT_'//num, read_mat, title=.true.)
+         if (t(i)%mtype < 900) call reg%add('MAT_'//num, read_mat, title=.true.)
       end do
       t = eos_kinds()
       do i = 1, size(t)
@@ -73,7 +73,8 @@ contains
       character(3) :: num
       do k = 1, size(t)
          write(num, '(i3.3)') t(k)%mtype
-         if (trim(t(k)%keyword) == base .or. prefix//num == base) return
+         if (trim(t(k)%keyword) == base) return
+         if (prefix//num == base .and. t(k)%mtype < 900) return
       end do
       k = 0
    end function find_kind

@@ -281,7 +281,7 @@ contains
       end do
       ! ---- stable time step
       call stable_time_step(blk, part, lc, trd, c, res)
-      call first_error(n, ierr, res)
+      call first_error(n, ierr, blk%failed, res)
    end subroutine hex8_1pt
 
    !> Hourglass forces of a block, added to fx, fy, fz; dehg = hourglass energy increment.
@@ -593,12 +593,15 @@ contains
    end subroutine stable_time_step
 
    !> The first element of a block in error (res%ibad, res%errcode: negative volume or material).
-   subroutine first_error(n, ierr, res)
+   !> An eroded element (failed) carries no stress and no force: its shape, inverted or not,
+   !> is no error (LS-DYNA likewise drops eroded elements from the element loop).
+   subroutine first_error(n, ierr, failed, res)
       integer, intent(in) :: n, ierr(:)
+      logical, intent(in) :: failed(:)
       type(block_result_t), intent(inout) :: res
       integer :: i
       do i = 1, n
-         if (ierr(i) /= 0) then
+         if (ierr(i) /= 0 .and. .not. failed(i)) then
             res%ibad = i
             res%errcode = merge(HEX_ERR_NEGVOL, HEX_ERR_MATERIAL, ierr(i) == HEX_ERR_NEGVOL)
             return
@@ -758,7 +761,7 @@ contains
       end do
       res%dehg = 0.0_wp
       call stable_time_step(blk, part, lc, trd, c, res)
-      call first_error(n, ierr, res)
+      call first_error(n, ierr, blk%failed, res)
    end subroutine hex8_sri
 
    !> Natural derivatives dN_I/dxi_k at the 8 Gauss points (+-1/sqrt(3)), point order = node order.

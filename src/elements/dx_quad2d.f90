@@ -376,6 +376,6 @@ contains
          end do
       end do
       call stable_time_step(blk, part, lc, trd, c, res)
-      call first_error(n, ierr, res)
+      call first_error(n, ierr, blk%failed, res)
    end subroutine quad2d_block
 end module dx_quad2d

@@ -16,6 +16,8 @@ module dx_mat_factory
    use dx_mat_steinberg, only: mat_steinberg_t
    use dx_mat_johnson_cook, only: mat_johnson_cook_t
    use dx_mat_hydro, only: mat_hydro_t
+   use dx_mat_brittle, only: mat_brittle_t
+   use dx_mat_crack, only: mat_crack_t
    use dx_eos, only: eos_t
    use dx_eos_linear_polynomial, only: eos_linear_polynomial_t
    use dx_eos_gruneisen, only: eos_gruneisen_t
@@ -38,7 +40,8 @@ module dx_mat_factory
 
 contains
 
-   !> The material rows: a new material is its module plus one row here.
+   !> The material rows: a new material is its module plus one row here. dynx's own models
+   !> (keywords *DYNX_...) take type numbers 900 and up and have no *MAT_nnn alias.
    function material_kinds() result(t)
       type(model_kind_t), allocatable :: t(:)
       t = [mat_row('MAT_ELASTIC', 1, 1, .true., mat_elastic_t()), &
@@ -48,7 +51,9 @@ contains
            mat_row('MAT_STEINBERG', 11, 4, .true., mat_steinberg_t()), &
            mat_row('MAT_JOHNSON_COOK', 15, 4, .true., mat_johnson_cook_t()), &
            mat_row('MAT_RIGID', 20, 3, .false., mat_rigid_t()), &
-           mat_row('MAT_PIECEWISE_LINEAR_PLASTICITY', 24, 4, .true., mat_piecewise_linear_t())]
+           mat_row('MAT_PIECEWISE_LINEAR_PLASTICITY', 24, 4, .true., mat_piecewise_linear_t()), &
+           mat_row('DYNX_BRITTLE_DAMAGE', 918, 5, .true., mat_brittle_t()), &
+           mat_row('DYNX_BRITTLE_CRACK', 919, 2, .true., mat_crack_t())]
    end function material_kinds
 
    !> The equation-of-state rows: a new equation of state is its module plus one row here.
@@ -82,14 +87,15 @@ contains
       allocate(r%eos, source=proto)
    end function eos_row
 
-   !> "1 (*MAT_ELASTIC), 3 (*MAT_PLASTIC_KINEMATIC), ..." for messages.
+   !> "1 (*MAT_ELASTIC), 3 (*MAT_PLASTIC_KINEMATIC), ..." for messages (LS-DYNA types only).
    function known_kinds(t) result(s)
       type(model_kind_t), intent(in) :: t(:)
       character(:), allocatable :: s
       integer :: i
       s = ''
       do i = 1, size(t)
-         if (i > 1) s = s//', '
+         if (t(i)%mtype >= 900) cycle         ! dynx's own models: not *MAT_ types
+         if (len(s) > 0) s = s//', '
          s = s//str(t(i)%mtype)//' (*'//trim(t(i)%keyword)//')'
       end do
    end function known_kinds

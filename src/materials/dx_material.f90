@@ -28,7 +28,7 @@ module dx_material
    implicit none
    private
    public :: material_t, mat_holder_t, read_mid_ro, fd_step, fd_tangent
-   public :: MAT_ERR_NO_PLANE_STRESS, MAT_ERR_PS_ALG
+   public :: MAT_ERR_NO_PLANE_STRESS, MAT_ERR_PS_ALG, has_lamina_form
 
    !> ierr of update_plane_stress for a model that has no plane-stress (lamina) form
    integer, parameter :: MAT_ERR_NO_PLANE_STRESS = 90
@@ -55,6 +55,7 @@ module dx_material
       procedure(update_i), deferred :: update        !< stress update for one chunk
       procedure :: wave_speed => default_wave_speed  !< dilatational wave speed per point
       procedure :: fails => default_fails            !< element erosion flag per point
+      procedure :: erodes => default_erodes          !< its fails may be true: the run erodes
       procedure :: resolve_curves => default_resolve !< look up curve labels after the deck is read
       procedure :: read_cards => default_read_cards  !< its *MAT_ cards, through the card cursor
       procedure :: reads_curves => default_reads_curves !< setup must wait for the curves
@@ -223,6 +224,23 @@ contains
       if (.false.) sig(1, 1) = sig(1, 1) + dt*hv(1, 1)   ! dt, hv unused by the elastic default
    end subroutine default_update_plane_stress
 
+   !> Whether material m has a lamina (sigma33 = 0) update: one probe of update_plane_stress
+   !> from the zero state with a zero increment (rigid materials are the rigid
+   !> build's); the shell build refuses a model without one (exit 2 naming the part).
+   logical function has_lamina_form(m)
+      class(material_t), intent(in) :: m
+      real(wp) :: de5(1, 5), s5(1, 5), hv(1, max(1, m%nhist()))
+      integer :: ierr(1)
+      has_lamina_form = .true.
+      if (m%is_rigid) return
+      de5 = 0.0_wp
+      s5 = 0.0_wp
+      hv = 0.0_wp
+      ierr = 0
+      call m%update_plane_stress(1, 1.0_wp, de5, s5, hv, ierr)
+      has_lamina_form = ierr(1) /= MAT_ERR_NO_PLANE_STRESS
+   end function has_lamina_form
+
    !> Dilatational wave speed sqrt((K + 4G/3)/rho) with rho = ro/relvol.
    subroutine default_wave_speed(self, nv, relvol, hv, c)
       class(material_t), intent(in) :: self
@@ -245,6 +263,15 @@ contains
       failed = .false.
       if (.false.) failed(1) = hv(1, 1) > self%ro
    end subroutine default_fails
+
+   !> Whether the model's fails can flag points, so that the run does element erosion (contact
+   !> surfaces refreshed, eroded energies in glstat); default .false.: the models that fail
+   !> points without it (FS, FAIL, Johnson-Cook damage) keep their outputs.
+   logical function default_erodes(self)
+      class(material_t), intent(in) :: self
+      default_erodes = .false.
+      if (.false.) default_erodes = self%label < 0
+   end function default_erodes
 
    !> Materials that reference *DEFINE_CURVE ids copy the curves here (default: none).
    subroutine default_resolve(self, curves, error)
