@@ -36,6 +36,7 @@ contains
       if (allocated(error)) call die(error)
       if (par_rank() > 0) call log_set_quiet(.true.)
       cli%opts%ck%raise_here = cli%raise_rank < 0 .or. cli%raise_rank == par_rank()
+      cli%opts%ck%ctl_here = par_rank() == 0      ! rank 0 reads OUT/dynx.ctl for all
    end subroutine launch_start
 
    !> --check: the restart deck too when given, a summary, and the end of the program.
