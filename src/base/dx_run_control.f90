@@ -8,9 +8,8 @@
 !> read while the run goes, with /STOP, /ANIM, /H3D, /RFILE, ...) and LS-DYNA's sense
 !> switches (keyword manual vol. I, "Sense switch controls": sw1 ... sw4 typed after a
 !> ctrl-C). The file is read once and removed (a request is served once); one it cannot
-!> remove is renamed dynx.ctl.done, and one it can neither remove nor rename is left and
-!> not read again until it changes (its size and modification stamp are remembered), so a
-!> request never repeats every poll.
+!> remove is renamed dynx.ctl.done, and when it can do neither the switches are turned off
+!> for the rest of the run with a warning (a request never repeats every poll).
 !> An unknown word is reported (a warning naming the file, its line and the word, with the
 !> words known) and ignored: the run goes on; a run-time request cannot end it with exit 2.
 !> The caller polls it cheaply (dx_checkpoint: at the first cycle, then once per wall-clock
@@ -19,6 +18,8 @@
 module dx_run_control
    use dx_strings, only: str, lower
    use dx_log, only: log_warn
+   use dx_error, only: error_t
+   use dx_io_sys, only: sys_rename
    implicit none
    private
    public :: ctl_read, CTL_STATUS, CTL_PLOT, CTL_DUMP, CTL_STOP, ctl_has, ctl_words
@@ -47,20 +48,20 @@ contains
       if (len(s) > 0) s = s(2:)
    end function ctl_words
 
-   !> The requests of the file at path (0: none or no file), which is then removed. stamp
-   !> keeps the size and time stamp of a file that could not be removed nor renamed.
-   integer function ctl_read(path, stamp) result(req)
+   !> The requests of the file at path (0: none or no file), which is then removed. off:
+   !> set when it could be neither removed nor renamed (the caller stops polling).
+   integer function ctl_read(path, off) result(req)
       character(*), intent(in) :: path
-      integer, intent(inout) :: stamp(2)
+      logical, intent(out) :: off
       logical :: there
-      integer :: u, ios, lineno, cut, k, b, st(13), sz
+      integer :: u, ios, lineno, cut, k, b, sz
       character(512) :: line
       character(:), allocatable :: w
+      type(error_t), allocatable :: e
       req = 0
+      off = .false.
       inquire(file=path, exist=there)
       if (.not. there) return
-      ios = stat_of(path, st)
-      if (ios == 0 .and. stamp(1) >= 0 .and. st(8) == stamp(1) .and. st(10) == stamp(2)) return
       open(newunit=u, file=path, status='old', action='read', iostat=ios)
       if (ios /= 0) return                     ! being written: the next poll reads it
       lineno = 0
@@ -93,18 +94,13 @@ contains
       end do
       close(u, status='delete', iostat=ios)
       inquire(file=path, exist=there)
+      if (there) call sys_rename(path, path//'.done', e)
+      inquire(file=path, exist=there)
       if (there) then
-         call rename(path, path//'.done', ios)
-         inquire(file=path, exist=there)
-         if (there .and. stat_of(path, st) == 0) stamp = [st(8), st(10)]
+         off = .true.
+         call log_warn(path//': cannot remove or rename it: run-time switches off for the '// &
+                       'rest of the run (each request would repeat at every poll)')
       end if
    end function ctl_read
-
-   !> stat(2) through the compiler's intrinsic (size in st(8), mtime in st(10)).
-   integer function stat_of(path, st) result(ios)
-      character(*), intent(in) :: path
-      integer, intent(out) :: st(13)
-      call stat(path, st, ios)
-   end function stat_of
 
 end module dx_run_control

@@ -66,7 +66,7 @@ module dx_checkpoint
       logical :: ctl_here = .true.              !< this rank reads OUT/dynx.ctl (MPI: rank 0)
       real(wp) :: ctl_every = 1.0_wp            !< wall seconds between two reads of it
       real(wp) :: ctl_last = -1.0_wp            !< wall_time() at the last read (-1: none)
-      integer :: ctl_stamp(2) = -1              !< a control file that could not be removed
+      logical :: ctl_off = .false.              !< a control file that could not be removed
       logical :: ctl_status = .false.           !< dynx.ctl asked for a status line: the
                                                 !< run driver prints it after this stage
    contains
@@ -314,11 +314,11 @@ contains
       class(checkpoint_t), intent(inout) :: ck
       real(wp) :: now
       req = 0
-      if (.not. ck%ctl_here .or. .not. allocated(ck%outdir)) return
+      if (.not. ck%ctl_here .or. ck%ctl_off .or. .not. allocated(ck%outdir)) return
       now = wall_time()
       if (ck%ctl_last >= 0.0_wp .and. now - ck%ctl_last < ck%ctl_every) return
       ck%ctl_last = now
-      req = ctl_read(ck%outdir//'/dynx.ctl', ck%ctl_stamp)
+      req = ctl_read(ck%outdir//'/dynx.ctl', ck%ctl_off)
    end function ctl_poll
 
    subroutine next_d3dump(ck, model, path)
