@@ -14,6 +14,7 @@ module dx_io_sys
       c_null_ptr, c_size_t, c_int16_t, c_int32_t, c_int64_t, c_associated, c_f_pointer
    use dx_error, only: error_t, set_error, EXIT_IO, EXIT_INPUT
    use dx_strings, only: string_t
+   use dx_sort, only: sort_names
    implicit none
    private
    public :: sys_rename, sys_mkdir_p, sys_fnmatch, sys_exit, sys_fsync, sys_truncate, &
@@ -501,8 +502,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(c_ptr) :: d, e
       character(kind=c_char), pointer :: b(:)
-      character(:), allocatable :: nm, t
-      integer :: k, i, j
+      character(:), allocatable :: nm, flat(:)
+      integer :: k, i
       integer(c_int) :: r
       allocate(names(0))
       d = c_opendir(dir//c_null_char)
@@ -522,15 +523,11 @@ contains
          names = [names, string_t(nm)]
       end do
       r = c_closedir(d)
-      do i = 2, size(names)                ! insertion sort (folders of tens of files)
-         t = names(i)%s
-         j = i - 1
-         do while (j >= 1)
-            if (.not. lgt(names(j)%s, t)) exit
-            names(j + 1)%s = names(j)%s
-            j = j - 1
-         end do
-         names(j + 1)%s = t
+      if (size(names) < 2) return
+      allocate(character(maxval([(len(names(i)%s), i = 1, size(names))])) :: flat(size(names)))
+      do i = 1, size(names)
+         flat(i) = names(i)%s
       end do
+      names = names(sort_names(flat))
    end subroutine sys_list_dir
 end module dx_io_sys

@@ -20,7 +20,7 @@ module dx_compare_dir
    use dx_strings, only: string_t, str
    use dx_io_sys, only: sys_list_dir, sys_file_kind
    use dx_compare, only: tol_table_t, compare_report_t, read_table, compare_tables, &
-                         compare_files
+                         compare_files, find_name
    implicit none
    private
    public :: compare_by_time, compare_folders
@@ -47,8 +47,8 @@ contains
       if (allocated(error)) then
          call report%fail('test: '//error%message); return
       end if
-      ig = column(gnames, 'time')
-      it = column(tnames, 'time')
+      ig = find_name(gnames, 'time')
+      it = find_name(tnames, 'time')
       if (ig == 0 .or. it == 0) then
          call report%fail('--by-time: no column named time'); return
       end if
@@ -61,17 +61,6 @@ contains
       if (nout > 0) call report%fail('--by-time: '//str(nout)//' gold row(s) outside the '// &
                                      'test''s time range (or entity missing): not compared')
    end subroutine compare_by_time
-
-   integer function column(names, name)
-      character(*), intent(in) :: names(:), name
-      integer :: j
-      column = 0
-      do j = 1, size(names)
-         if (trim(names(j)) == name) then
-            column = j; return
-         end if
-      end do
-   end function column
 
    !> The entity id column: the one after time when it is named *_id, id or body (0: none).
    integer function id_column(names, itime)

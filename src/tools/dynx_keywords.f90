@@ -23,6 +23,7 @@ program dynx_keywords
    use dx_deck_cards, only: deck_t
    use dx_deck_registry, only: registry_t
    use dx_deck, only: new_registry
+   use dx_sort, only: sort_names
    use dx_model_input, only: model_input_t, input_init, string_t
    implicit none
    integer, parameter :: NCARD = 3        !< blank data cards each reader is given
@@ -75,18 +76,7 @@ contains
    function sorted(r) result(ix)
       type(registry_t), intent(in) :: r
       integer, allocatable :: ix(:)
-      integer :: a, b, t
-      ix = [(a, a = 1, r%n)]
-      do a = 2, r%n                  ! insertion sort: a few hundred names
-         t = ix(a)
-         b = a - 1
-         do while (b >= 1)
-            if (llt(r%e(ix(b))%name, r%e(t)%name) .or. r%e(ix(b))%name == r%e(t)%name) exit
-            ix(b + 1) = ix(b)
-            b = b - 1
-         end do
-         ix(b + 1) = t
-      end do
+      ix = sort_names(r%e(1:r%n)%name)
    end function sorted
 
    function options(k) result(s)
