@@ -18,6 +18,14 @@ one row per keyword (or per keyword and its aliases); the first cell names one o
 as `*NAME`. Every keyword dynx reads must be named in a row, and every keyword named in a row
 must be one dynx reads. A `reg%add(` whose name the script cannot parse is an error, so the
 check cannot silently pass over a new form of registration.
+
+The generated reference docs/manual/keywords.md (bin/dynx-keywords: every keyword of the
+registry read by its own reader from blank cards, the fields it takes with their defaults)
+must equal the program's output byte for byte, and name exactly the keywords above (without
+the deck-structure ones). Regenerate it with
+  bin/dynx-keywords -o docs/manual/keywords.md
+(scripts/check_keywords_doc.py --update does that). Without bin/dynx-keywords: a failure
+("make all" builds it).
 """
 import os
 import re
@@ -27,6 +35,8 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 DECK = os.path.join(ROOT, 'src', 'deck')
 FACTORY = os.path.join(ROOT, 'src', 'materials', 'dx_mat_factory.f90')
 DOC = os.path.join(ROOT, 'docs', 'keywords.md')
+GEN_DOC = os.path.join(ROOT, 'docs', 'manual', 'keywords.md')
+GEN_TOOL = os.path.join(ROOT, 'bin', 'dynx-keywords')
 STRUCTURE = ['KEYWORD', 'TITLE', 'INCLUDE', 'INCLUDE_PATH', 'INCLUDE_PATH_RELATIVE', 'PARAMETER',
              'PARAMETER_EXPRESSION', 'END']
 # the dynamic registrations of register_materials (dx_read_materials.f90), read from the
@@ -128,11 +138,46 @@ def documented():
     return names, rows
 
 
+def generated(reg, problems):
+    """Compare docs/manual/keywords.md with bin/dynx-keywords' output (--update: write it)."""
+    import subprocess
+    if not os.access(GEN_TOOL, os.X_OK):
+        problems.append('bin/dynx-keywords not built (make all): the generated reference '
+                        'docs/manual/keywords.md cannot be checked')
+        return
+    out = subprocess.run([GEN_TOOL], capture_output=True, text=True, timeout=60)
+    if out.returncode != 0:
+        problems.append('bin/dynx-keywords failed (exit %d): %s' % (out.returncode, out.stderr))
+        return
+    if '--update' in sys.argv[1:]:
+        with open(GEN_DOC, 'w') as f:
+            f.write(out.stdout)
+    names = set(re.findall(r'^## \*([A-Z0-9_]+)', out.stdout, re.M))
+    for name in sorted(reg - set(STRUCTURE) - names):
+        problems.append('bin/dynx-keywords: *%s is registered but not in the generated '
+                        'reference' % name)
+    for name in sorted(names - reg):
+        problems.append('bin/dynx-keywords: *%s is in the generated reference but not found '
+                        'in the registry sources' % name)
+    try:
+        with open(GEN_DOC) as f:
+            doc = f.read()
+    except OSError:
+        doc = ''
+    if doc != out.stdout:
+        a, b = doc.splitlines(), out.stdout.splitlines()
+        k = next((i for i in range(min(len(a), len(b))) if a[i] != b[i]), min(len(a), len(b)))
+        problems.append('docs/manual/keywords.md:%d differs from bin/dynx-keywords (the reader '
+                        'changed; regenerate: scripts/check_keywords_doc.py --update): %r vs %r'
+                        % (k + 1, a[k] if k < len(a) else '<end>', b[k] if k < len(b) else '<end>'))
+
+
 def main():
     reg, problems = registered()
     if '--list' in sys.argv[1:]:
         print('\n'.join(sorted(reg)))
         return 0
+    generated(reg, problems)
     doc, rows = documented()
     if rows == 0:
         problems.append('docs/keywords.md: no "## Keyword index" table with `*KEYWORD` rows')

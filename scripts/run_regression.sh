@@ -1,8 +1,13 @@
 #!/bin/sh
 # Regression runner: runs every tests/regression/<case>/ (sorted) and checks it.
 #
-#   scripts/run_regression.sh [case...]          run all cases (or only the named ones)
-#   scripts/run_regression.sh --update case...   run the cases and copy their outputs into gold/
+#   scripts/run_regression.sh [--root DIR] [-j N] [case...]
+#                                      run all cases of DIR (default tests/regression), or only
+#                                      the named ones; -j N: N cases at a time (the output is
+#                                      the same as with -j 1, in the same order, printed as the
+#                                      cases end in that order)
+#   scripts/run_regression.sh [--root DIR] --update case...   run the cases and copy their
+#                                      outputs into gold/ (one at a time)
 #
 # A case is a directory with deck.k and optionally:
 #   args        extra command-line arguments for bin/dynx (one line, split on blanks)
@@ -16,30 +21,62 @@
 #               when the case has an expect file); a non-zero exit fails the case (its output
 #               is kept in OUTDIR/check.log and shown on failure)
 # Without 'expect' the run must exit 0 and every gold file must compare equal within tolerance.
-# Outputs go to build/regression/<case>/ (stdout and stderr captured there).
+# Outputs go to build/regression/<case>/ (stdout and stderr captured there; REGRESSION_OUT
+# sets another folder). A case root other than tests/regression: its cases' check scripts
+# run from the top directory of dynx like the others (paths in them are theirs).
 # Prints 'PASS <case>' or 'FAIL <case>: reason' per case, then 'N passed, N failed';
 # exits 1 if any case failed. Environment: DYNX (default bin/dynx), DYNX_COMPARE (default
 # bin/dynx-compare), REGRESSION_TIMEOUT seconds per case (default 900, when timeout(1) exists).
 set -u
 LC_ALL=C
 export LC_ALL
+start=$(pwd)
 cd "$(dirname "$0")/.." || exit 2
 
 DYNX=${DYNX:-bin/dynx}
 COMPARE=${DYNX_COMPARE:-bin/dynx-compare}
 ROOT=tests/regression
-OUTROOT=build/regression
+OUTROOT=${REGRESSION_OUT:-build/regression}
 TIMEOUT=${REGRESSION_TIMEOUT:-900}
 
 update=0
-if [ "${1:-}" = "--update" ]; then
-    update=1
-    shift
-    if [ $# -eq 0 ]; then
-        echo "usage: $0 --update case..." >&2
-        exit 2
-    fi
+jobs=1
+while [ $# -gt 0 ]; do
+    case $1 in
+        --update) update=1; shift ;;
+        --root)
+            [ $# -ge 2 ] || { echo "run_regression: --root needs a folder" >&2; exit 2; }
+            ROOT=$2; shift 2 ;;
+        --root=*) ROOT=${1#--root=}; shift ;;
+        -j)
+            [ $# -ge 2 ] || { echo "run_regression: -j needs a number" >&2; exit 2; }
+            jobs=$2; shift 2 ;;
+        -j*) jobs=${1#-j}; shift ;;
+        --) shift; break ;;
+        -*) echo "run_regression: unknown option $1 (usage: $0 [--root DIR] [-j N] [--update] [case...])" >&2
+            exit 2 ;;
+        *) break ;;
+    esac
+done
+case $jobs in
+    ''|*[!0-9]*|0) echo "run_regression: -j wants a whole number >= 1, got '$jobs'" >&2; exit 2 ;;
+esac
+case $ROOT in
+    /*) ;;
+    *) # relative to where it was called (kept as written when that is the top directory,
+       # so the messages name tests/regression/... as the expect files do)
+       [ "$start" != "$(pwd)" ] && [ -d "$start/$ROOT" ] && ROOT=$start/$ROOT ;;
+esac
+ROOT=${ROOT%/}
+if [ ! -d "$ROOT" ]; then
+    echo "run_regression: no case root $ROOT" >&2
+    exit 2
 fi
+if [ $update -eq 1 ] && [ $# -eq 0 ]; then
+    echo "usage: $0 [--root DIR] --update case..." >&2
+    exit 2
+fi
+[ $update -eq 1 ] && jobs=1
 
 for tool in "$DYNX" "$COMPARE"; do
     if [ ! -x "$tool" ]; then
@@ -168,17 +205,20 @@ check_gold() {
     fi
 }
 
-for c in $cases; do
+# one_case CASE: runs and checks it, prints 'PASS CASE' or 'FAIL CASE: reason' (and the
+# report) or the UPDATE lines
+one_case() {
+    c=$1
     run_case "$c"
     if [ $update -eq 1 ]; then
         if [ -f "$ROOT/$c/expect" ]; then
             echo "UPDATE $c: has an expect file (no gold outputs); nothing copied"
-            continue
+            return
         fi
         if [ "$rc" -ne 0 ]; then
             echo "UPDATE $c: run failed with exit code $rc; gold left unchanged" >&2
-            nfail=$((nfail + 1))
-            continue
+            echo "FAIL $c: run failed"
+            return
         fi
         mkdir -p "$ROOT/$c/gold"
         files=$(ls "$ROOT/$c/gold")
@@ -189,8 +229,7 @@ for c in $cases; do
                 echo "UPDATE $c: gold/$f"
             fi
         done
-        npass=$((npass + 1))
-        continue
+        return
     fi
     if [ -f "$ROOT/$c/expect" ]; then
         report=""
@@ -207,13 +246,53 @@ for c in $cases; do
     fi
     if [ -z "$reason" ]; then
         echo "PASS $c"
-        npass=$((npass + 1))
     else
         echo "FAIL $c: $reason"
         [ -n "$report" ] && printf '%s\n' "$report" | sed '/^$/d; s/^/    /'
-        nfail=$((nfail + 1))
     fi
-done
+}
+
+# the results, one file per case, printed in the cases' order and counted
+resdir=$OUTROOT/.results.$$
+rm -rf "$resdir"
+mkdir -p "$resdir"
+trap 'rm -rf "$resdir"' EXIT
+tally() {   # tally CASE: print its result, count it
+    cat "$resdir/$1"
+    if grep -q "^FAIL $1:" "$resdir/$1"; then
+        nfail=$((nfail + 1))
+    else
+        npass=$((npass + 1))
+    fi
+}
+if [ "$jobs" -le 1 ]; then
+    for c in $cases; do
+        one_case "$c" >"$resdir/$c"
+        tally "$c"
+    done
+else
+    # N lanes, case k in lane k mod N, each lane one case after the other in the background;
+    # a case's result is printed once it and every case before it have ended
+    lane=0
+    while [ $lane -lt "$jobs" ]; do
+        (
+            k=0
+            for c in $cases; do
+                if [ $((k % jobs)) -eq $lane ]; then
+                    one_case "$c" >"$resdir/$c.part"
+                    mv "$resdir/$c.part" "$resdir/$c"
+                fi
+                k=$((k + 1))
+            done
+        ) &
+        lane=$((lane + 1))
+    done
+    for c in $cases; do
+        while [ ! -f "$resdir/$c" ]; do sleep 0.2; done
+        tally "$c"
+    done
+    wait
+fi
 
 if [ $update -eq 1 ]; then
     echo "Reminder: gold files change only with a reason in the commit message."

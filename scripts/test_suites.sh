@@ -40,6 +40,7 @@ suite unit sh scripts/run_unit_tests.sh $unit
 suite mpi sh scripts/run_mpi_tests.sh $mpi
 suite partition sh scripts/run_partition_tests.sh
 suite regression sh scripts/run_regression.sh
+suite regression-runner sh scripts/test_run_regression.sh
 suite diskfull sh scripts/diskfull_check.sh
 suite fuzz python3 scripts/fuzz_decks.py --count 2000 --seed 7 --jobs 2 --harness bin/dynx-fuzz-debug --dynx bin/dynx-debug
 suite fuzz-proc python3 scripts/fuzz_decks.py --count 200 --seed 7 --jobs 2 --restart-share 0.5 --workdir build/fuzz-proc

@@ -9,6 +9,8 @@
 !> go on after an error, and every later error of the block is kept too (the first line of
 !> each, in error%more), so --check lists every bad field of a block in one run; without it
 !> the first error stops the reading of the block (the later reads give their defaults).
+!> Echo (c%echo associated: a run that writes d3hsp, dx_deck_cards' deck_cursor): every
+!> field read is echoed with its value and whether it is the default (dx_card_echo).
 !> Reference: LS-DYNA Keyword User's Manual, Vol. I, "General card format" (fixed 10-column
 !> fields, 8 per card; 20 columns with *KEYWORD LONG=Y or the '+' suffix; free format with
 !> commas) and *PARAMETER.
@@ -16,6 +18,7 @@ module dx_card
    use dx_kinds, only: wp
    use dx_error, only: error_t, MAX_MORE
    use dx_strings, only: str, rstr
+   use dx_card_echo, only: echo_t
    use dx_card_fields, only: card_line_t, block_t, param_t, find_param, std_widths, &
                              data_start, block_title, ncards, card_is_blank, field_text, &
                              field_int, field_real, field_str, error_at_field, error_at_card, &
@@ -49,6 +52,7 @@ module dx_card
       integer :: nerr = 0                   !< errors so far (collect: all of them)
       character(:), allocatable :: more     !< collect: first lines of the later errors
       integer :: nmore = 0, ndrop = 0       !< lines in more; later errors only counted
+      type(echo_t), pointer :: echo => null()   !< the d3hsp echo (null: none)
    contains
       procedure :: next => cursor_next      !< go to the next data card
       procedure :: seek => cursor_seek      !< go to card ic of the block (field 0)
@@ -268,7 +272,10 @@ contains
       val = def
       if (allocated(c%error) .and. .not. c%collect) return
       call remember(c, name)
-      if (c%k > c%nw) return
+      if (c%k > c%nw) then              ! past the card's fields: the default
+         if (associated(c%echo)) call echo_read(c, name, str(val))
+         return
+      end if
       call field_int(c%file, c%params, c%blk, c%ic, c%k, c%w(1:c%nw), name, def, val, e)
       if (allocated(e)) then
          val = def
@@ -283,6 +290,7 @@ contains
       end if
       ! collect mode reads on: a value out of its bounds is not handed on, its default is
       if (c%collect .and. c%nerr > n0) val = def
+      if (associated(c%echo)) call echo_read(c, name, str(val))
    end subroutine cursor_int
 
    !> Next field as a real NAME (blank: def); optional bounds min <= val <= max, val > gt.
@@ -299,7 +307,10 @@ contains
       val = def
       if (allocated(c%error) .and. .not. c%collect) return
       call remember(c, name)
-      if (c%k > c%nw) return
+      if (c%k > c%nw) then
+         if (associated(c%echo)) call echo_read(c, name, rstr(val))
+         return
+      end if
       call field_real(c%file, c%params, c%blk, c%ic, c%k, c%w(1:c%nw), name, def, val, e)
       if (allocated(e)) then
          val = def
@@ -316,7 +327,25 @@ contains
          if (.not. (val > gt)) call c%fail(name, 'must be > '//bound(gt)//', got '//rstr(val))
       end if
       if (c%collect .and. c%nerr > n0) val = def
+      if (associated(c%echo)) call echo_read(c, name, rstr(val))
    end subroutine cursor_real
+
+   !> The field just read (name, its value as text) into the d3hsp echo: a default when the
+   !> field is blank or past the card's fields.
+   subroutine echo_read(c, name, value)
+      class(card_t), intent(inout) :: c
+      character(*), intent(in) :: name, value
+      character(:), allocatable :: t
+      integer :: col
+      logical :: dflt
+      dflt = c%k > c%nw
+      if (.not. dflt) then
+         call field_text(c%blk, c%ic, c%k, c%w(1:c%nw), t, col)
+         dflt = len_trim(t) == 0
+      end if
+      call c%echo%block(c%blk%name, c%blk%ifile, c%file, c%blk%line, c%blk%n)
+      call c%echo%field(c%ic, merge(c%card_line(), 0, c%ic <= c%blk%n), name, value, dflt)
+   end subroutine echo_read
 
    !> A bound as written in a message: an integral value without exponent (0, 1), else rstr.
    function bound(x) result(s)

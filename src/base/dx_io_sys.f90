@@ -13,13 +13,15 @@ module dx_io_sys
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_long, c_ptr, &
       c_null_ptr, c_size_t, c_int16_t, c_int32_t, c_int64_t, c_associated, c_f_pointer
    use dx_error, only: error_t, set_error, EXIT_IO, EXIT_INPUT
+   use dx_strings, only: string_t
+   use dx_sort, only: sort_names
    implicit none
    private
    public :: sys_rename, sys_mkdir_p, sys_fnmatch, sys_exit, sys_fsync, sys_truncate, &
              sys_epoch_seconds, sys_errno, sys_strerror, sys_io_reason, sys_open_write, &
              sys_write_all, sys_close_fd, sys_write_file, sys_file_kind, sys_need_regular, &
              sys_flock_try, sys_getpid, sys_hostname, sys_read_small, &
-             sys_ftruncate_fd
+             sys_ftruncate_fd, sys_list_dir
 
    integer(c_int), parameter :: O_WRONLY = 1_c_int, O_RDWR = 2_c_int, O_CREAT = 64_c_int, &
                                 O_TRUNC = 512_c_int, O_APPEND = 1024_c_int, &
@@ -153,6 +155,21 @@ module dx_io_sys
          integer(c_size_t), value :: n
          integer(c_int) :: r
       end function c_gethostname
+      function c_opendir(path) bind(C, name='opendir') result(d)
+         import :: c_char, c_ptr
+         character(kind=c_char), intent(in) :: path(*)
+         type(c_ptr) :: d
+      end function c_opendir
+      function c_readdir(d) bind(C, name='readdir') result(e)
+         import :: c_ptr
+         type(c_ptr), value :: d
+         type(c_ptr) :: e
+      end function c_readdir
+      function c_closedir(d) bind(C, name='closedir') result(r)
+         import :: c_ptr, c_int
+         type(c_ptr), value :: d
+         integer(c_int) :: r
+      end function c_closedir
    end interface
 
 contains
@@ -475,4 +492,42 @@ contains
    integer(8) function sys_epoch_seconds()
       sys_epoch_seconds = int(c_time(c_null_ptr), 8)
    end function sys_epoch_seconds
+
+   !> The names in folder dir (not '.' and '..'), sorted as the C locale does; an I/O error
+   !> when it cannot be opened. readdir(3)'s struct dirent on Linux (glibc, 64-bit): d_ino
+   !> (8 bytes), d_off (8), d_reclen (2), d_type (1), then d_name (NUL-terminated) at byte 19.
+   subroutine sys_list_dir(dir, names, error)
+      character(*), intent(in) :: dir
+      type(string_t), allocatable, intent(out) :: names(:)
+      type(error_t), allocatable, intent(out) :: error
+      type(c_ptr) :: d, e
+      character(kind=c_char), pointer :: b(:)
+      character(:), allocatable :: nm, flat(:)
+      integer :: k, i
+      integer(c_int) :: r
+      allocate(names(0))
+      d = c_opendir(dir//c_null_char)
+      if (.not. c_associated(d)) then
+         call set_error(error, 'cannot open folder '//dir, EXIT_IO); return
+      end if
+      do
+         e = c_readdir(d)
+         if (.not. c_associated(e)) exit
+         call c_f_pointer(e, b, [19 + 256])
+         nm = ''
+         do k = 20, 19 + 256
+            if (b(k) == c_null_char) exit
+            nm = nm//b(k)
+         end do
+         if (nm == '.' .or. nm == '..') cycle
+         names = [names, string_t(nm)]
+      end do
+      r = c_closedir(d)
+      if (size(names) < 2) return
+      allocate(character(maxval([(len(names(i)%s), i = 1, size(names))])) :: flat(size(names)))
+      do i = 1, size(names)
+         flat(i) = names(i)%s
+      end do
+      names = names(sort_names(flat))
+   end subroutine sys_list_dir
 end module dx_io_sys

@@ -5,10 +5,11 @@ module dx_log
    implicit none
    private
    public :: log_info, log_warn, log_error, log_summary, log_set_quiet, log_set_unit, &
-             nwarnings, log_flush
+             nwarnings, log_flush, log_open_messages
 
    logical :: quiet = .false.
    integer :: extra_unit = -1              !< optional log file (dynx.log in the output dir)
+   integer :: msg_unit = -1                !< the messages file (warnings and errors only)
    integer :: nwarn = 0
    integer, parameter :: max_kept = 50
    character(len=400) :: kept(max_kept)
@@ -39,6 +40,7 @@ contains
       if (nwarn <= max_kept) kept(nwarn) = msg
       if (.not. quiet) write(error_unit, '(a)') 'dynx: warning: '//msg   ! MPI: rank 0 only
       if (extra_unit > 0) write(extra_unit, '(a)') 'dynx: warning: '//msg
+      call to_messages('warning: '//msg)
    end subroutine log_warn
 
    !> An error message on stderr (and the log file).
@@ -46,7 +48,41 @@ contains
       character(*), intent(in) :: msg
       write(error_unit, '(a)') 'dynx: error: '//msg
       if (extra_unit > 0) write(extra_unit, '(a)') 'dynx: error: '//msg
+      call to_messages('error: '//msg)
    end subroutine log_error
+
+   !> Every warning and error from now on also goes to the file path (LS-DYNA's messages
+   !> file), flushed line by line; the warnings kept so far (the deck's) are written first.
+   !> ok: the file could be opened.
+   !> append: a restart goes on with the file of the run it continues.
+   subroutine log_open_messages(path, append, ok)
+      character(*), intent(in) :: path
+      logical, intent(in) :: append
+      logical, intent(out) :: ok
+      integer :: ios, i
+      if (append) then
+         open(newunit=msg_unit, file=path, position='append', action='write', iostat=ios)
+      else
+         open(newunit=msg_unit, file=path, status='replace', action='write', iostat=ios)
+      end if
+      ok = ios == 0
+      if (.not. ok) then
+         msg_unit = -1; return
+      end if
+      do i = 1, min(nwarn, max_kept)
+         write(msg_unit, '(a)') 'warning: '//trim(kept(i))
+      end do
+      if (nwarn > max_kept) write(msg_unit, '(a,i0,a)') 'note: ', nwarn - max_kept, &
+         ' earlier warning(s) not kept (the log has them)'
+      flush(msg_unit)
+   end subroutine log_open_messages
+
+   subroutine to_messages(line)
+      character(*), intent(in) :: line
+      if (msg_unit < 0) return
+      write(msg_unit, '(a)') line
+      flush(msg_unit)
+   end subroutine to_messages
 
    integer function nwarnings()
       nwarnings = nwarn

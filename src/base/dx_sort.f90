@@ -1,10 +1,11 @@
 !> Small sorting helpers shared by the surface builders (contact, conserving contact), the
-!> contact strips and the MPI layer's ordered gathers.
+!> contact strips, the MPI layer's ordered gathers, and name lists (folder listings, the
+!> keyword reference).
 module dx_sort
    use dx_kinds, only: wp
    implicit none
    private
-   public :: sort4, sort_index
+   public :: sort4, sort_index, sort_names
 
    !> Heap sort of an index list idx by (key(idx), idx): a total order, so every rank that
    !> sorts the same data gets the same permutation. Integer or real keys.
@@ -90,4 +91,23 @@ contains
          r = c
       end do
    end subroutine sift
+
+   !> The order of names (idx, a permutation of 1..n) in the C locale (ASCII), stable:
+   !> insertion sort, for lists of tens to hundreds of names.
+   function sort_names(names) result(idx)
+      character(*), intent(in) :: names(:)
+      integer, allocatable :: idx(:)
+      integer :: i, j, t
+      idx = [(i, i = 1, size(names))]
+      do i = 2, size(names)
+         t = idx(i)
+         j = i - 1
+         do while (j >= 1)
+            if (.not. lgt(names(idx(j)), names(t))) exit
+            idx(j + 1) = idx(j)
+            j = j - 1
+         end do
+         idx(j + 1) = t
+      end do
+   end function sort_names
 end module dx_sort

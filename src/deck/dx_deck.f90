@@ -26,6 +26,7 @@ module dx_deck
    use dx_read_output, only: register_output
    use dx_read_beams, only: register_beams
    use dx_model_input, only: model_input_t, input_init, input_finish
+   use dx_card_echo, only: echo_t
    implicit none
    private
    public :: read_deck_input, new_registry
@@ -58,11 +59,13 @@ contains
    !> unknown keyword still stops, naming its family). check (--check): the read goes on
    !> past unknown keywords and reader errors and the error lists all of them, grouped by
    !> family (dx_deck_check), with the output requests dynx accepts but does not write.
-   subroutine read_deck_input(path, inp, error, ignore_unknown, check)
+   !> echo (d3hsp): every keyword block and every field its reader took (dx_card_echo).
+   subroutine read_deck_input(path, inp, error, ignore_unknown, check, echo)
       character(*), intent(in) :: path
       type(model_input_t), intent(out) :: inp
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: ignore_unknown, check
+      type(echo_t), intent(inout), target, optional :: echo
       type(deck_t) :: deck
       type(registry_t) :: reg
       type(check_list_t) :: found
@@ -77,6 +80,7 @@ contains
       call read_cards(path, deck, error)
       if (allocated(error)) return
       deck%check = checking
+      if (present(echo)) deck%echo => echo
       reg = new_registry()
       do ib = 1, deck%nblocks
          associate (blk => deck%blocks(ib))
@@ -105,6 +109,8 @@ contains
                end if
                return
             end if
+            if (present(echo)) call echo%block(blk%name, blk%ifile, deck%files(blk%ifile)%s, &
+                                               blk%line, blk%n)
             call reg%e(k)%read(deck, blk, inp, error)
             ! a blank line standing for the first data card is a card of defaults
             ! (LS-DYNA): read again with it when the block had no data card else (the

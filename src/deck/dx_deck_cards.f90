@@ -15,6 +15,7 @@ module dx_deck_cards
    use dx_model_input, only: string_t
    use dx_io_sys, only: sys_file_kind
    use dx_deck_expr, only: eval_expression
+   use dx_card_echo, only: echo_t
    use dx_card, only: card_line_t, block_t, param_t, card_t, open_card, std_widths, data_start, &
                       block_title, ncards, card_is_blank, field_text, find_param, field_int, &
                       field_real, field_str, error_at_field, error_at_card, error_at_block, &
@@ -42,6 +43,7 @@ module dx_deck_cards
       !> card of defaults: dx_deck gives one back when a block has no data card else)
       integer, allocatable :: trailing(:)
       type(string_t), allocatable :: paths(:)   !< *INCLUDE_PATH(_RELATIVE) directories
+      type(echo_t), pointer :: echo => null()   !< the d3hsp echo the cursors write (null: none)
    end type deck_t
 
 contains
@@ -565,6 +567,7 @@ contains
          call open_card(deck%files(blk%ifile)%s, none, blk, c)
       end if
       c%collect = deck%check     ! --check: every bad field of the block, not the first only
+      c%echo => deck%echo        ! d3hsp: every field read, with its value
    end subroutine deck_cursor
 
    !> Integer field k (widths w) of card ic; blank or missing -> def.

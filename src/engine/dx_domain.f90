@@ -35,10 +35,11 @@ module dx_domain
    public :: domain_t, serial_domain_t, requests_t
 
    !> Stop and dump requests of this rank (the solver's checkpoint extends it): poll fills
-   !> flags (1: stop signal, 2: SIGUSR1, 3: wall-clock limit); a domain that reduces them
-   !> over the ranks stores the result in coll and sets collective.
+   !> flags (1: stop signal, 2: SIGUSR1, 3: wall-clock limit, 4: the run-time switches of
+   !> OUT/dynx.ctl, dx_run_control, read by rank 0 alone); a domain that reduces them over
+   !> the ranks stores the result in coll and sets collective.
    type, abstract :: requests_t
-      integer :: coll(3) = 0                    !< the requests of every rank, reduced
+      integer :: coll(4) = 0                    !< the requests of every rank, reduced
       logical :: collective = .false.           !< coll holds reduced requests
    contains
       procedure(poll_i), deferred :: poll
@@ -48,7 +49,7 @@ module dx_domain
       subroutine poll_i(self, flags)
          import :: requests_t
          class(requests_t), intent(inout) :: self
-         integer, intent(out) :: flags(3)
+         integer, intent(out) :: flags(4)
       end subroutine poll_i
    end interface
 

@@ -180,7 +180,7 @@ contains
       integer, intent(in) :: ibmin
       class(requests_t), intent(inout) :: req
       type(error_t), allocatable, intent(inout) :: error
-      integer :: flags(3)
+      integer :: flags(4)
       call req%poll(flags)
       call par_engine_dt(d%eng, dtcrit, model%dt_elem, error, flags)
       req%coll = flags

@@ -24,7 +24,7 @@ module dx_matsum
    use dx_model, only: model_t
    implicit none
    private
-   public :: matsum_header, matsum_record
+   public :: matsum_header, matsum_record, part_masses
 
    character(*), parameter :: NUM = 'es18.10e3'
 

@@ -4,9 +4,11 @@
 !> die on an error every rank agrees on.
 module dx_launch
    use dx_kinds, only: wp
-   use dx_error, only: error_t, EXIT_CHECKPOINT, exit_process
+   use dx_error, only: error_t, EXIT_CHECKPOINT, exit_process, set_error, EXIT_IO
    use dx_strings, only: str, rstr
-   use dx_log, only: log_info, log_summary, log_set_quiet
+   use dx_log, only: log_info, log_summary, log_set_quiet, log_open_messages
+   use dx_card_echo, only: echo_t
+   use dx_d3hsp, only: write_d3hsp
    use dx_model, only: model_t
    use dx_output, only: output_t
    use dx_integrator, only: integrator_t
@@ -21,7 +23,8 @@ module dx_launch
    use dx_cli, only: cli_t, die
    implicit none
    private
-   public :: launch_start, launch_check_only, launch_lock, launch_output, launch_run
+   public :: launch_start, launch_check_only, launch_lock, launch_output, launch_run, &
+             launch_d3hsp
 
 contains
 
@@ -36,6 +39,7 @@ contains
       if (allocated(error)) call die(error)
       if (par_rank() > 0) call log_set_quiet(.true.)
       cli%opts%ck%raise_here = cli%raise_rank < 0 .or. cli%raise_rank == par_rank()
+      cli%opts%ck%ctl_here = par_rank() == 0      ! rank 0 reads OUT/dynx.ctl for all
    end subroutine launch_start
 
    !> --check: the restart deck too when given, a summary, and the end of the program.
@@ -124,6 +128,28 @@ contains
       call par_agree(error)            ! MPI: rank 0 opened the output; its error stops all
       if (allocated(error)) call die(error, dom)
    end subroutine launch_output
+
+   !> OUTDIR/d3hsp (dx_d3hsp: the deck's echo, the model summary, the smallest time steps)
+   !> and OUTDIR/messages (every warning and error from here on, the deck's warnings first;
+   !> a restart appends to it), by the rank that writes the global files.
+   subroutine launch_d3hsp(cli, model, dom, echo)
+      type(cli_t), intent(in) :: cli
+      type(model_t), intent(inout), target :: model
+      class(domain_t), intent(inout) :: dom
+      type(echo_t), intent(inout) :: echo
+      type(model_t), pointer :: om
+      type(error_t), allocatable :: error
+      logical :: writer, ok
+      call dom%output_target(model, om, writer)
+      if (writer) then
+         call log_open_messages(cli%outdir//'/messages', len(cli%rfile) > 0, ok)
+         if (.not. ok) call set_error(error, 'cannot write '//cli%outdir//'/messages', EXIT_IO)
+         if (.not. allocated(error)) &
+            call write_d3hsp(cli%outdir//'/d3hsp', cli%deck, echo%text(), om, error)
+      end if
+      call par_agree(error)
+      if (allocated(error)) call die(error, dom)
+   end subroutine launch_d3hsp
 
    !> The integrator the deck asks for (dx_solver's factory) run by the one driver, then the
    !> end: exit 5 after a checkpoint stop, the error's code after a failure, else where the

@@ -13,7 +13,8 @@ program dynx
    use dx_cli, only: cli_t, parse_cli, die
    use dx_signals, only: signals_install
    use dx_launch, only: launch_start, launch_check_only, launch_lock, launch_output, &
-                        launch_run
+                        launch_run, launch_d3hsp
+   use dx_card_echo, only: echo_t
    implicit none
    type(cli_t) :: cli
    type(model_t), target :: model
@@ -21,11 +22,16 @@ program dynx
    type(output_t) :: out
    type(error_t), allocatable :: error
    integer :: lock_fd
+   type(echo_t) :: echo             ! the deck as read, for d3hsp
 
    call signals_install()           ! first: a SIGTERM during start-up is a request, not a kill
    call parse_cli(cli)
    call launch_start(cli)
-   call read_deck(cli%deck, model, error, cli%ignore_unknown, cli%check_only)
+   if (cli%check_only) then         ! (--check writes no d3hsp: no echo)
+      call read_deck(cli%deck, model, error, cli%ignore_unknown, cli%check_only)
+   else
+      call read_deck(cli%deck, model, error, cli%ignore_unknown, cli%check_only, echo)
+   end if
    call par_agree(error)            ! MPI: a bad deck stops every rank together
    if (allocated(error)) call die(error)
    call launch_check_only(cli, model)           ! --check ends here
@@ -35,5 +41,6 @@ program dynx
    if (allocated(error)) call die(error, dom)
    call init_state(model, dom)
    call launch_output(cli, model, dom, out)     ! restart, restart deck, output files
+   call launch_d3hsp(cli, model, dom, echo)     ! d3hsp and the messages file
    call launch_run(cli, model, dom, out)        ! the integrator and the end
 end program dynx

@@ -10,6 +10,11 @@
 !>    100 MB/s plus 50 ms);
 !>  - *CONTROL_TERMINATION ENDENG: the energy ratio left the band 1 +- ENDENG/100 (flagged
 !>    by the solver), stop like SIGTERM but with exit code 3 (numerical failure).
+!>  - the run-time switches of OUT/dynx.ctl (dx_run_control: status, plot, dump, stop),
+!>    polled at the first cycle and then once per wall-clock second (ctl_every) by the
+!>    serial run or MPI rank 0 alone; rank 0's request rides in the dt reduction (flag 4,
+!>    MAX: the other ranks send 0), so every rank acts on it at the same cycle boundary.
+!>    A plot state, a dump or a status line changes no result (bitwise).
 !> A numerical failure in the middle of a cycle writes a d3dump marked as not restartable.
 !> MPI runs (dx_par_restart): a signal may reach one rank or all, and each rank has its own
 !> clock, so the decision is collective: each rank's requests (stop signal, SIGUSR1 count, its
@@ -29,6 +34,8 @@ module dx_checkpoint
    use dx_model, only: model_t
    use dx_output, only: output_t
    use dx_domain, only: domain_t, requests_t
+   use dx_run_control, only: ctl_read, ctl_has, ctl_words, CTL_STATUS, CTL_PLOT, CTL_DUMP, &
+                             CTL_STOP
    use dx_signals, only: signal_stop_requested, signal_dump_requested, signal_name, &
                          signal_raise, signal_dump_count, signal_dump_served, signal_dump_serve
    implicit none
@@ -56,6 +63,12 @@ module dx_checkpoint
       real(wp) :: endeng_ratio = 1.0_wp         !< ... with the ratio, cycle and time
       integer :: endeng_cycle = 0
       real(wp) :: endeng_time = 0.0_wp
+      logical :: ctl_here = .true.              !< this rank reads OUT/dynx.ctl (MPI: rank 0)
+      real(wp) :: ctl_every = 1.0_wp            !< wall seconds between two reads of it
+      real(wp) :: ctl_last = -1.0_wp            !< wall_time() at the last read (-1: none)
+      logical :: ctl_off = .false.              !< a control file that could not be removed
+      logical :: ctl_status = .false.           !< dynx.ctl asked for a status line: the
+                                                !< run driver prints it after this stage
    contains
       procedure :: poll => checkpoint_poll
    end type checkpoint_t
@@ -72,7 +85,7 @@ contains
       logical, intent(out) :: stopped
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: now, margin, est
-      integer :: sig, nr
+      integer :: sig, nr, req
       character(:), allocatable :: path, why, comb
       logical :: dumpreq, writer, coll
 
@@ -121,17 +134,34 @@ contains
          dumpreq = ck%coll(2) > signal_dump_served()
          if (dumpreq) call signal_dump_serve(ck%coll(2))
          ck%coll(2) = 0
+         req = ck%coll(4)        ! rank 0's dynx.ctl, the same on every rank
+         ck%coll(4) = 0
       else
          dumpreq = signal_dump_requested()
+         req = ctl_poll(ck)
       end if
-      if (dumpreq) then
+      if (req /= 0) call log_info('dynx: '//ck%outdir//'/dynx.ctl: '//ctl_words(req)// &
+                                  ' at cycle '//str(model%cycle)//', time '//rstr(model%time))
+      ck%ctl_status = ctl_has(req, CTL_STATUS)
+      if (dumpreq .or. ctl_has(req, CTL_DUMP)) then
          call next_d3dump(ck, model, path)
          call write_dump(ck, dom, model, out, path, 'signal', error)
          if (allocated(error)) then
             stopped = .true.; return
          end if
-         call log_info('dynx: SIGUSR1: restart dump '//path//' written at cycle '// &
-                       str(model%cycle)//', time '//rstr(model%time)//'; going on')
+         call log_info('dynx: '//trim(merge('SIGUSR1 ', 'dynx.ctl', dumpreq))//': restart dump '// &
+            path//' written at cycle '//str(model%cycle)//', time '//rstr(model%time)// &
+            '; going on')
+         call log_flush()
+      end if
+      if (ctl_has(req, CTL_PLOT) .and. .not. ctl_has(req, CTL_STOP)) then
+         call dom%write_plot(model, out, error)      ! every rank its part (MPI)
+         if (allocated(error)) then
+            call dom%fail(error)
+            stopped = .true.; return
+         end if
+         call log_info('dynx: dynx.ctl: plot state written at cycle '//str(model%cycle)// &
+                       ', time '//rstr(model%time))
          call log_flush()
       end if
       ! ---- stop requests
@@ -140,6 +170,8 @@ contains
       why = ''
       if (sig /= 0) then
          why = signal_name(sig)
+      else if (ctl_has(req, CTL_STOP)) then
+         why = 'stop in '//ck%outdir//'/dynx.ctl'
       else if (ck%endeng_hit) then
          why = 'ENDENG'
       else if (coll) then
@@ -195,11 +227,12 @@ contains
    !> which checkpoint_stage acts on at the end of the cycle (the same cycle on every rank).
    subroutine checkpoint_poll(self, flags)
       class(checkpoint_t), intent(inout) :: self
-      integer, intent(out) :: flags(3)
+      integer, intent(out) :: flags(4)
       real(wp) :: est, now
       associate (ck => self)
       flags = 0
       flags(1) = signal_stop_requested()
+      flags(4) = ctl_poll(ck)                    ! rank 0 alone; the others send 0
       flags(2) = signal_dump_count()             ! served when the reduced count exceeds
       if (ck%walltime > 0.0_wp) then             ! the count already served
          now = wall_time()
@@ -223,7 +256,7 @@ contains
             integer, intent(inout) :: flags(:)
          end subroutine reduce_max
       end interface
-      integer :: flags(3)
+      integer :: flags(4)
       real(wp) :: est, now
       if (.not. ck%replicated) return
       if (ck%raise_cycle > 0 .and. model%cycle == ck%raise_cycle .and. ck%raise_here) &
@@ -231,6 +264,7 @@ contains
       flags = 0
       flags(1) = signal_stop_requested()
       flags(2) = signal_dump_count()
+      flags(4) = ctl_poll(ck)
       if (ck%walltime > 0.0_wp) then
          now = wall_time()
          est = ck%dump_cost
@@ -273,6 +307,19 @@ contains
       call write_dump(ck, dom, model, out, path, 'failure', e)
       if (allocated(e)) path = ''
    end subroutine checkpoint_failure_dump
+
+   !> The requests of OUT/dynx.ctl when this rank reads it and a read is due (the first call,
+   !> then once per ck%ctl_every wall seconds), else 0.
+   integer function ctl_poll(ck) result(req)
+      class(checkpoint_t), intent(inout) :: ck
+      real(wp) :: now
+      req = 0
+      if (.not. ck%ctl_here .or. ck%ctl_off .or. .not. allocated(ck%outdir)) return
+      now = wall_time()
+      if (ck%ctl_last >= 0.0_wp .and. now - ck%ctl_last < ck%ctl_every) return
+      ck%ctl_last = now
+      req = ctl_read(ck%outdir//'/dynx.ctl', ck%ctl_off)
+   end function ctl_poll
 
    subroutine next_d3dump(ck, model, path)
       type(checkpoint_t), intent(in) :: ck

@@ -81,7 +81,7 @@ contains
       type(energy_guard_t) :: guard
       type(error_t), allocatable :: ioerr
       real(wp) :: t0wall, next_status, t_line
-      type(eta_t) :: eta
+      type(eta_t) :: eta, eta_now
       logical :: stopped, writer
       ck = opts%ck
       guard = opts%guard
@@ -148,6 +148,10 @@ contains
          call checkpoint_stage(ck, dom, model, out, stopped, error)
          if (stopped) then
             call integ%close(model, dom, ck, out, END_STOPPED, error); return
+         end if
+         if (ck%ctl_status .and. writer) then   ! dynx.ctl 'status': a line now (on a copy
+            eta_now = eta                       ! of the interval, so the regular lines'
+            call status_line(model, integ, t0wall, eta_now, model%time)   ! estimates stay)
          end if
       end do
       call integ%close(model, dom, ck, out, END_NORMAL, error)
@@ -290,16 +294,20 @@ contains
 
    !> One status line: cycle, time, dt, the element setting dt, the wall time of this run
    !> (since its start or restart) and the estimated wall time left (eta_left).
-   subroutine status_line(model, integ, t0wall, eta)
+   !> tnow: the time at a cycle boundary (dynx.ctl 'status'; default integ%t).
+   subroutine status_line(model, integ, t0wall, eta, tnow)
       type(model_t), intent(in) :: model
       class(integrator_t), intent(in) :: integ
       real(wp), intent(in) :: t0wall
       type(eta_t), intent(inout) :: eta
+      real(wp), intent(in), optional :: tnow
       character(120) :: line
-      real(wp) :: el, left
+      real(wp) :: el, left, t
+      t = integ%t
+      if (present(tnow)) t = tnow
       el = wall_time() - t0wall
-      left = eta_left(eta, el, model%cycle, integ%t, integ%tend)
-      write(line, '(i11,2es12.4,i12,2f11.2)') model%cycle, integ%t, integ%dt, &
+      left = eta_left(eta, el, model%cycle, t, integ%tend)
+      write(line, '(i11,2es12.4,i12,2f11.2)') model%cycle, t, integ%dt, &
          elem_label(model), el, left
       if (integ%energies) write(line(71:), '(f14.6)') model%energy%ratio
       call log_info(trim(line))

@@ -19,7 +19,7 @@ module dx_compare
    implicit none
    private
    public :: tol_table_t, compare_report_t, qdiff_t, within_tol, read_tolerances, &
-             read_table, compare_tables, compare_files, compare_ascii, compare_h5, &
+             read_table, compare_tables, compare_files, compare_ascii, compare_h5, find_name, &
              DEFAULT_ABS, DEFAULT_REL
 
    character(*), parameter :: NODE_DSETS(4) = [character(12) :: 'coordinates', &

@@ -8,6 +8,7 @@ module dx_deck_model
    use dx_model_input, only: model_input_t
    use dx_deck, only: read_deck_input
    use dx_build, only: build_model
+   use dx_card_echo, only: echo_t
    implicit none
    private
    public :: read_deck
@@ -17,13 +18,15 @@ contains
    !> Read the deck at path into model (x0, v0, blocks, parts, ...; the solver allocates
    !> x, v, f, mass). Unknown keywords are errors unless ignore_unknown (then warnings).
    !> check (--check): every unknown keyword and unsupported option at once (dx_deck).
-   subroutine read_deck(path, model, error, ignore_unknown, check)
+   !> echo: the d3hsp echo of the deck (dx_card_echo).
+   subroutine read_deck(path, model, error, ignore_unknown, check, echo)
       character(*), intent(in) :: path
       type(model_t), intent(out) :: model
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: ignore_unknown, check
+      type(echo_t), intent(inout), optional :: echo
       type(model_input_t) :: inp
-      call read_deck_input(path, inp, error, ignore_unknown, check)
+      call read_deck_input(path, inp, error, ignore_unknown, check, echo)
       if (allocated(error)) return
       model%deck_file = path
       model%deck_files = inp%files

@@ -1,24 +1,29 @@
-!> dynx-compare: numerical comparison of a dynx output file against a gold file.
-!>   dynx-compare [--tol tolfile] [--verbose] gold_file test_file
-!> ASCII time histories (glstat, nodout) by column name and row order; HDF5 plot files
-!> (*.h5) dataset by dataset and state by state. Rule and tolerance file format:
+!> dynx-compare: numerical comparison of a dynx output file against a gold file, or of two
+!> output folders file by file.
+!>   dynx-compare [--tol tolfile] [--verbose] [--by-time] gold test
+!> ASCII time histories (glstat, nodout, rcforc, ...) by column name and row order (--by-time:
+!> each gold row against the test interpolated linearly to its time, dx_compare_dir); HDF5
+!> plot files (*.h5) dataset by dataset and state by state. gold and test both folders: every
+!> file they share that dynx-compare reads (dx_compare_dir). Rule and tolerance file format:
 !> docs/output-format.md (logic in dx_compare).
 !> Exit status: 0 all pass, 1 any failure, 2 usage error (bad arguments, bad tolerance file).
 program dynx_compare
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use dx_error, only: error_t
    use dx_compare, only: tol_table_t, compare_report_t, read_tolerances, compare_files
-   use dx_io_sys, only: sys_exit
+   use dx_io_sys, only: sys_exit, sys_file_kind
+   use dx_compare_dir, only: compare_by_time, compare_folders
    use dx_strings, only: command_arg
    implicit none
    type(tol_table_t) :: tol
    type(compare_report_t) :: report
    type(error_t), allocatable :: error
    character(:), allocatable :: arg, gold, test, tolfile
-   integer :: i, n
-   logical :: verbose, skip
+   integer :: i, n, nfail
+   logical :: verbose, skip, by_time
 
    verbose = .false.
+   by_time = .false.
    skip = .false.
    n = command_argument_count()
    do i = 1, n
@@ -34,6 +39,8 @@ program dynx_compare
          skip = .true.
       case ('--verbose', '-v')
          verbose = .true.
+      case ('--by-time')
+         by_time = .true.
       case ('-h', '--help')
          call usage('')
       case default
@@ -55,7 +62,25 @@ program dynx_compare
          call sys_exit(2)
       end if
    end if
-   call compare_files(gold, test, tol, report)
+   if (sys_file_kind(gold) == 'directory' .and. sys_file_kind(test) == 'directory') then
+      call compare_folders(gold, test, tol, by_time, verbose, output_unit, nfail, error)
+      if (allocated(error)) then
+         write(error_unit, '(a)') 'dynx-compare: error: '//error%message
+         call sys_exit(2)
+      end if
+      if (nfail > 0) call sys_exit(1)
+      call sys_exit(0)
+   end if
+   if (sys_file_kind(gold) == 'directory') call usage(gold//' is a folder and '//test// &
+                                                     ' is not: give two files or two folders')
+   if (sys_file_kind(test) == 'directory') call usage(test//' is a folder and '//gold// &
+                                                     ' is not: give two files or two folders')
+   n = len(gold)
+   if (by_time .and. .not. (n >= 3 .and. gold(max(1, n - 2):) == '.h5')) then
+      call compare_by_time(gold, test, tol, report)
+   else
+      call compare_files(gold, test, tol, report)
+   end if
    call report%print(output_unit, verbose)
    if (.not. report%passed()) call sys_exit(1)
 
@@ -64,7 +89,8 @@ contains
    subroutine usage(msg)
       character(*), intent(in) :: msg
       if (len(msg) > 0) write(error_unit, '(a)') 'dynx-compare: error: '//msg
-      write(error_unit, '(a)') 'usage: dynx-compare [--tol tolfile] [--verbose] gold test'
+      write(error_unit, '(a)') 'usage: dynx-compare [--tol tolfile] [--verbose] [--by-time] '// &
+                               'gold test   (two files or two folders)'
       if (len(msg) == 0) call sys_exit(0)
       call sys_exit(2)
    end subroutine usage
