@@ -2,17 +2,25 @@
 !> part is 2D, the rule that a deck's parts are all 2D of one kind or all 3D, and the checks
 !> and initial volume of one 2D element (nodes in the x-y plane, r = x >= 0 in axisymmetry,
 !> counter-clockwise). Split from dx_model_build (which calls it) to keep that module short.
+!> *BOUNDARY_NON_REFLECTING_2D: the free edges of the 2D elements whose two nodes are in the
+!> node set, each a viscous boundary sigma_n = -rho c_d v_n, tau = -rho c_s v_t (Lysmer &
+!> Kuhlemeyer 1969, Finite dynamic model for infinite media, J. Eng. Mech. Div. ASCE 95:
+!> 859-877), lumped per node with the edge load's weights (dx_loads: L/2 per unit thickness,
+!> L (2 r1 + r2)/6 and L (r1 + 2 r2)/6 per radian in axisymmetry) and the normal and tangent
+!> of the edge at t = 0 (small motion of the boundary): C_I = sum w_I rho (c_d n n + c_s t t),
+!> rho, c_d = sqrt((K + 4G/3)/rho), c_s = sqrt(G/rho) of the element's material at t = 0.
 module dx_build_twod
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error
    use dx_strings, only: str, rstr
    use dx_model, only: model_t, family_t, element_family, elem_volume
    use dx_model_input, only: model_input_t
-   use dx_element_types, only: etype_of_shell_elform, quad2d_area
-   use dx_build_common, only: at, at_line
+   use dx_element_types, only: etype_of_shell_elform, quad2d_area, ETYPE_QUAD2D_PSS
+   use dx_build_common, only: at, at_line, maps_t, set_nodes
+   use dx_sort, only: sort_index
    implicit none
    private
-   public :: part_dim, check_dimension, twod_element
+   public :: part_dim, check_dimension, twod_element, build_nonreflecting
 
 contains
 
@@ -92,4 +100,112 @@ contains
          return
       end if
    end subroutine twod_element
+
+   !> *BOUNDARY_NON_REFLECTING_2D cards -> model%nr_node, model%nr_c (see the module header).
+   !> An edge is free when no other element has it; a card whose set holds no free edge, a
+   !> 3D or plane-stress deck, or a material without elastic moduli is an input error.
+   subroutine build_nonreflecting(inp, model, mp, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(inout) :: model
+      type(maps_t), intent(in) :: mp
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: nodes(:), ed(:, :), idx(:)
+      real(wp), allocatable :: key(:), c(:, :)
+      logical, allocatable :: inset(:), free(:), used(:)
+      real(wp) :: rho, cd, cs, d(2), el, nv(2), tv(2), w(2), ten(3)
+      integer :: i, b, e, k, m, ne, j0, j, a1, a2
+      type(family_t) :: fam
+      if (size(inp%nr2d) == 0) return
+      fam = element_family(model%blocks(1)%etype)
+      if (.not. fam%twod .or. model%blocks(1)%etype == ETYPE_QUAD2D_PSS) then
+         call set_error(error, at(inp, inp%nr2d(1)%src)//'field NSID: a 2D transmitting '// &
+            'boundary needs a plane-strain or axisymmetric deck (*SECTION_SHELL ELFORM 13, '// &
+            '14, 15); this deck is '//trim(merge('2D plane stress (ELFORM 12)', &
+            '3D                         ', fam%twod)))
+         return
+      end if
+      if (inp%ctrl%imp%imflag /= 0) then
+         call set_error(error, at(inp, inp%nr2d(1)%src)//'field NSID: the transmitting '// &
+            'boundary acts in the explicit cycle only; this deck runs implicit '// &
+            '(*CONTROL_IMPLICIT_GENERAL IMFLAG = '//str(inp%ctrl%imp%imflag)//')')
+         return
+      end if
+      allocate(c(3, model%nn), used(model%nn), inset(model%nn))
+      c = 0.0_wp
+      used = .false.
+      do i = 1, size(inp%nr2d)
+         associate (r => inp%nr2d(i))
+            call set_nodes(inp, model, mp, r%nsid, .false., r%src, 'NSID', nodes, error)
+            if (allocated(error)) return
+            inset = .false.
+            inset(nodes) = .true.
+            ! candidate edges (both nodes in the set): (node a, node b, block, element)
+            allocate(ed(4, 0))
+            do b = 1, size(model%blocks)
+               associate (blk => model%blocks(b))
+                  do e = 1, blk%nel
+                     do k = 1, 4
+                        a1 = blk%conn(k, e); a2 = blk%conn(mod(k, 4) + 1, e)
+                        if (a1 /= a2 .and. inset(a1) .and. inset(a2)) ed = reshape([ed, &
+                           [a1, a2, b, e]], [4, size(ed, 2) + 1])
+                     end do
+                  end do
+               end associate
+            end do
+            ne = size(ed, 2)
+            allocate(key(ne), idx(ne), free(ne))
+            do j = 1, ne
+               key(j) = real(min(ed(1, j), ed(2, j)), wp)*model%nn + max(ed(1, j), ed(2, j))
+            end do
+            idx = [(j, j = 1, ne)]
+            call sort_index(idx, key)
+            free = .true.
+            do j = 2, ne
+               if (key(idx(j)) == key(idx(j - 1))) then
+                  free(idx(j)) = .false.; free(idx(j - 1)) = .false.
+               end if
+            end do
+            if (.not. any(free)) then
+               call set_error(error, at(inp, r%src)//'field NSID: node set '//str(r%nsid)// &
+                  ' holds no free edge of a 2D element (both nodes of an element side '// &
+                  'on the boundary of the mesh)')
+               return
+            end if
+            do j = 1, ne            ! element order: the sums do not depend on the sort
+               if (.not. free(j)) cycle
+               a1 = ed(1, j); a2 = ed(2, j)
+               associate (m0 => model%mats(model%parts(model%blocks(ed(3, j))%ipart)%imat)%m)
+                  rho = m0%ro
+                  if (.not. (rho > 0.0_wp .and. m0%bulk > 0.0_wp)) then
+                     call set_error(error, at(inp, r%src)//'field NSID: the edge of nodes '// &
+                        str(model%node_label(a1))//', '//str(model%node_label(a2))// &
+                        ' is on material '//str(m0%label)//', which has no elastic bulk '// &
+                        'modulus and density for the dashpots rho c_d, rho c_s')
+                     return
+                  end if
+                  cd = sqrt((m0%bulk + 4.0_wp*m0%shear/3.0_wp)/rho)
+                  cs = sqrt(max(m0%shear, 0.0_wp)/rho)
+               end associate
+               d = model%x0(1:2, a2) - model%x0(1:2, a1)
+               el = norm2(d)
+               tv = d/el
+               nv = [tv(2), -tv(1)]
+               w = 0.5_wp*el
+               if (fam%axisym) w = el*[2.0_wp*model%x0(1, a1) + model%x0(1, a2), &
+                                        model%x0(1, a1) + 2.0_wp*model%x0(1, a2)]/6.0_wp
+               ten = 0.0_wp
+               if (r%ad) ten = ten + rho*cd*[nv(1)**2, nv(2)**2, nv(1)*nv(2)]
+               if (r%as) ten = ten + rho*cs*[tv(1)**2, tv(2)**2, tv(1)*tv(2)]
+               c(:, a1) = c(:, a1) + w(1)*ten
+               c(:, a2) = c(:, a2) + w(2)*ten
+               used(a1) = .true.; used(a2) = .true.
+            end do
+            deallocate(ed, key, idx, free)
+         end associate
+      end do
+      m = count(used)
+      model%nr_node = pack([(j0, j0 = 1, model%nn)], used)
+      model%nr_c = c(:, model%nr_node)
+      if (m == 0) deallocate(model%nr_node, model%nr_c)
+   end subroutine build_nonreflecting
 end module dx_build_twod

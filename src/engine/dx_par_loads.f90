@@ -16,6 +16,8 @@
 !>   their owners once per cycle (one MPI_Allgatherv, only when a segment load touches a
 !>   shared node). add_external_loads(lm) is the serial chain; its value replaces the
 !>   rank-local one at the shared nodes.
+!> - *BOUNDARY_NON_REFLECTING_2D: nodal dashpots (dx_nonreflecting), node by node after the
+!>   exchange on every rank holding the node: the sub-model keeps the rank's nodes of the list.
 !> - External work: the serial loop adds f.dtavg (v(n-1/2) + v(n+1/2))/2 node by node. The
 !>   term of each owned node that can carry a load is computed locally (the serial
 !>   expression; it depends on that node alone), kept for up to NBUF_MAX cycles and, when a
@@ -80,6 +82,12 @@ contains
          do k = 1, size(model%node_loads)
             model%node_loads(k)%node = loc(model%node_loads(k)%node)
          end do
+      end if
+      if (allocated(g%nr_node)) then      ! non-reflecting nodes on this rank, local numbers
+         i = count(loc(g%nr_node) > 0)
+         model%nr_node = loc(pack(g%nr_node, loc(g%nr_node) > 0))
+         model%nr_c = g%nr_c(:, pack([(k, k = 1, size(g%nr_node))], loc(g%nr_node) > 0))
+         if (i == 0) deallocate(model%nr_node, model%nr_c)
       end if
       if (allocated(g%seg_loads)) then
          model%seg_loads = g%seg_loads(rp%seg_loads)
@@ -160,6 +168,7 @@ contains
       allocate(mark(g%nn))
       mark = allocated(g%body_loads)
       if (allocated(g%node_loads)) mark(g%node_loads(:)%node) = .true.
+      if (allocated(g%nr_node)) mark(g%nr_node) = .true.
       if (allocated(g%seg_loads)) then
          do k = 1, size(g%seg_loads)
             do j = 1, 4

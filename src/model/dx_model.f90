@@ -263,6 +263,10 @@ module dx_model
       type(load_segment_t), allocatable :: seg_loads(:)
       type(rigidwall_t), allocatable :: walls(:)
       type(body_load_t), allocatable :: body_loads(:)   !< *LOAD_BODY_X/Y/Z (dx_load_body)
+      !> *BOUNDARY_NON_REFLECTING_2D (dx_build_twod, dx_nonreflecting): the boundary nodes
+      !> and each one's lumped dashpot tensor (Cxx, Cyy, Cxy): f = -C v in the x-y plane
+      integer, allocatable :: nr_node(:)
+      real(wp), allocatable :: nr_c(:, :)
       type(rigid_system_t), allocatable :: rigid        !< rigid bodies (dx_rigid_types)
       type(contact_set_t), allocatable :: contact   !< *CONTACT_* state (none: not allocated)
       type(emc_system_t), allocatable :: emc        !< conserving rigid contact (dx_emc_types)

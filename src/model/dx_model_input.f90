@@ -22,7 +22,7 @@ module dx_model_input
    public :: model_input_t, string_t, origin_t, label_list_t, segment_list_t, spc_in_t, &
              motion_in_t, ivel_in_t, out_note_t, set_step_in_t, set_gen_in_t, load_node_in_t, load_seg_in_t, wall_in_t, &
              IVEL_SET, IVEL_NODE, IVEL_GEN, add_node, add_element, origin, input_init, &
-             beam_in_t, mass_in_t
+             beam_in_t, mass_in_t, nr2d_in_t
 
    integer, parameter :: IVEL_SET = 1   !< *INITIAL_VELOCITY
    integer, parameter :: IVEL_NODE = 2  !< *INITIAL_VELOCITY_NODE
@@ -116,6 +116,14 @@ module dx_model_input
       type(origin_t) :: src
    end type load_seg_in_t
 
+   !> *BOUNDARY_NON_REFLECTING_2D as read (dx_read_twod): node set, dilatational and shear
+   !> dashpots on (LS-DYNA AD, AS = 0) or off (nonzero)
+   type :: nr2d_in_t
+      integer :: nsid = 0
+      logical :: ad = .true., as = .true.
+      type(origin_t) :: src
+   end type nr2d_in_t
+
    !> *RIGIDWALL_PLANAR as read
    type :: wall_in_t
       integer :: label = 0
@@ -201,6 +209,7 @@ module dx_model_input
       type(load_seg_in_t), allocatable :: seg_loads(:)
       type(wall_in_t), allocatable :: walls(:)
       type(body_load_in_t), allocatable :: body_loads(:)   !< *LOAD_BODY_X/Y/Z
+      type(nr2d_in_t), allocatable :: nr2d(:)              !< *BOUNDARY_NON_REFLECTING_2D
       type(rigid_input_t) :: rigid                         !< rigid-body keywords
       ! --- controls and output requests
       type(control_t) :: ctrl
@@ -238,6 +247,7 @@ contains
                inp%out_notes(0), inp%set_gens(0), inp%node_set_loads(0))
       allocate(inp%body_loads(0), inp%rigid%inertias(0), inp%rigid%nrbs(0), &
                inp%rigid%extras(0), inp%rigid%motions(0))
+      allocate(inp%nr2d(0))
       allocate(inp%node_label(0), inp%x(3, 0), inp%node_tc(0), inp%node_rc(0), &
                inp%node_src(2, 0))
       allocate(inp%elem_label(0), inp%elem_pid(0), inp%elem_conn(SOLID_CARD_NODES, 0), &

@@ -22,7 +22,7 @@ module dx_explicit
    use dx_run_state, only: run_state_t
    use dx_element, only: element_block_pass, block_result_t, ELEM_ERR_NEGVOL, family_t, &
                          element_family, element_rotary_inertia
-   use dx_loads, only: add_external_loads
+   use dx_loads, only: add_external_loads, add_nonreflecting
    use dx_constraints, only: apply_spc, apply_prescribed, apply_spc_rot, apply_prescribed_rot
    use dx_output, only: output_t
    use dx_checkpoint, only: checkpoint_t, checkpoint_failure_dump, checkpoint_energy_band
@@ -228,6 +228,9 @@ contains
          end if
          ! ---- shared-node exchange (MPI): serial-order sums at shared nodes, contact forces
          call dom%exchange(model)
+         ! non-reflecting boundary: nodal dashpots on v(n-1/2), after the exchange (the
+         ! same bits on every rank holding the node)
+         if (loads) call add_nonreflecting(model, fext)
          if (loads) model%f = model%f + fext
          ! ---- time step
          dt = model%ctrl%tssfac*dtcrit

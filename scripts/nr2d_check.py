@@ -1,0 +1,92 @@
+#!/usr/bin/python3
+"""Checks of the 2D non-reflecting boundary cases (tests/regression/nr2d_*/check;
+*BOUNDARY_NON_REFLECTING_2D, dx_nonreflecting).
+
+  nr2d_check.py reflect OUT REF TOL [FREE]
+      OUT: the run with the non-reflecting boundary; REF: the same mesh extended so far that no
+      reflection comes back within the run (gen_nr2d_decks.py): the reflected wave at each
+      history node is v_OUT - v_REF (in-plane speed, over every nodout line), its peak against
+      the incident peak max |v_REF| at that node; the largest ratio over the nodes <= TOL.
+      FREE (optional): the same with a free boundary, whose ratio is printed (the reflection
+      the boundary removes) and must exceed 10 TOL.
+  nr2d_check.py absorbed OUT TOL AFTER TOLK
+      the energy balance of the absorbing run once the wave has left (t >= AFTER): |KE + IE -
+      external work| <= TOL max |external work| on those glstat lines (the run starts at
+      rest; the dashpots' work is in the external work;
+      while the wave crosses the boundary the ratio is off by up to one cycle's energy flux,
+      dt/duration of the pulse, as the work of a step is booked with the step), and the
+      kinetic energy at the end <= TOLK times its peak (the wave has gone).
+"""
+import math
+import sys
+
+from ascii_out import nodout_series, read_columns
+
+
+def speeds(out):
+    return {n: [(t, math.hypot(v[0], v[1]), v) for t, v in rows]
+            for n, rows in nodout_series(out, 'vel').items()}
+
+
+def at(rows, t):
+    """the velocity of rows (t, speed, v) at time t, linear between the lines (the runs' steps
+    part by round-off once the reflection changes the elements' lengths)"""
+    lo, hi = 0, len(rows) - 1
+    while hi - lo > 1:
+        mid = (lo + hi)//2
+        if rows[mid][0] <= t:
+            lo = mid
+        else:
+            hi = mid
+    (t0, _, v0), (t1, _, v1) = rows[lo], rows[hi]
+    w = (t - t0)/(t1 - t0)
+    return [a + w*(b - a) for a, b in zip(v0, v1)]
+
+
+def reflect_ratio(out, ref):
+    a, b = speeds(out), speeds(ref)
+    worst, where = 0.0, None
+    for n in sorted(a):
+        ra, rb = a[n], b[n]
+        inc = max(s for _, s, _ in rb)
+        if inc <= 0.0:
+            continue
+        refl = 0.0
+        for t, _, v in ra:
+            if t > rb[-1][0]:          # the last line of a run that ends a step later
+                break
+            w = at(rb, t)
+            refl = max(refl, math.hypot(v[0] - w[0], v[1] - w[1]))
+        if refl/inc > worst:
+            worst, where = refl/inc, n
+    return worst, where
+
+
+def reflect(argv):
+    out, ref, tol = argv[0], argv[1], float(argv[2])
+    r, n = reflect_ratio(out, ref)
+    print(f'reflected/incident peak speed: {r:.4f} (node {n}), bound {tol}')
+    ok = r <= tol
+    if len(argv) > 3:
+        rf, nf = reflect_ratio(argv[3], ref)
+        print(f'free boundary: {rf:.4f} (node {nf}), must exceed {10*tol}')
+        ok = ok and rf > 10*tol
+    if not ok:
+        raise SystemExit('FAIL')
+
+
+def absorbed(argv):
+    out, tol, after, tolk = argv[0], float(argv[1]), float(argv[2]), float(argv[3])
+    rows = read_columns(out + '/glstat')
+    wmax = max(abs(r['external_work']) for r in rows.values())
+    worst = max(abs(r['total'] - r['external_work']) for t, r in rows.items() if t >= after)
+    kmax = max(r['kinetic'] for r in rows.values())
+    kend = rows[max(rows)]['kinetic']
+    print(f'|KE + IE - external work|/max external work <= {worst/wmax:.3e} for t >= {after} '
+          f'(bound {tol}); kinetic energy at the end / peak {kend/kmax:.3e} (bound {tolk})')
+    if worst > tol*wmax or kend > tolk*kmax:
+        raise SystemExit('FAIL')
+
+
+if __name__ == '__main__':
+    {'reflect': reflect, 'absorbed': absorbed}[sys.argv[1]](sys.argv[2:])
