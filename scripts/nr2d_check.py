@@ -16,6 +16,17 @@
       while the wave crosses the boundary the ratio is off by up to one cycle's energy flux,
       dt/duration of the pulse, as the work of a step is booked with the step), and the
       kinetic energy at the end <= TOLK times its peak (the wave has gone).
+  nr2d_check.py momentum OUT XMOM YMOM TOL
+      the momentum of the last glstat line against the impulse (XMOM, YMOM) of the loads
+      (*DYNX_PRESSURE_PULSE, *DYNX_PRESSURE_TABLE on a free body), each within TOL of the
+      larger of the two; and |energy ratio - 1| <= TOL at the end.
+  nr2d_check.py tableimpulse OUT TABLE TOL
+      the same for the y momentum of a body whose top face (normal +y) carries the table
+      p(r, t) of the data file TABLE over r = 0 .. the last radius: the impulse per radian
+      -int int p r dr dt, exact for the bilinear table (Gauss points per cell).
+  nr2d_check.py deposit OUT ENERGY TOL
+      *DYNX_ENERGY_DEPOSITION: kinetic + internal + hourglass energy at the end equals the
+      deposited ENERGY within TOL relative, and |energy ratio - 1| <= TOL on every line.
 """
 import math
 import sys
@@ -88,5 +99,69 @@ def absorbed(argv):
         raise SystemExit('FAIL')
 
 
+def last(out):
+    rows = read_columns(out + '/glstat')
+    return rows, rows[max(rows)]
+
+
+def momentum(argv):
+    out, xm, ym, tol = argv[0], float(argv[1]), float(argv[2]), float(argv[3])
+    _, r = last(out)
+    big = max(abs(xm), abs(ym))
+    ex, ey = abs(r['xmom'] - xm)/big, abs(r['ymom'] - ym)/big
+    er = abs(r['energy_ratio'] - 1.0)
+    print(f'momentum ({r["xmom"]:.6e}, {r["ymom"]:.6e}) against the impulse ({xm:.6e}, '
+          f'{ym:.6e}): errors {ex:.2e}, {ey:.2e}; |energy ratio - 1| {er:.2e} (bound {tol})')
+    if max(ex, ey, er) > tol:
+        raise SystemExit('FAIL')
+
+
+def read_ptable(path):
+    nums = []
+    for line in open(path):
+        nums += [float(w) for w in line.split('#')[0].replace(',', ' ').split()]
+    nr, nt = int(nums[0]), int(nums[1])
+    r, t = nums[2:2 + nr], nums[2 + nr:2 + nr + nt]
+    p = [nums[2 + nr + nt + j*nr:2 + nr + nt + (j + 1)*nr] for j in range(nt)]
+    return r, t, p
+
+
+def table_impulse(path):
+    """int_t int_0^rmax p(r, t) r dr dt of the bilinear table: 3 Gauss points per r cell
+    (p r is quadratic there), 2 per t cell (p is linear there): exact"""
+    r, t, p = read_ptable(path)
+    g3 = [(-math.sqrt(0.6), 5/9), (0.0, 8/9), (math.sqrt(0.6), 5/9)]
+    g2 = [(-1/math.sqrt(3), 1.0), (1/math.sqrt(3), 1.0)]
+    total = 0.0
+    for j in range(len(t) - 1):
+        for i in range(len(r) - 1):
+            for xt, wt in g2:
+                b = 0.5*(1 + xt)
+                for xr, wr in g3:
+                    a = 0.5*(1 + xr)
+                    rr = r[i] + a*(r[i + 1] - r[i])
+                    pp = (1 - b)*((1 - a)*p[j][i] + a*p[j][i + 1]) + \
+                        b*((1 - a)*p[j + 1][i] + a*p[j + 1][i + 1])
+                    total += 0.25*wt*wr*(t[j + 1] - t[j])*(r[i + 1] - r[i])*pp*rr
+    return total
+
+
+def tableimpulse(argv):
+    out, path, tol = argv[0], argv[1], float(argv[2])
+    momentum([out, '0.0', str(-table_impulse(path)), str(tol)])
+
+
+def deposit(argv):
+    out, energy, tol = argv[0], float(argv[1]), float(argv[2])
+    rows, r = last(out)
+    e = r['kinetic'] + r['internal'] + r['hourglass']
+    er = max(abs(x['energy_ratio'] - 1.0) for x in rows.values())
+    print(f'KE + IE + HG at the end {e:.9e} against the deposited {energy:.9e}: '
+          f'{abs(e - energy)/energy:.2e}; |energy ratio - 1| <= {er:.2e} (bound {tol})')
+    if abs(e - energy) > tol*energy or er > tol:
+        raise SystemExit('FAIL')
+
+
 if __name__ == '__main__':
-    {'reflect': reflect, 'absorbed': absorbed}[sys.argv[1]](sys.argv[2:])
+    {'reflect': reflect, 'absorbed': absorbed, 'momentum': momentum,
+     'tableimpulse': tableimpulse, 'deposit': deposit}[sys.argv[1]](sys.argv[2:])

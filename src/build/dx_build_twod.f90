@@ -14,13 +14,14 @@ module dx_build_twod
    use dx_error, only: error_t, set_error
    use dx_strings, only: str, rstr
    use dx_model, only: model_t, family_t, element_family, elem_volume
-   use dx_model_input, only: model_input_t
-   use dx_element_types, only: etype_of_shell_elform, quad2d_area, ETYPE_QUAD2D_PSS
+   use dx_model_input, only: model_input_t, origin_t
+   use dx_element_types, only: etype_of_shell_elform, quad2d_area, ETYPE_QUAD2D_PSS, ES_THK
    use dx_build_common, only: at, at_line, maps_t, set_nodes
    use dx_sort, only: sort_index
    implicit none
    private
-   public :: part_dim, check_dimension, twod_element, build_nonreflecting
+   public :: part_dim, check_dimension, twod_element, build_nonreflecting, &
+             build_edge_pressures, build_deposits
 
 contains
 
@@ -109,11 +110,11 @@ contains
       type(model_t), intent(inout) :: model
       type(maps_t), intent(in) :: mp
       type(error_t), allocatable, intent(out) :: error
-      integer, allocatable :: nodes(:), ed(:, :), idx(:)
-      real(wp), allocatable :: key(:), c(:, :)
-      logical, allocatable :: inset(:), free(:), used(:)
+      integer, allocatable :: ed(:, :)
+      real(wp), allocatable :: c(:, :)
+      logical, allocatable :: used(:)
       real(wp) :: rho, cd, cs, d(2), el, nv(2), tv(2), w(2), ten(3)
-      integer :: i, b, e, k, m, ne, j0, j, a1, a2
+      integer :: i, m, ne, j0, j, a1, a2
       type(family_t) :: fam
       if (size(inp%nr2d) == 0) return
       fam = element_family(model%blocks(1)%etype)
@@ -130,49 +131,15 @@ contains
             '(*CONTROL_IMPLICIT_GENERAL IMFLAG = '//str(inp%ctrl%imp%imflag)//')')
          return
       end if
-      allocate(c(3, model%nn), used(model%nn), inset(model%nn))
+      allocate(c(3, model%nn), used(model%nn))
       c = 0.0_wp
       used = .false.
       do i = 1, size(inp%nr2d)
          associate (r => inp%nr2d(i))
-            call set_nodes(inp, model, mp, r%nsid, .false., r%src, 'NSID', nodes, error)
+            call free_edges(inp, model, mp, r%nsid, r%src, ed, error)
             if (allocated(error)) return
-            inset = .false.
-            inset(nodes) = .true.
-            ! candidate edges (both nodes in the set): (node a, node b, block, element)
-            allocate(ed(4, 0))
-            do b = 1, size(model%blocks)
-               associate (blk => model%blocks(b))
-                  do e = 1, blk%nel
-                     do k = 1, 4
-                        a1 = blk%conn(k, e); a2 = blk%conn(mod(k, 4) + 1, e)
-                        if (a1 /= a2 .and. inset(a1) .and. inset(a2)) ed = reshape([ed, &
-                           [a1, a2, b, e]], [4, size(ed, 2) + 1])
-                     end do
-                  end do
-               end associate
-            end do
             ne = size(ed, 2)
-            allocate(key(ne), idx(ne), free(ne))
-            do j = 1, ne
-               key(j) = real(min(ed(1, j), ed(2, j)), wp)*model%nn + max(ed(1, j), ed(2, j))
-            end do
-            idx = [(j, j = 1, ne)]
-            call sort_index(idx, key)
-            free = .true.
-            do j = 2, ne
-               if (key(idx(j)) == key(idx(j - 1))) then
-                  free(idx(j)) = .false.; free(idx(j - 1)) = .false.
-               end if
-            end do
-            if (.not. any(free)) then
-               call set_error(error, at(inp, r%src)//'field NSID: node set '//str(r%nsid)// &
-                  ' holds no free edge of a 2D element (both nodes of an element side '// &
-                  'on the boundary of the mesh)')
-               return
-            end if
             do j = 1, ne            ! element order: the sums do not depend on the sort
-               if (.not. free(j)) cycle
                a1 = ed(1, j); a2 = ed(2, j)
                associate (m0 => model%mats(model%parts(model%blocks(ed(3, j))%ipart)%imat)%m)
                   rho = m0%ro
@@ -200,7 +167,6 @@ contains
                c(:, a2) = c(:, a2) + w(2)*ten
                used(a1) = .true.; used(a2) = .true.
             end do
-            deallocate(ed, key, idx, free)
          end associate
       end do
       m = count(used)
@@ -208,4 +174,141 @@ contains
       model%nr_c = c(:, model%nr_node)
       if (m == 0) deallocate(model%nr_node, model%nr_c)
    end subroutine build_nonreflecting
+
+   !> The free edges (sides no other element has) of the 2D elements whose two nodes are in
+   !> node set nsid: ed(:, k) = (node a, node b, block, element), a -> b counter-clockwise in
+   !> the element (the outward normal is (dy, -dx)), in block and element order. None: an
+   !> error naming the card (src) and field NSID.
+   subroutine free_edges(inp, model, mp, nsid, src, ed, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(in) :: model
+      type(maps_t), intent(in) :: mp
+      integer, intent(in) :: nsid
+      type(origin_t), intent(in) :: src
+      integer, allocatable, intent(out) :: ed(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: nodes(:), idx(:)
+      real(wp), allocatable :: key(:)
+      logical, allocatable :: inset(:), free(:)
+      integer :: b, e, k, j, ne, a1, a2
+      call set_nodes(inp, model, mp, nsid, .false., src, 'NSID', nodes, error)
+      if (allocated(error)) return
+      allocate(inset(model%nn), ed(4, 0))
+      inset = .false.
+      inset(nodes) = .true.
+      do b = 1, size(model%blocks)
+         associate (blk => model%blocks(b))
+            do e = 1, blk%nel
+               do k = 1, 4
+                  a1 = blk%conn(k, e); a2 = blk%conn(mod(k, 4) + 1, e)
+                  if (a1 /= a2 .and. inset(a1) .and. inset(a2)) ed = reshape([ed, &
+                     [a1, a2, b, e]], [4, size(ed, 2) + 1])
+               end do
+            end do
+         end associate
+      end do
+      ne = size(ed, 2)
+      allocate(key(ne), idx(ne), free(ne))
+      do j = 1, ne
+         key(j) = real(min(ed(1, j), ed(2, j)), wp)*model%nn + max(ed(1, j), ed(2, j))
+      end do
+      idx = [(j, j = 1, ne)]
+      call sort_index(idx, key)
+      free = .true.
+      do j = 2, ne
+         if (key(idx(j)) == key(idx(j - 1))) then
+            free(idx(j)) = .false.; free(idx(j - 1)) = .false.
+         end if
+      end do
+      if (.not. any(free)) then
+         call set_error(error, at(inp, src)//'field NSID: node set '//str(nsid)// &
+            ' holds no free edge of a 2D element (both nodes of an element side on the '// &
+            'boundary of the mesh)')
+         return
+      end if
+      ed = ed(:, pack([(j, j = 1, ne)], free))
+   end subroutine free_edges
+
+   !> *DYNX_PRESSURE_TABLE, *DYNX_PRESSURE_PULSE -> model%edge_pressures: per free edge of
+   !> the set its radius (table) or cos**2 theta (pulse) and per node its share of the
+   !> force at unit pressure, -w_I (dy, -dx) with the edge load's weights (dx_loads), t = 0.
+   subroutine build_edge_pressures(inp, model, mp, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(inout) :: model
+      type(maps_t), intent(in) :: mp
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: ed(:, :)
+      integer :: i, j, ne, a1, a2
+      real(wp) :: d(2), w(2), cth
+      type(family_t) :: fam
+      if (size(inp%edge_press) == 0) return
+      fam = element_family(model%blocks(1)%etype)
+      if (.not. fam%twod) then
+         call set_error(error, at(inp, inp%edge_press(1)%src)//'field NSID: a pressure on '// &
+            'element edges needs a 2D deck (*SECTION_SHELL ELFORM 12-15); this deck is 3D')
+         return
+      end if
+      allocate(model%edge_pressures(size(inp%edge_press)))
+      do i = 1, size(inp%edge_press)
+         associate (r => inp%edge_press(i), ep => model%edge_pressures(i))
+            call free_edges(inp, model, mp, r%nsid, r%src, ed, error)
+            if (allocated(error)) return
+            ne = size(ed, 2)
+            ep%kind = r%kind
+            if (r%kind == 1) then
+               ep%r = r%r; ep%t = r%t; ep%p = r%sf*r%p
+            else
+               ep%pmax = r%pmax; ep%t0 = r%t0; ep%fwhm = r%fwhm
+            end if
+            allocate(ep%re(ne), ep%ce(ne), ep%node(2*ne), ep%edge(2*ne), ep%w(2, 2*ne))
+            do j = 1, ne
+               a1 = ed(1, j); a2 = ed(2, j)
+               d = model%x0(1:2, a2) - model%x0(1:2, a1)
+               w = 0.5_wp
+               if (fam%axisym) w = [2.0_wp*model%x0(1, a1) + model%x0(1, a2), &
+                                    model%x0(1, a1) + 2.0_wp*model%x0(1, a2)]/6.0_wp
+               if (fam%twod .and. model%blocks(1)%etype == ETYPE_QUAD2D_PSS) &
+                  w = w*model%blocks(ed(3, j))%es(ed(4, j), model%blocks(ed(3, j))%esc(ES_THK))
+               ep%re(j) = 0.5_wp*(model%x0(1, a1) + model%x0(1, a2))
+               cth = -dot_product([d(2), -d(1)], r%dir)/norm2(d)   ! -n . light direction
+               ep%ce(j) = max(cth, 0.0_wp)**2
+               ep%node(2*j - 1:2*j) = [a1, a2]
+               ep%edge(2*j - 1:2*j) = j
+               ep%w(:, 2*j - 1) = -w(1)*[d(2), -d(1)]
+               ep%w(:, 2*j) = -w(2)*[d(2), -d(1)]
+            end do
+         end associate
+      end do
+   end subroutine build_edge_pressures
+
+   !> *DYNX_ENERGY_DEPOSITION -> model%deposits (the part's index and initial volume)
+   subroutine build_deposits(inp, model, mp, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(inout) :: model
+      type(maps_t), intent(in) :: mp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i, b
+      if (size(inp%deposits) == 0) return
+      allocate(model%deposits(size(inp%deposits)))
+      do i = 1, size(inp%deposits)
+         associate (r => inp%deposits(i), dp => model%deposits(i))
+            dp%ipart = mp%part%get(r%pid)
+            if (dp%ipart == 0) then
+               call set_error(error, at(inp, r%src)//'field PID: part '//str(r%pid)// &
+                  ' is not defined (*PART)')
+               return
+            end if
+            dp%rate = r%rate; dp%t1 = r%t1; dp%t2 = r%t2
+            do b = 1, size(model%blocks)
+               if (model%blocks(b)%ipart == dp%ipart) dp%vpart = dp%vpart + &
+                  sum(model%blocks(b)%vol0(1:model%blocks(b)%nel))
+            end do
+            if (.not. dp%vpart > 0.0_wp) then
+               call set_error(error, at(inp, r%src)//'field PID: part '//str(r%pid)// &
+                  ' has no elements with a volume to take the energy')
+               return
+            end if
+         end associate
+      end do
+   end subroutine build_deposits
 end module dx_build_twod

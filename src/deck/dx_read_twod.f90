@@ -3,12 +3,23 @@
 !> NSID a node set whose element edges form the transmitting boundary; AD, AS the activation
 !> of the dilatational and the shear dashpot: 0 on (the default), nonzero off). The edges
 !> and dashpots are made at build (dx_build_twod), the forces in the cycle (dx_nonreflecting).
+!> dynx keywords of the laser-damage scenes (seed article 3; docs/keywords.md):
+!> *DYNX_PRESSURE_TABLE card 1: NSID SF; card 2: FILE (columns 1-80, found as an *INCLUDE
+!>   file): a pressure p(r, t) on the free edges of node set NSID, bilinear in the table of
+!>   the data file (LASNEX-style: '#' comments, then NR NT, the NR radii, the NT times, and
+!>   NT rows of NR pressures, free format; decks/pressure_table/README.md).
+!> *DYNX_PRESSURE_PULSE card 1: NSID PMAX T0 FWHM DX DY: a Gaussian pulse in time with a
+!>   cos**2 distribution over the surface, theta between the light's direction (DX, DY) and
+!>   the inward normal, zero where the surface faces away.
+!> *DYNX_ENERGY_DEPOSITION card 1: PID RATE TSTART TEND: energy into part PID at the constant
+!>   RATE (per unit thickness or per radian in 2D) from TSTART to TEND.
 module dx_read_twod
+   use dx_kinds, only: wp
    use dx_error, only: error_t
-   use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, data_start
+   use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, data_start, include_path
    use dx_deck_registry, only: registry_t
-   use dx_model_input, only: model_input_t, origin, nr2d_in_t
-   use dx_strings, only: str
+   use dx_model_input, only: model_input_t, origin, nr2d_in_t, edge_press_in_t, deposit_in_t
+   use dx_strings, only: str, rstr
    implicit none
    private
    public :: register_twod
@@ -19,6 +30,9 @@ contains
    subroutine register_twod(reg)
       type(registry_t), intent(inout) :: reg
       call reg%add('BOUNDARY_NON_REFLECTING_2D', read_nonreflecting_2d)
+      call reg%add('DYNX_PRESSURE_TABLE', read_pressure_table)
+      call reg%add('DYNX_PRESSURE_PULSE', read_pressure_pulse)
+      call reg%add('DYNX_ENERGY_DEPOSITION', read_energy_deposition)
    end subroutine register_twod
 
    !> *BOUNDARY_NON_REFLECTING_2D: one card NSID AD AS per boundary
@@ -49,4 +63,194 @@ contains
       end do
       call c%done(error)
    end subroutine read_nonreflecting_2d
+
+   !> *DYNX_PRESSURE_TABLE: card pairs NSID SF / FILE
+   subroutine read_pressure_table(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      type(card_t) :: c
+      type(edge_press_in_t) :: b
+      character(:), allocatable :: fname, msg
+      integer :: ic
+      call deck_cursor(deck, blk, c)
+      call c%need(data_start(blk) + 1, 'missing card '//str(data_start(blk) + 1)//' (FILE)')
+      do ic = data_start(blk), blk%n - 1, 2
+         if (c%halt()) exit
+         call c%seek(ic)
+         b = edge_press_in_t(kind=1)
+         call c%id('NSID', b%nsid)
+         call c%real('SF', 1.0_wp, b%sf)
+         if (b%sf == 0.0_wp) b%sf = 1.0_wp
+         call c%seek(ic + 1)
+         call c%text_field(1, [80], fname)
+         if (c%halt()) exit
+         if (len_trim(fname) == 0) then
+            call c%fail('FILE', 'the name of the pressure table file is blank')
+            exit
+         end if
+         fname = include_path(deck, deck%files(blk%ifile)%s, fname)   ! as *INCLUDE
+         call read_table_file(fname, b, msg)
+         if (len(msg) > 0) then
+            call c%fail('FILE', msg)
+            exit
+         end if
+         b%src = origin(blk%ifile, c%card_line() - 1, blk%name)
+         inp%edge_press = [inp%edge_press, b]
+      end do
+      call c%done(error)
+   end subroutine read_pressure_table
+
+   !> The table of a *DYNX_PRESSURE_TABLE data file into b%r, b%t, b%p; msg: '' or the error
+   !> (naming the data file and its line): radii >= 0 and increasing, times increasing.
+   subroutine read_table_file(fname, b, msg)
+      character(*), intent(in) :: fname
+      type(edge_press_in_t), intent(inout) :: b
+      character(:), allocatable, intent(out) :: msg
+      real(wp), allocatable :: v(:)
+      integer, allocatable :: vl(:)
+      character(len=4096) :: line
+      integer :: u, ios, nl, n, nr, nt, i, j, p0, p1
+      real(wp) :: x
+      msg = ''
+      open(newunit=u, file=fname, status='old', action='read', iostat=ios)
+      if (ios /= 0) then
+         msg = 'cannot open the pressure table file '//fname
+         return
+      end if
+      allocate(v(1024), vl(1024))
+      n = 0; nl = 0
+      do
+         read(u, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         nl = nl + 1
+         if (index(line, '#') > 0) line = line(1:index(line, '#') - 1)
+         p0 = 1
+         do                                   ! the numbers of the line, in order
+            do while (p0 <= len_trim(line) .and. (line(p0:p0) == ' ' .or. line(p0:p0) == ','))
+               p0 = p0 + 1
+            end do
+            if (p0 > len_trim(line)) exit
+            p1 = p0
+            do while (p1 < len_trim(line) .and. line(p1+1:p1+1) /= ' ' .and. &
+                      line(p1+1:p1+1) /= ',')
+               p1 = p1 + 1
+            end do
+            read(line(p0:p1), *, iostat=ios) x
+            if (ios /= 0) then
+               msg = fname//':'//str(nl)//': "'//line(p0:p1)//'" is not a number'
+               close(u); return
+            end if
+            if (n == size(v)) then
+               v = [v, v]; vl = [vl, vl]
+            end if
+            n = n + 1; v(n) = x; vl(n) = nl
+            p0 = p1 + 1
+         end do
+      end do
+      close(u)
+      if (n < 2) then
+         msg = fname//':'//str(nl)//': the table needs NR NT first'
+         return
+      end if
+      nr = nint(v(1)); nt = nint(v(2))
+      if (nr < 1 .or. nt < 2 .or. v(1) /= nr .or. v(2) /= nt) then
+         msg = fname//':'//str(vl(1))//': NR NT = '//rstr(v(1))//' '//rstr(v(2))// &
+               ': need whole numbers NR >= 1, NT >= 2'
+         return
+      end if
+      if (n /= 2 + nr + nt + nr*nt) then
+         msg = fname//':'//str(vl(n))//': '//str(n - 2)//' numbers after NR NT; the table '// &
+               'needs NR + NT + NR*NT = '//str(nr + nt + nr*nt)
+         return
+      end if
+      b%r = v(3:2 + nr)
+      b%t = v(3 + nr:2 + nr + nt)
+      b%p = reshape(v(3 + nr + nt:n), [nr, nt])
+      do i = 1, nr
+         if (b%r(i) < 0.0_wp) then
+            msg = fname//':'//str(vl(2 + i))//': radius '//str(i)//' = '//rstr(b%r(i))// &
+                  ' < 0 (r = x >= 0)'
+            return
+         end if
+         if (i > 1) then
+            if (.not. b%r(i) > b%r(i - 1)) then
+               msg = fname//':'//str(vl(2 + i))//': radius '//str(i)//' = '//rstr(b%r(i))// &
+                     ' is not greater than radius '//str(i - 1)//' = '//rstr(b%r(i - 1))// &
+                     ' (radii increase)'
+               return
+            end if
+         end if
+      end do
+      do j = 2, nt
+         if (.not. b%t(j) > b%t(j - 1)) then
+            msg = fname//':'//str(vl(2 + nr + j))//': time '//str(j)//' = '//rstr(b%t(j))// &
+                  ' is not greater than time '//str(j - 1)//' = '//rstr(b%t(j - 1))// &
+                  ' (times increase)'
+            return
+         end if
+      end do
+   end subroutine read_table_file
+
+   !> *DYNX_PRESSURE_PULSE: NSID PMAX T0 FWHM DX DY per card
+   subroutine read_pressure_pulse(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      type(card_t) :: c
+      type(edge_press_in_t) :: b
+      integer :: ic
+      call deck_cursor(deck, blk, c)
+      call c%need(data_start(blk), 'missing card '//str(data_start(blk))// &
+                  ' (NSID PMAX T0 FWHM DX DY)')
+      do ic = data_start(blk), blk%n
+         if (c%halt()) exit
+         call c%seek(ic)
+         b = edge_press_in_t(kind=2)
+         call c%id('NSID', b%nsid)
+         call c%real('PMAX', 0.0_wp, b%pmax)
+         call c%real('T0', 0.0_wp, b%t0)
+         call c%real('FWHM', 0.0_wp, b%fwhm, gt=0.0_wp)
+         call c%real('DX', 0.0_wp, b%dir(1))
+         call c%real('DY', 0.0_wp, b%dir(2))
+         if (c%ok() .and. norm2(b%dir) == 0.0_wp) call c%fail('DY', 'the direction of the '// &
+            'light (DX, DY) is zero')
+         if (c%halt()) exit
+         b%dir = b%dir/norm2(b%dir)
+         b%src = origin(blk%ifile, c%card_line(), blk%name)
+         inp%edge_press = [inp%edge_press, b]
+      end do
+      call c%done(error)
+   end subroutine read_pressure_pulse
+
+   !> *DYNX_ENERGY_DEPOSITION: PID RATE TSTART TEND per card
+   subroutine read_energy_deposition(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      type(card_t) :: c
+      type(deposit_in_t) :: b
+      integer :: ic
+      call deck_cursor(deck, blk, c)
+      call c%need(data_start(blk), 'missing card '//str(data_start(blk))// &
+                  ' (PID RATE TSTART TEND)')
+      do ic = data_start(blk), blk%n
+         if (c%halt()) exit
+         call c%seek(ic)
+         b = deposit_in_t()
+         call c%id('PID', b%pid)
+         call c%real('RATE', 0.0_wp, b%rate)
+         call c%real('TSTART', 0.0_wp, b%t1, min=0.0_wp)
+         call c%real('TEND', 0.0_wp, b%t2)
+         if (c%ok() .and. .not. b%t2 > b%t1) call c%fail('TEND', 'TEND = '//rstr(b%t2)// &
+            ' must be greater than TSTART = '//rstr(b%t1))
+         if (c%halt()) exit
+         b%src = origin(blk%ifile, c%card_line(), blk%name)
+         inp%deposits = [inp%deposits, b]
+      end do
+      call c%done(error)
+   end subroutine read_energy_deposition
 end module dx_read_twod

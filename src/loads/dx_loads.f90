@@ -15,9 +15,11 @@ module dx_loads
    use dx_model, only: model_t
    use dx_load_body, only: add_body_loads
    use dx_nonreflecting, only: add_nonreflecting
+   use dx_edge_pressure, only: add_edge_pressures, deposit_energy
    implicit none
    private
-   public :: add_external_loads, has_external_loads, add_nonreflecting   ! (re-exported)
+   public :: add_external_loads, has_external_loads, add_nonreflecting, add_edge_pressures, &
+             deposit_energy   ! (the last three re-exported for the explicit loop)
 contains
 
    !> .true. when the deck defines any external load (so the solver skips the pass otherwise)
@@ -31,6 +33,7 @@ contains
       if (allocated(model%body_loads)) has_external_loads = has_external_loads .or. &
                                                              size(model%body_loads) > 0
       if (allocated(model%nr_node)) has_external_loads = .true.   ! dx_nonreflecting
+      if (allocated(model%edge_pressures)) has_external_loads = .true.   ! dx_edge_pressure
    end function has_external_loads
 
    !> Add the external forces at time t to fext(3,nn) (zeroed by the caller).

@@ -22,7 +22,7 @@ module dx_explicit
    use dx_run_state, only: run_state_t
    use dx_element, only: element_block_pass, block_result_t, ELEM_ERR_NEGVOL, family_t, &
                          element_family, element_rotary_inertia
-   use dx_loads, only: add_external_loads, add_nonreflecting
+   use dx_loads, only: add_external_loads, add_nonreflecting, add_edge_pressures, deposit_energy
    use dx_constraints, only: apply_spc, apply_prescribed, apply_spc_rot, apply_prescribed_rot
    use dx_output, only: output_t
    use dx_checkpoint, only: checkpoint_t, checkpoint_failure_dump, checkpoint_energy_band
@@ -170,6 +170,8 @@ contains
          t = model%time
          ! ---- internal forces (element pass) and the critical step
          call dom%fill(model)   ! shared nodes' x, v into their slots
+         ! *DYNX_ENERGY_DEPOSITION: the energy of [t(n-1), t(n)] into the elements first
+         if (allocated(model%deposits)) call deposit_energy(model, t, dt_old, model%run%wdep)
          model%f = 0.0_wp
          if (allocated(model%mom)) model%mom = 0.0_wp
          dtcrit = huge_wp; ibmin = 0; iemin = 0
@@ -231,6 +233,7 @@ contains
          ! non-reflecting boundary: nodal dashpots on v(n-1/2), after the exchange (the
          ! same bits on every rank holding the node)
          if (loads) call add_nonreflecting(model, fext)
+         if (loads) call add_edge_pressures(model, t, fext)   ! (t = 0 geometry: node by node)
          if (loads) model%f = model%f + fext
          ! ---- time step
          dt = model%ctrl%tssfac*dtcrit
@@ -295,7 +298,8 @@ contains
          end if
          model%dt = dt
          ! (MPI: global sums, only when glstat, ENDENG or the end need them)
-         call dom%energies(model, ke, vold, wext + wcon + wrig, -wrw, 0.25_wp*(dt - dt_old), &
+         call dom%energies(model, ke, vold, wext + wcon + wrig + model%run%wdep, -wrw, &
+                           0.25_wp*(dt - dt_old), &
                            need, self%wold)
          if (model%ctrl%endeng > 0.0_wp) call checkpoint_energy_band(ck, model, t)
       end associate
