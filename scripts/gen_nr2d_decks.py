@@ -31,6 +31,11 @@
                                             elements), non-reflecting side and bottom, the
                                             example table DIR/table.dat (synthetic, not LASNEX's:
                                             100 kbar to r = 50 um, 0 at 80 um, 3 ns FWHM) on top
+  gen_nr2d_decks.py blocks DECK [FS [1]]    (1: rollers on y = 0, 10) two plane-strain steel blocks 10 x 10 mm (1 mm
+                                            elements), A at 10 m/s along x onto B at rest,
+                                            gap 0.05 mm, *CONTACT_2D_AUTOMATIC_SURFACE_TO_
+                                            SURFACE (friction FS, default 0); every node a
+                                            history node
 Each of the wave decks writes the history nodes on the diagonal (or the axis of the strip) every 0.2 mm
 of radius; the same mesh with a larger ROUT or LENGTH has the same nodes and elements inside
 (the reference run without reflection, nr2d_check.py). Units: mm, ms, kg, GPa (steel).
@@ -265,6 +270,31 @@ def backside(d):
     write(os.path.join(d, 'table.dat'), tab)
 
 
+def blocks(path, fs, rollers=False):
+    n, h, gap = 10, 1.0, 0.05
+    xy, quads, nid = block(n, n, h, h)
+    nb = len(xy)
+    xy += [(x + n*h + gap, y) for x, y in xy]
+    quads += [tuple(q + nb for q in qq) for qq in quads]
+    pids = [1]*(n*n) + [2]*(n*n)
+    s = head2('Two plane-strain blocks colliding (2D contact)', 0.012, 13,
+              [(1, 1, 0, 'A'), (2, 1, 0, 'B')])
+    s[6:6] = ['*DATABASE_NODOUT', f'{0.012/60:10.3e}']
+    s += mesh_cards(xy, quads, pids)
+    s += ['*DATABASE_HISTORY_NODE_SET', f'{3:10d}'] + node_set(3, list(range(1, 2*nb + 1)))
+    if rollers:                       # v_y = 0 on y = 0 and y = 10: one-dimensional strain
+        s += node_set(4, [i + 1 for i, (x, y) in enumerate(xy) if y in (0.0, n*h)])
+        s += ['*BOUNDARY_SPC_SET', f'{4:10d}{0:10d}{0:10d}{1:10d}{0:10d}']
+    s += ['*SET_PART_LIST', f'{1:10d}', f'{1:10d}', '*SET_PART_LIST', f'{2:10d}', f'{2:10d}',
+          '*CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE',
+          '$     SIDS      SIDM     SFACT      FREQ        FS        FD        DC     MEMBS',
+          f'{1:10d}{2:10d}{1.0:10.3f}{1:10d}{fs:10.3f}{0.0:10.3f}{0.0:10.3f}{0.0:10.3f}',
+          '*INITIAL_VELOCITY_GENERATION', f'{1:10d}{2:10d}{0.0:10.1f}{10.0:10.3f}{0.0:10.3f}'
+          f'{0.0:10.3f}', f'{0.0:10.1f}{0.0:10.1f}{0.0:10.1f}{0.0:10.1f}{0.0:10.1f}{0.0:10.1f}',
+          '*END']
+    write(path, s)
+
+
 def write(path, lines):
     with open(path, 'w') as f:
         f.write('\n'.join(lines) + '\n')
@@ -284,6 +314,8 @@ def main(argv):
         deposit(path, int(argv[2]))
     elif what == 'backside':
         backside(path)
+    elif what == 'blocks':
+        blocks(path, float(argv[2]) if len(argv) > 2 else 0.0, len(argv) > 3)
     elif what == 'cyl':
         ring(path, float(argv[2]), int(argv[3]), 13)
     else:

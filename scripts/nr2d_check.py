@@ -27,6 +27,12 @@
   nr2d_check.py deposit OUT ENERGY TOL
       *DYNX_ENERGY_DEPOSITION: kinetic + internal + hourglass energy at the end equals the
       deposited ENERGY within TOL relative, and |energy ratio - 1| <= TOL on every line.
+  nr2d_check.py blocks OUT DECK V0 TOL_V TOL_E
+      two blocks (parts 1 and 2 of DECK, gen_nr2d_decks.py blocks) colliding, every node a
+      history node: the centre-of-mass x velocities at the end (nodal weights: the number of
+      elements at each node, the lumped masses of a uniform mesh) against the exchange (0,
+      V0) within TOL_V V0; the x momentum of glstat constant to 1e-12 relative; |KE + IE + HG -
+      KE0| <= TOL_E KE0 at the end (the contact's penalty energy returned).
 """
 import math
 import sys
@@ -162,6 +168,38 @@ def deposit(argv):
         raise SystemExit('FAIL')
 
 
+def blocks_check(argv):
+    out, deck, v0, tolv, tole = argv[0], argv[1], float(argv[2]), float(argv[3]), \
+        float(argv[4])
+    wt, part, on = {}, {}, False
+    for line in open(deck):
+        if line.startswith('*'):
+            on = line.startswith('*ELEMENT_SHELL')
+            continue
+        if on and line.strip() and not line.startswith('$'):
+            pid = int(line[8:16])
+            for k in range(4):
+                n = int(line[16 + 8*k:24 + 8*k])
+                wt[n] = wt.get(n, 0) + 1
+                part[n] = pid
+    rows = nodout_series(out, 'vel')
+    vcm = {}
+    for pid in (1, 2):
+        num = sum(wt[n]*rows[n][-1][1][0] for n in rows if part[n] == pid)
+        den = sum(wt[n] for n in rows if part[n] == pid)
+        vcm[pid] = num/den
+    g = read_columns(out + '/glstat')
+    xm = [r['xmom'] for r in g.values()]
+    dm = max(abs(x - xm[0]) for x in xm)/abs(xm[0])
+    first, lastr = g[min(g)], g[max(g)]
+    e = lastr['kinetic'] + lastr['internal'] + lastr['hourglass']
+    de = abs(e - first['kinetic'])/first['kinetic']
+    print(f'centre-of-mass x velocities at the end: A {vcm[1]:.4f}, B {vcm[2]:.4f} (exchange: 0, '
+          f'{v0}; bound {tolv} V0); x momentum drift {dm:.2e}; energy {de:.2e} (bound {tole})')
+    if abs(vcm[1]) > tolv*v0 or abs(vcm[2] - v0) > tolv*v0 or dm > 1e-12 or de > tole:
+        raise SystemExit('FAIL')
+
+
 if __name__ == '__main__':
     {'reflect': reflect, 'absorbed': absorbed, 'momentum': momentum,
-     'tableimpulse': tableimpulse, 'deposit': deposit}[sys.argv[1]](sys.argv[2:])
+     'tableimpulse': tableimpulse, 'deposit': deposit, 'blocks': blocks_check}[sys.argv[1]](sys.argv[2:])

@@ -21,7 +21,7 @@ module dx_build_twod
    implicit none
    private
    public :: part_dim, check_dimension, twod_element, build_nonreflecting, &
-             build_edge_pressures, build_deposits
+             build_edge_pressures, build_deposits, build_contact2d
 
 contains
 
@@ -187,47 +187,136 @@ contains
       type(origin_t), intent(in) :: src
       integer, allocatable, intent(out) :: ed(:, :)
       type(error_t), allocatable, intent(out) :: error
-      integer, allocatable :: nodes(:), idx(:)
-      real(wp), allocatable :: key(:)
-      logical, allocatable :: inset(:), free(:)
-      integer :: b, e, k, j, ne, a1, a2
+      integer, allocatable :: nodes(:)
+      logical, allocatable :: inset(:)
+      integer :: j
       call set_nodes(inp, model, mp, nsid, .false., src, 'NSID', nodes, error)
       if (allocated(error)) return
-      allocate(inset(model%nn), ed(4, 0))
+      allocate(inset(model%nn))
       inset = .false.
       inset(nodes) = .true.
+      call mesh_free_edges(model, ed)
+      ed = ed(:, pack([(j, j = 1, size(ed, 2))], inset(ed(1, :)) .and. inset(ed(2, :))))
+      if (size(ed, 2) == 0) call set_error(error, at(inp, src)//'field NSID: node set '// &
+         str(nsid)//' holds no free edge of a 2D element (both nodes of an element side '// &
+         'on the boundary of the mesh)')
+   end subroutine free_edges
+
+   !> Every free edge of the mesh (a side no other element has), as free_edges
+   subroutine mesh_free_edges(model, ed)
+      type(model_t), intent(in) :: model
+      integer, allocatable, intent(out) :: ed(:, :)
+      integer, allocatable :: idx(:)
+      real(wp), allocatable :: key(:)
+      logical, allocatable :: free(:)
+      integer :: b, e, k, j, ne, a1, a2
+      ne = 0
+      do b = 1, size(model%blocks)
+         ne = ne + 4*model%blocks(b)%nel
+      end do
+      allocate(ed(4, ne), key(ne), idx(ne), free(ne))
+      ne = 0
       do b = 1, size(model%blocks)
          associate (blk => model%blocks(b))
             do e = 1, blk%nel
                do k = 1, 4
                   a1 = blk%conn(k, e); a2 = blk%conn(mod(k, 4) + 1, e)
-                  if (a1 /= a2 .and. inset(a1) .and. inset(a2)) ed = reshape([ed, &
-                     [a1, a2, b, e]], [4, size(ed, 2) + 1])
+                  if (a1 == a2) cycle                     ! a triangle's collapsed side
+                  ne = ne + 1
+                  ed(:, ne) = [a1, a2, b, e]
+                  key(ne) = real(min(a1, a2), wp)*model%nn + max(a1, a2)
                end do
             end do
          end associate
       end do
-      ne = size(ed, 2)
-      allocate(key(ne), idx(ne), free(ne))
-      do j = 1, ne
-         key(j) = real(min(ed(1, j), ed(2, j)), wp)*model%nn + max(ed(1, j), ed(2, j))
-      end do
       idx = [(j, j = 1, ne)]
-      call sort_index(idx, key)
+      call sort_index(idx(1:ne), key(1:ne))
       free = .true.
       do j = 2, ne
          if (key(idx(j)) == key(idx(j - 1))) then
             free(idx(j)) = .false.; free(idx(j - 1)) = .false.
          end if
       end do
-      if (.not. any(free)) then
-         call set_error(error, at(inp, src)//'field NSID: node set '//str(nsid)// &
-            ' holds no free edge of a 2D element (both nodes of an element side on the '// &
-            'boundary of the mesh)')
+      ed = ed(:, pack([(j, j = 1, ne)], free(1:ne)))
+   end subroutine mesh_free_edges
+
+   !> *CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE -> model%contact2d: the free edges of the
+   !> elements of each side's parts, their nodes, and each edge's penalty (dx_contact2d)
+   subroutine build_contact2d(inp, model, mp, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(inout) :: model
+      type(maps_t), intent(in) :: mp
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: ed(:, :), side(:, :)
+      logical, allocatable :: inp_s(:), mark(:)
+      integer :: i, p, j, k, sid, q
+      real(wp) :: el, vol, rm
+      type(family_t) :: fam
+      character(4), parameter :: fld(2) = ['SIDS', 'SIDM']
+      if (size(inp%contacts2d) == 0) return
+      fam = element_family(model%blocks(1)%etype)
+      if (.not. fam%twod) then
+         call set_error(error, at(inp, inp%contacts2d(1)%src)//'field SIDS: a 2D contact '// &
+            'needs a 2D deck (*SECTION_SHELL ELFORM 12-15); this deck is 3D')
          return
       end if
-      ed = ed(:, pack([(j, j = 1, ne)], free))
-   end subroutine free_edges
+      call mesh_free_edges(model, ed)
+      allocate(model%contact2d)
+      allocate(model%contact2d%iface(size(inp%contacts2d)), inp_s(size(model%parts)), &
+               mark(model%nn))
+      do i = 1, size(inp%contacts2d)
+         associate (r => inp%contacts2d(i), ci => model%contact2d%iface(i))
+            ci%label = r%label
+            ci%fs = r%fs
+            do p = 1, 2                    ! side p: its free edges
+               sid = merge(r%sids, r%sidm, p == 1)
+               q = mp%pset%get(sid)
+               if (q == 0) then
+                  call set_error(error, at(inp, r%src)//'field '//fld(p)//': part set '// &
+                     str(sid)//' is not defined (*SET_PART)')
+                  return
+               end if
+               inp_s = .false.
+               inp_s(model%part_sets(q)%parts) = .true.
+               side = ed(:, pack([(j, j = 1, size(ed, 2))], &
+                                 inp_s(model%blocks(ed(3, :))%ipart)))
+               if (size(side, 2) == 0) then
+                  call set_error(error, at(inp, r%src)//'field '//fld(p)//': the parts of '// &
+                     'set '//str(sid)//' have no free edge of a 2D element')
+                  return
+               end if
+               ! pass p: the nodes of side p against the edges of the other side; here the
+               ! edges of side p go to the other pass
+               associate (ps => ci%pass(3 - p))
+                  ps%edge = side(1:2, :)
+                  allocate(ps%k(size(side, 2)))
+                  do k = 1, size(side, 2)
+                     associate (blk => model%blocks(side(3, k)), &
+                                m0 => model%mats(model%parts(model%blocks(side(3, k))%ipart)%imat)%m)
+                        if (.not. m0%bulk > 0.0_wp) then
+                           call set_error(error, at(inp, r%src)//'field '//fld(p)//': part '// &
+                              str(model%parts(blk%ipart)%label)//' has no elastic bulk '// &
+                              'modulus for the contact penalty')
+                           return
+                        end if
+                        el = norm2(model%x0(1:2, side(2, k)) - model%x0(1:2, side(1, k)))
+                        vol = blk%vol0(side(4, k))
+                        rm = 1.0_wp
+                        if (fam%axisym) rm = 0.5_wp*(model%x0(1, side(1, k)) + &
+                                                     model%x0(1, side(2, k)))
+                        ps%k(k) = r%sfact*0.1_wp*m0%bulk*el**2*rm**2/vol
+                     end associate
+                  end do
+               end associate
+               associate (ps => ci%pass(p))
+                  mark = .false.
+                  mark(side(1, :)) = .true.; mark(side(2, :)) = .true.
+                  ps%node = pack([(j, j = 1, model%nn)], mark)
+               end associate
+            end do
+         end associate
+      end do
+   end subroutine build_contact2d
 
    !> *DYNX_PRESSURE_TABLE, *DYNX_PRESSURE_PULSE -> model%edge_pressures: per free edge of
    !> the set its radius (table) or cos**2 theta (pulse) and per node its share of the

@@ -13,12 +13,18 @@
 !>   the inward normal, zero where the surface faces away.
 !> *DYNX_ENERGY_DEPOSITION card 1: PID RATE TSTART TEND: energy into part PID at the constant
 !>   RATE (per unit thickness or per radian in 2D) from TSTART to TEND.
+!> *CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE (_ID/_TITLE) card 1: SIDS SIDM SFACT FREQ FS FD DC
+!>   MEMBS (LS-DYNA Keyword User's Manual, *CONTACT_2D_AUTOMATIC; SIDS, SIDM read as *SET_PART
+!>   ids); optional card 2: TBIRTH TDEATH SOS SOM NDS NDM COF INIT. FREQ is read past (dynx
+!>   searches every cycle); FD other than 0 or FS, DC, MEMBS and card 2's fields other than
+!>   their defaults are refused (not implemented).
 module dx_read_twod
    use dx_kinds, only: wp
    use dx_error, only: error_t
    use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, data_start, include_path
    use dx_deck_registry, only: registry_t
-   use dx_model_input, only: model_input_t, origin, nr2d_in_t, edge_press_in_t, deposit_in_t
+   use dx_model_input, only: model_input_t, origin, nr2d_in_t, edge_press_in_t, deposit_in_t, &
+                             c2d_in_t
    use dx_strings, only: str, rstr
    implicit none
    private
@@ -33,6 +39,8 @@ contains
       call reg%add('DYNX_PRESSURE_TABLE', read_pressure_table)
       call reg%add('DYNX_PRESSURE_PULSE', read_pressure_pulse)
       call reg%add('DYNX_ENERGY_DEPOSITION', read_energy_deposition)
+      call reg%add('CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE', read_contact_2d, title=.true., &
+                   id=.true.)
    end subroutine register_twod
 
    !> *BOUNDARY_NON_REFLECTING_2D: one card NSID AD AS per boundary
@@ -253,4 +261,50 @@ contains
       end do
       call c%done(error)
    end subroutine read_energy_deposition
+
+   !> *CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE: card 1 SIDS SIDM SFACT FREQ FS FD DC MEMBS,
+   !> optional card 2 TBIRTH TDEATH SOS SOM NDS NDM COF INIT (defaults only)
+   subroutine read_contact_2d(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      type(card_t) :: c
+      type(c2d_in_t) :: b
+      real(wp) :: r
+      integer :: ic, k
+      character(len=6), parameter :: c2(8) = ['TBIRTH', 'TDEATH', 'SOS   ', 'SOM   ', &
+                                              'NDS   ', 'NDM   ', 'COF   ', 'INIT  ']
+      call deck_cursor(deck, blk, c)
+      ic = data_start(blk)
+      if (blk%opt_id .or. blk%opt_title) then          ! CID HEADING
+         call c%seek(1)
+         call c%int('CID', 0, b%label, min=0)
+      end if
+      call c%need(ic, 'missing card '//str(ic)//' (SIDS SIDM SFACT FREQ FS FD DC MEMBS)')
+      call c%max_cards(ic + 1)
+      call c%seek(ic)
+      call c%id('SIDS', b%sids)
+      call c%id('SIDM', b%sidm)
+      call c%real('SFACT', 1.0_wp, b%sfact, min=0.0_wp)
+      if (b%sfact == 0.0_wp) b%sfact = 1.0_wp
+      call c%skip(1)                                   ! FREQ: dynx searches every cycle
+      call c%real('FS', 0.0_wp, b%fs, min=0.0_wp)
+      call c%real('FD', 0.0_wp, r, min=0.0_wp)
+      if (c%ok() .and. r /= 0.0_wp .and. r /= b%fs) call c%fail('FD', 'a dynamic '// &
+         'coefficient other than FS is not implemented (one Coulomb coefficient FS)')
+      call c%zero_real('DC', 'an exponential friction decay')
+      call c%zero_real('MEMBS', 'membrane slave surfaces')
+      if (ic + 1 <= blk%n) then
+         call c%seek(ic + 1)
+         do k = 1, 8
+            call c%zero_real(trim(c2(k)), 'this option of the 2D contact')
+         end do
+      end if
+      if (.not. c%halt()) then
+         b%src = origin(blk%ifile, c%card_line(), blk%name)
+         inp%contacts2d = [inp%contacts2d, b]
+      end if
+      call c%done(error)
+   end subroutine read_contact_2d
 end module dx_read_twod

@@ -4,6 +4,7 @@
 !> (node_label, elem_label, parts(:)%label, ...) are kept for messages and output.
 module dx_model
    use dx_kinds, only: wp, nv_chunk
+   use dx_contact2d_types, only: contact2d_t
    use dx_strings, only: string_t
    use dx_material, only: mat_holder_t
    use dx_curve, only: curve_t
@@ -291,6 +292,7 @@ module dx_model
       real(wp), allocatable :: nr_c(:, :)
       type(edge_pressure_t), allocatable :: edge_pressures(:)   !< dx_edge_pressure
       type(deposit_t), allocatable :: deposits(:)               !< dx_edge_pressure
+      type(contact2d_t), allocatable :: contact2d   !< *CONTACT_2D_AUTOMATIC_.. (dx_contact2d)
       type(rigid_system_t), allocatable :: rigid        !< rigid bodies (dx_rigid_types)
       type(contact_set_t), allocatable :: contact   !< *CONTACT_* state (none: not allocated)
       type(emc_system_t), allocatable :: emc        !< conserving rigid contact (dx_emc_types)

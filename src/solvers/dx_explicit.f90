@@ -221,7 +221,8 @@ contains
          call dom%reduce_dt(model, dtcrit, ibmin, ck, error)
          if (allocated(error)) return
          ! ---- contact forces (only when the deck has *CONTACT)
-         if (allocated(model%contact)) call dom%contact_forces(model, dt_old, dtcrit)
+         if (allocated(model%contact) .or. allocated(model%contact2d)) &
+            call dom%contact_forces(model, dt_old, dtcrit)   ! (2D: dx_contact2d, serial)
          ! ---- external forces
          if (loads) then
             fext = 0.0_wp
@@ -298,6 +299,7 @@ contains
          end if
          model%dt = dt
          ! (MPI: global sums, only when glstat, ENDENG or the end need them)
+         if (allocated(model%contact2d)) wrig = wrig + model%contact2d%work   ! (a cycle late)
          call dom%energies(model, ke, vold, wext + wcon + wrig + model%run%wdep, -wrw, &
                            0.25_wp*(dt - dt_old), &
                            need, self%wold)
