@@ -13,7 +13,8 @@
 !> midpoint radius, rbar = V/A the element's). The edges reach XTOL beyond their ends (a node
 !> at the end of an edge of an aligned mesh stays in contact as it moves by round-off). Coulomb friction regularised by a stiff
 !> tangential damper: f_t = -min(FS |f_n|, k dt |v_t|) along the relative sliding velocity
-!> v_t. Positions x(n), velocities v(n-1/2). Every slave node against every master edge of its
+!> v_t. Positions x(n), velocities v(n-1/2). The critical step takes the contact springs'
+!> bound 2/omega of each node pair in contact (as the 3D penalty contact's, dx_contact). Every slave node against every master edge of its
 !> pass (no bucket sort: interfaces of a few thousand edges). Serial runs only (dx_domain_mpi
 !> refuses a deck with it).
 module dx_contact2d
@@ -31,12 +32,12 @@ contains
 
    !> The contact forces of t(n) into c%fc and f(1:2, :); the work of the last cycle's forces
    !> into c%work (fold . (vold + v)/2 dtavg, dtavg = the mean of the last two dt_old)
-   subroutine contact2d_forces(c, x, v, dt_old, f)
+   subroutine contact2d_forces(c, x, v, mass, dt_old, f, dtcrit)
       type(contact2d_t), intent(inout) :: c
-      real(wp), intent(in) :: x(:, :), v(:, :), dt_old
-      real(wp), intent(inout) :: f(:, :)
+      real(wp), intent(in) :: x(:, :), v(:, :), mass(:), dt_old
+      real(wp), intent(inout) :: f(:, :), dtcrit
       integer :: i, p, k, j, s, a, b, jbest, n
-      real(wp) :: d(2), t(2), nv(2), el, xi, g, gbest, xib, fn(2), vt, ft, vrel(2)
+      real(wp) :: d(2), t(2), nv(2), el, xi, g, gbest, xib, fn(2), vt, ft, vrel(2), w2
       real(wp), allocatable :: ns(:, :)
       n = size(x, 2)
       if (.not. allocated(c%fc)) then
@@ -96,6 +97,11 @@ contains
                      ft = -sign(min(fs*norm2(fn), ps%k(jbest)*dt_old*abs(vt)), vt)
                      fn = fn + ft*t
                   end if
+                  ! the step the contact spring allows: 2/omega, omega**2 = 2 k (1/m_s +
+                  ! (1 - xi)**2/m_a + xi**2/m_b) (both passes may hold the pair)
+                  w2 = 2.0_wp*ps%k(jbest)*(1.0_wp/mass(s) + (1.0_wp - xib)**2/mass(a) + &
+                                           xib**2/mass(b))
+                  dtcrit = min(dtcrit, 2.0_wp/sqrt(w2))
                   c%fc(:, s) = c%fc(:, s) + fn
                   c%fc(:, a) = c%fc(:, a) - (1.0_wp - xib)*fn
                   c%fc(:, b) = c%fc(:, b) - xib*fn
