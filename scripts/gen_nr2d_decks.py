@@ -43,6 +43,10 @@
                                             SURFACE: by symmetry the bar on a rigid frictionless
                                             wall. History nodes: bar A's top axis node and its
                                             foot's corner node
+  gen_nr2d_decks.py slide DECK FS           plane strain: a steel block 4 x 2 mm (0.5 mm
+                                            elements) at 1 m/s along x on a base 12 x 2 mm
+                                            (fixed bottom), pressed by 0.01 GPa on its top
+                                            (*LOAD_SEGMENT, ramped over 0.5 us), friction FS
 Each of the wave decks writes the history nodes on the diagonal (or the axis of the strip) every 0.2 mm
 of radius; the same mesh with a larger ROUT or LENGTH has the same nodes and elements inside
 (the reference run without reflection, nr2d_check.py). Units: mm, ms, kg, GPa (steel).
@@ -332,6 +336,35 @@ def taylor2(path, nr, nz):
     write(path, s)
 
 
+def slide(path, fs):
+    h = 0.5
+    xb, qb, nidb = block(24, 4, h, h)                          # base 12 x 2
+    xk, qk, nidk = block(8, 4, h, h)                           # block 4 x 2, on top
+    nb = len(xb)
+    xy = xb + [(x + 2.0, y + 2.0) for x, y in xk]
+    quads = qb + [tuple(q + nb for q in qq) for qq in qk]
+    pids = [1]*len(qb) + [2]*len(qk)
+    s = head2('Block sliding on a base with Coulomb friction (2D contact)', 0.004, 13,
+              [(1, 1, 0, 'base'), (2, 1, 0, 'block')])
+    s[6:6] = ['*DATABASE_NODOUT', f'{0.004/80:10.3e}']
+    s += mesh_cards(xy, quads, pids)
+    s += ['*DATABASE_HISTORY_NODE_SET', f'{3:10d}'] + node_set(3, list(range(nb + 1,
+                                                                        len(xy) + 1)))
+    s += node_set(4, [nidb(i, 0) for i in range(25)])
+    s += ['*BOUNDARY_SPC_SET', f'{4:10d}{0:10d}{1:10d}{1:10d}{0:10d}']
+    s += ['*DEFINE_CURVE', f'{1:10d}', f'{0.0:20.10e}{0.0:20.10e}', f'{0.0005:20.10e}{1.0:20.10e}',
+          f'{1.0:20.10e}{1.0:20.10e}', '*LOAD_SEGMENT']
+    for i in range(8):                                         # top edges, right to left
+        s.append(f'{1:10d}{0.01:10.4f}{0.0:10.3f}{nidk(i + 1, 4) + nb:10d}{nidk(i, 4) + nb:10d}')
+    s += ['*SET_PART_LIST', f'{1:10d}', f'{2:10d}', '*SET_PART_LIST', f'{2:10d}', f'{1:10d}',
+          '*CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE',
+          f'{1:10d}{2:10d}{1.0:10.3f}{1:10d}{fs:10.3f}',
+          '*INITIAL_VELOCITY_GENERATION', f'{2:10d}{2:10d}{0.0:10.1f}{1.0:10.3f}{0.0:10.3f}'
+          f'{0.0:10.3f}', f'{0.0:10.1f}{0.0:10.1f}{0.0:10.1f}{0.0:10.1f}{0.0:10.1f}{0.0:10.1f}',
+          '*END']
+    write(path, s)
+
+
 def write(path, lines):
     with open(path, 'w') as f:
         f.write('\n'.join(lines) + '\n')
@@ -355,6 +388,8 @@ def main(argv):
         blocks(path, float(argv[2]) if len(argv) > 2 else 0.0, len(argv) > 3)
     elif what == 'taylor2':
         taylor2(path, int(argv[2]), int(argv[3]))
+    elif what == 'slide':
+        slide(path, float(argv[2]))
     elif what == 'cyl':
         ring(path, float(argv[2]), int(argv[3]), 13)
     else:

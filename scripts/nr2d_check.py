@@ -33,6 +33,12 @@
       elements at each node, the lumped masses of a uniform mesh) against the exchange (0,
       V0) within TOL_V V0; the x momentum of glstat constant to 1e-12 relative; |KE + IE + HG -
       KE0| <= TOL_E KE0 at the end (the contact's penalty energy returned).
+  nr2d_check.py friction OUT DECK MU P W TRAMP RHO TOL
+      a block (part 2 of DECK, gen_nr2d_decks.py slide: W x 2 mm, density RHO) sliding on a
+      base under the pressure P (ramped over TRAMP) with Coulomb friction MU: while it slides,
+      its friction impulse is MU times the normal impulse, and the normal impulse is the
+      pressure's I_p plus m dv_y (its own vertical momentum), so at every nodout line
+      v_x = v_x0 - MU (I_p/m + dv_y) (centre-of-mass velocities) within TOL.
 """
 import math
 import sys
@@ -168,6 +174,40 @@ def deposit(argv):
         raise SystemExit('FAIL')
 
 
+def part_cm_velocity(out, deck, pid):
+    """{t: (vx, vy)} of part pid's centre of mass (nodal weights: elements per node)"""
+    wt, on = {}, False
+    for line in open(deck):
+        if line.startswith('*'):
+            on = line.startswith('*ELEMENT_SHELL')
+            continue
+        if on and line.strip() and not line.startswith('$') and int(line[8:16]) == pid:
+            for k in range(4):
+                n = int(line[16 + 8*k:24 + 8*k])
+                wt[n] = wt.get(n, 0) + 1
+    rows = nodout_series(out, 'vel')
+    ns = [n for n in sorted(rows) if n in wt]
+    tot = sum(wt[n] for n in ns)
+    return [(rows[ns[0]][i][0], sum(wt[n]*rows[n][i][1][0] for n in ns)/tot,
+             sum(wt[n]*rows[n][i][1][1] for n in ns)/tot) for i in range(len(rows[ns[0]]))]
+
+
+def friction(argv):
+    out, deck = argv[0], argv[1]
+    mu, p, w, tr, rho, tol = map(float, argv[2:8])
+    cm = part_cm_velocity(out, deck, 2)
+    m = rho*w*2.0
+    worst = 0.0
+    for t, vx, vy in cm:
+        ip = p*w*(t*t/(2*tr) if t < tr else t - 0.5*tr)
+        theory = cm[0][1] - mu*(ip/m + vy - cm[0][2])
+        worst = max(worst, abs(vx - theory))
+    print(f'block v_x at the end {cm[-1][1]:.4f} (from {cm[0][1]:.4f}); largest |v_x - v_x0 + '
+          f'MU (I_p/m + dv_y)| {worst:.4f} (bound {tol})')
+    if worst > tol:
+        raise SystemExit('FAIL')
+
+
 def blocks_check(argv):
     out, deck, v0, tolv, tole = argv[0], argv[1], float(argv[2]), float(argv[3]), \
         float(argv[4])
@@ -202,4 +242,5 @@ def blocks_check(argv):
 
 if __name__ == '__main__':
     {'reflect': reflect, 'absorbed': absorbed, 'momentum': momentum,
-     'tableimpulse': tableimpulse, 'deposit': deposit, 'blocks': blocks_check}[sys.argv[1]](sys.argv[2:])
+     'tableimpulse': tableimpulse, 'deposit': deposit, 'blocks': blocks_check,
+     'friction': friction}[sys.argv[1]](sys.argv[2:])

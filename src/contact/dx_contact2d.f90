@@ -3,20 +3,21 @@
 !> Goudreau & Benson 1985, Sliding interfaces with contact-impact in large-scale Lagrangian
 !> computations, CMAME 51: 107-137): each pass puts the slave nodes of one side against the
 !> master edges of the other. A slave node s is in contact with edge a -> b (outward normal n =
-!> (dy, -dx)/L) when its projection xi = (x_s - x_a).t/L is in [0, 1] and its gap g = (x_s -
-!> x_a).n lies in (-L/2, 0) and the edge faces the slave surface (n . n_s < 0, n_s the slave
-!> node's normal, the sum of its edges' outward normals: a corner node is not pushed out
-!> through the side it slid past); of several such edges the least penetrated. Normal force k |g| n
-!> on s, minus its shares (1 - xi, xi) on a, b (momentum is conserved exactly), with k = SFACT
-!> x 0.1 x K L**2/A of the master edge's element (LS-DYNA's solid penalty SLSFAC K A**2/V in
-!> 2D, per unit thickness; per radian in axisymmetry: times r_m**2/rbar, r_m the edge's
-!> midpoint radius, rbar = V/A the element's). The edges reach XTOL beyond their ends (a node
-!> at the end of an edge of an aligned mesh stays in contact as it moves by round-off). Coulomb friction regularised by a stiff
-!> tangential damper: f_t = -min(FS |f_n|, k dt |v_t|) along the relative sliding velocity
-!> v_t. Positions x(n), velocities v(n-1/2). The critical step takes the contact springs'
-!> bound 2/omega of each node pair in contact (as the 3D penalty contact's, dx_contact). Every slave node against every master edge of its
-!> pass (no bucket sort: interfaces of a few thousand edges). Serial runs only (dx_domain_mpi
-!> refuses a deck with it).
+!> (dy, -dx)/L) when its projection xi = (x_s - x_a).t/L is in [-XTOL, 1 + XTOL] (a node at the
+!> end of an edge of an aligned mesh stays in contact as it moves by round-off), its gap g =
+!> (x_s - x_a).n lies in (-L/2, 0), and the edge faces the slave surface (n . n_s < 0, n_s the
+!> sum of the outward normals of the slave node's edges: a corner node is not pushed out
+!> through the side it slid past); of several such edges the least penetrated. Normal force
+!> k |g| n on s, minus its shares (1 - xi, xi) on a, b (xi clamped to [0, 1]; momentum is
+!> conserved exactly), k = SFACT x 0.1 x K L**2/A of the master edge's element (LS-DYNA's
+!> solid penalty SLSFAC K A**2/V in 2D, per unit thickness; per radian in axisymmetry: times
+!> r_m**2/rbar, r_m the edge's midpoint radius, rbar = V/A the element's). Coulomb friction:
+!> f_t = -min(FS |f_n|, m_s |v_t|/(2 dt)) along the relative sliding velocity v_t, the second
+!> the force that stops the slave's sliding in one step when both passes hold the pair
+!> (sticking). Positions x(n), velocities v(n-1/2). The critical step takes each contact
+!> pair's spring bound 2/omega (as the 3D penalty contact, dx_contact). Every slave node
+!> against every master edge of its pass (no bucket sort: interfaces of a few thousand
+!> edges). Serial runs only (dx_par_engine_setup refuses a deck with it under MPI).
 module dx_contact2d
    use dx_kinds, only: wp
    use dx_contact2d_types, only: contact2d_t
@@ -27,6 +28,9 @@ module dx_contact2d
    !> the edges are extended by XTOL of their length at both ends, so a node at an edge's
    !> end (aligned meshes) does not lose and regain contact as round-off moves it past
    real(wp), parameter :: XTOL = 0.1_wp
+   !> an edge faces a slave node when their normals make more than acos(-NFACE) = 102 deg
+   !> (a node of a flat surface is not caught by the side of a block sliding over it)
+   real(wp), parameter :: NFACE = 0.2_wp
 
 contains
 
@@ -79,7 +83,7 @@ contains
                      if (xi < -XTOL .or. xi > 1.0_wp + XTOL) cycle
                      g = dot_product(x(1:2, s) - x(1:2, a), [t(2), -t(1)])
                      if (g >= 0.0_wp .or. g <= -0.5_wp*el) cycle
-                     if (dot_product(ns(:, s), [t(2), -t(1)]) >= 0.0_wp) cycle
+                     if (dot_product(ns(:, s), [t(2), -t(1)]) > -NFACE*norm2(ns(:, s))) cycle
                      if (g > gbest) then
                         gbest = g; jbest = j; xib = min(max(xi, 0.0_wp), 1.0_wp)
                      end if
@@ -94,7 +98,7 @@ contains
                   if (fs > 0.0_wp) then          ! Coulomb, regularised (module header)
                      vrel = v(1:2, s) - ((1.0_wp - xib)*v(1:2, a) + xib*v(1:2, b))
                      vt = dot_product(vrel, t)
-                     ft = -sign(min(fs*norm2(fn), ps%k(jbest)*dt_old*abs(vt)), vt)
+                     ft = -sign(min(fs*norm2(fn), 0.5_wp*mass(s)*abs(vt)/dt_old), vt)
                      fn = fn + ft*t
                   end if
                   ! the step the contact spring allows: 2/omega, omega**2 = 2 k (1/m_s +
