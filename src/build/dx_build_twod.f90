@@ -240,6 +240,19 @@ contains
       ed = ed(:, pack([(j, j = 1, ne)], free(1:ne)))
    end subroutine mesh_free_edges
 
+   !> fam: the deck's element family; an error (card src, field) when the deck is not 2D
+   subroutine need_twod(inp, model, src, field, what, fam, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(in) :: model
+      type(origin_t), intent(in) :: src
+      character(*), intent(in) :: field, what
+      type(family_t), intent(out) :: fam
+      type(error_t), allocatable, intent(out) :: error
+      fam = element_family(model%blocks(1)%etype)
+      if (.not. fam%twod) call set_error(error, at(inp, src)//'field '//field//': '//what// &
+         ' needs a 2D deck (*SECTION_SHELL ELFORM 12-15); this deck is 3D')
+   end subroutine need_twod
+
    !> *CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE -> model%contact2d: the free edges of the
    !> elements of each side's parts, their nodes, and each edge's penalty (dx_contact2d)
    subroutine build_contact2d(inp, model, mp, error)
@@ -254,12 +267,8 @@ contains
       type(family_t) :: fam
       character(4), parameter :: fld(2) = ['SIDS', 'SIDM']
       if (size(inp%contacts2d) == 0) return
-      fam = element_family(model%blocks(1)%etype)
-      if (.not. fam%twod) then
-         call set_error(error, at(inp, inp%contacts2d(1)%src)//'field SIDS: a 2D contact '// &
-            'needs a 2D deck (*SECTION_SHELL ELFORM 12-15); this deck is 3D')
-         return
-      end if
+      call need_twod(inp, model, inp%contacts2d(1)%src, 'SIDS', 'a 2D contact', fam, error)
+      if (allocated(error)) return
       call mesh_free_edges(model, ed)
       allocate(model%contact2d)
       allocate(model%contact2d%iface(size(inp%contacts2d)), inp_s(size(model%parts)), &
@@ -331,12 +340,9 @@ contains
       real(wp) :: d(2), w(2), cth
       type(family_t) :: fam
       if (size(inp%edge_press) == 0) return
-      fam = element_family(model%blocks(1)%etype)
-      if (.not. fam%twod) then
-         call set_error(error, at(inp, inp%edge_press(1)%src)//'field NSID: a pressure on '// &
-            'element edges needs a 2D deck (*SECTION_SHELL ELFORM 12-15); this deck is 3D')
-         return
-      end if
+      call need_twod(inp, model, inp%edge_press(1)%src, 'NSID', 'a pressure on element '// &
+                     'edges', fam, error)
+      if (allocated(error)) return
       allocate(model%edge_pressures(size(inp%edge_press)))
       do i = 1, size(inp%edge_press)
          associate (r => inp%edge_press(i), ep => model%edge_pressures(i))

@@ -37,8 +37,8 @@ contains
       type(registry_t), intent(inout) :: reg
       call reg%add('BOUNDARY_NON_REFLECTING_2D', read_nonreflecting_2d)
       call reg%add('DYNX_PRESSURE_TABLE', read_pressure_table)
-      call reg%add('DYNX_PRESSURE_PULSE', read_pressure_pulse)
-      call reg%add('DYNX_ENERGY_DEPOSITION', read_energy_deposition)
+      call reg%add('DYNX_PRESSURE_PULSE', read_pulse_or_deposit)
+      call reg%add('DYNX_ENERGY_DEPOSITION', read_pulse_or_deposit)
       call reg%add('CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE', read_contact_2d, title=.true., &
                    id=.true.)
    end subroutine register_twod
@@ -201,66 +201,56 @@ contains
       end do
    end subroutine read_table_file
 
-   !> *DYNX_PRESSURE_PULSE: NSID PMAX T0 FWHM DX DY per card
-   subroutine read_pressure_pulse(deck, blk, inp, error)
+   !> *DYNX_PRESSURE_PULSE (NSID PMAX T0 FWHM DX DY) and *DYNX_ENERGY_DEPOSITION (PID RATE
+   !> TSTART TEND): one record per card
+   subroutine read_pulse_or_deposit(deck, blk, inp, error)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
       type(card_t) :: c
       type(edge_press_in_t) :: b
+      type(deposit_in_t) :: dp
+      logical :: pulse
       integer :: ic
+      pulse = blk%base == 'DYNX_PRESSURE_PULSE'
       call deck_cursor(deck, blk, c)
-      call c%need(data_start(blk), 'missing card '//str(data_start(blk))// &
-                  ' (NSID PMAX T0 FWHM DX DY)')
+      call c%need(data_start(blk), 'missing card '//str(data_start(blk))//' ('// &
+                  trim(merge('NSID PMAX T0 FWHM DX DY', 'PID RATE TSTART TEND   ', pulse))//')')
       do ic = data_start(blk), blk%n
          if (c%halt()) exit
          call c%seek(ic)
-         b = edge_press_in_t(kind=2)
-         call c%id('NSID', b%nsid)
-         call c%real('PMAX', 0.0_wp, b%pmax)
-         call c%real('T0', 0.0_wp, b%t0)
-         call c%real('FWHM', 0.0_wp, b%fwhm, gt=0.0_wp)
-         call c%real('DX', 0.0_wp, b%dir(1))
-         call c%real('DY', 0.0_wp, b%dir(2))
-         if (c%ok() .and. norm2(b%dir) == 0.0_wp) call c%fail('DY', 'the direction of the '// &
-            'light (DX, DY) is zero')
+         if (pulse) then
+            b = edge_press_in_t(kind=2)
+            call c%id('NSID', b%nsid)
+            call c%real('PMAX', 0.0_wp, b%pmax)
+            call c%real('T0', 0.0_wp, b%t0)
+            call c%real('FWHM', 0.0_wp, b%fwhm, gt=0.0_wp)
+            call c%real('DX', 0.0_wp, b%dir(1))
+            call c%real('DY', 0.0_wp, b%dir(2))
+            if (c%ok() .and. norm2(b%dir) == 0.0_wp) call c%fail('DY', 'the direction of '// &
+               'the light (DX, DY) is zero')
+         else
+            dp = deposit_in_t()
+            call c%id('PID', dp%pid)
+            call c%real('RATE', 0.0_wp, dp%rate)
+            call c%real('TSTART', 0.0_wp, dp%t1, min=0.0_wp)
+            call c%real('TEND', 0.0_wp, dp%t2)
+            if (c%ok() .and. .not. dp%t2 > dp%t1) call c%fail('TEND', 'TEND = '// &
+               rstr(dp%t2)//' must be greater than TSTART = '//rstr(dp%t1))
+         end if
          if (c%halt()) exit
-         b%dir = b%dir/norm2(b%dir)
-         b%src = origin(blk%ifile, c%card_line(), blk%name)
-         inp%edge_press = [inp%edge_press, b]
+         if (pulse) then
+            b%dir = b%dir/norm2(b%dir)
+            b%src = origin(blk%ifile, c%card_line(), blk%name)
+            inp%edge_press = [inp%edge_press, b]
+         else
+            dp%src = origin(blk%ifile, c%card_line(), blk%name)
+            inp%deposits = [inp%deposits, dp]
+         end if
       end do
       call c%done(error)
-   end subroutine read_pressure_pulse
-
-   !> *DYNX_ENERGY_DEPOSITION: PID RATE TSTART TEND per card
-   subroutine read_energy_deposition(deck, blk, inp, error)
-      type(deck_t), intent(in) :: deck
-      type(block_t), intent(in) :: blk
-      type(model_input_t), intent(inout) :: inp
-      type(error_t), allocatable, intent(out) :: error
-      type(card_t) :: c
-      type(deposit_in_t) :: b
-      integer :: ic
-      call deck_cursor(deck, blk, c)
-      call c%need(data_start(blk), 'missing card '//str(data_start(blk))// &
-                  ' (PID RATE TSTART TEND)')
-      do ic = data_start(blk), blk%n
-         if (c%halt()) exit
-         call c%seek(ic)
-         b = deposit_in_t()
-         call c%id('PID', b%pid)
-         call c%real('RATE', 0.0_wp, b%rate)
-         call c%real('TSTART', 0.0_wp, b%t1, min=0.0_wp)
-         call c%real('TEND', 0.0_wp, b%t2)
-         if (c%ok() .and. .not. b%t2 > b%t1) call c%fail('TEND', 'TEND = '//rstr(b%t2)// &
-            ' must be greater than TSTART = '//rstr(b%t1))
-         if (c%halt()) exit
-         b%src = origin(blk%ifile, c%card_line(), blk%name)
-         inp%deposits = [inp%deposits, b]
-      end do
-      call c%done(error)
-   end subroutine read_energy_deposition
+   end subroutine read_pulse_or_deposit
 
    !> *CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE: card 1 SIDS SIDM SFACT FREQ FS FD DC MEMBS,
    !> optional card 2 TBIRTH TDEATH SOS SOM NDS NDM COF INIT (defaults only)
