@@ -36,7 +36,7 @@
                                             gap 0.05 mm, *CONTACT_2D_AUTOMATIC_SURFACE_TO_
                                             SURFACE (friction FS, default 0); every node a
                                             history node
-  gen_nr2d_decks.py taylor2 DECK NR NZ       two copies of the axisymmetric Taylor bar of
+  gen_nr2d_decks.py taylor2 DECK NR NZ [SF] two copies of the axisymmetric Taylor bar of
                                             gen_quad2d_decks.py taylor (ELFORM 15, Cu 227 m/s),
                                             mirror images about y = 0 (gap 0.01 mm) meeting
                                             head on through *CONTACT_2D_AUTOMATIC_SURFACE_TO_
@@ -306,7 +306,7 @@ def blocks(path, fs, rollers=False):
     write(path, s)
 
 
-def taylor2(path, nr, nz):
+def taylor2(path, nr, nz, sfact=1.0):
     l0, r0, v0, tend, gap = 32.4, 3.2, 227.0, 0.08, 0.01
     xy, quads, nid = block(nr, nz, r0/nr, l0/nz)
     nb = len(xy)
@@ -327,7 +327,7 @@ def taylor2(path, nr, nz):
          '       0.0       0.0       0.0       0.0']
     s += mesh_cards(xa + xb, qa + qb, [1]*len(qa) + [2]*len(qb))
     s += ['*SET_PART_LIST', f'{1:10d}', f'{1:10d}', '*SET_PART_LIST', f'{2:10d}', f'{2:10d}',
-          '*CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE', f'{1:10d}{2:10d}',
+          '*CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE', f'{1:10d}{2:10d}{sfact:10.3f}',
           '*INITIAL_VELOCITY_GENERATION', f'{1:10d}{2:10d}{0.0:10.1f}{0.0:10.3f}{-v0:10.3f}'
           f'{0.0:10.3f}', f'{0.0:10.1f}{0.0:10.1f}{0.0:10.1f}{0.0:10.1f}{0.0:10.1f}{0.0:10.1f}',
           '*INITIAL_VELOCITY_GENERATION', f'{2:10d}{2:10d}{0.0:10.1f}{0.0:10.3f}{v0:10.3f}'
@@ -387,7 +387,7 @@ def main(argv):
     elif what == 'blocks':
         blocks(path, float(argv[2]) if len(argv) > 2 else 0.0, len(argv) > 3)
     elif what == 'taylor2':
-        taylor2(path, int(argv[2]), int(argv[3]))
+        taylor2(path, int(argv[2]), int(argv[3]), float(argv[4]) if len(argv) > 4 else 1.0)
     elif what == 'slide':
         slide(path, float(argv[2]))
     elif what == 'cyl':
