@@ -33,48 +33,17 @@
       nodout displacement, velocity and acceleration exactly 0.
 """
 import math
-import subprocess
 import sys
+
+from ascii_out import read_table, nodout_series, h5_dataset, h5_last_state
 
 RHO, E, NU = 7.85e-6, 210.0, 0.3
 A_IN, B_OUT, P_IN = 10.0, 20.0, 1.0e-4
 
 
-def read_table(path):
-    rows = []
-    for line in open(path):
-        if line.startswith('#') or not line.strip():
-            continue
-        rows.append([float(v) for v in line.split()])
-    return rows
-
-
 def nodout(out):
     """{node: [(t, disp(3), vel(3), acc(3), coor(3))]}"""
-    d = {}
-    for r in read_table(out + '/nodout'):
-        d.setdefault(int(r[1]), []).append((r[0], r[2:5], r[5:8], r[8:11], r[11:14]))
-    return d
-
-
-def h5_dataset(path, name):
-    txt = subprocess.run(['h5dump', '-m', '%.17g', '-d', name, path], capture_output=True,
-                         text=True, check=True).stdout
-    body = txt[txt.index('DATA {') + 6:]
-    body = body[:body.index('}')]
-    vals = []
-    for line in body.splitlines():
-        if ':' in line:
-            line = line.split(':', 1)[1]
-        vals += [float(v) for v in line.replace(',', ' ').split()]
-    return vals
-
-
-def h5_last_state(path):
-    txt = subprocess.run(['h5ls', path + '/states'], capture_output=True, text=True,
-                         check=True).stdout
-    return sorted(w for w in (line.split()[0] for line in txt.splitlines() if line.strip())
-                  if w.isdigit())[-1]
+    return nodout_series(out, 'disp', 'vel', 'acc', 'coor')
 
 
 def fail(msg):

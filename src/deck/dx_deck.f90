@@ -25,6 +25,7 @@ module dx_deck
    use dx_read_implicit, only: register_implicit
    use dx_read_output, only: register_output
    use dx_read_beams, only: register_beams
+   use dx_read_twod, only: register_twod
    use dx_model_input, only: model_input_t, input_init, input_finish
    use dx_card_echo, only: echo_t
    implicit none
@@ -51,6 +52,7 @@ contains
       call register_emc(reg)
       call register_implicit(reg)
       call register_output(reg)
+      call register_twod(reg)
    end function new_registry
 
    !> Read the deck at path into the unresolved model input (no build).

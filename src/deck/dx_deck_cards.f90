@@ -25,7 +25,7 @@ module dx_deck_cards
    public :: card_t, block_t, deck_t, param_t, read_cards, get_int, get_list_id, get_real, get_text, &
              field_error, block_error, card_error, std_widths, ncards, card_where, &
              card_is_blank, check_max_cards, MAX_INCLUDE_DEPTH, data_start, block_title, &
-             deck_cursor, collect_error
+             deck_cursor, collect_error, include_path
 
    integer, parameter :: MAX_INCLUDE_DEPTH = 20
 

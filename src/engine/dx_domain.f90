@@ -19,6 +19,7 @@ module dx_domain
    use dx_model, only: model_t
    use dx_output, only: output_t
    use dx_par, only: par_rank, par_size
+   use dx_contact2d, only: contact2d_forces
    use dx_loads, only: has_external_loads
    use dx_constraints, only: apply_rigidwalls, add_wall_hits, wall_hits_t
    use dx_contact, only: contact_forces, contact_work
@@ -352,7 +353,9 @@ contains
       type(model_t), intent(inout), target :: model
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: dtcrit
-      call contact_forces(model, dt_old, dtcrit)
+      if (allocated(model%contact)) call contact_forces(model, dt_old, dtcrit)
+      if (allocated(model%contact2d)) call contact2d_forces(model%contact2d, model%x, model%v, &
+                                                            model%mass, dt_old, model%f, dtcrit)
    end subroutine s_contact_forces
 
    subroutine s_loads_shared(d, model, t, fext)

@@ -309,6 +309,8 @@ contains
       if (model%erodes .and. allocated(model%contact)) what = '*CONTACT_ with element '// &
          'erosion (*MAT_ADD_EROSION or *CONTROL_TIMESTEP ERODE = 1: the contact surfaces '// &
          'after erosion are formed on the serial model only)'
+      if (allocated(model%contact2d)) what = '*CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE (the 2D '// &
+         'contact, dx_contact2d, is serial)'
       if (has_beams(model)) what = '*SECTION_BEAM (beam elements: their rotational '// &
          'degrees of freedom are not yet under MPI)'
       if (len(what) > 0) call set_error(error, model%deck_file//': '//what// &

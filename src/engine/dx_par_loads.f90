@@ -16,6 +16,9 @@
 !>   their owners once per cycle (one MPI_Allgatherv, only when a segment load touches a
 !>   shared node). add_external_loads(lm) is the serial chain; its value replaces the
 !>   rank-local one at the shared nodes.
+!> - *BOUNDARY_NON_REFLECTING_2D: nodal dashpots (dx_nonreflecting), node by node after the
+!>   exchange on every rank holding the node: the sub-model keeps the rank's nodes of the list.
+!>   *DYNX_PRESSURE_TABLE/_PULSE (dx_edge_pressure) likewise: the shares of the rank's nodes.
 !> - External work: the serial loop adds f.dtavg (v(n-1/2) + v(n+1/2))/2 node by node. The
 !>   term of each owned node that can carry a load is computed locally (the serial
 !>   expression; it depends on that node alone), kept for up to NBUF_MAX cycles and, when a
@@ -69,7 +72,7 @@ contains
       type(par_model_t), intent(in) :: pm
       integer, intent(in) :: loc(:)
       logical, intent(in) :: owned(:)
-      logical, allocatable :: myshared(:), inlm(:), mark(:)
+      logical, allocatable :: myshared(:), inlm(:), mark(:), mark0(:)
       integer, allocatable :: need(:), cmap(:), nl(:), sl(:)
       integer :: k, j, n, i
       ld%gp => g
@@ -79,6 +82,22 @@ contains
          model%node_loads = g%node_loads(rp%node_loads)
          do k = 1, size(model%node_loads)
             model%node_loads(k)%node = loc(model%node_loads(k)%node)
+         end do
+      end if
+      if (allocated(g%nr_node)) then      ! non-reflecting nodes on this rank, local numbers
+         i = count(loc(g%nr_node) > 0)
+         model%nr_node = loc(pack(g%nr_node, loc(g%nr_node) > 0))
+         model%nr_c = g%nr_c(:, pack([(k, k = 1, size(g%nr_node))], loc(g%nr_node) > 0))
+         if (i == 0) deallocate(model%nr_node, model%nr_c)
+      end if
+      if (allocated(g%edge_pressures)) then   ! edge pressures: the shares of this rank's nodes
+         do j = 1, size(g%edge_pressures)
+            associate (ge => g%edge_pressures(j), me => model%edge_pressures(j))
+               mark0 = loc(ge%node) > 0
+               me%node = loc(pack(ge%node, mark0))
+               me%edge = pack(ge%edge, mark0)
+               me%w = ge%w(:, pack([(k, k = 1, size(ge%node))], mark0))
+            end associate
          end do
       end if
       if (allocated(g%seg_loads)) then
@@ -160,6 +179,12 @@ contains
       allocate(mark(g%nn))
       mark = allocated(g%body_loads)
       if (allocated(g%node_loads)) mark(g%node_loads(:)%node) = .true.
+      if (allocated(g%nr_node)) mark(g%nr_node) = .true.
+      if (allocated(g%edge_pressures)) then
+         do k = 1, size(g%edge_pressures)
+            mark(g%edge_pressures(k)%node) = .true.
+         end do
+      end if
       if (allocated(g%seg_loads)) then
          do k = 1, size(g%seg_loads)
             do j = 1, 4

@@ -14,12 +14,16 @@ module dx_loads
    use dx_vec3, only: cross
    use dx_model, only: model_t
    use dx_load_body, only: add_body_loads
+   use dx_nonreflecting, only: add_nonreflecting
+   use dx_edge_pressure, only: add_edge_pressures, deposit_energy
    implicit none
    private
-   public :: add_external_loads, has_external_loads
+   public :: add_external_loads, has_external_loads, add_nonreflecting, add_edge_pressures, &
+             deposit_energy   ! (the last three re-exported for the explicit loop)
 contains
 
-   !> .true. when the deck defines any external load (so the solver skips the pass otherwise).
+   !> .true. when the deck defines any external load (so the solver skips the pass otherwise)
+   !> or a non-reflecting boundary (its dashpot forces ride in fext: dx_nonreflecting).
    pure logical function has_external_loads(model)
       type(model_t), intent(in) :: model
       has_external_loads = .false.
@@ -28,6 +32,8 @@ contains
                                                             size(model%seg_loads) > 0
       if (allocated(model%body_loads)) has_external_loads = has_external_loads .or. &
                                                              size(model%body_loads) > 0
+      if (allocated(model%nr_node)) has_external_loads = .true.   ! dx_nonreflecting
+      if (allocated(model%edge_pressures)) has_external_loads = .true.   ! dx_edge_pressure
    end function has_external_loads
 
    !> Add the external forces at time t to fext(3,nn) (zeroed by the caller).

@@ -4,6 +4,7 @@
 !> (node_label, elem_label, parts(:)%label, ...) are kept for messages and output.
 module dx_model
    use dx_kinds, only: wp, nv_chunk
+   use dx_contact2d_types, only: contact2d_t
    use dx_strings, only: string_t
    use dx_material, only: mat_holder_t
    use dx_curve, only: curve_t
@@ -26,7 +27,7 @@ module dx_model
              segment_set_t, spc_t, prescribed_t, load_node_t, load_segment_t, rigidwall_t, &
              control_t, database_t, energy_t, part_sums_t
    !> the element block and the part (dx_element_types, the kernels' types; held here)
-   public :: elem_block_t, part_t
+   public :: elem_block_t, part_t, edge_pressure_t, deposit_t
    !> the element-family table (dx_element_types): what every consumer asks of a block's
    !> element type (nodes, faces, edges, volume, moments, lumped mass, plot cell, weight)
    public :: elem_quality, ASPECT_WARN, WARP_WARN, shell_stress_global, elem_stress_global
@@ -113,6 +114,28 @@ module dx_model
       real(wp) :: sf = 1.0_wp
       real(wp) :: at = 0.0_wp
    end type load_segment_t
+
+   !> *DYNX_PRESSURE_TABLE (kind 1: p(r, t) bilinear in a table) and *DYNX_PRESSURE_PULSE
+   !> (kind 2: pmax exp(-4 ln2 ((t - t0)/fwhm)**2) cos**2 theta) on the free edges of a 2D
+   !> node set, at the edges' t = 0 geometry (dx_build_twod; applied by dx_edge_pressure):
+   !> node share k gets the force p(edge(k), t) w(:, k) (w = -weight x outward normal)
+   type :: edge_pressure_t
+      integer :: kind = 0
+      real(wp), allocatable :: r(:), t(:), p(:, :)   !< table: radii (nr), times (nt), (nr, nt)
+      real(wp) :: pmax = 0.0_wp, t0 = 0.0_wp, fwhm = 1.0_wp
+      real(wp), allocatable :: re(:)      !< (nedge) the edge's radius x at its midpoint (table)
+      real(wp), allocatable :: ce(:)      !< (nedge) cos**2 theta of the edge (pulse)
+      integer, allocatable :: node(:)     !< (nshare) node of each nodal share
+      integer, allocatable :: edge(:)     !< (nshare) its edge
+      real(wp), allocatable :: w(:, :)    !< (2, nshare) force per unit pressure
+   end type edge_pressure_t
+
+   !> *DYNX_ENERGY_DEPOSITION: energy into part ipart at a constant rate over [t1, t2], shared
+   !> among its elements by initial volume (vpart: the part's initial volume, all ranks)
+   type :: deposit_t
+      integer :: ipart = 0
+      real(wp) :: rate = 0.0_wp, t1 = 0.0_wp, t2 = 0.0_wp, vpart = 0.0_wp
+   end type deposit_t
 
    !> *RIGIDWALL_PLANAR (stonewall): fixed infinite plane through x0 with unit normal n
    !> pointing into the allowed half space
@@ -263,6 +286,13 @@ module dx_model
       type(load_segment_t), allocatable :: seg_loads(:)
       type(rigidwall_t), allocatable :: walls(:)
       type(body_load_t), allocatable :: body_loads(:)   !< *LOAD_BODY_X/Y/Z (dx_load_body)
+      !> *BOUNDARY_NON_REFLECTING_2D (dx_build_twod, dx_nonreflecting): the boundary nodes
+      !> and each one's lumped dashpot tensor (Cxx, Cyy, Cxy): f = -C v in the x-y plane
+      integer, allocatable :: nr_node(:)
+      real(wp), allocatable :: nr_c(:, :)
+      type(edge_pressure_t), allocatable :: edge_pressures(:)   !< dx_edge_pressure
+      type(deposit_t), allocatable :: deposits(:)               !< dx_edge_pressure
+      type(contact2d_t), allocatable :: contact2d   !< *CONTACT_2D_AUTOMATIC_.. (dx_contact2d)
       type(rigid_system_t), allocatable :: rigid        !< rigid bodies (dx_rigid_types)
       type(contact_set_t), allocatable :: contact   !< *CONTACT_* state (none: not allocated)
       type(emc_system_t), allocatable :: emc        !< conserving rigid contact (dx_emc_types)

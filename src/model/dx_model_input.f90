@@ -22,7 +22,8 @@ module dx_model_input
    public :: model_input_t, string_t, origin_t, label_list_t, segment_list_t, spc_in_t, &
              motion_in_t, ivel_in_t, out_note_t, set_step_in_t, set_gen_in_t, load_node_in_t, load_seg_in_t, wall_in_t, &
              IVEL_SET, IVEL_NODE, IVEL_GEN, add_node, add_element, origin, input_init, &
-             beam_in_t, mass_in_t
+             beam_in_t, mass_in_t, nr2d_in_t, edge_press_in_t, deposit_in_t, &
+             c2d_in_t
 
    integer, parameter :: IVEL_SET = 1   !< *INITIAL_VELOCITY
    integer, parameter :: IVEL_NODE = 2  !< *INITIAL_VELOCITY_NODE
@@ -116,6 +117,38 @@ module dx_model_input
       type(origin_t) :: src
    end type load_seg_in_t
 
+   !> *BOUNDARY_NON_REFLECTING_2D as read (dx_read_twod): node set, dilatational and shear
+   !> dashpots on (LS-DYNA AD, AS = 0) or off (nonzero)
+   type :: nr2d_in_t
+      integer :: nsid = 0
+      logical :: ad = .true., as = .true.
+      type(origin_t) :: src
+   end type nr2d_in_t
+
+   !> *DYNX_PRESSURE_TABLE (kind 1; the data file's table) and *DYNX_PRESSURE_PULSE (kind 2)
+   !> as read (dx_read_twod)
+   type :: edge_press_in_t
+      integer :: kind = 0, nsid = 0
+      real(wp) :: sf = 1.0_wp
+      real(wp), allocatable :: r(:), t(:), p(:, :)
+      real(wp) :: pmax = 0.0_wp, t0 = 0.0_wp, fwhm = 0.0_wp, dir(2) = 0.0_wp
+      type(origin_t) :: src
+   end type edge_press_in_t
+
+   !> *CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE as read (SIDS, SIDM part sets)
+   type :: c2d_in_t
+      integer :: sids = 0, sidm = 0, label = 0
+      real(wp) :: sfact = 1.0_wp, fs = 0.0_wp
+      type(origin_t) :: src
+   end type c2d_in_t
+
+   !> *DYNX_ENERGY_DEPOSITION as read
+   type :: deposit_in_t
+      integer :: pid = 0
+      real(wp) :: rate = 0.0_wp, t1 = 0.0_wp, t2 = 0.0_wp
+      type(origin_t) :: src
+   end type deposit_in_t
+
    !> *RIGIDWALL_PLANAR as read
    type :: wall_in_t
       integer :: label = 0
@@ -201,6 +234,10 @@ module dx_model_input
       type(load_seg_in_t), allocatable :: seg_loads(:)
       type(wall_in_t), allocatable :: walls(:)
       type(body_load_in_t), allocatable :: body_loads(:)   !< *LOAD_BODY_X/Y/Z
+      type(nr2d_in_t), allocatable :: nr2d(:)              !< *BOUNDARY_NON_REFLECTING_2D
+      type(edge_press_in_t), allocatable :: edge_press(:)  !< *DYNX_PRESSURE_TABLE, _PULSE
+      type(deposit_in_t), allocatable :: deposits(:)       !< *DYNX_ENERGY_DEPOSITION
+      type(c2d_in_t), allocatable :: contacts2d(:)         !< *CONTACT_2D_AUTOMATIC_..
       type(rigid_input_t) :: rigid                         !< rigid-body keywords
       ! --- controls and output requests
       type(control_t) :: ctrl
@@ -238,6 +275,7 @@ contains
                inp%out_notes(0), inp%set_gens(0), inp%node_set_loads(0))
       allocate(inp%body_loads(0), inp%rigid%inertias(0), inp%rigid%nrbs(0), &
                inp%rigid%extras(0), inp%rigid%motions(0))
+      allocate(inp%nr2d(0), inp%edge_press(0), inp%deposits(0), inp%contacts2d(0))
       allocate(inp%node_label(0), inp%x(3, 0), inp%node_tc(0), inp%node_rc(0), &
                inp%node_src(2, 0))
       allocate(inp%elem_label(0), inp%elem_pid(0), inp%elem_conn(SOLID_CARD_NODES, 0), &

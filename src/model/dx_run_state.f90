@@ -18,6 +18,7 @@ module dx_run_state
       real(wp) :: wext = 0.0_wp          !< work of the external loads
       real(wp) :: wrw = 0.0_wp           !< work of the rigid-wall forces
       real(wp) :: wcon = 0.0_wp          !< work of the constraint reactions
+      real(wp) :: wdep = 0.0_wp          !< energy deposited (*DYNX_ENERGY_DEPOSITION)
       real(wp) :: next_plot = 0.0_wp     !< next plot-state time
       real(wp) :: next_glstat = 0.0_wp   !< next glstat time
       real(wp) :: next_nodout = 0.0_wp   !< next nodout time

@@ -22,7 +22,7 @@ module dx_explicit
    use dx_run_state, only: run_state_t
    use dx_element, only: element_block_pass, block_result_t, ELEM_ERR_NEGVOL, family_t, &
                          element_family, element_rotary_inertia
-   use dx_loads, only: add_external_loads
+   use dx_loads, only: add_external_loads, add_nonreflecting, add_edge_pressures, deposit_energy
    use dx_constraints, only: apply_spc, apply_prescribed, apply_spc_rot, apply_prescribed_rot
    use dx_output, only: output_t
    use dx_checkpoint, only: checkpoint_t, checkpoint_failure_dump, checkpoint_energy_band
@@ -170,6 +170,8 @@ contains
          t = model%time
          ! ---- internal forces (element pass) and the critical step
          call dom%fill(model)   ! shared nodes' x, v into their slots
+         ! *DYNX_ENERGY_DEPOSITION: the energy of [t(n-1), t(n)] into the elements first
+         if (allocated(model%deposits)) call deposit_energy(model, t, dt_old, model%run%wdep)
          model%f = 0.0_wp
          if (allocated(model%mom)) model%mom = 0.0_wp
          dtcrit = huge_wp; ibmin = 0; iemin = 0
@@ -219,7 +221,8 @@ contains
          call dom%reduce_dt(model, dtcrit, ibmin, ck, error)
          if (allocated(error)) return
          ! ---- contact forces (only when the deck has *CONTACT)
-         if (allocated(model%contact)) call dom%contact_forces(model, dt_old, dtcrit)
+         if (allocated(model%contact) .or. allocated(model%contact2d)) &
+            call dom%contact_forces(model, dt_old, dtcrit)   ! (2D: dx_contact2d, serial)
          ! ---- external forces
          if (loads) then
             fext = 0.0_wp
@@ -228,6 +231,10 @@ contains
          end if
          ! ---- shared-node exchange (MPI): serial-order sums at shared nodes, contact forces
          call dom%exchange(model)
+         ! non-reflecting boundary: nodal dashpots on v(n-1/2), after the exchange (the
+         ! same bits on every rank holding the node)
+         if (loads) call add_nonreflecting(model, fext)
+         if (loads) call add_edge_pressures(model, t, fext)   ! (t = 0 geometry: node by node)
          if (loads) model%f = model%f + fext
          ! ---- time step
          dt = model%ctrl%tssfac*dtcrit
@@ -292,7 +299,9 @@ contains
          end if
          model%dt = dt
          ! (MPI: global sums, only when glstat, ENDENG or the end need them)
-         call dom%energies(model, ke, vold, wext + wcon + wrig, -wrw, 0.25_wp*(dt - dt_old), &
+         if (allocated(model%contact2d)) wrig = wrig + model%contact2d%work   ! (a cycle late)
+         call dom%energies(model, ke, vold, wext + wcon + wrig + model%run%wdep, -wrw, &
+                           0.25_wp*(dt - dt_old), &
                            need, self%wold)
          if (model%ctrl%endeng > 0.0_wp) call checkpoint_energy_band(ck, model, t)
       end associate

@@ -1,0 +1,121 @@
+!> 2D penalty contact between the free edges of two part sets (*CONTACT_2D_AUTOMATIC_SURFACE_
+!> TO_SURFACE), DYNA2D's node-on-segment slideline in its symmetric penalty form (Hallquist,
+!> Goudreau & Benson 1985, Sliding interfaces with contact-impact in large-scale Lagrangian
+!> computations, CMAME 51: 107-137): each pass puts the slave nodes of one side against the
+!> master edges of the other. A slave node s is in contact with edge a -> b (outward normal n =
+!> (dy, -dx)/L) when its projection xi = (x_s - x_a).t/L is in [-XTOL, 1 + XTOL] (a node at the
+!> end of an edge of an aligned mesh stays in contact as it moves by round-off), its gap g =
+!> (x_s - x_a).n lies in (-L/2, 0), and the edge faces the slave surface (n . n_s < 0, n_s the
+!> sum of the outward normals of the slave node's edges: a corner node is not pushed out
+!> through the side it slid past); of several such edges the least penetrated. Normal force
+!> k |g| n on s, minus its shares (1 - xi, xi) on a, b (xi clamped to [0, 1]; momentum is
+!> conserved exactly), k = SFACT x 0.1 x K L**2/A of the master edge's element (LS-DYNA's
+!> solid penalty SLSFAC K A**2/V in 2D, per unit thickness; per radian in axisymmetry: times
+!> r_m**2/rbar, r_m the edge's midpoint radius, rbar = V/A the element's). Coulomb friction:
+!> f_t = -min(FS |f_n|, m_s |v_t|/(2 dt)) along the relative sliding velocity v_t, the second
+!> the force that stops the slave's sliding in one step when both passes hold the pair
+!> (sticking). Positions x(n), velocities v(n-1/2). The critical step takes each contact
+!> pair's spring bound 2/omega (as the 3D penalty contact, dx_contact). Every slave node
+!> against every master edge of its pass (no bucket sort: interfaces of a few thousand
+!> edges). Serial runs only (dx_par_engine_setup refuses a deck with it under MPI).
+module dx_contact2d
+   use dx_kinds, only: wp
+   use dx_contact2d_types, only: contact2d_t
+   implicit none
+   private
+   public :: contact2d_forces
+
+   !> the edges are extended by XTOL of their length at both ends, so a node at an edge's
+   !> end (aligned meshes) does not lose and regain contact as round-off moves it past
+   real(wp), parameter :: XTOL = 0.1_wp
+   !> an edge faces a slave node when their normals make more than acos(-NFACE) = 102 deg
+   !> (a node of a flat surface is not caught by the side of a block sliding over it)
+   real(wp), parameter :: NFACE = 0.2_wp
+
+contains
+
+   !> The contact forces of t(n) into c%fc and f(1:2, :); the work of the last cycle's forces
+   !> into c%work (fold . (vold + v)/2 dtavg, dtavg = the mean of the last two dt_old)
+   subroutine contact2d_forces(c, x, v, mass, dt_old, f, dtcrit)
+      type(contact2d_t), intent(inout) :: c
+      real(wp), intent(in) :: x(:, :), v(:, :), mass(:), dt_old
+      real(wp), intent(inout) :: f(:, :), dtcrit
+      integer :: i, p, k, j, s, a, b, jbest, n
+      real(wp) :: d(2), t(2), nv(2), el, xi, g, gbest, xib, fn(2), vt, ft, vrel(2), w2
+      real(wp), allocatable :: ns(:, :)
+      n = size(x, 2)
+      if (.not. allocated(c%fc)) then
+         allocate(c%fc(2, n), c%fold(2, n), c%vold(2, n))
+         c%fc = 0.0_wp; c%fold = 0.0_wp; c%vold = v(1:2, :)
+      end if
+      ! work of the last cycle's contact forces over its step (v(n-3/2) -> v(n-1/2))
+      do i = 1, n
+         if (c%fold(1, i) /= 0.0_wp .or. c%fold(2, i) /= 0.0_wp) c%work = c%work + &
+            dot_product(c%fold(:, i), 0.5_wp*(c%vold(:, i) + v(1:2, i)))* &
+            (0.5_wp*(c%dtold + dt_old))
+      end do
+      c%fc = 0.0_wp
+      c%ncontact = 0
+      allocate(ns(2, n))
+      do i = 1, size(c%iface)
+         do p = 1, 2
+            ! the slave side's nodal normals: its edges are the other pass's master edges
+            ns = 0.0_wp
+            associate (os => c%iface(i)%pass(3 - p))
+               do j = 1, size(os%edge, 2)
+                  a = os%edge(1, j); b = os%edge(2, j)
+                  d = x(1:2, b) - x(1:2, a)
+                  ns(:, a) = ns(:, a) + [d(2), -d(1)]
+                  ns(:, b) = ns(:, b) + [d(2), -d(1)]
+               end do
+            end associate
+            associate (ps => c%iface(i)%pass(p), fs => c%iface(i)%fs)
+               do k = 1, size(ps%node)
+                  s = ps%node(k)
+                  jbest = 0; gbest = -huge(1.0_wp); xib = 0.0_wp
+                  do j = 1, size(ps%edge, 2)
+                     a = ps%edge(1, j); b = ps%edge(2, j)
+                     if (s == a .or. s == b) cycle
+                     d = x(1:2, b) - x(1:2, a)
+                     el = norm2(d)
+                     t = d/el
+                     xi = dot_product(x(1:2, s) - x(1:2, a), t)/el
+                     if (xi < -XTOL .or. xi > 1.0_wp + XTOL) cycle
+                     g = dot_product(x(1:2, s) - x(1:2, a), [t(2), -t(1)])
+                     if (g >= 0.0_wp .or. g <= -0.5_wp*el) cycle
+                     if (dot_product(ns(:, s), [t(2), -t(1)]) > -NFACE*norm2(ns(:, s))) cycle
+                     if (g > gbest) then
+                        gbest = g; jbest = j; xib = min(max(xi, 0.0_wp), 1.0_wp)
+                     end if
+                  end do
+                  if (jbest == 0) cycle
+                  c%ncontact = c%ncontact + 1
+                  a = ps%edge(1, jbest); b = ps%edge(2, jbest)
+                  d = x(1:2, b) - x(1:2, a)
+                  t = d/norm2(d)
+                  nv = [t(2), -t(1)]
+                  fn = -ps%k(jbest)*gbest*nv
+                  if (fs > 0.0_wp) then          ! Coulomb, regularised (module header)
+                     vrel = v(1:2, s) - ((1.0_wp - xib)*v(1:2, a) + xib*v(1:2, b))
+                     vt = dot_product(vrel, t)
+                     ft = -sign(min(fs*norm2(fn), 0.5_wp*mass(s)*abs(vt)/dt_old), vt)
+                     fn = fn + ft*t
+                  end if
+                  ! the step the contact spring allows: 2/omega, omega**2 = 2 k (1/m_s +
+                  ! (1 - xi)**2/m_a + xi**2/m_b) (both passes may hold the pair)
+                  w2 = 2.0_wp*ps%k(jbest)*(1.0_wp/mass(s) + (1.0_wp - xib)**2/mass(a) + &
+                                           xib**2/mass(b))
+                  dtcrit = min(dtcrit, 2.0_wp/sqrt(w2))
+                  c%fc(:, s) = c%fc(:, s) + fn
+                  c%fc(:, a) = c%fc(:, a) - (1.0_wp - xib)*fn
+                  c%fc(:, b) = c%fc(:, b) - xib*fn
+               end do
+            end associate
+         end do
+      end do
+      f(1:2, :) = f(1:2, :) + c%fc
+      c%fold = c%fc
+      c%vold = v(1:2, :)
+      c%dtold = dt_old
+   end subroutine contact2d_forces
+end module dx_contact2d

@@ -1,0 +1,33 @@
+!> State of the 2D contacts (*CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE; dx_contact2d): per
+!> interface the two passes (slave nodes against master edges, and back: symmetric), the
+!> penalty per master edge, Coulomb friction, and the work of the contact forces booked one
+!> cycle late (the force of t(n-1) with v(n-3/2), v(n-1/2)). Held by model_t.
+module dx_contact2d_types
+   use dx_kinds, only: wp
+   implicit none
+   private
+   public :: c2d_pass_t, c2d_iface_t, contact2d_t
+
+   !> one pass: the nodes of one side against the free edges of the other
+   type :: c2d_pass_t
+      integer, allocatable :: node(:)          !< (ns) slave nodes
+      integer, allocatable :: edge(:, :)       !< (2, nm) master edges a -> b (outward (dy, -dx))
+      real(wp), allocatable :: k(:)            !< (nm) penalty stiffness of each master edge
+   end type c2d_pass_t
+
+   type :: c2d_iface_t
+      integer :: label = 0
+      real(wp) :: fs = 0.0_wp                  !< Coulomb friction coefficient
+      type(c2d_pass_t) :: pass(2)
+   end type c2d_iface_t
+
+   type :: contact2d_t
+      type(c2d_iface_t), allocatable :: iface(:)
+      real(wp), allocatable :: fc(:, :)        !< (2, nn) contact force of this cycle
+      real(wp), allocatable :: fold(:, :)      !< (2, nn) of the last cycle
+      real(wp), allocatable :: vold(:, :)      !< (2, nn) v(n-3/2)
+      real(wp) :: dtold = 0.0_wp               !< dt_old of the last cycle
+      real(wp) :: work = 0.0_wp                !< work of the contact forces (one cycle late)
+      integer :: ncontact = 0                  !< slave nodes in contact, this cycle
+   end type contact2d_t
+end module dx_contact2d_types
