@@ -142,9 +142,6 @@ module dx_element_types
       !> internal power sigma:D V - q B.v at t(n) with v(n-1/2): the caller adds
       !> (dt(n+1/2) - dt(n-1/2))/4 times it to report the energy at t(n) (see centred_work)
       real(wp) :: pend = 0.0_wp
-      !> wall seconds in the block's constitutive updates (shells: the calls of
-      !> material_t%update_plane_stress, one clock pair per lamina; 0 for other families)
-      real(wp) :: tlam = 0.0_wp
    end type block_result_t
 
    !> *MAT_ADD_EROSION criteria of one material (LS-DYNA Keyword User's Manual Vol. II,

@@ -42,7 +42,6 @@
 !> nodal rotation stays below the membrane one) times *CONTROL_SHELL ROTASCL.
 module dx_shell_bt
    use dx_kinds, only: wp, nv_chunk, huge_wp
-   use dx_timer, only: wall_time
    use dx_material, only: material_t
    use dx_element_types, only: elem_block_t, part_t, ES_THK, block_result_t, &
                                ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, shell_frame
@@ -166,7 +165,7 @@ contains
       real(wp) :: xe(3, 4), xm(3, 4), ve(3, 4), we(3, 4), vl(3, 4), wl(3, 4), e(3, 3)
       real(wp) :: xl(2, 4), b1(4), b2(4), area, am, gm(4), bb, fl(3, 4), ml(2, 4), hq(5)
       real(wp) :: qd(5), qold(5), r(5), cv, ym, nu, lam, g, cs, hdt, z, tw, lmax, de, dh
-      real(wp) :: rhs, dzz, ez(blk%nel), dzt(nv_chunk), t0
+      real(wp) :: rhs, dzz, ez(blk%nel), dzt(nv_chunk)
       integer :: ierr(nv_chunk)
       integer :: i, k, n, nn, ip, c0, nip
       logical :: ok, tri
@@ -222,7 +221,6 @@ contains
       ! r(:, 1:3) N xx, yy, xy; 4:6 M xx, yy, xy; 7:8 Q yz, zx (per unit length)
       rold(1:n, :) = 0.0_wp; rnew(1:n, :) = 0.0_wp
       dzt(1:n) = 0.0_wp
-      res%tlam = 0.0_wp
       do ip = 1, nip
          call turn_stress(n, rc, rs, blk%sig(:, :, ip))
          do i = 1, n
@@ -238,9 +236,7 @@ contains
             tw = 0.5_wp*wt(ip)*thk(i)
             call add_resultants(rold(i, :), s5(i, :), tw, z)
          end do
-         t0 = wall_time()   ! the constitutive clock: one pair per lamina of a block (~50 ns)
          call mat%update_plane_stress(n, dt_old, de5, s5, blk%hv(:, :, ip), ierr, ez)
-         res%tlam = res%tlam + (wall_time() - t0)
          do i = 1, n
             dzt(i) = dzt(i) + 0.5_wp*wt(ip)*ez(i)     ! mean thickness strain increment
             z = 0.5_wp*zeta(ip)*thk(i)

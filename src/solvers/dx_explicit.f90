@@ -46,7 +46,6 @@ module dx_explicit
       logical :: ms_warned = .false.   !< mass scaling: the increase passed MS_WARN_PERCENT
       logical :: ms_stop = .false.     !< mass scaling: ENDMAS reached, this cycle is the last
       real(wp) :: t0wall = 0.0_wp
-      real(wp) :: tlam = 0.0_wp        !< wall seconds in shell lamina updates (this run)
       character(:), allocatable :: outdir
    contains
       procedure :: start => x_start
@@ -199,7 +198,6 @@ contains
                   call element_block_pass(blk, model%mats(part%imat)%m, part, model%x, &
                                           model%v, dt_old, model%f, res)
                end if
-               self%tlam = self%tlam + res%tlam
                if (res%ibad /= 0) then
                   call element_failure(model, b, res, error)
                   call dom%defer(error)   ! MPI: every rank learns it at the dt reduction
@@ -396,9 +394,6 @@ contains
          rstr(1.0e9_wp*(wall_time() - self%t0wall)/real(max(1, model%cycle), wp)/ &
          real(max(1, model%ne), wp), 4)//' ns per element-cycle, peak memory '// &
          str(peak_memory_kb())//' KiB')
-      if (self%tlam > 0.0_wp) call log_info('dynx: shell lamina updates (constitutive) '// &
-         rstr(self%tlam, 4)//' s wall, '//rstr(100.0_wp*self%tlam/max(tiny(1.0_wp), &
-         wall_time() - self%t0wall), 3)//' % of the wall time')
       if (allocated(model%rigid)) call rigid_close(model%rigid)
       if (dom%writer()) call out%close(ioerr)
       if (allocated(ioerr)) call move_alloc(ioerr, error)
