@@ -22,7 +22,7 @@ module dx_implicit_system
    private
    public :: implicit_system_t, isys_setup, isys_assemble, isys_commit, isys_external, &
              isys_prescribe, isys_comm, isys_gather, isys_scatter, isys_dof_name, &
-             isys_fix
+             isys_fix, isys_null_names
 
    !> One block's committed (c) and trial (t) point state: S, Ebar (6, 8, nel), history
    !> (nh, 8, nel); the element's stress work w (committed) and its trial increment dw.
@@ -312,6 +312,22 @@ contains
          end do
       end do
    end function isys_dof_name
+
+   !> 'node L x, node M z, ...' of the first 10 of the equations eqs (a factorization's null
+   !> pivots; messages), ', ...' after them when there are more.
+   function isys_null_names(model, sys, eqs) result(s)
+      type(model_t), intent(in) :: model
+      type(implicit_system_t), intent(in) :: sys
+      integer, intent(in) :: eqs(:)
+      character(:), allocatable :: s
+      integer :: q
+      s = ''
+      do q = 1, min(size(eqs), 10)
+         if (q > 1) s = s//', '
+         s = s//isys_dof_name(model, sys, eqs(q))
+      end do
+      if (size(eqs) > 10) s = s//', ...'
+   end function isys_null_names
 
    !> The communicator handle the sparse solver takes (serial: MPI_COMM_SELF, MPI started
    !> for it).

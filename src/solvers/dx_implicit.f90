@@ -40,7 +40,7 @@ module dx_implicit
    use dx_mumps, only: mumps_t
    use dx_implicit_system, only: implicit_system_t, isys_setup, isys_assemble, isys_commit, &
                                  isys_external, isys_prescribe, isys_comm, isys_gather, &
-                                 isys_scatter, isys_dof_name, isys_fix
+                                 isys_scatter, isys_null_names, isys_fix
    implicit none
    private
    public :: implicit_t
@@ -416,7 +416,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: m(:, :), mv(:), km(:)
       real(wp) :: xc(3), kmax, x(3)
-      integer :: k, i, q, code
+      integer :: k, i, code
       character(:), allocatable :: modes, nodes
       character(16), parameter :: names(6) = [character(16) :: 'translation x', 'translation y', &
          'translation z', 'rotation about x', 'rotation about y', 'rotation about z']
@@ -450,12 +450,7 @@ contains
             modes = modes//trim(names(k))
          end if
       end do
-      nodes = ''
-      do q = 1, min(self%ms%nnull, 10)
-         if (q > 1) nodes = nodes//', '
-         nodes = nodes//isys_dof_name(model, self%sys, self%ms%null_eq(q))
-      end do
-      if (self%ms%nnull > 10) nodes = nodes//', ...'
+      nodes = isys_null_names(model, self%sys, self%ms%null_eq(1:self%ms%nnull))
       if (len(modes) == 0) modes = 'none of the whole model''s rigid-body modes (a part '// &
          'or a node is free on its own)'
       code = EXIT_NUMERIC
