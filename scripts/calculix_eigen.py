@@ -17,7 +17,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import gen_implicit_decks as g  # noqa: E402
 import gen_eigen_decks as ge  # noqa: E402
 from eigen_check import eigout, timoshenko_w1  # noqa: E402
-from calculix_cantilever import timed  # noqa: E402
+from calculix_cantilever import timed, ccx_mesh  # noqa: E402
 
 TOP = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..')
 NEIG = 6
@@ -27,12 +27,7 @@ def ccx_inp(n, etype, path):
     nx, ny, nz = 10*n, 2*n, n
     nodes, elems, nid = g.box(nx, ny, nz, ge.L, ge.B, ge.H)
     with open(path, 'w') as fh:
-        fh.write('*NODE, NSET=NALL\n')
-        for k in sorted(nodes):
-            fh.write('%d, %.9f, %.9f, %.9f\n' % (k, *nodes[k]))
-        fh.write('*ELEMENT, TYPE=%s, ELSET=EALL\n' % etype)
-        for i, c in enumerate(elems):
-            fh.write('%d, %s\n' % (i + 1, ', '.join(str(x) for x in c)))
+        ccx_mesh(fh, nodes, elems, etype)
         fh.write('*MATERIAL, NAME=M\n*ELASTIC\n%g, 0.\n*DENSITY\n%g\n' % (ge.E, ge.RHO))
         fh.write('*SOLID SECTION, ELSET=EALL, MATERIAL=M\n*BOUNDARY\n')
         for k in range(nz + 1):
