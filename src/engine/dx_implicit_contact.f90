@@ -53,54 +53,48 @@ module dx_implicit_contact
 contains
 
    !> Candidate pairs from the undeformed geometry and their equation maps emap(24, np)
-   !> (slave dofs, then the master nodes'; 0: none) from eqn(3, nn).
+   !> (slave dofs, then the master nodes'; 0: none) from eqn(3, nn). Two sweeps over the
+   !> (slave node, segment) products: count, then fill (no growing arrays).
    subroutine icon_pairs(model, eqn, con, emap)
       type(model_t), intent(in) :: model
       integer, intent(in) :: eqn(:, :)
       type(icontact_t), intent(inout) :: con
       integer, allocatable, intent(out) :: emap(:, :)
-      integer :: f, ip, i, s, nsl, np, a, pass_np
-      integer, allocatable :: seg(:)
-      real(wp) :: d
-      allocate(con%sif(0), con%spass(0), con%snode(0), con%sfirst(0), con%slast(0), con%pseg(0))
-      np = 0
-      do f = 1, size(model%contact%iface)
-         do ip = 1, size(model%contact%iface(f)%pass)
-            associate (p => model%contact%iface(f)%pass(ip))
-               do i = 1, p%nnode
-                  allocate(seg(0))
-                  do s = 1, p%nseg
-                     if (any(p%seg(1:p%nsn(s), s) == p%node(i))) cycle
-                     d = 0.0_wp
-                     do a = 2, p%nsn(s)
-                        d = max(d, norm2(model%x0(:, p%seg(a, s)) - model%x0(:, p%seg(1, s))))
+      integer :: sweep, f, ip, i, s, a, ns, np, nmine
+      do sweep = 1, 2
+         ns = 0; np = 0
+         do f = 1, size(model%contact%iface)
+            do ip = 1, size(model%contact%iface(f)%pass)
+               associate (p => model%contact%iface(f)%pass(ip))
+                  do i = 1, p%nnode
+                     nmine = 0
+                     do s = 1, p%nseg
+                        if (.not. candidate(p%node(i), p%seg(1:p%nsn(s), s))) cycle
+                        nmine = nmine + 1
+                        if (sweep == 2) con%pseg(np + nmine) = s
                      end do
-                     if (.not. in_box(model%x0(:, p%seg(1:p%nsn(s), s)), &
-                                      model%x0(:, p%node(i)), d)) cycle
-                     seg = [seg, s]
+                     if (nmine == 0) cycle
+                     ns = ns + 1
+                     if (sweep == 2) then
+                        con%sif(ns) = f; con%spass(ns) = ip; con%snode(ns) = i
+                        con%sfirst(ns) = np + 1; con%slast(ns) = np + nmine
+                     end if
+                     np = np + nmine
                   end do
-                  pass_np = size(seg)
-                  if (pass_np > 0) then
-                     con%sif = [con%sif, f]; con%spass = [con%spass, ip]
-                     con%snode = [con%snode, i]
-                     con%sfirst = [con%sfirst, np + 1]; con%slast = [con%slast, np + pass_np]
-                     con%pseg = [con%pseg, seg]
-                     np = np + pass_np
-                  end if
-                  deallocate(seg)
-               end do
-            end associate
+               end associate
+            end do
          end do
+         if (sweep == 1) allocate(con%sif(ns), con%spass(ns), con%snode(ns), con%sfirst(ns), &
+                                  con%slast(ns), con%pseg(np))
       end do
       con%np = np
-      nsl = size(con%snode)
-      con%ns = nsl
-      allocate(emap(NDE, np), con%ftc(3, nsl), con%ftt(3, nsl), con%actc(nsl), con%actt(nsl), &
+      con%ns = ns
+      allocate(emap(NDE, np), con%ftc(3, ns), con%ftt(3, ns), con%actc(ns), con%actt(ns), &
                con%uc(3, model%nn), con%ut(3, model%nn))
       emap = 0
       con%ftc = 0.0_wp; con%ftt = 0.0_wp; con%actc = 0; con%actt = 0
       con%uc = 0.0_wp; con%ut = 0.0_wp
-      do i = 1, nsl
+      do i = 1, ns
          associate (p => model%contact%iface(con%sif(i))%pass(con%spass(i)))
             do ip = con%sfirst(i), con%slast(i)
                emap(1:3, ip) = max(0, eqn(:, p%node(con%snode(i))))
@@ -112,15 +106,24 @@ contains
          end associate
       end do
    contains
-      pure logical function in_box(xe, xs, d)
-         real(wp), intent(in) :: xe(:, :), xs(3), d
+      !> node k is not on the segment and lies in its box grown by its largest edge from
+      !> node 1
+      logical function candidate(k, sn)
+         integer, intent(in) :: k, sn(:)
+         real(wp) :: d
          integer :: c
-         in_box = .false.
-         do c = 1, 3
-            if (xs(c) < minval(xe(c, :)) - d .or. xs(c) > maxval(xe(c, :)) + d) return
+         candidate = .false.
+         if (any(sn == k)) return
+         d = 0.0_wp
+         do c = 2, size(sn)
+            d = max(d, norm2(model%x0(:, sn(c)) - model%x0(:, sn(1))))
          end do
-         in_box = .true.
-      end function in_box
+         do c = 1, 3
+            if (model%x0(c, k) < minval(model%x0(c, sn)) - d .or. &
+                model%x0(c, k) > maxval(model%x0(c, sn)) + d) return
+         end do
+         candidate = .true.
+      end function candidate
    end subroutine icon_pairs
 
    !> The contact forces at u into fint (f_int - f_contact) and with want_k each active
