@@ -62,3 +62,6 @@ if __name__ == '__main__':
                extra=f(0, 0.0, 0, 0.0, 0, 0.0, 2, 0.0))
     cantilever(1, os.path.join(ROOT, 'bad_eigen_center', 'deck.k'),
                extra=f(6, -10.0, 0, 0.0, 0, 0.0, 2, 0.0))
+    cantilever(1, os.path.join(ROOT, 'bad_eigen_interval', 'deck.k'),
+               extra=f(6, 0.0, 1, 5.0, 0, 0.0, 2, 0.0))
+    cantilever(1, os.path.join(ROOT, 'bad_eigen_too_many', 'deck.k'), neig=180)
