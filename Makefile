@@ -22,7 +22,7 @@ ALL_SRC := $(LIB_SRC) $(MAIN_SRC) $(PROG_SRC)
 TEST_SRC := $(wildcard tests/unit/*.f90)
 # h5pfc moves archives (libdynx.a) after the -l flags; --no-as-needed keeps libmetis.so
 # linked so libdynx.a can resolve METIS symbols from it
-LIBS := -Wl,--no-as-needed -lmetis -ldmumps -lmumps_common -llapack -lblas
+LIBS := -Wl,--no-as-needed -lmetis -ldmumps -lmumps_common -larpack -llapack -lblas
 COMMON := -I/usr/include -ffree-line-length-132
 REL_FLAGS := $(COMMON) -O3 -march=native -funroll-loops
 # the element and material kernels work on fixed chunks of nv_chunk elements: their

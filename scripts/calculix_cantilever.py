@@ -17,17 +17,22 @@ import gen_implicit_decks as g  # noqa: E402
 TOP = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..')
 
 
+def ccx_mesh(fh, nodes, elems, etype):
+    """ccx's *NODE (NSET NALL) and *ELEMENT (ELSET EALL) cards of a dynx box mesh."""
+    fh.write('*NODE, NSET=NALL\n')
+    for k in sorted(nodes):
+        fh.write('%d, %.9f, %.9f, %.9f\n' % (k, *nodes[k]))
+    fh.write('*ELEMENT, TYPE=%s, ELSET=EALL\n' % etype)
+    for i, c in enumerate(elems):
+        fh.write('%d, %s\n' % (i + 1, ', '.join(str(x) for x in c)))
+
+
 def ccx_inp(n, etype, path):
     nx, ny, nz = 10*n, n, n
     nodes, elems, nid = g.box(nx, ny, nz, 10.0, 1.0, 1.0)
     P = 1.0e-2
     with open(path, 'w') as fh:
-        fh.write('*NODE, NSET=NALL\n')
-        for k in sorted(nodes):
-            fh.write('%d, %.9f, %.9f, %.9f\n' % (k, *nodes[k]))
-        fh.write('*ELEMENT, TYPE=%s, ELSET=EALL\n' % etype)
-        for i, c in enumerate(elems):
-            fh.write('%d, %s\n' % (i + 1, ', '.join(str(x) for x in c)))
+        ccx_mesh(fh, nodes, elems, etype)
         fh.write('*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.\n*SOLID SECTION, ELSET=EALL, MATERIAL=M\n')
         fh.write('*NSET, NSET=TIP\n%d\n' % nid(nx, ny//2, nz//2))
         fh.write('*BOUNDARY\n')

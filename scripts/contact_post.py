@@ -83,7 +83,8 @@ def hertz(a):
     block's top element layer (centroids at depth h/2) fitted by the Hertz ellipse
     p^2 = p0^2 (1 - r^2/a^2) (least squares of p^2 against r^2 over the elements with
     p > 0.3 max p); the force F from rcforc (mean of the last 10 % of the run, x4 for the
-    quarter model). Hertz (Johnson 1985, ch. 4): a = (3 F R/(4 E*))^(1/3), p0 = 3F/(2 pi a^2)."""
+    quarter model), or for an implicit static run (no rcforc) the last step's spcforc z
+    resultant (x4). Hertz (Johnson 1985, ch. 4): a = (3 F R/(4 E*))^(1/3), p0 = 3F/(2 pi a^2)."""
     sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
     import dxpost
     h5 = os.path.join(a.out, 'd3plot.h5')
@@ -116,11 +117,16 @@ def hertz(a):
     slope = sxy / sxx
     p0 = math.sqrt(my - slope * mx)
     arad = math.sqrt(-(my - slope * mx) / slope)
-    names, rows = table(os.path.join(a.out, 'rcforc'))
-    fz = names.index('master_z')
-    tl = rows[-1][0]
-    last = [abs(r[fz]) for r in rows if r[0] >= 0.9 * tl]
-    F = 4.0 * sum(last) / len(last)
+    if os.path.exists(os.path.join(a.out, 'rcforc')):
+        names, rows = table(os.path.join(a.out, 'rcforc'))
+        fz = names.index('master_z')
+        tl = rows[-1][0]
+        last = [abs(r[fz]) for r in rows if r[0] >= 0.9 * tl]
+        F = 4.0 * sum(last) / len(last)
+    else:    # an implicit static run: the z resultant of the last step's SPC reactions (the
+        # block's fixed bottom; the symmetry planes take no z force)
+        res = [l for l in open(os.path.join(a.out, 'spcforc')) if 'force resultants' in l][-1]
+        F = 4.0 * abs(float(res.split('=')[1].split()[2]))
     estar = a.E / (2.0 * (1.0 - a.nu ** 2))
     ah = (3.0 * F * a.R / (4.0 * estar)) ** (1.0 / 3.0)
     p0h = 3.0 * F / (2.0 * math.pi * ah * ah)

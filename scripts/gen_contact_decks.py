@@ -193,11 +193,21 @@ def hertz(a):
     T = a.T if a.T > 0 else 40.0 * W / c
     tend = 1.25 * T
     v0 = 2.0 * a.depth / T
-    d.w('*CONTROL_TERMINATION\n%10.4g\n' % tend)
-    d.w('*CONTROL_TIMESTEP\n       0.0       0.9\n')
-    d.w('*DATABASE_GLSTAT\n%10.4g\n' % (tend / 100))
-    d.w('*DATABASE_RCFORC\n%10.4g\n' % (tend / 200))
-    d.w('*DATABASE_BINARY_D3PLOT\n%10.4g\n' % (tend / 5))
+    if a.implicit:    # implicit statics: the approach in a.implicit load steps of 1/a.implicit
+        d.w('*CONTROL_TERMINATION\n       1.0\n')
+        d.w('*CONTROL_IMPLICIT_GENERAL\n$   IMFLAG       DT0\n         1%10.6g\n'
+            % (1.0 / a.implicit))
+        d.w('*CONTROL_IMPLICIT_SOLUTION\n$   NSOLVR    ILIMIT    MAXREF     DCTOL     ECTOL'
+            '     RCTOL     LSTOL    ABSTOL\n        12         0        40    1.0e-6    1.0e-8'
+            '    1.0e-8         0    1.0e-9\n')
+        d.w('*DATABASE_SPCFORC\n%10.6g\n' % (1.0 / a.implicit))
+        d.w('*DATABASE_BINARY_D3PLOT\n       1.0\n')
+    else:
+        d.w('*CONTROL_TERMINATION\n%10.4g\n' % tend)
+        d.w('*CONTROL_TIMESTEP\n       0.0       0.9\n')
+        d.w('*DATABASE_GLSTAT\n%10.4g\n' % (tend / 100))
+        d.w('*DATABASE_RCFORC\n%10.4g\n' % (tend / 200))
+        d.w('*DATABASE_BINARY_D3PLOT\n%10.4g\n' % (tend / 5))
     mat_part(d, 1, rho, E, nu, 'block (half-space)', elform=2)
     mat_part(d, 2, rho, E, nu, 'sphere (punch with a spherical end)', elform=2)
     nx = len(xs) - 1
@@ -231,12 +241,16 @@ def hertz(a):
     d.w('*BOUNDARY_SPC_SET\n         2         0         0         1         0\n')
     d.w('*BOUNDARY_SPC_SET\n         3         0         1         1         1\n')
     d.w('*DEFINE_CURVE\n         1\n')
-    npt = 40
-    for q in range(npt + 1):
-        t = T * q / npt
-        d.w('%20.8g%20.8g\n' % (t, -v0 * 0.5 * (1 - math.cos(2 * math.pi * t / T))))
-    d.w('%20.8g%20.8g\n' % (10 * tend, 0.0))
-    d.w('*BOUNDARY_PRESCRIBED_MOTION_SET\n         4         3         0         1       1.0\n')
+    if a.implicit:    # the punch top's displacement (VAD = 2), linear in the load steps
+        d.w('%20.8g%20.8g\n%20.8g%20.8g\n' % (0.0, 0.0, 1.0, -(a.depth + a.gap)))
+        d.w('*BOUNDARY_PRESCRIBED_MOTION_SET\n         4         3         2         1       1.0\n')
+    else:
+        npt = 40
+        for q in range(npt + 1):
+            t = T * q / npt
+            d.w('%20.8g%20.8g\n' % (t, -v0 * 0.5 * (1 - math.cos(2 * math.pi * t / T))))
+        d.w('%20.8g%20.8g\n' % (10 * tend, 0.0))
+        d.w('*BOUNDARY_PRESCRIBED_MOTION_SET\n         4         3         0         1       1.0\n')
     d.w('*CONTACT_%s_ID\n         1hertz\n' % a.kw)
     d.w('$     SSID      MSID     SSTYP     MSTYP\n         2         1         3         3\n')
     d.w('$       FS        FD\n       0.0       0.0\n')
@@ -324,6 +338,8 @@ def main():
     p.add_argument('--sfs', type=float, default=20.0)
     p.add_argument('--kw', default='AUTOMATIC_SURFACE_TO_SURFACE')
     p.add_argument('--bsort', type=int, default=0)
+    p.add_argument('--implicit', type=int, default=0,
+                   help='implicit statics in this many load steps (0: explicit)')
     p.add_argument('out')
     p = sub.add_parser('slide')
     p.add_argument('--fs', type=float, default=0.2)

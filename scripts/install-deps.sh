@@ -2,7 +2,7 @@
 # Install the Debian packages dynx needs, only those missing. Without root: print the exact
 # apt-get line and exit 2.
 set -e
-PKGS="gfortran make libopenmpi-dev openmpi-bin libhdf5-openmpi-dev hdf5-tools libmetis-dev libmumps-dev \
+PKGS="gfortran make libopenmpi-dev openmpi-bin libhdf5-openmpi-dev hdf5-tools libmetis-dev libmumps-dev libarpack2-dev \
 liblapack-dev libblas-dev libfftw3-dev gnuplot-nox python3 python3-numpy"
 missing=""
 for p in $PKGS; do

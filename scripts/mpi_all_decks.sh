@@ -23,7 +23,7 @@ for dir in tests/regression/*/; do
     [ -f "$dir/expect" ] && continue
     case $c in mpi_*|bad_*) continue ;; esac
     case $c in $MATCH) ;; *) continue ;; esac
-    case $c in implicit_*) echo "SKIP $c (the implicit Newton solver is serial only)"; ns=$((ns + 1)); continue ;; esac
+    case $c in implicit_*|eigen_*) echo "SKIP $c (the implicit Newton solver and the eigenvalue run are serial only)"; ns=$((ns + 1)); continue ;; esac
     [ -f "$dir/args" ] && { echo "SKIP $c (extra arguments: $(cat "$dir/args"))"; ns=$((ns + 1)); continue; }
     ref=$work/$c
     mkdir -p "$ref"

@@ -144,7 +144,9 @@ contains
                         '(give ENDTIM > 0 or ENDCYC > 0)')
          return
       end if
-      if (.not. (inp%ctrl%endtim > 0.0_wp) .and. inp%ctrl%endcyc <= 0) then
+      ! (an eigenvalue run, *CONTROL_IMPLICIT_EIGENVALUE, ends after its NEIG modes)
+      if (.not. (inp%ctrl%endtim > 0.0_wp) .and. inp%ctrl%endcyc <= 0 .and. &
+          .not. (inp%ctrl%imp%neig > 0 .and. inp%ctrl%imp%imflag == 1)) then
          call set_error(error, at(inp, inp%term_src)//'ENDTIM <= 0 and ENDCYC <= 0: the run '// &
                         'would not end')
       end if

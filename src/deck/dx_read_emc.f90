@@ -239,14 +239,23 @@ contains
    end subroutine read_emc_control
 
    !> After the whole deck: IMFLAG = 1 needs DT0 > 0, for the conserving solver
-   !> (*DYNX_CONSERVING_CONTACT present) and for the implicit Newton solver (without it).
+   !> (*DYNX_CONSERVING_CONTACT present) and for the implicit Newton solver (without it);
+   !> *CONTROL_IMPLICIT_EIGENVALUE needs IMFLAG = 1 (and then neither DT0 nor ENDTIM).
    subroutine emc_finish(inp, error)
       type(model_input_t), intent(in) :: inp
       type(error_t), allocatable, intent(out) :: error
       integer :: nc
       nc = 0
       if (allocated(inp%emc%contacts)) nc = size(inp%emc%contacts)
+      if (inp%ctrl%imp%neig > 0 .and. (inp%ctrl%imp%imflag /= 1 .or. nc > 0)) then
+         call set_error(error, inp%files(inp%ctrl%imp%eig_ifile)%s//':'// &
+            str(inp%ctrl%imp%eig_line)//': *CONTROL_IMPLICIT_EIGENVALUE: field NEIG: the '// &
+            'eigenvalue analysis needs *CONTROL_IMPLICIT_GENERAL IMFLAG = 1 (and no '// &
+            '*DYNX_CONSERVING_CONTACT)')
+         return
+      end if
       if (inp%ctrl%imp%imflag /= 1) return
+      if (inp%ctrl%imp%neig > 0) return   ! the eigenvalue run needs neither DT0 nor ENDTIM
       if (nc == 0 .and. inp%ctrl%imp%dt0 > 0.0_wp .and. .not. (inp%ctrl%endtim > 0.0_wp)) then
          call set_error(error, inp%files(inp%ctrl%imp%ifile)%s//':'//str(inp%ctrl%imp%line)// &
             ': *CONTROL_IMPLICIT_GENERAL: field IMFLAG: IMFLAG = 1 (the implicit Newton '// &

@@ -11,6 +11,13 @@
 !>     IAUTO 0 fixed steps, 1 automatic (a failed step is retried at half the step; the step
 !>     grows or shrinks toward ITEOPT (11) +- ITEWIN (5) iterations, between DTMIN (DT0/1000)
 !>     and DTMAX (10 DT0)). Negative values (curve ids in LS-DYNA) are not supported.
+!>   *CONTROL_IMPLICIT_EIGENVALUE NEIG CENTER LFLAG LFTEND RFLAG RHTEND EIGMTH SHFSCL
+!>     NEIG (>= 1) modes nearest the CENTER frequency (>= 0, cycles per unit time; 0: the
+!>     lowest modes) by shift-invert Lanczos (EIGMTH 2, LS-DYNA's default, the only one);
+!>     SHFSCL (>= 0) the shift scale, a frequency: with CENTER = 0 and a singular stiffness
+!>     (a free body) the shift is -(2 pi SHFSCL)^2 (0: dynx's automatic shift). The
+!>     interval (LFLAG, RFLAG = 1), NEIG < 0 (intermittent analysis, a curve) and card 2's
+!>     options (ISOLID ... MSTRES, EVDUMP) are not supported: input errors.
 !> Values out of range are input errors naming file, line, keyword and field.
 module dx_read_implicit
    use dx_kinds, only: wp
@@ -29,6 +36,7 @@ contains
       type(registry_t), intent(inout) :: reg
       call reg%add('CONTROL_IMPLICIT_SOLUTION', read_implicit_solution)
       call reg%add('CONTROL_IMPLICIT_AUTO', read_implicit_auto)
+      call reg%add('CONTROL_IMPLICIT_EIGENVALUE', read_implicit_eigenvalue)
    end subroutine register_implicit
 
    subroutine read_implicit_solution(deck, blk, inp, error)
@@ -115,4 +123,57 @@ contains
       end associate
       call c%done(error)
    end subroutine read_implicit_auto
+
+   subroutine read_implicit_eigenvalue(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      type(card_t) :: c
+      integer :: k, line
+      real(wp) :: v
+      character(*), parameter :: no2 = 'card 2''s options of *CONTROL_IMPLICIT_EIGENVALUE '// &
+                                       'are not in dynx (blank or 0 only)'
+      call deck_cursor(deck, blk, c)
+      call c%need(data_start(blk), 'missing card 1 (NEIG CENTER LFLAG LFTEND RFLAG ...)')
+      associate (imp => inp%ctrl%imp)
+         call c%int('NEIG', 0, k)
+         line = c%card_line()
+         if (c%ok() .and. k < 0) call c%fail('NEIG', 'NEIG < 0 (a curve of times for '// &
+            'intermittent eigenvalue analysis) is not supported; the number of modes must be '// &
+            '>= 1, got '//str(k))
+         if (c%ok() .and. k == 0) call c%fail('NEIG', 'the number of modes must be >= 1, '// &
+            'got 0 (LS-DYNA: no eigenvalue analysis; remove the keyword for that)')
+         imp%neig = k
+         call c%real('CENTER', 0.0_wp, v)
+         if (c%ok() .and. .not. (v >= 0.0_wp .and. v < huge(v))) call c%fail('CENTER', &
+            'the center frequency (cycles per unit time) must be >= 0, got '//rstr(v))
+         imp%center = v
+         call c%int('LFLAG', 0, k)
+         if (c%ok() .and. k /= 0) call c%fail('LFLAG', 'only 0 (no left end: the modes '// &
+            'nearest CENTER) is supported, got '//str(k))
+         call c%real('LFTEND', 0.0_wp, v)
+         call c%int('RFLAG', 0, k)
+         if (c%ok() .and. k /= 0) call c%fail('RFLAG', 'only 0 (no right end: the modes '// &
+            'nearest CENTER) is supported, got '//str(k))
+         call c%real('RHTEND', 0.0_wp, v)
+         call c%int('EIGMTH', 0, k)
+         if (c%ok() .and. k /= 0 .and. k /= 2) call c%fail('EIGMTH', 'dynx has 2 (shift-'// &
+            'invert Lanczos, the default) only, got '//str(k))
+         call c%real('SHFSCL', 0.0_wp, v)
+         if (c%ok() .and. .not. (v >= 0.0_wp .and. v < huge(v))) call c%fail('SHFSCL', &
+            'the shift scale (a frequency) must be >= 0, got '//rstr(v))
+         imp%shfscl = v
+         call c%next()
+         call c%zero_int('ISOLID', no2)
+         call c%zero_int('IBEAM', no2)
+         call c%zero_int('ISHELL', no2)
+         call c%zero_int('ITSHELL', no2)
+         call c%zero_int('MSTRES', no2)
+         call c%zero_int('EVDUMP', no2)
+         imp%eig_ifile = blk%ifile
+         imp%eig_line = line
+      end associate
+      call c%done(error)
+   end subroutine read_implicit_eigenvalue
 end module dx_read_implicit

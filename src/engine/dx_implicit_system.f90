@@ -18,11 +18,13 @@ module dx_implicit_system
    use dx_sparse, only: sparse_sym_t, sparse_symbolic, sparse_zero, sparse_add_element
    use dx_loads, only: add_external_loads
    use dx_par, only: par_self_handle
+   use dx_contact_input, only: CT_NODES_TO_SURFACE, CT_SURFACE_TO_SURFACE, CT_ONE_WAY
+   use dx_implicit_contact, only: icontact_t, icon_pairs, icon_assemble, icon_commit
    implicit none
    private
    public :: implicit_system_t, isys_setup, isys_assemble, isys_commit, isys_external, &
              isys_prescribe, isys_comm, isys_gather, isys_scatter, isys_dof_name, &
-             isys_fix
+             isys_fix, isys_null_names
 
    !> One block's committed (c) and trial (t) point state: S, Ebar (6, 8, nel), history
    !> (nh, 8, nel); the element's stress work w (committed) and its trial increment dw.
@@ -41,6 +43,9 @@ module dx_implicit_system
       type(sparse_sym_t) :: k               !< the tangent stiffness
       type(block_state_t), allocatable :: bs(:)
       logical :: linear = .false.           !< NSOLVR = 1
+      integer :: nel = 0                    !< elements (contact pairs follow in the pattern)
+      type(icontact_t) :: con               !< penalty contact (dx_implicit_contact)
+      logical :: has_contact = .false.
    end type implicit_system_t
 
 contains
@@ -52,10 +57,25 @@ contains
       type(implicit_system_t), intent(inout) :: sys
       type(error_t), allocatable, intent(out) :: error
       integer :: b, e, a, i, k, n, nh, ne, d, ngp
+      integer, allocatable :: cmap(:, :)
       character(*), parameter :: why = ' (the implicit Newton solver of IMFLAG = 1, issue 20)'
       sys%linear = model%ctrl%imp%nsolvr == 1
       if (allocated(model%contact)) then
-         call set_error(error, '*CONTACT_*: contact is not yet in the implicit solver'//why); return
+         do k = 1, size(model%contact%iface)
+            associate (f => model%contact%iface(k))
+               if (f%kind /= CT_SURFACE_TO_SURFACE .and. f%kind /= CT_NODES_TO_SURFACE .and. &
+                   f%kind /= CT_ONE_WAY) then
+                  call set_error(error, f%name//' (contact '//str(f%label)//'): the implicit '// &
+                     'solver has the surface-to-surface and nodes-to-surface penalty contacts '// &
+                     '(_AUTOMATIC_ or not); single surface is not yet in it'//why); return
+               end if
+               if (any(f%pass(:)%shells)) then
+                  call set_error(error, f%name//' (contact '//str(f%label)//'): shells are '// &
+                     'not yet in the implicit contact'//why); return
+               end if
+            end associate
+         end do
+         sys%has_contact = size(model%contact%iface) > 0
       end if
       if (allocated(model%rigid)) then
          call set_error(error, 'rigid bodies (*MAT_RIGID, *CONSTRAINED_*) are not yet in '// &
@@ -149,7 +169,13 @@ contains
             end do
          end associate
       end do
-      call sparse_symbolic(n, sys%emap, sys%k)
+      sys%nel = ne
+      if (sys%has_contact) then    ! one pseudo-element per candidate contact pair
+         call icon_pairs(model, sys%eqn, sys%con, cmap)
+         call sparse_symbolic(n, reshape([sys%emap, cmap], [3*TL_NEN, ne + sys%con%np]), sys%k)
+      else
+         call sparse_symbolic(n, sys%emap, sys%k)
+      end if
       allocate(sys%bs(size(model%blocks)))
       do b = 1, size(model%blocks)
          associate (blk => model%blocks(b), s => sys%bs(b))
@@ -213,6 +239,7 @@ contains
             end do
          end associate
       end do
+      if (sys%has_contact) call icon_assemble(model, sys%con, u, want_k, fint, sys%k, sys%nel)
    end subroutine isys_assemble
 
    !> The trial state (of the last assembly) becomes the committed one; the blocks' plot
@@ -222,6 +249,7 @@ contains
       type(model_t), intent(inout) :: model
       type(implicit_system_t), intent(inout) :: sys
       integer :: b, ip, k
+      if (sys%has_contact) call icon_commit(sys%con)
       do b = 1, size(model%blocks)
          associate (blk => model%blocks(b), s => sys%bs(b))
             s%sc = s%st; s%ec = s%et; s%hc = s%ht
@@ -312,6 +340,22 @@ contains
          end do
       end do
    end function isys_dof_name
+
+   !> 'node L x, node M z, ...' of the first 10 of the equations eqs (a factorization's null
+   !> pivots; messages), ', ...' after them when there are more.
+   function isys_null_names(model, sys, eqs) result(s)
+      type(model_t), intent(in) :: model
+      type(implicit_system_t), intent(in) :: sys
+      integer, intent(in) :: eqs(:)
+      character(:), allocatable :: s
+      integer :: q
+      s = ''
+      do q = 1, min(size(eqs), 10)
+         if (q > 1) s = s//', '
+         s = s//isys_dof_name(model, sys, eqs(q))
+      end do
+      if (size(eqs) > 10) s = s//', ...'
+   end function isys_null_names
 
    !> The communicator handle the sparse solver takes (serial: MPI_COMM_SELF, MPI started
    !> for it).

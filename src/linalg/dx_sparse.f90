@@ -2,7 +2,9 @@
 !> in compressed sparse rows (CSR) with the same entries as coordinate triples (COO: irn,
 !> jcn), the input the direct solver (dx_mumps) takes. The pattern comes from a symbolic
 !> pass done once per mesh (sparse_symbolic): from each element's equation map (0 for an
-!> eliminated degree of freedom) the sorted unique columns of every row, and for each element
+!> eliminated degree of freedom) the sorted unique columns of every row, the diagonal always
+!> (its first entry: an equation no element touches has a zero row that the solver reports
+!> as a null pivot, and the diagonal shifts K - sigma M and K_eff find it), and for each element
 !> the position of each of its (a, b) entries in the value array, so that every Newton
 !> assembly is one indexed add per element entry (sparse_add_element) with no search.
 !> (The classical finite-element assembly of Hughes, "The Finite Element Method", 1987,
@@ -42,7 +44,7 @@ contains
       s%nde = nde
       ! upper bound of each row's entries: every (a, b) pair of every element
       allocate(cnt(n), start(n + 1))
-      cnt = 0
+      cnt = 1                ! every row's diagonal, even of an equation in no element
       do e = 1, nel
          do a = 1, nde
             i = eq(a, e)
@@ -57,7 +59,10 @@ contains
          start(i + 1) = start(i) + cnt(i)
       end do
       allocate(tmp(start(n + 1) - 1), fill(n))
-      fill = 0
+      do i = 1, n
+         tmp(start(i)) = i
+      end do
+      fill = 1
       do e = 1, nel
          do a = 1, nde
             i = eq(a, e)

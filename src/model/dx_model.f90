@@ -167,6 +167,12 @@ module dx_model
       integer :: iauto = 0, iteopt = 11, itewin = 5
       real(wp) :: dtmin = 0.0_wp, dtmax = 0.0_wp
       logical :: dynamic = .false.      !< *CONTROL_IMPLICIT_DYNAMICS given (IMASS = 1)
+      !> *CONTROL_IMPLICIT_EIGENVALUE: NEIG modes (0: no eigenvalue run) nearest the CENTER
+      !> frequency (cycles per unit time), SHFSCL the shift scale (a frequency; 0: dynx's
+      !> automatic shift when the stiffness is singular); where NEIG was read
+      integer :: neig = 0
+      real(wp) :: center = 0.0_wp, shfscl = 0.0_wp
+      integer :: eig_ifile = 0, eig_line = 0
    end type implicit_ctrl_t
 
    !> *CONTROL_TERMINATION, *CONTROL_TIMESTEP, *CONTROL_HOURGLASS, *CONTROL_BULK_VISCOSITY,

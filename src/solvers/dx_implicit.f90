@@ -40,7 +40,7 @@ module dx_implicit
    use dx_mumps, only: mumps_t
    use dx_implicit_system, only: implicit_system_t, isys_setup, isys_assemble, isys_commit, &
                                  isys_external, isys_prescribe, isys_comm, isys_gather, &
-                                 isys_scatter, isys_dof_name, isys_fix
+                                 isys_scatter, isys_null_names, isys_fix
    implicit none
    private
    public :: implicit_t
@@ -274,7 +274,7 @@ contains
       real(wp) :: r0, rn, dn, en, e1, s0, s1, eta, etap, sp, un, eta_new
       integer :: it, ls
       character(:), allocatable :: hist
-      character(120) :: line
+      character(160) :: line
       ok = .false.
       nit = 0
       associate (sys => self%sys, imp => model%ctrl%imp)
@@ -337,6 +337,8 @@ contains
             write(line, '(a,i3,a,es10.3,a,es10.3,a,es10.3,a,f6.3)') '    iteration', it, &
                ': residual ratio ', rn/max(r0, tiny(1.0_wp)), ', displacement ratio ', dn, &
                ', energy ratio ', en, ', eta ', eta
+            if (sys%has_contact) write(line(len_trim(line) + 1:), '(a,i0,a,i0,a)') &
+               ', contact nodes ', sys%con%nactive, ' (', sys%con%nchanged, ' changed)'
             call log_info(trim(line))
             hist = hist//new_line('a')//trim(line)
             self%niter = self%niter + 1
@@ -416,8 +418,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp), allocatable :: m(:, :), mv(:), km(:)
       real(wp) :: xc(3), kmax, x(3)
-      integer :: k, i, q, code
-      character(:), allocatable :: modes, nodes
+      integer :: k, i, code
+      character(:), allocatable :: modes, nodes, hint
       character(16), parameter :: names(6) = [character(16) :: 'translation x', 'translation y', &
          'translation z', 'rotation about x', 'rotation about y', 'rotation about z']
       allocate(m(3, model%nn), mv(self%sys%neq), km(self%sys%neq))
@@ -450,19 +452,18 @@ contains
             modes = modes//trim(names(k))
          end if
       end do
-      nodes = ''
-      do q = 1, min(self%ms%nnull, 10)
-         if (q > 1) nodes = nodes//', '
-         nodes = nodes//isys_dof_name(model, self%sys, self%ms%null_eq(q))
-      end do
-      if (self%ms%nnull > 10) nodes = nodes//', ...'
+      nodes = isys_null_names(model, self%sys, self%ms%null_eq(1:self%ms%nnull))
       if (len(modes) == 0) modes = 'none of the whole model''s rigid-body modes (a part '// &
          'or a node is free on its own)'
       code = EXIT_NUMERIC
       if (self%nsteps == 0 .and. self%niter == 0) code = EXIT_INPUT
+      hint = ' (missing *BOUNDARY_SPC constraints?)'
+      if (self%sys%has_contact) hint = ' (missing *BOUNDARY_SPC constraints? With contact: '// &
+         'a body held only by contact that lost it, or whose contact nodes all slip, has no '// &
+         'stiffness along the slip: a load above the friction has no static equilibrium)'
       call set_error(error, 'singular stiffness at time '//rstr(tn)//': '// &
          str(self%ms%nnull)//' zero pivot(s) at '//nodes//'; free rigid-body modes: '// &
-         modes//' (missing *BOUNDARY_SPC constraints?)', code)
+         modes//hint, code)
    end subroutine singular
 
    !> The cycle boundary: the converged step's time.

@@ -4,7 +4,8 @@
 !> and the wall-clock limit (dx_checkpoint) at each cycle boundary, and the end.
 !> Which integrator runs (docs/design.md): *DYNX_CONSERVING_CONTACT (with
 !> *CONTROL_IMPLICIT_GENERAL IMFLAG = 1) the conserving rigid-body solver (dx_emc_solver),
-!> IMFLAG = 1 without it the implicit Newton solver (dx_implicit), else the explicit
+!> IMFLAG = 1 without it the implicit Newton solver (dx_implicit) or, with
+!> *CONTROL_IMPLICIT_EIGENVALUE, the eigenvalue run (dx_eigen), else the explicit
 !> central-difference loop (dx_explicit). IMFLAG = 2 is refused when the deck is read (exit 2).
 module dx_solver
    use dx_kinds, only: wp, huge_wp
@@ -21,6 +22,7 @@ module dx_solver
    use dx_explicit, only: explicit_t, elem_label, explicit_rbdout
    use dx_emc_run, only: conserving_t
    use dx_implicit, only: implicit_t
+   use dx_eigen, only: eigen_t
    implicit none
    private
    public :: make_integrator, integrator_choice, run_driver
@@ -42,6 +44,10 @@ contains
       if (allocated(model%emc)) then
          name = 'conserving rigid-body (Simo & Wong midpoint rule)'
          why = '*DYNX_CONSERVING_CONTACT with *CONTROL_IMPLICIT_GENERAL IMFLAG = 1'
+      else if (model%ctrl%imp%imflag == 1 .and. model%ctrl%imp%neig > 0) then
+         name = 'implicit eigenvalues (shift-invert Lanczos: ARPACK with MUMPS)'
+         why = '*CONTROL_IMPLICIT_EIGENVALUE NEIG = '//str(model%ctrl%imp%neig)// &
+               ' with *CONTROL_IMPLICIT_GENERAL IMFLAG = 1'
       else if (model%ctrl%imp%imflag == 1) then
          name = 'implicit Newton statics (NIKE3D: Newton-Raphson, line search, MUMPS)'
          why = '*CONTROL_IMPLICIT_GENERAL IMFLAG = 1 without *DYNX_CONSERVING_CONTACT'
@@ -60,6 +66,8 @@ contains
       class(integrator_t), allocatable, intent(out) :: integ
       if (allocated(model%emc)) then
          allocate(conserving_t :: integ)
+      else if (model%ctrl%imp%imflag == 1 .and. model%ctrl%imp%neig > 0) then
+         allocate(eigen_t :: integ)
       else if (model%ctrl%imp%imflag == 1) then
          allocate(implicit_t :: integ)
       else
