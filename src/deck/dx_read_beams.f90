@@ -19,12 +19,12 @@ module dx_read_beams
    use dx_kinds, only: wp
    use dx_error, only: error_t
    use dx_strings, only: str, rstr
-   use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, data_start
+   use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor
    use dx_deck_registry, only: registry_t
    use dx_model, only: section_t
    use dx_model_input, only: model_input_t, add_element, SOLID_CARD_NODES, beam_in_t, &
                              mass_in_t, origin
-   use dx_read_nodes_elements, only: read_section_id, add_section
+   use dx_read_nodes_elements, only: section_block, read_section_id, add_section
    implicit none
    private
    public :: register_beams
@@ -53,17 +53,12 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: ic, step, ioff, cst, k
+      integer :: ic, step, cst, k
       real(wp) :: qr, scoor, nsm
       type(section_t) :: s
       type(card_t) :: c
       character(len=3), parameter :: PNAME(6) = ['A  ', 'ISS', 'ITT', 'J  ', 'SA ', 'IST']
-      ioff = data_start(blk) - 1
-      step = 2 + ioff
-      call deck_cursor(deck, blk, c)
-      if (blk%n < 1 + ioff) call c%fail_block(0, 'missing card 1 (SECID ELFORM SHRF QR/IRID '// &
-                                              'CST SCOOR NSM)')
-      ic = 1 + ioff
+      call section_block(deck, blk, 2, 'SECID ELFORM SHRF QR/IRID CST SCOOR NSM', c, ic, step)
       do while (ic <= blk%n .and. c%ok())
          s = section_t()
          s%beam = .true.
@@ -104,8 +99,7 @@ contains
          if (c%ok() .and. s%bprop(6) /= 0.0_wp) call c%fail('IST', 'product of inertia '// &
             rstr(s%bprop(6))//' is not supported (supported: 0, s and t principal axes)')
          if (.not. c%ok()) exit
-         call add_section(inp, s, blk, ic)
-         ic = ic + step
+         call add_section(inp, s, blk, ic, step)
       end do
       call c%done(error)
    end subroutine read_section_beam

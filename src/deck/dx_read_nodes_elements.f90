@@ -14,7 +14,7 @@ module dx_read_nodes_elements
    use dx_model_input, only: model_input_t, add_node, add_element, origin, input_add_part
    implicit none
    private
-   public :: register_nodes_elements, read_section_id, add_section
+   public :: register_nodes_elements, section_block, read_section_id, add_section
 
 contains
 
@@ -224,10 +224,7 @@ contains
       integer :: ic, step
       type(section_t) :: s
       type(card_t) :: c
-      step = data_start(blk)
-      call deck_cursor(deck, blk, c)
-      call c%need(step, 'missing card 1 (SECID ELFORM AET)')
-      ic = step
+      call section_block(deck, blk, 1, 'SECID ELFORM AET', c, ic, step)
       do while (ic <= blk%n .and. c%ok())
          s = section_t()
          call read_section_id(blk, ic, c, s)
@@ -241,14 +238,30 @@ contains
          if (c%ok() .and. s%aet /= 0) call c%fail('AET', 'ambient element types are not '// &
                                                   'supported')
          if (c%halt()) exit
-         call add_section(inp, s, blk, ic)
-         ic = ic + step
+         call add_section(inp, s, blk, ic, step)
       end do
       call c%done(error)
    end subroutine read_section_solid
 
+   !> Start reading a block of sections of ncards cards each (with _TITLE a title card
+   !> before each): the cursor c, the first section's card 1 ic and the step from one
+   !> section to the next; an error naming the fields of card 1 when it is missing
+   !> (*SECTION_SOLID, *SECTION_SHELL, *SECTION_BEAM).
+   subroutine section_block(deck, blk, ncards, card1, c, ic, step)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      integer, intent(in) :: ncards
+      character(*), intent(in) :: card1
+      type(card_t), intent(out) :: c
+      integer, intent(out) :: ic, step
+      ic = data_start(blk)
+      step = ncards + ic - 1
+      call deck_cursor(deck, blk, c)
+      call c%need(ic, 'missing card 1 ('//card1//')')
+   end subroutine section_block
+
    !> A section's title (with _TITLE: the card before ic, else blank) and its SECID (> 0) on
-   !> card ic; leaves c at card ic (*SECTION_SOLID, *SECTION_SHELL).
+   !> card ic; leaves c at card ic (*SECTION_SOLID, *SECTION_SHELL, *SECTION_BEAM).
    subroutine read_section_id(blk, ic, c, s)
       type(block_t), intent(in) :: blk
       integer, intent(in) :: ic
@@ -262,14 +275,17 @@ contains
                                                  str(s%label))
    end subroutine read_section_id
 
-   !> Append section s, read from card ic of blk, to the input (and where it was read).
-   subroutine add_section(inp, s, blk, ic)
+   !> Append section s, read from card ic of blk, to the input (and where it was read);
+   !> ic moves on by step to the next section's card 1.
+   subroutine add_section(inp, s, blk, ic, step)
       type(model_input_t), intent(inout) :: inp
       type(section_t), intent(in) :: s
       type(block_t), intent(in) :: blk
-      integer, intent(in) :: ic
+      integer, intent(inout) :: ic
+      integer, intent(in) :: step
       inp%sections = [inp%sections, s]
       inp%section_src = [inp%section_src, origin(blk%ifile, blk%cards(ic)%line, blk%name)]
+      ic = ic + step
    end subroutine add_section
 
    !> *HOURGLASS: HGID IHQ QM IBQ Q1 Q2 QB/VDC QW; blank or zero values defer to *CONTROL_*.
