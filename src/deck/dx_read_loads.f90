@@ -146,7 +146,7 @@ contains
       call deck_cursor(deck, blk, c)
       call c%need(1, 'missing card 1 (NSID NSIDEX BOXID IRIGID ICID)')
       ic = 1
-      do while (ic <= blk%n .and. c%ok())
+      do while (ic <= blk%n .and. .not. c%halt())
          r = ivel_in_t()
          r%kind = IVEL_SET
          call c%seek(ic)
@@ -217,7 +217,7 @@ contains
       call deck_cursor(deck, blk, c)
       call c%need(1, 'missing card 1 (ID STYP OMEGA VX VY VZ IVATN ICID)')
       ic = 1
-      do while (ic <= blk%n .and. c%ok())
+      do while (ic <= blk%n .and. .not. c%halt())
          r = ivel_in_t()
          r%kind = IVEL_GEN
          call c%seek(ic)

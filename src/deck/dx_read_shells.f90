@@ -48,7 +48,7 @@ contains
       type(section_t) :: s
       type(card_t) :: c
       call section_block(deck, blk, 2, 'SECID ELFORM SHRF NIP PROPT QR ICOMP SETYP', c, ic, step)
-      do while (ic <= blk%n .and. c%ok())
+      do while (ic <= blk%n .and. .not. c%halt())
          s = section_t()
          s%shell = .true.
          call read_section_id(blk, ic, c, s)
@@ -124,7 +124,7 @@ contains
       thick = blk%base == 'ELEMENT_SHELL_THICKNESS'
       call deck_cursor(deck, blk, c)
       ic = 1
-      do while (ic <= blk%n .and. c%ok())
+      do while (ic <= blk%n .and. .not. c%halt())
          call c%seek(ic)
          c%w = merge(20, 8, blk%long)
          call c%int('EID', 0, eid)
