@@ -28,7 +28,8 @@ module dx_domain
    use dx_restart, only: restart_write
    use dx_par_restart, only: serial_restart_read
    use dx_energy_sums, only: constraint_work, element_energies, set_energy, part_mass_map, &
-                             part_energies, interface_work, eroded_energies, rotation_work
+                             part_energies, interface_work, eroded_energies, rotation_work, &
+                             part_added_mass
    use dx_par_emc, only: par_emc_t, par_emc_together
    implicit none
    private
@@ -291,6 +292,7 @@ contains
       if (.not. changed) return
       call lump_mass(model)
       model%energy%added_mass = ms_added_total(model)
+      call part_added_mass(model, model%added_mass)   ! matsum's +mass and shares
    end subroutine s_remass
 
    !> One-element-wide blocks get the element dt bound (element_mass_share).

@@ -37,7 +37,7 @@ module dx_par_engine
    use dx_par_model, only: par_model_t, par_fill_slots, par_exchange_forces, par_exchange_mass
    use dx_energy_sums, only: initial_kinetic, kinetic_energy, element_energies, &
                              constraint_terms, set_energy, part_energies, rot_node_term, &
-                             rotation_kinetic, rotation_initial, eroded_energies
+                             rotation_kinetic, rotation_initial, eroded_energies, part_added_mass
    use dx_constraints, only: apply_rigidwalls, wall_hits_t
    use dx_par_contact, only: par_contact_t, par_contact_report
    use dx_par_plot, only: par_plot_t, par_plot_write, par_plot_finish
@@ -186,6 +186,7 @@ contains
          do e = 1, model%ne
             tot(1) = tot(1) + ga(e)
          end do
+         call part_added_mass(eng%g, ga)   ! matsum's +mass and shares (global model)
       end if
       call par_bcast_real(tot, 0)
       model%energy%added_mass = tot(1)

@@ -108,9 +108,6 @@ contains
       if (self%matsum_on .and. .not. allocated(error)) &
          call open_layout_file(self%matsum, self%dir, 'matsum', title, matsum_header(model), cont, &
                                model%run%matsum_bytes, error)
-      if (self%matsum_on .and. .not. cont .and. model%ctrl%dt2ms /= 0) call log_warn('matsum: '// &
-         'the +mass= column (added mass per part) is written as 0 under mass scaling '// &
-         '(*CONTROL_TIMESTEP DT2MS); glstat''s added_mass column has the model''s total')
       self%spcforc_on = model%db%spcforc_dt > 0
       if (self%spcforc_on .and. .not. allocated(error)) &
          call open_layout_file(self%spcforc, self%dir, 'spcforc', title, spcforc_header(model), &

@@ -219,8 +219,13 @@ module dx_model
       integer, allocatable :: node(:)         !< dense node indices
       real(wp), allocatable :: m(:)           !< mass share of the part at node
       real(wp), allocatable :: mass(:)        !< (np) part mass (sum of its shares)
-      !> (np) mass added by mass scaling (*CONTROL_TIMESTEP DT2MS; zero until it lands)
+      !> (np) mass added by mass scaling (*CONTROL_TIMESTEP DT2MS; dx_energy_sums
+      !> part_added_mass); m then holds the shares of rho V0 + the added mass
       real(wp), allocatable :: added(:)
+      !> with DT2MS: each part's elements (eptr (np + 1) into el, em, esh, noff), the dense
+      !> element, its rho V0 and nodal share, and its nodes' entries of m (noff into ent)
+      integer, allocatable :: eptr(:), el(:), noff(:), ent(:)
+      real(wp), allocatable :: em(:), esh(:)
       real(wp), allocatable :: ie(:), ke(:), hge(:)   !< (np) internal, kinetic, hourglass
       real(wp), allocatable :: mom(:, :)      !< (3, np) momentum
       real(wp), allocatable :: eie(:), eke(:) !< (np) eroded internal and kinetic energy
