@@ -25,7 +25,7 @@ module dx_model_build
    use dx_beam_bs, only: beam_bs_init
    use dx_label_map, only: label_map_t
    use dx_build_common, only: maps_t, at, at_line, set_nodes, curve_index, node_index, &
-                              dense_segments
+                              dense_segments, hist_solids
    use dx_build_loads, only: build_bcs, build_initial_velocity, build_loads
    use dx_rigid_build, only: build_rigid, build_body_loads
    implicit none
@@ -803,6 +803,9 @@ contains
       model%db%matsum_dt = inp%matsum_dt
       model%db%spcforc_dt = inp%spcforc_dt
       model%db%sleout_dt = inp%sleout_dt
+      model%db%elout_dt = inp%elout_dt
+      call hist_solids(inp, model, mp, error)
+      if (allocated(error)) return
       model%rst = inp%rst
       allocate(h(model%nn), seen(model%nn))    ! each node once: at most nn (linear set-up)
       seen = .false.

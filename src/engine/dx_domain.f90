@@ -18,6 +18,7 @@ module dx_domain
    use dx_strings, only: str
    use dx_model, only: model_t
    use dx_output, only: output_t
+   use dx_elout, only: elout_values
    use dx_par, only: par_rank, par_size
    use dx_loads, only: has_external_loads
    use dx_constraints, only: apply_rigidwalls, add_wall_hits, wall_hits_t
@@ -80,6 +81,7 @@ module dx_domain
       procedure(fail_i), deferred :: fail               !< a failure on this rank alone
       procedure(output_i), deferred :: output_model     !< glstat/nodout model at this step
       procedure(output_i), deferred :: output_target    !< the model output is opened with
+      procedure(elout_i), deferred :: element_output    !< elout's values into om (MPI: rank 0)
       procedure(error_io_i), deferred :: sync_failure   !< last cycle: a kept failure
       procedure(finish_i), deferred :: plot_finish      !< end: combine the plot parts
       procedure(dump_i), deferred :: write_dump         !< a restart dump
@@ -207,6 +209,12 @@ module dx_domain
          type(model_t), pointer, intent(out) :: om
          logical, intent(out) :: writer
       end subroutine output_i
+      subroutine elout_i(d, model, om)
+         import :: domain_t, model_t
+         class(domain_t), intent(inout) :: d
+         type(model_t), intent(inout), target :: model
+         type(model_t), pointer, intent(in) :: om
+      end subroutine elout_i
       subroutine finish_i(d, error, failure)
          import :: domain_t, error_t
          class(domain_t), intent(inout) :: d
@@ -267,6 +275,7 @@ module dx_domain
       procedure :: fail => s_fail
       procedure :: output_model => s_output_model
       procedure :: output_target => s_output_model
+      procedure :: element_output => s_element_output
       procedure :: sync_failure => s_error_nothing
       procedure :: plot_finish => s_plot_finish
       procedure :: write_dump => s_write_dump
@@ -448,6 +457,14 @@ contains
       om => model
       writer = d%writer()
    end subroutine s_output_model
+
+   !> elout's values of the history solids (om is the model itself).
+   subroutine s_element_output(d, model, om)
+      class(serial_domain_t), intent(inout) :: d
+      type(model_t), intent(inout), target :: model
+      type(model_t), pointer, intent(in) :: om
+      call elout_values(model)
+   end subroutine s_element_output
 
    subroutine s_plot_finish(d, error, failure)
       class(serial_domain_t), intent(inout) :: d

@@ -28,6 +28,7 @@ module dx_par_engine
    use dx_strings, only: str, rstr
    use dx_log, only: log_info
    use dx_model, only: model_t, ES_WORK, WORK_PN, WORK_QBV
+   use dx_elout, only: elout_element
    use dx_par, only: par_rank, par_size, par_abort, par_minloc, par_allreduce, &
                      PAR_MAX, par_wtime, PAR_SUM, par_bcast_text, par_bcast_real, par_minloc8, &
                      par_allgather_probe
@@ -49,7 +50,8 @@ module dx_par_engine
              par_engine_global, par_engine_report, par_engine_defer, &
              par_engine_pending, par_engine_sync_failure, par_engine_plot, &
              par_engine_plot_finish, par_engine_together, par_engine_writer, &
-             par_engine_flush_work, par_engine_maps, serial_key, KEY_NONE, NREC_W
+             par_engine_flush_work, par_engine_maps, serial_key, KEY_NONE, NREC_W, &
+             par_engine_elout
 
    type :: int_list_t
       integer, allocatable :: p(:)
@@ -690,6 +692,35 @@ contains
       writer = par_rank() == 0
       eng%t_gath = eng%t_gath + (par_wtime() - t0)
    end subroutine par_engine_output
+
+   !> elout (*DATABASE_HISTORY_SOLID): every local element's mean stress and effective
+   !> plastic strain (dx_elout elout_element, the serial values' very arithmetic) gathered
+   !> to rank 0 in the serial numbering, the history elements' picked into the global
+   !> model's db%elout_vals. Collective: every rank calls it.
+   subroutine par_engine_elout(eng, model)
+      type(par_engine_t), intent(inout) :: eng
+      type(model_t), intent(in) :: model
+      real(wp), allocatable :: vals(:, :), gv(:, :), ga(:, :)
+      integer :: i, j
+      real(wp) :: t0
+      t0 = par_wtime()
+      allocate(vals(7, size(eng%elem_loc, 2)), gv(7, size(eng%plan_elem%keys)))
+      do i = 1, size(eng%elem_loc, 2)
+         associate (pb => model%blocks(eng%elem_loc(1, i)))
+            call elout_element(pb, eng%elem_loc(2, i), &
+                               model%mats(model%parts(pb%ipart)%imat)%m%hv_eps_p, vals(:, i))
+         end associate
+      end do
+      call par_gather_values_root(eng%plan_elem, vals, gv)
+      if (par_rank() == 0) then
+         allocate(ga(7, model%ne))
+         ga(:, eng%plan_elem%keys) = gv
+         do j = 1, size(eng%g%db%hist_solids)
+            eng%g%db%elout_vals(:, j) = ga(:, eng%g%db%hist_solids(j))
+         end do
+      end if
+      eng%t_gath = eng%t_gath + (par_wtime() - t0)
+   end subroutine par_engine_elout
 
    !> End of an MPI run: the time spent in communication (largest over the ranks).
    subroutine par_engine_report(eng, contact)

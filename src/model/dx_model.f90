@@ -187,6 +187,12 @@ module dx_model
       real(wp) :: spcforc_dt = 0.0_wp   !< 0: no spcforc file (*DATABASE_SPCFORC)
       real(wp) :: sleout_dt = 0.0_wp    !< 0: no sleout file (*DATABASE_SLEOUT)
       integer, allocatable :: hist_nodes(:)   !< dense node indices for nodout
+      real(wp) :: elout_dt = 0.0_wp     !< 0: no elout file (*DATABASE_ELOUT)
+      !> *DATABASE_HISTORY_SOLID: dense elements, their ids and part ids (for elout)
+      integer, allocatable :: hist_solids(:), hist_solid_id(:), hist_solid_pid(:)
+      !> elout's values at the output time: (7, size(hist_solids)) the element-average
+      !> stress xx yy zz xy yz zx and effective plastic strain (dx_elout elout_values)
+      real(wp), allocatable :: elout_vals(:, :)
    end type database_t
 
    !> global energies and momentum (glstat)
