@@ -804,6 +804,7 @@ contains
       model%db%spcforc_dt = inp%spcforc_dt
       model%db%sleout_dt = inp%sleout_dt
       model%db%elout_dt = inp%elout_dt
+      model%db%ncforc_dt = inp%ncforc_dt
       call hist_solids(inp, model, mp, error)
       if (allocated(error)) return
       model%rst = inp%rst

@@ -13,12 +13,13 @@
 !>   *KEYWORD_ID (deck labels)
 !>   *DATABASE_EXTENT_BINARY (4 cards), *DATABASE_FORMAT IFORM IBINARY
 !>   *DATABASE_<ascii> DT BINARY LCUR IOOPT for the ASCII files dynx does not write
-!>     (bndout, jntforc, deforc, ncforc, nodfor, secforc, rwforc, tprint),
+!>     (bndout, jntforc, deforc, nodfor, secforc, rwforc, tprint),
 !>     *DATABASE_BINARY_D3THDT, *DATABASE_BINARY_D3PROP
 !>   *DATABASE_MATSUM, *DATABASE_SPCFORC, *DATABASE_SLEOUT, *DATABASE_ELOUT (the same card;
 !>     ELOUT: + OPTION1-4, extra history variables, not written): written (src/io/
 !>     dx_matsum.f90, dx_spcforc.f90, dx_sleout.f90, dx_elout.f90; sleout only with
-!>     *CONTACT, elout for the *DATABASE_HISTORY_SOLID elements)
+!>     *CONTACT, elout for the *DATABASE_HISTORY_SOLID elements), *DATABASE_NCFORC (the
+!>     same card: dx_ncforc.f90)
 !> Layouts, defaults and meanings: LS-DYNA Keyword User's Manual, Vol. I (R13), *CONTROL
 !> and *DATABASE chapters.
 module dx_read_output
@@ -57,7 +58,7 @@ contains
       call reg%add('DATABASE_BNDOUT', read_ascii_not_written)
       call reg%add('DATABASE_JNTFORC', read_ascii_not_written)
       call reg%add('DATABASE_DEFORC', read_ascii_not_written)
-      call reg%add('DATABASE_NCFORC', read_ascii_not_written)
+      call reg%add('DATABASE_NCFORC', read_ascii_written)
       call reg%add('DATABASE_NODFOR', read_ascii_not_written)
       call reg%add('DATABASE_SECFORC', read_ascii_not_written)
       call reg%add('DATABASE_RWFORC', read_ascii_not_written)
@@ -408,6 +409,8 @@ contains
          inp%sleout_dt = dt
       case ('elout')
          inp%elout_dt = dt
+      case ('ncforc')
+         inp%ncforc_dt = dt
       end select
    end subroutine read_ascii_written
 

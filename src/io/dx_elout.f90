@@ -17,6 +17,7 @@ module dx_elout
    use dx_error, only: error_t, set_error, EXIT_IO
    use dx_model, only: model_t, elem_block_t
    use dx_plot_hdf5, only: element_average
+   use dx_thist, only: layout_header
    implicit none
    private
    public :: elout_header, elout_record, elout_values, elout_element
@@ -29,16 +30,12 @@ contains
    function elout_header(model) result(text)
       type(model_t), intent(in) :: model
       character(:), allocatable :: text
-      character, parameter :: nl = new_line('a')
-      character(:), allocatable :: title
       character(16) :: n
-      title = ''
-      if (allocated(model%title)) title = trim(model%title)
       n = '0'
       if (allocated(model%db%hist_solids)) write(n, '(i0)') size(model%db%hist_solids)
-      text = ' element stresses (solid history elements) for '//title//nl// &
-             ' dynx elout (LS-DYNA elout labels; global axes; element averages; '// &
-             trim(n)//' elements; 10 significant digits)'//nl
+      text = layout_header(model, 'element stresses (solid history elements) for ', &
+                           'dynx elout (LS-DYNA elout labels; global axes; element averages; '// &
+                           trim(n)//' elements; 10 significant digits)')
    end function elout_header
 
    !> One element's seven values: the mean stress of block blk's element i and its mean

@@ -188,6 +188,7 @@ module dx_model
       real(wp) :: sleout_dt = 0.0_wp    !< 0: no sleout file (*DATABASE_SLEOUT)
       integer, allocatable :: hist_nodes(:)   !< dense node indices for nodout
       real(wp) :: elout_dt = 0.0_wp     !< 0: no elout file (*DATABASE_ELOUT)
+      real(wp) :: ncforc_dt = 0.0_wp    !< 0: no ncforc file (*DATABASE_NCFORC)
       !> *DATABASE_HISTORY_SOLID: dense elements, their ids and part ids (for elout)
       integer, allocatable :: hist_solids(:), hist_solid_id(:), hist_solid_pid(:)
       !> elout's values at the output time: (7, size(hist_solids)) the element-average

@@ -218,6 +218,7 @@ module dx_model_input
       type(label_list_t), allocatable :: hist_nodes(:)      !< *DATABASE_HISTORY_NODE cards
       type(label_list_t), allocatable :: hist_node_sets(:)  !< *DATABASE_HISTORY_NODE_SET cards
       real(wp) :: elout_dt = 0.0_wp        !< *DATABASE_ELOUT DT (0: none)
+      real(wp) :: ncforc_dt = 0.0_wp       !< *DATABASE_NCFORC DT (0: none)
       type(label_list_t), allocatable :: hist_solids(:)     !< *DATABASE_HISTORY_SOLID cards
       type(contact_input_t) :: contact     !< *CONTACT_*, *CONTROL_CONTACT, *DATABASE_RCFORC
       type(restart_ctrl_t) :: rst          !< *DATABASE_BINARY_D3DUMP/RUNRSF

@@ -94,8 +94,10 @@ contains
       end if
       call log_info('dynx: integrator: '//integ%name//' ('//integ%why//')')
       if (.not. integ%histories .and. max(model%db%matsum_dt, model%db%spcforc_dt, &
-                                          model%db%sleout_dt, model%db%elout_dt) > 0.0_wp) &
-         call log_info('dynx: note: matsum, spcforc, sleout and elout are not written by this '// &
+                                          model%db%sleout_dt, model%db%elout_dt, &
+                                          model%db%ncforc_dt) > 0.0_wp) &
+         call log_info('dynx: note: matsum, spcforc, sleout, elout and ncforc are not written '// &
+                       'by this '// &
                        'integrator (it writes its own emcstat); their files hold the header only')
       if (integ%energies) call guard_bounds(guard)
       t0wall = wall_time()
@@ -188,6 +190,8 @@ contains
       if (allocated(error)) return
       call history_file(6)
       if (allocated(error)) return
+      call history_file(7)
+      if (allocated(error)) return
       if (allocated(model%rigid)) then
          if (model%rigid%rbdout_dt > 0.0_wp .and. &
              (t >= model%rigid%next_rbdout .or. done)) then
@@ -198,7 +202,8 @@ contains
          end if
       end if
    contains
-      !> glstat (kind 1), nodout (2), matsum (3), spcforc (4), sleout (5) or elout (6) when
+      !> glstat (kind 1), nodout (2), matsum (3), spcforc (4), sleout (5), elout (6) or
+      !> ncforc (7) when
       !> due (MPI: the global model gathered to rank 0; matsum's part sums are formed there,
       !> elout's element values gathered there)
       subroutine history_file(kind)
@@ -215,8 +220,10 @@ contains
             interval = model%db%spcforc_dt; next = model%run%next_spcforc
          case (5)
             interval = model%db%sleout_dt; next = model%run%next_sleout
-         case default
+         case (6)
             interval = model%db%elout_dt; next = model%run%next_elout
+         case default
+            interval = model%db%ncforc_dt; next = model%run%next_ncforc
          end select
          if (.not. (interval > 0.0_wp .and. (t >= next .or. done))) return
          call dom%output_model(model, om, writer)
@@ -227,6 +234,7 @@ contains
          if (writer .and. kind == 4) call out%write_spcforc(om, error)
          if (writer .and. kind == 5) call out%write_sleout(om, error)
          if (writer .and. kind == 6) call out%write_elout(om, error)
+         if (writer .and. kind == 7) call out%write_ncforc(om, error)
          if (allocated(error)) return
          next = next_output_time(next, interval, t)
          select case (kind)
@@ -240,8 +248,10 @@ contains
             model%run%next_spcforc = next
          case (5)
             model%run%next_sleout = next
-         case default
+         case (6)
             model%run%next_elout = next
+         case default
+            model%run%next_ncforc = next
          end select
       end subroutine history_file
    end subroutine histories
