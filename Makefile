@@ -59,6 +59,8 @@ OBJ := build/debug
 include build/deps.mk
 OBJ := build/asan
 include build/deps.mk
+# the record-buffer template is included, not compiled: its instances rebuild with it
+$(addsuffix /dx_deck_buffers.o,build/release build/debug build/asan): src/deck/dx_deck_buffer.inc
 
 REL_LIB_OBJ := $(patsubst %.f90,build/release/%.o,$(notdir $(LIB_SRC)))
 DBG_LIB_OBJ := $(patsubst %.f90,build/debug/%.o,$(notdir $(LIB_SRC)))

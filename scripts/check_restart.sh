@@ -50,14 +50,14 @@ rnd() {  # rnd LO HI K -> integer in [LO, HI], the K-th draw from the seed
 
 same() {  # same DIR LABEL
     ok=1
-    for f in glstat nodout rbdout rcforc emcstat matsum spcforc sleout d3plot.xdmf; do
+    for f in glstat nodout rbdout rcforc emcstat matsum spcforc sleout elout ncforc d3plot.xdmf; do
         if [ -f "$ref/$f" ] || [ -f "$1/$f" ]; then
             if ! cmp -s "$ref/$f" "$1/$f"; then echo "  $2: $f differs"; ok=0; fi
         fi
     done
     if ! h5diff -q "$ref/d3plot.h5" "$1/d3plot.h5"; then echo "  $2: d3plot.h5 differs (h5diff)"; ok=0; fi
     if ! cmp -s "$ref/d3plot.h5" "$1/d3plot.h5"; then echo "  $2: d3plot.h5 not byte-equal (cmp)"; ok=0; fi
-    if [ $ok = 1 ]; then echo "  $2: identical (glstat, nodout, rbdout, rcforc, emcstat, matsum, spcforc, sleout, xdmf byte-equal (those written); h5diff 0 differences; d3plot.h5 byte-equal)"; else fail=1; fi
+    if [ $ok = 1 ]; then echo "  $2: identical (glstat, nodout, rbdout, rcforc, emcstat, matsum, spcforc, sleout, elout, ncforc, xdmf byte-equal (those written); h5diff 0 differences; d3plot.h5 byte-equal)"; else fail=1; fi
 }
 
 last_dump() { ls "$1"/d3dump*.h5 2>/dev/null | sort | tail -1; }

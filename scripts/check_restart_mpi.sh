@@ -63,7 +63,7 @@ rnd() {  # rnd LO HI K -> integer in [LO, HI], the K-th draw from the seed
 same() {  # same DIR LABEL
     ok=1
     cmpd=""
-    for f in glstat nodout rbdout rcforc matsum spcforc sleout d3plot.xdmf; do
+    for f in glstat nodout rbdout rcforc matsum spcforc sleout elout ncforc d3plot.xdmf; do
         if [ -f "$ref/$f" ] || [ -f "$1/$f" ]; then
             if ! cmp -s "$ref/$f" "$1/$f"; then echo "  $2: $f differs"; ok=0; fi
             cmpd="$cmpd$f, "

@@ -15,7 +15,10 @@
 --conserved  the sum over the parts of each momentum component stays at its first value
              (no external force; 2e-10 times the largest momentum component of any part).
 --free P V   part P flies free: its rigid-body velocity is V at every time (2e-10 relative)
-             and its momentum is its header mass times V.
+             and its momentum is its mass (header mass + its +mass, the added mass) times V.
+--added      mass scaling: at every matsum time that glstat also has, the parts' +mass sum
+             to glstat's added_mass (2e-10 of its largest value: 10 printed digits each and
+             a sum over a few elements), and some part's +mass is positive at the last time.
 --mass P M   the header's mass of part P is M (relative 1e-10: M is rho V0 summed in 10 digits).
 --final P VX TOL   part P's x rigid-body velocity at the last time is VX within TOL (absolute).
 --exchange P Q   x-momentum moves from part P to part Q: P's falls and Q's rises between the
@@ -113,12 +116,25 @@ def main():
                 r = recs[t][pid]
                 for c, vc in zip('xyz', v):
                     worst_v = max(worst_v, abs(r[c + '-rbv'] - vc))
-                    worst_p = max(worst_p, abs(r[c + '-mom'] - masses[pid]*vc))
+                    worst_p = max(worst_p, abs(r[c + '-mom'] - (masses[pid] + r['+mass'])*vc))
             vmax = max(abs(x) for x in v)
             good = worst_v <= 2e-10*vmax and worst_p <= 2e-10*masses[pid]*vmax
             ok &= good
             print('free part %d: rigid-body velocity %s: largest deviation %.3e, momentum '
                   'vs mass x v %.3e: %s' % (pid, v, worst_v, worst_p, 'ok' if good else 'FAIL'))
+        elif opt == '--added':
+            g = read_columns(out + '/glstat')
+            scale = max(abs(r['added_mass']) for r in g.values())
+            worst, n = 0.0, 0
+            for t in times:
+                if t in g:
+                    worst = max(worst, abs(sum(p['+mass'] for p in recs[t].values()) -
+                                           g[t]['added_mass']))
+                    n += 1
+            good = n > 0 and worst <= 2e-10*scale and max(p['+mass'] for p in last.values()) > 0
+            ok &= good
+            print('sum over parts of +mass vs glstat added_mass: largest difference %.3e over '
+                  '%d times (bound 2e-10 x %.6e): %s' % (worst, n, scale, 'ok' if good else 'FAIL'))
         elif opt == '--mass':
             pid = int(a.pop(0)); m = float(a.pop(0))
             good = abs(masses.get(pid, float('nan')) - m) <= 1e-10*abs(m)

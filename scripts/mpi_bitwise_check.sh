@@ -4,7 +4,7 @@
 # SERIAL_OUTDIR holds a serial run of DECK (bin/dynx -i DECK -o SERIAL_OUTDIR). For each NP,
 # runs `mpirun -np NP bin/dynx -i DECK -o SERIAL_OUTDIR/npNP` (--oversubscribe; as root also
 # --allow-run-as-root; rank 0 partitions the deck itself) and compares glstat and nodout
-# (and rbdout / rcforc / emcstat / matsum / spcforc / sleout when the serial run wrote one) with cmp and d3plot.h5 with h5diff: zero
+# (and rbdout / rcforc / emcstat / matsum / spcforc / sleout / elout / ncforc when the serial run wrote one) with cmp and d3plot.h5 with h5diff: zero
 # tolerance. glstat prints 11 digits, so the final energies, work sums and momentum are also
 # compared as IEEE bit patterns (DYNX_ENERGY_BITS=1: one more serial run into
 # SERIAL_OUTDIR/bits). Exit 1 on any difference.
@@ -40,7 +40,7 @@ for np in $nps; do
         echo "NP $np: exit $rc"; cat "$out/stderr"; fail=1; continue
     fi
     res=""
-    for f in glstat nodout rbdout rcforc emcstat matsum spcforc sleout d3plot.xdmf; do
+    for f in glstat nodout rbdout rcforc emcstat matsum spcforc sleout elout ncforc d3plot.xdmf; do
         [ -f "$ref/$f" ] || continue
         if cmp -s "$ref/$f" "$out/$f"; then res="$res $f=identical"; else res="$res $f=DIFFERS"; fail=1; fi
     done

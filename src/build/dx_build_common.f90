@@ -1,17 +1,19 @@
 !> Model build, shared pieces: the label maps of one build (maps_t) and the lookups that turn a
 !> deck label into a dense index or report the card that named it ("file:line: *KEY: field
-!> F: node 7 is not defined (*NODE)"). Used by dx_model_build and dx_build_loads.
+!> F: node 7 is not defined (*NODE)"). Used by dx_model_build and dx_build_loads. Also the
+!> history solids of elout (*DATABASE_HISTORY_SOLID).
 !> No keyword of its own; no paper.
 module dx_build_common
+   use dx_kinds, only: wp
    use dx_error, only: error_t, set_error
    use dx_strings, only: str
-   use dx_model, only: model_t
+   use dx_model, only: model_t, family_t, element_family
    use dx_model_input, only: model_input_t, origin_t
    use dx_label_map, only: label_map_t
    implicit none
    private
    public :: maps_t, at, at_line, set_nodes, curve_index, node_index, dense_segments, &
-             map_labels
+             map_labels, hist_solids
 
    !> label maps of one build
    type :: maps_t
@@ -127,4 +129,49 @@ contains
          end if
       end do
    end subroutine map_labels
+
+   !> *DATABASE_ELOUT's elements: the *DATABASE_HISTORY_SOLID ids (each once, in card
+   !> order) as dense elements with their ids and part ids; an id that names no element or
+   !> a shell, beam or 2D element is an error at its card and field.
+   subroutine hist_solids(inp, model, mp, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(inout) :: model
+      type(maps_t), intent(in) :: mp
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: h(:)
+      logical, allocatable :: seen(:)
+      type(family_t) :: fam
+      integer :: i, k, e, nh
+      allocate(h(model%ne), seen(model%ne))
+      seen = .false.
+      nh = 0
+      do i = 1, size(inp%hist_solids)
+         associate (l => inp%hist_solids(i))
+            do k = 1, size(l%ids)
+               e = mp%elem%get(l%ids(k))
+               if (e == 0) then
+                  call set_error(error, at(inp, l%src)//'field ID'//str(k)//': element '// &
+                                 str(l%ids(k))//' is not defined (*ELEMENT_SOLID)')
+                  return
+               end if
+               fam = element_family(model%blocks(model%elem_block(e))%etype)
+               if (fam%rot .or. fam%twod) then
+                  call set_error(error, at(inp, l%src)//'field ID'//str(k)//': element '// &
+                     str(l%ids(k))//' is not a solid element (elout history is written for '// &
+                     'solids only; *DATABASE_HISTORY_SHELL and _BEAM are not supported)')
+                  return
+               end if
+               if (seen(e)) cycle
+               seen(e) = .true.
+               nh = nh + 1
+               h(nh) = e
+            end do
+         end associate
+      end do
+      model%db%hist_solids = h(1:nh)
+      model%db%hist_solid_id = model%elem_label(h(1:nh))
+      model%db%hist_solid_pid = model%parts(model%elem_part(h(1:nh)))%label
+      allocate(model%db%elout_vals(7, nh))
+      model%db%elout_vals = 0.0_wp
+   end subroutine hist_solids
 end module dx_build_common

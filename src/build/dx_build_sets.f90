@@ -11,7 +11,7 @@ module dx_build_sets
    use dx_model_input, only: model_input_t, origin_t
    use dx_build_twod, only: part_dim
    use dx_build_common, only: maps_t, at, set_nodes, curve_index, node_index, dense_segments, &
-                              map_labels
+                              map_labels, hist_solids
    implicit none
    private
    public :: build_sets, build_controls
@@ -112,6 +112,10 @@ contains
       model%db%matsum_dt = inp%matsum_dt
       model%db%spcforc_dt = inp%spcforc_dt
       model%db%sleout_dt = inp%sleout_dt
+      model%db%elout_dt = inp%elout_dt
+      model%db%ncforc_dt = inp%ncforc_dt
+      call hist_solids(inp, model, mp, error)
+      if (allocated(error)) return
       model%rst = inp%rst
       allocate(h(model%nn), seen(model%nn))    ! each node once: at most nn (linear set-up)
       seen = .false.

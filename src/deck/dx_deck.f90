@@ -90,7 +90,7 @@ contains
             call reg%lookup(blk%name, k, blk%base, blk%opt_title, blk%opt_id)
             if (k == 0) then
                if (checking) then
-                  call found%record(blk%name, '*'//blk%name, where)
+                  call found%record(blk%name, '*'//blk%name//case_hint(blk%name), where)
                   cycle
                end if
                if (ignore .and. keyword_skippable(blk%name)) then
@@ -101,12 +101,14 @@ contains
                end if
                if (ignore) then
                   call set_error(error, where//': unknown keyword *'//blk%name// &
-                     unknown_model_hint(blk%name)//': a '//keyword_family(blk%name)// &
+                     unknown_model_hint(blk%name)//case_hint(blk%name)//': a '// &
+                     keyword_family(blk%name)// &
                      ' keyword is not skipped by --ignore-unknown (only output and '// &
                      'performance keywords are: skipping it would change the problem)')
                else
                   call set_error(error, where//': unknown keyword *'//blk%name// &
-                     unknown_model_hint(blk%name)//' (dynx --check lists every '// &
+                     unknown_model_hint(blk%name)//case_hint(blk%name)// &
+                     ' (dynx --check lists every '// &
                      'unsupported keyword and option of the deck at once)')
                end if
                return
@@ -200,4 +202,19 @@ contains
       end if
       call found%record(name, first, where)
    end subroutine add_reader_error
+   !> What an unknown *CASE keyword means (LS-DYNA Keyword User's Manual Vol. I, *CASE): a
+   !> multi-case deck runs its cases one after another, each with the keywords between its
+   !> *CASE_BEGIN_n and *CASE_END_n; dynx runs one problem per deck and never merges the
+   !> cases (skipping the tags would apply every case's keywords at once).
+   function case_hint(name) result(s)
+      character(*), intent(in) :: name
+      character(:), allocatable :: s
+      s = ''
+      if (name == 'CASE') then
+         s = ' (a multi-case deck: LS-DYNA runs each case one after another; dynx runs one '// &
+             'case per deck and does not merge them: write one deck per case)'
+      else if (index(name, 'CASE_BEGIN_') == 1) then
+         s = ' (the keywords of case '//name(12:)//' only, up to *CASE_END_'//name(12:)//')'
+      end if
+   end function case_hint
 end module dx_deck

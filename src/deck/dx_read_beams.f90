@@ -19,12 +19,12 @@ module dx_read_beams
    use dx_kinds, only: wp
    use dx_error, only: error_t
    use dx_strings, only: str, rstr
-   use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, data_start
+   use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor
    use dx_deck_registry, only: registry_t
    use dx_model, only: section_t
    use dx_model_input, only: model_input_t, add_element, SOLID_CARD_NODES, beam_in_t, &
                              mass_in_t, origin
-   use dx_read_nodes_elements, only: read_section_id, add_section
+   use dx_read_nodes_elements, only: section_block, read_section_id, add_section
    implicit none
    private
    public :: register_beams
@@ -53,18 +53,13 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: ic, step, ioff, cst, k
+      integer :: ic, step, cst, k
       real(wp) :: qr, scoor, nsm
       type(section_t) :: s
       type(card_t) :: c
       character(len=3), parameter :: PNAME(6) = ['A  ', 'ISS', 'ITT', 'J  ', 'SA ', 'IST']
-      ioff = data_start(blk) - 1
-      step = 2 + ioff
-      call deck_cursor(deck, blk, c)
-      if (blk%n < 1 + ioff) call c%fail_block(0, 'missing card 1 (SECID ELFORM SHRF QR/IRID '// &
-                                              'CST SCOOR NSM)')
-      ic = 1 + ioff
-      do while (ic <= blk%n .and. c%ok())
+      call section_block(deck, blk, 2, 'SECID ELFORM SHRF QR/IRID CST SCOOR NSM', c, ic, step)
+      do while (ic <= blk%n .and. .not. c%halt())
          s = section_t()
          s%beam = .true.
          call read_section_id(blk, ic, c, s)
@@ -84,7 +79,7 @@ contains
             rstr(scoor)//' is not supported (supported: 0, the frame from N1, N2 and the '// &
             'orientation)')
          s%nsm = nsm
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          if (.not. card_follows(c, blk, ic, 'A ISS ITT J SA IST) of section '//str(s%label))) &
             exit
          do k = 1, 6
@@ -103,9 +98,8 @@ contains
             'got '//rstr(s%bprop(5)))
          if (c%ok() .and. s%bprop(6) /= 0.0_wp) call c%fail('IST', 'product of inertia '// &
             rstr(s%bprop(6))//' is not supported (supported: 0, s and t principal axes)')
-         if (.not. c%ok()) exit
-         call add_section(inp, s, blk, ic)
-         ic = ic + step
+         if (c%halt()) exit
+         call add_section(inp, s, blk, ic, step)
       end do
       call c%done(error)
    end subroutine read_section_beam
@@ -131,7 +125,7 @@ contains
       wi = merge(20, 8, blk%long)
       call deck_cursor(deck, blk, c)
       ic = 1
-      do while (ic <= blk%n .and. c%ok())
+      do while (ic <= blk%n .and. .not. c%halt())
          call c%seek(ic)
          call c%widths([(wi, k = 1, 10)])
          call c%int('EID', 0, eid)
@@ -154,11 +148,11 @@ contains
                str(iv)//' is not supported (supported: 0, no release)')
          end do
          call c%int('LOCAL', 2, local, min=0, max=2)   ! the axes of the release flags
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          call add_element(inp, eid, pid, conn, blk%ifile, blk%cards(ic)%line)
          if (thick) then
             call next_card('PARM1 PARM2 PARM3 PARM4 PARM5')
-            if (.not. c%ok()) exit
+            if (c%halt() .or. ic > blk%n) exit
             do k = 1, 5
                call c%real('PARM'//str(k), 0.0_wp, b%parm(k))
                if (c%ok() .and. b%parm(k) < 0.0_wp) call c%fail('PARM'//str(k), 'section '// &
@@ -167,7 +161,7 @@ contains
          end if
          if (offs) then
             call next_card('WX1 WY1 WZ1 WX2 WY2 WZ2')
-            if (.not. c%ok()) exit
+            if (c%halt() .or. ic > blk%n) exit
             do k = 1, 6
                call c%real(trim(OFFN(k)), 0.0_wp, v)
                if (c%ok() .and. v /= 0.0_wp) call c%fail(trim(OFFN(k)), 'beam offset '// &
@@ -176,13 +170,13 @@ contains
          end if
          if (orient) then
             call next_card('VX VY VZ')
-            if (.not. c%ok()) exit
+            if (c%halt() .or. ic > blk%n) exit
             do k = 1, 3
                call c%real(VN(k), 0.0_wp, b%v(k))
             end do
             b%has_v = any(b%v /= 0.0_wp)
          end if
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          b%e = inp%ne
          call add_beam(inp, b)
          ic = ic + 1
@@ -228,7 +222,7 @@ contains
       type(card_t) :: c
       call deck_cursor(deck, blk, c)
       ic = 1
-      do while (ic <= blk%n .and. c%ok())
+      do while (ic <= blk%n .and. .not. c%halt())
          call c%seek(ic)
          if (blk%long) then
             call c%widths([20, 20, 20, 20])
@@ -241,7 +235,7 @@ contains
          if (c%ok() .and. m%mass < 0.0_wp) call c%fail('MASS', 'mass must be >= 0, got '// &
                                                        rstr(m%mass))
          call c%int('PID', 0, m%pid, min=0)   ! the part for output only
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          m%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
          call add_mass(inp, m)
          ic = ic + 1
@@ -262,14 +256,14 @@ contains
       character(len=3), parameter :: IN(6) = ['IXX', 'IXY', 'IXZ', 'IYY', 'IYZ', 'IZZ']
       call deck_cursor(deck, blk, c)
       ic = 1
-      do while (ic <= blk%n .and. c%ok())
+      do while (ic <= blk%n .and. .not. c%halt())
          call c%seek(ic)
          call c%widths([(merge(20, 8, blk%long), k = 1, 3)])
          m = mass_in_t()
          m%inertia = .true.
          call read_eid_nid(c, m)
          call c%int('CSID', 0, m%csid, min=0)   ! axes of the tensor: none for an isotropic one
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          if (.not. card_follows(c, blk, ic, 'IXX IXY IXZ IYY IYZ IZZ MASS) of element '// &
                                 str(m%eid))) exit
          call c%widths([(merge(20, 10, blk%long), k = 1, 7)])
@@ -293,7 +287,7 @@ contains
          end do
          if (c%ok() .and. m%mass < 0.0_wp) call c%fail('MASS', 'mass must be >= 0, got '// &
                                                        rstr(m%mass))
-         if (.not. c%ok()) exit
+         if (c%halt()) exit
          m%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
          call add_mass(inp, m)
          ic = ic + 2

@@ -1,7 +1,7 @@
 !> Readers for the run controls and output requests: *CONTROL_TERMINATION, *CONTROL_TIMESTEP,
 !> *CONTROL_HOURGLASS, *CONTROL_BULK_VISCOSITY, *CONTROL_SOLID (ESORT),
 !> *DATABASE_BINARY_D3PLOT, *DATABASE_GLSTAT,
-!> *DATABASE_NODOUT, *DATABASE_HISTORY_NODE, *DATABASE_HISTORY_NODE_SET.
+!> *DATABASE_NODOUT, *DATABASE_HISTORY_NODE, *DATABASE_HISTORY_NODE_SET, *DATABASE_HISTORY_SOLID (elout).
 !> Layouts and defaults: LS-DYNA Keyword User's Manual, Vol. I (*CONTROL, *DATABASE).
 !> LS-DYNA reads a blank field as 0 and then applies the default, so a 0 in a field whose
 !> default is not 0 (TSSFAC, QH, Q1, Q2, IHQ, TYPE) also gives the default.
@@ -32,6 +32,7 @@ contains
       call reg%add('DATABASE_NODOUT', read_ascii_db)
       call reg%add('DATABASE_HISTORY_NODE', read_history)
       call reg%add('DATABASE_HISTORY_NODE_SET', read_history)
+      call reg%add('DATABASE_HISTORY_SOLID', read_history)
    end subroutine register_controls
 
    subroutine need_card(deck, blk, what, error)
@@ -293,6 +294,8 @@ contains
       end do
       if (blk%base == 'DATABASE_HISTORY_NODE') then
          inp%hist_nodes = [inp%hist_nodes, l]
+      else if (blk%base == 'DATABASE_HISTORY_SOLID') then
+         inp%hist_solids = [inp%hist_solids, l]      ! solid element ids (elout)
       else
          inp%hist_node_sets = [inp%hist_node_sets, l]
       end if

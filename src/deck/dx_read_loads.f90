@@ -13,6 +13,8 @@ module dx_read_loads
    use dx_model_input, only: model_input_t, origin, spc_in_t, motion_in_t, ivel_in_t, &
                              load_node_in_t, load_seg_in_t, wall_in_t, IVEL_SET, IVEL_NODE, &
                              IVEL_GEN
+   use dx_deck_buffers, only: spc_buffer_t, motion_buffer_t, ivel_buffer_t, &
+                              load_node_buffer_t, load_seg_buffer_t
    implicit none
    private
    public :: register_loads, loads_finish, read_motion_fields
@@ -44,16 +46,13 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: ic, k, d
       type(spc_in_t) :: s
-      type(spc_in_t), allocatable :: buf(:)   ! one per card: no append per card (quadratic)
-      integer :: nb
+      type(spc_buffer_t) :: buf
       type(card_t) :: c
       character(len=5), parameter :: dn(6) = ['DOFX ', 'DOFY ', 'DOFZ ', 'DOFRX', 'DOFRY', &
                                               'DOFRZ']
       call deck_cursor(deck, blk, c)
       call c%need(data_start(blk), 'missing card '//str(data_start(blk))//' (NID CID DOFX '// &
                   'DOFY DOFZ DOFRX DOFRY DOFRZ)')
-      allocate(buf(blk%n))
-      nb = 0
       do ic = data_start(blk), blk%n
          if (c%halt()) exit
          call c%seek(ic)
@@ -69,10 +68,9 @@ contains
          end do
          if (c%halt()) exit
          s%src = origin(blk%ifile, c%card_line(), blk%name)
-         nb = nb + 1
-         buf(nb) = s
+         call buf%push(s)
       end do
-      inp%spcs = [inp%spcs, buf(1:nb)]
+      call buf%flush(inp%spcs)
       call c%done(error)
    end subroutine read_spc
 
@@ -84,14 +82,11 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: ic
       type(motion_in_t) :: m
-      type(motion_in_t), allocatable :: buf(:)   ! one per card: no append per card
-      integer :: nb
+      type(motion_buffer_t) :: buf
       type(card_t) :: c
       call deck_cursor(deck, blk, c)
       call c%need(data_start(blk), 'missing card '//str(data_start(blk))//' (NID DOF VAD '// &
                   'LCID SF VID DEATH BIRTH)')
-      allocate(buf(blk%n))
-      nb = 0
       do ic = data_start(blk), blk%n
          if (c%halt()) exit
          call c%seek(ic)
@@ -108,10 +103,9 @@ contains
             'on rotations: 0 angular velocity, 1 angular acceleration)')
          if (c%halt()) exit
          m%src = origin(blk%ifile, c%card_line(), blk%name)
-         nb = nb + 1
-         buf(nb) = m
+         call buf%push(m)
       end do
-      inp%motions = [inp%motions, buf(1:nb)]
+      call buf%flush(inp%motions)
       call c%done(error)
    end subroutine read_motion
 
@@ -147,11 +141,12 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: ic
       type(ivel_in_t) :: r
+      type(ivel_buffer_t) :: buf
       type(card_t) :: c
       call deck_cursor(deck, blk, c)
       call c%need(1, 'missing card 1 (NSID NSIDEX BOXID IRIGID ICID)')
       ic = 1
-      do while (ic <= blk%n .and. c%ok())
+      do while (ic <= blk%n .and. .not. c%halt())
          r = ivel_in_t()
          r%kind = IVEL_SET
          call c%seek(ic)
@@ -174,8 +169,9 @@ contains
             ic = ic + 1
          end if
          if (c%halt()) exit
-         inp%ivels = [inp%ivels, r]
+         call buf%push(r)
       end do
+      call buf%flush(inp%ivels)
       call c%done(error)
    end subroutine read_initial_velocity
 
@@ -187,12 +183,9 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: ic
       type(ivel_in_t) :: r
-      type(ivel_in_t), allocatable :: buf(:)   ! one per card: no append per card
-      integer :: nb
+      type(ivel_buffer_t) :: buf
       type(card_t) :: c
       call deck_cursor(deck, blk, c)
-      allocate(buf(blk%n))
-      nb = 0
       do ic = 1, blk%n
          r = ivel_in_t()
          r%kind = IVEL_NODE
@@ -202,10 +195,9 @@ contains
          call c%zero_int('ICID', 'local coordinate systems')
          if (c%halt()) exit
          r%src = origin(blk%ifile, c%card_line(), blk%name)
-         nb = nb + 1
-         buf(nb) = r
+         call buf%push(r)
       end do
-      inp%ivels = [inp%ivels, buf(1:nb)]
+      call buf%flush(inp%ivels)
       call c%done(error)
    end subroutine read_initial_velocity_node
 
@@ -218,13 +210,14 @@ contains
       integer :: ic, k
       real(wp) :: nrm
       type(ivel_in_t) :: r
+      type(ivel_buffer_t) :: buf
       type(card_t) :: c
       character(len=2), parameter :: cn(3) = ['XC', 'YC', 'ZC'], an(3) = ['NX', 'NY', 'NZ'], &
                                      vn(3) = ['VX', 'VY', 'VZ']
       call deck_cursor(deck, blk, c)
       call c%need(1, 'missing card 1 (ID STYP OMEGA VX VY VZ IVATN ICID)')
       ic = 1
-      do while (ic <= blk%n .and. c%ok())
+      do while (ic <= blk%n .and. .not. c%halt())
          r = ivel_in_t()
          r%kind = IVEL_GEN
          call c%seek(ic)
@@ -245,7 +238,7 @@ contains
             ! the next keyword) is a card of defaults in LS-DYNA; without a rotation
             ! (OMEGA = 0) none of its fields matters
             if (r%omega == 0.0_wp) then
-               inp%ivels = [inp%ivels, r]
+               call buf%push(r)
                exit
             end if
             call c%fail_card(ic, 'missing card 2 (XC YC ZC NX NY NZ PHASE IRIGID)')
@@ -270,9 +263,10 @@ contains
             end if
          end if
          if (c%halt()) exit
-         inp%ivels = [inp%ivels, r]
+         call buf%push(r)
          ic = ic + 1
       end do
+      call buf%flush(inp%ivels)
       call c%done(error)
    end subroutine read_initial_velocity_generation
 
@@ -285,6 +279,7 @@ contains
       integer :: ic, k
       logical :: is_set
       type(load_node_in_t) :: l
+      type(load_node_buffer_t) :: buf
       type(card_t) :: c
       call deck_cursor(deck, blk, c)
       is_set = blk%base == 'LOAD_NODE_SET'
@@ -304,12 +299,13 @@ contains
          end do
          if (c%halt()) exit
          l%src = origin(blk%ifile, c%card_line(), blk%name)
-         if (is_set) then
-            inp%node_set_loads = [inp%node_set_loads, l]   ! nid holds NSID: loads_finish
-         else
-            inp%node_loads = [inp%node_loads, l]
-         end if
+         call buf%push(l)
       end do
+      if (is_set) then
+         call buf%flush(inp%node_set_loads)   ! nid holds NSID: loads_finish
+      else
+         call buf%flush(inp%node_loads)
+      end if
       call c%done(error)
    end subroutine read_load_node
 
@@ -320,6 +316,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: i, j, k
       type(load_node_in_t) :: l
+      type(load_node_buffer_t) :: buf
       do i = 1, size(inp%node_set_loads)
          l = inp%node_set_loads(i)
          j = 0
@@ -335,9 +332,10 @@ contains
          end if
          do k = 1, size(inp%node_sets(j)%ids)
             l%nid = inp%node_sets(j)%ids(k)
-            inp%node_loads = [inp%node_loads, l]
+            call buf%push(l)
          end do
       end do
+      call buf%flush(inp%node_loads)
       deallocate(inp%node_set_loads)
       allocate(inp%node_set_loads(0))
    end subroutine loads_finish
@@ -352,6 +350,7 @@ contains
       integer :: ic, k
       logical :: is_set
       type(load_seg_in_t) :: l
+      type(load_seg_buffer_t) :: buf
       type(card_t) :: c
       call deck_cursor(deck, blk, c)
       is_set = blk%base == 'LOAD_SEGMENT_SET'
@@ -384,8 +383,9 @@ contains
          end if
          if (c%halt()) exit
          l%src = origin(blk%ifile, c%card_line(), blk%name)
-         inp%seg_loads = [inp%seg_loads, l]
+         call buf%push(l)
       end do
+      call buf%flush(inp%seg_loads)
       call c%done(error)
    end subroutine read_load_segment
 

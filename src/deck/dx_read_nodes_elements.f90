@@ -14,7 +14,7 @@ module dx_read_nodes_elements
    use dx_model_input, only: model_input_t, add_node, add_element, origin, input_add_part
    implicit none
    private
-   public :: register_nodes_elements, read_section_id, add_section
+   public :: register_nodes_elements, section_block, read_section_id, add_section
 
 contains
 
@@ -89,13 +89,15 @@ contains
       end subroutine node_card
    end subroutine read_node
 
+   !> --check (deck%check): every bad field of every element; else the first stops the block.
    subroutine read_element_solid(deck, blk, inp, error)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: w(10), ic, eid, pid, conn(10), k, lim, kn, icn, line
+      integer :: w(10), ic, eid, pid, conn(10), k, lim, kn, icn, line, nbad
       logical :: one_line
+      type(error_t), allocatable :: e
       w = 8
       lim = 16
       if (blk%long) then
@@ -112,20 +114,11 @@ contains
                if (len(c) > lim) one_line = len_trim(c(lim+1:)) > 0
             end if
          end associate
-         call get_int(deck, blk, ic, 1, w, 'EID', 0, eid, error)
-         if (allocated(error)) return
-         if (eid <= 0) then
-            call field_error(deck, blk, ic, 1, w, 'EID', 'element id must be > 0, got '// &
-                             str(eid), error)
-            return
-         end if
-         call get_int(deck, blk, ic, 2, w, 'PID', 0, pid, error)
-         if (allocated(error)) return
-         if (pid <= 0) then
-            call field_error(deck, blk, ic, 2, w, 'PID', 'part id must be > 0, got '// &
-                             str(pid), error)
-            return
-         end if
+         nbad = error_count()
+         call id_field(ic, 1, 'EID', 'element id', eid)
+         if (halt()) return
+         call id_field(ic, 2, 'PID', 'part id', pid)
+         if (halt()) return
          line = blk%cards(ic)%line
          if (one_line) then
             icn = ic
@@ -136,27 +129,45 @@ contains
             kn = 0
             if (icn > blk%n) then
                call card_error(deck, blk, ic, 'missing card 2 (N1 ... N8) of element '// &
-                               str(eid), error)
+                               str(eid), e)
+               call collect_error(error, e)
                return
             end if
          end if
          do k = 1, merge(8, 10, one_line)
-            call get_int(deck, blk, icn, kn + k, w, 'N'//str(k), 0, conn(k), error)
-            if (allocated(error)) return
-            if (k <= 8 .and. conn(k) <= 0) then
-               call field_error(deck, blk, icn, kn + k, w, 'N'//str(k), &
-                  'node id must be > 0, got '//str(conn(k)), error)
-               return
+            if (k <= 8) then
+               call id_field(icn, kn + k, 'N'//str(k), 'node id', conn(k))
+            else
+               call get_int(deck, blk, icn, kn + k, w, 'N'//str(k), 0, conn(k), e)
+               if (.not. allocated(e) .and. conn(k) /= 0) call field_error(deck, blk, icn, &
+                  kn + k, w, 'N'//str(k), '10-node tetrahedra are not supported', e)
+               call collect_error(error, e)
             end if
-            if (k > 8 .and. conn(k) /= 0) then
-               call field_error(deck, blk, icn, kn + k, w, 'N'//str(k), &
-                  '10-node tetrahedra are not supported', error)
-               return
-            end if
+            if (halt()) return
          end do
-         call add_element(inp, eid, pid, conn(1:8), blk%ifile, line)
+         if (error_count() == nbad) call add_element(inp, eid, pid, conn(1:8), blk%ifile, line)
          ic = icn + 1
       end do
+   contains
+      !> field k of card jc: an id that must be > 0 (what names it in the message)
+      subroutine id_field(jc, k, name, what, val)
+         integer, intent(in) :: jc, k
+         character(*), intent(in) :: name, what
+         integer, intent(out) :: val
+         call get_int(deck, blk, jc, k, w, name, 0, val, e)
+         if (.not. allocated(e) .and. val <= 0) call field_error(deck, blk, jc, k, w, name, &
+            what//' must be > 0, got '//str(val), e)
+         call collect_error(error, e)
+      end subroutine id_field
+      !> an error stops the block unless --check collects them all
+      logical function halt()
+         halt = allocated(error) .and. .not. deck%check
+      end function halt
+      !> errors of the block so far
+      integer function error_count()
+         error_count = 0
+         if (allocated(error)) error_count = 1 + error%nmore + error%ndrop
+      end function error_count
    end subroutine read_element_solid
 
    pure integer function count_commas(s)
@@ -181,7 +192,7 @@ contains
       call deck_cursor(deck, blk, c)
       call c%need(2, 'missing card 2 (PID SECID MID EOSID HGID GRAV ADPOPT TMID)')
       ic = 1
-      do while (ic <= blk%n .and. c%ok())
+      do while (ic <= blk%n .and. .not. c%halt())
          if (ic + 1 > blk%n) then
             call c%fail_card(ic, 'missing card 2 (PID SECID MID ...) after the heading card')
             exit
@@ -224,11 +235,8 @@ contains
       integer :: ic, step
       type(section_t) :: s
       type(card_t) :: c
-      step = data_start(blk)
-      call deck_cursor(deck, blk, c)
-      call c%need(step, 'missing card 1 (SECID ELFORM AET)')
-      ic = step
-      do while (ic <= blk%n .and. c%ok())
+      call section_block(deck, blk, 1, 'SECID ELFORM AET', c, ic, step)
+      do while (ic <= blk%n .and. .not. c%halt())
          s = section_t()
          call read_section_id(blk, ic, c, s)
          call c%int('ELFORM', 1, s%elform)
@@ -241,14 +249,30 @@ contains
          if (c%ok() .and. s%aet /= 0) call c%fail('AET', 'ambient element types are not '// &
                                                   'supported')
          if (c%halt()) exit
-         call add_section(inp, s, blk, ic)
-         ic = ic + step
+         call add_section(inp, s, blk, ic, step)
       end do
       call c%done(error)
    end subroutine read_section_solid
 
+   !> Start reading a block of sections of ncards cards each (with _TITLE a title card
+   !> before each): the cursor c, the first section's card 1 ic and the step from one
+   !> section to the next; an error naming the fields of card 1 when it is missing
+   !> (*SECTION_SOLID, *SECTION_SHELL, *SECTION_BEAM).
+   subroutine section_block(deck, blk, ncards, card1, c, ic, step)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      integer, intent(in) :: ncards
+      character(*), intent(in) :: card1
+      type(card_t), intent(out) :: c
+      integer, intent(out) :: ic, step
+      ic = data_start(blk)
+      step = ncards + ic - 1
+      call deck_cursor(deck, blk, c)
+      call c%need(ic, 'missing card 1 ('//card1//')')
+   end subroutine section_block
+
    !> A section's title (with _TITLE: the card before ic, else blank) and its SECID (> 0) on
-   !> card ic; leaves c at card ic (*SECTION_SOLID, *SECTION_SHELL).
+   !> card ic; leaves c at card ic (*SECTION_SOLID, *SECTION_SHELL, *SECTION_BEAM).
    subroutine read_section_id(blk, ic, c, s)
       type(block_t), intent(in) :: blk
       integer, intent(in) :: ic
@@ -262,14 +286,17 @@ contains
                                                  str(s%label))
    end subroutine read_section_id
 
-   !> Append section s, read from card ic of blk, to the input (and where it was read).
-   subroutine add_section(inp, s, blk, ic)
+   !> Append section s, read from card ic of blk, to the input (and where it was read);
+   !> ic moves on by step to the next section's card 1.
+   subroutine add_section(inp, s, blk, ic, step)
       type(model_input_t), intent(inout) :: inp
       type(section_t), intent(in) :: s
       type(block_t), intent(in) :: blk
-      integer, intent(in) :: ic
+      integer, intent(inout) :: ic
+      integer, intent(in) :: step
       inp%sections = [inp%sections, s]
       inp%section_src = [inp%section_src, origin(blk%ifile, blk%cards(ic)%line, blk%name)]
+      ic = ic + step
    end subroutine add_section
 
    !> *HOURGLASS: HGID IHQ QM IBQ Q1 Q2 QB/VDC QW; blank or zero values defer to *CONTROL_*.
@@ -285,7 +312,7 @@ contains
       call deck_cursor(deck, blk, c)
       call c%need(step, 'missing card 1 (HGID IHQ QM IBQ Q1 Q2 QB QW)')
       ic = step
-      do while (ic <= blk%n .and. c%ok())
+      do while (ic <= blk%n .and. .not. c%halt())
          h = hourglass_t()
          call c%seek(ic)
          call c%int('HGID', 0, h%label)

@@ -12,11 +12,14 @@
 !>   *CONTROL_PARALLEL NCPU NUMRHS CONST PARA; *CONTROL_MPP_IO_NODUMP; *CONTROL_UNITS;
 !>   *KEYWORD_ID (deck labels)
 !>   *DATABASE_EXTENT_BINARY (4 cards), *DATABASE_FORMAT IFORM IBINARY
-!>   *DATABASE_<ascii> DT BINARY LCUR IOOPT (ELOUT: + OPTION1-4) for the ASCII files dynx
-!>     does not write (elout, bndout, jntforc, deforc, ncforc, nodfor, secforc, rwforc,
-!>     tprint), *DATABASE_BINARY_D3THDT, *DATABASE_BINARY_D3PROP
-!>   *DATABASE_MATSUM, *DATABASE_SPCFORC, *DATABASE_SLEOUT (the same card): written
-!>     (src/io/dx_matsum.f90, dx_spcforc.f90, dx_sleout.f90; sleout only with *CONTACT)
+!>   *DATABASE_<ascii> DT BINARY LCUR IOOPT for the ASCII files dynx does not write
+!>     (bndout, jntforc, deforc, nodfor, secforc, rwforc, tprint),
+!>     *DATABASE_BINARY_D3THDT, *DATABASE_BINARY_D3PROP
+!>   *DATABASE_MATSUM, *DATABASE_SPCFORC, *DATABASE_SLEOUT, *DATABASE_ELOUT (the same card;
+!>     ELOUT: + OPTION1-4, extra history variables, not written): written (src/io/
+!>     dx_matsum.f90, dx_spcforc.f90, dx_sleout.f90, dx_elout.f90; sleout only with
+!>     *CONTACT, elout for the *DATABASE_HISTORY_SOLID elements), *DATABASE_NCFORC (the
+!>     same card: dx_ncforc.f90)
 !> Layouts, defaults and meanings: LS-DYNA Keyword User's Manual, Vol. I (R13), *CONTROL
 !> and *DATABASE chapters.
 module dx_read_output
@@ -49,13 +52,13 @@ contains
       call reg%add('DATABASE_BINARY_D3PROP', read_d3prop)
       call reg%add('KEYWORD_ID', read_keyword_id)
       ! the ASCII databases dynx does not write yet (the file is named after the keyword)
-      call reg%add('DATABASE_ELOUT', read_ascii_not_written)
+      call reg%add('DATABASE_ELOUT', read_ascii_written)
       call reg%add('DATABASE_SLEOUT', read_ascii_written)
       call reg%add('DATABASE_SPCFORC', read_ascii_written)
       call reg%add('DATABASE_BNDOUT', read_ascii_not_written)
       call reg%add('DATABASE_JNTFORC', read_ascii_not_written)
       call reg%add('DATABASE_DEFORC', read_ascii_not_written)
-      call reg%add('DATABASE_NCFORC', read_ascii_not_written)
+      call reg%add('DATABASE_NCFORC', read_ascii_written)
       call reg%add('DATABASE_NODFOR', read_ascii_not_written)
       call reg%add('DATABASE_SECFORC', read_ascii_not_written)
       call reg%add('DATABASE_RWFORC', read_ascii_not_written)
@@ -338,7 +341,7 @@ contains
                                        'not write the ANSYS result file (only d3plot.h5)')
    end subroutine read_db_format
 
-   !> *DATABASE_<file>: DT BINARY LCUR IOOPT (ELOUT: OPTION1-4, history variables). DT = 0
+   !> *DATABASE_<file>: DT BINARY LCUR IOOPT. DT = 0
    !> and LCUR = 0: no output (nothing to note); else the file is noted as not written.
    subroutine read_ascii_not_written(deck, blk, inp, error)
       type(deck_t), intent(in) :: deck
@@ -346,7 +349,7 @@ contains
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
       type(card_t) :: c
-      integer :: binary, lcur, ioopt, v, k
+      integer :: binary, lcur, ioopt
       real(wp) :: dt
       call deck_cursor(deck, blk, c)
       call c%max_cards(1)
@@ -354,11 +357,6 @@ contains
       call flag(c, 'BINARY', 0, 3, binary)
       call c%int('LCUR', 0, lcur, min=0)
       call flag(c, 'IOOPT', 0, 3, ioopt)
-      if (blk%name == 'DATABASE_ELOUT') then
-         do k = 1, 4
-            call c%int('OPTION'//str(k), 0, v, min=0)
-         end do
-      end if
       call c%done(error)
       if (allocated(error)) return
       if (dt > 0.0_wp .or. lcur > 0) call add_out_note(deck, blk, inp, lower(blk%name(10:)))
@@ -374,7 +372,7 @@ contains
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
       type(card_t) :: c
-      integer :: binary, lcur, ioopt
+      integer :: binary, lcur, ioopt, k, opt(4)
       real(wp) :: dt
       character(:), allocatable :: file
       call deck_cursor(deck, blk, c)
@@ -383,9 +381,18 @@ contains
       call flag(c, 'BINARY', 0, 3, binary)
       call c%int('LCUR', 0, lcur, min=0)
       call flag(c, 'IOOPT', 0, 3, ioopt)
+      opt = 0
+      if (blk%name == 'DATABASE_ELOUT') then   ! extra history variables per element kind
+         do k = 1, 4
+            call c%int('OPTION'//str(k), 0, opt(k), min=0)
+         end do
+      end if
       call c%done(error)
       if (allocated(error)) return
       file = lower(blk%name(10:))
+      if (any(opt > 0)) call add_out_note(deck, blk, inp, 'OPTION1-4', 'the extra '// &
+         'history variables are not written (elout has the stresses and the effective '// &
+         'plastic strain)')
       if (lcur > 0 .and. dt > 0.0_wp) then
          call add_out_note(deck, blk, inp, file, 'written every DT = '//num(dt)// &
                            '; the output-interval curve LCUR '//str(lcur)//' is not honoured')
@@ -400,6 +407,10 @@ contains
          inp%spcforc_dt = dt
       case ('sleout')
          inp%sleout_dt = dt
+      case ('elout')
+         inp%elout_dt = dt
+      case ('ncforc')
+         inp%ncforc_dt = dt
       end select
    end subroutine read_ascii_written
 

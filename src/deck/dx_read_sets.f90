@@ -16,6 +16,7 @@ module dx_read_sets
    use dx_model_input, only: model_input_t, origin, origin_t, label_list_t, segment_list_t, &
                              set_gen_in_t, set_step_in_t
    use dx_label_map, only: label_map_t
+   use dx_deck_buffers, only: set_step_buffer_t
    implicit none
    private
    public :: register_sets, sets_finish
@@ -143,6 +144,7 @@ contains
       character(:), allocatable :: op
       type(set_gen_in_t) :: g
       type(set_step_in_t) :: st
+      type(set_step_buffer_t) :: steps
       type(card_t) :: c
       i0 = data_start(blk)
       call deck_cursor(deck, blk, c)
@@ -172,8 +174,9 @@ contains
          st%op = op
          st%ids = ids(1:n)
          st%src = origin(blk%ifile, c%card_line(), blk%name)
-         g%steps = [g%steps, st]
+         call steps%push(st)
       end do
+      call steps%flush(g%steps)
       call c%done(error)
       if (allocated(error)) return
       g%nodes = .true.

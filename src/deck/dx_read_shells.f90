@@ -15,11 +15,11 @@ module dx_read_shells
    use dx_kinds, only: wp
    use dx_error, only: error_t
    use dx_strings, only: str, rstr
-   use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, data_start
+   use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor
    use dx_deck_registry, only: registry_t
    use dx_model, only: section_t
    use dx_model_input, only: model_input_t, add_element, SOLID_CARD_NODES
-   use dx_read_nodes_elements, only: read_section_id, add_section
+   use dx_read_nodes_elements, only: section_block, read_section_id, add_section
    implicit none
    private
    public :: register_shells
@@ -43,17 +43,12 @@ contains
       type(block_t), intent(in) :: blk
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
-      integer :: ic, step, icomp, setyp, nloc, idof, edgset, k, ioff
+      integer :: ic, step, icomp, setyp, nloc, idof, edgset, k
       real(wp) :: propt, qr, marea
       type(section_t) :: s
       type(card_t) :: c
-      ioff = data_start(blk) - 1          ! 1 with _TITLE: the title card before each pair
-      step = 2 + ioff
-      call deck_cursor(deck, blk, c)
-      if (blk%n < 1 + ioff) call c%fail_block(0, 'missing card 1 (SECID ELFORM SHRF NIP PROPT '// &
-                                              'QR ICOMP SETYP)')
-      ic = 1 + ioff
-      do while (ic <= blk%n .and. c%ok())
+      call section_block(deck, blk, 2, 'SECID ELFORM SHRF NIP PROPT QR ICOMP SETYP', c, ic, step)
+      do while (ic <= blk%n .and. .not. c%halt())
          s = section_t()
          s%shell = .true.
          call read_section_id(blk, ic, c, s)
@@ -110,8 +105,7 @@ contains
          call c%int('IDOF', 0, idof)           ! ELFORM 25/26 only: no meaning for ELFORM 2
          call c%int('EDGSET', 0, edgset)       ! an edge set for output: no effect on results
          if (c%halt()) exit
-         call add_section(inp, s, blk, ic)
-         ic = ic + step
+         call add_section(inp, s, blk, ic, step)
       end do
       call c%done(error)
    end subroutine read_section_shell
@@ -130,7 +124,7 @@ contains
       thick = blk%base == 'ELEMENT_SHELL_THICKNESS'
       call deck_cursor(deck, blk, c)
       ic = 1
-      do while (ic <= blk%n .and. c%ok())
+      do while (ic <= blk%n .and. .not. c%halt())
          call c%seek(ic)
          c%w = merge(20, 8, blk%long)
          call c%int('EID', 0, eid)

@@ -18,6 +18,7 @@ module dx_domain
    use dx_strings, only: str
    use dx_model, only: model_t
    use dx_output, only: output_t
+   use dx_elout, only: elout_values
    use dx_par, only: par_rank, par_size
    use dx_contact2d, only: contact2d_forces
    use dx_loads, only: has_external_loads
@@ -29,7 +30,8 @@ module dx_domain
    use dx_restart, only: restart_write
    use dx_par_restart, only: serial_restart_read
    use dx_energy_sums, only: constraint_work, element_energies, set_energy, part_mass_map, &
-                             part_energies, interface_work, eroded_energies, rotation_work
+                             part_energies, interface_work, eroded_energies, rotation_work, &
+                             part_added_mass
    use dx_par_emc, only: par_emc_t, par_emc_together
    implicit none
    private
@@ -81,6 +83,7 @@ module dx_domain
       procedure(fail_i), deferred :: fail               !< a failure on this rank alone
       procedure(output_i), deferred :: output_model     !< glstat/nodout model at this step
       procedure(output_i), deferred :: output_target    !< the model output is opened with
+      procedure(elout_i), deferred :: element_output    !< elout's values into om (MPI: rank 0)
       procedure(error_io_i), deferred :: sync_failure   !< last cycle: a kept failure
       procedure(finish_i), deferred :: plot_finish      !< end: combine the plot parts
       procedure(dump_i), deferred :: write_dump         !< a restart dump
@@ -208,6 +211,12 @@ module dx_domain
          type(model_t), pointer, intent(out) :: om
          logical, intent(out) :: writer
       end subroutine output_i
+      subroutine elout_i(d, model, om)
+         import :: domain_t, model_t
+         class(domain_t), intent(inout) :: d
+         type(model_t), intent(inout), target :: model
+         type(model_t), pointer, intent(in) :: om
+      end subroutine elout_i
       subroutine finish_i(d, error, failure)
          import :: domain_t, error_t
          class(domain_t), intent(inout) :: d
@@ -268,6 +277,7 @@ module dx_domain
       procedure :: fail => s_fail
       procedure :: output_model => s_output_model
       procedure :: output_target => s_output_model
+      procedure :: element_output => s_element_output
       procedure :: sync_failure => s_error_nothing
       procedure :: plot_finish => s_plot_finish
       procedure :: write_dump => s_write_dump
@@ -293,6 +303,7 @@ contains
       if (.not. changed) return
       call lump_mass(model)
       model%energy%added_mass = ms_added_total(model)
+      call part_added_mass(model, model%added_mass)   ! matsum's +mass and shares
    end subroutine s_remass
 
    !> One-element-wide blocks get the element dt bound (element_mass_share).
@@ -450,6 +461,14 @@ contains
       om => model
       writer = d%writer()
    end subroutine s_output_model
+
+   !> elout's values of the history solids (om is the model itself).
+   subroutine s_element_output(d, model, om)
+      class(serial_domain_t), intent(inout) :: d
+      type(model_t), intent(inout), target :: model
+      type(model_t), pointer, intent(in) :: om
+      call elout_values(model)
+   end subroutine s_element_output
 
    subroutine s_plot_finish(d, error, failure)
       class(serial_domain_t), intent(inout) :: d

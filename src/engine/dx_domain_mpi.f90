@@ -18,6 +18,7 @@ module dx_domain_mpi
    use dx_domain, only: domain_t, serial_domain_t, requests_t
    use dx_par_engine_setup, only: par_engine_setup, par_engine_mass_share
    use dx_par_engine, only: par_engine_t, par_engine_on, par_engine_mass, par_engine_remass, &
+                            par_engine_elout, &
                             par_engine_initial, par_engine_writer, &
                             par_engine_fill, par_engine_pending, par_engine_defer, &
                             par_engine_dt, par_engine_global, par_engine_exchange, &
@@ -69,6 +70,7 @@ module dx_domain_mpi
       procedure :: fail => m_fail
       procedure :: output_model => m_output_model
       procedure :: output_target => m_output_target
+      procedure :: element_output => m_element_output
       procedure :: sync_failure => m_sync_failure
       procedure :: plot_finish => m_plot_finish
       procedure :: write_dump => m_write_dump
@@ -280,6 +282,14 @@ contains
       logical, intent(out) :: writer
       call par_engine_output(d%eng, model, .false., om, writer)
    end subroutine m_output_model
+
+   !> elout's values gathered into the global model om on rank 0 (par_engine_elout).
+   subroutine m_element_output(d, model, om)
+      class(mpi_domain_t), intent(inout) :: d
+      type(model_t), intent(inout), target :: model
+      type(model_t), pointer, intent(in) :: om
+      call par_engine_elout(d%eng, model)
+   end subroutine m_element_output
 
    !> The global model (serial numbering) rank 0 opens the output with.
    subroutine m_output_target(d, model, om, writer)

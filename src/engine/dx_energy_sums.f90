@@ -26,7 +26,7 @@ module dx_energy_sums
    public :: initial_kinetic, kinetic_energy, element_energies, constraint_work, &
              constraint_terms, set_energy, constrained_nodes, energy_bits, part_mass_map, &
              part_energies, interface_work, rot_node_term, rotation_work, &
-             rotation_kinetic, rotation_initial, eroded_energies
+             rotation_kinetic, rotation_initial, eroded_energies, part_added_mass
 
 contains
 
@@ -142,7 +142,79 @@ contains
          allocate(ps%eie(np), ps%eke(np))
          ps%eie = 0.0_wp; ps%eke = 0.0_wp
       end associate
+      if (model%ctrl%dt2ms /= 0.0_wp) call part_added_map(model)
    end subroutine part_mass_map
+
+   !> Mass scaling (DT2MS /= 0): each part's elements in block order, their rho V0, nodal
+   !> share and their nodes' entries of model%psum, kept so that part_added_mass forms the
+   !> shares again with the added mass (an MPI run's global model frees its element arrays).
+   subroutine part_added_map(model)
+      type(model_t), intent(inout) :: model
+      integer, allocatable :: slot(:)
+      type(family_t) :: fam
+      real(wp) :: rho
+      integer :: np, p, b, i, k, ne, nent, j
+      np = size(model%parts)
+      ne = 0; nent = 0
+      do b = 1, size(model%blocks)
+         fam = element_family(model%blocks(b)%etype)
+         ne = ne + model%blocks(b)%nel
+         nent = nent + model%blocks(b)%nel*fam%nen
+      end do
+      associate (ps => model%psum)
+         allocate(ps%eptr(np + 1), ps%el(ne), ps%em(ne), ps%esh(ne), ps%noff(ne + 1), &
+                  ps%ent(nent), slot(model%nn))
+         ps%eptr(1) = 1; ps%noff(1) = 1
+         j = 0
+         do p = 1, np
+            do k = ps%ptr(p), ps%ptr(p + 1) - 1
+               slot(ps%node(k)) = k
+            end do
+            rho = model%mats(model%parts(p)%imat)%m%ro
+            do b = 1, size(model%blocks)
+               if (model%blocks(b)%ipart /= p) cycle
+               fam = element_family(model%blocks(b)%etype)
+               do i = 1, model%blocks(b)%nel
+                  j = j + 1
+                  ps%el(j) = model%blocks(b)%elem(i)
+                  ps%em(j) = rho*model%blocks(b)%vol0(i)
+                  ps%esh(j) = fam%mass_share
+                  ps%noff(j + 1) = ps%noff(j) + fam%nen
+                  ps%ent(ps%noff(j):ps%noff(j + 1) - 1) = slot(model%blocks(b)%conn(1:fam%nen, i))
+               end do
+            end do
+            ps%eptr(p + 1) = j + 1
+         end do
+      end associate
+   end subroutine part_added_map
+
+   !> Mass scaling changed an element's mass: each part's added mass (its elements' dm in
+   !> block order, matsum's +mass) and its shares of the nodal masses, (rho V0 + dm) times
+   !> the family's share as lump_mass forms the nodal mass, so that the parts' kinetic
+   !> energies and momenta are those of the scaled masses and add up to glstat's (with dm
+   !> = 0 the shares are part_mass_map's bit for bit). dm: the added mass by dense element
+   !> (serial: model%added_mass; MPI: rank 0's gathered copy, the same numbers).
+   subroutine part_added_mass(model, dm)
+      type(model_t), intent(inout) :: model
+      real(wp), intent(in) :: dm(:)
+      real(wp) :: a, me
+      integer :: p, j, k
+      associate (ps => model%psum)
+         if (.not. allocated(ps%el)) return
+         ps%m = 0.0_wp
+         do p = 1, size(ps%added)
+            a = 0.0_wp
+            do j = ps%eptr(p), ps%eptr(p + 1) - 1
+               a = a + dm(ps%el(j))
+               me = ps%em(j) + dm(ps%el(j))
+               do k = ps%noff(j), ps%noff(j + 1) - 1
+                  ps%m(ps%ent(k)) = ps%m(ps%ent(k)) + me*ps%esh(j)
+               end do
+            end do
+            ps%added(p) = a
+         end do
+      end associate
+   end subroutine part_added_mass
 
    !> Each contact interface's work of this cycle's forces on its slave nodes and on its
    !> master nodes (sleout), with the centred weighting of the total contact work

@@ -28,6 +28,7 @@ module dx_par_engine
    use dx_strings, only: str, rstr
    use dx_log, only: log_info
    use dx_model, only: model_t, ES_WORK, WORK_PN, WORK_QBV
+   use dx_elout, only: elout_element
    use dx_par, only: par_rank, par_size, par_abort, par_minloc, par_allreduce, &
                      PAR_MAX, par_wtime, PAR_SUM, par_bcast_text, par_bcast_real, par_minloc8, &
                      par_allgather_probe
@@ -37,7 +38,7 @@ module dx_par_engine
    use dx_par_model, only: par_model_t, par_fill_slots, par_exchange_forces, par_exchange_mass
    use dx_energy_sums, only: initial_kinetic, kinetic_energy, element_energies, &
                              constraint_terms, set_energy, part_energies, rot_node_term, &
-                             rotation_kinetic, rotation_initial, eroded_energies
+                             rotation_kinetic, rotation_initial, eroded_energies, part_added_mass
    use dx_constraints, only: apply_rigidwalls, wall_hits_t
    use dx_par_contact, only: par_contact_t, par_contact_report
    use dx_par_plot, only: par_plot_t, par_plot_write, par_plot_finish
@@ -49,7 +50,8 @@ module dx_par_engine
              par_engine_global, par_engine_report, par_engine_defer, &
              par_engine_pending, par_engine_sync_failure, par_engine_plot, &
              par_engine_plot_finish, par_engine_together, par_engine_writer, &
-             par_engine_flush_work, par_engine_maps, serial_key, KEY_NONE, NREC_W
+             par_engine_flush_work, par_engine_maps, serial_key, KEY_NONE, NREC_W, &
+             par_engine_elout
 
    type :: int_list_t
       integer, allocatable :: p(:)
@@ -186,6 +188,7 @@ contains
          do e = 1, model%ne
             tot(1) = tot(1) + ga(e)
          end do
+         call part_added_mass(eng%g, ga)   ! matsum's +mass and shares (global model)
       end if
       call par_bcast_real(tot, 0)
       model%energy%added_mass = tot(1)
@@ -689,6 +692,35 @@ contains
       writer = par_rank() == 0
       eng%t_gath = eng%t_gath + (par_wtime() - t0)
    end subroutine par_engine_output
+
+   !> elout (*DATABASE_HISTORY_SOLID): every local element's mean stress and effective
+   !> plastic strain (dx_elout elout_element, the serial values' very arithmetic) gathered
+   !> to rank 0 in the serial numbering, the history elements' picked into the global
+   !> model's db%elout_vals. Collective: every rank calls it.
+   subroutine par_engine_elout(eng, model)
+      type(par_engine_t), intent(inout) :: eng
+      type(model_t), intent(in) :: model
+      real(wp), allocatable :: vals(:, :), gv(:, :), ga(:, :)
+      integer :: i, j
+      real(wp) :: t0
+      t0 = par_wtime()
+      allocate(vals(7, size(eng%elem_loc, 2)), gv(7, size(eng%plan_elem%keys)))
+      do i = 1, size(eng%elem_loc, 2)
+         associate (pb => model%blocks(eng%elem_loc(1, i)))
+            call elout_element(pb, eng%elem_loc(2, i), &
+                               model%mats(model%parts(pb%ipart)%imat)%m%hv_eps_p, vals(:, i))
+         end associate
+      end do
+      call par_gather_values_root(eng%plan_elem, vals, gv)
+      if (par_rank() == 0) then
+         allocate(ga(7, model%ne))
+         ga(:, eng%plan_elem%keys) = gv
+         do j = 1, size(eng%g%db%hist_solids)
+            eng%g%db%elout_vals(:, j) = ga(:, eng%g%db%hist_solids(j))
+         end do
+      end if
+      eng%t_gath = eng%t_gath + (par_wtime() - t0)
+   end subroutine par_engine_elout
 
    !> End of an MPI run: the time spent in communication (largest over the ranks).
    subroutine par_engine_report(eng, contact)

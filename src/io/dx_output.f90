@@ -1,9 +1,10 @@
 !> The output facade the solver calls: plot states (HDF5 + XDMF, *DATABASE_BINARY_D3PLOT)
 !> and ASCII time histories (*DATABASE_GLSTAT, *DATABASE_NODOUT with
-!> *DATABASE_HISTORY_NODE, *DATABASE_MATSUM, *DATABASE_SPCFORC, *DATABASE_SLEOUT). Opens
-!> only what the deck asks for: the plot file always, glstat when glstat_dt > 0, nodout when
-!> nodout_dt > 0 and history nodes exist, matsum (dx_matsum), spcforc (dx_spcforc) and
-!> sleout (dx_sleout) when their DT > 0.
+!> *DATABASE_HISTORY_NODE, *DATABASE_MATSUM, *DATABASE_SPCFORC, *DATABASE_SLEOUT,
+!> *DATABASE_ELOUT with *DATABASE_HISTORY_SOLID, *DATABASE_NCFORC). Opens only what the deck
+!> asks for: the plot file always, glstat when glstat_dt > 0, nodout when nodout_dt > 0 and
+!> history nodes exist, matsum (dx_matsum), spcforc (dx_spcforc), sleout (dx_sleout), elout
+!> (dx_elout) and ncforc (dx_ncforc) when their DT > 0.
 !> The solver decides when output is due; each call here writes one state or line(s).
 !> File formats: docs/output-format.md.
 module dx_output
@@ -16,6 +17,8 @@ module dx_output
    use dx_matsum, only: matsum_header, matsum_record
    use dx_spcforc, only: spcforc_header, spcforc_record
    use dx_sleout, only: sleout_header, sleout_record
+   use dx_elout, only: elout_header, elout_record
+   use dx_ncforc, only: ncforc_header, ncforc_record
    implicit none
    private
    public :: output_t
@@ -26,9 +29,10 @@ module dx_output
       type(plot_file_t), private :: plot
       type(thist_file_t), private :: glstat
       type(thist_file_t), private :: nodout
-      type(thist_file_t), private :: matsum, spcforc, sleout
+      type(thist_file_t), private :: matsum, spcforc, sleout, elout, ncforc
       logical, private :: glstat_on = .false., nodout_on = .false., matsum_on = .false., &
-                          spcforc_on = .false., sleout_on = .false.
+                          spcforc_on = .false., sleout_on = .false., elout_on = .false., &
+                          ncforc_on = .false.
    contains
       procedure :: open => output_open
       procedure :: write_plot => output_write_plot
@@ -37,6 +41,8 @@ module dx_output
       procedure :: write_matsum => output_write_matsum
       procedure :: write_spcforc => output_write_spcforc
       procedure :: write_sleout => output_write_sleout
+      procedure :: write_elout => output_write_elout
+      procedure :: write_ncforc => output_write_ncforc
       procedure :: close => output_close
       procedure :: resume => output_resume
       procedure :: sizes => output_sizes
@@ -108,9 +114,6 @@ contains
       if (self%matsum_on .and. .not. allocated(error)) &
          call open_layout_file(self%matsum, self%dir, 'matsum', title, matsum_header(model), cont, &
                                model%run%matsum_bytes, error)
-      if (self%matsum_on .and. .not. cont .and. model%ctrl%dt2ms /= 0) call log_warn('matsum: '// &
-         'the +mass= column (added mass per part) is written as 0 under mass scaling '// &
-         '(*CONTROL_TIMESTEP DT2MS); glstat''s added_mass column has the model''s total')
       self%spcforc_on = model%db%spcforc_dt > 0
       if (self%spcforc_on .and. .not. allocated(error)) &
          call open_layout_file(self%spcforc, self%dir, 'spcforc', title, spcforc_header(model), &
@@ -119,6 +122,14 @@ contains
       if (self%sleout_on .and. .not. allocated(error)) &
          call open_layout_file(self%sleout, self%dir, 'sleout', title, sleout_header(model), cont, &
                                model%run%sleout_bytes, error)
+      self%elout_on = model%db%elout_dt > 0
+      if (self%elout_on .and. .not. allocated(error)) &
+         call open_layout_file(self%elout, self%dir, 'elout', title, elout_header(model), cont, &
+                               model%run%elout_bytes, error)
+      self%ncforc_on = model%db%ncforc_dt > 0
+      if (self%ncforc_on .and. .not. allocated(error)) &
+         call open_layout_file(self%ncforc, self%dir, 'ncforc', title, ncforc_header(model), &
+                               cont, model%run%ncforc_bytes, error)
       if (allocated(error)) call self%close(err2)   ! keep the first error
    end subroutine output_open
 
@@ -138,19 +149,21 @@ contains
    end subroutine open_layout_file
 
    !> What a restart dump records about the output: plot states, glstat, nodout, matsum,
-   !> spcforc and sleout bytes.
+   !> spcforc, sleout, elout and ncforc bytes.
    subroutine output_sizes(self, nplot, glstat_bytes, nodout_bytes, matsum_bytes, &
-                           spcforc_bytes, sleout_bytes)
+                           spcforc_bytes, sleout_bytes, elout_bytes, ncforc_bytes)
       class(output_t), intent(in) :: self
       integer, intent(out) :: nplot
       integer(8), intent(out) :: glstat_bytes, nodout_bytes, matsum_bytes, spcforc_bytes, &
-                                 sleout_bytes
+                                 sleout_bytes, elout_bytes, ncforc_bytes
       nplot = self%plot%nstates
       glstat_bytes = self%glstat%bytes
       nodout_bytes = self%nodout%bytes
       matsum_bytes = self%matsum%bytes
       spcforc_bytes = self%spcforc%bytes
       sleout_bytes = self%sleout%bytes
+      elout_bytes = self%elout%bytes
+      ncforc_bytes = self%ncforc%bytes
    end subroutine output_sizes
 
    !> Write one plot state at model%time.
@@ -216,18 +229,42 @@ contains
       call self%sleout%write_text(text, error)
    end subroutine output_write_sleout
 
+   !> Write one elout record from model%db%elout_vals, or one ncforc record (nothing when
+   !> the deck asks for none).
+   subroutine output_write_elout(self, model, error)
+      class(output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      character(:), allocatable :: text
+      if (.not. self%elout_on) return
+      call elout_record(model, text, error)
+      if (.not. allocated(error)) call self%elout%write_text(text, error)
+   end subroutine output_write_elout
+
+   subroutine output_write_ncforc(self, model, error)
+      class(output_t), intent(inout) :: self
+      type(model_t), intent(in) :: model
+      type(error_t), allocatable, intent(out) :: error
+      character(:), allocatable :: text
+      if (.not. self%ncforc_on) return
+      call ncforc_record(model, text, error)
+      if (.not. allocated(error) .and. len(text) > 0) call self%ncforc%write_text(text, error)
+   end subroutine output_write_ncforc
+
    !> Flush and close everything; safe to call twice and after errors. Returns the first
    !> failure but still closes the other files.
    subroutine output_close(self, error)
       class(output_t), intent(inout) :: self
       type(error_t), allocatable, intent(out) :: error
-      type(error_t), allocatable :: e1, e2, e3, e4, e5, e6
+      type(error_t), allocatable :: e1, e2, e3, e4, e5, e6, e7, e8
       call self%plot%close(e1)
       call self%glstat%close(e2)
       call self%nodout%close(e3)
       call self%matsum%close(e4)
       call self%spcforc%close(e5)
       call self%sleout%close(e6)
+      call self%elout%close(e7)
+      call self%ncforc%close(e8)
       if (allocated(e1)) then
          call move_alloc(e1, error)
       else if (allocated(e2)) then
@@ -240,6 +277,10 @@ contains
          call move_alloc(e5, error)
       else if (allocated(e6)) then
          call move_alloc(e6, error)
+      else if (allocated(e7)) then
+         call move_alloc(e7, error)
+      else if (allocated(e8)) then
+         call move_alloc(e8, error)
       end if
    end subroutine output_close
 

@@ -182,6 +182,14 @@ contains
             call rs%put('run_next_sleout', r%next_sleout)
             call rs%put('run_sleout_bytes', r%sleout_bytes)
          end if
+         if (model%db%elout_dt > 0.0_wp) then
+            call rs%put('run_next_elout', r%next_elout)
+            call rs%put('run_elout_bytes', r%elout_bytes)
+         end if
+         if (model%db%ncforc_dt > 0.0_wp) then
+            call rs%put('run_next_ncforc', r%next_ncforc)
+            call rs%put('run_ncforc_bytes', r%ncforc_bytes)
+         end if
          call rs%put('run_energy_guard', r%guard)
       end associate
       call rs%put('time', model%time)
@@ -225,6 +233,12 @@ contains
          r%next_sleout = 0.0_wp; r%sleout_bytes = 0
          if (rs%has('run_next_sleout')) call rs%get('run_next_sleout', r%next_sleout)
          if (rs%has('run_sleout_bytes')) call rs%get('run_sleout_bytes', r%sleout_bytes)
+         r%next_elout = 0.0_wp; r%elout_bytes = 0
+         if (rs%has('run_next_elout')) call rs%get('run_next_elout', r%next_elout)
+         if (rs%has('run_elout_bytes')) call rs%get('run_elout_bytes', r%elout_bytes)
+         r%next_ncforc = 0.0_wp; r%ncforc_bytes = 0
+         if (rs%has('run_next_ncforc')) call rs%get('run_next_ncforc', r%next_ncforc)
+         if (rs%has('run_ncforc_bytes')) call rs%get('run_ncforc_bytes', r%ncforc_bytes)
          r%guard = 0.0_wp       ! (a dump written before the guard was carried: not judged
          if (rs%has('run_energy_guard')) call rs%get('run_energy_guard', r%guard)  ! 1 cycle)
          r%started = rs%ok()

@@ -18,6 +18,7 @@ module dx_spcforc
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_IO
    use dx_model, only: model_t
+   use dx_thist, only: layout_header
    implicit none
    private
    public :: spcforc_header, spcforc_record, spc_reactions
@@ -30,12 +31,8 @@ contains
    function spcforc_header(model) result(text)
       type(model_t), intent(in) :: model
       character(:), allocatable :: text
-      character, parameter :: nl = new_line('a')
-      character(:), allocatable :: title
-      title = ''
-      if (allocated(model%title)) title = trim(model%title)
-      text = ' single point constraint forces for '//title//nl// &
-             ' dynx spcforc (LS-DYNA spcforc labels; global axes; 10 significant digits)'//nl
+      text = layout_header(model, 'single point constraint forces for ', &
+                           'dynx spcforc (LS-DYNA spcforc labels; global axes; 10 significant digits)')
    end function spcforc_header
 
    !> The constrained nodes (ascending) and their reactions R(3, n) = -f on the constrained

@@ -17,7 +17,7 @@ module dx_thist
                         sys_ftruncate_fd
    implicit none
    private
-   public :: thist_file_t, GLSTAT_COLUMNS, NODOUT_COLUMNS, glstat_run_columns
+   public :: thist_file_t, GLSTAT_COLUMNS, NODOUT_COLUMNS, glstat_run_columns, layout_header
 
    character(*), parameter :: GLSTAT_COLUMNS = 'time cycle dt kinetic internal hourglass ' // &
       'external_work rigidwall total energy_ratio xmom ymom zmom sliding_interface'
@@ -222,4 +222,16 @@ contains
       self%opened = .false.
       self%unit = -1
    end subroutine thist_close
+   !> The two heading lines of an LS-DYNA-layout ASCII file (spcforc, elout, ncforc):
+   !> ' '//first//the model's title, then ' '//second.
+   function layout_header(model, first, second) result(text)
+      type(model_t), intent(in) :: model
+      character(*), intent(in) :: first, second
+      character(:), allocatable :: text
+      character, parameter :: nl = new_line('a')
+      character(:), allocatable :: title
+      title = ''
+      if (allocated(model%title)) title = trim(model%title)
+      text = ' '//first//title//nl//' '//second//nl
+   end function layout_header
 end module dx_thist

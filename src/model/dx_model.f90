@@ -216,6 +216,13 @@ module dx_model
       real(wp) :: spcforc_dt = 0.0_wp   !< 0: no spcforc file (*DATABASE_SPCFORC)
       real(wp) :: sleout_dt = 0.0_wp    !< 0: no sleout file (*DATABASE_SLEOUT)
       integer, allocatable :: hist_nodes(:)   !< dense node indices for nodout
+      real(wp) :: elout_dt = 0.0_wp     !< 0: no elout file (*DATABASE_ELOUT)
+      real(wp) :: ncforc_dt = 0.0_wp    !< 0: no ncforc file (*DATABASE_NCFORC)
+      !> *DATABASE_HISTORY_SOLID: dense elements, their ids and part ids (for elout)
+      integer, allocatable :: hist_solids(:), hist_solid_id(:), hist_solid_pid(:)
+      !> elout's values at the output time: (7, size(hist_solids)) the element-average
+      !> stress xx yy zz xy yz zx and effective plastic strain (dx_elout elout_values)
+      real(wp), allocatable :: elout_vals(:, :)
    end type database_t
 
    !> global energies and momentum (glstat)
@@ -248,8 +255,13 @@ module dx_model
       integer, allocatable :: node(:)         !< dense node indices
       real(wp), allocatable :: m(:)           !< mass share of the part at node
       real(wp), allocatable :: mass(:)        !< (np) part mass (sum of its shares)
-      !> (np) mass added by mass scaling (*CONTROL_TIMESTEP DT2MS; zero until it lands)
+      !> (np) mass added by mass scaling (*CONTROL_TIMESTEP DT2MS; dx_energy_sums
+      !> part_added_mass); m then holds the shares of rho V0 + the added mass
       real(wp), allocatable :: added(:)
+      !> with DT2MS: each part's elements (eptr (np + 1) into el, em, esh, noff), the dense
+      !> element, its rho V0 and nodal share, and its nodes' entries of m (noff into ent)
+      integer, allocatable :: eptr(:), el(:), noff(:), ent(:)
+      real(wp), allocatable :: em(:), esh(:)
       real(wp), allocatable :: ie(:), ke(:), hge(:)   !< (np) internal, kinetic, hourglass
       real(wp), allocatable :: mom(:, :)      !< (3, np) momentum
       real(wp), allocatable :: eie(:), eke(:) !< (np) eroded internal and kinetic energy

@@ -254,6 +254,9 @@ module dx_model_input
       real(wp) :: sleout_dt = 0.0_wp       !< *DATABASE_SLEOUT DT (0: none)
       type(label_list_t), allocatable :: hist_nodes(:)      !< *DATABASE_HISTORY_NODE cards
       type(label_list_t), allocatable :: hist_node_sets(:)  !< *DATABASE_HISTORY_NODE_SET cards
+      real(wp) :: elout_dt = 0.0_wp        !< *DATABASE_ELOUT DT (0: none)
+      real(wp) :: ncforc_dt = 0.0_wp       !< *DATABASE_NCFORC DT (0: none)
+      type(label_list_t), allocatable :: hist_solids(:)     !< *DATABASE_HISTORY_SOLID cards
       type(contact_input_t) :: contact     !< *CONTACT_*, *CONTROL_CONTACT, *DATABASE_RCFORC
       type(restart_ctrl_t) :: rst          !< *DATABASE_BINARY_D3DUMP/RUNRSF
       type(emc_input_t) :: emc             !< conserving rigid-body contact (dx_emc_types)
@@ -272,7 +275,7 @@ contains
                inp%ivels(0), inp%node_loads(0), inp%seg_loads(0), inp%walls(0), &
                inp%hist_nodes(0), inp%hist_node_sets(0), inp%eoss(0), inp%eos_src(0), &
                inp%erosions(0), inp%erosion_src(0), inp%tb_lambdas(0), inp%tb_src(0), &
-               inp%out_notes(0), inp%set_gens(0), inp%node_set_loads(0))
+               inp%out_notes(0), inp%set_gens(0), inp%node_set_loads(0), inp%hist_solids(0))
       allocate(inp%body_loads(0), inp%rigid%inertias(0), inp%rigid%nrbs(0), &
                inp%rigid%extras(0), inp%rigid%motions(0))
       allocate(inp%nr2d(0), inp%edge_press(0), inp%deposits(0), inp%contacts2d(0))

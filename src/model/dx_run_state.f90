@@ -25,6 +25,8 @@ module dx_run_state
       real(wp) :: next_matsum = 0.0_wp   !< next matsum time
       real(wp) :: next_spcforc = 0.0_wp  !< next spcforc time
       real(wp) :: next_sleout = 0.0_wp   !< next sleout time
+      real(wp) :: next_elout = 0.0_wp    !< next elout time
+      real(wp) :: next_ncforc = 0.0_wp   !< next ncforc time
       real(wp) :: next_status = 0.0_wp   !< next status-line time
       logical :: started = .false.       !< true once the loop state is set (restart: restored)
       ! output bookkeeping at the dump point (a restart truncates the files to these)
@@ -36,6 +38,8 @@ module dx_run_state
       integer(8) :: matsum_bytes = 0     !< bytes in matsum
       integer(8) :: spcforc_bytes = 0    !< bytes in spcforc
       integer(8) :: sleout_bytes = 0     !< bytes in sleout
+      integer(8) :: elout_bytes = 0      !< bytes in elout
+      integer(8) :: ncforc_bytes = 0     !< bytes in ncforc
       !> dynx's energy guard (dx_solver): warned (0/1), the ratio's denominator and the
       !> ratio at the last judged cycle, so a continued run judges as the uninterrupted one
       real(wp) :: guard(3) = 0.0_wp

@@ -340,7 +340,8 @@ contains
       real(wp) :: t0
       t0 = wall_time()
       call out%sizes(model%run%nplot, model%run%glstat_bytes, model%run%nodout_bytes, &
-                     model%run%matsum_bytes, model%run%spcforc_bytes, model%run%sleout_bytes)
+                     model%run%matsum_bytes, model%run%spcforc_bytes, model%run%sleout_bytes, &
+                     model%run%elout_bytes, model%run%ncforc_bytes)
       ! MPI: every rank its part, rank 0 the manifest; replicated: rank 0 the serial dump
       call dom%write_dump(model, path, kind, error)
       ck%dump_cost = max(ck%dump_cost, wall_time() - t0)

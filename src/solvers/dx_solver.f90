@@ -102,8 +102,10 @@ contains
       end if
       call log_info('dynx: integrator: '//integ%name//' ('//integ%why//')')
       if (.not. integ%histories .and. max(model%db%matsum_dt, model%db%spcforc_dt, &
-                                          model%db%sleout_dt) > 0.0_wp) &
-         call log_info('dynx: note: matsum, spcforc and sleout are not written by this '// &
+                                          model%db%sleout_dt, model%db%elout_dt, &
+                                          model%db%ncforc_dt) > 0.0_wp) &
+         call log_info('dynx: note: matsum, spcforc, sleout, elout and ncforc are not written '// &
+                       'by this '// &
                        'integrator (it writes its own emcstat); their files hold the header only')
       if (integ%energies) call guard_bounds(guard)
       t0wall = wall_time()
@@ -198,6 +200,10 @@ contains
       if (allocated(error)) return
       call history_file(5)
       if (allocated(error)) return
+      call history_file(6)
+      if (allocated(error)) return
+      call history_file(7)
+      if (allocated(error)) return
       if (allocated(model%rigid)) then
          if (model%rigid%rbdout_dt > 0.0_wp .and. &
              (t >= model%rigid%next_rbdout .or. done)) then
@@ -208,8 +214,10 @@ contains
          end if
       end if
    contains
-      !> glstat (kind 1), nodout (2), matsum (3), spcforc (4) or sleout (5) when due (MPI:
-      !> the global model gathered to rank 0; matsum's part sums are formed there)
+      !> glstat (kind 1), nodout (2), matsum (3), spcforc (4), sleout (5), elout (6) or
+      !> ncforc (7) when
+      !> due (MPI: the global model gathered to rank 0; matsum's part sums are formed there,
+      !> elout's element values gathered there)
       subroutine history_file(kind)
          integer, intent(in) :: kind
          real(wp) :: interval, next
@@ -222,16 +230,23 @@ contains
             interval = model%db%matsum_dt; next = model%run%next_matsum
          case (4)
             interval = model%db%spcforc_dt; next = model%run%next_spcforc
-         case default
+         case (5)
             interval = model%db%sleout_dt; next = model%run%next_sleout
+         case (6)
+            interval = model%db%elout_dt; next = model%run%next_elout
+         case default
+            interval = model%db%ncforc_dt; next = model%run%next_ncforc
          end select
          if (.not. (interval > 0.0_wp .and. (t >= next .or. done))) return
          call dom%output_model(model, om, writer)
+         if (kind == 6) call dom%element_output(model, om)
          if (writer .and. kind == 1) call out%write_glstat(om, error)
          if (writer .and. kind == 2) call out%write_nodout(om, error)
          if (writer .and. kind == 3) call out%write_matsum(om, error)
          if (writer .and. kind == 4) call out%write_spcforc(om, error)
          if (writer .and. kind == 5) call out%write_sleout(om, error)
+         if (writer .and. kind == 6) call out%write_elout(om, error)
+         if (writer .and. kind == 7) call out%write_ncforc(om, error)
          if (allocated(error)) return
          next = next_output_time(next, interval, t)
          select case (kind)
@@ -243,8 +258,12 @@ contains
             model%run%next_matsum = next
          case (4)
             model%run%next_spcforc = next
-         case default
+         case (5)
             model%run%next_sleout = next
+         case (6)
+            model%run%next_elout = next
+         case default
+            model%run%next_ncforc = next
          end select
       end subroutine history_file
    end subroutine histories

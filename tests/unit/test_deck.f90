@@ -7,7 +7,8 @@ program test_deck
    use dx_log, only: log_set_quiet
    use dx_model, only: model_t, ES_HGS
    use dx_element_types, only: ETYPE_HEX8_1PT, ETYPE_HEX8_SRI
-   use dx_model_input, only: model_input_t
+   use dx_model_input, only: model_input_t, spc_in_t
+   use dx_deck_buffers, only: spc_buffer_t
    use dx_deck, only: read_deck_input
    use dx_deck_model, only: read_deck
    use dx_deck_check, only: keyword_family, keyword_skippable
@@ -32,6 +33,7 @@ program test_deck
    call test_blocks()
    call test_materials()
    call test_build_errors()
+   call test_record_buffer()
    call assert_summary()
 
 contains
@@ -581,4 +583,24 @@ contains
       call check(allocated(err), 'build error: '//name)
       if (allocated(err)) call check_has(err%message, sub, 'build error message: '//name)
    end subroutine expect_error
+   !> dx_deck_buffers: 1000 pushes (past several doublings of the 16-record start) flushed
+   !> after 2 records already there keep push order; a second flush of an empty buffer adds
+   !> nothing.
+   subroutine test_record_buffer()
+      type(spc_buffer_t) :: buf
+      type(spc_in_t), allocatable :: a(:)
+      type(spc_in_t) :: r
+      integer :: k
+      allocate(a(2))
+      a%id = [-1, -2]
+      do k = 1, 1000
+         r%id = k
+         call buf%push(r)
+      end do
+      call buf%flush(a)
+      call check(size(a) == 1002, 'buffer: 2 + 1000 records')
+      call check(all(a%id == [-1, -2, [(k, k = 1, 1000)]]), 'buffer: push order kept')
+      call buf%flush(a)
+      call check(size(a) == 1002 .and. buf%n == 0, 'buffer: empty flush adds nothing')
+   end subroutine test_record_buffer
 end program test_deck
