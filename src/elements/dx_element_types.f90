@@ -288,7 +288,8 @@ contains
          f%mass_share = 0.5_wp
          f%es_ncol = [0, 4, 0, 0, 0, 0, 19]
          f%nip = 1; f%weight = 1
-         f%rot = .true.
+         ! forces, moments, mass and rotary inertia scattered element-major (dx_beam_bs)
+         f%rot = .true.; f%scatter_em = .true.
       end select
    end function element_family
 

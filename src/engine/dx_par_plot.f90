@@ -15,7 +15,7 @@ module dx_par_plot
    use dx_xdmf, only: state_group
    use dx_strings, only: str
    use dx_log, only: log_info
-   use dx_model, only: model_t, family_t, element_family, shell_stress_global
+   use dx_model, only: model_t, family_t, element_family, elem_stress_global
    use dx_par, only: par_rank, par_size, par_barrier, par_allreduce, PAR_MAX
    use dx_io_sys, only: sys_mkdir_p, sys_epoch_seconds
    use dx_plot_hdf5, only: element_average, plot_merge_states, plot_rows, element_damage, &
@@ -233,11 +233,11 @@ contains
          b = pp%eloc(1, i)
          call element_average(model%blocks(b), pp%eloc(2, i), pp%khv(b), st%f(F_STRESS)%r(:, i), &
                               st%f(F_EPSP)%r(1, i), fl)
-         ! shells: the stress of the co-rotational frame in global axes, as the serial
-         ! writer (element_results; the slots hold this x: par_engine_plot)
+         ! shells and beams: the stress of the co-rotational frame in global axes, as the
+         ! serial writer (element_results; the slots hold this x: par_engine_plot)
          fam = element_family(model%blocks(b)%etype)
-         if (fam%rot) call shell_stress_global(model%x(:, model%blocks(b)%conn(:, pp%eloc(2, i))), &
-                                               st%f(F_STRESS)%r(:, i))
+         if (fam%rot) call elem_stress_global(model%blocks(b)%etype, &
+            model%x(:, model%blocks(b)%conn(:, pp%eloc(2, i))), st%f(F_STRESS)%r(:, i))
          st%f(F_FAILED)%r(1, i) = real(fl, wp)
          if (st%on(F_DAMAGE)) st%f(F_DAMAGE)%r(1, i) = element_damage(model%blocks(b), &
             pp%eloc(2, i), block_damage_slot(model, model%blocks(b)))
