@@ -18,6 +18,10 @@
       mean distance from the root (the diameter) against L/pi within TOL_D and against the
       inscribed regular N-gon's (L/N)/sin(pi/N) within TOL_POLY (relative); with OUT2 (N2
       elements) the observed order of the diameter error in [LO, HI].
+  beam_check.py resultants OUT M L TOL_M TOL_F
+      the plot's beam resultants (rows beam_force, beam_moment) in the last state of a beam
+      under a pure end moment M about its s axis: every element's |M_s| against M within
+      TOL_M relative; T, M_t (over M) and N, Q_s, Q_t (over M/L) within TOL_F.
   beam_check.py torsion OUT G J L I TOL
       torsion pendulum: the kinetic energy (glstat) has its minima every pi/omega; omega
       against sqrt(G J/(L I)) within TOL relative.
@@ -168,10 +172,27 @@ def circle(argv):
     return ok
 
 
+def resultants(argv):
+    """OUT M L TOL_M TOL_F: last plot state, every beam under the pure moment M"""
+    from shell_check import h5_dataset, h5_last_state
+    out, m, length, tol_m, tol_f = argv[0], *map(float, argv[1:5])
+    h5 = out + '/d3plot.h5'
+    g = h5_last_state(h5)
+    f = h5_dataset(h5, f'/states/{g}/beam_force')
+    mo = h5_dataset(h5, f'/states/{g}/beam_moment')
+    ne = len(f)//3
+    em = max(abs(abs(mo[3*e + 1])/m - 1.0) for e in range(ne))
+    eo = max(max(abs(mo[3*e]), abs(mo[3*e + 2])) for e in range(ne))/m
+    ef = max(abs(v) for v in f)*length/m
+    print(f'resultants ({ne} beams, state {g}): |M_s|/M - 1 up to {em:.2e} (tol {tol_m:.1e}); '
+          f'T, M_t up to {eo:.2e} M; N, Q_s, Q_t up to {ef:.2e} M/L (tol {tol_f:.1e})')
+    return em <= tol_m and eo <= tol_f and ef <= tol_f
+
+
 def main():
     cmd, argv = sys.argv[1], sys.argv[2:]
     fn = {'wave': wave, 'order': order, 'rotation': rotation, 'torsion': torsion,
-          'tip': tip, 'circle': circle}.get(cmd)
+          'tip': tip, 'circle': circle, 'resultants': resultants}.get(cmd)
     if fn is None:
         raise SystemExit(__doc__)
     if not fn(argv):
