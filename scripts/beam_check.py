@@ -12,6 +12,16 @@
   beam_check.py tip OUT L T0 WREF UREF TOL_W TOL_U
       large-deflection cantilever: the tip's (first history node) mean transverse
       displacement w/L and shortening u/L over t >= T0 against the references, relative.
+  beam_check.py circle OUT L N T0 TOL_TIP TOL_D TOL_POLY [OUT2 N2 LO HI]
+      cantilever of N elements rolled into a full circle by an end moment 2 pi E I/L: over
+      t >= T0 the tip's mean distance from the root over L <= TOL_TIP, the middle node's
+      mean distance from the root (the diameter) against L/pi within TOL_D and against the
+      inscribed regular N-gon's (L/N)/sin(pi/N) within TOL_POLY (relative); with OUT2 (N2
+      elements) the observed order of the diameter error in [LO, HI].
+  beam_check.py resultants OUT M L TOL_M TOL_F
+      the plot's beam resultants (rows beam_force, beam_moment) in the last state of a beam
+      under a pure end moment M about its s axis: every element's |M_s| against M within
+      TOL_M relative; T, M_t (over M) and N, Q_s, Q_t (over M/L) within TOL_F.
   beam_check.py torsion OUT G J L I TOL
       torsion pendulum: the kinetic energy (glstat) has its minima every pi/omega; omega
       against sqrt(G J/(L I)) within TOL relative.
@@ -124,10 +134,65 @@ def tip(argv):
     return ew <= tol_w and eu <= tol_u
 
 
+def circle_fit(out, length, n, t0):
+    """mean tip position (the history node of the larger id) and the middle node's distance
+    from the root (the smaller id), over t >= T0"""
+    d = nodout(out)
+    ids = sorted(d)
+    tip = [r for r in d[ids[1]] if r[0] >= t0]
+    mid = [r for r in d[ids[0]] if r[0] >= t0]
+    tx = sum(length + r[1][0] for r in tip)/len(tip)
+    tz = sum(r[1][2] for r in tip)/len(tip)
+    mx = sum(0.5*length + r[1][0] for r in mid)/len(mid)
+    mz = sum(r[1][2] for r in mid)/len(mid)
+    return math.hypot(tx, tz)/length, math.hypot(mx, mz)
+
+
+def circle(argv):
+    """OUT L N T0 TOL_TIP TOL_D TOL_POLY [OUT2 N2 LO HI]"""
+    out, length, n, t0 = argv[0], float(argv[1]), int(argv[2]), float(argv[3])
+    tol_tip, tol_d, tol_poly = map(float, argv[4:7])
+    tip, dia = circle_fit(out, length, n, t0)
+    ref = length/math.pi
+    poly = (length/n)/math.sin(math.pi/n)
+    ed, ep = abs(dia/ref - 1.0), abs(dia/poly - 1.0)
+    print(f'circle ({n} elements, mean from t = {t0:g}): tip distance from the root / L '
+          f'{tip:.2e} (tol {tol_tip:.1e}); diameter {dia:.6f} against L/pi {ref:.6f}: error '
+          f'{ed:.3e} (tol {tol_d:.1e}), against the inscribed {n}-gon {poly:.6f}: {ep:.2e} '
+          f'(tol {tol_poly:.1e})')
+    ok = tip <= tol_tip and ed <= tol_d and ep <= tol_poly
+    if len(argv) > 7:
+        out2, n2, lo, hi = argv[7], int(argv[8]), float(argv[9]), float(argv[10])
+        _, dia2 = circle_fit(out2, length, n2, t0)
+        ed2 = abs(dia2/ref - 1.0)
+        p = math.log(ed2/ed)/math.log(n/n2)
+        print(f'circle ({n2} elements): diameter error {ed2:.3e}; observed order {p:.2f} '
+              f'(in [{lo}, {hi}])')
+        ok = ok and lo <= p <= hi
+    return ok
+
+
+def resultants(argv):
+    """OUT M L TOL_M TOL_F: last plot state, every beam under the pure moment M"""
+    from shell_check import h5_dataset, h5_last_state
+    out, m, length, tol_m, tol_f = argv[0], *map(float, argv[1:5])
+    h5 = out + '/d3plot.h5'
+    g = h5_last_state(h5)
+    f = h5_dataset(h5, f'/states/{g}/beam_force')
+    mo = h5_dataset(h5, f'/states/{g}/beam_moment')
+    ne = len(f)//3
+    em = max(abs(abs(mo[3*e + 1])/m - 1.0) for e in range(ne))
+    eo = max(max(abs(mo[3*e]), abs(mo[3*e + 2])) for e in range(ne))/m
+    ef = max(abs(v) for v in f)*length/m
+    print(f'resultants ({ne} beams, state {g}): |M_s|/M - 1 up to {em:.2e} (tol {tol_m:.1e}); '
+          f'T, M_t up to {eo:.2e} M; N, Q_s, Q_t up to {ef:.2e} M/L (tol {tol_f:.1e})')
+    return em <= tol_m and eo <= tol_f and ef <= tol_f
+
+
 def main():
     cmd, argv = sys.argv[1], sys.argv[2:]
     fn = {'wave': wave, 'order': order, 'rotation': rotation, 'torsion': torsion,
-          'tip': tip}.get(cmd)
+          'tip': tip, 'circle': circle, 'resultants': resultants}.get(cmd)
     if fn is None:
         raise SystemExit(__doc__)
     if not fn(argv):

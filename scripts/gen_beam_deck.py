@@ -14,6 +14,9 @@ height 1 along t = z: A = 2, ISS = 1/6, ITT = 2/3), length L = 100 along x.
   gen_beam_deck.py elastica N [OUT]     the cantilever at rest under a tip force
       P = E I/L**2 along z raised smoothly over 100 ms and held: large deflection (tip
       rotation 0.46 rad; Mattiasson 1981's elliptic-integral solution)
+  gen_beam_deck.py circle N [OUT]       the cantilever at rest under an end moment about y
+      (*LOAD_NODE_POINT DOF 6) M = 2 pi E I/L raised over 100 ms and held: it rolls into a
+      full circle (tip back at the root, the middle node at the diameter L/pi)
   gen_beam_deck.py torsion [OUT]        a torsion pendulum: 4 beams clamped at x = 0 with an
       *ELEMENT_INERTIA (100 kg mm**2, isotropic) at the tip, started with VXR = 0.01 x/L
       rad/ms: omega = sqrt(G J/(L I))
@@ -211,6 +214,20 @@ def elastica(n):
     return s
 
 
+def circle(n):
+    """the cantilever of cantilever() at rest under an end moment about y (*LOAD_NODE_POINT
+    DOF 6) M = 2 pi E ISS/L raised smoothly (1 - cos) over 100 ms and held to 200 ms: the
+    beam rolls into a full circle of radius L/(2 pi) (tip back at the root); the history
+    nodes are the tip and the middle node (diametrically opposite the root)"""
+    s = elastica(n)
+    i = s.index('*LOAD_NODE_POINT')
+    m = 2.0*math.pi*E*ISS/100.0
+    s[i + 2] = f'{n + 1:10d}{6:10d}{1:10d}{m:10.4e}'
+    s[2] = f'Cantilever beam, {n} resultant beams, end moment 2 pi E I/L (rolled into a circle)'
+    s[s.index('*DATABASE_HISTORY_NODE') + 1] = f'{n + 1:10d}{n//2 + 1:10d}'
+    return s
+
+
 def torsion():
     """a torsion pendulum: 4 beams (100 mm) clamped at x = 0, an *ELEMENT_INERTIA of
     100 kg mm**2 (isotropic; with a mass) at the tip, started in the first mode's shape
@@ -247,6 +264,8 @@ def main(argv):
         lines, out = frame(), argv[2:]
     elif kind == 'elastica':
         lines, out = elastica(int(argv[2])), argv[3:]
+    elif kind == 'circle':
+        lines, out = circle(int(argv[2])), argv[3:]
     elif kind == 'torsion':
         lines, out = torsion(), argv[2:]
     else:

@@ -10,9 +10,9 @@
 #    The patch and single-element decks are only verified.
 #  - the partition is reproducible (same report and checksums from a second run)
 #  - errors: files for another NP or another deck (exit 2, file named), a corrupt file
-#    (exit 4, checksum), a missing file (exit 4), bad -n, a bad deck and a beam deck
-#    (exit 2; beams are not yet under MPI). Shell decks are partitioned and verified like
-#    the patch decks (issue 17: shells under MPI).
+#    (exit 4, checksum), a missing file (exit 4), bad -n, a bad deck (exit 2). Shell and
+#    beam decks are partitioned and verified like the patch decks (issue 17: shells and
+#    beams under MPI).
 # Closes with 'N passed, N failed'; exits 1 if anything failed.
 set -u
 LC_ALL=C
@@ -78,8 +78,7 @@ for d in tests/regression/*/; do
     c=${d%/}; c=${c##*/}
     case $c in
         bad_*) continue ;;   # decks with input errors
-        shell_*) nps="2 3 4"; chk=0 ;;   # shells: verified (their small meshes: no balance)
-        beam_*) continue ;;    # beams are not yet under MPI: dynx-part refuses them (below)
+        shell_*|beam_*|mpi_beam_*) nps="2 3 4"; chk=0 ;;   # verified (small meshes)
         extreme_crushed_element|extreme_distorted_element) nps="2"; chk=0 ;;
         patch_*|mpi_patch_*) nps="2 3 4"; chk=0 ;;
         *) nps="2 3 4"; chk=1 ;;
@@ -151,8 +150,6 @@ expect_err "a missing rank file" 4 "rank_00002.h5: no such file" \
 expect_err "a deck with an input error" 2 "deck.k:14:11: *MAT_ELASTIC: field RO:" \
     "$PART" tests/regression/bad_negative_density/deck.k -n 2 -o "$OUT/x"
 expect_err "-n 0" 2 "-n needs a positive integer" "$PART" "$deck" -n 0
-expect_err "a beam deck (not yet under MPI)" 2 "*SECTION_BEAM: beam elements are not yet under MPI" \
-    "$PART" tests/regression/beam_rotation/deck.k -n 2 -o "$OUT/x"
 # more ranks than elements: one element per rank, the last rank empty, files readable
 rm -rf "$OUT/empty"
 if "$PART" tests/regression/patch_constant_strain/deck.k -n 8 -o "$OUT/empty" \

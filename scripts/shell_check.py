@@ -16,8 +16,8 @@
   shell_check.py rotation OUT TOL
       rigid rotation: internal + hourglass energy over the initial kinetic energy <= TOL
       at every glstat line.
-  shell_check.py energy OUT TOL
-      |energy ratio - 1| <= TOL at every glstat line.
+  shell_check.py energy OUT TOL [T0]
+      |energy ratio - 1| <= TOL at every glstat line (from t = T0 when given).
   shell_check.py yield OUT SIGY TOL
       every element's von Mises stress in the last plot state equals SIGY within TOL
       relative (a perfectly plastic membrane state).
@@ -193,9 +193,13 @@ def rotation(argv):
 
 def energy(argv):
     out, tol = argv[0], float(argv[1])
+    t0 = float(argv[2]) if len(argv) > 2 else None      # only the rows from t = T0
     rows = read_table(out + '/glstat')
+    if t0 is not None:
+        rows = [r for r in rows if r[0] >= t0]
     worst = max(abs(r[9] - 1.0) for r in rows)
-    print(f'energy ratio: largest |ratio - 1| {worst:.3e} (tol {tol:.1e})')
+    since = '' if t0 is None else f' from t = {t0:g}'
+    print(f'energy ratio: largest |ratio - 1|{since} {worst:.3e} (tol {tol:.1e})')
     return worst <= tol
 
 

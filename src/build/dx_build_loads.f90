@@ -246,6 +246,7 @@ contains
       logical, allocatable :: keep(:)
       real(wp) :: d
       type(family_t) :: fam
+      logical, allocatable :: rot(:)
       allocate(model%node_loads(size(inp%node_loads)))
       do i = 1, size(inp%node_loads)
          associate (l => inp%node_loads(i))
@@ -255,6 +256,15 @@ contains
             if (allocated(error)) return
             model%node_loads(i)%dof = l%dof
             model%node_loads(i)%sf = l%sf
+            if (l%dof >= 5) then      ! a moment: rotations exist on shell and beam nodes only
+               if (.not. allocated(rot)) call rotation_nodes(model, rot)
+               if (.not. rot(model%node_loads(i)%node)) then
+                  call set_error(error, at(inp, l%src)//'field DOF: DOF '//str(l%dof)// &
+                     ' (a moment) on node '//str(l%nid)//', which carries no rotation '// &
+                     '(not a shell or beam node)')
+                  return
+               end if
+            end if
          end associate
       end do
       nseg = 0

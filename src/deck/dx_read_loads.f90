@@ -288,8 +288,9 @@ contains
          call c%seek(ic)
          call c%id(trim(merge('NSID', 'NID ', is_set)), l%nid)
          call c%int('DOF', 0, l%dof)
-         if (c%ok() .and. (l%dof < 1 .or. l%dof > 3)) call c%fail('DOF', 'DOF '//str(l%dof)// &
-            ' is not supported (supported: 1, 2, 3 force along x, y, z)')
+         if (c%ok() .and. (l%dof < 1 .or. l%dof > 7 .or. l%dof == 4)) call c%fail('DOF', &
+            'DOF '//str(l%dof)//' is not supported (supported: 1, 2, 3 force along x, y, z; '// &
+            '5, 6, 7 moment about x, y, z on shell and beam nodes)')
          call c%id('LCID', l%lcid)
          call c%real('SF', 1.0_wp, l%sf)
          if (l%sf == 0.0_wp) l%sf = 1.0_wp

@@ -46,18 +46,13 @@ module dx_beam_bs
    use dx_vec3, only: cross
    use dx_material, only: material_t
    use dx_element_types, only: elem_block_t, part_t, ES_BEAM, ES_WORK, block_result_t, &
-                               ELEM_ERR_NEGVOL
+                               ELEM_ERR_NEGVOL, BM_E2, BM_TH, BM_RES, BM_SEC
    use dx_hex8, only: centred_work
    implicit none
    private
    public :: beam_bs_block, beam_bs_rotary_inertia, beam_bs_init, beam_bs_axes
    public :: BM_E2, BM_TH, BM_RES, BM_SEC
-
-   !> column offsets inside the ES_BEAM slot (0-based from its first column)
-   integer, parameter :: BM_E2 = 0     !< e2 (3)
-   integer, parameter :: BM_TH = 3     !< twist, theta_s at N1, N2, theta_t at N1, N2 (5)
-   integer, parameter :: BM_RES = 8    !< N, T, M_s at N1, N2, M_t at N1, N2 (6)
-   integer, parameter :: BM_SEC = 14   !< A, ISS, ITT, J, SA of the element (5): 19 in all
+   ! (BM_E2, BM_TH, BM_RES, BM_SEC: the ES_BEAM slot's columns, dx_element_types)
 
 contains
 

@@ -40,6 +40,7 @@ module dx_element_types
    public :: ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS, quad2d_area, &
              quad2d_rvol
    public :: ETYPE_BEAM_BS, etype_of_beam_elform, ES_BEAM, elem_stress_global
+   public :: BM_E2, BM_TH, BM_RES, BM_SEC, beam_resultants
    public :: MAX_NEN, MAX_FACE_NODES, MAX_FACES
    public :: ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, etype_of_elform, ETYPES
    public :: solid_shape, elem_quality, ASPECT_WARN, WARP_WARN
@@ -98,6 +99,11 @@ module dx_element_types
    !> ES_WORK too (the centred work of the resultants)
    integer, parameter :: ES_BEAM = 7
    integer, parameter :: MAX_ES = 7
+   !> column offsets inside the ES_BEAM slot (0-based from its first column)
+   integer, parameter :: BM_E2 = 0     !< e2 (3)
+   integer, parameter :: BM_TH = 3     !< twist, theta_s at N1, N2, theta_t at N1, N2 (5)
+   integer, parameter :: BM_RES = 8    !< N, T, M_s at N1, N2, M_t at N1, N2 (6)
+   integer, parameter :: BM_SEC = 14   !< A, ISS, ITT, J, SA of the element (5): 19 in all
    !> restart dataset of each slot (the columns in order, flat; ES_DUMP: phim is derived at
    !> start, not dumped); dumps write the slots in id order
    character(8), parameter :: ES_NAMES(MAX_ES) = [character(8) :: 'hgs', 'ework', 'phim', &
@@ -288,7 +294,8 @@ contains
          f%mass_share = 0.5_wp
          f%es_ncol = [0, 4, 0, 0, 0, 0, 19]
          f%nip = 1; f%weight = 1
-         f%rot = .true.
+         ! forces, moments, mass and rotary inertia scattered element-major (dx_beam_bs)
+         f%rot = .true.; f%scatter_em = .true.
       end select
    end function element_family
 
@@ -375,6 +382,25 @@ contains
          s = sa*[e1(1)**2, e1(2)**2, e1(3)**2, e1(1)*e1(2), e1(2)*e1(3), e1(3)*e1(1)]
       end select
    end subroutine elem_stress_global
+
+   !> Beam element i's resultants for the plot (the optional rows beam_force, beam_moment),
+   !> in its own frame (e1 along N1-N2, e2 = s, e3 = t): force = (N, Q_s, Q_t), the axial
+   !> force and the shears (the internal force on N2: Q_s = -(M_t1 + M_t2)/L,
+   !> Q_t = (M_s1 + M_s2)/L, constant along the element), moment = (T, M_s, M_t), the
+   !> torque and the bending moments at mid-span ((M_2 - M_1)/2 of the end moments: the
+   !> moment of a pure bending, zero for an antisymmetric one). xe: the nodes N1, N2.
+   pure subroutine beam_resultants(blk, i, xe, force, moment)
+      type(elem_block_t), intent(in) :: blk
+      integer, intent(in) :: i
+      real(wp), intent(in) :: xe(:, :)
+      real(wp), intent(out) :: force(3), moment(3)
+      real(wp) :: r(6), l
+      r = blk%es(i, blk%esc(ES_BEAM) + BM_RES:blk%esc(ES_BEAM) + BM_RES + 5)
+      l = norm2(xe(:, 2) - xe(:, 1))
+      force = [r(1), 0.0_wp, 0.0_wp]
+      if (l > 0.0_wp) force(2:3) = [-(r(5) + r(6))/l, (r(3) + r(4))/l]
+      moment = [r(2), 0.5_wp*(r(4) - r(3)), 0.5_wp*(r(6) - r(5))]
+   end subroutine beam_resultants
 
    !> Mid-surface area of a shell with nodes xe(3, 4) (a triangle repeats N3): half the
    !> norm of the cross product of the diagonals (exact for a plane quadrilateral).

@@ -127,13 +127,24 @@ contains
       type(model_t), intent(inout) :: model
       integer, allocatable :: keys(:)
       real(wp), allocatable :: vals(:, :)
+      if (eng%rot .and. .not. allocated(model%rinert)) then
+         ! a rank without a shell or beam (an empty rank: more ranks than elements) takes
+         ! part in the rotations' collective sums all the same (init_state's arrays, zero)
+         allocate(model%w(3, model%nn), model%mom(3, model%nn), model%rinert(model%nn))
+         model%w = 0.0_wp
+         if (allocated(model%w0)) model%w = model%w0
+         model%mom = 0.0_wp
+         model%rinert = 0.0_wp
+      end if
       call par_exchange_mass(eng%pm, model%mass)
+      call add_node_terms(eng%pm, model%node_mass, model%mass)
       model%mass(eng%pm%nloc + 1:) = 0.0_wp
       call par_gather_ordered(eng%pm%node_global(eng%own), &
                               reshape(model%mass(eng%own), [1, size(eng%own)]), keys, vals)
       eng%g%mass(keys) = vals(1, :)
-      if (allocated(model%rinert)) then   ! shells: the rotary inertia as the mass
+      if (allocated(model%rinert)) then   ! shells, beams: the rotary inertia as the mass
          call par_exchange_mass(eng%pm, model%rinert)
+         call add_node_terms(eng%pm, model%node_rinert, model%rinert)
          model%rinert(eng%pm%nloc + 1:) = 0.0_wp
          call par_gather_ordered(eng%pm%node_global(eng%own), &
                                  reshape(model%rinert(eng%own), [1, size(eng%own)]), keys, vals)
@@ -150,6 +161,18 @@ contains
       eng%g%energy%mass = model%energy%mass
    end subroutine par_engine_mass
 
+   !> The nodal masses or rotary inertias of their own (*ELEMENT_MASS, *ELEMENT_INERTIA,
+   !> beams' NSM; the rank's nodes) added at the shared nodes after their elements' sum,
+   !> as lump_mass adds them after the element loop (the exchange replaced the shared
+   !> nodes' values, and their own term with them): the serial a = sum + term bit for bit.
+   subroutine add_node_terms(pm, term, a)
+      type(par_model_t), intent(in) :: pm
+      real(wp), allocatable, intent(in) :: term(:)
+      real(wp), intent(inout) :: a(:)
+      if (.not. allocated(term)) return
+      a(pm%shared_local) = a(pm%shared_local) + term(pm%shared_local)
+   end subroutine add_node_terms
+
 
    !> Mass scaling changed an element's mass (every rank, together; dx_mass_scaling): the
    !> rank's lumped masses (lump_mass: a slot holds its corner's share) summed at the shared
@@ -163,6 +186,7 @@ contains
       real(wp) :: tot(1)
       integer :: i, e
       call par_exchange_mass(eng%pm, model%mass)
+      call add_node_terms(eng%pm, model%node_mass, model%mass)
       model%mass(eng%pm%nloc + 1:) = 0.0_wp
       allocate(vals(1, size(eng%own)), gv(1, size(eng%plan_own%keys)))
       vals(1, :) = model%mass(eng%own)

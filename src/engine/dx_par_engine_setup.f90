@@ -19,7 +19,7 @@ module dx_par_engine_setup
    use dx_sort, only: sort_index
    use dx_par_model, only: par_model_build
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report, &
-                           has_shells, has_beams
+                           has_shells
    use dx_rank_file, only: read_rank_file, write_rank_file, rank_file_name, deck_content_hash
    use dx_io_sys, only: sys_mkdir_p
    use dx_energy_sums, only: constrained_nodes, part_mass_map
@@ -151,8 +151,15 @@ contains
       if (allocated(eng%g%w0)) model%w0 = reshape([eng%g%w0(:, rp%nodes), &   ! VXR, VYR, VZR
          eng%g%w0(:, rp%nodes(eng%pm%slot_node))], [3, model%nn])
       if (allocated(eng%g%w0)) deallocate(eng%g%w0)   ! (the rank's own copy is enough)
-      ! shells: rotations, moments and rotary inertia summed at shared nodes as the forces
-      eng%rot = has_shells(eng%g)
+      ! *ELEMENT_MASS, *ELEMENT_INERTIA, beams' NSM: on the rank's nodes (none on a slot;
+      ! par_engine_mass adds them at the shared nodes after the sum, as lump_mass does)
+      if (allocated(eng%g%node_mass)) model%node_mass = [eng%g%node_mass(rp%nodes), &
+         spread(0.0_wp, 1, eng%pm%nslot)]
+      if (allocated(eng%g%node_rinert)) model%node_rinert = [eng%g%node_rinert(rp%nodes), &
+         spread(0.0_wp, 1, eng%pm%nslot)]
+      ! shells and beams: rotations, moments and rotary inertia summed at shared nodes as
+      ! the forces
+      eng%rot = has_shells(eng%g) .or. allocated(eng%g%node_rinert)
       call move_alloc(eng%pm%blocks, model%blocks)
       if (allocated(model%spcs)) then
          model%spcs = eng%g%spcs(rp%spcs)
@@ -311,8 +318,6 @@ contains
          'after erosion are formed on the serial model only)'
       if (allocated(model%contact2d)) what = '*CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE (the 2D '// &
          'contact, dx_contact2d, is serial)'
-      if (has_beams(model)) what = '*SECTION_BEAM (beam elements: their rotational '// &
-         'degrees of freedom are not yet under MPI)'
       if (len(what) > 0) call set_error(error, model%deck_file//': '//what// &
          ' is not supported in an MPI run yet; run this deck serially (without mpirun)', &
          EXIT_INPUT)

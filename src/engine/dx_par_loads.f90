@@ -223,7 +223,7 @@ contains
       end if
       if (size(ld%lm_out, 2) == 0) return
       call par_loads_take_mass(ld)
-      allocate(lf(3, ld%lm%nn))
+      allocate(lf(size(fext, 1), ld%lm%nn))   ! (6 rows with nodal moments: load_rows)
       lf = 0.0_wp
       call add_external_loads(ld%lm, t, lf)
       fext(:, ld%lm_out(2, :)) = lf(:, ld%lm_out(1, :))

@@ -15,7 +15,8 @@ module dx_par_plot
    use dx_xdmf, only: state_group
    use dx_strings, only: str
    use dx_log, only: log_info
-   use dx_model, only: model_t, family_t, element_family, shell_stress_global
+   use dx_model, only: model_t, family_t, element_family, elem_stress_global, &
+                       beam_resultants, ETYPE_BEAM_BS
    use dx_par, only: par_rank, par_size, par_barrier, par_allreduce, PAR_MAX
    use dx_io_sys, only: sys_mkdir_p, sys_epoch_seconds
    use dx_plot_hdf5, only: element_average, plot_merge_states, plot_rows, element_damage, &
@@ -23,7 +24,7 @@ module dx_par_plot
    use dx_plot_part, only: plot_part_t, plot_combine
    use dx_plot_fields, only: plot_state_t, plot_state_alloc, plot_state_read, field_in_part, &
                              PLOT_FIELDS, NSTATE_FIELDS, CENTRE_NODE, F_COORD, F_VEL, &
-                             F_STRESS, F_EPSP, F_FAILED, F_DAMAGE
+                             F_STRESS, F_EPSP, F_FAILED, F_DAMAGE, F_BEAM_FORCE, F_BEAM_MOMENT
    use dx_plot_cells, only: cells_width, cell_column
    implicit none
    private
@@ -233,14 +234,18 @@ contains
          b = pp%eloc(1, i)
          call element_average(model%blocks(b), pp%eloc(2, i), pp%khv(b), st%f(F_STRESS)%r(:, i), &
                               st%f(F_EPSP)%r(1, i), fl)
-         ! shells: the stress of the co-rotational frame in global axes, as the serial
-         ! writer (element_results; the slots hold this x: par_engine_plot)
+         ! shells and beams: the stress of the co-rotational frame in global axes, as the
+         ! serial writer (element_results; the slots hold this x: par_engine_plot)
          fam = element_family(model%blocks(b)%etype)
-         if (fam%rot) call shell_stress_global(model%x(:, model%blocks(b)%conn(:, pp%eloc(2, i))), &
-                                               st%f(F_STRESS)%r(:, i))
+         if (fam%rot) call elem_stress_global(model%blocks(b)%etype, &
+            model%x(:, model%blocks(b)%conn(:, pp%eloc(2, i))), st%f(F_STRESS)%r(:, i))
          st%f(F_FAILED)%r(1, i) = real(fl, wp)
          if (st%on(F_DAMAGE)) st%f(F_DAMAGE)%r(1, i) = element_damage(model%blocks(b), &
             pp%eloc(2, i), block_damage_slot(model, model%blocks(b)))
+         if (st%on(F_BEAM_FORCE) .and. model%blocks(b)%etype == ETYPE_BEAM_BS) &
+            call beam_resultants(model%blocks(b), pp%eloc(2, i), &
+               model%x(:, model%blocks(b)%conn(:, pp%eloc(2, i))), &
+               st%f(F_BEAM_FORCE)%r(:, i), st%f(F_BEAM_MOMENT)%r(:, i))
       end do
       call pp%part%write_state(st, error)
    end subroutine par_plot_write

@@ -24,7 +24,6 @@ module dx_partition
    use dx_strings, only: str
    use dx_model, only: model_t, family_t, element_family, etype_of_elform, MAX_NEN
    use dx_element_types, only: ETYPE_SHELL_BT
-   use dx_element_types, only: ETYPE_BEAM_BS
    use dx_metis, only: metis_part_kway, METIS_RECURSIVE
    use dx_contact_input, only: CT_SINGLE_SURFACE
    use dx_rank_part_types, only: rank_part_t   ! what one rank holds (re-exported)
@@ -32,7 +31,7 @@ module dx_partition
                                  add_proximity_edges, sort_int
    implicit none
    private
-   public :: partition_t, rank_part_t, element_graph, condense_groups, partition_model, has_shells, has_beams, &
+   public :: partition_t, rank_part_t, element_graph, condense_groups, partition_model, has_shells, &
              partition_elements, rank_part, elem_costs, serial_order, write_report, face_elements, &
              model_conn, scatter_keys, COST_RIGID, RIGID_SCALE
 
@@ -357,8 +356,8 @@ contains
       elems = pack([(e, e = 1, size(conn, 2))], take)
    end subroutine face_elements
 
-   !> Whether the model has a block of a family with rotations (shells: the MPI engine then
-   !> exchanges moments and rotary inertia beside the forces and masses).
+   !> Whether the model has a block of a family with rotations (shells, beams: the MPI engine
+   !> then exchanges moments and rotary inertia beside the forces and masses).
    logical function has_shells(model)
       type(model_t), intent(in) :: model
       type(family_t) :: f
@@ -370,16 +369,6 @@ contains
       end do
    end function has_shells
 
-   !> Whether the model has beams (serial only).
-   logical function has_beams(model)
-      type(model_t), intent(in) :: model
-      integer :: b
-      has_beams = .false.
-      do b = 1, size(model%blocks)
-         has_beams = has_beams .or. model%blocks(b)%etype == ETYPE_BEAM_BS
-      end do
-   end function has_beams
-
    !> Partition a built model: connectivity and costs from its blocks.
    subroutine partition_model(model, np, grp_ptr, grp_elem, part, error)
       type(model_t), intent(in) :: model
@@ -388,12 +377,6 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer, allocatable :: conn(:, :), ewgt(:)
       type(family_t) :: fs
-      if (has_beams(model)) then
-         call set_error(error, model%deck_file//': *SECTION_BEAM: beam elements are not '// &
-            'yet under MPI (their rotational degrees of freedom are not exchanged); run this '// &
-            'deck serially, without dynx-part and mpirun', EXIT_INPUT)
-         return
-      end if
       call model_conn(model, conn)
       call elem_costs(model, ewgt)
       if (has_auto_contact(model)) then   ! separate bodies joined by proximity edges

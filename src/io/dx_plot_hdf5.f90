@@ -17,7 +17,7 @@ module dx_plot_hdf5
    use dx_kinds, only: wp
    use dx_error, only: error_t
    use dx_model, only: model_t, elem_block_t, family_t, element_family, elem_stress_global, &
-                       ES_DMG
+                       ES_DMG, beam_resultants, ETYPE_BEAM_BS
    use dx_h5, only: h5_file_t, h5_create, h5_close, h5_flush, h5_create_group, h5_write, &
                     h5_write_attr, h5_create_extendible, h5_append, h5_open_read, h5_read, &
                     h5_read_attr, h5_close_keep
@@ -32,7 +32,7 @@ module dx_plot_hdf5
    use dx_plot_fields, only: plot_state_t, plot_state_alloc, plot_state_derive, plot_state_write, &
                              plot_state_read, plot_mesh_write, plot_mesh_read, stress_invariants, F_COORD, F_VEL, &
                              F_STRESS, F_EPSP, F_FAILED, F_DAMAGE, NSTATE_FIELDS, &
-                             plot_rows_in_file
+                             plot_rows_in_file, F_BEAM_FORCE, F_BEAM_MOMENT
    implicit none
    private
    public :: plot_file_t, element_results, stress_invariants, element_average, &
@@ -432,13 +432,17 @@ contains
 
    !> The rows of the plot schema this model uses (dx_plot_fields: the optional ones): the
    !> damage D when some part's *MAT_ADD_EROSION has the Tuler-Butcher criterion or its
-   !> material a damage variable (from the parts, so every rank of an MPI run agrees).
+   !> material a damage variable; the beam resultants when a part is a beam part (from the
+   !> parts, so every rank of an MPI run agrees).
    function plot_rows(model) result(rows)
       type(model_t), intent(in) :: model
       logical :: rows(NSTATE_FIELDS)
       integer :: p
       rows = .false.
       if (.not. allocated(model%parts)) return
+      ! the beams' resultants when a part has a *SECTION_BEAM (its area: dx_beam_build)
+      rows(F_BEAM_FORCE) = any(model%parts(:)%bsec(1) > 0.0_wp)
+      rows(F_BEAM_MOMENT) = rows(F_BEAM_FORCE)
       do p = 1, size(model%parts)
          associate (e => model%parts(p)%ero)
             if (e%on .and. e%impulse /= e%excl) rows(F_DAMAGE) = .true.
@@ -477,9 +481,29 @@ contains
          call element_results(model, st%f(F_STRESS)%r, st%f(F_EPSP)%r(1, :), &
                               st%f(F_FAILED)%r(1, :))
       end if
+      if (st%on(F_BEAM_FORCE)) call beam_rows(model, st)
       call plot_state_derive(st, model%x0)
       call write_arrays(self, st, error)
    end subroutine plot_write_state
+
+   !> The beams' resultant rows of a state (dx_element_types: beam_resultants), by global
+   !> element; zero on the other cells.
+   subroutine beam_rows(model, st)
+      type(model_t), intent(in) :: model
+      type(plot_state_t), intent(inout) :: st
+      integer :: ib, i
+      if (.not. allocated(model%x)) return
+      do ib = 1, size(model%blocks)
+         associate (blk => model%blocks(ib))
+            if (blk%etype /= ETYPE_BEAM_BS) cycle
+            do i = 1, blk%nel
+               call beam_resultants(blk, i, model%x(:, blk%conn(:, i)), &
+                                    st%f(F_BEAM_FORCE)%r(:, blk%elem(i)), &
+                                    st%f(F_BEAM_MOMENT)%r(:, blk%elem(i)))
+            end do
+         end associate
+      end do
+   end subroutine beam_rows
 
    !> The writes of one state (the order of the module header), then its XDMF entry.
    !> plot_write_state and plot_resume's copy both come through here: the same calls.

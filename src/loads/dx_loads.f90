@@ -1,4 +1,5 @@
-!> External loads evaluated once per cycle: *LOAD_NODE_POINT (force along a global axis),
+!> External loads evaluated once per cycle: *LOAD_NODE_POINT (force along a global axis, or
+!> a moment about one on a node with rotations: DOF 5-7),
 !> *LOAD_BODY_X/Y/Z (base acceleration, dx_load_body) and
 !> *LOAD_SEGMENT(_SET) pressure on 3/4-node segments of the current geometry. A positive
 !> pressure acts against the segment normal given by the right-hand rule on n1..n4
@@ -18,9 +19,19 @@ module dx_loads
    use dx_edge_pressure, only: add_edge_pressures, deposit_energy
    implicit none
    private
-   public :: add_external_loads, has_external_loads, add_nonreflecting, add_edge_pressures, &
-             deposit_energy   ! (the last three re-exported for the explicit loop)
+   public :: add_external_loads, has_external_loads, load_rows, add_nonreflecting, &
+             add_edge_pressures, deposit_energy   ! (the last three re-exported for the explicit loop)
 contains
+
+   !> Rows of the external-load array: 3 (forces), 6 when a *LOAD_NODE is a moment (DOF 5-7
+   !> of LS-DYNA: rows 4-6 hold the moments about x, y, z; a deck without pays nothing).
+   pure integer function load_rows(model)
+      type(model_t), intent(in) :: model
+      load_rows = 3
+      if (allocated(model%node_loads)) then
+         if (any(model%node_loads(:)%dof >= 5)) load_rows = 6
+      end if
+   end function load_rows
 
    !> .true. when the deck defines any external load (so the solver skips the pass otherwise)
    !> or a non-reflecting boundary (its dashpot forces ride in fext: dx_nonreflecting).
@@ -36,7 +47,8 @@ contains
       if (allocated(model%edge_pressures)) has_external_loads = .true.   ! dx_edge_pressure
    end function has_external_loads
 
-   !> Add the external forces at time t to fext(3,nn) (zeroed by the caller).
+   !> Add the external forces at time t to fext(3,nn) (zeroed by the caller); with 6 rows
+   !> (load_rows) the nodal moments (DOF 5, 6, 7) into rows 4-6.
    subroutine add_external_loads(model, t, fext)
       type(model_t), intent(in) :: model
       real(wp), intent(in) :: t
@@ -51,6 +63,8 @@ contains
                val = ld%sf*model%curves(ld%curve)%eval(t)
                nd = ld%node
                if (ld%dof >= 1 .and. ld%dof <= 3) fext(ld%dof, nd) = fext(ld%dof, nd) + val
+               if (ld%dof >= 5 .and. ld%dof <= 7 .and. size(fext, 1) >= 6) &
+                  fext(ld%dof - 1, nd) = fext(ld%dof - 1, nd) + val
             end associate
          end do
       end if
@@ -69,23 +83,23 @@ contains
                      w1 = (2.0_wp*model%x(1, n1) + model%x(1, n2))/6.0_wp
                      w2 = (model%x(1, n1) + 2.0_wp*model%x(1, n2))/6.0_wp
                   end if
-                  fext(:, n1) = fext(:, n1) - w1*p*area
-                  fext(:, n2) = fext(:, n2) - w2*p*area
+                  fext(1:3, n1) = fext(1:3, n1) - w1*p*area
+                  fext(1:3, n2) = fext(1:3, n2) - w2*p*area
                else if (n4 == 0 .or. n4 == n3) then
                   d1 = model%x(:, n2) - model%x(:, n1)
                   d2 = model%x(:, n3) - model%x(:, n1)
                   area = 0.5_wp*cross(d1, d2)
-                  fext(:, n1) = fext(:, n1) - p*area/3.0_wp
-                  fext(:, n2) = fext(:, n2) - p*area/3.0_wp
-                  fext(:, n3) = fext(:, n3) - p*area/3.0_wp
+                  fext(1:3, n1) = fext(1:3, n1) - p*area/3.0_wp
+                  fext(1:3, n2) = fext(1:3, n2) - p*area/3.0_wp
+                  fext(1:3, n3) = fext(1:3, n3) - p*area/3.0_wp
                else
                   d1 = model%x(:, n3) - model%x(:, n1)
                   d2 = model%x(:, n4) - model%x(:, n2)
                   area = 0.5_wp*cross(d1, d2)
-                  fext(:, n1) = fext(:, n1) - 0.25_wp*p*area
-                  fext(:, n2) = fext(:, n2) - 0.25_wp*p*area
-                  fext(:, n3) = fext(:, n3) - 0.25_wp*p*area
-                  fext(:, n4) = fext(:, n4) - 0.25_wp*p*area
+                  fext(1:3, n1) = fext(1:3, n1) - 0.25_wp*p*area
+                  fext(1:3, n2) = fext(1:3, n2) - 0.25_wp*p*area
+                  fext(1:3, n3) = fext(1:3, n3) - 0.25_wp*p*area
+                  fext(1:3, n4) = fext(1:3, n4) - 0.25_wp*p*area
                end if
             end associate
          end do

@@ -53,7 +53,7 @@ contains
       integer :: i
       a = base_acceleration(loads, curves, t)
       do i = 1, size(mass)
-         fext(:, i) = fext(:, i) - mass(i)*a
+         fext(1:3, i) = fext(1:3, i) - mass(i)*a
       end do
    end subroutine add_body_loads
 end module dx_load_body

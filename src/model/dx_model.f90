@@ -14,7 +14,7 @@ module dx_model
    use dx_run_state, only: run_state_t, restart_ctrl_t
    use dx_emc_types, only: emc_system_t
    use dx_element_types, only: elem_quality, ASPECT_WARN, WARP_WARN, shell_stress_global
-   use dx_element_types, only: elem_stress_global
+   use dx_element_types, only: elem_stress_global, beam_resultants, ETYPE_BEAM_BS
    use dx_element_types, only: elem_block_t, part_t, family_t, element_family, elem_volume, elem_moments, elem_length, &
                                etype_of_elform, solid_shape, MAX_NEN, MAX_FACE_NODES, &
                                MAX_FACES, ETYPE_DEFAULT, ETYPES, ES_WORK, ES_HGS, ES_PHIM, &
@@ -31,6 +31,7 @@ module dx_model
    !> the element-family table (dx_element_types): what every consumer asks of a block's
    !> element type (nodes, faces, edges, volume, moments, lumped mass, plot cell, weight)
    public :: elem_quality, ASPECT_WARN, WARP_WARN, shell_stress_global, elem_stress_global
+   public :: beam_resultants, ETYPE_BEAM_BS
    public :: family_t, element_family, elem_volume, elem_moments, elem_length, etype_of_elform, &
              solid_shape, MAX_NEN, MAX_FACE_NODES, MAX_FACES, ETYPES
    !> the family-state slots of a block's es array (dx_element_types)

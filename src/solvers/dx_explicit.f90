@@ -22,7 +22,8 @@ module dx_explicit
    use dx_run_state, only: run_state_t
    use dx_element, only: element_block_pass, block_result_t, ELEM_ERR_NEGVOL, family_t, &
                          element_family, element_rotary_inertia
-   use dx_loads, only: add_external_loads, add_nonreflecting, add_edge_pressures, deposit_energy
+   use dx_loads, only: add_external_loads, load_rows, add_nonreflecting, add_edge_pressures, &
+                       deposit_energy
    use dx_constraints, only: apply_spc, apply_prescribed, apply_spc_rot, apply_prescribed_rot
    use dx_output, only: output_t
    use dx_checkpoint, only: checkpoint_t, checkpoint_failure_dump, checkpoint_energy_band
@@ -118,7 +119,7 @@ contains
       allocate(self%vold(3, model%nn))
       if (allocated(model%w)) allocate(self%wold(3, model%nn))
       self%loads = dom%has_loads(model)      ! the deck's loads, whatever this rank holds
-      if (self%loads) allocate(self%fext(3, model%nn))
+      if (self%loads) allocate(self%fext(load_rows(model), model%nn))   ! 6: nodal moments
       call constrained_nodes(model, self%cnodes)
       allocate(self%vfree(3, size(self%cnodes)))
       call dom%mass_share(model, self%cnodes)  ! one-element-wide blocks get the element dt bound
@@ -235,7 +236,14 @@ contains
          ! same bits on every rank holding the node)
          if (loads) call add_nonreflecting(model, fext)
          if (loads) call add_edge_pressures(model, t, fext)   ! (t = 0 geometry: node by node)
-         if (loads) model%f = model%f + fext
+         if (loads) then
+            if (size(fext, 1) == 3) then
+               model%f = model%f + fext
+            else            ! *LOAD_NODE DOF 5-7: rows 4-6 are moments
+               model%f = model%f + fext(1:3, :)
+               model%mom = model%mom + fext(4:6, :)
+            end if
+         end if
          ! ---- time step
          dt = model%ctrl%tssfac*dtcrit
          if (model%cycle == 0 .and. model%ctrl%dtinit > 0.0_wp) dt = min(dt, model%ctrl%dtinit)
@@ -278,7 +286,14 @@ contains
          ! (shells: the constraint moments' work first, self%wold present only with them)
          call dom%constraints(model, cnodes, vfree, vold, dt, dtavg, wcon, wrw, need, &
                               self%wold)
-         if (loads) call dom%load_work(fext, vold, model%v, dtavg, wext, need)
+         if (loads) then
+            if (size(fext, 1) == 3) then
+               call dom%load_work(fext, vold, model%v, dtavg, wext, need)
+            else            ! the moments' work M.dtavg (w(n-1/2) + w(n+1/2))/2 per node too
+               call dom%load_work(fext, stack6(vold, self%wold), stack6(model%v, model%w), &
+                                  dtavg, wext, need)
+            end if
+         end if
          if (allocated(model%contact)) then
             call dom%contact_work(model, vold, dtavg, self%outdir, ioerr)
             if (allocated(ioerr)) then
@@ -497,4 +512,11 @@ contains
       if (allocated(error) .and. len(dump) > 0) error%message = error%message// &
          new_line('a')//'dynx: state at the failure (for inspection, not restartable) in '//dump
    end subroutine finish
+   !> (6, n): the rows of a over those of b (velocities over angular velocities).
+   pure function stack6(a, b) result(r)
+      real(wp), intent(in) :: a(:, :), b(:, :)
+      real(wp) :: r(6, size(a, 2))
+      r(1:3, :) = a
+      r(4:6, :) = b
+   end function stack6
 end module dx_explicit
