@@ -27,8 +27,8 @@ module dx_hex8
                                HEX_ERR_NEGVOL => ELEM_ERR_NEGVOL, &
                                HEX_ERR_MATERIAL => ELEM_ERR_MATERIAL
    use dx_solid_kernels, only: cube_roots
-   use dx_hex8_geometry, only: hex8_bvectors, hex8_bvectors_chunk, hex8_char_length, inv3, &
-                               GAMMA_HG, XI_NODE
+   use dx_hex8_geometry, only: hex8_bvectors, hex8_bvectors_chunk, hex8_char_length, &
+                               GAMMA_HG, shape_derivs, point_gradients, point_gradients_one
    implicit none
    private
    !> An element whose volume falls to eps*V0 or below is collapsed (reported as a negative
@@ -36,7 +36,8 @@ module dx_hex8
    !> proportional to V (L = V/A_max) it would approach zero geometrically, never crossing it
    !> (extreme_crushed_element), until tr D = dV/(V dt) overflows.
    real(wp), parameter :: vcrush = epsilon(1.0_wp)
-   public :: hex8_block, hex8_volume, hex8_mass_share, centred_work, stable_time_step, first_error
+   public :: hex8_block, hex8_volume, hex8_mass_share, centred_work, centred_work_block
+   public :: stable_time_step, first_error
 
 
 contains
@@ -113,7 +114,7 @@ contains
       ! several columns of one array vectorize; deps is (nel, 6) as the material expects
       real(wp), dimension(nv_chunk, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
       real(wp), dimension(nv_chunk) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive
-      real(wp), dimension(nv_chunk) :: bv, vold, lcb, wo, wn, de, e1, e2, e3, e4, lc
+      real(wp), dimension(nv_chunk) :: bv, vold, lcb, wo, wn, de, lc
       real(wp) :: lg(nv_chunk, 9), de6(nv_chunk, 6), so(nv_chunk, 6), sn(nv_chunk, 6)
       real(wp) :: deps(blk%nel, 6)
       real(wp) :: dtl, hdt, d1, d2, d3, d4, d5, d6, l1, l2, l3, l4, l5, l6, l7, l8, l9
@@ -240,23 +241,8 @@ contains
          if (blk%failed(i)) wn(i) = 0.0_wp   ! eroding now: no force f(n), W(n) = 0
          if (blk%failed(i)) q(i) = 0.0_wp
       end do
-      e1(1:n) = blk%es(1:n, w); e2(1:n) = blk%es(1:n, w + 1)
-      e3(1:n) = blk%es(1:n, w + 2); e4(1:n) = blk%es(1:n, w + 3)
-      do i = 1, n
-         call centred_work(e1(i), e2(i), e3(i), e4(i), dt_old, wo(i), wn(i), q(i), vol(i), &
-                           vold(i), bv(i), trd(i)*volm(i), de(i))
-      end do
-      blk%es(1:n, w) = e1(1:n); blk%es(1:n, w + 1) = e2(1:n)
-      blk%es(1:n, w + 2) = e3(1:n); blk%es(1:n, w + 3) = e4(1:n)
-      res%deint = 0.0_wp
-      res%pend = 0.0_wp
-      do i = 1, n
-         de(i) = de(i)*alive(i)
-         blk%eint(i) = blk%eint(i) + de(i)
-         res%deint = res%deint + de(i)
-         res%pend = res%pend + alive(i)*(e4(i) - e2(i))
-         if (blk%failed(i)) alive(i) = 0.0_wp
-      end do
+      de(1:n) = trd(1:n)*volm(1:n)     ! B(n-1/2).v(n-1/2)
+      call centred_work_block(blk, n, w, dt_old, wo, wn, q, vol, vold, bv, de, alive, res)
       ! ---- internal force f_iI = (sig_ij - q delta_ij) B_jI
       do k = 1, 8
          do i = 1, n
@@ -512,6 +498,40 @@ contains
       s4 = pn
    end subroutine centred_work
 
+   !> centred_work over the n elements of a block (ELFORM 1, the 2D solids): the pending
+   !> terms in es columns w..w+3 (ES_WORK), bvm = B(n-1/2).v(n-1/2); the increment times
+   !> alive (0: eroded) added to eint and res%deint, the pending power to res%pend; an element
+   !> that failed in this pass gets alive = 0 on return (no force from now on). (hex8_sri
+   !> keeps its one loop: split in two, the pending power is no longer fused, FMA, with
+   !> q B.v and its last digit changes, e.g. glstat of patch_rigid_rotation_elform2.)
+   subroutine centred_work_block(blk, n, w, dt, wo, wn, q, vol, vold, bvn, bvm, alive, res)
+      type(elem_block_t), intent(inout) :: blk
+      integer, intent(in) :: n, w
+      real(wp), intent(in) :: dt
+      real(wp), dimension(:), intent(in) :: wo, wn, q, vol, vold, bvn, bvm
+      real(wp), intent(inout) :: alive(:)
+      type(block_result_t), intent(inout) :: res
+      real(wp), dimension(nv_chunk) :: e1, e2, e3, e4, de
+      integer :: i
+      e1(1:n) = blk%es(1:n, w); e2(1:n) = blk%es(1:n, w + 1)
+      e3(1:n) = blk%es(1:n, w + 2); e4(1:n) = blk%es(1:n, w + 3)
+      do i = 1, n
+         call centred_work(e1(i), e2(i), e3(i), e4(i), dt, wo(i), wn(i), q(i), vol(i), &
+                           vold(i), bvn(i), bvm(i), de(i))
+      end do
+      blk%es(1:n, w) = e1(1:n); blk%es(1:n, w + 1) = e2(1:n)
+      blk%es(1:n, w + 2) = e3(1:n); blk%es(1:n, w + 3) = e4(1:n)
+      res%deint = 0.0_wp
+      res%pend = 0.0_wp
+      do i = 1, n
+         de(i) = de(i)*alive(i)
+         blk%eint(i) = blk%eint(i) + de(i)
+         res%deint = res%deint + de(i)
+         res%pend = res%pend + alive(i)*(e4(i) - e2(i))
+         if (blk%failed(i)) alive(i) = 0.0_wp
+      end do
+   end subroutine centred_work_block
+
    !> After the lumped masses are known: the element's own share of its nodes' mass,
    !> phim = (1/8) sum_I (rho V0/8)/m_I (1 for a free element, 1/2 inside a one-element-wide
    !> bar, 1/8 inside a mesh); a node with a constrained translation (SPC, prescribed motion:
@@ -761,38 +781,4 @@ contains
       call first_error(n, ierr, res)
    end subroutine hex8_sri
 
-   !> Natural derivatives dN_I/dxi_k at the 8 Gauss points (+-1/sqrt(3)), point order = node order.
-   pure subroutine shape_derivs(dn)
-      real(wp), intent(out) :: dn(3, 8, 8)
-      real(wp) :: g(3)
-      integer :: ip, k
-      do ip = 1, 8
-         g = XI_NODE(:, ip)/sqrt(3.0_wp)
-         do k = 1, 8
-            dn(1, k, ip) = XI_NODE(1,k)*(1.0_wp + XI_NODE(2,k)*g(2))*(1.0_wp + XI_NODE(3,k)*g(3))/8
-            dn(2, k, ip) = XI_NODE(2,k)*(1.0_wp + XI_NODE(1,k)*g(1))*(1.0_wp + XI_NODE(3,k)*g(3))/8
-            dn(3, k, ip) = XI_NODE(3,k)*(1.0_wp + XI_NODE(1,k)*g(1))*(1.0_wp + XI_NODE(2,k)*g(2))/8
-         end do
-      end do
-   end subroutine shape_derivs
-
-   !> Spatial gradients dN/dx and weights det(J) (unit Gauss weights) at all 8 points.
-   pure subroutine point_gradients(dn, xe, ye, ze, dnx, jw)
-      real(wp), intent(in) :: dn(3, 8, 8), xe(8), ye(8), ze(8)
-      real(wp), intent(out) :: dnx(3, 8, 8), jw(8)
-      integer :: ip
-      do ip = 1, 8
-         call point_gradients_one(dn(:, :, ip), xe, ye, ze, dnx(:, :, ip), jw(ip))
-      end do
-   end subroutine point_gradients
-
-   pure subroutine point_gradients_one(dn, xe, ye, ze, dnx, jw)
-      real(wp), intent(in) :: dn(3, 8), xe(8), ye(8), ze(8)
-      real(wp), intent(out) :: dnx(3, 8), jw
-      real(wp) :: j(3, 3), ji(3, 3), det
-      j(:, 1) = matmul(dn, xe); j(:, 2) = matmul(dn, ye); j(:, 3) = matmul(dn, ze)
-      call inv3(j, ji, det)
-      dnx = matmul(ji, dn)
-      jw = det
-   end subroutine point_gradients_one
 end module dx_hex8

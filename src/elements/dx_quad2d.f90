@@ -33,7 +33,7 @@
 !> geometry, Jaumann rotation (spin w_xy only), one material dispatch per block with the 3D
 !> strain increment (xx, yy, zz = hoop or 0, xy), DYNA bulk viscosity q with the time step's
 !> length L (one length for both, issue 15), the centred work of stress and viscosity
-!> (dx_hex8's centred_work; V is quadratic (13) or cubic (14, 15) in x, Simpson exact).
+!> (dx_hex8's centred_work_block; V is quadratic (13) or cubic (14, 15) in x, Simpson exact).
 !> Hourglass: Flanagan & Belytschko 1981 (IJNME 17:679-706) for the 4-node quad, viscous:
 !> gamma_I = h_I - (h.x) b_xI - (h.y) b_yI, h = (1, -1, 1, -1), modal rates q_i = gamma_I v_iI,
 !> f_iI += a_h q_i gamma_I with a_h = QH rho c sqrt(A) t (t = 1 plane strain, rbar per radian):
@@ -55,7 +55,7 @@ module dx_quad2d
    use dx_element_types, only: elem_block_t, part_t, ES_WORK, ES_HGS, ES_THK, block_result_t, &
                                ELEM_ERR_NEGVOL, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, &
                                ETYPE_QUAD2D_PSS
-   use dx_hex8, only: centred_work, stable_time_step, first_error
+   use dx_hex8, only: centred_work_block, stable_time_step, first_error
    implicit none
    private
    public :: quad2d_block, quad2d_geometry
@@ -112,7 +112,7 @@ contains
       type(block_result_t), intent(out) :: res
       real(wp), dimension(nv_chunk, 4) :: xe, ye, vx, vy, xm, ym, bx, by, fx, fy, g, bxm, bym
       real(wp), dimension(nv_chunk) :: ar, arm, vol, volm, rb, rbm, rv, c, q, trd, w12, ein
-      real(wp), dimension(nv_chunk) :: alive, bv, bvm, vold, lc, wo, wn, de, e1, e2, e3, e4
+      real(wp), dimension(nv_chunk) :: alive, bv, bvm, vold, lc, wo, wn
       real(wp), dimension(nv_chunk) :: vr, vz, dh
       real(wp) :: de6(nv_chunk, 6), so(nv_chunk, 6), sn(nv_chunk, 6)
       real(wp) :: deps(blk%nel, 6)
@@ -285,23 +285,7 @@ contains
             wn(i) = dt_old*pw(2)
          end if
       end do
-      e1(1:n) = blk%es(1:n, w); e2(1:n) = blk%es(1:n, w + 1)
-      e3(1:n) = blk%es(1:n, w + 2); e4(1:n) = blk%es(1:n, w + 3)
-      do i = 1, n
-         call centred_work(e1(i), e2(i), e3(i), e4(i), dt_old, wo(i), wn(i), q(i), vol(i), &
-                           vold(i), bv(i), bvm(i), de(i))
-      end do
-      blk%es(1:n, w) = e1(1:n); blk%es(1:n, w + 1) = e2(1:n)
-      blk%es(1:n, w + 2) = e3(1:n); blk%es(1:n, w + 3) = e4(1:n)
-      res%deint = 0.0_wp
-      res%pend = 0.0_wp
-      do i = 1, n
-         de(i) = de(i)*alive(i)
-         blk%eint(i) = blk%eint(i) + de(i)
-         res%deint = res%deint + de(i)
-         res%pend = res%pend + alive(i)*(e4(i) - e2(i))
-         if (blk%failed(i)) alive(i) = 0.0_wp
-      end do
+      call centred_work_block(blk, n, w, dt_old, wo, wn, q, vol, vold, bv, bvm, alive, res)
       ! ---- internal force: rbar (sigma - q) B_I plus the hoop term of the formulation
       do i = 1, n
          s1 = sn(i, 1) - q(i); s2 = sn(i, 2) - q(i); s4 = sn(i, 4)
