@@ -15,10 +15,12 @@
 !> bars) also L <= 2V/sqrt(8 phim B_iI B_iI) (FB 1981's element bound).
 !> Internal energy: the centred work of the stress and viscosity forces, the exact partner of
 !> the centred kinetic energy of dx_explicit (centred_work).
-!> Viscous hourglass coefficient a_h = QH*rho*c*V**(2/3)/4 (LS-DYNA Theory Manual, U);
-!> stiffness (IHQ 4,5): FB 1981's kappa = QH*(lambda + 2mu)*b_jJ*b_jJ/(3V) on the modal
-!> rates normalized by 1/sqrt(8), i.e. f_iI = k_h (gamma_aJ u_iJ) gamma_aI with
-!> k_h = QH*(K + 4G/3)*sum(B_jJ**2)/(24V) (docs/history.md, "Hourglass types").
+!> Viscous hourglass coefficient a_h = QH*rho*c*V**(2/3)/4 (LS-DYNA Theory Manual, U), its
+!> energy the trapezoid of the last and this pass's modal force (as applied, kept in ES_HGS)
+!> times the rates, the centred work's summation by parts, and its explicit bound in the
+!> step (stable_time_step); stiffness (IHQ 4,5): FB 1981's kappa = QH*(lambda + 2mu)*b_jJ*
+!> b_jJ/(3V) on the modal rates normalized by 1/sqrt(8), i.e. f_iI = k_h (gamma_aJ u_iJ)
+!> gamma_aI with k_h = QH*(K + 4G/3)*sum(B_jJ**2)/(24V) (docs/history.md, "Hourglass types").
 module dx_hex8
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_material, only: material_t
@@ -38,7 +40,6 @@ module dx_hex8
    real(wp), parameter :: vcrush = epsilon(1.0_wp)
    public :: hex8_block, hex8_volume, hex8_mass_share, centred_work, centred_work_block
    public :: stable_time_step, first_error
-
 
 contains
 
@@ -74,6 +75,7 @@ contains
       real(wp), intent(in), optional :: time, dtfloor   !< erosion (dx_erosion%erosion_now)
       ! blocks built elsewhere than dx_model_build (tests, restart) may lack it
       if (blk%esc(ES_WORK) == 0) call blk%es_add(ES_WORK, 4)
+      if (blk%nip == 1 .and. part%qh > 0.0_wp .and. blk%esc(ES_HGS) == 0) call blk%es_add(ES_HGS, 12)
       select case (blk%nip)
       case (1)
          call hex8_1pt(blk, mat, part, x, v, dt_old, f, res, time, dtfloor)
@@ -117,7 +119,7 @@ contains
       real(wp), dimension(nv_chunk) :: bv, vold, lcb, wo, wn, de, lc
       real(wp) :: lg(nv_chunk, 9), de6(nv_chunk, 6), so(nv_chunk, 6), sn(nv_chunk, 6)
       real(wp) :: deps(blk%nel, 6)
-      real(wp) :: dtl, hdt, d1, d2, d3, d4, d5, d6, l1, l2, l3, l4, l5, l6, l7, l8, l9
+      real(wp) :: dtl, hdt, l1, l2, l3, l4, l5, l6, l7, l8, l9
       integer :: ierr(nv_chunk)
       logical :: failed(nv_chunk)
       integer :: i, k, n, nn, w
@@ -202,16 +204,7 @@ contains
       do k = 1, 6
          so(1:n, k) = blk%sig(1:n, k, 1)
       end do
-      do i = 1, n
-         d1 = 2.0_wp*(w12(i)*so(i,4) - w31(i)*so(i,6))
-         d2 = 2.0_wp*(w23(i)*so(i,5) - w12(i)*so(i,4))
-         d3 = 2.0_wp*(w31(i)*so(i,6) - w23(i)*so(i,5))
-         d4 = w12(i)*(so(i,2) - so(i,1)) + w23(i)*so(i,6) - w31(i)*so(i,5)
-         d5 = w23(i)*(so(i,3) - so(i,2)) + w31(i)*so(i,4) - w12(i)*so(i,6)
-         d6 = w31(i)*(so(i,1) - so(i,3)) + w12(i)*so(i,5) - w23(i)*so(i,4)
-         so(i,1) = so(i,1) + d1; so(i,2) = so(i,2) + d2; so(i,3) = so(i,3) + d3
-         so(i,4) = so(i,4) + d4; so(i,5) = so(i,5) + d5; so(i,6) = so(i,6) + d6
-      end do
+      call jaumann(n, nv_chunk, w12, w23, w31, so)
       do k = 1, 6
          blk%sig(1:n, k, 1) = so(1:n, k)
       end do
@@ -266,7 +259,7 @@ contains
          end do
       end do
       ! ---- stable time step
-      call stable_time_step(blk, part, lc, trd, c, res)
+      call stable_time_step(blk, part, lc, trd, c, res, lcb)
       call first_error(n, ierr, res)
    end subroutine hex8_1pt
 
@@ -338,41 +331,41 @@ contains
                coef(i) = coef(i) + bx(i, a)**2 + by(i, a)**2 + bz(i, a)**2
             end do
             coef(i) = m*coef(i)/vol(i)*dt
-            e(i) = 0.0_wp
          end do
-         do k = 1, 4
-            ! the resisting forces of mode k: es columns h, h+1, h+2 (x, y, z)
-            h = blk%esc(ES_HGS) + 3*(k - 1)
-            do i = 1, n
-               ! corotate the stored resisting forces, then add the stiffness increment; the
-               ! energy is the trapezoid of the old and new force (exact spring energy)
+      else
+         do i = 1, n
+            ! a_h = QH rho c V**(2/3)/4, lcb = V**(1/3)
+            coef(i) = 0.25_wp*part%qh*(mat%ro/rv(i))*c(i)*lcb(i)*lcb(i)
+         end do
+      end if
+      e(1:n) = 0.0_wp
+      do k = 1, 4
+         ! the resisting forces of mode k: es columns h, h+1, h+2 (x, y, z)
+         h = blk%esc(ES_HGS) + 3*(k - 1)
+         do i = 1, n
+            if (part%ihq >= 4) then
+               ! stiffness: corotate the stored resisting forces, add the stiffness
+               ! increment; the trapezoid of the old and new force is the spring energy
                kx = blk%es(i, h) + w12(i)*blk%es(i, h + 1) - w31(i)*blk%es(i, h + 2)
                ky = blk%es(i, h + 1) - w12(i)*blk%es(i, h) + w23(i)*blk%es(i, h + 2)
                kz = blk%es(i, h + 2) + w31(i)*blk%es(i, h) - w23(i)*blk%es(i, h + 1)
                hx(i, k) = kx + coef(i)*qx(i, k)
                hy(i, k) = ky + coef(i)*qy(i, k)
                hz(i, k) = kz + coef(i)*qz(i, k)
-               blk%es(i, h) = hx(i, k); blk%es(i, h + 1) = hy(i, k)
-               blk%es(i, h + 2) = hz(i, k)
-               e(i) = e(i) + 0.5_wp*dt*((kx + hx(i, k))*qx(i, k) + (ky + hy(i, k))*qy(i, k) &
-                      + (kz + hz(i, k))*qz(i, k))
-            end do
-         end do
-      else
-         do i = 1, n
-            ! a_h = QH rho c V**(2/3)/4, lcb = V**(1/3)
-            coef(i) = 0.25_wp*part%qh*(mat%ro/rv(i))*c(i)*lcb(i)*lcb(i)
-            e(i) = 0.0_wp
-         end do
-         do k = 1, 4
-            do i = 1, n
+            else
+               ! viscous: the trapezoid of the last pass's force (as applied, not turned)
+               ! and this one's, the centred work of the force (hourglass_gamma_viscous)
+               kx = blk%es(i, h); ky = blk%es(i, h + 1); kz = blk%es(i, h + 2)
                hx(i, k) = coef(i)*qx(i, k)
                hy(i, k) = coef(i)*qy(i, k)
                hz(i, k) = coef(i)*qz(i, k)
-               e(i) = e(i) + dt*(hx(i, k)*qx(i, k) + hy(i, k)*qy(i, k) + hz(i, k)*qz(i, k))
-            end do
+            end if
+            blk%es(i, h) = hx(i, k); blk%es(i, h + 1) = hy(i, k)
+            blk%es(i, h + 2) = hz(i, k)
+            e(i) = e(i) + 0.5_wp*dt*((kx + hx(i, k))*qx(i, k) + (ky + hy(i, k))*qy(i, k) &
+                   + (kz + hz(i, k))*qz(i, k))
          end do
-      end if
+      end do
       dehg = 0.0_wp
       do i = 1, n
          e(i) = e(i)*alive(i)
@@ -391,7 +384,10 @@ contains
    end subroutine hourglass
 
    !> IHQ 1: f_iI += a_h qdot_ia Gamma_aI with qdot_ia = Gamma_aJ v_iJ, Gamma the +-1 base
-   !> vectors (Kosloff & Frasier 1978; DYNA3D), a_h = QH rho c V**(2/3)/4.
+   !> vectors (Kosloff & Frasier 1978; DYNA3D), a_h = QH rho c V**(2/3)/4. Energy: dt/2
+   !> (Q(n-1) + Q(n)).qdot(n-1/2) with Q = a_h qdot the modal force, the exact partner of the
+   !> centred kinetic energy at a constant step (sum by parts of dtavg f(n).(v(n-1/2) +
+   !> v(n+1/2))/2; a_h dt |qdot|**2 alone overcounts a mode that flips, 1/(1 - r dt/2)).
    subroutine hourglass_gamma_viscous(blk, mat, part, n, dt, vx, vy, vz, lcb, rv, c, alive, &
                                       fx, fy, fz, dehg)
       type(elem_block_t), intent(inout) :: blk
@@ -404,10 +400,12 @@ contains
       real(wp), dimension(nv_chunk, 8), intent(inout) :: fx, fy, fz
       real(wp), intent(out) :: dehg
       real(wp) :: ah, qx(4), qy(4), qz(4), e
-      integer :: i, a, k
+      integer :: i, a, k, h
       dehg = 0.0_wp
+      h = blk%esc(ES_HGS)
       do i = 1, n
          ah = 0.25_wp*part%qh*(mat%ro/rv(i))*c(i)*lcb(i)*lcb(i)*alive(i)
+         e = 0.0_wp
          !GCC$ unroll 4
          do k = 1, 4
             qx(k) = 0.0_wp; qy(k) = 0.0_wp; qz(k) = 0.0_wp
@@ -417,8 +415,15 @@ contains
                qy(k) = qy(k) + GAMMA_HG(k, a)*vy(i, a)
                qz(k) = qz(k) + GAMMA_HG(k, a)*vz(i, a)
             end do
+            ! the trapezoid of the last pass's and this pass's modal force (see hourglass)
+            e = e + (blk%es(i, h + 3*k - 3) + ah*qx(k))*qx(k) &
+                  + (blk%es(i, h + 3*k - 2) + ah*qy(k))*qy(k) &
+                  + (blk%es(i, h + 3*k - 1) + ah*qz(k))*qz(k)
+            blk%es(i, h + 3*k - 3) = ah*qx(k)
+            blk%es(i, h + 3*k - 2) = ah*qy(k)
+            blk%es(i, h + 3*k - 1) = ah*qz(k)
          end do
-         e = ah*dt*sum(qx*qx + qy*qy + qz*qz)
+         e = 0.5_wp*dt*e
          ! e feeds two sums (ehg, dehg): "+ 0" gives the product one use, so it is rounded
          ! alike in the vectorized body and the scalar remainder rather than fused (FMA) into
          ! one sum there and not here; an element's energy must not depend on its position
@@ -591,19 +596,28 @@ contains
 
    !> Smallest element step L/(Q + sqrt(Q**2 + c**2)), L = lc (char_lengths), Q = Q2*c +
    !> Q1*L*|e_kk| (compression only; the same L as the bulk viscosity's, so Q is the
-   !> viscosity's own damping rate); eroded elements do not count.
-   subroutine stable_time_step(blk, part, lc, trd, c, res)
+   !> viscosity's own damping rate); eroded elements do not count. With lh (the hourglass
+   !> length: V**(1/3), 2D sqrt(A)) and a viscous hourglass (IHQ 1-3), also the explicit
+   !> bound of its damping: the checkerboard mode has no stiffness and relaxes at the rate
+   !> r = 16 QH c/lh (a_h 64/(rho V): 8 elements of 8 Gamma_I**2 on a node of mass rho V),
+   !> and v(n+1/2) = (1 - r dt) v(n-1/2) is stable for r dt <= 2: dt <= lh/(8 QH c)
+   !> (binding in a cube beyond QH = 1/8; docs/extreme-cases.md).
+   subroutine stable_time_step(blk, part, lc, trd, c, res, lh)
       type(elem_block_t), intent(in) :: blk
       type(part_t), intent(in) :: part
       real(wp), intent(in) :: lc(:), trd(:), c(:)
       type(block_result_t), intent(inout) :: res
+      real(wp), intent(in), optional :: lh(:)
       real(wp) :: qb, trde
       integer :: i, n
+      logical :: hgv
       n = blk%nel
+      hgv = present(lh) .and. part%qh > 0.0_wp .and. part%ihq <= 3
       do i = 1, n
          qb = 0.0_wp
          if (trd(i) < 0.0_wp) qb = part%q2*c(i) + part%q1*lc(i)*abs(trd(i))
          trde = lc(i)/(qb + sqrt(qb*qb + c(i)*c(i)))
+         if (hgv .and. c(i) > 0.0_wp) trde = min(trde, lh(i)/(8.0_wp*part%qh*c(i)))
          if (blk%failed(i)) trde = huge_wp
          if (trde < res%dt) then
             res%dt = trde; res%imin = i

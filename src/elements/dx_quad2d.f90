@@ -41,7 +41,9 @@
 !> modes summed (IHQ 1-3 alike). Stiffness (IHQ 4, 5 alike): FB's kappa = QH (lambda + 2 mu)
 !> b_jJ b_jJ/(2A) on the modes normalized by 1/2 (|h|**2 = 4), i.e. the stored resisting force
 !> Q_i += k_h dt qdot_i with k_h = QH (K + 4G/3) B_jJ B_jJ/(8A) t (as dx_hex8's /(24V) in 3D),
-!> corotated with the in-plane spin, f_iI += Q_i gamma_I.
+!> corotated with the in-plane spin, f_iI += Q_i gamma_I. Energy of both: dt/2 (Q(n-1) + Q(n)).qdot
+!> (viscous: Q(n-1) as applied, the centred work); the viscous one's explicit bound
+!> dt <= sqrt(A)/(8 QH c) in the step (dx_hex8's stable_time_step).
 !> Stable step dt_e = L/(Q + sqrt(Q**2 + c**2)), L = A / (the element's diameter: its longest
 !> diagonal or edge) - DYNA2D's area over the longest diagonal for every quadrilateral whose
 !> diagonal is its longest span, the triangle's and the trapezoid's longest edge otherwise
@@ -130,6 +132,7 @@ contains
       th = 0
       if (pss) th = blk%esc(ES_THK)
       if (blk%esc(ES_WORK) == 0) call blk%es_add(ES_WORK, 4)
+      if (part%qh > 0.0_wp .and. blk%esc(ES_HGS) == 0) call blk%es_add(ES_HGS, 2)
       w = blk%esc(ES_WORK)
       n = blk%nel
       hdt = 0.5_wp*dt_old
@@ -320,6 +323,7 @@ contains
                qx = qx + g(i, k)*vx(i, k)
                qy = qy + g(i, k)*vy(i, k)
             end do
+            h = blk%esc(ES_HGS)
             if (part%ihq >= 4) then
                ! stiffness: corotate the stored resisting force, add k_h dt qdot; the energy
                ! is the trapezoid of the old and new force (exact spring energy)
@@ -328,20 +332,21 @@ contains
                   ah = ah + bx(i, k)**2 + by(i, k)**2
                end do
                ah = part%qh*(mat%bulk + 4.0_wp*mat%shear/3.0_wp)*ah/(8.0_wp*ar(i))*rb(i)
-               h = blk%esc(ES_HGS)
                kx = blk%es(i, h) + w12(i)*blk%es(i, h + 1)
                ky = blk%es(i, h + 1) - w12(i)*blk%es(i, h)
                blk%es(i, h) = kx + ah*dt_old*qx
                blk%es(i, h + 1) = ky + ah*dt_old*qy
-               e = 0.5_wp*dt_old*((kx + blk%es(i, h))*qx + (ky + blk%es(i, h + 1))*qy)*alive(i)
-               qx = blk%es(i, h)*alive(i)
-               qy = blk%es(i, h + 1)*alive(i)
             else
+               ! viscous: the trapezoid of the last pass's force (as applied) and this one's,
+               ! the centred work (dx_hex8's hourglass_gamma_viscous)
                ah = part%qh*(mat%ro/rv(i))*c(i)*sqrt(ar(i))*rb(i)*alive(i)
-               e = ah*dt_old*(qx*qx + qy*qy)
-               qx = ah*qx
-               qy = ah*qy
+               kx = blk%es(i, h); ky = blk%es(i, h + 1)
+               blk%es(i, h) = ah*qx
+               blk%es(i, h + 1) = ah*qy
             end if
+            e = 0.5_wp*dt_old*((kx + blk%es(i, h))*qx + (ky + blk%es(i, h + 1))*qy)*alive(i)
+            qx = blk%es(i, h)*alive(i)
+            qy = blk%es(i, h + 1)*alive(i)
             e = e + 0.0_wp     ! one use of the product (no FMA into two sums: as dx_hex8)
             blk%ehg(i) = blk%ehg(i) + e
             res%dehg = res%dehg + e
@@ -359,7 +364,7 @@ contains
             f(2, nn) = f(2, nn) - fy(i, k)
          end do
       end do
-      call stable_time_step(blk, part, lc, trd, c, res)
+      call stable_time_step(blk, part, lc, trd, c, res, sqrt(ar(1:n)))
       call first_error(n, ierr, res)
    end subroutine quad2d_block
 end module dx_quad2d
