@@ -399,10 +399,11 @@ contains
       real(wp), dimension(nv_chunk), intent(in) :: lcb, rv, c, alive
       real(wp), dimension(nv_chunk, 8), intent(inout) :: fx, fy, fz
       real(wp), intent(out) :: dehg
-      real(wp) :: ah, qx(4), qy(4), qz(4), e
+      real(wp) :: ah, qx(4), qy(4), qz(4), e, fo(nv_chunk, 12)
       integer :: i, a, k, h
       dehg = 0.0_wp
       h = blk%esc(ES_HGS)
+      fo(1:n, :) = blk%es(1:n, h:h + 11)     ! (a local copy: the loop over i vectorizes)
       do i = 1, n
          ah = 0.25_wp*part%qh*(mat%ro/rv(i))*c(i)*lcb(i)*lcb(i)*alive(i)
          e = 0.0_wp
@@ -416,12 +417,9 @@ contains
                qz(k) = qz(k) + GAMMA_HG(k, a)*vz(i, a)
             end do
             ! the trapezoid of the last pass's and this pass's modal force (see hourglass)
-            e = e + (blk%es(i, h + 3*k - 3) + ah*qx(k))*qx(k) &
-                  + (blk%es(i, h + 3*k - 2) + ah*qy(k))*qy(k) &
-                  + (blk%es(i, h + 3*k - 1) + ah*qz(k))*qz(k)
-            blk%es(i, h + 3*k - 3) = ah*qx(k)
-            blk%es(i, h + 3*k - 2) = ah*qy(k)
-            blk%es(i, h + 3*k - 1) = ah*qz(k)
+            e = e + (fo(i, 3*k - 2) + ah*qx(k))*qx(k) + (fo(i, 3*k - 1) + ah*qy(k))*qy(k) &
+                  + (fo(i, 3*k) + ah*qz(k))*qz(k)
+            fo(i, 3*k - 2) = ah*qx(k); fo(i, 3*k - 1) = ah*qy(k); fo(i, 3*k) = ah*qz(k)
          end do
          e = 0.5_wp*dt*e
          ! e feeds two sums (ehg, dehg): "+ 0" gives the product one use, so it is rounded
@@ -441,6 +439,7 @@ contains
                        + GAMMA_HG(3, a)*qz(3) + GAMMA_HG(4, a)*qz(4))
          end do
       end do
+      blk%es(1:n, h:h + 11) = fo(1:n, :)
    end subroutine hourglass_gamma_viscous
 
    !> DYNA bulk viscosity q = rho*l*(Q1*l*e_kk**2 - Q2*c*e_kk) for e_kk < 0, l the element's
