@@ -212,7 +212,15 @@ def energy(a):
     rows = [x for x in rows if abs(x[tot]) > 1e-9 * big and x[0] >= a.after] or rows
     lo, hi = min(x[r] for x in rows), max(x[r] for x in rows)
     print('energy ratio min %.8f max %.8f final %.8f' % (lo, hi, rows[-1][r]))
-    return lo >= 1 - a.band and hi <= 1 + a.band
+    ok = lo >= 1 - a.band and hi <= 1 + a.band
+    if a.ke_floor is not None:
+        # the time-centred kinetic energy 1/2 m v(n-1/2).v(n+1/2) of a mode at a turning point
+        # is -KE_max sin^2(omega dt/2) < 0: bounded for a stable run, not for a blow-up
+        ke, e0 = names.index('kinetic'), rows[0][tot]
+        kmin = min(x[ke] for x in rows)
+        print('kinetic energy min %.6e = %.5f E0 (floor -%g E0)' % (kmin, kmin / e0, a.ke_floor))
+        ok = ok and kmin >= -a.ke_floor * e0
+    return ok
 
 
 def main():
@@ -240,6 +248,7 @@ def main():
     p = sub.add_parser('energy'); p.add_argument('out')
     p.add_argument('--band', type=float, default=0.02)
     p.add_argument('--after', type=float, default=0.0, help='ignore rows before this time')
+    p.add_argument('--ke-floor', type=float, help='fail if kinetic < -KE_FLOOR x E0')
     a = ap.parse_args()
     ok = {'taylor': taylor, 'wave': wave, 'patch': patch, 'energy': energy}[a.cmd](a)
     sys.exit(0 if ok else 1)

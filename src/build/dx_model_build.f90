@@ -587,9 +587,9 @@ contains
                   b%ehg = 0.0_wp
                   b%failed = .false.
                   ! family state: the centred-work terms; the hourglass resisting forces
-                  ! of a stiffness hourglass type (IHQ 4, 5)
+                  ! (stiffness IHQ 4, 5; the last pass's viscous force of IHQ 1-3)
                   if (fam%es_ncol(ES_WORK) > 0) call b%es_add(ES_WORK, fam%es_ncol(ES_WORK))
-                  if ((p%ihq == 4 .or. p%ihq == 5) .and. fam%es_ncol(ES_HGS) > 0) &
+                  if (p%qh > 0.0_wp .and. fam%es_ncol(ES_HGS) > 0) &
                      call b%es_add(ES_HGS, fam%es_ncol(ES_HGS))
                   ! erosion: the Tuler-Butcher damage (parts whose *MAT_ADD_EROSION has it)
                   if (p%ero%on .and. p%ero%impulse /= p%ero%excl .and. &

@@ -81,7 +81,7 @@ module dx_element_types
    !> named slots; a family lists the columns of each slot it has (family_t%es_ncol, 0: none)
    !> and a block holds the slots it uses (elem_block_t%esc: first column, 0 = absent), so a
    !> block pays only for what its part uses. Slot ids:
-   integer, parameter :: ES_HGS = 1    !< hourglass resisting forces (3, hgmodes) (IHQ 4, 5)
+   integer, parameter :: ES_HGS = 1    !< hourglass resisting forces (3, hgmodes) (QH > 0)
    integer, parameter :: ES_WORK = 2   !< pending terms of the centred work (offsets WORK_*)
    integer, parameter :: ES_PHIM = 3   !< own-mass share of the element dt bound (set-up)
    !> shells: current thickness (1) and the hourglass generalized forces (8: membrane x, y,
@@ -246,6 +246,7 @@ contains
          ! "Partition weights")
          if (etype == ETYPE_HEX8_SRI) then
             f%nip = 8; f%weight = 8
+            f%es_ncol(ES_HGS) = 0          ! no hourglass modes
          end if
       case (ETYPE_TET4)
          f%name = 'tet4'; f%xdmf = 'Tetrahedron'; f%xdmf_code = 6

@@ -15,10 +15,12 @@
 !> bars) also L <= 2V/sqrt(8 phim B_iI B_iI) (FB 1981's element bound).
 !> Internal energy: the centred work of the stress and viscosity forces, the exact partner of
 !> the centred kinetic energy of dx_explicit (centred_work).
-!> Viscous hourglass coefficient a_h = QH*rho*c*V**(2/3)/4 (LS-DYNA Theory Manual, U);
-!> stiffness (IHQ 4,5): FB 1981's kappa = QH*(lambda + 2mu)*b_jJ*b_jJ/(3V) on the modal
-!> rates normalized by 1/sqrt(8), i.e. f_iI = k_h (gamma_aJ u_iJ) gamma_aI with
-!> k_h = QH*(K + 4G/3)*sum(B_jJ**2)/(24V) (docs/history.md, "Hourglass types").
+!> Viscous hourglass coefficient a_h = QH*rho*c*V**(2/3)/4 (LS-DYNA Theory Manual, U), its
+!> energy the trapezoid of the last and this pass's modal force (as applied, kept in ES_HGS)
+!> times the rates, the centred work's summation by parts, and its explicit bound in the
+!> step (stable_time_step); stiffness (IHQ 4,5): FB 1981's kappa = QH*(lambda + 2mu)*b_jJ*
+!> b_jJ/(3V) on the modal rates normalized by 1/sqrt(8), i.e. f_iI = k_h (gamma_aJ u_iJ)
+!> gamma_aI with k_h = QH*(K + 4G/3)*sum(B_jJ**2)/(24V) (docs/history.md, "Hourglass types").
 module dx_hex8
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_material, only: material_t
@@ -27,8 +29,8 @@ module dx_hex8
                                HEX_ERR_NEGVOL => ELEM_ERR_NEGVOL, &
                                HEX_ERR_MATERIAL => ELEM_ERR_MATERIAL
    use dx_solid_kernels, only: cube_roots
-   use dx_hex8_geometry, only: hex8_bvectors, hex8_bvectors_chunk, hex8_char_length, inv3, &
-                               GAMMA_HG, XI_NODE
+   use dx_hex8_geometry, only: hex8_bvectors, hex8_bvectors_chunk, hex8_char_length, &
+                               GAMMA_HG, shape_derivs, point_gradients, point_gradients_one
    implicit none
    private
    !> An element whose volume falls to eps*V0 or below is collapsed (reported as a negative
@@ -36,8 +38,8 @@ module dx_hex8
    !> proportional to V (L = V/A_max) it would approach zero geometrically, never crossing it
    !> (extreme_crushed_element), until tr D = dV/(V dt) overflows.
    real(wp), parameter :: vcrush = epsilon(1.0_wp)
-   public :: hex8_block, hex8_volume, hex8_mass_share, centred_work, stable_time_step, first_error
-
+   public :: hex8_block, hex8_volume, hex8_mass_share, centred_work, centred_work_block
+   public :: stable_time_step, first_error
 
 contains
 
@@ -73,6 +75,7 @@ contains
       real(wp), intent(in), optional :: time, dtfloor   !< erosion (dx_erosion%erosion_now)
       ! blocks built elsewhere than dx_model_build (tests, restart) may lack it
       if (blk%esc(ES_WORK) == 0) call blk%es_add(ES_WORK, 4)
+      if (blk%nip == 1 .and. part%qh > 0.0_wp .and. blk%esc(ES_HGS) == 0) call blk%es_add(ES_HGS, 12)
       select case (blk%nip)
       case (1)
          call hex8_1pt(blk, mat, part, x, v, dt_old, f, res, time, dtfloor)
@@ -113,10 +116,10 @@ contains
       ! several columns of one array vectorize; deps is (nel, 6) as the material expects
       real(wp), dimension(nv_chunk, 8) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm, fx, fy, fz
       real(wp), dimension(nv_chunk) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive
-      real(wp), dimension(nv_chunk) :: bv, vold, lcb, wo, wn, de, e1, e2, e3, e4, lc
+      real(wp), dimension(nv_chunk) :: bv, vold, lcb, wo, wn, de, lc
       real(wp) :: lg(nv_chunk, 9), de6(nv_chunk, 6), so(nv_chunk, 6), sn(nv_chunk, 6)
       real(wp) :: deps(blk%nel, 6)
-      real(wp) :: dtl, hdt, d1, d2, d3, d4, d5, d6, l1, l2, l3, l4, l5, l6, l7, l8, l9
+      real(wp) :: dtl, hdt, l1, l2, l3, l4, l5, l6, l7, l8, l9
       integer :: ierr(nv_chunk)
       logical :: failed(nv_chunk)
       integer :: i, k, n, nn, w
@@ -201,16 +204,7 @@ contains
       do k = 1, 6
          so(1:n, k) = blk%sig(1:n, k, 1)
       end do
-      do i = 1, n
-         d1 = 2.0_wp*(w12(i)*so(i,4) - w31(i)*so(i,6))
-         d2 = 2.0_wp*(w23(i)*so(i,5) - w12(i)*so(i,4))
-         d3 = 2.0_wp*(w31(i)*so(i,6) - w23(i)*so(i,5))
-         d4 = w12(i)*(so(i,2) - so(i,1)) + w23(i)*so(i,6) - w31(i)*so(i,5)
-         d5 = w23(i)*(so(i,3) - so(i,2)) + w31(i)*so(i,4) - w12(i)*so(i,6)
-         d6 = w31(i)*(so(i,1) - so(i,3)) + w12(i)*so(i,5) - w23(i)*so(i,4)
-         so(i,1) = so(i,1) + d1; so(i,2) = so(i,2) + d2; so(i,3) = so(i,3) + d3
-         so(i,4) = so(i,4) + d4; so(i,5) = so(i,5) + d5; so(i,6) = so(i,6) + d6
-      end do
+      call jaumann(n, nv_chunk, w12, w23, w31, so)
       do k = 1, 6
          blk%sig(1:n, k, 1) = so(1:n, k)
       end do
@@ -240,23 +234,8 @@ contains
          if (blk%failed(i)) wn(i) = 0.0_wp   ! eroding now: no force f(n), W(n) = 0
          if (blk%failed(i)) q(i) = 0.0_wp
       end do
-      e1(1:n) = blk%es(1:n, w); e2(1:n) = blk%es(1:n, w + 1)
-      e3(1:n) = blk%es(1:n, w + 2); e4(1:n) = blk%es(1:n, w + 3)
-      do i = 1, n
-         call centred_work(e1(i), e2(i), e3(i), e4(i), dt_old, wo(i), wn(i), q(i), vol(i), &
-                           vold(i), bv(i), trd(i)*volm(i), de(i))
-      end do
-      blk%es(1:n, w) = e1(1:n); blk%es(1:n, w + 1) = e2(1:n)
-      blk%es(1:n, w + 2) = e3(1:n); blk%es(1:n, w + 3) = e4(1:n)
-      res%deint = 0.0_wp
-      res%pend = 0.0_wp
-      do i = 1, n
-         de(i) = de(i)*alive(i)
-         blk%eint(i) = blk%eint(i) + de(i)
-         res%deint = res%deint + de(i)
-         res%pend = res%pend + alive(i)*(e4(i) - e2(i))
-         if (blk%failed(i)) alive(i) = 0.0_wp
-      end do
+      de(1:n) = trd(1:n)*volm(1:n)     ! B(n-1/2).v(n-1/2)
+      call centred_work_block(blk, n, w, dt_old, wo, wn, q, vol, vold, bv, de, alive, res)
       ! ---- internal force f_iI = (sig_ij - q delta_ij) B_jI
       do k = 1, 8
          do i = 1, n
@@ -280,7 +259,7 @@ contains
          end do
       end do
       ! ---- stable time step
-      call stable_time_step(blk, part, lc, trd, c, res)
+      call stable_time_step(blk, part, lc, trd, c, res, lcb)
       call first_error(n, ierr, blk%failed, res)
    end subroutine hex8_1pt
 
@@ -352,41 +331,41 @@ contains
                coef(i) = coef(i) + bx(i, a)**2 + by(i, a)**2 + bz(i, a)**2
             end do
             coef(i) = m*coef(i)/vol(i)*dt
-            e(i) = 0.0_wp
          end do
-         do k = 1, 4
-            ! the resisting forces of mode k: es columns h, h+1, h+2 (x, y, z)
-            h = blk%esc(ES_HGS) + 3*(k - 1)
-            do i = 1, n
-               ! corotate the stored resisting forces, then add the stiffness increment; the
-               ! energy is the trapezoid of the old and new force (exact spring energy)
+      else
+         do i = 1, n
+            ! a_h = QH rho c V**(2/3)/4, lcb = V**(1/3)
+            coef(i) = 0.25_wp*part%qh*(mat%ro/rv(i))*c(i)*lcb(i)*lcb(i)
+         end do
+      end if
+      e(1:n) = 0.0_wp
+      do k = 1, 4
+         ! the resisting forces of mode k: es columns h, h+1, h+2 (x, y, z)
+         h = blk%esc(ES_HGS) + 3*(k - 1)
+         do i = 1, n
+            if (part%ihq >= 4) then
+               ! stiffness: corotate the stored resisting forces, add the stiffness
+               ! increment; the trapezoid of the old and new force is the spring energy
                kx = blk%es(i, h) + w12(i)*blk%es(i, h + 1) - w31(i)*blk%es(i, h + 2)
                ky = blk%es(i, h + 1) - w12(i)*blk%es(i, h) + w23(i)*blk%es(i, h + 2)
                kz = blk%es(i, h + 2) + w31(i)*blk%es(i, h) - w23(i)*blk%es(i, h + 1)
                hx(i, k) = kx + coef(i)*qx(i, k)
                hy(i, k) = ky + coef(i)*qy(i, k)
                hz(i, k) = kz + coef(i)*qz(i, k)
-               blk%es(i, h) = hx(i, k); blk%es(i, h + 1) = hy(i, k)
-               blk%es(i, h + 2) = hz(i, k)
-               e(i) = e(i) + 0.5_wp*dt*((kx + hx(i, k))*qx(i, k) + (ky + hy(i, k))*qy(i, k) &
-                      + (kz + hz(i, k))*qz(i, k))
-            end do
-         end do
-      else
-         do i = 1, n
-            ! a_h = QH rho c V**(2/3)/4, lcb = V**(1/3)
-            coef(i) = 0.25_wp*part%qh*(mat%ro/rv(i))*c(i)*lcb(i)*lcb(i)
-            e(i) = 0.0_wp
-         end do
-         do k = 1, 4
-            do i = 1, n
+            else
+               ! viscous: the trapezoid of the last pass's force (as applied, not turned)
+               ! and this one's, the centred work of the force (hourglass_gamma_viscous)
+               kx = blk%es(i, h); ky = blk%es(i, h + 1); kz = blk%es(i, h + 2)
                hx(i, k) = coef(i)*qx(i, k)
                hy(i, k) = coef(i)*qy(i, k)
                hz(i, k) = coef(i)*qz(i, k)
-               e(i) = e(i) + dt*(hx(i, k)*qx(i, k) + hy(i, k)*qy(i, k) + hz(i, k)*qz(i, k))
-            end do
+            end if
+            blk%es(i, h) = hx(i, k); blk%es(i, h + 1) = hy(i, k)
+            blk%es(i, h + 2) = hz(i, k)
+            e(i) = e(i) + 0.5_wp*dt*((kx + hx(i, k))*qx(i, k) + (ky + hy(i, k))*qy(i, k) &
+                   + (kz + hz(i, k))*qz(i, k))
          end do
-      end if
+      end do
       dehg = 0.0_wp
       do i = 1, n
          e(i) = e(i)*alive(i)
@@ -405,7 +384,10 @@ contains
    end subroutine hourglass
 
    !> IHQ 1: f_iI += a_h qdot_ia Gamma_aI with qdot_ia = Gamma_aJ v_iJ, Gamma the +-1 base
-   !> vectors (Kosloff & Frasier 1978; DYNA3D), a_h = QH rho c V**(2/3)/4.
+   !> vectors (Kosloff & Frasier 1978; DYNA3D), a_h = QH rho c V**(2/3)/4. Energy: dt/2
+   !> (Q(n-1) + Q(n)).qdot(n-1/2) with Q = a_h qdot the modal force, the exact partner of the
+   !> centred kinetic energy at a constant step (sum by parts of dtavg f(n).(v(n-1/2) +
+   !> v(n+1/2))/2; a_h dt |qdot|**2 alone overcounts a mode that flips, 1/(1 - r dt/2)).
    subroutine hourglass_gamma_viscous(blk, mat, part, n, dt, vx, vy, vz, lcb, rv, c, alive, &
                                       fx, fy, fz, dehg)
       type(elem_block_t), intent(inout) :: blk
@@ -417,11 +399,14 @@ contains
       real(wp), dimension(nv_chunk), intent(in) :: lcb, rv, c, alive
       real(wp), dimension(nv_chunk, 8), intent(inout) :: fx, fy, fz
       real(wp), intent(out) :: dehg
-      real(wp) :: ah, qx(4), qy(4), qz(4), e
-      integer :: i, a, k
+      real(wp) :: ah, qx(4), qy(4), qz(4), e, fo(nv_chunk, 12)
+      integer :: i, a, k, h
       dehg = 0.0_wp
+      h = blk%esc(ES_HGS)
+      fo(1:n, :) = blk%es(1:n, h:h + 11)     ! (a local copy: the loop over i vectorizes)
       do i = 1, n
          ah = 0.25_wp*part%qh*(mat%ro/rv(i))*c(i)*lcb(i)*lcb(i)*alive(i)
+         e = 0.0_wp
          !GCC$ unroll 4
          do k = 1, 4
             qx(k) = 0.0_wp; qy(k) = 0.0_wp; qz(k) = 0.0_wp
@@ -431,8 +416,12 @@ contains
                qy(k) = qy(k) + GAMMA_HG(k, a)*vy(i, a)
                qz(k) = qz(k) + GAMMA_HG(k, a)*vz(i, a)
             end do
+            ! the trapezoid of the last pass's and this pass's modal force (see hourglass)
+            e = e + (fo(i, 3*k - 2) + ah*qx(k))*qx(k) + (fo(i, 3*k - 1) + ah*qy(k))*qy(k) &
+                  + (fo(i, 3*k) + ah*qz(k))*qz(k)
+            fo(i, 3*k - 2) = ah*qx(k); fo(i, 3*k - 1) = ah*qy(k); fo(i, 3*k) = ah*qz(k)
          end do
-         e = ah*dt*sum(qx*qx + qy*qy + qz*qz)
+         e = 0.5_wp*dt*e
          ! e feeds two sums (ehg, dehg): "+ 0" gives the product one use, so it is rounded
          ! alike in the vectorized body and the scalar remainder rather than fused (FMA) into
          ! one sum there and not here; an element's energy must not depend on its position
@@ -450,6 +439,7 @@ contains
                        + GAMMA_HG(3, a)*qz(3) + GAMMA_HG(4, a)*qz(4))
          end do
       end do
+      blk%es(1:n, h:h + 11) = fo(1:n, :)
    end subroutine hourglass_gamma_viscous
 
    !> DYNA bulk viscosity q = rho*l*(Q1*l*e_kk**2 - Q2*c*e_kk) for e_kk < 0, l the element's
@@ -512,6 +502,40 @@ contains
       s4 = pn
    end subroutine centred_work
 
+   !> centred_work over the n elements of a block (ELFORM 1, the 2D solids): the pending
+   !> terms in es columns w..w+3 (ES_WORK), bvm = B(n-1/2).v(n-1/2); the increment times
+   !> alive (0: eroded) added to eint and res%deint, the pending power to res%pend; an element
+   !> that failed in this pass gets alive = 0 on return (no force from now on). (hex8_sri
+   !> keeps its one loop: split in two, the pending power is no longer fused, FMA, with
+   !> q B.v and its last digit changes, e.g. glstat of patch_rigid_rotation_elform2.)
+   subroutine centred_work_block(blk, n, w, dt, wo, wn, q, vol, vold, bvn, bvm, alive, res)
+      type(elem_block_t), intent(inout) :: blk
+      integer, intent(in) :: n, w
+      real(wp), intent(in) :: dt
+      real(wp), dimension(:), intent(in) :: wo, wn, q, vol, vold, bvn, bvm
+      real(wp), intent(inout) :: alive(:)
+      type(block_result_t), intent(inout) :: res
+      real(wp), dimension(nv_chunk) :: e1, e2, e3, e4, de
+      integer :: i
+      e1(1:n) = blk%es(1:n, w); e2(1:n) = blk%es(1:n, w + 1)
+      e3(1:n) = blk%es(1:n, w + 2); e4(1:n) = blk%es(1:n, w + 3)
+      do i = 1, n
+         call centred_work(e1(i), e2(i), e3(i), e4(i), dt, wo(i), wn(i), q(i), vol(i), &
+                           vold(i), bvn(i), bvm(i), de(i))
+      end do
+      blk%es(1:n, w) = e1(1:n); blk%es(1:n, w + 1) = e2(1:n)
+      blk%es(1:n, w + 2) = e3(1:n); blk%es(1:n, w + 3) = e4(1:n)
+      res%deint = 0.0_wp
+      res%pend = 0.0_wp
+      do i = 1, n
+         de(i) = de(i)*alive(i)
+         blk%eint(i) = blk%eint(i) + de(i)
+         res%deint = res%deint + de(i)
+         res%pend = res%pend + alive(i)*(e4(i) - e2(i))
+         if (blk%failed(i)) alive(i) = 0.0_wp
+      end do
+   end subroutine centred_work_block
+
    !> After the lumped masses are known: the element's own share of its nodes' mass,
    !> phim = (1/8) sum_I (rho V0/8)/m_I (1 for a free element, 1/2 inside a one-element-wide
    !> bar, 1/8 inside a mesh); a node with a constrained translation (SPC, prescribed motion:
@@ -571,19 +595,28 @@ contains
 
    !> Smallest element step L/(Q + sqrt(Q**2 + c**2)), L = lc (char_lengths), Q = Q2*c +
    !> Q1*L*|e_kk| (compression only; the same L as the bulk viscosity's, so Q is the
-   !> viscosity's own damping rate); eroded elements do not count.
-   subroutine stable_time_step(blk, part, lc, trd, c, res)
+   !> viscosity's own damping rate); eroded elements do not count. With lh (the hourglass
+   !> length: V**(1/3), 2D sqrt(A)) and a viscous hourglass (IHQ 1-3), also the explicit
+   !> bound of its damping: the checkerboard mode has no stiffness and relaxes at the rate
+   !> r = 16 QH c/lh (a_h 64/(rho V): 8 elements of 8 Gamma_I**2 on a node of mass rho V),
+   !> and v(n+1/2) = (1 - r dt) v(n-1/2) is stable for r dt <= 2: dt <= lh/(8 QH c)
+   !> (binding in a cube beyond QH = 1/8; docs/extreme-cases.md).
+   subroutine stable_time_step(blk, part, lc, trd, c, res, lh)
       type(elem_block_t), intent(in) :: blk
       type(part_t), intent(in) :: part
       real(wp), intent(in) :: lc(:), trd(:), c(:)
       type(block_result_t), intent(inout) :: res
+      real(wp), intent(in), optional :: lh(:)
       real(wp) :: qb, trde
       integer :: i, n
+      logical :: hgv
       n = blk%nel
+      hgv = present(lh) .and. part%qh > 0.0_wp .and. part%ihq <= 3
       do i = 1, n
          qb = 0.0_wp
          if (trd(i) < 0.0_wp) qb = part%q2*c(i) + part%q1*lc(i)*abs(trd(i))
          trde = lc(i)/(qb + sqrt(qb*qb + c(i)*c(i)))
+         if (hgv .and. c(i) > 0.0_wp) trde = min(trde, lh(i)/(8.0_wp*part%qh*c(i)))
          if (blk%failed(i)) trde = huge_wp
          if (trde < res%dt) then
             res%dt = trde; res%imin = i
@@ -764,38 +797,4 @@ contains
       call first_error(n, ierr, blk%failed, res)
    end subroutine hex8_sri
 
-   !> Natural derivatives dN_I/dxi_k at the 8 Gauss points (+-1/sqrt(3)), point order = node order.
-   pure subroutine shape_derivs(dn)
-      real(wp), intent(out) :: dn(3, 8, 8)
-      real(wp) :: g(3)
-      integer :: ip, k
-      do ip = 1, 8
-         g = XI_NODE(:, ip)/sqrt(3.0_wp)
-         do k = 1, 8
-            dn(1, k, ip) = XI_NODE(1,k)*(1.0_wp + XI_NODE(2,k)*g(2))*(1.0_wp + XI_NODE(3,k)*g(3))/8
-            dn(2, k, ip) = XI_NODE(2,k)*(1.0_wp + XI_NODE(1,k)*g(1))*(1.0_wp + XI_NODE(3,k)*g(3))/8
-            dn(3, k, ip) = XI_NODE(3,k)*(1.0_wp + XI_NODE(1,k)*g(1))*(1.0_wp + XI_NODE(2,k)*g(2))/8
-         end do
-      end do
-   end subroutine shape_derivs
-
-   !> Spatial gradients dN/dx and weights det(J) (unit Gauss weights) at all 8 points.
-   pure subroutine point_gradients(dn, xe, ye, ze, dnx, jw)
-      real(wp), intent(in) :: dn(3, 8, 8), xe(8), ye(8), ze(8)
-      real(wp), intent(out) :: dnx(3, 8, 8), jw(8)
-      integer :: ip
-      do ip = 1, 8
-         call point_gradients_one(dn(:, :, ip), xe, ye, ze, dnx(:, :, ip), jw(ip))
-      end do
-   end subroutine point_gradients
-
-   pure subroutine point_gradients_one(dn, xe, ye, ze, dnx, jw)
-      real(wp), intent(in) :: dn(3, 8), xe(8), ye(8), ze(8)
-      real(wp), intent(out) :: dnx(3, 8), jw
-      real(wp) :: j(3, 3), ji(3, 3), det
-      j(:, 1) = matmul(dn, xe); j(:, 2) = matmul(dn, ye); j(:, 3) = matmul(dn, ze)
-      call inv3(j, ji, det)
-      dnx = matmul(ji, dn)
-      jw = det
-   end subroutine point_gradients_one
 end module dx_hex8

@@ -14,6 +14,7 @@ module dx_hex8_geometry
    private
    public :: hex8_bvectors, hex8_bvectors_chunk, hex8_char_length, inv3, GAMMA_HG, XI_NODE
    public :: hex_volume, hex_moments, hex_corner_jacobians
+   public :: shape_derivs, point_gradients, point_gradients_one   ! hex8_sri's Gauss points
 
    !> natural coordinates of the 8 nodes
    real(wp), parameter :: XI_NODE(3, 8) = reshape([ &
@@ -235,4 +236,39 @@ contains
          end do
       end do
    end subroutine hex_moments
+
+   !> Natural derivatives dN_I/dxi_k at the 8 Gauss points (+-1/sqrt(3)), point order = node order.
+   pure subroutine shape_derivs(dn)
+      real(wp), intent(out) :: dn(3, 8, 8)
+      real(wp) :: g(3)
+      integer :: ip, k
+      do ip = 1, 8
+         g = XI_NODE(:, ip)/sqrt(3.0_wp)
+         do k = 1, 8
+            dn(1, k, ip) = XI_NODE(1,k)*(1.0_wp + XI_NODE(2,k)*g(2))*(1.0_wp + XI_NODE(3,k)*g(3))/8
+            dn(2, k, ip) = XI_NODE(2,k)*(1.0_wp + XI_NODE(1,k)*g(1))*(1.0_wp + XI_NODE(3,k)*g(3))/8
+            dn(3, k, ip) = XI_NODE(3,k)*(1.0_wp + XI_NODE(1,k)*g(1))*(1.0_wp + XI_NODE(2,k)*g(2))/8
+         end do
+      end do
+   end subroutine shape_derivs
+
+   !> Spatial gradients dN/dx and weights det(J) (unit Gauss weights) at all 8 points.
+   pure subroutine point_gradients(dn, xe, ye, ze, dnx, jw)
+      real(wp), intent(in) :: dn(3, 8, 8), xe(8), ye(8), ze(8)
+      real(wp), intent(out) :: dnx(3, 8, 8), jw(8)
+      integer :: ip
+      do ip = 1, 8
+         call point_gradients_one(dn(:, :, ip), xe, ye, ze, dnx(:, :, ip), jw(ip))
+      end do
+   end subroutine point_gradients
+
+   pure subroutine point_gradients_one(dn, xe, ye, ze, dnx, jw)
+      real(wp), intent(in) :: dn(3, 8), xe(8), ye(8), ze(8)
+      real(wp), intent(out) :: dnx(3, 8), jw
+      real(wp) :: j(3, 3), ji(3, 3), det
+      j(:, 1) = matmul(dn, xe); j(:, 2) = matmul(dn, ye); j(:, 3) = matmul(dn, ze)
+      call inv3(j, ji, det)
+      dnx = matmul(ji, dn)
+      jw = det
+   end subroutine point_gradients_one
 end module dx_hex8_geometry

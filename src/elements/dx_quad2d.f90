@@ -33,7 +33,7 @@
 !> geometry, Jaumann rotation (spin w_xy only), one material dispatch per block with the 3D
 !> strain increment (xx, yy, zz = hoop or 0, xy), DYNA bulk viscosity q with the time step's
 !> length L (one length for both, issue 15), the centred work of stress and viscosity
-!> (dx_hex8's centred_work; V is quadratic (13) or cubic (14, 15) in x, Simpson exact).
+!> (dx_hex8's centred_work_block; V is quadratic (13) or cubic (14, 15) in x, Simpson exact).
 !> Hourglass: Flanagan & Belytschko 1981 (IJNME 17:679-706) for the 4-node quad, viscous:
 !> gamma_I = h_I - (h.x) b_xI - (h.y) b_yI, h = (1, -1, 1, -1), modal rates q_i = gamma_I v_iI,
 !> f_iI += a_h q_i gamma_I with a_h = QH rho c sqrt(A) t (t = 1 plane strain, rbar per radian):
@@ -41,7 +41,9 @@
 !> modes summed (IHQ 1-3 alike). Stiffness (IHQ 4, 5 alike): FB's kappa = QH (lambda + 2 mu)
 !> b_jJ b_jJ/(2A) on the modes normalized by 1/2 (|h|**2 = 4), i.e. the stored resisting force
 !> Q_i += k_h dt qdot_i with k_h = QH (K + 4G/3) B_jJ B_jJ/(8A) t (as dx_hex8's /(24V) in 3D),
-!> corotated with the in-plane spin, f_iI += Q_i gamma_I.
+!> corotated with the in-plane spin, f_iI += Q_i gamma_I. Energy of both: dt/2 (Q(n-1) + Q(n)).qdot
+!> (viscous: Q(n-1) as applied, the centred work); the viscous one's explicit bound
+!> dt <= sqrt(A)/(8 QH c) in the step (dx_hex8's stable_time_step).
 !> Stable step dt_e = L/(Q + sqrt(Q**2 + c**2)), L = A / (the element's diameter: its longest
 !> diagonal or edge) - DYNA2D's area over the longest diagonal for every quadrilateral whose
 !> diagonal is its longest span, the triangle's and the trapezoid's longest edge otherwise
@@ -55,7 +57,7 @@ module dx_quad2d
    use dx_element_types, only: elem_block_t, part_t, ES_WORK, ES_HGS, ES_THK, block_result_t, &
                                ELEM_ERR_NEGVOL, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, &
                                ETYPE_QUAD2D_PSS
-   use dx_hex8, only: centred_work, stable_time_step, first_error
+   use dx_hex8, only: centred_work_block, stable_time_step, first_error
    implicit none
    private
    public :: quad2d_block, quad2d_geometry
@@ -112,7 +114,7 @@ contains
       type(block_result_t), intent(out) :: res
       real(wp), dimension(nv_chunk, 4) :: xe, ye, vx, vy, xm, ym, bx, by, fx, fy, g, bxm, bym
       real(wp), dimension(nv_chunk) :: ar, arm, vol, volm, rb, rbm, rv, c, q, trd, w12, ein
-      real(wp), dimension(nv_chunk) :: alive, bv, bvm, vold, lc, wo, wn, de, e1, e2, e3, e4
+      real(wp), dimension(nv_chunk) :: alive, bv, bvm, vold, lc, wo, wn
       real(wp), dimension(nv_chunk) :: vr, vz, dh
       real(wp) :: de6(nv_chunk, 6), so(nv_chunk, 6), sn(nv_chunk, 6)
       real(wp) :: deps(blk%nel, 6)
@@ -130,6 +132,7 @@ contains
       th = 0
       if (pss) th = blk%esc(ES_THK)
       if (blk%esc(ES_WORK) == 0) call blk%es_add(ES_WORK, 4)
+      if (part%qh > 0.0_wp .and. blk%esc(ES_HGS) == 0) call blk%es_add(ES_HGS, 2)
       w = blk%esc(ES_WORK)
       n = blk%nel
       hdt = 0.5_wp*dt_old
@@ -285,23 +288,7 @@ contains
             wn(i) = dt_old*pw(2)
          end if
       end do
-      e1(1:n) = blk%es(1:n, w); e2(1:n) = blk%es(1:n, w + 1)
-      e3(1:n) = blk%es(1:n, w + 2); e4(1:n) = blk%es(1:n, w + 3)
-      do i = 1, n
-         call centred_work(e1(i), e2(i), e3(i), e4(i), dt_old, wo(i), wn(i), q(i), vol(i), &
-                           vold(i), bv(i), bvm(i), de(i))
-      end do
-      blk%es(1:n, w) = e1(1:n); blk%es(1:n, w + 1) = e2(1:n)
-      blk%es(1:n, w + 2) = e3(1:n); blk%es(1:n, w + 3) = e4(1:n)
-      res%deint = 0.0_wp
-      res%pend = 0.0_wp
-      do i = 1, n
-         de(i) = de(i)*alive(i)
-         blk%eint(i) = blk%eint(i) + de(i)
-         res%deint = res%deint + de(i)
-         res%pend = res%pend + alive(i)*(e4(i) - e2(i))
-         if (blk%failed(i)) alive(i) = 0.0_wp
-      end do
+      call centred_work_block(blk, n, w, dt_old, wo, wn, q, vol, vold, bv, bvm, alive, res)
       ! ---- internal force: rbar (sigma - q) B_I plus the hoop term of the formulation
       do i = 1, n
          s1 = sn(i, 1) - q(i); s2 = sn(i, 2) - q(i); s4 = sn(i, 4)
@@ -336,6 +323,7 @@ contains
                qx = qx + g(i, k)*vx(i, k)
                qy = qy + g(i, k)*vy(i, k)
             end do
+            h = blk%esc(ES_HGS)
             if (part%ihq >= 4) then
                ! stiffness: corotate the stored resisting force, add k_h dt qdot; the energy
                ! is the trapezoid of the old and new force (exact spring energy)
@@ -344,20 +332,21 @@ contains
                   ah = ah + bx(i, k)**2 + by(i, k)**2
                end do
                ah = part%qh*(mat%bulk + 4.0_wp*mat%shear/3.0_wp)*ah/(8.0_wp*ar(i))*rb(i)
-               h = blk%esc(ES_HGS)
                kx = blk%es(i, h) + w12(i)*blk%es(i, h + 1)
                ky = blk%es(i, h + 1) - w12(i)*blk%es(i, h)
                blk%es(i, h) = kx + ah*dt_old*qx
                blk%es(i, h + 1) = ky + ah*dt_old*qy
-               e = 0.5_wp*dt_old*((kx + blk%es(i, h))*qx + (ky + blk%es(i, h + 1))*qy)*alive(i)
-               qx = blk%es(i, h)*alive(i)
-               qy = blk%es(i, h + 1)*alive(i)
             else
+               ! viscous: the trapezoid of the last pass's force (as applied) and this one's,
+               ! the centred work (dx_hex8's hourglass_gamma_viscous)
                ah = part%qh*(mat%ro/rv(i))*c(i)*sqrt(ar(i))*rb(i)*alive(i)
-               e = ah*dt_old*(qx*qx + qy*qy)
-               qx = ah*qx
-               qy = ah*qy
+               kx = blk%es(i, h); ky = blk%es(i, h + 1)
+               blk%es(i, h) = ah*qx
+               blk%es(i, h + 1) = ah*qy
             end if
+            e = 0.5_wp*dt_old*((kx + blk%es(i, h))*qx + (ky + blk%es(i, h + 1))*qy)*alive(i)
+            qx = blk%es(i, h)*alive(i)
+            qy = blk%es(i, h + 1)*alive(i)
             e = e + 0.0_wp     ! one use of the product (no FMA into two sums: as dx_hex8)
             blk%ehg(i) = blk%ehg(i) + e
             res%dehg = res%dehg + e
@@ -375,7 +364,7 @@ contains
             f(2, nn) = f(2, nn) - fy(i, k)
          end do
       end do
-      call stable_time_step(blk, part, lc, trd, c, res)
+      call stable_time_step(blk, part, lc, trd, c, res, sqrt(ar(1:n)))
       call first_error(n, ierr, blk%failed, res)
    end subroutine quad2d_block
 end module dx_quad2d

@@ -28,7 +28,8 @@
 !> c_b = c_m t**2/12, c_w = c_b B.B; IHQ 4, 5: stiffness, Q += r q_dot dt with
 !> r_m = QM E t A B.B/8, r_b = r_m t**2/12 (the plate's D in place of E t), r_w = r_b B.B
 !> (the w mode bends the plate) - dynx's scaling of the paper's forms (docs/design.md,
-!> "Shells"). The warping correction (BWC = 1 of *CONTROL_SHELL) is not implemented (the
+!> "Shells"). Energy of both: dt/2 (Q(n-1) + Q(n)).q_dot (viscous: Q(n-1) as applied, the
+!> centred work; docs/extreme-cases.md). The warping correction (BWC = 1 of *CONTROL_SHELL) is not implemented (the
 !> reader refuses it): LS-DYNA's default BWC = 2 has none either.
 !> Thickness update (*CONTROL_SHELL ISTUPD = 1): dt/t = the mean over the laminae of their
 !> thickness strain increments (the material's dezz: -lambda/(lambda + 2G) (de_xx + de_yy)
@@ -300,22 +301,24 @@ contains
                dot_product(gm, vl(3, :)), dot_product(gm, wl(1, :)), dot_product(gm, wl(2, :))]
          dh = 0.0_wp
          if (part%qh > 0.0_wp) then
+            qold = blk%es(i, c0 + 1:c0 + 5)
             if (part%ihq >= 4) then
                r(1:2) = part%qh*ym*thk(i)*area*bb/8.0_wp
                r(4:5) = r(1)*thk(i)**2/12.0_wp
                r(3) = r(4)*bb
-               qold = blk%es(i, c0 + 1:c0 + 5)
                hq = qold + dt_old*r*qd
-               blk%es(i, c0 + 1:c0 + 5) = hq
-               dh = dt_old*dot_product(0.5_wp*(qold + hq), qd)
             else
                cv = 0.25_wp*part%qh*mat%ro*cs*thk(i)*sqrt(area)
                r(1:2) = cv
                r(4:5) = cv*thk(i)**2/12.0_wp
                r(3) = r(4)*bb
                hq = r*qd
-               dh = dt_old*dot_product(hq, qd)
             end if
+            ! the trapezoid of the last pass's and this pass's generalized forces: the spring
+            ! energy (stiffness), the centred work of the force as applied (viscous; with
+            ! dt |qd|**2 r alone a mode that flips each step was overcounted, issue 23)
+            blk%es(i, c0 + 1:c0 + 5) = hq
+            dh = dt_old*dot_product(0.5_wp*(qold + hq), qd)
             do k = 1, NEN
                fl(:, k) = fl(:, k) + gm(k)*hq(1:3)
                ml(:, k) = ml(:, k) + gm(k)*hq(4:5)

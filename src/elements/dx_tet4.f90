@@ -18,8 +18,7 @@ module dx_tet4
    use dx_material, only: material_t
    use dx_erosion, only: erosion_one_point, erosion_now, erosion_strain
    use dx_element_types, only: elem_block_t, part_t, ES_WORK, block_result_t, ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL
-   use dx_hex8, only: centred_work, stable_time_step   ! one copy, inlined in dx_hex8
-                                                        ! (dx_solid_kernels)
+   use dx_hex8, only: centred_work_block, stable_time_step   ! one copy, inlined in dx_hex8
    implicit none
    private
    real(wp), parameter :: vcrush = epsilon(1.0_wp)   !< collapsed below eps*V0 (as dx_hex8)
@@ -69,7 +68,7 @@ contains
       real(wp), dimension(nv_chunk, NEN) :: xe, ye, ze, vx, vy, vz, bx, by, bz, xm, ym, zm
       real(wp), dimension(nv_chunk, NEN) :: fx, fy, fz
       real(wp), dimension(nv_chunk) :: vol, volm, rv, c, q, trd, w12, w23, w31, ein, alive
-      real(wp), dimension(nv_chunk) :: bv, vold, lc, wo, wn, de, e1, e2, e3, e4
+      real(wp), dimension(nv_chunk) :: bv, vold, lc, wo, wn, de
       real(wp) :: lg(nv_chunk, 9), de6(nv_chunk, 6), so(nv_chunk, 6), sn(nv_chunk, 6)
       real(wp) :: deps(blk%nel, 6)
       real(wp) :: dtl, hdt, d1, d2, d3, d4, d5, d6
@@ -187,24 +186,9 @@ contains
          if (blk%failed(i)) wn(i) = 0.0_wp   ! eroding now: no force f(n), W(n) = 0
          if (blk%failed(i)) q(i) = 0.0_wp
       end do
-      e1(1:n) = blk%es(1:n, w); e2(1:n) = blk%es(1:n, w + 1)
-      e3(1:n) = blk%es(1:n, w + 2); e4(1:n) = blk%es(1:n, w + 3)
-      do i = 1, n
-         call centred_work(e1(i), e2(i), e3(i), e4(i), dt_old, wo(i), wn(i), q(i), vol(i), &
-                           vold(i), bv(i), trd(i)*volm(i), de(i))
-      end do
-      blk%es(1:n, w) = e1(1:n); blk%es(1:n, w + 1) = e2(1:n)
-      blk%es(1:n, w + 2) = e3(1:n); blk%es(1:n, w + 3) = e4(1:n)
-      res%deint = 0.0_wp
-      res%pend = 0.0_wp
+      de(1:n) = trd(1:n)*volm(1:n)     ! B(n-1/2).v(n-1/2)
+      call centred_work_block(blk, n, w, dt_old, wo, wn, q, vol, vold, bv, de, alive, res)
       res%dehg = 0.0_wp
-      do i = 1, n
-         de(i) = de(i)*alive(i)
-         blk%eint(i) = blk%eint(i) + de(i)
-         res%deint = res%deint + de(i)
-         res%pend = res%pend + alive(i)*(e4(i) - e2(i))
-         if (blk%failed(i)) alive(i) = 0.0_wp
-      end do
       ! ---- internal force f_iI = (sig_ij - q delta_ij) B_jI, scattered (subtracted)
       do k = 1, NEN
          do i = 1, n

@@ -481,8 +481,7 @@ contains
                if (.not. allocated(blk%hv)) allocate(blk%hv(blk%nel, blk%nhv, blk%nip), &
                                                      source=0.0_wp)
                fam = element_family(blk%etype)
-               if (fam%es_ncol(ES_HGS) > 0 .and. &
-                   (gp%parts(blk%ipart)%ihq == 4 .or. gp%parts(blk%ipart)%ihq == 5)) &
+               if (fam%es_ncol(ES_HGS) > 0 .and. gp%parts(blk%ipart)%qh > 0.0_wp) &
                   call blk%es_add(ES_HGS, fam%es_ncol(ES_HGS))
                ! shells: thickness and hourglass forces (the ranks other than 0 freed g's
                ! family state after set-up)

@@ -142,6 +142,28 @@ program test_hex8
                     'IHQ 4 force = FB stiffness QH (K+4G/3) sum(B^2)/(24V) (gamma.u) gamma')
    call check_close(blk%ehg(1), 32.0_wp*w*1.0e-14_wp, 0.0_wp, 1.0e-12_wp, &
                     'IHQ 4 energy = k (gamma.u)^2/2')
+
+   ! ---- IHQ 1 viscous on the unit cube with v = Gamma_1 in x (qdot = 8): the modal force
+   ! a_h qdot, a_h = QH rho c/4; the energy the trapezoid of the last and this pass's force,
+   ! dt/2 (Q(n-1) + Q(n)).qdot: 32 a_h dt at the first pass (Q(0) = 0), 64 a_h dt more at the
+   ! second (issue 23: a_h dt qdot^2 = 64 a_h dt at both). QH 0.2: the step is the viscous
+   ! bound V^(1/3)/(8 QH c) = 0.625/c, below the cube's 1/c
+   call make_cube()
+   part%ihq = 1
+   part%qh = 0.2_wp
+   w = 0.25_wp*part%qh*mat%ro*c
+   do i = 1, 8
+      v(:, i) = [GAMMA_HG(1, i), 0.0_wp, 0.0_wp]
+   end do
+   f = 0.0_wp
+   call hex8_block(blk, mat, part, x, v, 1.0e-7_wp, f, res)
+   call check_close(blk%ehg(1), 32.0_wp*w*1.0e-7_wp, 0.0_wp, 1.0e-12_wp, &
+                    'IHQ 1 energy, first pass: dt/2 a_h qdot^2')
+   call check_close(res%dt, 0.625_wp/c, 0.0_wp, 1.0e-12_wp, &
+                    'IHQ 1 QH 0.2 step = V^(1/3)/(8 QH c)')
+   call hex8_block(blk, mat, part, x, v, 1.0e-7_wp, f, res)
+   call check_close(blk%ehg(1), 96.0_wp*w*1.0e-7_wp, 0.0_wp, 1.0e-12_wp, &
+                    'IHQ 1 energy, second pass: + dt (Q(1) + Q(2))/2.qdot')
    call assert_summary()
 
 contains
