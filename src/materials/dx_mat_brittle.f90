@@ -36,7 +36,7 @@ module dx_mat_brittle
    use dx_card, only: card_t
    use dx_material, only: material_t, read_mid_ro
    use dx_mat_elastic, only: check_elastic_constants
-   use dx_mat_steinberg, only: max_principal
+   use dx_mat_hydro_common, only: max_principal
    implicit none
    private
    public :: mat_brittle_t, yield_vs_pressure, read_yield_curve, check_yield_curve, radial_return

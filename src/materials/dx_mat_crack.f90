@@ -36,7 +36,7 @@ module dx_mat_crack
    use dx_vec3, only: cross
    use dx_material, only: material_t, read_mid_ro
    use dx_mat_elastic, only: check_elastic_constants
-   use dx_mat_steinberg, only: max_principal
+   use dx_mat_hydro_common, only: max_principal
    use dx_mat_brittle, only: radial_return
    implicit none
    private

@@ -40,7 +40,8 @@
 program test_mat_highrate
    use dx_kinds, only: wp
    use dx_error, only: error_t
-   use dx_mat_steinberg, only: mat_steinberg_t, max_principal
+   use dx_mat_steinberg, only: mat_steinberg_t
+   use dx_mat_hydro_common, only: max_principal
    use dx_eos_linear_polynomial, only: eos_linear_polynomial_t
    use dx_mat_johnson_cook, only: mat_johnson_cook_t
    use dx_mat_hydro, only: mat_hydro_t
