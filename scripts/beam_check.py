@@ -22,6 +22,9 @@
       the plot's beam resultants (rows beam_force, beam_moment) in the last state of a beam
       under a pure end moment M about its s axis: every element's |M_s| against M within
       TOL_M relative; T, M_t (over M) and N, Q_s, Q_t (over M/L) within TOL_F.
+  beam_check.py turned OUT L ANGLE T0 TOL
+      a beam of length L turned about y as a rigid body by ANGLE (its root at the origin): the
+      first history node's mean position over t >= T0 within TOL L of (L cos, 0, -L sin).
   beam_check.py torsion OUT G J L I TOL
       torsion pendulum: the kinetic energy (glstat) has its minima every pi/omega; omega
       against sqrt(G J/(L I)) within TOL relative.
@@ -189,10 +192,25 @@ def resultants(argv):
     return em <= tol_m and eo <= tol_f and ef <= tol_f
 
 
+def turned(argv):
+    """OUT L ANGLE T0 TOL: the tip (first history node) after a rigid turn about y"""
+    out, length, ang, t0, tol = argv[0], *map(float, argv[1:5])
+    d = nodout(out)
+    rows = [r for r in d[sorted(d)[0]] if r[0] >= t0]
+    mx = sum(r[3][0] for r in rows)/len(rows)
+    mz = sum(r[3][2] for r in rows)/len(rows)
+    err = math.hypot(mx - length*math.cos(ang), mz + length*math.sin(ang))/length
+    got = math.atan2(-mz, mx)
+    print(f'turned tip (mean from t = {t0:g}): ({mx:.6f}, {mz:.6f}), angle {got:.8f} against '
+          f'{ang:.8f}; distance from L (cos, -sin) over L {err:.2e} (tol {tol:.1e})')
+    return err <= tol
+
+
 def main():
     cmd, argv = sys.argv[1], sys.argv[2:]
     fn = {'wave': wave, 'order': order, 'rotation': rotation, 'torsion': torsion,
-          'tip': tip, 'circle': circle, 'resultants': resultants}.get(cmd)
+          'tip': tip, 'circle': circle, 'resultants': resultants,
+          'turned': turned}.get(cmd)
     if fn is None:
         raise SystemExit(__doc__)
     if not fn(argv):

@@ -17,6 +17,8 @@ height 1 along t = z: A = 2, ISS = 1/6, ITT = 2/3), length L = 100 along x.
   gen_beam_deck.py circle N [OUT]       the cantilever at rest under an end moment about y
       (*LOAD_NODE_POINT DOF 6) M = 2 pi E I/L raised over 100 ms and held: it rolls into a
       full circle (tip back at the root, the middle node at the diameter L/pi)
+  gen_beam_deck.py root_rotation N [OUT] the cantilever at rest, its root turned about y by a
+      prescribed angle (VAD 2) raised to pi/2 over 100 ms and held: a rigid rotation
   gen_beam_deck.py torsion [OUT]        a torsion pendulum: 4 beams clamped at x = 0 with an
       *ELEMENT_INERTIA (100 kg mm**2, isotropic) at the tip, started with VXR = 0.01 x/L
       rad/ms: omega = sqrt(G J/(L I))
@@ -228,6 +230,23 @@ def circle(n):
     return s
 
 
+def root_rotation(n):
+    """the cantilever of cantilever() at rest, its root node turned about y by a prescribed
+    angle (*BOUNDARY_PRESCRIBED_MOTION_NODE DOF 6, VAD 2) raised smoothly (1 - cos) to pi/2
+    over 100 ms and held to 200 ms (its translations and the other rotations fixed): the
+    beam turns as a rigid body, the tip to (L cos, 0, -L sin) of the angle"""
+    s = elastica(n)
+    i = s.index('*LOAD_NODE_POINT')
+    s[i:i + 3] = ['*BOUNDARY_PRESCRIBED_MOTION_NODE',
+                  '$     NID       DOF       VAD      LCID        SF',
+                  f'{1:10d}{6:10d}{2:10d}{1:10d}{0.5*math.pi:10.7f}']
+    j = s.index('*BOUNDARY_SPC_NODE')
+    s[j + 1] = ('         1         0         1         1         1         1         0'
+                '         1')
+    s[2] = f'Cantilever beam, {n} resultant beams, root turned by a prescribed angle pi/2'
+    return s
+
+
 def torsion():
     """a torsion pendulum: 4 beams (100 mm) clamped at x = 0, an *ELEMENT_INERTIA of
     100 kg mm**2 (isotropic; with a mass) at the tip, started in the first mode's shape
@@ -266,6 +285,8 @@ def main(argv):
         lines, out = elastica(int(argv[2])), argv[3:]
     elif kind == 'circle':
         lines, out = circle(int(argv[2])), argv[3:]
+    elif kind == 'root_rotation':
+        lines, out = root_rotation(int(argv[2])), argv[3:]
     elif kind == 'torsion':
         lines, out = torsion(), argv[2:]
     else:

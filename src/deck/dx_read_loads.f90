@@ -96,11 +96,8 @@ contains
          call c%int('DOF', 0, m%dof)
          if (c%ok() .and. (m%dof < 1 .or. m%dof > 7 .or. m%dof == 4)) call c%fail('DOF', &
             'DOF '//str(m%dof)//' is not supported (supported: 1 x, 2 y, 3 z translation; '// &
-            '5, 6, 7 rotation about x, y, z on shell nodes)')
+            '5, 6, 7 rotation about x, y, z on shell and beam nodes)')
          call read_motion_fields(c, m%vad, m%lcid, m%sf, m%death, m%birth)
-         if (c%ok() .and. m%dof >= 5 .and. m%vad == 2) call c%fail('VAD', 'VAD 2 (a '// &
-            'prescribed rotation angle) on DOF '//str(m%dof)//' is not supported (supported '// &
-            'on rotations: 0 angular velocity, 1 angular acceleration)')
          if (c%halt()) exit
          m%src = origin(blk%ifile, c%card_line(), blk%name)
          call buf%push(m)

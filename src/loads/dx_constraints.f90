@@ -50,8 +50,10 @@ contains
 
    !> Prescribed rotations (DOF 5, 6, 7: about x, y, z) on the angular velocity w(n+1/2)
    !> (wold = w(n-1/2)): VAD 0 angular velocity at the mid-step time, 1 angular
-   !> acceleration at t(n) (VAD 2, an angle, is refused by the reader: the shell nodes
-   !> carry no rotation angle).
+   !> acceleration at t(n), 2 the angle: w = (angle(t + dt) - angle(t))/dt, whose steps
+   !> add up to the angle's change since the birth exactly (the nodes carry no angle: the
+   !> sum telescopes, so the node lands on the curve at every step as VAD 2 of a translation
+   !> does).
    subroutine apply_prescribed_rot(model, t, dt, dtavg, wold, w)
       type(model_t), intent(in) :: model
       real(wp), intent(in) :: t, dt, dtavg
@@ -68,6 +70,9 @@ contains
             d = pm%dof - 4
             if (pm%vad == 1) then
                val = wold(d, nd) + dtavg*pm%sf*model%curves(pm%curve)%eval(t)
+            else if (pm%vad == 2) then
+               val = pm%sf*(model%curves(pm%curve)%eval(t + dt) - &
+                            model%curves(pm%curve)%eval(t))/dt
             else
                val = pm%sf*model%curves(pm%curve)%eval(t + 0.5_wp*dt)
             end if
