@@ -24,8 +24,8 @@ module dx_model_build
                             section_kind, KIND_NAMES, KIND_CARDS, BEAM_NDAT
    use dx_beam_bs, only: beam_bs_init
    use dx_label_map, only: label_map_t
-   use dx_build_common, only: maps_t, at, at_line, set_nodes, curve_index, node_index, &
-                              dense_segments, hist_solids
+   use dx_build_common, only: maps_t, at, at_line, curve_index, &
+                              dense_segments, hist_solids, hist_nodes
    use dx_build_loads, only: build_bcs, build_initial_velocity, build_loads
    use dx_rigid_build, only: build_rigid, build_body_loads
    implicit none
@@ -780,9 +780,6 @@ contains
       type(maps_t), intent(in) :: mp
       character(*), intent(in) :: deck0
       type(error_t), allocatable, intent(out) :: error
-      integer :: i, k, j, nh
-      integer, allocatable :: h(:), nodes(:)
-      logical, allocatable :: seen(:)
       model%ctrl = inp%ctrl
       model%ctrl%lctm = 0
       if (inp%lctm /= 0) then
@@ -808,32 +805,8 @@ contains
       call hist_solids(inp, model, mp, error)
       if (allocated(error)) return
       model%rst = inp%rst
-      allocate(h(model%nn), seen(model%nn))    ! each node once: at most nn (linear set-up)
-      seen = .false.
-      nh = 0
-      do i = 1, size(inp%hist_nodes)
-         associate (l => inp%hist_nodes(i))
-            do k = 1, size(l%ids)
-               j = node_index(inp, mp, l%ids(k), l%src, 'ID'//str(k), error)
-               if (allocated(error)) return
-               if (.not. seen(j)) call add_hist(j)
-            end do
-         end associate
-      end do
-      do i = 1, size(inp%hist_node_sets)
-         associate (l => inp%hist_node_sets(i))
-            do k = 1, size(l%ids)
-               call set_nodes(inp, model, mp, l%ids(k), .false., l%src, 'ID'//str(k), nodes, &
-                              error)
-               if (allocated(error)) return
-               do j = 1, size(nodes)
-                  if (.not. seen(nodes(j))) call add_hist(nodes(j))
-               end do
-            end do
-         end associate
-      end do
-      h = h(1:nh)
-      call move_alloc(h, model%db%hist_nodes)
+      call hist_nodes(inp, model, mp, error)
+      if (allocated(error)) return
       if (.not. inp%has_termination) then
          call set_error(error, deck0//': no *CONTROL_TERMINATION: the run would not end '// &
                         '(give ENDTIM > 0 or ENDCYC > 0)')
@@ -863,13 +836,6 @@ contains
          call set_error(error, at(inp, inp%timestep_src)//'field DT2MS: mass scaling (DT2MS = '// &
             rstr(inp%ctrl%dt2ms)//') is not yet available for decks with shells '// &
             '(*ELEMENT_SHELL): their rotary inertia would not be scaled; set DT2MS = 0')
-   contains
-      subroutine add_hist(node)
-         integer, intent(in) :: node
-         nh = nh + 1
-         h(nh) = node
-         seen(node) = .true.
-      end subroutine add_hist
    end subroutine build_controls
 
    !> Whether the erosion criteria of a part use the total strain (dx_erosion).
