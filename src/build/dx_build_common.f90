@@ -1,7 +1,7 @@
 !> Model build, shared pieces: the label maps of one build (maps_t) and the lookups that turn a
 !> deck label into a dense index or report the card that named it ("file:line: *KEY: field
 !> F: node 7 is not defined (*NODE)"). Used by dx_model_build and dx_build_loads. Also the
-!> history solids of elout (*DATABASE_HISTORY_SOLID).
+!> history nodes of nodout and solids of elout (*DATABASE_HISTORY_NODE(_SET), _SOLID).
 !> No keyword of its own; no paper.
 module dx_build_common
    use dx_kinds, only: wp
@@ -13,7 +13,7 @@ module dx_build_common
    implicit none
    private
    public :: maps_t, at, at_line, set_nodes, curve_index, node_index, dense_segments, &
-             map_labels, hist_solids
+             map_labels, hist_solids, hist_nodes
 
    !> label maps of one build
    type :: maps_t
@@ -129,6 +129,51 @@ contains
          end if
       end do
    end subroutine map_labels
+
+   !> nodout's nodes: the *DATABASE_HISTORY_NODE ids and the nodes of the
+   !> *DATABASE_HISTORY_NODE_SET sets, each once, in card order (dense node indices).
+   subroutine hist_nodes(inp, model, mp, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(inout) :: model
+      type(maps_t), intent(in) :: mp
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: h(:), nodes(:)
+      logical, allocatable :: seen(:)
+      integer :: i, k, j, nh
+      allocate(h(model%nn), seen(model%nn))    ! each node once: at most nn (linear set-up)
+      seen = .false.
+      nh = 0
+      do i = 1, size(inp%hist_nodes)
+         associate (l => inp%hist_nodes(i))
+            do k = 1, size(l%ids)
+               j = node_index(inp, mp, l%ids(k), l%src, 'ID'//str(k), error)
+               if (allocated(error)) return
+               if (.not. seen(j)) call add_hist(j)
+            end do
+         end associate
+      end do
+      do i = 1, size(inp%hist_node_sets)
+         associate (l => inp%hist_node_sets(i))
+            do k = 1, size(l%ids)
+               call set_nodes(inp, model, mp, l%ids(k), .false., l%src, 'ID'//str(k), nodes, &
+                              error)
+               if (allocated(error)) return
+               do j = 1, size(nodes)
+                  if (.not. seen(nodes(j))) call add_hist(nodes(j))
+               end do
+            end do
+         end associate
+      end do
+      h = h(1:nh)
+      call move_alloc(h, model%db%hist_nodes)
+   contains
+      subroutine add_hist(node)
+         integer, intent(in) :: node
+         nh = nh + 1
+         h(nh) = node
+         seen(node) = .true.
+      end subroutine add_hist
+   end subroutine hist_nodes
 
    !> *DATABASE_ELOUT's elements: the *DATABASE_HISTORY_SOLID ids (each once, in card
    !> order) as dense elements with their ids and part ids; an id that names no element or

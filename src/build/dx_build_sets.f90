@@ -11,7 +11,7 @@ module dx_build_sets
    use dx_model_input, only: model_input_t, origin_t
    use dx_build_twod, only: part_dim
    use dx_build_common, only: maps_t, at, set_nodes, curve_index, node_index, dense_segments, &
-                              map_labels, hist_solids
+                              map_labels, hist_solids, hist_nodes
    implicit none
    private
    public :: build_sets, build_controls
@@ -89,9 +89,6 @@ contains
       type(maps_t), intent(in) :: mp
       character(*), intent(in) :: deck0
       type(error_t), allocatable, intent(out) :: error
-      integer :: i, k, j, nh
-      integer, allocatable :: h(:), nodes(:)
-      logical, allocatable :: seen(:)
       model%ctrl = inp%ctrl
       model%ctrl%lctm = 0
       if (inp%lctm /= 0) then
@@ -117,32 +114,8 @@ contains
       call hist_solids(inp, model, mp, error)
       if (allocated(error)) return
       model%rst = inp%rst
-      allocate(h(model%nn), seen(model%nn))    ! each node once: at most nn (linear set-up)
-      seen = .false.
-      nh = 0
-      do i = 1, size(inp%hist_nodes)
-         associate (l => inp%hist_nodes(i))
-            do k = 1, size(l%ids)
-               j = node_index(inp, mp, l%ids(k), l%src, 'ID'//str(k), error)
-               if (allocated(error)) return
-               if (.not. seen(j)) call add_hist(j)
-            end do
-         end associate
-      end do
-      do i = 1, size(inp%hist_node_sets)
-         associate (l => inp%hist_node_sets(i))
-            do k = 1, size(l%ids)
-               call set_nodes(inp, model, mp, l%ids(k), .false., l%src, 'ID'//str(k), nodes, &
-                              error)
-               if (allocated(error)) return
-               do j = 1, size(nodes)
-                  if (.not. seen(nodes(j))) call add_hist(nodes(j))
-               end do
-            end do
-         end associate
-      end do
-      h = h(1:nh)
-      call move_alloc(h, model%db%hist_nodes)
+      call hist_nodes(inp, model, mp, error)
+      if (allocated(error)) return
       if (.not. inp%has_termination) then
          call set_error(error, deck0//': no *CONTROL_TERMINATION: the run would not end '// &
                         '(give ENDTIM > 0 or ENDCYC > 0)')
@@ -174,12 +147,5 @@ contains
          call set_error(error, at(inp, inp%timestep_src)//'field DT2MS: mass scaling (DT2MS = '// &
             rstr(inp%ctrl%dt2ms)//') is not yet available for decks with shells '// &
             '(*ELEMENT_SHELL): their rotary inertia would not be scaled; set DT2MS = 0')
-   contains
-      subroutine add_hist(node)
-         integer, intent(in) :: node
-         nh = nh + 1
-         h(nh) = node
-         seen(node) = .true.
-      end subroutine add_hist
    end subroutine build_controls
 end module dx_build_sets

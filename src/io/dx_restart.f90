@@ -170,26 +170,11 @@ contains
          call rs%put('run_nodout_bytes', r%nodout_bytes)
          ! (only when the deck asks for the file: the dumps of the other decks stay as
          ! they were; a dump without them reads as 'none written')
-         if (model%db%matsum_dt > 0.0_wp) then
-            call rs%put('run_next_matsum', r%next_matsum)
-            call rs%put('run_matsum_bytes', r%matsum_bytes)
-         end if
-         if (model%db%spcforc_dt > 0.0_wp) then
-            call rs%put('run_next_spcforc', r%next_spcforc)
-            call rs%put('run_spcforc_bytes', r%spcforc_bytes)
-         end if
-         if (model%db%sleout_dt > 0.0_wp) then
-            call rs%put('run_next_sleout', r%next_sleout)
-            call rs%put('run_sleout_bytes', r%sleout_bytes)
-         end if
-         if (model%db%elout_dt > 0.0_wp) then
-            call rs%put('run_next_elout', r%next_elout)
-            call rs%put('run_elout_bytes', r%elout_bytes)
-         end if
-         if (model%db%ncforc_dt > 0.0_wp) then
-            call rs%put('run_next_ncforc', r%next_ncforc)
-            call rs%put('run_ncforc_bytes', r%ncforc_bytes)
-         end if
+         call put_file(rs, 'matsum', model%db%matsum_dt, r%next_matsum, r%matsum_bytes)
+         call put_file(rs, 'spcforc', model%db%spcforc_dt, r%next_spcforc, r%spcforc_bytes)
+         call put_file(rs, 'sleout', model%db%sleout_dt, r%next_sleout, r%sleout_bytes)
+         call put_file(rs, 'elout', model%db%elout_dt, r%next_elout, r%elout_bytes)
+         call put_file(rs, 'ncforc', model%db%ncforc_dt, r%next_ncforc, r%ncforc_bytes)
          call rs%put('run_energy_guard', r%guard)
       end associate
       call rs%put('time', model%time)
@@ -202,6 +187,31 @@ contains
                                 en%sliding])
       end associate
    end subroutine dump_run
+
+   !> An ASCII output file's next time and bytes ('run_next_<name>', 'run_<name>_bytes'),
+   !> only when the deck asks for the file (dt > 0): the dumps of the other decks stay as
+   !> they were.
+   subroutine put_file(rs, name, dt, next, bytes)
+      type(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      real(wp), intent(in) :: dt, next
+      integer(8), intent(in) :: bytes
+      if (.not. (dt > 0.0_wp)) return
+      call rs%put('run_next_'//name, next)
+      call rs%put('run_'//name//'_bytes', bytes)
+   end subroutine put_file
+
+   !> put_file's pair back; a dump without them (older, or the deck asked for none): none
+   !> written (0, 0).
+   subroutine get_file(rs, name, next, bytes)
+      type(rs_file_t), intent(inout) :: rs
+      character(*), intent(in) :: name
+      real(wp), intent(out) :: next
+      integer(8), intent(out) :: bytes
+      next = 0.0_wp; bytes = 0
+      if (rs%has('run_next_'//name)) call rs%get('run_next_'//name, next)
+      if (rs%has('run_'//name//'_bytes')) call rs%get('run_'//name//'_bytes', bytes)
+   end subroutine get_file
 
    subroutine restore_run(rs, model)
       type(rs_file_t), intent(inout) :: rs
@@ -224,21 +234,11 @@ contains
          call rs%get('run_nrunrsf', r%nrunrsf)
          call rs%get('run_glstat_bytes', r%glstat_bytes)
          call rs%get('run_nodout_bytes', r%nodout_bytes)
-         r%next_matsum = 0.0_wp; r%matsum_bytes = 0   ! (dumps before matsum: none written)
-         if (rs%has('run_next_matsum')) call rs%get('run_next_matsum', r%next_matsum)
-         if (rs%has('run_matsum_bytes')) call rs%get('run_matsum_bytes', r%matsum_bytes)
-         r%next_spcforc = 0.0_wp; r%spcforc_bytes = 0
-         if (rs%has('run_next_spcforc')) call rs%get('run_next_spcforc', r%next_spcforc)
-         if (rs%has('run_spcforc_bytes')) call rs%get('run_spcforc_bytes', r%spcforc_bytes)
-         r%next_sleout = 0.0_wp; r%sleout_bytes = 0
-         if (rs%has('run_next_sleout')) call rs%get('run_next_sleout', r%next_sleout)
-         if (rs%has('run_sleout_bytes')) call rs%get('run_sleout_bytes', r%sleout_bytes)
-         r%next_elout = 0.0_wp; r%elout_bytes = 0
-         if (rs%has('run_next_elout')) call rs%get('run_next_elout', r%next_elout)
-         if (rs%has('run_elout_bytes')) call rs%get('run_elout_bytes', r%elout_bytes)
-         r%next_ncforc = 0.0_wp; r%ncforc_bytes = 0
-         if (rs%has('run_next_ncforc')) call rs%get('run_next_ncforc', r%next_ncforc)
-         if (rs%has('run_ncforc_bytes')) call rs%get('run_ncforc_bytes', r%ncforc_bytes)
+         call get_file(rs, 'matsum', r%next_matsum, r%matsum_bytes)   ! (older dumps: none)
+         call get_file(rs, 'spcforc', r%next_spcforc, r%spcforc_bytes)
+         call get_file(rs, 'sleout', r%next_sleout, r%sleout_bytes)
+         call get_file(rs, 'elout', r%next_elout, r%elout_bytes)
+         call get_file(rs, 'ncforc', r%next_ncforc, r%ncforc_bytes)
          r%guard = 0.0_wp       ! (a dump written before the guard was carried: not judged
          if (rs%has('run_energy_guard')) call rs%get('run_energy_guard', r%guard)  ! 1 cycle)
          r%started = rs%ok()
