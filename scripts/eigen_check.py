@@ -10,7 +10,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from dxpost import dataset, states, state_path, report  # noqa: E402
-from implicit_check import run, CASES  # noqa: E402
+from implicit_check import run, mesh_series, CASES  # noqa: E402
 
 L, B, H, E, RHO = 5.0, 1.0, 0.5, 1000.0, 1.0e-3
 
@@ -123,11 +123,7 @@ def cantilever(out):
     opposite signs, and the 3D clamp is not the beam's: measured 1.16 then 1.83, as the
     static cantilever's 1.81). (3) The plot states and the mass normalization. (4) The shift (CENTER)."""
     here = os.path.join(CASES, 'eigen_cantilever')
-    res = []
-    for m in ('mesh1', 'mesh2'):
-        run(os.path.join(here, m + '.k'), os.path.join(out, m))
-        res.append(eigout(os.path.join(out, m)))
-    res.append(eigout(out))
+    res = mesh_series('eigen_cantilever', out, eigout)
     ok = plot_states(out, res[2])
     # the shift: CENTER = 20 cycles on 10x2x1 gives the two modes nearest 20 (19.75 and
     # 21.44), the same as the CENTER = 0 run's modes 3 and 4 (both converged to machine

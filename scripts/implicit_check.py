@@ -40,6 +40,17 @@ def run(deck, out):
         raise SystemExit('implicit_check: %s failed (exit %d), see %s/log' % (deck, rc.returncode, out))
 
 
+def mesh_series(case, out, read):
+    """[read(OUT/mesh1), read(OUT/mesh2), read(OUT)]: the case's mesh1.k and mesh2.k run
+    into OUT/mesh1 and OUT/mesh2 beside its own deck's run in OUT (a refinement series)."""
+    here = os.path.join(CASES, case)
+    vals = []
+    for m in ('mesh1', 'mesh2'):
+        run(os.path.join(here, m + '.k'), os.path.join(out, m))
+        vals.append(read(os.path.join(out, m)))
+    return vals + [read(out)]
+
+
 def patch(out):
     """Linear field u = G x on the boundary of 8 irregular hexahedra, one linear solve:
     the interior node and every element's stress exact to round-off. Bounds: 1e-12 relative
@@ -90,12 +101,7 @@ def cantilever(out):
     I, A, G = h**4/12.0, h*h, E/2.0
     eb = P*L**3/(3*E*I)
     timo = eb + P*L/(5.0/6.0*G*A)
-    here = os.path.join(CASES, 'implicit_cantilever')
-    d = []
-    for m in ('mesh1', 'mesh2'):
-        run(os.path.join(here, m + '.k'), os.path.join(out, m))
-        d.append(tip(os.path.join(out, m)))
-    d.append(tip(out))
+    d = mesh_series('implicit_cantilever', out, tip)
     ok = energy_ratio(out)
     # spcforc: the clamp's reactions balance the end load (resultant z = +P; the solve's
     # relative residual is ~4e-11, so 1e-9 of P)

@@ -103,6 +103,15 @@ contains
       f%fs = c%fs; f%fd = c%fd; f%dc = c%dc; f%vc = c%vc; f%vdc = c%vdc
       f%bt = c%bt; f%dt = c%dt; f%fsf = c%fsf; f%vsf = c%vsf
       f%soft = c%soft; f%sofscl = c%sofscl; f%bsort = c%bsort
+      ! the implicit Newton solver (IMFLAG = 1 without *DYNX_CONSERVING_CONTACT) has the
+      ! nodes-to-surface and surface-to-surface penalty contacts (dx_implicit_contact)
+      if (c%kind == CT_SINGLE_SURFACE .and. inp%ctrl%imp%imflag == 1 .and. &
+          .not. allocated(inp%emc%contacts)) then
+         call set_error(error, where(inp, c)//'single surface contact is not yet in the '// &
+            'implicit solver (IMFLAG = 1); it has *CONTACT_(AUTOMATIC_)SURFACE_TO_SURFACE '// &
+            'and *CONTACT_(AUTOMATIC_)NODES_TO_SURFACE')
+         return
+      end if
       ! ---- slave side
       if (c%sstyp == 4) then
          call node_set_nodes(inp, model, c, c%ssid, 'SSID', snodes, error)

@@ -13,6 +13,7 @@ module dx_implicit_system
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_NUMERIC
    use dx_strings, only: str
+   use dx_log, only: log_info
    use dx_model, only: model_t
    use dx_hex8_stiffness, only: tl_solid_element, tl_supported, tl_points, TL_ERR_JAC, TL_NEN
    use dx_sparse, only: sparse_sym_t, sparse_symbolic, sparse_zero, sparse_add_element
@@ -65,14 +66,19 @@ contains
             associate (f => model%contact%iface(k))
                if (f%kind /= CT_SURFACE_TO_SURFACE .and. f%kind /= CT_NODES_TO_SURFACE .and. &
                    f%kind /= CT_ONE_WAY) then
-                  call set_error(error, f%name//' (contact '//str(f%label)//'): the implicit '// &
+                  call set_error(error, '*'//f%name//' (contact '//str(f%label)//'): the implicit '// &
                      'solver has the surface-to-surface and nodes-to-surface penalty contacts '// &
                      '(_AUTOMATIC_ or not); single surface is not yet in it'//why); return
                end if
                if (any(f%pass(:)%shells)) then
-                  call set_error(error, f%name//' (contact '//str(f%label)//'): shells are '// &
+                  call set_error(error, '*'//f%name//' (contact '//str(f%label)//'): shells are '// &
                      'not yet in the implicit contact'//why); return
                end if
+               if ((f%fd > 0.0_wp .and. f%fd /= f%fs) .or. f%dc > 0.0_wp .or. f%vc > 0.0_wp &
+                   .or. f%vdc > 0.0_wp .or. f%soft /= 0 .or. f%bt > 0.0_wp .or. &
+                   f%dt < 1.0e20_wp) call log_info('dynx: implicit: note: *'//f%name// &
+                  ' (contact '//str(f%label)//'): FD, DC, VC, VDC, SOFT, BT and DT are not '// &
+                  'used by the implicit contact (Coulomb mu = FS, penalty SFS/SFM, always on)')
             end associate
          end do
          sys%has_contact = size(model%contact%iface) > 0

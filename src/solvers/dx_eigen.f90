@@ -84,8 +84,8 @@ contains
          select type (dom)
          type is (serial_domain_t)
          class default
-            call set_error(error, 'the eigenvalue run (IMFLAG = 1) runs serially: run '// &
-                           'bin/dynx without mpirun and dynx-part', EXIT_INPUT)
+            call set_error(error, 'the eigenvalue run (IMFLAG = 1) is not supported in an MPI '// &
+                           'run (it runs serially): run bin/dynx without mpirun and dynx-part', EXIT_INPUT)
             return
          end select
          if (.not. allocated(model%x)) call init_state(model, dom)
