@@ -9,7 +9,8 @@ module dx_log
 
    logical :: quiet = .false.
    integer :: extra_unit = -1              !< optional log file (dynx.log in the output dir)
-   integer :: msg_unit = -1                !< the messages file (warnings and errors only)
+   integer :: msg_unit = 0                 !< the messages file (warnings and errors only) ...
+   logical :: msg_on = .false.             !< ... when open (newunit numbers are negative)
    integer :: nwarn = 0
    integer, parameter :: max_kept = 50
    character(len=400) :: kept(max_kept)
@@ -66,22 +67,28 @@ contains
          open(newunit=msg_unit, file=path, status='replace', action='write', iostat=ios)
       end if
       ok = ios == 0
-      if (.not. ok) then
-         msg_unit = -1; return
-      end if
+      msg_on = ok
+      if (.not. ok) return
       do i = 1, min(nwarn, max_kept)
-         write(msg_unit, '(a)') 'warning: '//trim(kept(i))
+         call to_messages('warning: '//trim(kept(i)))
       end do
-      if (nwarn > max_kept) write(msg_unit, '(a,i0,a)') 'note: ', nwarn - max_kept, &
-         ' earlier warning(s) not kept (the log has them)'
-      flush(msg_unit)
+      if (nwarn > max_kept .and. msg_on) write(msg_unit, '(a,i0,a)', iostat=ios) 'note: ', &
+         nwarn - max_kept, ' earlier warning(s) not kept (the log has them)'
+      if (msg_on) flush(msg_unit, iostat=ios)
    end subroutine log_open_messages
 
+   !> One line into the messages file, flushed; a write that fails (a full disk) closes the
+   !> file and ends the copy there: the log and stderr still have every message.
    subroutine to_messages(line)
       character(*), intent(in) :: line
-      if (msg_unit < 0) return
-      write(msg_unit, '(a)') line
-      flush(msg_unit)
+      integer :: ios
+      if (.not. msg_on) return
+      write(msg_unit, '(a)', iostat=ios) line
+      if (ios == 0) flush(msg_unit, iostat=ios)
+      if (ios /= 0) then
+         close(msg_unit, iostat=ios)
+         msg_on = .false.
+      end if
    end subroutine to_messages
 
    integer function nwarnings()

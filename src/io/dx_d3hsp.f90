@@ -14,11 +14,12 @@
 !> No paper beyond the LS-DYNA manual's description of d3hsp; the layout is dynx's own.
 module dx_d3hsp
    use dx_kinds, only: wp
-   use dx_error, only: error_t, set_error, EXIT_IO
+   use dx_error, only: error_t
    use dx_strings, only: str, rstr
    use dx_model, only: model_t, family_t, element_family, elem_length
    use dx_matsum, only: part_masses
    use dx_timer, only: peak_memory_kb
+   use dx_io_sys, only: sys_write_file
    implicit none
    private
    public :: write_d3hsp
@@ -32,29 +33,28 @@ contains
       character(*), intent(in) :: path, deck, echo
       type(model_t), intent(in) :: model
       type(error_t), allocatable, intent(out) :: error
-      integer :: u, ios
-      character(256) :: msg
-      open(newunit=u, file=path, status='replace', action='write', iostat=ios, iomsg=msg)
-      if (ios /= 0) then
-         call set_error(error, 'cannot write '//path//': '//trim(msg), EXIT_IO); return
-      end if
-      write(u, '(a)', iostat=ios) 'dynx d3hsp: input echo and model summary of '//deck
-      write(u, '(a)', iostat=ios) '(each field as the reader took it; "default": blank or '// &
-         'missing in the deck, the reader''s default used)'
-      write(u, '(a)', iostat=ios) ''
-      write(u, '(a)', iostat=ios) '==== 1. input echo'
-      write(u, '(a)', advance='no', iostat=ios) echo
-      call summary(u, model)
-      call time_steps(u, model)
-      write(u, '(a)', iostat=ios) ''
-      write(u, '(a)', iostat=ios) '==== 4. memory'
-      write(u, '(a)', iostat=ios) '  peak resident size so far: '//str(int(peak_memory_kb()))//' KiB'
-      close(u, iostat=ios)
-      if (ios /= 0) call set_error(error, 'cannot write '//path, EXIT_IO)
+      character(:), allocatable :: t
+      character, parameter :: nl = new_line('a')
+      t = 'dynx d3hsp: input echo and model summary of '//deck//nl// &
+          '(each field as the reader took it; "default": blank or missing in the deck, the '// &
+          'reader''s default used)'//nl//nl//'==== 1. input echo'//nl//echo
+      call summary(t, model)
+      call time_steps(t, model)
+      t = t//nl//'==== 4. memory'//nl//'  peak resident size so far: '// &
+          str(int(peak_memory_kb()))//' KiB'//nl
+      ! one write (a full disk is an I/O error naming the file, exit 4; no partial crash)
+      call sys_write_file(path, t, error)
    end subroutine write_d3hsp
 
-   subroutine summary(u, model)
-      integer, intent(in) :: u
+   !> Append line and a new line to t.
+   subroutine put(t, line)
+      character(:), allocatable, intent(inout) :: t
+      character(*), intent(in) :: line
+      t = t//line//new_line('a')
+   end subroutine put
+
+   subroutine summary(txt, model)
+      character(:), allocatable, intent(inout) :: txt
       type(model_t), intent(in) :: model
       real(wp), allocatable :: pm(:)
       character(:), allocatable :: names(:)
@@ -62,10 +62,10 @@ contains
       type(family_t) :: f
       integer :: b, k, n, p
       character(160) :: line
-      write(u, '(a)') ''
-      write(u, '(a)') '==== 2. model summary'
-      write(u, '(a)') '  nodes          '//str(model%nn)
-      write(u, '(a)') '  elements       '//str(model%ne)
+      call put(txt, '')
+      call put(txt, '==== 2. model summary')
+      call put(txt, '  nodes          '//str(model%nn))
+      call put(txt, '  elements       '//str(model%ne))
       allocate(character(8) :: names(size(model%blocks)))
       allocate(cnt(size(model%blocks)))
       n = 0
@@ -82,10 +82,10 @@ contains
          cnt(k) = cnt(k) + model%blocks(b)%nel
       end do
       do k = 1, n
-         write(u, '(a)') '    family '//names(k)//' '//str(cnt(k))//' elements'
+         call put(txt, '    family '//names(k)//' '//str(cnt(k))//' elements')
       end do
-      write(u, '(a)') '  parts          '//str(size(model%parts))
-      write(u, '(a)') '       part   material  type     density         mass'
+      call put(txt, '  parts          '//str(size(model%parts)))
+      call put(txt, '       part   material  type     density         mass')
       pm = part_masses(model)
       do p = 1, size(model%parts)
          associate (pt => model%parts(p))
@@ -97,17 +97,18 @@ contains
                write(line, '(2i10)') pt%label, pt%mid
             end if
             if (allocated(pm)) write(line(43:), '(es13.5)') pm(p)
-            write(u, '(a)') trim(line)
+            call put(txt, trim(line))
          end associate
       end do
-      if (allocated(pm)) write(u, '(a)') '  total mass     '//rstr(sum(pm))
+      if (allocated(pm)) call put(txt, '  total mass     '//rstr(sum(pm)))
    end subroutine summary
 
    !> The NSMALL smallest TSSFAC L/c at t = 0 of the solid and 2D elements, with their ids.
-   subroutine time_steps(u, model)
-      integer, intent(in) :: u
+   subroutine time_steps(txt, model)
+      character(:), allocatable, intent(inout) :: txt
       type(model_t), intent(in) :: model
       real(wp) :: dts(NSMALL), c(1), xe(3, 8), l, dt
+      real(wp), allocatable :: hv0(:, :)
       integer :: ids(NSMALL), b, e, m, k, nen
       type(family_t) :: f
       character(100) :: line
@@ -121,11 +122,18 @@ contains
             associate (mat => model%mats(model%parts(blk%ipart)%imat)%m)
                if (mat%is_rigid .or. .not. (mat%ro > 0.0_wp)) cycle
                nen = f%nen
+               if (allocated(hv0)) deallocate(hv0)
+               allocate(hv0(1, max(1, blk%nhv)))
+               hv0 = 0.0_wp
                do e = 1, blk%nel
                   if (.not. (blk%vol0(e) > 0.0_wp)) cycle
                   xe(:, 1:nen) = model%x0(:, blk%conn(1:nen, e))
                   l = elem_length(blk%etype, xe(:, 1:nen), blk%vol0(e))
-                  call mat%wave_speed(1, [1.0_wp], blk%hv(e:e, :, 1), c)
+                  if (allocated(blk%hv)) then
+                     call mat%wave_speed(1, [1.0_wp], blk%hv(e:e, :, 1), c)
+                  else        ! MPI: rank 0's global model holds no history: the state at
+                     call mat%wave_speed(1, [1.0_wp], hv0, c)   ! t = 0 (zero)
+                  end if
                   if (.not. (c(1) > 0.0_wp)) cycle
                   dt = model%ctrl%tssfac*l/c(1)
                   if (dt >= dts(NSMALL)) cycle
@@ -140,13 +148,13 @@ contains
             end associate
          end associate
       end do
-      write(u, '(a)') ''
-      write(u, '(a)') '==== 3. smallest element time steps at t = 0 (TSSFAC L/c; solids, 2D)'
-      write(u, '(a)') '    element     time step'
+      call put(txt, '')
+      call put(txt, '==== 3. smallest element time steps at t = 0 (TSSFAC L/c; solids, 2D)')
+      call put(txt, '    element     time step')
       do k = 1, NSMALL
          if (ids(k) == 0) exit
          write(line, '(i11,es14.5)') ids(k), dts(k)
-         write(u, '(a)') trim(line)
+         call put(txt, trim(line))
       end do
    end subroutine time_steps
 end module dx_d3hsp
