@@ -20,8 +20,7 @@ module dx_build_twod
    use dx_sort, only: sort_index
    implicit none
    private
-   public :: part_dim, check_dimension, twod_element, build_nonreflecting, &
-             build_edge_pressures, build_deposits, build_contact2d
+   public :: part_dim, check_dimension, twod_element, build_twod_extras
 
 contains
 
@@ -101,6 +100,22 @@ contains
          return
       end if
    end subroutine twod_element
+
+   !> The 2D boundaries, loads and contacts (after the sets and loads): *BOUNDARY_NON_
+   !> REFLECTING_2D, *DYNX_PRESSURE_TABLE/_PULSE, *DYNX_ENERGY_DEPOSITION, *CONTACT_2D_..
+   subroutine build_twod_extras(inp, model, mp, error)
+      type(model_input_t), intent(in) :: inp
+      type(model_t), intent(inout) :: model
+      type(maps_t), intent(in) :: mp
+      type(error_t), allocatable, intent(out) :: error
+      call build_nonreflecting(inp, model, mp, error)
+      if (allocated(error)) return
+      call build_edge_pressures(inp, model, mp, error)
+      if (allocated(error)) return
+      call build_deposits(inp, model, mp, error)
+      if (allocated(error)) return
+      call build_contact2d(inp, model, mp, error)
+   end subroutine build_twod_extras
 
    !> *BOUNDARY_NON_REFLECTING_2D cards -> model%nr_node, model%nr_c (see the module header).
    !> An edge is free when no other element has it; a card whose set holds no free edge, a

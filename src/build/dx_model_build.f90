@@ -19,8 +19,7 @@ module dx_model_build
    use dx_material, only: has_lamina_form
    use dx_model_input, only: model_input_t, origin_t
    use dx_element_types, only: ES_THK, shell_area, etype_of_shell_elform
-   use dx_build_twod, only: part_dim, check_dimension, twod_element, build_nonreflecting, &
-                            build_edge_pressures, build_deposits, build_contact2d
+   use dx_build_twod, only: part_dim, check_dimension, twod_element, build_twod_extras
    use dx_element_types, only: ETYPE_SHELL_BT, ES_THK, shell_area, ES_BEAM, etype_of_beam_elform
    use dx_beam_build, only: beam_part, beam_index, beam_element, build_point_masses, &
                             section_kind, KIND_NAMES, KIND_CARDS, BEAM_NDAT
@@ -80,13 +79,7 @@ contains
       if (allocated(error)) return
       call build_loads(inp, model, mp, error)
       if (allocated(error)) return
-      call build_nonreflecting(inp, model, mp, error)   ! *BOUNDARY_NON_REFLECTING_2D
-      if (allocated(error)) return
-      call build_edge_pressures(inp, model, mp, error)  ! *DYNX_PRESSURE_TABLE, _PULSE
-      if (allocated(error)) return
-      call build_deposits(inp, model, mp, error)        ! *DYNX_ENERGY_DEPOSITION
-      if (allocated(error)) return
-      call build_contact2d(inp, model, mp, error)       ! *CONTACT_2D_AUTOMATIC_..
+      call build_twod_extras(inp, model, mp, error)   ! 2D boundaries, loads, contact
       if (allocated(error)) return
       call build_controls(inp, model, mp, deck0, error)
       if (allocated(error)) return
