@@ -19,11 +19,11 @@ module dx_par_plot
    use dx_par, only: par_rank, par_size, par_barrier, par_allreduce, PAR_MAX
    use dx_io_sys, only: sys_mkdir_p, sys_epoch_seconds
    use dx_plot_hdf5, only: element_average, plot_merge_states, plot_rows, element_damage, &
-                           block_damage_slot
+                           block_damage_slot, element_thickness
    use dx_plot_part, only: plot_part_t, plot_combine
    use dx_plot_fields, only: plot_state_t, plot_state_alloc, plot_state_read, field_in_part, &
                              PLOT_FIELDS, NSTATE_FIELDS, CENTRE_NODE, F_COORD, F_VEL, &
-                             F_STRESS, F_EPSP, F_FAILED, F_DAMAGE
+                             F_STRESS, F_EPSP, F_FAILED, F_DAMAGE, F_THICK
    use dx_plot_cells, only: cells_width, cell_column
    implicit none
    private
@@ -241,6 +241,8 @@ contains
          st%f(F_FAILED)%r(1, i) = real(fl, wp)
          if (st%on(F_DAMAGE)) st%f(F_DAMAGE)%r(1, i) = element_damage(model%blocks(b), &
             pp%eloc(2, i), block_damage_slot(model, model%blocks(b)))
+         if (st%on(F_THICK)) st%f(F_THICK)%r(1, i) = element_thickness(model%blocks(b), &
+                                                                        pp%eloc(2, i))
       end do
       call pp%part%write_state(st, error)
    end subroutine par_plot_write
