@@ -27,7 +27,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DATASETS = ['coordinates', 'displacement', 'velocity', 'stress', 'von_mises', 'pressure',
             'eff_plastic_strain', 'failed']
 # the schema's optional rows (dx_plot_fields): listed by the XDMF only when the deck uses them
-OPTIONAL = ['damage', 'beam_force', 'beam_moment']
+OPTIONAL = ['damage', 'beam_force', 'beam_moment', 'thickness']
 
 
 def make_deck(path, endtim):

@@ -12,6 +12,8 @@ decks/shell_box_post). Python standard library only (d3plot.h5 through scripts/d
   shell_scene_check.py order MESH REF OUT1 OUT2 ...
       the largest differences to REF (as agree) do not decrease from OUT1 to OUT2 ... for
       each of the three quantities (the accuracy order of the lamina algorithms)
+  shell_scene_check.py thickness OUTDIR T0 TOL       the last state's shell thickness field:
+      uniform within TOL (relative) and below the initial T0
   shell_scene_check.py energy OUTDIR TOL             max |energy ratio - 1| over glstat <= TOL
   shell_scene_check.py value OUTDIR NODE COLUMN TIME EXPECT TOL
       nodout COLUMN of NODE interpolated at TIME within TOL of EXPECT
@@ -178,6 +180,21 @@ def cmd_value(outdir, node, col, t, expect, tol, peak=False):
     return 0 if ok else 1
 
 
+def cmd_thickness(outdir, t0, tol):
+    """the last plot state's shell thickness (cells with one): uniform to TOL (relative) and
+    below T0 (a stretched membrane thins)"""
+    h5 = os.path.join(outdir, 'd3plot.h5')
+    n = len(dxpost.states(h5))
+    _, t = dxpost.dataset(h5, dxpost.state_path(n) + '/thickness')
+    t = [x for x in t if x > 0.0]
+    mean = sum(t)/len(t)
+    spread = (max(t) - min(t))/mean
+    ok = spread <= tol and mean < t0
+    print(f'{"ok  " if ok else "FAIL"} {outdir}: {len(t)} shells, thickness {mean:.12g} '
+          f'(initial {t0:g}), spread {spread:.3g} (bound {tol:g})')
+    return 0 if ok else 1
+
+
 def main(a):
     if not a:
         raise SystemExit(__doc__)
@@ -201,6 +218,8 @@ def main(a):
         return cmd_order(a[1], a[2], a[3:])
     if a[0] == 'energy':
         return cmd_energy(a[1], float(a[2]))
+    if a[0] == 'thickness':
+        return cmd_thickness(a[1], float(a[2]), float(a[3]))
     if a[0] == 'value':
         return cmd_value(a[1], int(a[2]), a[3], float(a[4]), float(a[5]), float(a[6]))
     if a[0] == 'peak':

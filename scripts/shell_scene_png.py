@@ -1,10 +1,11 @@
 """A picture of a shell scene's plot state (decks/shell_projectile_plate, decks/shell_box_post).
 
 Usage: xvfb-run -a -s "-screen 0 1280x1024x24" pvpython scripts/shell_scene_png.py \
-           OUT/d3plot.xdmf TIME PNG [FIELD] [VIEW]
-The state nearest TIME, coloured by the cell FIELD (default eff_plastic_strain, a fixed range
-0..0.1 so that the pictures of two runs compare), seen along VIEW (a direction x,y,z; default
-1,-1.4,0.8 ... from the side and above). Coordinates in the plot file are the deformed ones."""
+           OUT/d3plot.xdmf TIME PNG [FIELD] [VIEW] [RANGE]
+The state nearest TIME, coloured by the cell FIELD (default eff_plastic_strain) over RANGE
+(lo,hi; default 0,0.1: fixed, so that the pictures of two runs compare), seen along VIEW (a
+direction x,y,z; default 1,-1.4,0.8: from the side and above). Coordinates in the plot file
+are the deformed ones."""
 import sys
 
 from paraview.simple import (Xdmf3ReaderS, GetActiveViewOrCreate, Show, ColorBy, Render,
@@ -22,7 +23,8 @@ view.ViewTime = tn
 d = Show(r, view)
 ColorBy(d, ('CELLS', field))
 lut = GetColorTransferFunction(field)
-lut.RescaleTransferFunction(0.0, 0.1)
+lo, hi = (float(c) for c in (sys.argv[6] if len(sys.argv) > 6 else '0,0.1').split(','))
+lut.RescaleTransferFunction(lo, hi)
 d.SetScalarBarVisibility(view, True)
 view.CameraPosition = view_dir
 view.CameraFocalPoint = [0.0, 0.0, 0.0]

@@ -20,11 +20,12 @@ module dx_par_plot
    use dx_par, only: par_rank, par_size, par_barrier, par_allreduce, PAR_MAX
    use dx_io_sys, only: sys_mkdir_p, sys_epoch_seconds
    use dx_plot_hdf5, only: element_average, plot_merge_states, plot_rows, element_damage, &
-                           block_damage_slot
+                           block_damage_slot, element_thickness
    use dx_plot_part, only: plot_part_t, plot_combine
    use dx_plot_fields, only: plot_state_t, plot_state_alloc, plot_state_read, field_in_part, &
                              PLOT_FIELDS, NSTATE_FIELDS, CENTRE_NODE, F_COORD, F_VEL, &
-                             F_STRESS, F_EPSP, F_FAILED, F_DAMAGE, F_BEAM_FORCE, F_BEAM_MOMENT
+                             F_STRESS, F_EPSP, F_FAILED, F_DAMAGE, F_BEAM_FORCE, F_BEAM_MOMENT, &
+                             F_THICK
    use dx_plot_cells, only: cells_width, cell_column
    implicit none
    private
@@ -246,6 +247,8 @@ contains
             call beam_resultants(model%blocks(b), pp%eloc(2, i), &
                model%x(:, model%blocks(b)%conn(:, pp%eloc(2, i))), &
                st%f(F_BEAM_FORCE)%r(:, i), st%f(F_BEAM_MOMENT)%r(:, i))
+         if (st%on(F_THICK)) st%f(F_THICK)%r(1, i) = element_thickness(model%blocks(b), &
+                                                                        pp%eloc(2, i))
       end do
       call pp%part%write_state(st, error)
    end subroutine par_plot_write

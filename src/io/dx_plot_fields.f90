@@ -15,7 +15,8 @@
 !> Optional rows (opt = .true.): a field present only when the model uses it (the damage D of
 !> the Tuler-Butcher erosion, dx_erosion: when some part has it; the beams' resultants
 !> beam_force = (N, Q_s, Q_t) and beam_moment = (T, M_s, M_t) in each beam's own frame,
-!> zero on the other cells: when the deck has a beam part); a state's rows in use are
+!> zero on the other cells: when the deck has a beam part; the shell thickness, when some
+!> part is a BT shell part, 0 on the other elements); a state's rows in use are
 !> plot_state_t%on (set by plot_state_alloc's rows, found in a file by plot_state_read), the
 !> XDMF lists the rows in use (xdmf_write's rows), so a deck that uses no optional row writes
 !> the very files it wrote before the row existed.
@@ -32,7 +33,7 @@ module dx_plot_fields
    private
    public :: plot_field_t, PLOT_FIELDS, NSTATE_FIELDS, plot_state_t, CENTRE_NODE, CENTRE_CELL, &
              SRC_NODAL, SRC_ELEMENT, SRC_DERIVED, SRC_MESH, F_COORD, F_DISP, F_VEL, F_STRESS, &
-             F_VM, F_PRES, F_EPSP, F_FAILED, F_DAMAGE, F_BEAM_FORCE, F_BEAM_MOMENT, &
+             F_VM, F_PRES, F_EPSP, F_FAILED, F_DAMAGE, F_BEAM_FORCE, F_BEAM_MOMENT, F_THICK, &
              field_in_part, plot_rows_in_file, &
              xdmf_attribute_type, &
              plot_state_alloc, plot_state_derive, plot_state_write, plot_state_read, &
@@ -54,11 +55,11 @@ module dx_plot_fields
 
    !> The schema. State fields first (NSTATE_FIELDS rows, in write order), then the /mesh
    !> datasets the XDMF also lists.
-   integer, parameter :: NSTATE_FIELDS = 11
+   integer, parameter :: NSTATE_FIELDS = 12
    integer, parameter :: F_COORD = 1, F_DISP = 2, F_VEL = 3, F_STRESS = 4, F_VM = 5, &
                          F_PRES = 6, F_EPSP = 7, F_FAILED = 8, F_DAMAGE = 9, &
-                         F_BEAM_FORCE = 10, F_BEAM_MOMENT = 11
-   type(plot_field_t), parameter :: PLOT_FIELDS(14) = [ &
+                         F_BEAM_FORCE = 10, F_BEAM_MOMENT = 11, F_THICK = 12
+   type(plot_field_t), parameter :: PLOT_FIELDS(15) = [ &
       plot_field_t('coordinates', '', CENTRE_NODE, 3, .false., SRC_NODAL), &
       plot_field_t('displacement', 'displacement', CENTRE_NODE, 3, .false., SRC_DERIVED), &
       plot_field_t('velocity', 'velocity', CENTRE_NODE, 3, .false., SRC_NODAL), &
@@ -72,6 +73,7 @@ module dx_plot_fields
       plot_field_t('beam_force', 'beam_force', CENTRE_CELL, 3, .false., SRC_ELEMENT, .true.), &
       plot_field_t('beam_moment', 'beam_moment', CENTRE_CELL, 3, .false., SRC_ELEMENT, &
                    .true.), &
+      plot_field_t('thickness', 'thickness', CENTRE_CELL, 1, .false., SRC_ELEMENT, .true.), &
       plot_field_t('/mesh/part_ids', 'part_id', CENTRE_CELL, 1, .true., SRC_MESH), &
       plot_field_t('/mesh/element_ids', 'element_id', CENTRE_CELL, 1, .true., SRC_MESH), &
       plot_field_t('/mesh/node_ids', 'node_id', CENTRE_NODE, 1, .true., SRC_MESH)]

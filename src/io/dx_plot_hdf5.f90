@@ -17,7 +17,8 @@ module dx_plot_hdf5
    use dx_kinds, only: wp
    use dx_error, only: error_t
    use dx_model, only: model_t, elem_block_t, family_t, element_family, elem_stress_global, &
-                       ES_DMG, beam_resultants, ETYPE_BEAM_BS
+                       ES_DMG, beam_resultants, ETYPE_BEAM_BS, ES_THK, ETYPE_SHELL_BT, &
+                       etype_of_shell_elform
    use dx_h5, only: h5_file_t, h5_create, h5_close, h5_flush, h5_create_group, h5_write, &
                     h5_write_attr, h5_create_extendible, h5_append, h5_open_read, h5_read, &
                     h5_read_attr, h5_close_keep
@@ -32,11 +33,11 @@ module dx_plot_hdf5
    use dx_plot_fields, only: plot_state_t, plot_state_alloc, plot_state_derive, plot_state_write, &
                              plot_state_read, plot_mesh_write, plot_mesh_read, stress_invariants, F_COORD, F_VEL, &
                              F_STRESS, F_EPSP, F_FAILED, F_DAMAGE, NSTATE_FIELDS, &
-                             plot_rows_in_file, F_BEAM_FORCE, F_BEAM_MOMENT
+                             plot_rows_in_file, F_BEAM_FORCE, F_BEAM_MOMENT, F_THICK
    implicit none
    private
    public :: plot_file_t, element_results, stress_invariants, element_average, &
-             plot_merge_states, plot_rows, element_damage, block_damage_slot
+             plot_merge_states, plot_rows, element_damage, block_damage_slot, element_thickness
 
    character(*), parameter :: H5NAME = 'd3plot.h5', XMFNAME = 'd3plot.xdmf'
 
@@ -418,6 +419,15 @@ contains
       end if
    end function element_damage
 
+   !> An element's current shell thickness for the plot (family-state slot ES_THK; 0 for an
+   !> element without one).
+   real(wp) function element_thickness(blk, i) result(t)
+      type(elem_block_t), intent(in) :: blk
+      integer, intent(in) :: i
+      t = 0.0_wp
+      if (blk%esc(ES_THK) > 0) t = blk%es(i, blk%esc(ES_THK))
+   end function element_thickness
+
    !> The damage history offset of block blk's material (0: none).
    integer function block_damage_slot(model, blk) result(kd)
       type(model_t), intent(in) :: model
@@ -432,7 +442,8 @@ contains
 
    !> The rows of the plot schema this model uses (dx_plot_fields: the optional ones): the
    !> damage D when some part's *MAT_ADD_EROSION has the Tuler-Butcher criterion or its
-   !> material a damage variable; the beam resultants when a part is a beam part (from the
+   !> material a damage variable; the beam resultants when a part is a beam part; the
+   !> thickness when some part is a BT shell part (from the
    !> parts, so every rank of an MPI run agrees).
    function plot_rows(model) result(rows)
       type(model_t), intent(in) :: model
@@ -444,6 +455,14 @@ contains
       rows(F_BEAM_FORCE) = any(model%parts(:)%bsec(1) > 0.0_wp)
       rows(F_BEAM_MOMENT) = rows(F_BEAM_FORCE)
       do p = 1, size(model%parts)
+         associate (is => model%parts(p)%isec)
+            if (is >= 1 .and. allocated(model%sections)) then
+               if (is <= size(model%sections)) then
+                  if (model%sections(is)%shell .and. etype_of_shell_elform( &
+                      model%sections(is)%elform) == ETYPE_SHELL_BT) rows(F_THICK) = .true.
+               end if
+            end if
+         end associate
          associate (e => model%parts(p)%ero)
             if (e%on .and. e%impulse /= e%excl) rows(F_DAMAGE) = .true.
          end associate
@@ -466,6 +485,7 @@ contains
       type(model_t), intent(in) :: model
       type(error_t), allocatable, intent(out) :: error
       type(plot_state_t) :: st
+      integer :: ib, i
       call plot_state_alloc(st, self%nn, self%ne, rows=plot_rows(model))
       st%time = model%time
       if (allocated(model%x)) then
@@ -482,6 +502,14 @@ contains
                               st%f(F_FAILED)%r(1, :))
       end if
       if (st%on(F_BEAM_FORCE)) call beam_rows(model, st)
+      if (st%on(F_THICK) .and. allocated(model%blocks)) then
+         st%f(F_THICK)%r = 0.0_wp
+         do ib = 1, size(model%blocks)
+            do i = 1, model%blocks(ib)%nel
+               st%f(F_THICK)%r(1, model%blocks(ib)%elem(i)) = element_thickness(model%blocks(ib), i)
+            end do
+         end do
+      end if
       call plot_state_derive(st, model%x0)
       call write_arrays(self, st, error)
    end subroutine plot_write_state

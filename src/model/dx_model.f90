@@ -20,7 +20,7 @@ module dx_model
                                MAX_FACES, ETYPE_DEFAULT, ETYPES, ES_WORK, ES_HGS, ES_PHIM, &
                                ES_DMG, ES_EPS, erosion_t, MAX_ES, ES_NAMES, ES_DUMP, WORK_Q, &
                                WORK_QBV, WORK_DT, &
-                               WORK_PN
+                               WORK_PN, ES_THK, ETYPE_SHELL_BT, etype_of_shell_elform
    implicit none
    private
    public :: model_t, section_t, hourglass_t, node_set_t, part_set_t, &
@@ -38,6 +38,8 @@ module dx_model
    public :: ES_WORK, ES_HGS, ES_PHIM, ES_DMG, ES_EPS, MAX_ES, ES_NAMES, ES_DUMP, WORK_Q, &
              WORK_QBV, &
              WORK_DT, WORK_PN, erosion_t
+   !> the shell thickness slot and the BT shell type (the plot's thickness field)
+   public :: ES_THK, ETYPE_SHELL_BT, etype_of_shell_elform
 
    !> *SECTION_SOLID or *SECTION_SHELL (shell = .true.; the shell fields of
    !> dx_read_shells with their LS-DYNA meaning)

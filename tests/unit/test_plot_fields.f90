@@ -7,9 +7,9 @@
 !> the HDF5 file has that many values and rank 1 (scalar) or 2; no attribute without a row;
 !> the geometry is the coordinates row; the derived fields are exact (displacement x - x0 to
 !> the bit, von Mises 100 and pressure -100/3 of uniaxial stress within 4 ulps); the state
-!> read back (plot_state_read) equals the one written, bit for bit. Optional rows (damage): the
-!> state above has them (plot_state_alloc rows, xdmf_write rows) and reads back with them; a
-!> state allocated without rows has none (not allocated, on = .false.).
+!> read back (plot_state_read) equals the one written, bit for bit. Optional rows (damage,
+!> thickness): the state above has them (plot_state_alloc rows, xdmf_write rows) and reads
+!> back with them; a state allocated without rows has none (not allocated, on = .false.).
 program test_plot_fields
    use dx_kinds, only: wp, i8
    use dx_error, only: error_t
@@ -22,7 +22,7 @@ program test_plot_fields
                              plot_state_alloc, plot_state_derive, plot_state_write, &
                              plot_state_read, plot_mesh_write, CENTRE_NODE, SRC_MESH, F_COORD, &
                              F_DISP, F_VEL, F_STRESS, F_VM, F_PRES, F_EPSP, F_FAILED, &
-                             F_DAMAGE, F_BEAM_FORCE, F_BEAM_MOMENT, plot_rows_in_file
+                             F_DAMAGE, F_BEAM_FORCE, F_BEAM_MOMENT, F_THICK, plot_rows_in_file
    use dx_assert, only: check, check_close, assert_summary
    implicit none
    character(*), parameter :: TMP = 'build/test_plot_fields.tmp'
@@ -55,6 +55,7 @@ program test_plot_fields
    st%f(F_DAMAGE)%r(1, 1) = 0.75_wp
    st%f(F_BEAM_FORCE)%r(:, 1) = [1.5_wp, -2.0_wp, 0.25_wp]
    st%f(F_BEAM_MOMENT)%r(:, 1) = [-3.0_wp, 0.5_wp, 7.0_wp]
+   st%f(F_THICK)%r(1, 1) = 1.5_wp
    st%f(F_COORD)%r = x0 + spread([1.0_wp, 2.0_wp, 3.0_wp], 2, NN)
    st%f(F_VEL)%r = spread([-1.0_wp, 0.0_wp, 4.0_wp], 2, NN)
    st%f(F_STRESS)%r(:, 1) = [100.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp]
@@ -110,8 +111,9 @@ program test_plot_fields
    ! ---- read back
    call plot_rows_in_file(f, '/states/000001', rows, error)
    call check(.not. allocated(error) .and. rows(F_DAMAGE) .and. rows(F_BEAM_FORCE) .and. &
-              rows(F_BEAM_MOMENT) .and. count(rows) == 3, &
-              'the optional rows found in the file: damage, beam_force, beam_moment')
+              rows(F_BEAM_MOMENT) .and. rows(F_THICK) .and. &
+              count(rows) == count(PLOT_FIELDS(1:NSTATE_FIELDS)%opt), &
+              'the optional rows found in the file: damage, beam_force, beam_moment, thickness')
    call plot_state_read(f, '/states/000001', NN, NE, back, 'plot.h5: ', '', error)
    call check(.not. allocated(error), 'state read back')
    call check(back%time == st%time, 'time read back')
