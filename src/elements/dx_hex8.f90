@@ -28,7 +28,7 @@ module dx_hex8
    use dx_element_types, only: elem_block_t, part_t, ES_WORK, ES_HGS, ES_PHIM, block_result_t, &
                                HEX_ERR_NEGVOL => ELEM_ERR_NEGVOL, &
                                HEX_ERR_MATERIAL => ELEM_ERR_MATERIAL
-   use dx_solid_kernels, only: cube_roots
+   use dx_solid_kernels, only: cube_roots, hex8_mass_share   ! (the latter public here too)
    use dx_hex8_geometry, only: hex8_bvectors, hex8_bvectors_chunk, hex8_char_length, &
                                GAMMA_HG, shape_derivs, point_gradients, point_gradients_one
    implicit none
@@ -331,41 +331,44 @@ contains
                coef(i) = coef(i) + bx(i, a)**2 + by(i, a)**2 + bz(i, a)**2
             end do
             coef(i) = m*coef(i)/vol(i)*dt
+            e(i) = 0.0_wp
          end do
-      else
-         do i = 1, n
-            ! a_h = QH rho c V**(2/3)/4, lcb = V**(1/3)
-            coef(i) = 0.25_wp*part%qh*(mat%ro/rv(i))*c(i)*lcb(i)*lcb(i)
-         end do
-      end if
-      e(1:n) = 0.0_wp
-      do k = 1, 4
-         ! the resisting forces of mode k: es columns h, h+1, h+2 (x, y, z)
-         h = blk%esc(ES_HGS) + 3*(k - 1)
-         do i = 1, n
-            if (part%ihq >= 4) then
-               ! stiffness: corotate the stored resisting forces, add the stiffness
-               ! increment; the trapezoid of the old and new force is the spring energy
+         do k = 1, 4
+            ! the resisting forces of mode k: es columns h, h+1, h+2 (x, y, z)
+            h = blk%esc(ES_HGS) + 3*(k - 1)
+            do i = 1, n
+               ! corotate the stored resisting forces, then add the stiffness increment; the
+               ! energy is the trapezoid of the old and new force (exact spring energy)
                kx = blk%es(i, h) + w12(i)*blk%es(i, h + 1) - w31(i)*blk%es(i, h + 2)
                ky = blk%es(i, h + 1) - w12(i)*blk%es(i, h) + w23(i)*blk%es(i, h + 2)
                kz = blk%es(i, h + 2) + w31(i)*blk%es(i, h) - w23(i)*blk%es(i, h + 1)
                hx(i, k) = kx + coef(i)*qx(i, k)
                hy(i, k) = ky + coef(i)*qy(i, k)
                hz(i, k) = kz + coef(i)*qz(i, k)
-            else
-               ! viscous: the trapezoid of the last pass's force (as applied, not turned)
-               ! and this one's, the centred work of the force (hourglass_gamma_viscous)
-               kx = blk%es(i, h); ky = blk%es(i, h + 1); kz = blk%es(i, h + 2)
+               blk%es(i, h) = hx(i, k); blk%es(i, h + 1) = hy(i, k)
+               blk%es(i, h + 2) = hz(i, k)
+               e(i) = e(i) + 0.5_wp*dt*((kx + hx(i, k))*qx(i, k) + (ky + hy(i, k))*qy(i, k) &
+                      + (kz + hz(i, k))*qz(i, k))
+            end do
+         end do
+      else
+         do i = 1, n
+            ! a_h = QH rho c V**(2/3)/4, lcb = V**(1/3)
+            coef(i) = 0.25_wp*part%qh*(mat%ro/rv(i))*c(i)*lcb(i)*lcb(i)
+            e(i) = 0.0_wp
+         end do
+         h = blk%esc(ES_HGS)
+         do k = 1, 4
+            do i = 1, n
                hx(i, k) = coef(i)*qx(i, k)
                hy(i, k) = coef(i)*qy(i, k)
                hz(i, k) = coef(i)*qz(i, k)
-            end if
-            blk%es(i, h) = hx(i, k); blk%es(i, h + 1) = hy(i, k)
-            blk%es(i, h + 2) = hz(i, k)
-            e(i) = e(i) + 0.5_wp*dt*((kx + hx(i, k))*qx(i, k) + (ky + hy(i, k))*qy(i, k) &
-                   + (kz + hz(i, k))*qz(i, k))
+            end do
          end do
-      end do
+         ! the trapezoid of the last pass's force (as applied, not turned) and this one's,
+         ! the centred work of the force (hourglass_gamma_viscous)
+         call hg_trapezoid(n, dt, blk%es(:, h:h + 11), hx, hy, hz, qx, qy, qz, e)
+      end if
       dehg = 0.0_wp
       do i = 1, n
          e(i) = e(i)*alive(i)
@@ -382,6 +385,23 @@ contains
          end do
       end do
    end subroutine hourglass
+
+   !> e += dt/2 (Q(n-1) + Q(n)).qdot over the 4 modes, Q(n-1) the forces fo (columns x, y, z
+   !> of each mode), which then become Q(n) = (hx, hy, hz).
+   pure subroutine hg_trapezoid(n, dt, fo, hx, hy, hz, qx, qy, qz, e)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: dt
+      real(wp), intent(inout) :: fo(:, :), e(:)
+      real(wp), dimension(:, :), intent(in) :: hx, hy, hz, qx, qy, qz
+      integer :: i, k
+      do k = 1, 4
+         do i = 1, n
+            e(i) = e(i) + 0.5_wp*dt*((fo(i, 3*k - 2) + hx(i, k))*qx(i, k) &
+                   + (fo(i, 3*k - 1) + hy(i, k))*qy(i, k) + (fo(i, 3*k) + hz(i, k))*qz(i, k))
+            fo(i, 3*k - 2) = hx(i, k); fo(i, 3*k - 1) = hy(i, k); fo(i, 3*k) = hz(i, k)
+         end do
+      end do
+   end subroutine hg_trapezoid
 
    !> IHQ 1: f_iI += a_h qdot_ia Gamma_aI with qdot_ia = Gamma_aJ v_iJ, Gamma the +-1 base
    !> vectors (Kosloff & Frasier 1978; DYNA3D), a_h = QH rho c V**(2/3)/4. Energy: dt/2
@@ -535,35 +555,6 @@ contains
          if (blk%failed(i)) alive(i) = 0.0_wp
       end do
    end subroutine centred_work_block
-
-   !> After the lumped masses are known: the element's own share of its nodes' mass,
-   !> phim = (1/8) sum_I (rho V0/8)/m_I (1 for a free element, 1/2 inside a one-element-wide
-   !> bar, 1/8 inside a mesh); a node with a constrained translation (SPC, prescribed motion:
-   !> the list cnodes) counts as restrained (share 0). Allocated only for a block that has an
-   !> element with phim >= 1/2, the only case stable_time_step uses it.
-   subroutine hex8_mass_share(blk, rho, mass, cnodes)
-      type(elem_block_t), intent(inout) :: blk
-      real(wp), intent(in) :: rho, mass(:)
-      integer, intent(in) :: cnodes(:)
-      real(wp) :: phi(blk%nel)
-      logical :: free(size(mass))
-      integer :: i, k, nd
-      free = .true.
-      free(cnodes) = .false.
-      do i = 1, blk%nel
-         phi(i) = 0.0_wp
-         do k = 1, 8
-            nd = blk%conn(k, i)
-            if (free(nd) .and. mass(nd) > 0.0_wp) &
-               phi(i) = phi(i) + rho*blk%vol0(i)/(64.0_wp*mass(nd))
-         end do
-      end do
-      call blk%es_drop(ES_PHIM)
-      if (any(phi >= 0.5_wp)) then
-         call blk%es_add(ES_PHIM, 1)
-         blk%es(:, blk%esc(ES_PHIM)) = phi
-      end if
-   end subroutine hex8_mass_share
 
    !> Characteristic length lc of each element at t(n), the one length of its time step and
    !> its bulk viscosity: L = V/A_max (LS-DYNA's time-step length of a solid; a face area by

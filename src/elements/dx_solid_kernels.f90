@@ -1,4 +1,5 @@
 !> Kernels shared by the solid families (dx_hex8, dx_tet4), per element or per block:
+!> - hex8_mass_share: the set-up of dx_hex8's own-mass element bound (phim, ES_PHIM);
 !> - cube_roots: V**(1/3) from exactly rounded operations only (the same bits in every SIMD
 !>   lane): the cbrt start of FreeBSD's s_cbrt.c, Halley's iteration (Traub 1964, Iterative
 !>   Methods for the Solution of Equations, sec. 8.4) and one Newton step;
@@ -9,9 +10,10 @@
 module dx_solid_kernels
    use, intrinsic :: iso_fortran_env, only: int64
    use dx_kinds, only: wp
+   use dx_element_types, only: elem_block_t, ES_PHIM
    implicit none
    private
-   public :: cube_roots
+   public :: cube_roots, hex8_mass_share
 
 contains
 
@@ -47,5 +49,34 @@ contains
          l(i) = merge(r, 0.0_wp, x(i) > 0.0_wp)
       end do
    end subroutine cube_roots
+
+   !> After the lumped masses are known: the element's own share of its nodes' mass,
+   !> phim = (1/8) sum_I (rho V0/8)/m_I (1 for a free element, 1/2 inside a one-element-wide
+   !> bar, 1/8 inside a mesh); a node with a constrained translation (SPC, prescribed motion:
+   !> the list cnodes) counts as restrained (share 0). Allocated only for a block that has an
+   !> element with phim >= 1/2, the only case stable_time_step uses it.
+   subroutine hex8_mass_share(blk, rho, mass, cnodes)
+      type(elem_block_t), intent(inout) :: blk
+      real(wp), intent(in) :: rho, mass(:)
+      integer, intent(in) :: cnodes(:)
+      real(wp) :: phi(blk%nel)
+      logical :: free(size(mass))
+      integer :: i, k, nd
+      free = .true.
+      free(cnodes) = .false.
+      do i = 1, blk%nel
+         phi(i) = 0.0_wp
+         do k = 1, 8
+            nd = blk%conn(k, i)
+            if (free(nd) .and. mass(nd) > 0.0_wp) &
+               phi(i) = phi(i) + rho*blk%vol0(i)/(64.0_wp*mass(nd))
+         end do
+      end do
+      call blk%es_drop(ES_PHIM)
+      if (any(phi >= 0.5_wp)) then
+         call blk%es_add(ES_PHIM, 1)
+         blk%es(:, blk%esc(ES_PHIM)) = phi
+      end if
+   end subroutine hex8_mass_share
 
 end module dx_solid_kernels
