@@ -78,6 +78,7 @@ contains
             line = adjustl(line)
             if (len_trim(line) == 0) exit
             sz = index(line, ' ') - 1
+            if (sz < 0) sz = len_trim(line)     ! a word that fills the whole line
             w = trim(lower(line(1:sz)))
             line(1:sz) = ' '
             b = 0

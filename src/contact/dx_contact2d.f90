@@ -98,7 +98,12 @@ contains
                   if (fs > 0.0_wp) then          ! Coulomb, regularised (module header)
                      vrel = v(1:2, s) - ((1.0_wp - xib)*v(1:2, a) + xib*v(1:2, b))
                      vt = dot_product(vrel, t)
-                     ft = -sign(min(fs*norm2(fn), 0.5_wp*mass(s)*abs(vt)/dt_old), vt)
+                     if (dt_old > 0.0_wp) then   ! (cycle 0: no step yet, the Coulomb bound)
+                        ft = -sign(min(fs*norm2(fn), 0.5_wp*mass(s)*abs(vt)/dt_old), vt)
+                     else
+                        ft = -sign(fs*norm2(fn), vt)
+                        if (vt == 0.0_wp) ft = 0.0_wp
+                     end if
                      fn = fn + ft*t
                   end if
                   ! the step the contact spring allows: 2/omega, omega**2 = 2 k (1/m_s +

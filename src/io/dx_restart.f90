@@ -125,6 +125,15 @@ contains
       if (allocated(model%rigid)) call rigid_dump(rs, model%rigid)
       if (allocated(model%contact)) call contact_dump(rs, model%contact)
       if (allocated(model%emc)) call emc_dump(rs, model%emc)
+      ! 2D contact (serial): last cycle's forces and velocities, its step, the work so far
+      if (allocated(model%contact2d)) then
+         if (allocated(model%contact2d%fold)) then
+            call rs%put('contact2d_fold', model%contact2d%fold)
+            call rs%put('contact2d_vold', model%contact2d%vold)
+            call rs%put('contact2d_dtold', model%contact2d%dtold)
+            call rs%put('contact2d_work', model%contact2d%work)
+         end if
+      end if
    end subroutine dump_components
 
    subroutine restore_components(rs, model)
@@ -145,6 +154,19 @@ contains
       if (allocated(model%rigid)) call rigid_restore(rs, model%rigid)
       if (allocated(model%contact)) call contact_restore(rs, model%contact)
       if (allocated(model%emc)) call emc_restore(rs, model%emc)
+      if (allocated(model%contact2d)) then
+         if (rs%has('contact2d_fold')) then    ! (a dump before the first contact pass: none)
+            associate (c => model%contact2d)
+               if (.not. allocated(c%fold)) allocate(c%fc(2, model%nn), c%fold(2, model%nn), &
+                                                     c%vold(2, model%nn))
+               c%fc = 0.0_wp
+               call rs%get('contact2d_fold', c%fold)
+               call rs%get('contact2d_vold', c%vold)
+               call rs%get('contact2d_dtold', c%dtold)
+               call rs%get('contact2d_work', c%work)
+            end associate
+         end if
+      end if
    end subroutine restore_components
 
    ! ------------------------------------------------------------- loop state
