@@ -104,7 +104,7 @@ contains
          nops = nops + 1
          workd(ipntr(2):ipntr(2) + n - 1) = tmp
       end do
-      if (info < 0 .or. (info == 1 .and. iparam(5) < nev)) then
+      if (info /= 0 .and. .not. (info == 1 .and. iparam(5) >= nev)) then   ! (1: max restarts)
          call set_error(error, 'eigenvalues: the Lanczos iteration (ARPACK dsaupd) failed: '// &
             'info '//str(info)//', '//str(iparam(5))//' of '//str(nev)//' modes converged '// &
             'in '//str(iparam(3))//' restarts', EXIT_NUMERIC)

@@ -185,27 +185,30 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: u, i, ios
       real(wp) :: w, f, p
+      logical :: bad
       open(newunit=u, file=outdir//'/eigout.tmp', status='replace', action='write', &
            iostat=ios)
       if (ios /= 0) then
          call set_error(error, 'cannot write '//outdir//'/eigout.tmp', EXIT_IO); return
       end if
-      write(u, '(a)') ' dynx eigenvalue analysis: shift-invert Lanczos (ARPACK, MUMPS), '// &
-         'lumped mass, shift sigma = '//rstr(sigma, 9)
-      write(u, '(a)') ''
-      write(u, '(a)') ' results of eigenvalue analysis:'
-      write(u, '(a)') ' (frequencies are calculated only for positive eigenvalues.)'
-      write(u, '(a)') ''
-      write(u, '(a)') '    MODE     EIGENVALUE         RADIANS          CYCLES          PERIOD'
+      bad = .false.
+      write(u, '(a)', iostat=ios) ' dynx eigenvalue analysis: shift-invert Lanczos (ARPACK, '// &
+         'MUMPS), lumped mass, shift sigma = '//rstr(sigma, 9)
+      bad = bad .or. ios /= 0
+      write(u, '(a/a/a/a/a)', iostat=ios) '', ' results of eigenvalue analysis:', &
+         ' (frequencies are calculated only for positive eigenvalues.)', '', &
+         '    MODE     EIGENVALUE         RADIANS          CYCLES          PERIOD'
+      bad = bad .or. ios /= 0
       do i = 1, size(lam)
          w = 0.0_wp; f = 0.0_wp; p = 0.0_wp
          if (lam(i) > 0.0_wp) then
             w = sqrt(lam(i)); f = w/TWO_PI; p = 1.0_wp/f
          end if
          write(u, '(i8,4es16.8)', iostat=ios) i, lam(i), w, f, p
+         bad = bad .or. ios /= 0
       end do
       close(u, iostat=ios)
-      if (ios /= 0) then
+      if (bad .or. ios /= 0) then   ! (a failed write never replaces a good eigout)
          call set_error(error, 'cannot write '//outdir//'/eigout.tmp', EXIT_IO); return
       end if
       call sys_rename(outdir//'/eigout.tmp', outdir//'/eigout', error)

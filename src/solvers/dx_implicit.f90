@@ -275,6 +275,7 @@ contains
       integer :: it, ls
       character(:), allocatable :: hist
       character(160) :: line
+      character(:), allocatable :: ctxt
       ok = .false.
       nit = 0
       associate (sys => self%sys, imp => model%ctrl%imp)
@@ -337,10 +338,11 @@ contains
             write(line, '(a,i3,a,es10.3,a,es10.3,a,es10.3,a,f6.3)') '    iteration', it, &
                ': residual ratio ', rn/max(r0, tiny(1.0_wp)), ', displacement ratio ', dn, &
                ', energy ratio ', en, ', eta ', eta
-            if (sys%has_contact) write(line(len_trim(line) + 1:), '(a,i0,a,i0,a)') &
-               ', contact nodes ', sys%con%nactive, ' (', sys%con%nchanged, ' changed)'
-            call log_info(trim(line))
-            hist = hist//new_line('a')//trim(line)
+            ctxt = ''
+            if (sys%has_contact) ctxt = ', contact nodes '//str(sys%con%nactive)//' ('// &
+                                        str(sys%con%nchanged)//' changed)'
+            call log_info(trim(line)//ctxt)
+            hist = hist//new_line('a')//trim(line)//ctxt
             self%niter = self%niter + 1
             if ((dn <= imp%dctol .and. en <= imp%ectol .and. rn/max(r0, tiny(1.0_wp)) <= &
                  imp%rctol) .or. rn <= imp%abstol) then
