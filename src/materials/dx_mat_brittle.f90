@@ -158,6 +158,7 @@ contains
          'SIGR', 'D1', 'SIGT', 'LAMBDA', 'D2', 'CG', 'KF', 'PHEL', 'LC', '', 'T', '', '', 'EFMIN', ''], &
          [3, 5])
       integer :: k
+      logical :: unused
       call check_elastic_constants(self, self%e, self%pr, error)
       if (allocated(error)) return
       if (.not. (self%sigy > 0.0_wp)) then
@@ -189,9 +190,22 @@ contains
          call set_field_error(error, 'PFMIN', 'the failed material''s tension cut-off must '// &
                               'be <= 0, got '//rstr(self%pfmin)); return
       end if
-      ! model parameters: thresholds >= 0, rates and scales > 0
-      do k = 1, 5
-         if (len_trim(names(self%model, k)) == 0) cycle
+      ! model parameters: thresholds >= 0, rates and scales > 0; a field the model does not
+      ! use must stay blank or 0 (never silently ignored)
+      do k = 1, 8
+         if (k > 5) then
+            unused = .true.
+         else
+            unused = len_trim(names(self%model, k)) == 0
+         end if
+         if (unused) then
+            if (self%p(k) /= 0.0_wp) then
+               call set_field_error(error, 'P'//str(k), 'MODEL '//str(self%model)// &
+                  ' does not use P'//str(k)//' (leave it blank or 0), got '//rstr(self%p(k)))
+               return
+            end if
+            cycle
+         end if
          if (.not. (self%p(k) >= 0.0_wp)) then
             call set_field_error(error, 'P'//str(k), trim(names(self%model, k))// &
                                  ' must be >= 0, got '//rstr(self%p(k))); return
