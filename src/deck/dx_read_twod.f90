@@ -133,6 +133,10 @@ contains
          read(u, '(a)', iostat=ios) line
          if (ios /= 0) exit
          nl = nl + 1
+         if (len_trim(line) == len(line)) then
+            msg = fname//':'//str(nl)//': line longer than '//str(len(line))//' characters'
+            close(u); return
+         end if
          if (index(line, '#') > 0) line = line(1:index(line, '#') - 1)
          p0 = 1
          do                                   ! the numbers of the line, in order
@@ -146,8 +150,8 @@ contains
                p1 = p1 + 1
             end do
             read(line(p0:p1), *, iostat=ios) x
-            if (ios /= 0) then
-               msg = fname//':'//str(nl)//': "'//line(p0:p1)//'" is not a number'
+            if (ios /= 0 .or. .not. (abs(x) <= huge(x))) then
+               msg = fname//':'//str(nl)//': "'//line(p0:p1)//'" is not a finite number'
                close(u); return
             end if
             if (n == size(v)) then
