@@ -208,6 +208,7 @@ contains
       do k = 1, 6
          blk%sig(1:n, k, 1) = so(1:n, k)
       end do
+      if (mat%hv_frame) call mat%rotate_history(n, w12, w23, w31, blk%hv(:, :, 1))
       call mat%update(n, dt_old, deps, rv, ein, blk%sig(:, :, 1), blk%hv(:, :, 1), ierr)
       call mat%fails(n, blk%hv(:, :, 1), failed)
       call erosion_one_point(blk, part, n, rv, dt_old, failed)   ! *MAT_ADD_EROSION
@@ -722,6 +723,7 @@ contains
             w31(i) = 0.5_wp*(l(3, 1) - l(1, 3))*dtl
          end do
          call jaumann(n, n, w12, w23, w31, blk%sig(:, :, ip))
+         if (mat%hv_frame) call mat%rotate_history(n, w12, w23, w31, blk%hv(:, :, ip))
          sold(1:n, :) = blk%sig(1:n, :, ip)
          call mat%update(n, dt_old, deps, rv, ein, blk%sig(:, :, ip), blk%hv(:, :, ip), ierr)
          call mat%fails(n, blk%hv(:, :, ip), failed)

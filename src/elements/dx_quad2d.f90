@@ -113,7 +113,7 @@ contains
       real(wp), intent(inout) :: f(:, :)
       type(block_result_t), intent(out) :: res
       real(wp), dimension(nv_chunk, 4) :: xe, ye, vx, vy, xm, ym, bx, by, fx, fy, g, bxm, bym
-      real(wp), dimension(nv_chunk) :: ar, arm, vol, volm, rb, rbm, rv, c, q, trd, w12, ein
+      real(wp), dimension(nv_chunk) :: ar, arm, vol, volm, rb, rbm, rv, c, q, trd, w12, ein, rb0
       real(wp), dimension(nv_chunk) :: alive, bv, bvm, vold, lc, wo, wn
       real(wp), dimension(nv_chunk) :: vr, vz, dh
       real(wp) :: de6(nv_chunk, 6), so(nv_chunk, 6), sn(nv_chunk, 6)
@@ -237,6 +237,10 @@ contains
       do k = 1, 6
          blk%sig(1:n, k, 1) = so(1:n, k)
       end do
+      if (mat%hv_frame) then   ! directions in the material's history turn with w_xy
+         rb0(1:n) = 0.0_wp
+         call mat%rotate_history(n, w12, rb0, rb0, blk%hv(:, :, 1))
+      end if
       if (pss) then      ! plane stress: the lamina update, sigma_zz = 0 (engineering shear)
          do i = 1, n
             de5(i, 1) = deps(i, 1); de5(i, 2) = deps(i, 2); de5(i, 3) = 2.0_wp*deps(i, 4)

@@ -160,6 +160,7 @@ contains
       do k = 1, 6
          blk%sig(1:n, k, 1) = so(1:n, k)
       end do
+      if (mat%hv_frame) call mat%rotate_history(n, w12, w23, w31, blk%hv(:, :, 1))
       call mat%update(n, dt_old, deps, rv, ein, blk%sig(:, :, 1), blk%hv(:, :, 1), ierr)
       call mat%fails(n, blk%hv(:, :, 1), failed)
       call erosion_one_point(blk, part, n, rv, dt_old, failed)   ! *MAT_ADD_EROSION

@@ -20,9 +20,13 @@
 !>     on the open set with ev_kk + dev_k >= 0 (a crack whose void strain would go negative
 !>     closes: dev_k = -ev_kk, and it carries compression); the face shears of an open crack
 !>     are released into the shear void strain (dev_kj = sigma'_kj/(2G), sigma'_kj = 0).
-!> The triad is fixed in space after it forms (the update receives no spin; the element's
-!> Jaumann rotation of sigma is the only rotation): adequate for the small rotations of the
-!> impact scenes, noted in docs/damage.md. D for the plot = max(Dc, cracks opened/3).
+!> The triad is fixed in the material after it forms: before each update the element hands the
+!> spin increments W dt of its Jaumann rotation of sigma (rotate_history, hv_frame), and the
+!> triad turns by the Hughes-Winget rotation R = (I - W dt/2)**-1 (I + W dt/2) (Hughes &
+!> Winget 1980, IJNME 15:1862), orthogonal to round-off, so the triad stays orthonormal; with
+!> the mid-step spin of the central-difference element it is the exact rotation of a rigid
+!> turn (W dt = 2 tan(theta/2) about the axis). The void strain is held in the triad frame and
+!> turns with it. D for the plot = max(Dc, cracks opened/3).
 !> Cards: MID RO E PR FT; SIGC YCF EPSC.
 !> History: 1-3 crack k opened (0/1), 4-12 triad (columns e1 e2 e3; 0 before the first crack),
 !> 13-18 void strain in the triad frame (11 22 33 12 23 31, tensor components), 19 eps_p,
@@ -50,6 +54,7 @@ module dx_mat_crack
       procedure :: setup => ck_setup
       procedure :: nhist => ck_nhist
       procedure :: update => ck_update
+      procedure :: rotate_history => ck_rotate_history
    end type mat_crack_t
 
 contains
@@ -89,7 +94,34 @@ contains
       end if
       self%hv_eps_p = 19
       self%hv_damage = 21
+      self%hv_frame = .true.
    end subroutine ck_setup
+
+   !> Turn the fracture triad (history 4-12) of points 1..n with the material by the
+   !> Hughes-Winget rotation of the spin increments (module header): with A = W dt/2 and its
+   !> axial vector a, R = I + 2/(1 + a.a) (A + A A) (the Cayley transform in closed form).
+   subroutine ck_rotate_history(self, n, w12, w23, w31, hv)
+      class(mat_crack_t), intent(in) :: self
+      integer, intent(in) :: n
+      real(wp), intent(in) :: w12(:), w23(:), w31(:)
+      real(wp), intent(inout) :: hv(:, :)
+      real(wp) :: a(3, 3), r(3, 3), q(3, 3)
+      integer :: i, k
+      do i = 1, n
+         if (all(hv(i, 4:12) == 0.0_wp)) cycle
+         a = 0.0_wp
+         a(1, 2) = 0.5_wp*w12(i); a(2, 1) = -a(1, 2)
+         a(2, 3) = 0.5_wp*w23(i); a(3, 2) = -a(2, 3)
+         a(3, 1) = 0.5_wp*w31(i); a(1, 3) = -a(3, 1)
+         r = 2.0_wp/(1.0_wp + a(1, 2)**2 + a(2, 3)**2 + a(3, 1)**2)*(a + matmul(a, a))
+         do k = 1, 3
+            r(k, k) = r(k, k) + 1.0_wp
+         end do
+         q = reshape(hv(i, 4:12), [3, 3])
+         hv(i, 4:12) = reshape(matmul(r, q), [9])
+      end do
+      if (.false.) hv(1, 1) = self%e
+   end subroutine ck_rotate_history
 
    pure integer function ck_nhist(self)
       class(mat_crack_t), intent(in) :: self

@@ -46,6 +46,9 @@ module dx_material
       !> history offset of the model's damage variable D in [0, 1] (0: none); the plot's damage
       !> row shows it (dx_plot_hdf5), else the Tuler-Butcher D of *MAT_ADD_EROSION
       integer :: hv_damage = 0
+      !> the history holds directions fixed in the material (the crack model's fracture triad):
+      !> the element calls rotate_history with the spin increments before each update
+      logical :: hv_frame = .false.
       logical :: is_rigid = .false.
       integer :: ps_alg = 1            !< plane-stress algorithm (MITER: 1 secant3, 2 full, 3 radial, 4 one-step)
       class(eos_t), allocatable :: eos !< equation of state from the part's EOSID (hydro models)
@@ -64,6 +67,7 @@ module dx_material
       procedure :: eos_ready => default_eos_ready    !< derive data from the attached EOS
       procedure :: tangent => fd_tangent             !< consistent tangent of one update
       procedure :: update_plane_stress => default_update_plane_stress !< lamina update, sigma33 = 0
+      procedure :: rotate_history => default_rotate_history !< turn material directions (hv_frame)
    end type material_t
 
    !> A holder so models can keep an array of polymorphic materials.
@@ -272,6 +276,17 @@ contains
       default_erodes = .false.
       if (.false.) default_erodes = self%label < 0
    end function default_erodes
+
+   !> Turn the directions a model keeps in its history with the material, by the spin
+   !> increments (w12, w23, w31) = W dt of the element's Jaumann rotation of the stress, for the
+   !> points 1..n (called only when hv_frame is set; default: nothing to turn).
+   subroutine default_rotate_history(self, n, w12, w23, w31, hv)
+      class(material_t), intent(in) :: self
+      integer, intent(in) :: n
+      real(wp), intent(in) :: w12(:), w23(:), w31(:)
+      real(wp), intent(inout) :: hv(:, :)
+      if (.false.) hv(1, 1) = w12(n) + w23(n) + w31(n) + self%ro
+   end subroutine default_rotate_history
 
    !> Materials that reference *DEFINE_CURVE ids copy the curves here (default: none).
    subroutine default_resolve(self, curves, error)
