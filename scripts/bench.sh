@@ -1,8 +1,12 @@
 #!/bin/sh
 # make bench: ns per element-cycle and peak memory per element of the explicit hex8 kernel on
 # an elastic-plastic cube of growing size (1e3 .. 1e6 elements), and the 10,368-element
-# copper Taylor bar of the performance target; the 22**3 cube again with *MAT_NULL + *EOS_GRUNEISEN
-# and with *MAT_STEINBERG + *EOS_GRUNEISEN (issue 18). Appends a dated table to docs/performance.md.
+# copper Taylor bar of the performance target; the 22**3 cube again with *MAT_NULL + *EOS_GRUNEISEN,
+# with *MAT_STEINBERG + *EOS_GRUNEISEN, and with the brittle models *DYNX_BRITTLE_DAMAGE MODEL 1-3
+# and *DYNX_BRITTLE_CRACK (fused silica of scripts/gen_brittle_deck.py: the 50 m/s impact on the
+# wall loads it past the tensile strength, so the damage paths run) (issue 18).
+# BENCH_ONLY=hirate runs only the 22**3 cube rows (piecewise-linear and issue 18's models).
+# Appends a dated table to docs/performance.md.
 set -e
 cd "$(dirname "$0")/.."
 B=build/bench
@@ -26,7 +30,8 @@ run_case() {   # name deck elements
     echo "| $1 | $3 | $cyc | $wall | $ns | $kib | $bpe |" >> $B/table.md
     echo "bench: $1: $ns ns/element-cycle, $bpe bytes/element"
 }
-for n in 10 22 46 100; do
+sizes="10 22 46 100"; [ "${BENCH_ONLY:-}" = hirate ] && sizes=22
+for n in $sizes; do
     ne=$((n*n*n))
     cyc=$((20000000 / ne)); [ $cyc -lt 50 ] && cyc=50; [ $cyc -gt 2000 ] && cyc=2000
     python3 scripts/gen_cube_deck.py $n $cyc $B/cube_$n.k
@@ -36,10 +41,17 @@ done
 # *MAT_NULL + *EOS_GRUNEISEN and *MAT_STEINBERG + *EOS_GRUNEISEN (copper constants)
 hydro_deck() {   # in out kind
     python3 - "$1" "$2" "$3" <<'PYEOF'
-import sys
+import argparse, sys
+sys.path.insert(0, 'scripts')
 src, out, kind = sys.argv[1:]
 s = open(src).read()
 i, j = s.index('*PART'), s.index('*NODE')
+if kind in ('tb', 'jh2', 'growth', 'crack'):
+    from gen_brittle_deck import block_material
+    mat = block_material(argparse.Namespace(model=kind, erod=0, fluid=False, ft=0.5))
+    open(out, 'w').write(s[:i] + '*PART\ncube\n         1         1         1\n'
+                         '*SECTION_SOLID\n         1         1\n' + mat + s[j:])
+    sys.exit(0)
 eos = ('*EOS_GRUNEISEN\n         1    3940.0     1.489       0.0       0.0      2.02      0.47'
        '       0.0\n       1.0                   0\n')
 mat = {'null': '*MAT_NULL\n         1    7.8E-6    -1.0E3       0.0\n',
@@ -55,7 +67,11 @@ hydro_deck $B/cube_22.k $B/null_gruneisen_22.k null
 run_case null_gruneisen_$ne $B/null_gruneisen_22.k $ne
 hydro_deck $B/cube_22.k $B/steinberg_22.k steinberg
 run_case steinberg_$ne $B/steinberg_22.k $ne
-if [ -f ../shared/bench/gen_taylor.py ]; then
+for kind in tb jh2 growth crack; do
+    hydro_deck $B/cube_22.k $B/brittle_${kind}_22.k $kind
+    run_case brittle_${kind}_$ne $B/brittle_${kind}_22.k $ne
+done
+if [ -f ../shared/bench/gen_taylor.py ] && [ "${BENCH_ONLY:-}" != hirate ]; then
     python3 ../shared/bench/gen_taylor.py 8 4 54 0.080 $B/taylor_10k.k > /dev/null
     run_case taylor_10k $B/taylor_10k.k 10368
 fi

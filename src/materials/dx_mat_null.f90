@@ -9,6 +9,9 @@
 !> E* = E0 + eint (eint, the element's energy per reference volume at t(n), already holds the
 !> deviatoric and bulk-viscosity work up to t(n); the viscous work of this step enters at the next
 !> one, a half-step lag as in DYNA3D).
+!> A point compressed past the range of the EOS (eos%in_range: past the first pole of a
+!> Gruneisen fit) gets ierr = 2, and the run stops with exit 3 naming the element, as for
+!> *MAT_010, 011 and 015 (before, *MAT_NULL went on with the pressure of the fit beyond its pole).
 !> History: 1 = relative volume at the last update (0: the reference state), 2 = pressure,
 !> 3 = sound speed squared, 4 = internal energy per reference volume E(n+1).
 module dx_mat_null
@@ -96,6 +99,7 @@ contains
                                         hv(i, 2), e1, p1)
             p1 = max(p1, self%pc)
             hv(i, 3) = self%eos%sound_speed2(self%ro, relvol(i), e1)
+            if (.not. self%eos%in_range(relvol(i))) ierr(i) = 2   ! compressed past the EOS's range
          else
             e1 = eint(i)
             p1 = 0.0_wp

@@ -3,7 +3,9 @@
 !> Et = 2 GPa: sigma(0.01) = 267.5 MPa in one step, within 1e-10 relative).
 !> The finite-difference tangent (material_t%tangent) against the analytic elastic tangent and
 !> the analytic consistent tangent of the radial return of *MAT_PLASTIC_KINEMATIC (Simo &
-!> Taylor 1985), *EOS_LINEAR_POLYNOMIAL / *MAT_NULL against hand-calculated pressures, and
+!> Taylor 1985), *EOS_LINEAR_POLYNOMIAL / *MAT_NULL against hand-calculated pressures (with the
+!> PC cut-off, the MU viscosity s = 2 MU deps'/dt, and the flag of a point compressed past a
+!> Gruneisen pole), and
 !> *EOS_GRUNEISEN against the Rankine-Hugoniot state p = rho0 Us up of its Us-up fit.
 program test_materials
    use dx_kinds, only: wp
@@ -285,6 +287,36 @@ contains
       rv = 1.01_wp
       call mn%update(1, 1.0e-6_wp, -d, rv, ei, s, hh, ie)
       call check_close(-s(1, 1), -1.0_wp, 0.0_wp, 0.0_wp, 'mat9 tension cut off at PC')
+      ! viscosity MU: s = 2 MU e' with e' the deviatoric strain rate deps'/dt (a shear and an
+      ! isochoric stretch at V = 1, so p = 0): s_xy = 2 MU deps_xy/dt, s_xx = 2 MU deps'_xx/dt
+      mn%pc = 0.0_wp; mn%mu = 1.0e-3_wp
+      s = 0.0_wp; hh = 0.0_wp
+      d(1, :) = [2.0e-4_wp, -1.0e-4_wp, -1.0e-4_wp, 3.0e-4_wp, 0.0_wp, 0.0_wp]
+      rv = 1.0_wp
+      call mn%update(1, 1.0e-6_wp, d, rv, ei, s, hh, ie)
+      call check_close(s(1, 4), 2.0_wp*1.0e-3_wp*3.0e-4_wp/1.0e-6_wp, 0.0_wp, &
+                       4.0_wp*epsilon(1.0_wp), 'mat9 viscous shear s_xy = 2 MU deps_xy/dt')
+      call check_close(s(1, 1), 2.0_wp*1.0e-3_wp*2.0e-4_wp/1.0e-6_wp, 0.0_wp, &
+                       4.0_wp*epsilon(1.0_wp), 'mat9 viscous deviator s_xx = 2 MU deps''_xx/dt')
+      call check(ie(1) == 0, 'mat9 linear EOS: in range')
+      ! compressed past the pole of a Gruneisen fit (S1 = 3: D = 1 - 2 mu = 0 at V = 2/3):
+      ! the point is flagged (ierr 2: the run stops with exit 3 naming the element), not
+      ! updated silently with the fit's pressure beyond the pole; just before it, in range
+      deallocate(mn%eos)
+      allocate(eos_gruneisen_t :: mn%eos)
+      select type (q => mn%eos)
+      type is (eos_gruneisen_t)
+         q%rho0 = 1.0e-9_wp; q%c = 1.0e3_wp; q%s1 = 3.0_wp; q%gamma0 = 2.0_wp
+      end select
+      mn%mu = 0.0_wp
+      s = 0.0_wp; hh = 0.0_wp; ie = 0
+      d = 0.0_wp
+      rv = 0.67_wp
+      call mn%update(1, 1.0e-6_wp, d, rv, ei, s, hh, ie)
+      call check(ie(1) == 0, 'mat9 Gruneisen S1 = 3 at V = 0.67 (before the pole 2/3): in range')
+      rv = 0.66_wp
+      call mn%update(1, 1.0e-6_wp, d, rv, ei, s, hh, ie)
+      call check(ie(1) == 2, 'mat9 Gruneisen S1 = 3 at V = 0.66 (past the pole 2/3): flagged')
    end subroutine null_checks
 
    subroutine step(m, de, dt, sig, hv)

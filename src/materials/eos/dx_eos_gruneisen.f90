@@ -21,7 +21,7 @@
 !> whose end point itself is excluded): S2 and S3 must not put a pole of p inside it. The
 !> range is dynx's choice (LS-DYNA checks nothing); Hugoniot data of metals end well inside it.
 !> At run time in_range is false past the first pole (D <= 0): the material models that use it
-!> (*MAT_010, 011, 015) flag the point, and the run stops with exit 3 naming the element.
+!> (*MAT_NULL, 010, 011, 015) flag the point, and the run stops with exit 3 naming the element.
 module dx_eos_gruneisen
    use dx_kinds, only: wp
    use dx_strings, only: str, rstr
