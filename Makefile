@@ -191,6 +191,7 @@ studies: deps
 	@sh scripts/studies_scenes.sh
 	@sh scripts/studies_lamina.sh
 	@sh scripts/studies_spall.sh
+	@sh scripts/studies_hirate.sh
 
 # each deck of tests/public/index.tsv: --check, a --walltime-capped run, a physics check
 public-decks: all
