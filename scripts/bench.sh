@@ -17,18 +17,21 @@ rev=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 echo ""
 echo "### make bench, $(date -u +%Y-%m-%d), commit $rev, $cpu"
 echo ""
-echo "| case | elements | cycles | wall [s] | ns / element-cycle | peak RSS [KiB] | bytes / element |"
-echo "|---|---|---|---|---|---|---|"
+echo "load average at the start: $(cut -d' ' -f1-3 /proc/loadavg); CPU ns: user time / (elements x cycles), the figure to compare on a loaded machine"
+echo ""
+echo "| case | elements | cycles | wall [s] | ns / element-cycle | CPU ns / element-cycle | peak RSS [KiB] | bytes / element |"
+echo "|---|---|---|---|---|---|---|---|"
 } > $B/table.md
 run_case() {   # name deck elements
-    bin/dynx -i "$2" -o $B/$1 --status 2 > $B/$1.log 2>&1 || { echo "bench: $1 failed"; tail $B/$1.log; exit 1; }
+    /usr/bin/time -f '%U' -o $B/$1.cpu bin/dynx -i "$2" -o $B/$1 --status 2 > $B/$1.log 2>&1 || { echo "bench: $1 failed"; tail $B/$1.log; exit 1; }
     ns=$(grep 'ns per element-cycle' $B/$1.log | sed 's/.*s, \([0-9.eE+-]*\) ns per.*/\1/')
     wall=$(grep 'ns per element-cycle' $B/$1.log | sed 's/.*wall time \([0-9.eE+-]*\) s.*/\1/')
     kib=$(grep 'ns per element-cycle' $B/$1.log | sed 's/.*peak memory \([0-9]*\) KiB.*/\1/')
     cyc=$(grep 'normal termination' $B/$1.log | sed 's/.*cycle \([0-9]*\),.*/\1/')
     bpe=$(python3 -c "print(round($kib*1024/$3))")
-    echo "| $1 | $3 | $cyc | $wall | $ns | $kib | $bpe |" >> $B/table.md
-    echo "bench: $1: $ns ns/element-cycle, $bpe bytes/element"
+    cns=$(python3 -c "print('%.3E' % ($(tail -1 $B/$1.cpu)*1e9/($3*$cyc)))")
+    echo "| $1 | $3 | $cyc | $wall | $ns | $cns | $kib | $bpe |" >> $B/table.md
+    echo "bench: $1: $ns ns/element-cycle (CPU $cns), $bpe bytes/element"
 }
 sizes="10 22 46 100"; [ "${BENCH_ONLY:-}" = hirate ] && sizes=22
 for n in $sizes; do

@@ -25,7 +25,9 @@
 !> end slope p V**2 beyond.
 !> Spall (SPALL, with PC < 0): 1 p >= PC; 2 (0 = default) the element spalls when the largest
 !> principal stress reaches -PC; 3 it spalls when p <= PC. A spalled point has no deviatoric
-!> stress and no tension (p >= 0) from then on. PC blank: -1e30 (no cut-off).
+!> stress and no tension (p >= 0) from then on. PC blank: -1e30 (no cut-off). With SPALL 2 or
+!> 3 the spalled flag is the damage variable D (0 or 1) of the plot states (hv_damage), so the
+!> spall plane shows as a fringe in ParaView; SPALL 1 (a cut-off, no spall state) has none.
 !> Stress update per step (hypoelastic, radial return; Wilkins 1964):
 !>   1. G and Y from p(n), T(n), E(n) (history) and V(n+1): the explicit one-step lag of the
 !>      pressure and temperature, as in DYNA3D;
@@ -189,6 +191,7 @@ contains
       self%cv = 3.0_wp*self%rp
       self%shear = self%g0
       self%hv_eps_p = 5
+      if (self%spall /= 1) self%hv_damage = 7   ! the spalled flag is the plot's D (0 or 1)
       self%ec_table = all(self%ec == 0.0_wp)
    end subroutine sg_setup
 

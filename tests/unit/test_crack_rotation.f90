@@ -1,6 +1,7 @@
 !> The crack model's fracture triad turns with the material (objective update; docs/damage.md):
 !> one *DYNX_BRITTLE_CRACK cube (fused silica, units mm, ms, GPa) through the hexahedron
-!> kernels (ELFORM 1 and 2) and the tetrahedron (a cube of 6 tets), driven by node positions
+!> kernels (ELFORM 1 and 2), the tetrahedron (a cube of 6 tets) and the plane-strain
+!> quadrilateral (ELFORM 13: the turn about z, the stretch along R y, b = z), driven by node positions
 !> step by step (velocities (x(n) - x(n-1))/dt, so the kernel's mid-step geometry is the
 !> chord midpoint). Path and assertions:
 !>  1. one step of uniaxial strain 2 % along x opens the first crack: e1 = +-x, sigma = 0 (the
@@ -24,7 +25,8 @@ program test_crack_rotation
    use dx_mat_crack, only: mat_crack_t
    use dx_hex8, only: hex8_block
    use dx_tet4, only: tet4_block
-   use dx_element_types, only: block_result_t
+   use dx_quad2d, only: quad2d_block
+   use dx_element_types, only: block_result_t, ETYPE_QUAD2D_PS
    use dx_assert, only: check, check_close, assert_summary
    implicit none
    real(wp), parameter :: pi = acos(-1.0_wp), dt = 1.0e-6_wp
@@ -50,9 +52,15 @@ program test_crack_rotation
    r = rotation(ax, 0.5_wp*pi)
    n = r(:, 1); t = r(:, 2); b = r(:, 3)
    tol = 1.0e-12_wp
-   do et = 1, 3
+   do et = 1, 4
       nm = merge('elform 1', 'elform 2', et == 1)
       if (et == 3) nm = 'tet4    '
+      if (et == 4) then        ! plane strain ELFORM 13: the in-plane turn about z
+         nm = 'quad 13 '
+         ax = [0.0_wp, 0.0_wp, 1.0_wp]
+         r = rotation(ax, 0.5_wp*pi)
+         n = r(:, 1); t = r(:, 2); b = r(:, 3)
+      end if
       call make_cube(et)
       nip = blk%nip
       ! 1. open the crack along x
@@ -146,6 +154,8 @@ contains
       f = 0.0_wp
       if (et == 3) then
          call tet4_block(blk, mat, part, x, v, dt, f, res)
+      else if (et == 4) then
+         call quad2d_block(blk, mat, part, x, v, dt, f, res)
       else
          call hex8_block(blk, mat, part, x, v, dt, f, res)
       end if
@@ -164,8 +174,9 @@ contains
       blk = elem_block_t()
       blk%nel = nel
       blk%etype = merge(10, elf, elf == 3)
+      if (elf == 4) blk%etype = ETYPE_QUAD2D_PS
       blk%nip = merge(8, 1, elf == 2)
-      allocate(blk%conn(merge(4, 8, elf == 3), nel), blk%elem(nel), blk%sig(nel, 6, blk%nip))
+      allocate(blk%conn(merge(4, 8, elf >= 3), nel), blk%elem(nel), blk%sig(nel, 6, blk%nip))
       allocate(blk%hv(nel, mat%nhist(), blk%nip))
       allocate(blk%vol0(nel), blk%relvol(nel), blk%eint(nel), blk%ehg(nel), blk%failed(nel))
       blk%sig = 0.0_wp; blk%hv = 0.0_wp; blk%eint = 0.0_wp; blk%ehg = 0.0_wp
@@ -174,6 +185,9 @@ contains
       if (elf == 3) then
          blk%conn = tets
          blk%vol0 = 1.0_wp/6.0_wp
+      else if (elf == 4) then  ! the face z = -1/2 of the cube, counter-clockwise (area 1)
+         blk%conn(:, 1) = [1, 2, 3, 4]
+         blk%vol0 = 1.0_wp
       else
          blk%conn(:, 1) = [(i, i = 1, 8)]
          blk%vol0 = 1.0_wp
@@ -181,8 +195,12 @@ contains
       part = part_t()
       part%ihq = 2; part%qh = 0.1_wp; part%q1 = 0.0_wp; part%q2 = 0.0_wp
       x = c8
+      if (elf == 4) then
+         x = c8(:, 1:4)
+         x(3, :) = 0.0_wp
+      end if
       if (allocated(f)) deallocate(f)
-      allocate(f(3, 8))
+      allocate(f(3, size(x, 2)))
       f = 0.0_wp
    end subroutine make_cube
 end program test_crack_rotation

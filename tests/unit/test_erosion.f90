@@ -4,7 +4,8 @@
 !> of a hydrostatic one (the triple root); von_mises of uniaxial and pure-shear stress
 !> (sqrt(3) tau); erosion_points: the Tuler-Butcher damage D accumulates
 !> max(0, sigma_1 - SIGTH)^2 dt / IMPULSE and the element fails on the step it reaches 1; a
-!> criterion equal to EXCL is off; NCS = 2 needs two criteria at once. Tolerances: a few
+!> criterion equal to EXCL is off; NCS = 2 needs two criteria at once; MXPRES, MNPRES and VOLEPS
+!> (expansion and compression) fail the point at their thresholds and not short of them. Tolerances: a few
 !> ulps of the entries (acos near its ends loses some bits: 64 ulps on the rotated case).
 program test_erosion
    use dx_kinds, only: wp
@@ -76,5 +77,51 @@ program test_erosion
    nf = 0
    call erosion_points(blk, e, 1, sig, rv, 0.1_wp, 1.0_wp, nf)
    call check(nf(1) == 1, 'NCS = 2: two criteria at once')
+   ! ---- MXPRES, MNPRES, VOLEPS one at a time (the others equal to EXCL): each fails the point
+   ! at its threshold and not short of it (p = -tr(sigma)/3; VOLEPS on ln V, tension when > 0)
+   e = erosion_t()
+   e%on = .true.; e%excl = -99.0_wp
+   e%mxpres = -99.0_wp; e%mnpres = -99.0_wp; e%sigp1 = -99.0_wp; e%sigvm = -99.0_wp
+   e%voleps = -99.0_wp; e%impulse = -99.0_wp; e%sigth = -99.0_wp; e%failtm = -99.0_wp
+   e%mneps = -99.0_wp; e%effeps = -99.0_wp; e%mxeps = -99.0_wp; e%epssh = -99.0_wp
+   sig(1, :) = [-2.0_wp, -2.0_wp, -2.0_wp, 0.0_wp, 0.0_wp, 0.0_wp]   ! p = 2
+   e%mxpres = 2.5_wp
+   nf = 0
+   call erosion_points(blk, e, 1, sig, rv, 0.1_wp, 1.0_wp, nf)
+   call check(nf(1) == 0, 'MXPRES 2.5: p = 2 does not fail')
+   e%mxpres = 1.5_wp
+   nf = 0
+   call erosion_points(blk, e, 1, sig, rv, 0.1_wp, 1.0_wp, nf)
+   call check(nf(1) == 1, 'MXPRES 1.5: p = 2 fails')
+   e%mxpres = -99.0_wp
+   sig(1, 1:3) = 2.0_wp                                                ! p = -2
+   e%mnpres = -2.5_wp
+   nf = 0
+   call erosion_points(blk, e, 1, sig, rv, 0.1_wp, 1.0_wp, nf)
+   call check(nf(1) == 0, 'MNPRES -2.5: p = -2 does not fail')
+   e%mnpres = -1.5_wp
+   nf = 0
+   call erosion_points(blk, e, 1, sig, rv, 0.1_wp, 1.0_wp, nf)
+   call check(nf(1) == 1, 'MNPRES -1.5: p = -2 fails')
+   e%mnpres = -99.0_wp
+   sig = 0.0_wp
+   rv = 1.2_wp                                                         ! ln V = 0.1823
+   e%voleps = 0.19_wp
+   nf = 0
+   call erosion_points(blk, e, 1, sig, rv, 0.1_wp, 1.0_wp, nf)
+   call check(nf(1) == 0, 'VOLEPS 0.19: ln V = 0.182 does not fail')
+   e%voleps = 0.18_wp
+   nf = 0
+   call erosion_points(blk, e, 1, sig, rv, 0.1_wp, 1.0_wp, nf)
+   call check(nf(1) == 1, 'VOLEPS 0.18: ln V = 0.182 fails (expansion)')
+   rv = 0.8_wp                                                         ! ln V = -0.2231
+   e%voleps = -0.25_wp
+   nf = 0
+   call erosion_points(blk, e, 1, sig, rv, 0.1_wp, 1.0_wp, nf)
+   call check(nf(1) == 0, 'VOLEPS -0.25: ln V = -0.223 does not fail')
+   e%voleps = -0.2_wp
+   nf = 0
+   call erosion_points(blk, e, 1, sig, rv, 0.1_wp, 1.0_wp, nf)
+   call check(nf(1) == 1, 'VOLEPS -0.2: ln V = -0.223 fails (compression)')
    call assert_summary()
 end program test_erosion

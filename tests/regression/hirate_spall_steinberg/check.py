@@ -14,7 +14,8 @@ no stored stress may exceed it. Checks:
     10 m/s (measured: plateau 198.3, minimum 170.5, then 193.5 m/s). The pull-back amplitude
     is not compared with PC: the acoustic estimate (rho0 c du/2 = 0.5-0.6 GPa for du = 28 m/s)
     sees the elastic front of the elastic-plastic release only, and is left to the spall
-    studies of the damage models."""
+    studies of the damage models;
+  - the plot's damage row (the spalled flag, 0 or 1) marks the spall plane near x = 4 mm."""
 import math
 import sys
 sys.path.insert(0, 'scripts')
@@ -46,4 +47,16 @@ print('free surface: plateau %.2f m/s at %.4g ms, minimum %.2f at %.4g ms, rise 
       % (plateau, u[k0][0], umin, u[kmin][0], rise))
 ok &= plateau - umin >= 10.0 and rise >= 10.0
 print('spall signal', 'PASS' if ok else 'FAIL')
+# the spalled flag is the plot's damage D (0 or 1, material_t%hv_damage): in the last state D
+# takes only those values, some elements spalled, all of them within 0.5 mm of x = 4 mm where
+# the release waves meet (elements numbered along x, h = 0.05 mm: element k spans
+# [(k-1) h, k h]; measured elements 78..84, x 3.85..4.20 mm)
+_, dmg = d.dataset(h5, d.state_path(len(times)) + '/damage')
+sp = [k for k in range(len(dmg)) if dmg[k] == 1.0]
+xc = [(k + 0.5) * 0.05 for k in sp]
+okd = all(x in (0.0, 1.0) for x in dmg) and len(sp) > 0 and all(abs(x - 4.0) <= 0.5 for x in xc)
+print('plot damage: %d spalled elements (%s), centroids %.3f .. %.3f mm: %s' % (
+    len(sp), ','.join(str(k + 1) for k in sp), min(xc or [0]), max(xc or [0]),
+    'PASS' if okd else 'FAIL'))
+ok &= okd
 sys.exit(0 if ok else 1)
