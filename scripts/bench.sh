@@ -51,7 +51,7 @@ s = open(src).read()
 i, j = s.index('*PART'), s.index('*NODE')
 if kind in ('tb', 'jh2', 'growth', 'crack'):
     from gen_brittle_deck import block_material
-    mat = block_material(argparse.Namespace(model=kind, erod=0, fluid=False, ft=0.5))
+    mat = block_material(argparse.Namespace(model=kind, erod=0, fluid=False, ft=0.5, sigy=6.0))
     open(out, 'w').write(s[:i] + '*PART\ncube\n         1         1         1\n'
                          '*SECTION_SOLID\n         1         1\n' + mat + s[j:])
     sys.exit(0)

@@ -206,12 +206,6 @@ contains
             end if
             if (p%ero%on .or. c%erode == 1) model%erodes = .true.
             if (model%mats(p%imat)%m%erodes()) model%erodes = .true.
-            if (strain_criteria(p%ero) .and. model%sections(p%isec)%elform == 2) then
-               call set_error(error, w//'part '//str(p%label)//': *MAT_ADD_EROSION of '// &
-                  'material '//str(p%mid)//': the strain criteria (MNEPS EFFEPS MXEPS EPSSH) '// &
-                  'on ELFORM 2 are not implemented (ELFORM 1 and 10 have them)')
-               return
-            end if
             if (model%sections(p%isec)%shell) then
                call shell_part(inp, model, p, w, error)
                if (allocated(error)) return

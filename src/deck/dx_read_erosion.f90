@@ -9,8 +9,8 @@
 !> ln(V/V0), positive in tension), FAILTM (time), SIGTH + IMPULSE (Tuler & Butcher 1968,
 !> Int. J. Fract. Mech. 4:431-437: integral of max(0, sigma_1 - SIGTH)^2 dt >= IMPULSE,
 !> LS-DYNA's exponent 2), MXEPS, MNEPS (largest and smallest principal strain), EFFEPS
-!> (effective strain), EPSSH (tensorial shear strain) of the total strain (ELFORM 1 and 10;
-!> ELFORM 2 is an error in the build). NUMFIP (failed points before the element erodes;
+!> (effective strain), EPSSH (tensorial shear strain) of the total strain (ELFORM 1, 2 and
+!> 10; ELFORM 2 from its element-mean strain). NUMFIP (failed points before the element erodes;
 !> one-point elements have one) and NCS (criteria met at once at a point before it fails).
 !> Card 3 onwards
 !> (IDAM, the GISSMO/DIEM damage cards) are not read: an error.

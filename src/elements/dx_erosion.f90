@@ -17,7 +17,8 @@
 !> 4:431-437, with the exponent lambda = 2 that LS-DYNA's *MAT_ADD_EROSION uses). A point
 !> fails when NCS criteria hold at once (Tuler-Butcher counts as one), an element when
 !> min(NUMFIP, points) of its points have failed.
-!> Strain criteria (parts that have one: the family-state slot ES_EPS, ELFORM 1 and 10): the
+!> Strain criteria (parts that have one: the family-state slot ES_EPS; ELFORM 1 and 10 per
+!> element, ELFORM 2 from the element-mean gradient, erosion_strain_mean): the
 !> total strain is the sum of the strain increments D dt turned with the material like the
 !> stress (Jaumann, first order; a logarithmic strain for rotation-free stretching): largest
 !> principal strain >= MXEPS, smallest <= MNEPS, effective strain sqrt(2/3 e':e') >= EFFEPS,
@@ -29,7 +30,8 @@ module dx_erosion
    use dx_element_types, only: elem_block_t, part_t, erosion_t, ES_DMG, ES_EPS
    implicit none
    private
-   public :: erosion_points, erosion_one_point, erosion_now, erosion_strain, largest_principal, &
+   public :: erosion_points, erosion_one_point, erosion_now, erosion_strain, erosion_strain_mean, &
+             largest_principal, &
              von_mises
 
 contains
@@ -166,6 +168,32 @@ contains
          blk%es(i, je:je + 5) = e + d + de(i, 1:6)
       end do
    end subroutine erosion_strain
+
+   !> The total strain of elements 1..n of the fully integrated hexahedron (ELFORM 2): the
+   !> element-mean strain increment and spin, (1/V) sum_I v_I (x) B_I dt with the mid-step B
+   !> vectors bx, by, bz and volume volm (the volume average of the points' velocity gradients:
+   !> the strain ELFORM 1 accumulates), added by erosion_strain.
+   subroutine erosion_strain_mean(blk, n, vx, vy, vz, bx, by, bz, volm, dt)
+      type(elem_block_t), intent(inout) :: blk
+      integer, intent(in) :: n
+      real(wp), intent(in) :: vx(:, :), vy(:, :), vz(:, :), bx(:, :), by(:, :), bz(:, :)
+      real(wp), intent(in) :: volm(:), dt
+      real(wp) :: de(n, 6), w12(n), w23(n), w31(n), l(3, 3), s
+      integer :: i
+      if (blk%esc(ES_EPS) == 0) return
+      do i = 1, n
+         s = dt/volm(i)
+         l(1, :) = [sum(vx(i, 1:8)*bx(i, 1:8)), sum(vx(i, 1:8)*by(i, 1:8)), sum(vx(i, 1:8)*bz(i, 1:8))]*s
+         l(2, :) = [sum(vy(i, 1:8)*bx(i, 1:8)), sum(vy(i, 1:8)*by(i, 1:8)), sum(vy(i, 1:8)*bz(i, 1:8))]*s
+         l(3, :) = [sum(vz(i, 1:8)*bx(i, 1:8)), sum(vz(i, 1:8)*by(i, 1:8)), sum(vz(i, 1:8)*bz(i, 1:8))]*s
+         de(i, :) = [l(1, 1), l(2, 2), l(3, 3), 0.5_wp*(l(1, 2) + l(2, 1)), &
+                     0.5_wp*(l(2, 3) + l(3, 2)), 0.5_wp*(l(3, 1) + l(1, 3))]
+         w12(i) = 0.5_wp*(l(1, 2) - l(2, 1))
+         w23(i) = 0.5_wp*(l(2, 3) - l(3, 2))
+         w31(i) = 0.5_wp*(l(3, 1) - l(1, 3))
+      end do
+      call erosion_strain(blk, n, de, w12, w23, w31)
+   end subroutine erosion_strain_mean
 
    !> The largest principal value of the symmetric tensor s (xx yy zz xy yz zx).
    pure real(wp) function largest_principal(s) result(s1)

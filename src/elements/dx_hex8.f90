@@ -24,7 +24,8 @@
 module dx_hex8
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_material, only: material_t
-   use dx_erosion, only: erosion_points, erosion_one_point, erosion_now, erosion_strain
+   use dx_erosion, only: erosion_points, erosion_one_point, erosion_now, erosion_strain, &
+                         erosion_strain_mean
    use dx_element_types, only: elem_block_t, part_t, ES_WORK, ES_HGS, ES_PHIM, block_result_t, &
                                HEX_ERR_NEGVOL => ELEM_ERR_NEGVOL, &
                                HEX_ERR_MATERIAL => ELEM_ERR_MATERIAL
@@ -688,6 +689,7 @@ contains
       do i = 1, n
          trd(i) = sum(vx(i, :)*fx(i, :) + vy(i, :)*fy(i, :) + vz(i, :)*fz(i, :))/volm(i)
       end do
+      if (part%ero%on) call erosion_strain_mean(blk, n, vx, vy, vz, fx, fy, fz, volm, dt_old)
       ein_sum = 0.0_wp
       pend = 0.0_wp
       fx = 0.0_wp; fy = 0.0_wp; fz = 0.0_wp
