@@ -3,8 +3,9 @@
 # an elastic-plastic cube of growing size (1e3 .. 1e6 elements), and the 10,368-element
 # copper Taylor bar of the performance target; the 22**3 cube again with *MAT_NULL + *EOS_GRUNEISEN,
 # with *MAT_STEINBERG + *EOS_GRUNEISEN, and with the brittle models *DYNX_BRITTLE_DAMAGE MODEL 1-3
-# and *DYNX_BRITTLE_CRACK (fused silica of scripts/gen_brittle_deck.py: the 50 m/s impact on the
-# wall loads it past the tensile strength, so the damage paths run) (issue 18).
+# and *DYNX_BRITTLE_CRACK (fused silica of scripts/gen_brittle_deck.py; the 50 m/s impact on the
+# wall puts the lateral faces in tension past the thresholds, so the damage paths run: at the
+# end 93 % (MODEL 1), 6 % (2), 85 % (3) of the elements damaged) (issue 18).
 # BENCH_ONLY=hirate runs only the 22**3 cube rows (piecewise-linear and issue 18's models).
 # Appends a dated table to docs/performance.md.
 set -e
@@ -51,7 +52,10 @@ s = open(src).read()
 i, j = s.index('*PART'), s.index('*NODE')
 if kind in ('tb', 'jh2', 'growth', 'crack'):
     from gen_brittle_deck import block_material
-    mat = block_material(argparse.Namespace(model=kind, erod=0, fluid=False, ft=0.5, sigy=6.0))
+    # FT 0.1 GPa for the crack model (0.5 is never reached here: the wall only compresses,
+    # the lateral tension stays near 0.16 GPa), so its crack paths run as the scalar models' do
+    mat = block_material(argparse.Namespace(model=kind, erod=0, fluid=False,
+                                            ft=0.1 if kind == 'crack' else 0.5, sigy=6.0))
     open(out, 'w').write(s[:i] + '*PART\ncube\n         1         1         1\n'
                          '*SECTION_SOLID\n         1         1\n' + mat + s[j:])
     sys.exit(0)
