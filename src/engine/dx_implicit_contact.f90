@@ -18,12 +18,24 @@
 !>   t = f_t*/|f_t*| (the return to the Coulomb cone);
 !>   the slave node gets f = f_n n + f_t, the master nodes -N_a f (into f_int with the
 !>   opposite sign: r = f_ext - f_int).
-!> Tangent on the 15 dofs (slave, 4 master nodes), W = [I, -N_1 I, ..., -N_4 I]:
-!>   k W^T n n^T W (normal) + k W^T (I - n n^T) W (stick), or in slip its symmetric part
-!>   (mu f_n/|f_t*|) k W^T (I - n n^T - t t^T) W; the rotation of n and t with the geometry
-!>   and slip's unsymmetric normal coupling (mu k t n^T) are left out (the symmetric MUMPS
-!>   factorization): Newton then converges linearly, not quadratically, while the contact
-!>   slides; in stick and frictionless contact on flat segments the tangent is exact.
+!> Tangent on the 15 dofs (slave, 4 master nodes), W = [I, -N_1 I, ..., -N_4 I]: the
+!> consistent linearization of this residual (Wriggers 2006, ch. 4.3 and 6.3: the
+!> variation of the projection xi and of the normal n with the geometry; Laursen & Simo 1993
+!> for the slip tangent). With a_al = x_,al the segment's tangents, m = a_al.a_be its metric,
+!> h = n.x_,al be its curvature (the bilinear quadrilateral's twist; 0 for a triangle),
+!> D_al = [0, N_1,al I, ..., N_4,al I], T_al = W^T a_al and V_al = D_al^T n:
+!>   dxi = (m - g h)^-1 (T + g V)^T du (the projection kept orthogonal),
+!>   dn = -a^al (V_al^T + h_al be dxi_be) du (a^al = m^-1 a the dual tangents), dg = n^T W du,
+!>   dW = -D_al dxi_al;
+!>   K = k W^T n n^T W - f_n W^T dn + D_al^T f dxi_al - W^T df_t,
+!> with df_t the linearized trial force G = -(n.v) dn - n (v^T dn) - k P dDU (v = f_t(c) - k du_t
+!> before projection, dDU = W - D_al (u - u_c) dxi_al) in stick, and in slip
+!> df_t = -mu k t n^T W + (mu f_n/|f_t*|)(I - t t^T) G. Frictionless, K is the Hessian of the
+!> penalty energy k g^2/2 (symmetric, indefinite where g h is large); with friction it is
+!> unsymmetric (mu k t n^T W and the geometric terms), so a deck with FS > 0 assembles every
+!> entry and MUMPS factors it unsymmetric (SYM = 0). Newton then converges quadratically once
+!> the active set and the stick/slip states settle (cases implicit_friction_block,
+!> implicit_hertz_coarse: the iteration log's residual ratios).
 !> Contact status changes between iterations are the residual's (the active set is found
 !> anew at every evaluation); the count of active nodes and of changes is logged per step.
 !> The sparse pattern holds one pseudo-element per candidate pair (dx_implicit_system).
@@ -37,6 +49,14 @@ module dx_implicit_contact
    public :: icontact_t, icon_pairs, icon_assemble, icon_commit
 
    integer, parameter :: NDE = 24      !< the pattern's element width (the hexahedron's)
+   !> the quadrilateral segment's corners in (xi, eta) (dx_contact_penalty's quad_geom)
+   !> penetration (relative to the segment's size) below which the tangent has the geometric
+   !> terms: deeper (a load step's predictor, far from the solution) the penalty energy's
+   !> Hessian is indefinite and Newton wandered (Hertz step 1 inverted an element with them
+   !> always on); at the solution of a statics-stiff penalty (SFS >= 10) it is ~1e-3
+   real(wp), parameter :: GEO_DEPTH = 0.01_wp
+   real(wp), parameter :: XQ(4) = [-1.0_wp, 1.0_wp, 1.0_wp, -1.0_wp]
+   real(wp), parameter :: EQ(4) = [-1.0_wp, -1.0_wp, 1.0_wp, 1.0_wp]
 
    type :: icontact_t
       integer :: np = 0                     !< candidate pairs (pseudo-elements)
@@ -47,6 +67,7 @@ module dx_implicit_contact
       integer, allocatable :: actc(:), actt(:)        !< (ns) active pair (0: none) c/t
       real(wp), allocatable :: uc(:, :), ut(:, :)     !< (3, nn) displacements c/t
       integer :: nactive = 0, nchanged = 0  !< of the last evaluation against committed
+      logical :: geo = .true.               !< the geometric terms in the tangent
       real(wp) :: fnsum = 0.0_wp            !< sum of the normal forces (last evaluation)
    end type icontact_t
 
@@ -139,7 +160,7 @@ contains
       integer :: i, ip, best, s, a, nsn, b
       real(wp) :: xe(3, 4), xs(3), nsh(4), xc(3), nrm(3), xi(2), g, gbest, fn, k, mu
       real(wp) :: bn(4), bnrm(3), du(3), ftr(3), fts, f(3), w(3, 15), pn(3, 3), tt(3), c
-      real(wp) :: ke(NDE, NDE)
+      real(wp) :: ke(NDE, NDE), bxi(2), bxe(3, 4), vt(3), du15(15), pt(3, 3)
       logical :: inside
       con%ut = u
       con%nactive = 0; con%nchanged = 0; con%fnsum = 0.0_wp
@@ -162,7 +183,7 @@ contains
                g = dot_product(xs - xc, nrm)
                if (g >= 0.0_wp .or. -g > p%depth(s) .or. p%kseg(s) <= 0.0_wp) cycle
                if (g > gbest) then
-                  gbest = g; best = ip; bn = nsh; bnrm = nrm
+                  gbest = g; best = ip; bn = nsh; bnrm = nrm; bxi = xi; bxe = xe
                end if
             end do
             con%actt(i) = best
@@ -194,11 +215,13 @@ contains
             mu = iface%fs
             ftr = 0.0_wp
             c = 0.0_wp
+            pt = pn
             if (mu > 0.0_wp) then
-               du = matmul(w, [u(:, p%node(con%snode(i))) - con%uc(:, p%node(con%snode(i))), &
-                               (u(:, p%seg(min(b, nsn), s)) - con%uc(:, p%seg(min(b, nsn), s)), &
-                                b = 1, 4)])
-               ftr = matmul(pn, con%ftc(:, i)) - k*matmul(pn, du)
+               du15 = [u(:, p%node(con%snode(i))) - con%uc(:, p%node(con%snode(i))), &
+                       (u(:, p%seg(min(b, nsn), s)) - con%uc(:, p%seg(min(b, nsn), s)), b = 1, 4)]
+               du = matmul(w, du15)
+               vt = con%ftc(:, i) - k*du
+               ftr = matmul(pn, vt)
                fts = norm2(ftr)
                if (fts > mu*fn) then       ! slip: back to the cone
                   tt = ftr/fts
@@ -207,6 +230,7 @@ contains
                   pn = pn - outer(tt, tt)
                else
                   c = 1.0_wp
+                  tt = 0.0_wp
                end if
                f = f + ftr
             end if
@@ -217,11 +241,90 @@ contains
             end do
             if (want_k) then
                ke = 0.0_wp
-               ke(1:15, 1:15) = k*matmul(transpose(w), matmul(outer(bnrm, bnrm) + c*pn, w))
+               ke(1:15, 1:15) = pair_tangent()
+               if (mu <= 0.0_wp) ke = 0.5_wp*(ke + transpose(ke))   ! symmetric to round-off
                call sparse_add_element(kmat, e0 + best, ke)
             end if
          end associate
       end do
+   contains
+      !> The consistent tangent of the active pair (header): d(f_int)/du on the 15 dofs.
+      function pair_tangent() result(kt)
+         real(wp) :: kt(15, 15)
+         real(wp) :: dns(4, 2), av(3, 2), ad(3, 2), x12(3), mt(2, 2), mi(2, 2), hc(2, 2)
+         real(wp) :: am(2, 2), ai(2, 2), dm(3, 15, 2), tv(15, 2), vv(15, 2), dxi(2, 15)
+         real(wp) :: q(15, 2), dnm(3, 15), gm(3, 15), ddu(3, 15), dft(3, 15), wn(15), e(2)
+         real(wp) :: det
+         integer :: al, bb, jj
+         logical :: geo
+         ! the segment's parametrization at the contact point (project_point's)
+         dns = 0.0_wp
+         x12 = 0.0_wp
+         if (nsn == 4) then
+            e = max(-1.0_wp, min(1.0_wp, bxi))
+            do bb = 1, 4
+               dns(bb, 1) = 0.25_wp*XQ(bb)*(1.0_wp + EQ(bb)*e(2))
+               dns(bb, 2) = 0.25_wp*EQ(bb)*(1.0_wp + XQ(bb)*e(1))
+               x12 = x12 + 0.25_wp*XQ(bb)*EQ(bb)*bxe(:, bb)
+            end do
+         else
+            dns(1:3, 1) = [-1.0_wp, 1.0_wp, 0.0_wp]
+            dns(1:3, 2) = [-1.0_wp, 0.0_wp, 1.0_wp]
+         end if
+         av = matmul(bxe, dns)
+         ! the geometric terms once the penetration is below GEO_DEPTH of the segment's size
+         ! (its area: |a_1 x a_2| times 4, or 2 for a triangle)
+         geo = con%geo .and. gbest**2 <= GEO_DEPTH**2*merge(4.0_wp, 2.0_wp, nsn == 4)* &
+               norm2(cross3(av(:, 1), av(:, 2)))
+         kt = k*outer15(matmul(bnrm, w), matmul(bnrm, w))
+         if (.not. geo) then     ! the stick tangent k W^T P W, or slip's symmetric part
+            if (mu > 0.0_wp) kt = kt + k*c*matmul(transpose(w), matmul(pn, w))
+            return
+         end if
+         mt = matmul(transpose(av), av)
+         det = mt(1, 1)*mt(2, 2) - mt(1, 2)*mt(2, 1)
+         mi = reshape([mt(2, 2), -mt(2, 1), -mt(1, 2), mt(1, 1)], [2, 2])/det
+         hc = 0.0_wp
+         hc(1, 2) = dot_product(bnrm, x12); hc(2, 1) = hc(1, 2)
+         am = mt - gbest*hc
+         det = am(1, 1)*am(2, 2) - am(1, 2)*am(2, 1)
+         ai = reshape([am(2, 2), -am(2, 1), -am(1, 2), am(1, 1)], [2, 2])/det
+         ad = matmul(av, mi)
+         dm = 0.0_wp
+         do al = 1, 2
+            do bb = 1, 4
+               do jj = 1, 3
+                  dm(jj, 3*bb + jj, al) = dns(bb, al)
+               end do
+            end do
+            tv(:, al) = matmul(av(:, al), w)
+            vv(:, al) = matmul(bnrm, dm(:, :, al))
+         end do
+         do jj = 1, 15
+            dxi(:, jj) = matmul(ai, tv(jj, :) + gbest*vv(jj, :))
+         end do
+         do al = 1, 2
+            q(:, al) = vv(:, al) + hc(al, 1)*dxi(1, :) + hc(al, 2)*dxi(2, :)
+         end do
+         dnm = -(outer315(ad(:, 1), q(:, 1)) + outer315(ad(:, 2), q(:, 2)))
+         kt = kt - fn*matmul(transpose(w), dnm)
+         do al = 1, 2
+            kt = kt + outer15(matmul(f, dm(:, :, al)), dxi(al, :))
+         end do
+         if (mu <= 0.0_wp) return
+         ddu = w
+         do al = 1, 2
+            ddu = ddu - outer315(matmul(dm(:, :, al), du15), dxi(al, :))
+         end do
+         gm = -dot_product(bnrm, vt)*dnm - outer315(bnrm, matmul(vt, dnm)) - k*matmul(pt, ddu)
+         if (c < 1.0_wp) then      ! slip (c = mu f_n/|f_t*|)
+            wn = matmul(bnrm, w)
+            dft = -mu*k*outer315(tt, wn) + c*(gm - outer315(tt, matmul(tt, gm)))
+         else
+            dft = gm
+         end if
+         kt = kt - matmul(transpose(w), dft)
+      end function pair_tangent
    end subroutine icon_assemble
 
    !> The trial contact state (of the last evaluation) becomes the committed one.
@@ -231,6 +334,30 @@ contains
       con%actc = con%actt
       con%uc = con%ut
    end subroutine icon_commit
+
+   pure function cross3(a, b) result(c)
+      real(wp), intent(in) :: a(3), b(3)
+      real(wp) :: c(3)
+      c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
+   end function cross3
+
+   pure function outer15(a, b) result(m)
+      real(wp), intent(in) :: a(15), b(15)
+      real(wp) :: m(15, 15)
+      integer :: j
+      do j = 1, 15
+         m(:, j) = a*b(j)
+      end do
+   end function outer15
+
+   pure function outer315(a, b) result(m)
+      real(wp), intent(in) :: a(3), b(15)
+      real(wp) :: m(3, 15)
+      integer :: j
+      do j = 1, 15
+         m(:, j) = a*b(j)
+      end do
+   end function outer315
 
    pure function outer(a, b) result(m)
       real(wp), intent(in) :: a(3), b(3)

@@ -178,7 +178,9 @@ contains
       sys%nel = ne
       if (sys%has_contact) then    ! one pseudo-element per candidate contact pair
          call icon_pairs(model, sys%eqn, sys%con, cmap)
-         call sparse_symbolic(n, reshape([sys%emap, cmap], [3*TL_NEN, ne + sys%con%np]), sys%k)
+         ! Coulomb friction makes the consistent contact tangent unsymmetric: every entry
+         call sparse_symbolic(n, reshape([sys%emap, cmap], [3*TL_NEN, ne + sys%con%np]), sys%k, &
+                              unsym=any(model%contact%iface(:)%fs > 0.0_wp))
       else
          call sparse_symbolic(n, sys%emap, sys%k)
       end if

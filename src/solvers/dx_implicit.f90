@@ -381,8 +381,8 @@ contains
                              self%r)
             if (want_k) then
                self%sys%k%a = (1.0_wp + al)*self%sys%k%a
-               self%sys%k%a(self%sys%k%rowptr(1:self%sys%neq)) = &
-                  self%sys%k%a(self%sys%k%rowptr(1:self%sys%neq)) + self%meq/(be*h*h)
+               self%sys%k%a(self%sys%k%dg) = &
+                  self%sys%k%a(self%sys%k%dg) + self%meq/(be*h*h)
             end if
          end associate
       end subroutine residual
@@ -428,7 +428,7 @@ contains
       xc = sum(model%x0, dim=2)/real(max(1, model%nn), wp)
       kmax = 0.0_wp
       do i = 1, self%sys%neq
-         kmax = max(kmax, abs(self%sys%k%a(self%sys%k%rowptr(i))))
+         kmax = max(kmax, abs(self%sys%k%a(self%sys%k%dg(i))))
       end do
       modes = ''
       do k = 1, 6
