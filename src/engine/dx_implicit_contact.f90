@@ -5,9 +5,10 @@
 !> (1995), "Sliding interfaces"; the penalty node-to-segment tangent and the stick/slip
 !> return after Wriggers, "Computational Contact Mechanics", 2nd ed. 2006, ch. 5.2 and 6.3
 !> (Laursen & Simo's regularized Coulomb law, Int. J. Numer. Meth. Eng. 36 (1993) 3451-3485).
-!> Per slave node (x_s) and its candidate segments (formed once, at the start, from the
-!> undeformed geometry: small sliding, each slave node against the segments whose box grown
-!> by the segment's size holds it), at the trial displacements u:
+!> Per slave node (x_s) and its candidate segments (each slave node against the segments
+!> whose box grown by the segment's size holds it: formed at the start from the undeformed
+!> geometry and re-found after every converged step from the committed one, so a contact
+!> may slide or close by up to about a segment's size per step), at the trial displacements u:
 !>   contact point x_c = sum N_a x_a (closest-point projection), outward normal n,
 !>   gap g = (x_s - x_c).n; the least penetrated segment with g < 0 (and -g <= depth) is
 !>   the active one, normal force f_n = -k g;
@@ -73,15 +74,28 @@ module dx_implicit_contact
 
 contains
 
-   !> Candidate pairs from the undeformed geometry and their equation maps emap(24, np)
+   !> Candidate pairs from the geometry x0 (+ u when present: the committed displacements,
+   !> the candidates re-found after a converged step) and their equation maps emap(24, np)
    !> (slave dofs, then the master nodes'; 0: none) from eqn(3, nn). Two sweeps over the
-   !> (slave node, segment) products: count, then fill (no growing arrays).
-   subroutine icon_pairs(model, eqn, con, emap)
+   !> (slave node, segment) products: count, then fill (no growing arrays). When con held
+   !> pairs before, the committed state of each slave node (friction force, active or not)
+   !> moves to the new list (both are in (iface, pass, node) order); changed tells whether the
+   !> pairs differ from the old ones.
+   subroutine icon_pairs(model, eqn, con, emap, u, changed)
       type(model_t), intent(in) :: model
       integer, intent(in) :: eqn(:, :)
       type(icontact_t), intent(inout) :: con
       integer, allocatable, intent(out) :: emap(:, :)
-      integer :: sweep, f, ip, i, s, a, ns, np, nmine
+      real(wp), intent(in), optional :: u(:, :)
+      logical, intent(out), optional :: changed
+      type(icontact_t) :: old
+      real(wp), allocatable :: xg(:, :)
+      integer :: sweep, f, ip, i, s, a, ns, np, nmine, j
+      xg = model%x0
+      if (present(u)) xg = model%x0 + u
+      if (allocated(con%sif)) old = con
+      if (allocated(con%sif)) deallocate(con%sif, con%spass, con%snode, con%sfirst, con%slast, &
+                                         con%pseg, con%ftc, con%ftt, con%actc, con%actt)
       do sweep = 1, 2
          ns = 0; np = 0
          do f = 1, size(model%contact%iface)
@@ -110,11 +124,13 @@ contains
       end do
       con%np = np
       con%ns = ns
-      allocate(emap(NDE, np), con%ftc(3, ns), con%ftt(3, ns), con%actc(ns), con%actt(ns), &
-               con%uc(3, model%nn), con%ut(3, model%nn))
+      allocate(emap(NDE, np), con%ftc(3, ns), con%ftt(3, ns), con%actc(ns), con%actt(ns))
       emap = 0
       con%ftc = 0.0_wp; con%ftt = 0.0_wp; con%actc = 0; con%actt = 0
-      con%uc = 0.0_wp; con%ut = 0.0_wp
+      if (.not. allocated(con%uc)) then
+         allocate(con%uc(3, model%nn), con%ut(3, model%nn))
+         con%uc = 0.0_wp; con%ut = 0.0_wp
+      end if
       do i = 1, ns
          associate (p => model%contact%iface(con%sif(i))%pass(con%spass(i)))
             do ip = con%sfirst(i), con%slast(i)
@@ -126,7 +142,39 @@ contains
             end do
          end associate
       end do
+      if (present(changed)) changed = .true.
+      if (.not. allocated(old%sif)) return
+      if (present(changed)) changed = old%np /= np .or. old%ns /= ns
+      if (present(changed) .and. .not. changed) changed = any(old%pseg /= con%pseg) .or. &
+         any(old%snode /= con%snode) .or. any(old%sif /= con%sif) .or. any(old%spass /= con%spass)
+      ! the committed state of every slave node found in both lists (merge walk)
+      j = 1
+      do i = 1, ns
+         do while (j <= old%ns)
+            if (key(old%sif(j), old%spass(j), old%snode(j)) >= &
+                key(con%sif(i), con%spass(i), con%snode(i))) exit
+            j = j + 1
+         end do
+         if (j > old%ns) exit
+         if (key(old%sif(j), old%spass(j), old%snode(j)) /= &
+             key(con%sif(i), con%spass(i), con%snode(i))) cycle
+         con%ftc(:, i) = old%ftc(:, j)
+         con%ftt(:, i) = old%ftt(:, j)
+         if (old%actc(j) > 0) then      ! the same segment if still a candidate, else the first
+            con%actc(i) = con%sfirst(i)
+            do ip = con%sfirst(i), con%slast(i)
+               if (con%pseg(ip) == old%pseg(old%actc(j))) con%actc(i) = ip
+            end do
+         end if
+         con%actt(i) = con%actc(i)
+      end do
    contains
+      !> an order of the slave entries: interface, pass, node
+      integer(8) function key(f, ip, k)
+         integer, intent(in) :: f, ip, k
+         key = (int(f, 8)*4_8 + int(ip, 8))*2147483648_8 + int(k, 8)
+      end function key
+
       !> node k is not on the segment and lies in its box grown by its largest edge from
       !> node 1
       logical function candidate(k, sn)
@@ -137,11 +185,11 @@ contains
          if (any(sn == k)) return
          d = 0.0_wp
          do c = 2, size(sn)
-            d = max(d, norm2(model%x0(:, sn(c)) - model%x0(:, sn(1))))
+            d = max(d, norm2(xg(:, sn(c)) - xg(:, sn(1))))
          end do
          do c = 1, 3
-            if (model%x0(c, k) < minval(model%x0(c, sn)) - d .or. &
-                model%x0(c, k) > maxval(model%x0(c, sn)) + d) return
+            if (xg(c, k) < minval(xg(c, sn)) - d .or. &
+                xg(c, k) > maxval(xg(c, sn)) + d) return
          end do
          candidate = .true.
       end function candidate
