@@ -36,15 +36,15 @@ def newton_history(out):
     return steps
 
 
-def quadratic(steps, first, rmax=3e-3, c=5.0, floor=1e-13):
+def quadratic(steps, first, rmax=2e-3, c=10.0, floor=1e-13):
     """Quadratic convergence near the solution: in each load step from `first` on, every
     pair of successive residual ratios with r_k <= rmax and r_(k+1) above the round-off
     floor has r_(k+1) <= c r_k^2, and each step has at least one such pair. The symmetric
     tangent without the geometric and slip coupling terms converged linearly at about 0.03
-    per iteration on these steps (measured before), and 0.03 r_k > 5 r_k^2 for every
-    r_k < 6e-3, so a linear rate fails this; c = 5 is 1.4x the largest constant measured
-    (3.6 at the stick step; 0.1-2.4 while sliding and on the Hertz steps). floor 1e-13: the
-    ratios end at 1e-16..1e-15 (round-off)."""
+    per iteration on these steps (measured before); 10 r_k^2 < 0.02 r_k for every r_k <= 2e-3,
+    so any linear rate of 0.02 or slower fails this; c = 10 is 1.6x the largest constant
+    measured (6.2 at the first Hertz pair; 3.6 at the stick step; 0.03-1.7 while sliding).
+    floor 1e-13: the ratios end at 1e-16..1e-15 (round-off)."""
     worst, pairs, bare = 0.0, 0, []
     for k, st in enumerate(steps[first - 1:], start=first):
         n = 0
@@ -87,7 +87,7 @@ def friction(out):
                                                               for i in range(len(r) - 1)]),
                  0.0, 1e-9*N, 0.0)
     worst, pairs, bare = quadratic(newton_history(out), 2)
-    ok &= report('Newton quadratic while sliding: max r_(k+1)/(5 r_k^2) (<= 1)', max(worst, 1.0),
+    ok &= report('Newton quadratic while sliding: max r_(k+1)/(10 r_k^2) (<= 1)', max(worst, 1.0),
                  1.0, 0.0, 0.0)
     ok &= report('every drag step has a pair near the solution', float(len(bare) == 0), 1.0, 0.0, 0.0)
     its = max(len(st) for st in newton_history(out)[2:])
@@ -112,7 +112,7 @@ def newton(out, first=1):
     """Quadratic convergence near the solution in every load step from `first` on (the
     implicit_hertz_coarse case: curved contact, the normal's rotation in the tangent)."""
     worst, pairs, bare = quadratic(newton_history(out), first)
-    ok = report('Newton quadratic: max r_(k+1)/(5 r_k^2) (<= 1)', max(worst, 1.0), 1.0, 0.0, 0.0)
+    ok = report('Newton quadratic: max r_(k+1)/(10 r_k^2) (<= 1)', max(worst, 1.0), 1.0, 0.0, 0.0)
     ok &= report('every step has a pair near the solution', float(len(bare) == 0), 1.0, 0.0, 0.0)
     return ok
 

@@ -56,6 +56,13 @@ module dx_implicit_contact
    !> Hessian is indefinite and Newton wandered (Hertz step 1 inverted an element with them
    !> always on); at the solution of a statics-stiff penalty (SFS >= 10) it is ~1e-3
    real(wp), parameter :: GEO_DEPTH = 0.01_wp
+   !> a projection up to this parametric coordinate past a free edge counts as on the
+   !> segment, clamped to the edge: LS-DYNA's MAXPAR default (*CONTACT optional card A; the
+   !> field is not read yet). Without it a node on a symmetry plane pressed into a curved
+   !> master surface projects just past the edge on the plane (onto the mirror image's
+   !> segment) and drops out of contact every other iteration (SSNV104's poles cycled so);
+   !> past every edge it made the Hertz case's nodes flip between neighbouring segments
+   real(wp), parameter :: MAXPAR = 1.025_wp
    real(wp), parameter :: XQ(4) = [-1.0_wp, 1.0_wp, 1.0_wp, -1.0_wp]
    real(wp), parameter :: EQ(4) = [-1.0_wp, -1.0_wp, 1.0_wp, 1.0_wp]
 
@@ -64,6 +71,8 @@ module dx_implicit_contact
       integer :: ns = 0                     !< slave entries (iface, pass, slave node)
       integer, allocatable :: sif(:), spass(:), snode(:), sfirst(:), slast(:)
       integer, allocatable :: pseg(:)       !< (np) segment of each pair (in its pass)
+      integer, allocatable :: pfree(:)      !< (np) bit e - 1 set: edge e (nodes e, e + 1)
+                                            !< is shared with no other candidate of the node
       real(wp), allocatable :: ftc(:, :), ftt(:, :)   !< (3, ns) tangential force c/t
       integer, allocatable :: actc(:), actt(:)        !< (ns) active pair (0: none) c/t
       real(wp), allocatable :: uc(:, :), ut(:, :)     !< (3, nn) displacements c/t
@@ -95,7 +104,7 @@ contains
       if (present(u)) xg = model%x0 + u
       if (allocated(con%sif)) old = con
       if (allocated(con%sif)) deallocate(con%sif, con%spass, con%snode, con%sfirst, con%slast, &
-                                         con%pseg, con%ftc, con%ftt, con%actc, con%actt)
+                                         con%pseg, con%pfree, con%ftc, con%ftt, con%actc, con%actt)
       do sweep = 1, 2
          ns = 0; np = 0
          do f = 1, size(model%contact%iface)
@@ -124,7 +133,8 @@ contains
       end do
       con%np = np
       con%ns = ns
-      allocate(emap(NDE, np), con%ftc(3, ns), con%ftt(3, ns), con%actc(ns), con%actt(ns))
+      allocate(emap(NDE, np), con%ftc(3, ns), con%ftt(3, ns), con%actc(ns), con%actt(ns), &
+               con%pfree(np))
       emap = 0
       con%ftc = 0.0_wp; con%ftt = 0.0_wp; con%actc = 0; con%actt = 0
       if (.not. allocated(con%uc)) then
@@ -138,6 +148,12 @@ contains
                s = con%pseg(ip)
                do a = 1, p%nsn(s)
                   emap(3*a + 1:3*a + 3, ip) = max(0, eqn(:, p%seg(a, s)))
+               end do
+               ! the free edges: shared with none of the node's other candidate segments
+               con%pfree(ip) = 0
+               do a = 1, p%nsn(s)
+                  if (.not. shared(p%seg(a, s), p%seg(mod(a, p%nsn(s)) + 1, s))) &
+                     con%pfree(ip) = ibset(con%pfree(ip), a - 1)
                end do
             end do
          end associate
@@ -169,6 +185,40 @@ contains
          con%actt(i) = con%actc(i)
       end do
    contains
+      !> another candidate segment of slave entry i (in pass p), within 60 degrees of pair
+      !> ip's segment (a smooth continuation: not a corner such as a symmetry plane's face),
+      !> has the edge (n1, n2)
+      logical function shared(n1, n2)
+         integer, intent(in) :: n1, n2
+         integer :: q, t
+         shared = .false.
+         associate (p => model%contact%iface(con%sif(i))%pass(con%spass(i)))
+            do q = con%sfirst(i), con%slast(i)
+               if (q == ip) cycle
+               t = con%pseg(q)
+               if (any(p%seg(1:p%nsn(t), t) == n1) .and. any(p%seg(1:p%nsn(t), t) == n2)) then
+                  if (dot_product(segn(p%seg(1:p%nsn(t), t)), &
+                                  segn(p%seg(1:p%nsn(con%pseg(ip)), con%pseg(ip)))) > 0.5_wp) then
+                     shared = .true.
+                     return
+                  end if
+               end if
+            end do
+         end associate
+      end function shared
+
+      !> the unit normal of a segment (its diagonals' cross product; a triangle's sides')
+      function segn(sn) result(v)
+         integer, intent(in) :: sn(:)
+         real(wp) :: v(3)
+         if (size(sn) == 4) then
+            v = cross3(xg(:, sn(3)) - xg(:, sn(1)), xg(:, sn(4)) - xg(:, sn(2)))
+         else
+            v = cross3(xg(:, sn(2)) - xg(:, sn(1)), xg(:, sn(3)) - xg(:, sn(1)))
+         end if
+         v = v/max(norm2(v), tiny(1.0_wp))
+      end function segn
+
       !> an order of the slave entries: interface, pass, node
       integer(8) function key(f, ip, k)
          integer, intent(in) :: f, ip, k
@@ -227,6 +277,7 @@ contains
                end do
                if (nsn == 3) xe(:, 4) = xe(:, 3)
                call project_point(nsn, xe, xs, nsh, xc, nrm, xi, inside)
+               if (.not. inside) inside = past_free_edge(nsn, xi, con%pfree(ip))
                if (.not. inside) cycle
                g = dot_product(xs - xc, nrm)
                if (g >= 0.0_wp .or. -g > p%depth(s) .or. p%kseg(s) <= 0.0_wp) cycle
@@ -374,6 +425,26 @@ contains
          kt = kt - matmul(transpose(w), dft)
       end function pair_tangent
    end subroutine icon_assemble
+
+   !> A projection xi just outside the segment (up to MAXPAR) across free edges only: it
+   !> counts as on the segment, clamped to the edge (an edge on a symmetry plane, a corner
+   !> or the surface's border; past an edge shared with a smoothly continuing candidate that
+   !> one takes the node).
+   pure logical function past_free_edge(nsn, xi, free)
+      integer, intent(in) :: nsn, free
+      real(wp), intent(in) :: xi(2)
+      logical :: out(4)
+      out = .false.
+      if (nsn == 4) then           ! edges 1-2: eta = -1, 2-3: xi = 1, 3-4: eta = 1, 4-1: xi = -1
+         past_free_edge = all(abs(xi) <= MAXPAR)
+         out = [xi(2) < -1.0_wp, xi(1) > 1.0_wp, xi(2) > 1.0_wp, xi(1) < -1.0_wp]
+      else                         ! edges 1-2: b = 0, 2-3: a + b = 1, 3-1: a = 0
+         past_free_edge = minval(xi) >= 1.0_wp - MAXPAR .and. sum(xi) <= MAXPAR
+         out(1:3) = [xi(2) < 0.0_wp, sum(xi) > 1.0_wp, xi(1) < 0.0_wp]
+      end if
+      if (any(out .and. .not. [btest(free, 0), btest(free, 1), btest(free, 2), btest(free, 3)])) &
+         past_free_edge = .false.
+   end function past_free_edge
 
    !> The trial contact state (of the last evaluation) becomes the committed one.
    subroutine icon_commit(con)
