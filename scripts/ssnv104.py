@@ -18,6 +18,7 @@ elements over the zone (non-matching: see mesh()).
 
   ssnv104.py gen  [--n 6] [--steps 4] [--sfs 100] [--h 4] OUT.k   the deck
   ssnv104.py post OUTDIR [--tol 0.1] [--h 4]                      F, a, p0 against Hertz
+  ssnv104.py check OUTDIR                                         the regression case
   ssnv104.py study [--n 4,6] [--steps 4] [--h 4] [--ccx] WORKDIR  the meshes, dynx and ccx
       (ccx C3D8I with TYPE=SURFACE TO SURFACE penalty contact, slope 50 E per mm, small
       strain and NLGEOM, on the dynx deck's nodes, elements and sets; not in make test)
@@ -192,6 +193,35 @@ def post(out, tol, h=H):
     return ok
 
 
+# CalculiX 2.20 (ccx C3D8I, NLGEOM, surface-to-surface penalty 50 E/mm; `ssnv104.py study
+# --n 4 --ccx`) on the regression case's mesh (n = 4, 4 load steps): F [kN], a [mm], p0 (fit)
+# and the pole element's -sigma_zz [GPa]
+CCX_N4_NLGEOM = (582.1668, 9.823007, 2.250547, 2.186682)
+
+
+def check(out):
+    """The regression case implicit_ssnv104 (n = 4): (1) beside CalculiX on the same mesh
+    (CCX_N4_NLGEOM, both finite strain, St. Venant-Kirchhoff): F, a, p0 and the pole's
+    sigma_zz within 3 %, 2.4x the largest difference measured (p0 1.2 %: two element
+    formulations, B-bar against incompatible modes, on a mesh of 2.8 elements across a);
+    (2) SSNV104's a = 10 mm within 5 % (measured -2.2 %; this coarse mesh's error, -0.5 %
+    at n = 6); p0 is printed against 2.7983 GPa, not asserted: the coarse mesh and the finite
+    strain put it 21 % low (README); (3) Newton converged in every step: the run's exit 0."""
+    from dxpost import report
+    a, p0, szz, F, k = dynx_result(out)
+    cf, ca, cp, cs = CCX_N4_NLGEOM
+    ok = report('F [kN] vs ccx C3D8I NLGEOM', F, cf, 0.0, 0.03)
+    ok &= report('a [mm] vs ccx', a, ca, 0.0, 0.03)
+    ok &= report('p0 (fit) [GPa] vs ccx', p0, cp, 0.0, 0.03)
+    ok &= report('pole -sigma_zz [GPa] vs ccx', szz, cs, 0.0, 0.03)
+    ok &= report('a [mm] vs SSNV104 10 mm', a, A_REF, 0.0, 0.05)
+    print('p0 %.4f GPa, pole -sigma_zz %.4f GPa against SSNV104 %.4f (%+.1f %%, %+.1f %%), F %.2f '
+          'kN against Hertz %.2f (%+.2f %%); %d surface elements in the fit'
+          % (p0, szz, P0_REF, 100*(p0/P0_REF - 1), 100*(szz/P0_REF - 1), F, F_REF,
+             100*(F/F_REF - 1), k))
+    return ok
+
+
 # ---- CalculiX (Debian calculix-ccx) on the same mesh
 FACES = {1: (0, 1, 2, 3), 2: (4, 7, 6, 5), 3: (0, 4, 5, 1), 4: (1, 5, 6, 2), 5: (2, 6, 7, 3),
          6: (3, 7, 4, 0)}     # C3D8 faces S1..S6 (ccx = Abaqus numbering)
@@ -361,6 +391,8 @@ def main():
         ccx = '--ccx' in args
         args = [v for v in args if v != '--ccx']
         study(os.path.abspath(args[0] if args else 'build/ssnv104'), ns, steps, h, ccx)
+    elif cmd == 'check':
+        sys.exit(0 if check(args[0]) else 1)
     elif cmd == 'post':
         tol = opt('--tol', 0.1)
         h = opt('--h', H)
