@@ -181,6 +181,7 @@ bench: deps
 	@sh scripts/bench_mpi.sh
 	@sh scripts/bench_mpi_memory.sh
 	@sh scripts/bench_par_contact.sh
+	@sh scripts/bench_implicit.sh
 	@python3 scripts/bench_shell_scenes.py --plate $(if $(PLATE),$(PLATE),40) --post $(if $(POST),$(POST),12) --out docs/performance.md
 
 studies: deps

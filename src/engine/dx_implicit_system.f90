@@ -24,6 +24,7 @@ module dx_implicit_system
    implicit none
    private
    public :: implicit_system_t, isys_setup, isys_assemble, isys_commit, isys_external, &
+             isys_refind, &
              isys_prescribe, isys_comm, isys_gather, isys_scatter, isys_dof_name, &
              isys_fix, isys_null_names
 
@@ -178,7 +179,9 @@ contains
       sys%nel = ne
       if (sys%has_contact) then    ! one pseudo-element per candidate contact pair
          call icon_pairs(model, sys%eqn, sys%con, cmap)
-         call sparse_symbolic(n, reshape([sys%emap, cmap], [3*TL_NEN, ne + sys%con%np]), sys%k)
+         ! Coulomb friction makes the consistent contact tangent unsymmetric: every entry
+         call sparse_symbolic(n, reshape([sys%emap, cmap], [3*TL_NEN, ne + sys%con%np]), sys%k, &
+                              unsym=any(model%contact%iface(:)%fs > 0.0_wp))
       else
          call sparse_symbolic(n, sys%emap, sys%k)
       end if
@@ -247,6 +250,23 @@ contains
       end do
       if (sys%has_contact) call icon_assemble(model, sys%con, u, want_k, fint, sys%k, sys%nel)
    end subroutine isys_assemble
+
+   !> The contact candidates re-found from the committed displacements u (after a converged
+   !> step); when they changed, the sparse pattern is formed anew (changed: the caller
+   !> analyses it again).
+   subroutine isys_refind(model, sys, u, changed)
+      type(model_t), intent(in) :: model
+      type(implicit_system_t), intent(inout) :: sys
+      real(wp), intent(in) :: u(:, :)
+      logical, intent(out) :: changed
+      integer, allocatable :: cmap(:, :)
+      changed = .false.
+      if (.not. sys%has_contact) return
+      call icon_pairs(model, sys%eqn, sys%con, cmap, u, changed)
+      if (.not. changed) return
+      call sparse_symbolic(sys%neq, reshape([sys%emap, cmap], [3*TL_NEN, sys%nel + sys%con%np]), &
+                           sys%k, unsym=.not. sys%k%sym)
+   end subroutine isys_refind
 
    !> The trial state (of the last assembly) becomes the committed one; the blocks' plot
    !> fields: Cauchy stress and history (element averages in every point slot) and the

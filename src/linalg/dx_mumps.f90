@@ -3,7 +3,8 @@
 !> Matrix Anal. Appl. 23 (2001) 15-41; MUMPS 5.5 Users' guide, Debian libmumps-dev 5.5.1).
 !> A symmetric matrix (dx_sparse: the upper triangle as COO triples, centralized on the host)
 !> goes through JOB = -1 (init: SYM = 2 general symmetric, so an indefinite tangent past a
-!> limit point factors too; PAR = 1 the host works), JOB = 1 (analysis, once per pattern:
+!> limit point factors too, or SYM = 0 for an unsymmetric one, every entry stored; PAR = 1
+!> the host works), JOB = 1 (analysis, once per pattern:
 !> ICNTL(7) = 5 METIS ordering), JOB = 2 (factorization, once per Newton matrix), JOB = 3
 !> (solve) and JOB = -2 (end). MUMPS's own printing is off (ICNTL(1:4)); INFOG(1) < 0 becomes
 !> a dynx error naming MUMPS's code. Null pivots are detected (ICNTL(24) = 1, a pivot row of
@@ -55,6 +56,7 @@ contains
       if (.not. self%on) then
          self%id%COMM = comm
          self%id%SYM = 2
+         if (.not. s%sym) self%id%SYM = 0     ! unsymmetric (LU): the friction tangent
          self%id%PAR = 1
          self%id%JOB = -1
          call dmumps(self%id)

@@ -1,9 +1,10 @@
-!> Sparse symmetric matrices for the implicit solver: the upper triangle (diagonal included)
+!> Sparse matrices for the implicit solver: of a symmetric matrix the upper triangle (diagonal
+!> included), of an unsymmetric one (sym = .false.: the friction tangent) every entry,
 !> in compressed sparse rows (CSR) with the same entries as coordinate triples (COO: irn,
 !> jcn), the input the direct solver (dx_mumps) takes. The pattern comes from a symbolic
 !> pass done once per mesh (sparse_symbolic): from each element's equation map (0 for an
 !> eliminated degree of freedom) the sorted unique columns of every row, the diagonal always
-!> (its first entry: an equation no element touches has a zero row that the solver reports
+!> (dg: its entry; the first of the row when symmetric: an equation no element touches has a zero row that the solver reports
 !> as a null pivot, and the diagonal shifts K - sigma M and K_eff find it), and for each element
 !> the position of each of its (a, b) entries in the value array, so that every Newton
 !> assembly is one indexed add per element entry (sparse_add_element) with no search.
@@ -19,28 +20,34 @@ module dx_sparse
 
    type :: sparse_sym_t
       integer :: n = 0                        !< equations
-      integer :: nnz = 0                      !< stored entries (upper triangle)
+      integer :: nnz = 0                      !< stored entries (upper triangle if sym)
+      logical :: sym = .true.                 !< symmetric: the upper triangle is stored
       integer :: nde = 0                      !< equations per element (its map's length)
       integer, allocatable :: rowptr(:)       !< (n + 1) CSR row starts
       integer, allocatable :: col(:)          !< (nnz) column of each entry, sorted per row
       integer, allocatable :: irn(:)          !< (nnz) row of each entry (COO)
+      integer, allocatable :: dg(:)           !< (n) entry of each row's diagonal
       integer, allocatable :: pos(:, :, :)    !< (nde, nde, nel) entry of element (a, b); 0: none
       real(wp), allocatable :: a(:)           !< (nnz) values
    end type sparse_sym_t
 
 contains
 
-   !> The pattern of a symmetric matrix with n equations assembled from nel elements whose
-   !> equation maps are eq(1:nde, e) (0: the degree of freedom is not an equation).
-   subroutine sparse_symbolic(n, eq, s)
+   !> The pattern of a matrix with n equations assembled from nel elements whose equation
+   !> maps are eq(1:nde, e) (0: the degree of freedom is not an equation); symmetric (the
+   !> upper triangle) unless unsym is present and true (every entry).
+   subroutine sparse_symbolic(n, eq, s, unsym)
       integer, intent(in) :: n
       integer, intent(in) :: eq(:, :)
       type(sparse_sym_t), intent(out) :: s
-      integer :: nde, nel, e, a, b, i, j, k, k0, k1, m, lo, hi, mid
+      logical, intent(in), optional :: unsym
+      integer :: nde, nel, e, a, b, i, j, k, k0, k1, m, lo, hi, mid, jmin
       integer, allocatable :: cnt(:), start(:), fill(:), tmp(:)
       nde = size(eq, 1)
       nel = size(eq, 2)
       s%n = n
+      s%sym = .true.
+      if (present(unsym)) s%sym = .not. unsym
       s%nde = nde
       ! upper bound of each row's entries: every (a, b) pair of every element
       allocate(cnt(n), start(n + 1))
@@ -49,8 +56,10 @@ contains
          do a = 1, nde
             i = eq(a, e)
             if (i <= 0) cycle
+            jmin = i
+            if (.not. s%sym) jmin = 1
             do b = 1, nde
-               if (eq(b, e) >= i) cnt(i) = cnt(i) + 1
+               if (eq(b, e) >= jmin) cnt(i) = cnt(i) + 1
             end do
          end do
       end do
@@ -67,9 +76,11 @@ contains
          do a = 1, nde
             i = eq(a, e)
             if (i <= 0) cycle
+            jmin = i
+            if (.not. s%sym) jmin = 1
             do b = 1, nde
                j = eq(b, e)
-               if (j >= i) then
+               if (j >= jmin) then
                   tmp(start(i) + fill(i)) = j
                   fill(i) = fill(i) + 1
                end if
@@ -100,6 +111,12 @@ contains
          s%irn(s%rowptr(i):s%rowptr(i + 1) - 1) = i
       end do
       s%a = 0.0_wp
+      allocate(s%dg(n))
+      do i = 1, n
+         do k = s%rowptr(i), s%rowptr(i + 1) - 1
+            if (s%col(k) == i) s%dg(i) = k
+         end do
+      end do
       ! each element entry's position (binary search in its row)
       allocate(s%pos(nde, nde, nel))
       s%pos = 0
@@ -107,9 +124,11 @@ contains
          do a = 1, nde
             i = eq(a, e)
             if (i <= 0) cycle
+            jmin = i
+            if (.not. s%sym) jmin = 1
             do b = 1, nde
                j = eq(b, e)
-               if (j < i) cycle
+               if (j < jmin) cycle
                lo = s%rowptr(i)
                hi = s%rowptr(i + 1) - 1
                do while (lo < hi)
@@ -132,7 +151,7 @@ contains
       s%a = 0.0_wp
    end subroutine sparse_zero
 
-   !> Add element e's symmetric matrix ke(nde, nde) (its upper-triangle entries).
+   !> Add element e's matrix ke(nde, nde) (of a symmetric one its upper-triangle entries).
    subroutine sparse_add_element(s, e, ke)
       type(sparse_sym_t), intent(inout) :: s
       integer, intent(in) :: e
@@ -146,7 +165,7 @@ contains
       end do
    end subroutine sparse_add_element
 
-   !> y = A x for the symmetric matrix of its upper triangle.
+   !> y = A x (a symmetric matrix from its upper triangle).
    subroutine sparse_matvec(s, x, y)
       type(sparse_sym_t), intent(in) :: s
       real(wp), intent(in) :: x(:)
@@ -157,7 +176,7 @@ contains
          do k = s%rowptr(i), s%rowptr(i + 1) - 1
             j = s%col(k)
             y(i) = y(i) + s%a(k)*x(j)
-            if (j /= i) y(j) = y(j) + s%a(k)*x(i)
+            if (j /= i .and. s%sym) y(j) = y(j) + s%a(k)*x(i)
          end do
       end do
    end subroutine sparse_matvec
@@ -172,7 +191,7 @@ contains
       do i = 1, s%n
          do k = s%rowptr(i), s%rowptr(i + 1) - 1
             d(i, s%col(k)) = s%a(k)
-            d(s%col(k), i) = s%a(k)
+            if (s%sym) d(s%col(k), i) = s%a(k)
          end do
       end do
    end subroutine sparse_to_dense

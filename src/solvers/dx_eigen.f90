@@ -105,7 +105,7 @@ contains
          call isys_assemble(model, self%sys, u, 1.0_wp, .true., f, error)
          if (allocated(error)) return
          call isys_gather(self%sys, spread(model%mass, 1, 3), meq)
-         kd = self%sys%k%a(self%sys%k%rowptr(1:neq))
+         kd = self%sys%k%a(self%sys%k%dg)
          t0 = wall_time()
          call self%ms%analyse(self%sys%k, isys_comm(), error)
          if (allocated(error)) return
@@ -156,7 +156,7 @@ contains
    contains
       !> K - sigma M factored (the diagonal of the assembled K shifted)
       subroutine factor_shifted()
-         self%sys%k%a(self%sys%k%rowptr(1:neq)) = kd - self%sigma*meq
+         self%sys%k%a(self%sys%k%dg) = kd - self%sigma*meq
          call self%ms%factor(self%sys%k, error)
       end subroutine factor_shifted
 

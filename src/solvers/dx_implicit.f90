@@ -40,7 +40,7 @@ module dx_implicit
    use dx_mumps, only: mumps_t
    use dx_implicit_system, only: implicit_system_t, isys_setup, isys_assemble, isys_commit, &
                                  isys_external, isys_prescribe, isys_comm, isys_gather, &
-                                 isys_scatter, isys_null_names, isys_fix
+                                 isys_scatter, isys_null_names, isys_fix, isys_refind
    implicit none
    private
    public :: implicit_t
@@ -184,7 +184,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: tn, h
       integer :: nit
-      logical :: ok
+      logical :: ok, changed
       if (self%first) then
          self%first = .false.
          self%t = 0.0_wp
@@ -226,6 +226,14 @@ contains
       end if
       self%uc = self%u
       self%fintc = self%fint
+      changed = .false.
+      if (tn < self%tend) call isys_refind(model, self%sys, self%u, changed)
+      if (changed) then        ! new contact candidates: the pattern analysed again
+         call self%ms%analyse(self%sys%k, isys_comm(), error)
+         if (allocated(error)) return
+         call log_info('dynx: implicit: contact candidates re-found: '// &
+            str(self%sys%con%np)//' pairs, '//str(self%sys%k%nnz)//' stored entries')
+      end if
       model%f = self%fext - self%fint    ! (spcforc: the reactions are -f on the SPC dofs)
       model%x = model%x0 + self%u
       model%v = 0.0_wp
@@ -381,8 +389,8 @@ contains
                              self%r)
             if (want_k) then
                self%sys%k%a = (1.0_wp + al)*self%sys%k%a
-               self%sys%k%a(self%sys%k%rowptr(1:self%sys%neq)) = &
-                  self%sys%k%a(self%sys%k%rowptr(1:self%sys%neq)) + self%meq/(be*h*h)
+               self%sys%k%a(self%sys%k%dg) = &
+                  self%sys%k%a(self%sys%k%dg) + self%meq/(be*h*h)
             end if
          end associate
       end subroutine residual
@@ -428,7 +436,7 @@ contains
       xc = sum(model%x0, dim=2)/real(max(1, model%nn), wp)
       kmax = 0.0_wp
       do i = 1, self%sys%neq
-         kmax = max(kmax, abs(self%sys%k%a(self%sys%k%rowptr(i))))
+         kmax = max(kmax, abs(self%sys%k%a(self%sys%k%dg(i))))
       end do
       modes = ''
       do k = 1, 6
