@@ -123,7 +123,8 @@ def rod(a):
     else:
         d.w('$     SSID      MSID     SSTYP     MSTYP\n         1         2         3         3\n')
     d.w('$       FS        FD        DC        VC       VDC    PENCHK        BT        DT\n'
-        '       0.0       0.0       0.0       0.0       0.0         0       0.0%10.4g\n' % a.death)
+        '       0.0       0.0       0.0       0.0%10s         0       0.0%10.4g\n'
+        % ('0.0' if a.vdc == 0 else '%.4g' % a.vdc, a.death))
     d.w('$      SFS       SFM\n%10.4g%10.4g\n' % (a.sfs, a.sfs))
     if a.soft:
         d.w('$     SOFT    SOFSCL\n         1%10.4g\n' % a.sofscl)
@@ -325,6 +326,7 @@ def main():
     p.add_argument('--soft', action='store_true', help='SOFT = 1 (optional card A)')
     p.add_argument('--sofscl', type=float, default=0.1)
     p.add_argument('--death', type=float, default=0.0, help='DT (death time), 0: none')
+    p.add_argument('--vdc', type=float, default=0.0, help='VDC (% of critical damping)')
     p.add_argument('out')
     p = sub.add_parser('cubes')
     p.add_argument('--ncube', type=int, default=8)
