@@ -109,11 +109,43 @@ def block_emc_ball_shell(work):
             % (e, p, l, lx, ef, pf, lf, dist))
 
 
+def block_stiff_penalty(work):
+    """Two elastic rods (gen_contact_decks.py rod --nx 50) at SFS 1e3, 1e4, 1e5, without and
+    with contact damping VDC = 20 %: the largest contact force over the physical rho c v A/2,
+    its mean over the plateau, the contact duration against 2L/c, the energy ratio band."""
+    from contact_post import table
+    c = math.sqrt(210.0 / 7.85e-6)
+    fphys = 7.85e-6 * c * 10.0 / 2.0
+    t2 = 200.0 / c
+    lines = ['| SFS | VDC [%] | cycles | largest force / rho c v A/2 | plateau mean / rho c v A/2 '
+             '| duration / (2L/c) - 1 | energy ratio band |', '|---|---|---|---|---|---|---|']
+    for sfs in ('1e3', '1e4', '1e5'):
+        for vdc in ('0', '20'):
+            deck = os.path.join(work, 'rod_%s_%s.k' % (sfs, vdc))
+            sh([PY, 'scripts/gen_contact_decks.py', 'rod', '--nx', '50', '--sfs', sfs,
+                '--vdc', vdc, deck])
+            od, log = run_deck(deck, work, 'rod_%s_%s' % (sfs, vdc))
+            cyc = int(re.search(r'normal termination at cycle (\d+)', log).group(1))
+            names, rows = table(os.path.join(od, 'rcforc'))
+            fx, na = names.index('slave_x'), names.index('nactive')
+            on = [r for r in rows if r[na] > 0]
+            fmax = max(abs(r[fx]) for r in on)
+            win = [abs(r[fx]) for r in rows if on[0][0] + 0.1 * t2 <= r[0] <= on[0][0] + 0.9 * t2]
+            gn, g = table(os.path.join(od, 'glstat'))
+            er = [r[gn.index('energy_ratio')] for r in g]
+            lines.append('| %s | %s | %d | %.1f | %.3f | %+.3f | %.6f .. %.6f |' % (
+                sfs, vdc, cyc, fmax / fphys, sum(win) / len(win) / fphys,
+                (on[-1][0] - on[0][0]) / t2 - 1, min(er), max(er)))
+    return '\n'.join(lines)
+
+
 BLOCKS = {
     'emc_bars': ('decks/emc_bars/README.md', True, block_emc_bars),
     # the faceted run takes about a minute on the shared machine: written by --update
     # (make studies), not rerun by --check
     'emc_ball_shell': ('decks/emc_ball_shell/README.md', False, block_emc_ball_shell),
+    # six rod runs up to 58,000 cycles: written by --update (make studies)
+    'stiff_penalty': ('docs/extreme-cases.md', False, block_stiff_penalty),
 }
 
 

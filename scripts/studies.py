@@ -504,6 +504,12 @@ def readme(build, docs):
          'e.g. `python3 scripts/gen_taylor_deck.py --L 32.4 --R 3.2 --v 227 --mat j2 --quarter '
          '--n 4 --m 4 --nz 32 t.k && bin/dynx -i t.k -o t && python3 scripts/dxpost.py taylor t '
          '--L0 32.4 --R0 3.2`.', '',
+         'Other pages of `make studies`, each with error against run time and observed orders: '
+         '[scene_orders.md](scene_orders.md) (rod_impact, sliding_block, incline_friction, '
+         'emc_bars), [emc.md](emc.md) (conserving contact: ball in a box, ball in a shell, '
+         'bars), [hertz.md](hertz.md), [ball_in_box.md](ball_in_box.md), [spall.md](spall.md), '
+         '[lamina.md](lamina.md); the stiff and extreme cases: [stability.md](stability.md). '
+         'Numbers checked by `make test`: `scripts/doc_numbers.py --check`.', '',
          '## 1. Elastic wave in a bar (uniaxial strain)', '',
          '![error against wall time](wave_error.png)', '',
          '![stress profile nx = 100](wave_profile.png) ![front, mesh sweep](wave_profile_zoom.png)',
