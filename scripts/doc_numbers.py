@@ -139,11 +139,35 @@ def block_stiff_penalty(work):
     return '\n'.join(lines)
 
 
+def block_taylor_bar(work):
+    """decks/taylor_bar: both decks, final length, footprint, energy ratio (dxpost.py)."""
+    lines = ['| deck | final length [mm] | footprint radius [mm] | reference | energy ratio '
+             '(final; min-max) | cycles |', '|---|---|---|---|---|---|']
+    for deck, l0, r0, ref in (
+            ('deck.k', '32.4', '3.2', 'converged 21.45 / 7.225 mm (Foulk et al. 2021: '
+             '21.42-21.48 / 7.22-7.23); Simo 7.12, Zienkiewicz 7.11 mm'),
+            ('wilkins_guinan.k', '23.47', '3.81', 'experiment 14.79 mm (Lf/L0 0.630) / '
+             '8.40 mm (Rf/R0 2.204)')):
+        od, log = run_deck(os.path.join(ROOT, 'decks/taylor_bar', deck), work, deck[:-2])
+        _, out = sh([PY, 'scripts/dxpost.py', 'taylor', od, '--L0', l0, '--R0', r0])
+        lf = float(re.search(r'final length\s+(\S+)', out).group(1))
+        rf = float(re.search(r'footprint radius\s+(\S+)', out).group(1))
+        _, e = sh([PY, 'scripts/dxpost.py', 'energy', od])
+        lo = float(re.search(r'min\s+(\S+)', e).group(1))
+        hi = float(re.search(r'max\s+(\S+)', e).group(1))
+        fin = float(re.search(r'final\s+(\S+)', e).group(1))
+        cyc = int(re.search(r'normal termination at cycle (\d+)', log).group(1))
+        lines.append('| `%s` | %.3f (Lf/L0 %.4f) | %.3f (Rf/R0 %.4f) | %s | %.5f; %.5f-%.5f | %d |'
+                     % (deck, lf, lf / float(l0), rf, rf / float(r0), ref, fin, lo, hi, cyc))
+    return '\n'.join(lines)
+
+
 BLOCKS = {
     'emc_bars': ('decks/emc_bars/README.md', True, block_emc_bars),
     # the faceted run takes about a minute on the shared machine: written by --update
     # (make studies), not rerun by --check
     'emc_ball_shell': ('decks/emc_ball_shell/README.md', False, block_emc_ball_shell),
+    'taylor_bar': ('decks/taylor_bar/README.md', True, block_taylor_bar),
     # six rod runs up to 58,000 cycles: written by --update (make studies)
     'stiff_penalty': ('docs/extreme-cases.md', False, block_stiff_penalty),
 }
