@@ -162,12 +162,77 @@ def block_taylor_bar(work):
     return '\n'.join(lines)
 
 
+def post_values(out):
+    """(name, value, reference) of each line of a contact_post.py report."""
+    vals = {}
+    for m in re.finditer(r'^(.*?\S)\s+(\S+)\s+reference\s+(\S+)', out, re.M):
+        vals[m.group(1)] = (float(m.group(2)), float(m.group(3)))
+    return vals
+
+
+def block_rod_impact(work):
+    od, log = run_deck(os.path.join(ROOT, 'decks/rod_impact/deck.k'), work, 'rod')
+    _, out = sh([PY, 'scripts/contact_post.py', 'rod', od, '--nx', '100'])
+    v = post_values(out)
+    dur, t2 = v['contact duration [ms] vs 2L/c']
+    fp, fr = v['force plateau (median) [kN] vs rho c v A/2']
+    vs = v['striker velocity after release [m/s]'][0]
+    vt = v['target velocity after release [m/s]'][0]
+    m = re.search(r'energy ratio min (\S+) max (\S+)', out)
+    cyc = int(re.search(r'normal termination at cycle (\d+)', log).group(1))
+    dt = float(re.search(r'normal termination at cycle \d+, time (\S+),', log).group(1)) / cyc
+    return '\n'.join([
+        '| quantity | dynx | theory | error |', '|---|---|---|---|',
+        '| contact duration (first to last rcforc output with a node in contact) | %.7f ms | '
+        '2L/c = %.7f ms | %+.2f %% (%.1f mean time steps) |'
+        % (dur, t2, 100 * (dur / t2 - 1), (dur - t2) / dt),
+        '| contact force plateau (median) | %.6f kN | rho c v0 A/2 = %.6f kN | %+.2f %% |'
+        % (fp, fr, 100 * (fp / fr - 1)),
+        '| striker velocity after release (lumped-mass mean) | %.4f m/s | 0 | %.2f %% of v0 |'
+        % (vs, 100 * vs / 10.0),
+        '| target velocity after release | %.4f m/s | 10 m/s | %+.2f %% |' % (vt, 100 * (vt / 10 - 1)),
+        '| energy ratio over the run (glstat, sliding energy included) | %s .. %s | 1 | |'
+        % (m.group(1), m.group(2))])
+
+
+def block_sliding_block(work):
+    od, log = run_deck(os.path.join(ROOT, 'decks/sliding_block/deck.k'), work, 'slide')
+    _, out = sh([PY, 'scripts/contact_post.py', 'slide', od, '--m', repr(8 * 7.85e-6)])
+    v = post_values(out)
+    deck0 = os.path.join(work, 'slide0.k')
+    sh([PY, 'scripts/gen_contact_decks.py', 'slide', '--fs', '0', deck0])
+    od0, log0 = run_deck(deck0, work, 'slide0')
+    _, out0 = sh([PY, 'scripts/contact_post.py', 'slide', od0, '--mu', '0', '--F', '0.02',
+                  '--v', '20', '--tend', '0.2'])
+    v0 = post_values(out0)
+    er = [float(re.search(r'normal termination at .*energy ratio\s+(\S+)', l).group(1)) for l in (log, log0)]
+    a, aref = v['deceleration [m/s/ms] vs mu F/m']
+    r = v['median |f_t|/f_n vs mu'][0]
+    fn = v['mean normal force [kN] vs load F'][0]
+    return '\n'.join([
+        '| quantity | dynx | reference | error |', '|---|---|---|---|',
+        '| deceleration of the block (slope of vx, block centre node) | %.3f m/s per ms | '
+        'mu F/m = %.3f | %+.2f %% |' % (a, aref, 100 * (a / aref - 1)),
+        '| median tangential / normal contact force | %.6f | mu = 0.2 | %+.3f %% |'
+        % (r, 100 * (r / 0.2 - 1)),
+        '| mean normal contact force | %.7f kN | F = 0.02 kN | %+.3f %% |' % (fn, 100 * (fn / 0.02 - 1)),
+        '| frictionless: change of vx over 0.2 ms (4 mm, 5 plate segment edges crossed) | '
+        '%.2e m/s | 0 | |' % v0['velocity change [m/s] (frictionless)'][0],
+        '| frictionless: largest tangential force | %.1e F | 0 | |'
+        % v0['largest |f_t| / F (frictionless)'][0],
+        '| frictionless: largest normal force after settling | %.2f F | F | no spikes at the '
+        'edges |' % v0['largest f_n / F after settling (no spikes)'][0],
+        '| energy ratio at the end (friction / frictionless) | %.6f / %.6f | 1 | |' % tuple(er)])
+
+
 BLOCKS = {
     'emc_bars': ('decks/emc_bars/README.md', True, block_emc_bars),
     # the faceted run takes about a minute on the shared machine: written by --update
     # (make studies), not rerun by --check
     'emc_ball_shell': ('decks/emc_ball_shell/README.md', False, block_emc_ball_shell),
     'taylor_bar': ('decks/taylor_bar/README.md', True, block_taylor_bar),
+    'rod_impact': ('decks/rod_impact/README.md', True, block_rod_impact),
+    'sliding_block': ('decks/sliding_block/README.md', True, block_sliding_block),
     # six rod runs up to 58,000 cycles: written by --update (make studies)
     'stiff_penalty': ('docs/extreme-cases.md', False, block_stiff_penalty),
 }
