@@ -307,11 +307,15 @@ def taylor_order_lines(rows):
     e1 = o['e1']
     L = ['## Observed orders (ELFORM 1, IHQ 1, h = 1/n)', '',
          'Between successive meshes, p = ln(e_i/e_(i+1)) / ln(h_i/h_(i+1)) of the error against '
-         'the reference (none where the error changes sign: the sequence crosses the reference). '
-         'Expected: order 1 at best. The footprint radius and the final length are set by the '
-         'plastic zone at the impact face, whose boundary (elastic-plastic front, strain '
-         'gradients at the rim) the one-point hex resolves to O(h); the strain there is large '
-         'and not smooth, so the asymptotic range of a second-order element is not reached.', '',
+         'the reference (none where the error changes sign: the sequence crosses the reference; '
+         'negative where it grows again after the crossing). Expected: about 1. The footprint '
+         'radius and the final length are set by the plastic zone at the impact face, whose '
+         'boundary (elastic-plastic front, strain gradients at the rim) the one-point hex '
+         'resolves to O(h); the strain there is large and not smooth, so the second order of '
+         'the element on smooth solutions is not expected. Lf approaches the reference from '
+         'above with orders a little above 1; Rf crosses the reference between (4,4,32) and '
+         '(6,6,48) and keeps rising, so its order is measured without the reference, by the '
+         'Richardson table below.', '',
          '| from | to | Lf error | order (Lf) | Rf error | order (Rf) | wall [s] (finer) |',
          '|---|---|---|---|---|---|---|']
     for i in range(len(e1) - 1):
@@ -495,11 +499,13 @@ def readme(build, docs):
     wd = sorted([w for w in W if w['nx'] == 100 and w['q2'] == 0.06], key=lambda w: w['tssfac'])
     L = ['# Error-against-run-time studies', '',
          'Produced by `make studies` (= `sh scripts/studies.sh`), %s, commit %s, %s. '
-         'Runs are sequential, one core each; wall = dynx solver wall time printed at the end '
+         'Runs are sequential, one core each, on a machine shared with other jobs (load '
+         'average %.1f when this page was written: compare wall times within a row group, '
+         'not across studies); wall = dynx solver wall time printed at the end '
          'of the run. Tables: [elastic_wave.md](elastic_wave.md), [taylor_simo.md]'
          '(taylor_simo.md), [taylor_wilkins_guinan.md](taylor_wilkins_guinan.md). Plot data and '
          'gnuplot scripts: `data/`. Decks and raw output: `build/studies/`.'
-         % (time.strftime('%Y-%m-%d', time.gmtime()), rev, cpu), '',
+         % (time.strftime('%Y-%m-%d', time.gmtime()), rev, cpu, os.getloadavg()[0]), '',
          'Reproduce: `make studies` (or `sh scripts/studies.sh` with bin/dynx built). One case, '
          'e.g. `python3 scripts/gen_taylor_deck.py --L 32.4 --R 3.2 --v 227 --mat j2 --quarter '
          '--n 4 --m 4 --nz 32 t.k && bin/dynx -i t.k -o t && python3 scripts/dxpost.py taylor t '
@@ -604,7 +610,11 @@ def readme(build, docs):
                  'table in [taylor_simo.md](taylor_simo.md)): Lf = %.3f +- %.3f mm (observed '
                  'order %.2f) against the reference 21.42-21.48 mm: %s; Rf = %.3f +- %.3f mm '
                  '(order %.2f) against 7.22-7.23 mm: %s. The +- is the GCI of the finest mesh '
-                 '(Fs = 1.25). The finest mesh itself: Lf %+.3f, Rf %+.3f mm from the reference.'
+                 '(Fs = 1.25). The finest mesh itself: Lf %+.3f, Rf %+.3f mm from the reference. '
+                 'The same extrapolation of the axisymmetric model (decks/taylor_bar_axisym) is '
+                 'in [scene_orders.md](scene_orders.md). Footprint = the largest radius of the '
+                 'nodes of the initial impact face (its rim lifts off the wall: lift-off in '
+                 'taylor_simo.md); a reference measured on the wall would be smaller.'
                  % (' '.join(last['meshes']), qL['f_ext'], qL['gci'], qL['p'],
                     'agrees' if abs(qL['f_ext'] - LREF) <= qL['gci'] + 0.03 else
                     'differs by %+.3f mm' % (qL['f_ext'] - LREF),
