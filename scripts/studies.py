@@ -573,11 +573,13 @@ def readme(build, docs):
                  [w['h'] for w in wm], [w['rise'] for w in wm])),
              q100[0]['rise'], q400[0]['rise'], 100 * q100[0]['overshoot'],
              100 * q400[0]['overshoot']),
-          '- Run time: these are 25-400 element runs of 71-284 cycles, %.3g-%.3g s; up to '
+          '- Run time: these are %d-%d element runs of %d-%d cycles, %.3g-%.3g s; up to '
           'nx = 100 the fixed costs (output, set-up of the loop) dominate, so error against run '
           'time is flat there and the cheapest accurate choice is the mesh whose axial Courant '
           'number is near the TSSFAC (h = cross-section size here).'
-          % (min(w['wall'] for w in W), max(w['wall'] for w in W)), '']
+          % (min(w['nx'] for w in W), max(w['nx'] for w in W), min(w['cycles'] for w in W),
+             max(w['cycles'] for w in W), min(w['wall'] for w in W), max(w['wall'] for w in W)),
+          '']
     L += ['## 2. Taylor bar, Simo (1992) benchmark', '', '![error against wall time]'
           '(taylor_error.png)', '',
           '| mesh | ELFORM | IHQ | Lf [mm] | Lf - 21.45 | Rf [mm] | Rf - 7.225 | energy ratio '
