@@ -225,6 +225,51 @@ def block_sliding_block(work):
         '| energy ratio at the end (friction / frictionless) | %.6f / %.6f | 1 | |' % tuple(er)])
 
 
+def block_idle_contact(work):
+    """What a deck pays for a contact that never acts (issue 23, "a deck pays only for what it
+    uses"): two steel rods at rest (gen_contact_decks.py rod --nx 400 --v 0) with their
+    *CONTACT_SURFACE_TO_SURFACE, the same with the target 50 mm away, and the same without
+    the contact keyword. CPU seconds (user, children) median of 3, cycles, bucket sorts."""
+    import resource
+    base = os.path.join(work, 'idle_contact.k')
+    sh([PY, 'scripts/gen_contact_decks.py', 'rod', '--nx', '400', '--v', '0', base])
+    lines = open(base).read().split('\n')
+    far, nocon, innode, skip = [], [], False, False
+    nper = 4 * 401
+    for l in lines:
+        if l.startswith('*'):
+            innode = l.startswith('*NODE')
+            skip = l.startswith('*CONTACT_')
+        elif innode and l.strip() and not l.startswith('$') and int(l[:8]) > nper:
+            far.append(l[:8] + '%16.8f' % (float(l[8:24]) + 50.0) + l[24:])
+            if not skip:
+                nocon.append(l)
+            continue
+        far.append(l)
+        if not skip:
+            nocon.append(l)
+    decks = [('rods at rest 0.01 mm apart, with *CONTACT', base)]
+    for name, ls in (('rods 50 mm apart, with *CONTACT', far), ('no *CONTACT', nocon)):
+        path = os.path.join(work, 'idle_%d.k' % len(decks))
+        with open(path, 'w') as f:
+            f.write('\n'.join(ls))
+        decks.append((name, path))
+    out = ['| deck (800 hexes, 2 rods, v = 0) | cycles | CPU [s] (median of 3) | CPU per cycle '
+           '[us] | bucket sorts |', '|---|---|---|---|---|']
+    for name, path in decks:
+        cpu = []
+        for k in range(3):
+            t0 = resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime
+            od, log = run_deck(path, work, 'idle_run')
+            cpu.append(resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime - t0)
+        c = sorted(cpu)[1]
+        cyc = int(re.search(r'normal termination at cycle (\d+)', log).group(1))
+        m = re.search(r'(\d+) bucket sorts', log)
+        out.append('| %s | %d | %.2f | %.0f | %s |' % (name, cyc, c, 1e6 * c / cyc,
+                                                      m.group(1) if m else '-'))
+    return '\n'.join(out)
+
+
 BLOCKS = {
     'emc_bars': ('decks/emc_bars/README.md', True, block_emc_bars),
     # the faceted run takes about a minute on the shared machine: written by --update
@@ -235,6 +280,8 @@ BLOCKS = {
     'sliding_block': ('decks/sliding_block/README.md', True, block_sliding_block),
     # six rod runs up to 58,000 cycles: written by --update (make studies)
     'stiff_penalty': ('docs/extreme-cases.md', False, block_stiff_penalty),
+    # CPU times (not comparable across machines: written by --update only)
+    'idle_contact': ('docs/performance.md', False, block_idle_contact),
 }
 
 
