@@ -123,7 +123,8 @@ def rod(a):
     else:
         d.w('$     SSID      MSID     SSTYP     MSTYP\n         1         2         3         3\n')
     d.w('$       FS        FD        DC        VC       VDC    PENCHK        BT        DT\n'
-        '       0.0       0.0       0.0       0.0       0.0         0       0.0%10.4g\n' % a.death)
+        '       0.0       0.0       0.0       0.0%10s         0       0.0%10.4g\n'
+        % ('0.0' if a.vdc == 0 else '%.4g' % a.vdc, a.death))
     d.w('$      SFS       SFM\n%10.4g%10.4g\n' % (a.sfs, a.sfs))
     if a.soft:
         d.w('$     SOFT    SOFSCL\n         1%10.4g\n' % a.sofscl)
@@ -274,27 +275,34 @@ def slide(a):
     rho, E = STEEL
     tend = a.tend
     d.w('*CONTROL_TERMINATION\n%10.4g\n' % tend)
-    d.w('*CONTROL_TIMESTEP\n       0.0       0.9\n')
+    d.w('*CONTROL_TIMESTEP\n       0.0%10.4g\n' % a.tssfac)
     d.w('*DATABASE_GLSTAT\n%10.4g\n' % (tend / 100))
     d.w('*DATABASE_RCFORC\n%10.4g\n' % (tend / 400))
     d.w('*DATABASE_NODOUT\n%10.4g\n' % (tend / 100))
     mat_part(d, 1, rho, E, 0.3, 'plate')
     mat_part(d, 2, rho, E, 0.3, 'block')
-    pl = d.block(1, 0.0, 0.0, 0.0, 12.0, 4.0, 1.0, 15, 5, 1)
-    bl = d.block(2, 1.0, 1.0, 1.0 + a.gap, 2.0, 2.0, 2.0, 2, 2, 2)
-    d.node_set(1, [pl[i][j][0] for i in range(16) for j in range(6)])
-    d.node_set(2, [bl[i][j][k] for i in range(3) for j in range(3) for k in range(3)])
-    top = [bl[i][j][2] for i in range(3) for j in range(3)]
+    k = a.refine                       # 1: the scene deck (block 2 x 2 x 2, plate 15 x 5 x 1)
+    pl = d.block(1, 0.0, 0.0, 0.0, 12.0, 4.0, 1.0, 15 * k, 5 * k, k)
+    nb = 2 * k
+    bl = d.block(2, 1.0, 1.0, 1.0 + a.gap, 2.0, 2.0, 2.0, nb, nb, nb)
+    d.node_set(1, [pl[i][j][0] for i in range(15 * k + 1) for j in range(5 * k + 1)])
+    d.node_set(2, [bl[i][j][m] for i in range(nb + 1) for j in range(nb + 1)
+                   for m in range(nb + 1)])
     d.w('*BOUNDARY_SPC_SET\n         1         0         1         1         1\n')
     d.w('*INITIAL_VELOCITY\n         2\n%10.4g       0.0       0.0\n' % a.v)
-    d.w('*DEFINE_CURVE\n         1\n%20.8g%20.8g\n%20.8g%20.8g\n' % (0.0, 1.0, 100 * tend, 1.0))
-    # top nodes: corner 1/16, edge 1/8, centre 1/4 of the load (consistent for a 2 x 2 face)
-    wts = {0: 0.25, 1: 0.5, 2: 0.25}
-    for i in range(3):
-        for j in range(3):
-            d.w('*LOAD_NODE_POINT\n%10d         3         1%10.6g\n'
-                % (bl[i][j][2], -a.F * wts[i] * wts[j]))
-    d.w('*DATABASE_HISTORY_NODE\n%10d\n' % bl[1][1][1])
+    # the curve carries the load (-F) when refined, so that the nodal scale factors (the
+    # weights) keep their digits in a 10-character field; k = 1 writes the scene deck as it was
+    cv = 1.0 if k == 1 else -a.F
+    d.w('*DEFINE_CURVE\n         1\n%20.8g%20.8g\n%20.8g%20.8g\n' % (0.0, cv, 100 * tend, cv))
+    # top nodes: consistent nodal loads of a uniform pressure on the nb x nb top face (for
+    # nb = 2: corner 1/16, edge 1/8, centre 1/4 of the load)
+    wts = [(0.5 if i in (0, nb) else 1.0) / nb for i in range(nb + 1)]
+    for i in range(nb + 1):
+        for j in range(nb + 1):
+            d.w('*LOAD_NODE_POINT\n%10d         3         1%10s\n'
+                % (bl[i][j][nb], '%.6g' % (-a.F * wts[i] * wts[j]) if k == 1 else
+                   ('%.8f' % (wts[i] * wts[j]))[:10]))
+    d.w('*DATABASE_HISTORY_NODE\n%10d\n' % bl[k][k][k])
     d.w('*CONTACT_SURFACE_TO_SURFACE_ID\n         7sliding block\n')
     d.w('$     SSID      MSID     SSTYP     MSTYP\n         2         1         3         3\n')
     d.w('$       FS        FD        DC        VC       VDC\n%10.4g%10.4g       0.0       0.0%10.4g\n'
@@ -318,6 +326,7 @@ def main():
     p.add_argument('--soft', action='store_true', help='SOFT = 1 (optional card A)')
     p.add_argument('--sofscl', type=float, default=0.1)
     p.add_argument('--death', type=float, default=0.0, help='DT (death time), 0: none')
+    p.add_argument('--vdc', type=float, default=0.0, help='VDC (% of critical damping)')
     p.add_argument('out')
     p = sub.add_parser('cubes')
     p.add_argument('--ncube', type=int, default=8)
@@ -348,6 +357,8 @@ def main():
     p.add_argument('--gap', type=float, default=0.0)
     p.add_argument('--vdc', type=float, default=20.0)
     p.add_argument('--tend', type=float, default=0.2)
+    p.add_argument('--refine', type=int, default=1, help='mesh refinement factor (studies)')
+    p.add_argument('--tssfac', type=float, default=0.9)
     p.add_argument('out')
     a = ap.parse_args()
     {'rod': rod, 'cubes': cubes, 'hertz': hertz, 'slide': slide}[a.cmd](a)

@@ -34,6 +34,8 @@ suite() {   # name, command...
 }
 suite layers python3 scripts/check_layers.py
 suite keywords-doc python3 scripts/check_keywords_doc.py
+# documented study numbers against reruns of the cheap rows and generated blocks (issue 23)
+suite study-docs /usr/bin/python3 scripts/doc_numbers.py --check
 # shellcheck disable=SC2086
 suite unit sh scripts/run_unit_tests.sh $unit
 # shellcheck disable=SC2086

@@ -38,6 +38,10 @@ module dx_explicit
    private
    public :: explicit_t, init_state, elem_label, explicit_rbdout
 
+   !> a run whose first step needs more cycles than this to its end time is warned about
+   !> (near-zero density or mass: docs/extreme-cases.md, "Summary")
+   real(wp), parameter :: CYCLES_WARN = 1.0e9_wp
+
    !> The explicit integrator: its work arrays for one cycle (the loop state is model%run).
    type, extends(integrator_t) :: explicit_t
       real(wp), allocatable :: vold(:, :), fext(:, :), vfree(:, :)
@@ -253,6 +257,15 @@ contains
          if (model%cycle == 0) then
             dt_first = dt
             if (model%ctrl%dtmin > 0.0_wp) tsmin = model%ctrl%dtmin*dt
+            ! near-zero mass (issue 23): the step scales as sqrt(rho), so a density typed a
+            ! few decades too small asks for more cycles than any run can take; say so once
+            if (tend < huge_wp .and. dt > 0.0_wp) then
+               if ((tend - t)/dt > CYCLES_WARN) call log_warn('the first time step '// &
+                  rstr(dt)//' (element '//str(elem_label(model))//') needs about '// &
+                  rstr((tend - t)/dt, 3)//' cycles to the end time '//rstr(tend)// &
+                  ': is a density or mass near zero (units)? *CONTROL_TERMINATION ENDCYC, '// &
+                  '*CONTROL_TIMESTEP DTMIN or DT2MS bound such a run')
+            end if
          end if
          if (.not. (dt > tsmin) .or. .not. ieee_is_finite(dt) .or. dt >= huge_wp) then
             call set_error(error, 'time step '//rstr(dt)//' at cycle '//str(model%cycle)// &
