@@ -20,11 +20,14 @@ module dx_launch
    use dx_par_agree, only: par_agree
    use dx_domain, only: domain_t
    use dx_out_lock, only: out_lock
-   use dx_cli, only: cli_t, die
+   use dx_cli, only: cli_t, die, die_usage
+   use dx_read_case, only: case_def_t, deck_cases
+   use dx_strings, only: command_arg
+   use dx_par, only: par_size
    implicit none
    private
    public :: launch_start, launch_check_only, launch_lock, launch_output, launch_run, &
-             launch_d3hsp
+             launch_d3hsp, launch_cases
 
 contains
 
@@ -41,6 +44,89 @@ contains
       cli%opts%ck%raise_here = cli%raise_rank < 0 .or. cli%raise_rank == par_rank()
       cli%opts%ck%ctl_here = par_rank() == 0      ! rank 0 reads OUT/dynx.ctl for all
    end subroutine launch_start
+
+   !> A multi-case deck (*CASE, dx_read_case) without --case: every case runs (or is
+   !> checked) in deck order as its own dynx process, `<this command> -o OUTDIR/JOBID
+   !> --case CASEID`, as LS-DYNA runs its cases one after another with files named after
+   !> JOBID; a case that fails stops the sequence (--check: every case is checked), and the
+   !> program ends here with the first nonzero exit code (0 when every case ended
+   !> normally). Serial only: under mpirun each case is started with --case (ranks cannot
+   !> start the children together). A deck without *CASE: returns at once.
+   subroutine launch_cases(cli)
+      type(cli_t), intent(in) :: cli
+      type(case_def_t), allocatable :: cases(:)
+      type(error_t), allocatable :: error
+      character(:), allocatable :: base, cmd, dir, done, exe
+      integer :: k, rc, cs, code
+      if (cli%case_id > 0) return
+      call deck_cases(cli%deck, cases, error)
+      if (allocated(error)) call die(error)
+      if (size(cases) == 0) return
+      if (par_size() > 1) then
+         call set_error(error, cli%deck//': a multi-case deck (*CASE) under MPI: start each '// &
+                        'case with --case ID (cases '//case_ids(cases)//')')
+         call die(error)
+      end if
+      if (len(cli%rfile) > 0) call die_usage('-r: a multi-case deck restarts one case: add '// &
+                                             '--case ID (cases '//case_ids(cases)//')')
+      call get_command_argument(0, length=k)
+      allocate(character(k) :: exe)
+      call get_command_argument(0, exe)
+      base = quoted(exe)
+      do k = 1, command_argument_count()
+         base = base//' '//quoted(command_arg(k))
+      end do
+      code = 0
+      done = ''
+      do k = 1, size(cases)
+         dir = cli%outdir//'/'//cases(k)%jobid
+         cmd = base//' -o '//quoted(dir)//' --case '//str(cases(k)%id)
+         call log_info('dynx: *CASE '//str(cases(k)%id)//' ('//cases(k)%jobid//', '// &
+                       str(k)//' of '//str(size(cases))//'): '//cmd)
+         flush(6)
+         call execute_command_line(cmd, exitstat=rc, cmdstat=cs)
+         if (cs /= 0) rc = EXIT_IO
+         done = done//new_line('a')//'  case '//str(cases(k)%id)//' '//cases(k)%jobid// &
+                ': exit '//str(rc)//' ('//dir//')'
+         if (rc /= 0 .and. code == 0) code = rc
+         if (rc /= 0 .and. .not. cli%check_only) then
+            if (k < size(cases)) done = done//new_line('a')//'  cases after '// &
+               str(cases(k)%id)//' not run (start them with --case ID)'
+            exit
+         end if
+      end do
+      call log_info('dynx: '//str(size(cases))//' *CASE load cases of '//cli%deck// &
+                    trim(merge(' checked', ' run    ', cli%check_only))//done)
+      call par_finalize()
+      call exit_process(code)
+   end subroutine launch_cases
+
+   function case_ids(cases) result(s)
+      type(case_def_t), intent(in) :: cases(:)
+      character(:), allocatable :: s
+      integer :: k
+      s = ''
+      do k = 1, size(cases)
+         if (k > 1) s = s//', '
+         s = s//str(cases(k)%id)
+      end do
+   end function case_ids
+
+   !> a word for sh: in single quotes, an inner ' as '\''
+   function quoted(a) result(q)
+      character(*), intent(in) :: a
+      character(:), allocatable :: q
+      integer :: i
+      q = "'"
+      do i = 1, len(a)
+         if (a(i:i) == "'") then
+            q = q//"'\''"
+         else
+            q = q//a(i:i)
+         end if
+      end do
+      q = q//"'"
+   end function quoted
 
    !> --check: the restart deck too when given, a summary, and the end of the program.
    subroutine launch_check_only(cli, model)
