@@ -258,9 +258,33 @@ contains
          end if
          call die(error, dom)
       end if
-      call log_info('dynx: results in '//cli%outdir//'/ (d3plot.h5, d3plot.xdmf'// &
-         trim(merge(', glstat', '        ', model%db%glstat_dt > 0.0_wp))//')')
+      call log_info('dynx: results in '//cli%outdir//'/ ('//files_written(cli%outdir)//')')
       call dom%report()
       call par_finalize()
    end subroutine launch_run
+
+   !> The files of a run in dir, for the end message (issue 21: every file, not glstat
+   !> only): the plot, the time histories and ASCII databases, d3hsp and messages, the
+   !> restart dumps, in that order, each that exists.
+   function files_written(dir) result(s)
+      character(*), intent(in) :: dir
+      character(:), allocatable :: s
+      character(len=*), parameter :: names(16) = [character(len=12) :: 'd3plot.h5', &
+         'd3plot.xdmf', 'glstat', 'nodout', 'rcforc', 'rbdout', 'matsum', 'spcforc', &
+         'sleout', 'elout', 'ncforc', 'emcstat', 'eigout', 'd3hsp', 'messages', 'runrsf.h5']
+      character(len=2) :: nn
+      logical :: there
+      integer :: k
+      s = ''
+      do k = 1, size(names)
+         inquire(file=dir//'/'//trim(names(k)), exist=there)
+         if (there) s = s//', '//trim(names(k))
+      end do
+      do k = 1, 99
+         write(nn, '(i2.2)') k
+         inquire(file=dir//'/d3dump'//nn//'.h5', exist=there)
+         if (there) s = s//', d3dump'//nn//'.h5'
+      end do
+      if (len(s) > 2) s = s(3:)
+   end function files_written
 end module dx_launch
