@@ -118,6 +118,9 @@ def known_keywords():
             if fn == 'dx_deck_cards.f90':   # structure keywords the card reader handles itself
                 names.update(re.findall(r"case \('([A-Z_]+)'\)", text))
                 names.update(re.findall(r"name [=/]= '([A-Z_]+)'", text))
+                # prefix tests (*CASE_BEGIN_n, *CASE_END_n: the scan drops the _n)
+                names.update(n.rstrip('_') for n in
+                             re.findall(r"index\(name, '([A-Z_]+)'\) == 1", text))
     # material and EOS keywords come from the model registry rows, with their *MAT_nnn aliases
     for fn in ('dx_mat_factory.f90',):
         fp = os.path.join(ROOT, 'src', 'materials', fn)
