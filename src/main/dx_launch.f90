@@ -60,13 +60,13 @@ contains
       integer :: k, rc, cs, code
       if (cli%case_id > 0) return
       call deck_cases(cli%deck, cases, error)
+      call par_agree(error)            ! MPI: every rank read the same deck: one message
       if (allocated(error)) call die(error)
       if (size(cases) == 0) return
-      if (par_size() > 1) then
-         call set_error(error, cli%deck//': a multi-case deck (*CASE) under MPI: start each '// &
-                        'case with --case ID (cases '//case_ids(cases)//')')
-         call die(error)
-      end if
+      if (par_size() > 1) call set_error(error, cli%deck//': a multi-case deck (*CASE) '// &
+         'under MPI: start each case with --case ID (cases '//case_ids(cases)//')')
+      call par_agree(error)            ! (every rank has it: one message, no abort)
+      if (allocated(error)) call die(error)
       if (len(cli%rfile) > 0) call die_usage('-r: a multi-case deck restarts one case: add '// &
                                              '--case ID (cases '//case_ids(cases)//')')
       call get_command_argument(0, length=k)
