@@ -64,7 +64,8 @@ contains
       if (allocated(error)) call die(error)
       if (size(cases) == 0) return
       if (par_size() > 1) call set_error(error, cli%deck//': a multi-case deck (*CASE) '// &
-         'under MPI: start each case with --case ID (cases '//case_ids(cases)//')')
+         'is not supported in an MPI run (it runs serially, one process per case): start each '// &
+         'case with --case ID (cases '//case_ids(cases)//')')
       call par_agree(error)            ! (every rank has it: one message, no abort)
       if (allocated(error)) call die(error)
       if (len(cli%rfile) > 0) call die_usage('-r: a multi-case deck restarts one case: add '// &
