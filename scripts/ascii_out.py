@@ -9,13 +9,22 @@ import sys
 NODOUT = {'disp': (2, 5), 'vel': (5, 8), 'acc': (8, 11), 'coor': (11, 14)}
 
 
+def is_row(line):
+    """A data row of a column file: its first word is a number (header lines start with '#',
+    or, the names line in gnuplot's columnhead form, with a name)."""
+    return line.lstrip()[:1] in tuple('+-.0123456789')
+
+
 def read_columns(path, node=None):
-    """Rows of a '#'-headed column file (glstat, nodout) keyed by time (first column), each a
-    dict column name -> value; with node, only the rows whose second column is that node."""
+    """Rows of a column file (glstat, nodout) keyed by time (first column), each a dict column
+    name -> value; with node, only the rows whose second column is that node. The names are
+    the last header line before the data: '# time ...' or, gnuplot's columnhead form, the
+    line 'time ...' without '#' (docs/output-format.md)."""
     cols, rows = None, {}
     for line in open(path):
-        if line.startswith('#'):
-            cols = line[1:].split()
+        if not is_row(line):
+            if line.strip():
+                cols = line.lstrip('#').split()
             continue
         w = line.split()
         if node is None or int(w[1]) == node:
@@ -24,10 +33,10 @@ def read_columns(path, node=None):
 
 
 def read_table(path):
-    """The number rows of a '#'-headed column file, in file order, each a list of floats."""
+    """The number rows of a column file, in file order, each a list of floats."""
     rows = []
     for line in open(path):
-        if line.startswith('#') or not line.strip():
+        if not is_row(line):
             continue
         rows.append([float(v) for v in line.split()])
     return rows

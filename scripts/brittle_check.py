@@ -25,8 +25,8 @@ import numpy as np
 
 
 def glstat(out):
-    g = np.loadtxt(out + '/glstat', ndmin=2)
-    cols = open(out + '/glstat').readlines()[2].split()[1:]
+    g = np.loadtxt([l for l in open(out + '/glstat') if l.lstrip()[:1] in tuple('+-.0123456789')], ndmin=2)
+    cols = open(out + '/glstat').readlines()[2].lstrip('#').split()   # '# time ...' or 'time ...'
     return g, (lambda n: g[:, cols.index(n)]), cols
 
 

@@ -63,7 +63,7 @@ def dynx_tip(out, node):
     last = None
     for line in open(os.path.join(out, 'nodout')):
         t = line.split()
-        if t and not line.startswith('#') and int(t[1]) == node:
+        if t and line.lstrip()[:1] in tuple('+-.0123456789') and int(t[1]) == node:
             last = t
     return -float(last[4])
 

@@ -28,9 +28,9 @@ echo "check_restart: seed $seed"
 fail=0
 
 if [ -f "$ref/glstat" ]; then
-    ncyc=$(awk '!/^#/ {c=$2} END {print c+0}' "$ref/glstat")
+    ncyc=$(awk '/^ *[-+.0-9]/ {c=$2} END {print c+0}' "$ref/glstat")
 else   # conserving rigid-body solver: emcstat, cycle in column 1
-    ncyc=$(awk '!/^#/ {c=$1} END {print c+0}' "$ref/emcstat")
+    ncyc=$(awk '/^ *[-+.0-9]/ {c=$1} END {print c+0}' "$ref/emcstat")
 fi
 if [ "$ncyc" -lt 3 ]; then echo "check_restart: reference has $ncyc cycles"; exit 1; fi
 

@@ -45,7 +45,7 @@ mo="--oversubscribe --mca mpi_yield_when_idle 1"
 echo "check_restart_mpi: NP $np, seed $seed"
 fail=0
 
-ncyc=$(awk '!/^#/ {c=$2} END {print c+0}' "$ref/glstat")
+ncyc=$(awk '/^ *[-+.0-9]/ {c=$2} END {print c+0}' "$ref/glstat")
 if [ "$ncyc" -lt 3 ]; then echo "check_restart_mpi: reference has $ncyc cycles"; exit 1; fi
 
 # DYNX_RESTART_WINDOW="LO HI": draw the stop/dump cycles of cycle, usr1 and serial from

@@ -14,8 +14,10 @@ import argparse, math, os, sys
 def table(path):
     names, rows = None, []
     for line in open(path):
-        if line.startswith('#'):
-            toks = line[1:].split()
+        if line.lstrip()[:1] not in tuple('+-.0123456789'):
+            # a header line: '# time ...' or the names line without '#' (gnuplot's
+            # columnhead form, docs/output-format.md)
+            toks = line.lstrip('#').split()
             if toks and toks[0] == 'time':
                 names = toks
             continue

@@ -31,7 +31,7 @@ def main():
     rows = []
     with open(a.outdir + '/emcstat') as f:
         for line in f:
-            if not line.startswith('#') and line.strip():
+            if line.lstrip()[:1] in tuple('+-.0123456789') and line.strip():
                 rows.append([float(x) for x in line.split()])
     x1 = [r[14] for r in rows]
     x2 = [r[20] for r in rows]

@@ -35,7 +35,7 @@ def main():
     rows = []
     with open(a.outdir + '/emcstat') as f:
         for line in f:
-            if line.startswith('#') or not line.strip():
+            if line.lstrip()[:1] not in tuple('+-.0123456789'):
                 continue
             rows.append([float(x) for x in line.split()])
     if len(rows) < 2:

@@ -33,7 +33,7 @@ def velocities(d):
     rows = []
     with open(os.path.join(d, 'emcstat')) as f:
         for line in f:
-            if not line.startswith('#') and line.strip():
+            if line.lstrip()[:1] in tuple('+-.0123456789') and line.strip():
                 rows.append([float(x) for x in line.split()])
     (t1, x1), (t2, x2) = (rows[-2][1], rows[-2][14]), (rows[-1][1], rows[-1][14])
     (y1, y2) = rows[-2][20], rows[-1][20]

@@ -95,7 +95,7 @@ def main():
     rows = []
     with open(a.outdir + '/emcstat') as f:
         for line in f:
-            if not line.startswith('#') and line.strip():
+            if line.lstrip()[:1] in tuple('+-.0123456789') and line.strip():
                 rows.append([float(x) for x in line.split()])
     rho = rho_inf(a.alpha, a.gamma, a.beta)
     chi = (1.0 - rho) / (2.0 * (1.0 + rho))

@@ -14,6 +14,12 @@ if [ "$(id -u)" -ne 0 ]; then
     # without root: say exactly what to run, change nothing
     echo "dynx: missing Debian packages:$missing" >&2
     echo "dynx: as root, run:  apt-get update && $line" >&2
+    echo "dynx: without root: ask the administrator to run that line; or build inside a" >&2
+    echo "dynx:   container (podman or docker: 'podman run -it -v \$PWD:/dynx -w /dynx debian:12'," >&2
+    echo "dynx:   then the line above and 'make run' as the container's root); or install the" >&2
+    echo "dynx:   libraries in your home with Spack ('spack install openmpi hdf5+fortran+mpi" >&2
+    echo "dynx:   metis mumps arpack-ng fftw', then 'spack load' them) and build with" >&2
+    echo "dynx:   'make all' (the Makefile takes h5pfc from PATH); docs/manual/README.md, 1." >&2
     exit 2
 fi
 echo "dynx: installing missing Debian packages:$missing"

@@ -77,11 +77,15 @@ def check_table(path, ncol=None):
     if data and not data.endswith(b'\n'):
         return 'does not end with a newline (partial line)'
     ncol_header = ncol is None
+    seen_row = False
     for i, l in enumerate(data.decode().splitlines()):
-        if l.startswith('#'):
+        # header lines: '#' lines, and before the first row the names line without '#'
+        # (gnuplot's columnhead form); after the rows, only '#' lines are not data
+        if l.startswith('#') or (not seen_row and l.lstrip()[:1] not in tuple('+-.0123456789')):
             if ncol_header:
-                ncol = len(l[1:].split())
+                ncol = len(l.lstrip('#').split())
             continue
+        seen_row = True
         f = l.split()
         if len(f) != ncol:
             return 'line %d has %d columns, expected %d' % (i + 1, len(f), ncol)

@@ -26,8 +26,8 @@ def glstat(outdir):
     cols, rows = None, []
     with open(outdir + '/glstat') as f:
         for line in f:
-            if line.startswith('#'):
-                cols = line[1:].split()
+            if line.lstrip()[:1] not in tuple('+-.0123456789'):
+                cols = line.lstrip('#').split()   # '# time ...' or 'time ...' (columnhead form)
             else:
                 rows.append(dict(zip(cols, [float(x) for x in line.split()])))
     return rows

@@ -24,6 +24,7 @@ for dir in tests/regression/*/; do
     case $c in mpi_*|bad_*) continue ;; esac
     case $c in $MATCH) ;; *) continue ;; esac
     case $c in implicit_*|eigen_*) echo "SKIP $c (the implicit Newton solver and the eigenvalue run are serial only)"; ns=$((ns + 1)); continue ;; esac
+    grep -qi '^\*CASE' "$dir/deck.k" && { echo "SKIP $c (a *CASE deck: one serial process per case; under MPI each case is started with --case)"; ns=$((ns + 1)); continue; }
     [ -f "$dir/args" ] && { echo "SKIP $c (extra arguments: $(cat "$dir/args"))"; ns=$((ns + 1)); continue; }
     ref=$work/$c
     mkdir -p "$ref"

@@ -17,7 +17,7 @@ python3 - "$ref/rcforc" "$fmin" <<'PY' || exit 1
 import sys
 fmax, nact = 0.0, 0
 for line in open(sys.argv[1]):
-    if line.startswith('#'):
+    if line.lstrip()[:1] not in tuple('+-.0123456789'):
         continue
     w = line.split()
     fmax = max(fmax, sum(float(v)**2 for v in w[2:5])**0.5)

@@ -10,7 +10,7 @@
 set -u
 deck=$1; out=$2; minc=$3; shift 3
 nps=${*:-1 2 3 4}
-nc=$(awk '!/^#/ && $14 > 0 {n++} END {print n + 0}' "$out/emcstat")
+nc=$(awk '/^ *[-+.0-9]/ && $14 > 0 {n++} END {print n + 0}' "$out/emcstat")
 if [ "$nc" -lt "$minc" ]; then echo "FAIL: $nc emcstat lines in contact (want >= $minc)"; exit 1; fi
 echo "serial run: $nc emcstat lines in contact (>= $minc)"
 sh scripts/mpi_bitwise_check.sh "$deck" "$out" $nps || exit 1

@@ -46,7 +46,7 @@ def main():
     blocks = read_ncforc(out + '/ncforc')
     rc = {}
     for line in open(out + '/rcforc'):
-        if line.startswith('#'):
+        if line.lstrip()[:1] not in tuple('+-.0123456789'):
             continue
         v = line.split()
         rc[(float(v[0]), int(v[1]))] = ([float(x) for x in v[2:5]], [float(x) for x in v[5:8]])

@@ -40,14 +40,14 @@ def read_rbdout(d):
             hdr[int(p[2])] = dict(nodes=int(p[4]), mass=float(p[6]),
                                   xc=np.array([float(v) for v in p[8:11]]),
                                   inertia=np.array([float(v) for v in p[-6:]]))
-        elif not line.startswith('#'):
+        elif line.lstrip()[:1] in tuple('+-.0123456789'):
             rows.append([float(v) for v in line.split()])
     return hdr, np.array(rows)
 
 
 def read_glstat(d):
     return np.array([[float(v) for v in l.split()] for l in open(d + '/glstat')
-                     if not l.startswith('#')])
+                     if l.lstrip()[:1] in tuple('+-.0123456789')])
 
 
 def result(name, value, tol, ok):
@@ -135,7 +135,7 @@ def fall(a):
     ok &= result('velocity v_c(t + dt/2) (rel)', ev, a.tol, ev <= a.tol)
     if a.node_x0 is not None:
         rows = np.array([[float(v) for v in l.split()] for l in open(a.outdir + '/nodout')
-                         if not l.startswith('#')])
+                         if l.lstrip()[:1] in tuple('+-.0123456789')])
         tn = rows[:, 0]
         xe = np.array(a.node_x0) + np.outer(tn, v0) + 0.5 * np.outer(tn * tn, g)
         en = np.max(np.abs(rows[:, 11:14] - xe)) / np.max(np.abs(xe))

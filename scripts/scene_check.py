@@ -33,12 +33,12 @@ import numpy as np
 
 def read_rbdout(d):
     return np.array([[float(v) for v in l.split()] for l in open(d + '/rbdout')
-                     if not l.startswith('#')])
+                     if l.lstrip()[:1] in tuple('+-.0123456789')])
 
 
 def read_glstat(d):
     return np.array([[float(v) for v in l.split()] for l in open(d + '/glstat')
-                     if not l.startswith('#')])
+                     if l.lstrip()[:1] in tuple('+-.0123456789')])
 
 
 def result(name, value, tol, ok):
@@ -106,7 +106,7 @@ def box(a):
     r = read_rbdout(a.outdir)
     r = r[r[:, 1] == a.body]
     rc = np.array([[float(v) for v in l.split()] for l in open(a.outdir + '/rcforc')
-                   if not l.startswith('#')])
+                   if l.lstrip()[:1] in tuple('+-.0123456789')])
     t, ke = r[:, 0], r[:, 17]
     # contact state at the rbdout times: the rcforc row at the same output time
     # (nearest rcforc row; a contact between two output times is caught by either

@@ -36,7 +36,7 @@ dx = 3 * H / nx
 sig = rho * c * V / 2
 dtb = a.impulse / (sig - a.sigth) ** a.lam
 t_arr, t_sp, t_ret = 2 * H / c, 3 * H / c + dtb, 4 * H / c + dtb
-d = np.loadtxt(a.out + '/nodout')
+d = np.loadtxt([l for l in open(a.out + '/nodout') if l.lstrip()[:1] in tuple('+-.0123456789')])
 fs = d[d[:, 1] == nx + 1]
 t, u = fs[:, 0], fs[:, 5]
 i_arr = np.nonzero(u >= V / 2)[0][0]
@@ -44,7 +44,7 @@ plateau = u[(t > t_arr + 0.25 * H / c) & (t < 4 * H / c - 0.25 * H / c)].mean()
 after = np.nonzero((t > 4 * H / c) & (u < V / 2))[0]
 i_ret = np.nonzero((t > t[after[0]]) & (u >= V / 2))[0][0] if len(after) else None
 u_min = u[(t > 4 * H / c - 0.25 * H / c) & (t < t_ret + H / c)].min()
-g = np.loadtxt(a.out + '/glstat')
+g = np.loadtxt([l for l in open(a.out + '/glstat') if l.lstrip()[:1] in tuple('+-.0123456789')])
 j = np.nonzero(g[:, 14] > 0)[0]
 f = h5py.File(a.out + '/d3plot.h5', 'r')
 states = sorted(k for k in f['states'] if k != 'times')

@@ -122,7 +122,7 @@ def wave(build, docs):
         xfref = num(r'front position \[mm\]\s+\S+\s+reference\s+([0-9.Ee+-]+)', out)
         over = num(r'overshoot \(min/plateau - 1\)\s+([0-9.Ee+-]+)', out)
         ahead = num(r'stress ahead of front \[GPa\]\s+([0-9.Ee+-]+)', out)
-        prof = [[float(v) for v in l.split()] for l in open(csv) if not l.startswith('#')]
+        prof = [[float(v) for v in l.split()] for l in open(csv) if l.lstrip()[:1] in tuple('+-.0123456789')]
         l1 = sum(h * abs(sg - sa) for _, sg, sa in prof) / abs(plref)
         courant = CL * t / r['cycles'] / h
 

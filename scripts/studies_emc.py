@@ -53,7 +53,7 @@ def emcstat(d):
     rows = []
     with open(os.path.join(d, 'emcstat')) as f:
         for line in f:
-            if not line.startswith('#') and line.strip():
+            if line.lstrip()[:1] in tuple('+-.0123456789') and line.strip():
                 rows.append([float(x) for x in line.split()])
     return rows
 
@@ -152,7 +152,7 @@ def main():
     exr = []
     with open(os.path.join(ex['dir'], 'glstat')) as f:
         for line in f:
-            if not line.startswith('#') and line.strip():
+            if line.lstrip()[:1] in tuple('+-.0123456789') and line.strip():
                 exr.append([float(x) for x in line.split()])
     with open(os.path.join(DATA, 'emc_ballbox_energy_explicit.dat'), 'w') as f:
         f.write('# time |ratio - 1| (explicit penalty, glstat energy ratio) ke/ke0\n')

@@ -31,7 +31,7 @@ print(int(f['states/' + s + '/failed'][:].sum()))")
 done
 /usr/bin/python3 - "$tab" > $D/spall.md <<'PY'
 import sys, math
-rows = [l.split() for l in open(sys.argv[1]) if not l.startswith('#')]
+rows = [l.split() for l in open(sys.argv[1]) if l.lstrip()[:1] in tuple('+-.0123456789')]
 print('# Spall plate impact: errors against the mesh\n')
 print('Written by `scripts/studies_spall.sh` (`make studies`). The deck of '
       '`tests/regression/spall_plate_impact` (flyer 2 mm at 200 m/s on a 4 mm target of '

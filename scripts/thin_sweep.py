@@ -88,7 +88,7 @@ def glstat(path):
     rows = []
     with open(path) as f:
         for line in f:
-            if line.startswith('#') or not line.strip():
+            if line.lstrip()[:1] not in tuple('+-.0123456789'):
                 continue
             rows.append([float(x) for x in line.split()])
     return rows

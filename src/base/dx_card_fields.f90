@@ -41,6 +41,7 @@ module dx_card_fields
       logical :: long = .false.             !< 20-column fields
       integer :: ifile = 0, line = 0        !< file index and line of the keyword line
       integer :: n = 0                      !< cards in use
+      integer :: scid = 0                   !< *CASE subcase of the block (0: every case)
       type(card_line_t), allocatable :: cards(:)
    end type block_t
 

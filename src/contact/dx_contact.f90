@@ -412,7 +412,7 @@ contains
          cs%rcforc_open = .true.
          write(cs%rcforc_unit, '(a)', iostat=ios) '# dynx rcforc', &
             '# resultant contact forces per interface (slave side, master side)', &
-            '# time contact_id slave_x slave_y slave_z master_x master_y master_z nactive'
+            'time contact_id slave_x slave_y slave_z master_x master_y master_z nactive'
       end if
       do i = 1, size(cs%iface)
          write(cs%rcforc_unit, '(es18.10e3, 1x, i10, 6(1x, es18.10e3), 1x, i10)', &

@@ -26,6 +26,7 @@ module dx_deck
    use dx_read_output, only: register_output
    use dx_read_beams, only: register_beams
    use dx_read_twod, only: register_twod
+   use dx_read_case, only: register_case, case_def_t, deck_cases, case_list_text
    use dx_model_input, only: model_input_t, input_init, input_finish
    use dx_card_echo, only: echo_t
    implicit none
@@ -53,6 +54,7 @@ contains
       call register_implicit(reg)
       call register_output(reg)
       call register_twod(reg)
+      call register_case(reg)
    end function new_registry
 
    !> Read the deck at path into the unresolved model input (no build).
@@ -62,12 +64,16 @@ contains
    !> past unknown keywords and reader errors and the error lists all of them, grouped by
    !> family (dx_deck_check), with the output requests dynx accepts but does not write.
    !> echo (d3hsp): every keyword block and every field its reader took (dx_card_echo).
-   subroutine read_deck_input(path, inp, error, ignore_unknown, check, echo)
+   !> case_id: the *CASE to read (its subcases' keywords and those outside any subcase);
+   !> a deck with subcases read without one is an error (dynx never merges the cases).
+   subroutine read_deck_input(path, inp, error, ignore_unknown, check, echo, case_id)
       character(*), intent(in) :: path
       type(model_input_t), intent(out) :: inp
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: ignore_unknown, check
       type(echo_t), intent(inout), target, optional :: echo
+      integer, intent(in), optional :: case_id
+      type(case_def_t), allocatable :: cases(:)
       type(deck_t) :: deck
       type(registry_t) :: reg
       type(check_list_t) :: found
@@ -79,8 +85,36 @@ contains
       checking = .false.
       if (present(check)) checking = check
       call input_init(inp)
-      call read_cards(path, deck, error)
+      k = 0
+      if (present(case_id)) k = case_id
+      if (k > 0) then
+         call deck_cases(path, cases, error)
+         if (allocated(error)) return
+         ib = findloc(cases%id, k, 1)
+         if (ib == 0) then
+            if (size(cases) == 0) then
+               call set_error(error, path//': --case '//str(k)//': the deck has no *CASE')
+            else
+               call set_error(error, path//': --case '//str(k)//': the deck has no *CASE '// &
+                              'with CASEID '//str(k)//' (cases: '//case_list_text(cases)//')')
+            end if
+            return
+         end if
+         call read_cards(path, deck, error, cases(ib)%scids)
+      else
+         call read_cards(path, deck, error)
+      end if
       if (allocated(error)) return
+      if (k == 0 .and. deck%has_subcases) then
+         do ib = 1, deck%nblocks
+            if (deck%blocks(ib)%scid == 0) cycle
+            call set_error(error, deck%files(deck%blocks(ib)%ifile)%s//':'// &
+               str(deck%blocks(ib)%line)//': *'//deck%blocks(ib)%name//' belongs to *CASE '// &
+               'subcase '//str(deck%blocks(ib)%scid)//': a multi-case deck is read one case '// &
+               'at a time (bin/dynx runs every case in turn; --case ID runs one)')
+            return
+         end do
+      end if
       deck%check = checking
       if (present(echo)) deck%echo => echo
       reg = new_registry()
@@ -90,7 +124,7 @@ contains
             call reg%lookup(blk%name, k, blk%base, blk%opt_title, blk%opt_id)
             if (k == 0) then
                if (checking) then
-                  call found%record(blk%name, '*'//blk%name//case_hint(blk%name), where)
+                  call found%record(blk%name, '*'//blk%name, where)
                   cycle
                end if
                if (ignore .and. keyword_skippable(blk%name)) then
@@ -101,13 +135,13 @@ contains
                end if
                if (ignore) then
                   call set_error(error, where//': unknown keyword *'//blk%name// &
-                     unknown_model_hint(blk%name)//case_hint(blk%name)//': a '// &
+                     unknown_model_hint(blk%name)//': a '// &
                      keyword_family(blk%name)// &
                      ' keyword is not skipped by --ignore-unknown (only output and '// &
                      'performance keywords are: skipping it would change the problem)')
                else
                   call set_error(error, where//': unknown keyword *'//blk%name// &
-                     unknown_model_hint(blk%name)//case_hint(blk%name)// &
+                     unknown_model_hint(blk%name)// &
                      ' (dynx --check lists every '// &
                      'unsupported keyword and option of the deck at once)')
                end if
@@ -202,19 +236,4 @@ contains
       end if
       call found%record(name, first, where)
    end subroutine add_reader_error
-   !> What an unknown *CASE keyword means (LS-DYNA Keyword User's Manual Vol. I, *CASE): a
-   !> multi-case deck runs its cases one after another, each with the keywords between its
-   !> *CASE_BEGIN_n and *CASE_END_n; dynx runs one problem per deck and never merges the
-   !> cases (skipping the tags would apply every case's keywords at once).
-   function case_hint(name) result(s)
-      character(*), intent(in) :: name
-      character(:), allocatable :: s
-      s = ''
-      if (name == 'CASE') then
-         s = ' (a multi-case deck: LS-DYNA runs each case one after another; dynx runs one '// &
-             'case per deck and does not merge them: write one deck per case)'
-      else if (index(name, 'CASE_BEGIN_') == 1) then
-         s = ' (the keywords of case '//name(12:)//' only, up to *CASE_END_'//name(12:)//')'
-      end if
-   end function case_hint
 end module dx_deck

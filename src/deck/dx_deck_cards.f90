@@ -44,17 +44,32 @@ module dx_deck_cards
       integer, allocatable :: trailing(:)
       type(string_t), allocatable :: paths(:)   !< *INCLUDE_PATH(_RELATIVE) directories
       type(echo_t), pointer :: echo => null()   !< the d3hsp echo the cursors write (null: none)
+      !> *CASE: the subcase of the *CASE_BEGIN_n ... *CASE_END_n the reading is in (0: none),
+      !> where it began, whether any block belongs to a subcase, and the subcases of the
+      !> selected case (allocated: a case is selected; blocks of other subcases are dropped)
+      integer :: cur_scid = 0, scid_file = 0, scid_line = 0
+      logical :: has_subcases = .false.
+      integer, allocatable :: active(:)
    end type deck_t
 
 contains
 
-   !> Read the deck file path and its includes into deck.
-   subroutine read_cards(path, deck, error)
+   !> Read the deck file path and its includes into deck. active: the subcases (*CASE SCIDs)
+   !> of the case being read; the blocks between *CASE_BEGIN_n and *CASE_END_n (or with
+   !> CID=n on their keyword line) of any other subcase n are dropped, includes and
+   !> parameters too. Without active every block is kept with its subcase (block_t%scid).
+   subroutine read_cards(path, deck, error, active)
       character(*), intent(in) :: path
       type(deck_t), intent(out) :: deck
       type(error_t), allocatable, intent(out) :: error
+      integer, intent(in), optional :: active(:)
       allocate(deck%files(4), deck%blocks(64), deck%params(8), deck%trailing(64), deck%paths(0))
+      if (present(active)) deck%active = active
       call read_file(path, deck, 0, 0, 0, error)
+      if (allocated(error)) return
+      if (deck%cur_scid /= 0) call set_error(error, deck%files(deck%scid_file)%s//':'// &
+         str(deck%scid_line)//': *CASE_BEGIN_'//str(deck%cur_scid)//' has no *CASE_END_'// &
+         str(deck%cur_scid))
    end subroutine read_cards
 
    recursive subroutine read_file(path, deck, depth, from_file, from_line, error)
@@ -209,6 +224,26 @@ contains
             ': the I10 format (''%'' suffix) is not supported')
          return
       end if
+      if (index(name, 'CASE_BEGIN_') == 1 .or. index(name, 'CASE_END_') == 1) then
+         call case_tag(deck, name, ifile, lineno, error)
+         blk%name = 'CASE_TAG'         ! no block: the tag only opens or closes a subcase
+         return
+      end if
+      blk%scid = deck%cur_scid
+      do while (len(tok) > 0)       ! CID=n: this keyword belongs to subcase n only
+         if (len(tok) > 4) then
+            if (tok(1:4) == 'CID=') then
+               read(tok(5:), *, iostat=k) blk%scid
+               if (k /= 0 .or. blk%scid <= 0 .or. verify(tok(5:), '0123456789') /= 0) then
+                  call set_error(error, deck%files(ifile)%s//':'//str(lineno)//': *'//name// &
+                     ': CID= needs a positive subcase number (*CASE_BEGIN_n), got '//tok(5:))
+                  return
+               end if
+            end if
+         end if
+         call next_token(rest, tok)
+      end do
+      if (blk%scid /= 0) deck%has_subcases = .true.
       blk%name = name
       blk%ifile = ifile
       blk%line = lineno
@@ -219,6 +254,47 @@ contains
       blk%n = 0
       have_block = name /= 'END'
    end subroutine start_block
+
+   !> *CASE_BEGIN_n opens subcase n (the blocks up to *CASE_END_n belong to it; no nesting),
+   !> *CASE_END_n closes it (LS-DYNA Keyword User's Manual Vol. I, *CASE).
+   subroutine case_tag(deck, name, ifile, lineno, error)
+      type(deck_t), intent(inout) :: deck
+      character(*), intent(in) :: name
+      integer, intent(in) :: ifile, lineno
+      type(error_t), allocatable, intent(out) :: error
+      integer :: n, ios
+      character(:), allocatable :: tail, here
+      here = deck%files(ifile)%s//':'//str(lineno)//': *'//name//': '
+      tail = name(index(name, '_', back=.true.) + 1:)
+      n = 0
+      ios = 1
+      if (len(tail) > 0 .and. verify(tail, '0123456789') == 0) read(tail, *, iostat=ios) n
+      if (ios /= 0 .or. n <= 0) then
+         call set_error(error, here//'the subcase number after the last _ must be a '// &
+            'positive integer (*CASE_BEGIN_n ... *CASE_END_n)')
+      else if (name(6:6) == 'B') then
+         if (deck%cur_scid /= 0) then
+            call set_error(error, here//'subcase '//str(deck%cur_scid)//' (begun at '// &
+               deck%files(deck%scid_file)%s//':'//str(deck%scid_line)//') is still open: '// &
+               'close it with *CASE_END_'//str(deck%cur_scid)//' first (no nesting)')
+            return
+         end if
+         deck%cur_scid = n
+         deck%scid_file = ifile
+         deck%scid_line = lineno
+         deck%has_subcases = .true.
+      else if (deck%cur_scid /= n) then
+         if (deck%cur_scid == 0) then
+            call set_error(error, here//'no *CASE_BEGIN_'//str(n)//' is open')
+         else
+            call set_error(error, here//'subcase '//str(deck%cur_scid)//' is open (begun at '// &
+               deck%files(deck%scid_file)%s//':'//str(deck%scid_line)//'): close it with '// &
+               '*CASE_END_'//str(deck%cur_scid))
+         end if
+      else
+         deck%cur_scid = 0
+      end if
+   end subroutine case_tag
 
    !> Split off the next blank-separated token of s.
    subroutine next_token(s, tok)
@@ -270,6 +346,10 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: i, nblank
       character(:), allocatable :: fname
+      if (blk%name == 'CASE_TAG') return
+      if (blk%scid /= 0 .and. allocated(deck%active)) then
+         if (.not. any(deck%active == blk%scid)) return     ! another case's keyword
+      end if
       ! trailing blank cards are layout, not data (but see deck%trailing)
       nblank = 0
       do while (blk%n > 0)
@@ -381,6 +461,7 @@ contains
       b%ifile = a%ifile
       b%line = a%line
       b%n = a%n
+      b%scid = a%scid
       call move_alloc(a%cards, b%cards)
    end subroutine move_block
 

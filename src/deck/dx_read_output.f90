@@ -10,7 +10,8 @@
 !>   *CONTROL_OUTPUT (5 cards of print and output flags)
 !>   *CONTROL_SOLUTION SOLN NLQ ISNAN LCINT LCACC NCDCF NOCOP
 !>   *CONTROL_PARALLEL NCPU NUMRHS CONST PARA; *CONTROL_MPP_IO_NODUMP; *CONTROL_UNITS;
-!>   *KEYWORD_ID (deck labels)
+!>   *KEYWORD_ID (deck labels); *CONTACT_FORCE_TRANSDUCER_PENALTY/_CONSTRAINT (card 1
+!>     checked; its rcforc rows are not written: a transducer applies no force)
 !>   *DATABASE_EXTENT_BINARY (4 cards), *DATABASE_FORMAT IFORM IBINARY
 !>   *DATABASE_<ascii> DT BINARY LCUR IOOPT for the ASCII files dynx does not write
 !>     (bndout, jntforc, deforc, nodfor, secforc, rwforc, tprint),
@@ -51,6 +52,8 @@ contains
       call reg%add('DATABASE_BINARY_D3THDT', read_d3thdt)
       call reg%add('DATABASE_BINARY_D3PROP', read_d3prop)
       call reg%add('KEYWORD_ID', read_keyword_id)
+      call reg%add('CONTACT_FORCE_TRANSDUCER_PENALTY', read_transducer)
+      call reg%add('CONTACT_FORCE_TRANSDUCER_CONSTRAINT', read_transducer)
       ! the ASCII databases dynx does not write yet (the file is named after the keyword)
       call reg%add('DATABASE_ELOUT', read_ascii_written)
       call reg%add('DATABASE_SLEOUT', read_ascii_written)
@@ -435,6 +438,38 @@ contains
       if (allocated(error)) return
       if (dt > 0.0_wp .or. lcdt > 0) call add_out_note(deck, blk, inp, 'd3thdt')
    end subroutine read_d3thdt
+
+   !> *CONTACT_FORCE_TRANSDUCER_PENALTY / _CONSTRAINT: card 1 SURFA SURFB SURFATYP SURFBTYP
+   !> SABOXID SBBOXID SAPR SBPR, cards 2-3 the common contact cards (unused by a
+   !> transducer). A transducer applies no force: it sums the forces the other contacts
+   !> put on its surface into LS-DYNA's rcforc, so it cannot change the mechanics; dynx
+   !> checks card 1 and notes that its rcforc rows are not written.
+   subroutine read_transducer(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      type(card_t) :: c
+      integer :: ssid, styp, v
+      call deck_cursor(deck, blk, c)
+      call c%max_cards(data_start(blk) + 2)
+      call c%need(1, 'missing card 1 (SURFA SURFB SURFATYP SURFBTYP ...)')
+      call c%int('SURFA', 0, ssid, min=0)
+      call c%int('SURFB', 0, v, min=0)
+      call c%int('SURFATYP', 0, styp, min=0, max=6)
+      call c%int('SURFBTYP', 0, v, min=0, max=6)
+      call c%int('SABOXID', 0, v)
+      call c%int('SBBOXID', 0, v)
+      call c%int('SAPR', 0, v, min=0, max=2)
+      call c%int('SBPR', 0, v, min=0, max=2)
+      if (c%ok() .and. ssid == 0) call c%fail('SURFA', 'a force transducer needs the '// &
+                                              'surface it measures (SURFA > 0)')
+      call c%done(error)
+      if (allocated(error)) return
+      call add_out_note(deck, blk, inp, 'rcforc rows', 'not written (a transducer '// &
+         'measures the other contacts'' forces on its surface and applies none: the '// &
+         'mechanics are unchanged)')
+   end subroutine read_transducer
 
    !> *DATABASE_BINARY_D3PROP: IFILE IMATL IWALL (material and wall properties written to
    !> d3prop or to the d3plot files): dynx's d3plot.h5 holds the parts; d3prop is noted as

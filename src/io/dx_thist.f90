@@ -60,7 +60,10 @@ contains
       if (model%erodes) cols = cols//GLSTAT_ERO_COLUMNS
    end function glstat_run_columns
 
-   !> Create path and write the header: '# dynx <what>', '# title: ...', '# <columns>'
+   !> Create path and write the header: '# dynx <what>', '# title: ...', '<columns>': the
+   !> names line without '#', so that gnuplot's `set key autotitle columnhead` (which skips
+   !> '#' lines) names the columns (issue 21; the readers take both forms:
+   !> docs/output-format.md, "Column files")
    !> (header: these lines instead, for the files that keep LS-DYNA's own layout).
    subroutine thist_open(self, path, what, title, columns, error, header)
       class(thist_file_t), intent(inout) :: self
@@ -80,7 +83,7 @@ contains
       if (allocated(error)) return
       call put_line(self, '# title: '//trim(title), error)
       if (allocated(error)) return
-      call put_line(self, '# '//columns, error)
+      call put_line(self, columns, error)
    end subroutine thist_open
 
    !> Continue a file from a restart point: cut it back to its first nbytes bytes (the

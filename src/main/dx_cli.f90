@@ -7,7 +7,7 @@ module dx_cli
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use dx_kinds, only: wp
    use dx_error, only: error_t, EXIT_INPUT, exit_process
-   use dx_strings, only: rstr, command_arg, lower
+   use dx_strings, only: str, rstr, command_arg, lower
    use dx_log, only: log_info, log_error
    use dx_io_sys, only: sys_epoch_seconds
    use dx_timer, only: wall_time
@@ -32,6 +32,7 @@ module dx_cli
       logical :: ignore_unknown = .false.    !< --ignore-unknown
       integer :: raise_rank = -1             !< --raise-at-cycle @R (-1: every rank raises)
       character(:), allocatable :: csplit    !< --contact-split ('': DYNX_PAR_CONTACT, owner)
+      integer :: case_id = 0                 !< --case: the *CASE to run (0: every case)
       type(run_options_t) :: opts            !< status lines, checkpoints, signals
    end type cli_t
 
@@ -68,6 +69,11 @@ contains
                call die_usage('--status needs a positive integer')
          case ('--check')
             cli%check_only = .true.
+         case ('--case')
+            i = i + 1; val = get_arg(i)
+            read(val, *, iostat=ios) cli%case_id
+            if (ios /= 0 .or. cli%case_id < 1 .or. verify(val, '0123456789') /= 0) &
+               call die_usage('--case needs a positive CASEID of the deck''s *CASE, not '//val)
          case ('--part')
             i = i + 1; cli%partdir = get_arg(i)
          case ('-r', '--restart')
@@ -126,6 +132,7 @@ contains
       cli%opts%outdir = cli%outdir
       cli%opts%ck%outdir = cli%outdir
       cli%opts%ck%deck = cli%deck
+      if (cli%case_id > 0) cli%opts%ck%deck = cli%deck//' --case '//str(cli%case_id)
       call slurm_limit(cli%opts%ck%walltime)
    end subroutine parse_cli
 
@@ -174,6 +181,9 @@ contains
          '  --check              read and check the deck, print a summary, do not run; lists', &
          '                       every unknown keyword and unsupported option at once,', &
          '                       grouped by family, and exits 2 if there is any', &
+         '  --case ID            a multi-case deck (*CASE): run (or check) only the case', &
+         '                       CASEID ID, in DIR; without it every case runs in turn, each', &
+         '                       in DIR/JOBID (serial; under MPI give --case)', &
          '  --part DIR           MPI runs: the rank files (dynx-part) are DIR/rank_R.h5', &
          '                       (default: the output directory, else next to the deck;', &
          '                       rank 0 partitions into the output directory if none)', &

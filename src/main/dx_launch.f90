@@ -20,11 +20,14 @@ module dx_launch
    use dx_par_agree, only: par_agree
    use dx_domain, only: domain_t
    use dx_out_lock, only: out_lock
-   use dx_cli, only: cli_t, die
+   use dx_cli, only: cli_t, die, die_usage
+   use dx_read_case, only: case_def_t, deck_cases
+   use dx_strings, only: command_arg
+   use dx_par, only: par_size
    implicit none
    private
    public :: launch_start, launch_check_only, launch_lock, launch_output, launch_run, &
-             launch_d3hsp
+             launch_d3hsp, launch_cases
 
 contains
 
@@ -41,6 +44,90 @@ contains
       cli%opts%ck%raise_here = cli%raise_rank < 0 .or. cli%raise_rank == par_rank()
       cli%opts%ck%ctl_here = par_rank() == 0      ! rank 0 reads OUT/dynx.ctl for all
    end subroutine launch_start
+
+   !> A multi-case deck (*CASE, dx_read_case) without --case: every case runs (or is
+   !> checked) in deck order as its own dynx process, `<this command> -o OUTDIR/JOBID
+   !> --case CASEID`, as LS-DYNA runs its cases one after another with files named after
+   !> JOBID; a case that fails stops the sequence (--check: every case is checked), and the
+   !> program ends here with the first nonzero exit code (0 when every case ended
+   !> normally). Serial only: under mpirun each case is started with --case (ranks cannot
+   !> start the children together). A deck without *CASE: returns at once.
+   subroutine launch_cases(cli)
+      type(cli_t), intent(in) :: cli
+      type(case_def_t), allocatable :: cases(:)
+      type(error_t), allocatable :: error
+      character(:), allocatable :: base, cmd, dir, done, exe
+      integer :: k, rc, cs, code
+      if (cli%case_id > 0) return
+      call deck_cases(cli%deck, cases, error)
+      call par_agree(error)            ! MPI: every rank read the same deck: one message
+      if (allocated(error)) call die(error)
+      if (size(cases) == 0) return
+      if (par_size() > 1) call set_error(error, cli%deck//': a multi-case deck (*CASE) '// &
+         'is not supported in an MPI run (it runs serially, one process per case): start each '// &
+         'case with --case ID (cases '//case_ids(cases)//')')
+      call par_agree(error)            ! (every rank has it: one message, no abort)
+      if (allocated(error)) call die(error)
+      if (len(cli%rfile) > 0) call die_usage('-r: a multi-case deck restarts one case: add '// &
+                                             '--case ID (cases '//case_ids(cases)//')')
+      call get_command_argument(0, length=k)
+      allocate(character(k) :: exe)
+      call get_command_argument(0, exe)
+      base = quoted(exe)
+      do k = 1, command_argument_count()
+         base = base//' '//quoted(command_arg(k))
+      end do
+      code = 0
+      done = ''
+      do k = 1, size(cases)
+         dir = cli%outdir//'/'//cases(k)%jobid
+         cmd = base//' -o '//quoted(dir)//' --case '//str(cases(k)%id)
+         call log_info('dynx: *CASE '//str(cases(k)%id)//' ('//cases(k)%jobid//', '// &
+                       str(k)//' of '//str(size(cases))//'): '//cmd)
+         flush(6)
+         call execute_command_line(cmd, exitstat=rc, cmdstat=cs)
+         if (cs /= 0) rc = EXIT_IO
+         done = done//new_line('a')//'  case '//str(cases(k)%id)//' '//cases(k)%jobid// &
+                ': exit '//str(rc)//' ('//dir//')'
+         if (rc /= 0 .and. code == 0) code = rc
+         if (rc /= 0 .and. .not. cli%check_only) then
+            if (k < size(cases)) done = done//new_line('a')//'  cases after '// &
+               str(cases(k)%id)//' not run (start them with --case ID)'
+            exit
+         end if
+      end do
+      call log_info('dynx: '//str(size(cases))//' *CASE load cases of '//cli%deck// &
+                    trim(merge(' checked', ' run    ', cli%check_only))//done)
+      call par_finalize()
+      call exit_process(code)
+   end subroutine launch_cases
+
+   function case_ids(cases) result(s)
+      type(case_def_t), intent(in) :: cases(:)
+      character(:), allocatable :: s
+      integer :: k
+      s = ''
+      do k = 1, size(cases)
+         if (k > 1) s = s//', '
+         s = s//str(cases(k)%id)
+      end do
+   end function case_ids
+
+   !> a word for sh: in single quotes, an inner ' as '\''
+   function quoted(a) result(q)
+      character(*), intent(in) :: a
+      character(:), allocatable :: q
+      integer :: i
+      q = "'"
+      do i = 1, len(a)
+         if (a(i:i) == "'") then
+            q = q//"'\''"
+         else
+            q = q//a(i:i)
+         end if
+      end do
+      q = q//"'"
+   end function quoted
 
    !> --check: the restart deck too when given, a summary, and the end of the program.
    subroutine launch_check_only(cli, model)
@@ -172,9 +259,33 @@ contains
          end if
          call die(error, dom)
       end if
-      call log_info('dynx: results in '//cli%outdir//'/ (d3plot.h5, d3plot.xdmf'// &
-         trim(merge(', glstat', '        ', model%db%glstat_dt > 0.0_wp))//')')
+      call log_info('dynx: results in '//cli%outdir//'/ ('//files_written(cli%outdir)//')')
       call dom%report()
       call par_finalize()
    end subroutine launch_run
+
+   !> The files of a run in dir, for the end message (issue 21: every file, not glstat
+   !> only): the plot, the time histories and ASCII databases, d3hsp and messages, the
+   !> restart dumps, in that order, each that exists.
+   function files_written(dir) result(s)
+      character(*), intent(in) :: dir
+      character(:), allocatable :: s
+      character(len=*), parameter :: names(16) = [character(len=12) :: 'd3plot.h5', &
+         'd3plot.xdmf', 'glstat', 'nodout', 'rcforc', 'rbdout', 'matsum', 'spcforc', &
+         'sleout', 'elout', 'ncforc', 'emcstat', 'eigout', 'd3hsp', 'messages', 'runrsf.h5']
+      character(len=2) :: nn
+      logical :: there
+      integer :: k
+      s = ''
+      do k = 1, size(names)
+         inquire(file=dir//'/'//trim(names(k)), exist=there)
+         if (there) s = s//', '//trim(names(k))
+      end do
+      do k = 1, 99
+         write(nn, '(i2.2)') k
+         inquire(file=dir//'/d3dump'//nn//'.h5', exist=there)
+         if (there) s = s//', d3dump'//nn//'.h5'
+      end do
+      if (len(s) > 2) s = s(3:)
+   end function files_written
 end module dx_launch

@@ -13,7 +13,7 @@ program dynx
    use dx_cli, only: cli_t, parse_cli, die
    use dx_signals, only: signals_install
    use dx_launch, only: launch_start, launch_check_only, launch_lock, launch_output, &
-                        launch_run, launch_d3hsp
+                        launch_run, launch_d3hsp, launch_cases
    use dx_card_echo, only: echo_t
    implicit none
    type(cli_t) :: cli
@@ -27,10 +27,13 @@ program dynx
    call signals_install()           ! first: a SIGTERM during start-up is a request, not a kill
    call parse_cli(cli)
    call launch_start(cli)
+   call launch_cases(cli)           ! *CASE: each case as its own run, then the end
    if (cli%check_only) then         ! (--check writes no d3hsp: no echo)
-      call read_deck(cli%deck, model, error, cli%ignore_unknown, cli%check_only)
+      call read_deck(cli%deck, model, error, cli%ignore_unknown, cli%check_only, &
+                     case_id=cli%case_id)
    else
-      call read_deck(cli%deck, model, error, cli%ignore_unknown, cli%check_only, echo)
+      call read_deck(cli%deck, model, error, cli%ignore_unknown, cli%check_only, echo, &
+                     cli%case_id)
    end if
    call par_agree(error)            ! MPI: a bad deck stops every rank together
    if (allocated(error)) call die(error)

@@ -67,6 +67,13 @@ contains
             end if
             cycle
          end if
+         ! the names line without '#' (gnuplot's columnhead form; docs/output-format.md):
+         ! before the first data row, a line whose first word is not a number
+         if (nrow == 0 .and. index('+-.0123456789', line(1:1)) == 0) then
+            call split_tokens(line, names, ncol)
+            have_header = .true.
+            cycle
+         end if
          if (.not. have_header) then
             call set_error(error, path//':'//trim(buf)//': data before a # header naming '// &
                            'the columns', EXIT_INPUT)

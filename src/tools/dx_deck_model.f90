@@ -19,14 +19,16 @@ contains
    !> x, v, f, mass). Unknown keywords are errors unless ignore_unknown (then warnings).
    !> check (--check): every unknown keyword and unsupported option at once (dx_deck).
    !> echo: the d3hsp echo of the deck (dx_card_echo).
-   subroutine read_deck(path, model, error, ignore_unknown, check, echo)
+   !> case_id: the *CASE of a multi-case deck to read (dx_deck).
+   subroutine read_deck(path, model, error, ignore_unknown, check, echo, case_id)
       character(*), intent(in) :: path
       type(model_t), intent(out) :: model
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: ignore_unknown, check
       type(echo_t), intent(inout), optional :: echo
+      integer, intent(in), optional :: case_id
       type(model_input_t) :: inp
-      call read_deck_input(path, inp, error, ignore_unknown, check, echo)
+      call read_deck_input(path, inp, error, ignore_unknown, check, echo, case_id)
       if (allocated(error)) return
       model%deck_file = path
       model%deck_files = inp%files

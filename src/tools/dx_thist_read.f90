@@ -103,8 +103,12 @@ contains
          if (ios /= 0) exit
          lineno = lineno + 1
          if (len_trim(buf) == 0) cycle
-         if (adjustl(buf(1:1)) == '#' .or. buf(1:1) == '#') then
+         ! a header line: '#' ..., or (gnuplot's columnhead form, before the first data
+         ! line) a line whose first word is not a number: the names without '#'
+         if (adjustl(buf(1:1)) == '#' .or. buf(1:1) == '#' .or. &
+             (nc == 0 .and. .not. starts_number(buf))) then
             line = trim(adjustl(buf(index(buf, '#') + 1:)))
+            if (index(adjustl(buf), '#') /= 1) line = trim(adjustl(buf))
             if (index(line, 'title:') == 1) tab%title = trim(adjustl(line(7:)))
             ! the names line: the last '#' line with as many words as the data lines
             ! have fields (rbdout's per-body '#' lines come after its names line), or
@@ -557,4 +561,12 @@ contains
       t = t(1:n)
       x = x(1:n)
    end subroutine table_select
+   !> whether the line's first non-blank character can start a number
+   pure logical function starts_number(buf)
+      character(*), intent(in) :: buf
+      character(:), allocatable :: w
+      w = adjustl(buf)
+      starts_number = .false.
+      if (len_trim(w) > 0) starts_number = index('+-.0123456789', w(1:1)) > 0
+   end function starts_number
 end module dx_thist_read

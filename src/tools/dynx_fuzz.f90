@@ -36,6 +36,7 @@ program dynx_fuzz
    use dx_error, only: error_t, exit_process
    use dx_model, only: model_t
    use dx_deck_model, only: read_deck
+   use dx_read_case, only: case_def_t, deck_cases
    use dx_restart_deck, only: apply_restart_deck
    use dx_solver, only: integrator_choice
    use dx_par_restart, only: par_restart_precheck, serial_restart_read
@@ -125,6 +126,7 @@ contains
       type(error_t), allocatable :: error
       integer(int64) :: t0, t1, rate
       integer :: idx, code, k
+      type(case_def_t), allocatable :: cases(:)
       call split_tabs(ln, f)
       idx = index_of(ln)
       kind = trim(f(2)); dir = trim(f(3)); deck = trim(f(4)); extra = trim(f(5))
@@ -136,7 +138,27 @@ contains
          return
       end if
       allocate(model)
+      ! a multi-case deck (*CASE): bin/dynx checks each case as its own run in deck order
+      ! (dx_launch%launch_cases); the verdict is the first failing case's, as there
+      call deck_cases(deck, cases, error)
+      if (.not. allocated(error) .and. kind /= 'dump' .and. allocated(cases)) then
+         do k = 1, size(cases)
+            if (k > 1) then
+               deallocate(model)
+               allocate(model)
+            end if
+            call read_deck(deck, model, error, .false., .true., case_id=cases(k)%id)
+            if (.not. allocated(error)) then
+               call integrator_choice(model, name, why)
+               if (kind == 'rdeck') call apply_restart_deck(extra, model, error)
+            end if
+            if (allocated(error)) exit
+         end do
+         if (size(cases) > 0) kind = 'done'
+      end if
+      if (allocated(error)) kind = 'done'
       select case (kind)
+      case ('done')
       case ('check', 'rdeck')
          call read_deck(deck, model, error, .false., .true.)
          if (.not. allocated(error)) then

@@ -246,7 +246,7 @@ contains
       call check_close(inp%ctrl%endtim, 1.0_wp, 0.0_wp, 0.0_wp, 'reading goes on after it')
       ! a load, a material, a *CASE are never skipped: the deck would be another problem
       call write_file('u2.k', '*KEYWORD'//nl//'*LOAD_FOO_BAR'//nl//'1,2,3'//nl// &
-                      '*CONTROL_TERMINATION'//nl//'1.0'//nl//'*CASE_BEGIN_1'//nl// &
+                      '*CONTROL_TERMINATION'//nl//'1.0'//nl//'*CONSTRAINED_FOO_BAR'//nl// &
                       '*LOAD_FOO_BAR'//nl//'1,2,3'//nl//'*DATABASE_FOO_BAR'//nl//'1')
       call read_deck_input(dir//'/u2.k', inp, err, ignore_unknown=.true.)
       call check(allocated(err), 'unknown load keyword not skipped by ignore_unknown')
@@ -259,7 +259,8 @@ contains
          call check_has(err%message, '3 unknown keyword(s)', 'check: count of findings')
          call check_has(err%message, 'load:', 'check: load family heading')
          call check_has(err%message, 'u2.k:2  (2 times)', 'check: first use and count')
-         call check_has(err%message, '*CASE_BEGIN_1', 'check: case keyword listed')
+         call check_has(err%message, '*CONSTRAINED_FOO_BAR', 'check: constraint keyword listed')
+         call check_has(err%message, 'constraint:', 'check: constraint family heading')
          call check_has(err%message, 'output:', 'check: output family heading')
          call check(err%code == 2, 'check: exit code 2')
       end if

@@ -297,6 +297,26 @@ contains
          call check_close(rows(4, 2), 5.0_wp, 0.0_wp, 1.0e-10_wp, 'glstat kinetic')
          call check_close(rows(12, 2), -2.0_wp, 0.0_wp, 1.0e-10_wp, 'glstat ymom')
       end if
+      ! the names line without '#' (gnuplot's columnhead form; issue 21): line 3
+      open(newunit=u, file=TMP//'/a/glstat', status='old', action='read', iostat=ios)
+      do k = 1, 3
+         if (ios == 0) read(u, '(a)', iostat=ios) line
+      end do
+      close(u)
+      call check(ios == 0 .and. index(line, 'time cycle dt kinetic ') == 1, &
+                 'glstat line 3 is the names line without #')
+      ! the former form ('# time ...') still parses (older files and golds)
+      open(newunit=u, file=TMP//'/a/old_glstat', status='replace', action='write')
+      write(u, '(a)') '# dynx glstat', '# title: old form', '# time kinetic', &
+                      ' 0.0 1.5', ' 1.0 2.5'
+      close(u)
+      call read_table(TMP//'/a/old_glstat', names, rows, err)
+      call check(.not. allocated(err), 'old-form glstat parses')
+      if (.not. allocated(err)) then
+         call check(size(names) == 2 .and. size(rows, 2) == 2, 'old form: 2 columns, 2 rows')
+         call check(names(2) == 'kinetic', 'old form: column 2 is kinetic')
+         call check_close(rows(2, 2), 2.5_wp, 0.0_wp, 0.0_wp, 'old form: value')
+      end if
       call read_table(TMP//'/a/nodout', names, rows, err)
       call check(.not. allocated(err), 'nodout parses')
       if (.not. allocated(err)) then

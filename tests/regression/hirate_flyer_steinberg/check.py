@@ -49,7 +49,7 @@ while True:      # the HEL (hirate_plate_steinberg/check.py)
         break
 u1 = (p - sxx) / (rho * cl)
 us = C + S1 * up
-rows = [l.split() for l in open(out + '/nodout') if not l.startswith('#')]
+rows = [l.split() for l in open(out + '/nodout') if l.lstrip()[:1] in tuple('+-.0123456789')]
 hist = [(float(r[0]), float(r[5])) for r in rows]
 
 

@@ -112,7 +112,7 @@ print('%-34s %14.6g' % ('shock speed Us [m/s]', us))
 print('%-34s %14.6g' % ('hydrodynamic C + S1 up [m/s]', C + S1 * up))
 ok &= d.report('shock sigma_xx [GPa]', s2, jump, 0.0, 0.005)
 # nodout: node 201 at x = 50 mm
-rows = [l.split() for l in open(out + '/nodout') if not l.startswith('#')]
+rows = [l.split() for l in open(out + '/nodout') if l.lstrip()[:1] in tuple('+-.0123456789')]
 v = [(float(r[0]), float(r[5])) for r in rows if r[1] == '201']
 xn = 50.0
 # window: 0.3 us after the precursor, 0.5 us before the shock (its viscous foot, ~2 mm)

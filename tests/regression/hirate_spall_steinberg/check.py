@@ -36,7 +36,7 @@ print('states %d  largest normal stress %.6g GPa  finite %s' % (len(times), smax
 ok &= smax < 1.0
 print('largest principal stress %.6g < -PC = 1 GPa: %s (shears are 0 in uniaxial strain)'
       % (smax, 'PASS' if smax < 1.0 else 'FAIL'))
-rows = [l.split() for l in open(out + '/nodout') if not l.startswith('#')]
+rows = [l.split() for l in open(out + '/nodout') if l.lstrip()[:1] in tuple('+-.0123456789')]
 u = [(float(r[0]), float(r[5])) for r in rows]
 k0 = max(range(len(u)), key=lambda i: u[i][1])
 plateau = u[k0][1]
