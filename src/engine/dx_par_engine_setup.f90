@@ -14,10 +14,10 @@ module dx_par_engine_setup
    use dx_strings, only: str, rstr
    use dx_log, only: log_info, log_set_quiet
    use dx_model, only: model_t, elem_block_t, ES_HGS, ES_PHIM
-   use dx_par, only: par_rank, par_size, par_allreduce, PAR_MAX
+   use dx_par, only: par_rank, par_size, par_allreduce, PAR_MAX, par_allgather_probe
    use dx_par_plan, only: par_gather_setup, par_gather_setup_root
    use dx_sort, only: sort_index
-   use dx_par_model, only: par_model_build
+   use dx_par_model, only: par_model_t, par_model_from_file, par_model_fill_state
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report, &
                            has_shells
    use dx_rank_file, only: read_rank_file, write_rank_file, rank_file_name, deck_content_hash
@@ -138,16 +138,19 @@ contains
       eng%g%mass = 0.0_wp
       allocate(eng%gvold(3, eng%g%nn))
       eng%gvold = 0.0_wp
-      call par_model_build(eng%g, rp, eng%pm)
+      ! the sub-model from the rank file alone (format 2: topology, slots, the fixed-order
+      ! sum plans, x0, v0, labels); stage 1 of issue 22 takes the element state from the deck
+      call par_model_from_file(rp, eng%pm)
+      call par_model_fill_state(eng%pm, eng%g, rp)
+      call log_submodels(eng%pm, rp)
       allocate(loc(eng%g%nn))
       loc = 0
       loc(rp%nodes) = [(i, i = 1, eng%pm%nloc)]
       model%nn = eng%pm%nloc + eng%pm%nslot
-      model%node_label = [eng%g%node_label(rp%nodes), eng%g%node_label(rp%nodes(eng%pm%slot_node))]
-      model%x0 = reshape([eng%g%x0(:, rp%nodes), eng%g%x0(:, rp%nodes(eng%pm%slot_node))], &
-                         [3, model%nn])
-      model%v0 = reshape([eng%g%v0(:, rp%nodes), eng%g%v0(:, rp%nodes(eng%pm%slot_node))], &
-                         [3, model%nn])
+      model%node_label = [rp%node_label, rp%node_label(eng%pm%slot_node)]
+      model%x0 = reshape([rp%x0, rp%x0(:, eng%pm%slot_node)], [3, model%nn])
+      model%v0 = reshape([rp%v0, rp%v0(:, eng%pm%slot_node)], [3, model%nn])
+      deallocate(rp%x0, rp%v0, rp%piece_conn)
       if (allocated(eng%g%w0)) model%w0 = reshape([eng%g%w0(:, rp%nodes), &   ! VXR, VYR, VZR
          eng%g%w0(:, rp%nodes(eng%pm%slot_node))], [3, model%nn])
       if (allocated(eng%g%w0)) deallocate(eng%g%w0)   ! (the rank's own copy is enough)
@@ -306,6 +309,27 @@ contains
          end if
       end subroutine partition_here
    end subroutine par_engine_setup
+
+   !> One log line (rank 0): the sub-model each rank built from its rank file (nodes,
+   !> slot nodes, elements; the first 16 ranks), the O(NP) table rank 0 gathers for it.
+   subroutine log_submodels(pm, rp)
+      type(par_model_t), intent(in) :: pm
+      type(rank_part_t), intent(in) :: rp
+      real(wp), allocatable :: rb(:)
+      integer, allocatable :: cnt(:)
+      character(:), allocatable :: t
+      integer :: r
+      call par_allgather_probe([real(pm%nloc, wp), real(pm%nslot, wp), &
+                                real(size(rp%piece_elem), wp)], rb, cnt)
+      t = ''
+      do r = 0, min(size(rb)/3, 16) - 1
+         t = t//'; rank '//str(r)//': '//str(nint(rb(3*r + 1)))//' nodes, '// &
+             str(nint(rb(3*r + 3)))//' elements, '//str(nint(rb(3*r + 2)))//' slots'
+      end do
+      if (size(rb)/3 > 16) t = t//'; ...'
+      call log_info('dynx: distributed set-up (issue 22 stage 1): each rank''s sub-model '// &
+                    'built from its rank file alone'//t)
+   end subroutine log_submodels
 
    !> What the engine does not run across ranks yet: exit 2 naming the keyword.
    subroutine unsupported(model, error)
