@@ -45,7 +45,7 @@ contains
       type(rank_part_t), intent(in) :: rp
       type(par_model_t), intent(out) :: pm
       integer, allocatable :: c_node(:), c_fkey(:), c_mkey(:), nbr_snode(:)
-      call cut_layout(model, rp, pm, c_node, c_fkey, c_mkey, nbr_snode)
+      call cut_layout(model, rp, pm, c_node, c_fkey, c_mkey, nbr_snode, .true.)
       call par_shared_setup(pm%force_plan, pm%nshared, rp%nbr, rp%nbr_ptr, nbr_snode, &
                             c_node, c_fkey)
       call par_shared_setup(pm%mass_plan, pm%nshared, rp%nbr, rp%nbr_ptr, nbr_snode, &
@@ -70,9 +70,10 @@ contains
 
    !> The cut of par_model_build without the plans' exchange: the sub-model and the inputs
    !> of the two plans (c_node, c_fkey, c_mkey per slot; nbr_snode).
-   subroutine cut_layout(model, rp, pm, c_node, c_fkey, c_mkey, nbr_snode)
+   subroutine cut_layout(model, rp, pm, c_node, c_fkey, c_mkey, nbr_snode, state)
       type(model_t), intent(in) :: model
       type(rank_part_t), intent(in) :: rp
+      logical, intent(in) :: state
       type(par_model_t), intent(out) :: pm
       integer, allocatable, intent(out) :: c_node(:), c_fkey(:), c_mkey(:), nbr_snode(:)
       integer, allocatable :: loc(:), snum(:), piece(:)
@@ -127,16 +128,18 @@ contains
                pb%nip = sb%nip
                pb%nhv = sb%nhv
                pb%elem = sb%elem(piece)
-               pb%sig = sb%sig(piece, :, :)
-               pb%hv = sb%hv(piece, :, :)
-               pb%vol0 = sb%vol0(piece)
-               pb%relvol = sb%relvol(piece)
-               pb%eint = sb%eint(piece)
-               pb%ehg = sb%ehg(piece)
-               pb%failed = sb%failed(piece)
-               ! the family state (a restart reads it): every slot of the serial block
-               if (allocated(sb%es)) pb%es = sb%es(piece, :)
-               pb%esc = sb%esc; pb%esn = sb%esn
+               if (state) then   ! (the verifier compares the topology only)
+                  pb%sig = sb%sig(piece, :, :)
+                  pb%hv = sb%hv(piece, :, :)
+                  pb%vol0 = sb%vol0(piece)
+                  pb%relvol = sb%relvol(piece)
+                  pb%eint = sb%eint(piece)
+                  pb%ehg = sb%ehg(piece)
+                  pb%failed = sb%failed(piece)
+                  ! the family state (a restart reads it): every slot of the serial block
+                  if (allocated(sb%es)) pb%es = sb%es(piece, :)
+                  pb%esc = sb%esc; pb%esn = sb%esn
+               end if
                allocate(pb%conn(size(sb%conn, 1), pb%nel))
                ! slots numbered corner-major as the force scatter visits them
                do k = 1, size(sb%conn, 1)
@@ -295,7 +298,19 @@ contains
       if (.not. same_r(rp%v0, model%v0(:, rp%nodes))) msg = 'initial velocities'
       if (any(rp%node_label /= model%node_label(rp%nodes))) msg = 'node labels'
       if (len(msg) > 0) return
-      call cut_layout(model, rp, a, an, af, am, as)
+      do p = 1, size(rp%piece_ptr) - 1      ! each element at its serial block and position
+         associate (sb => model%blocks(rp%pieces(1, p)), &
+                    j => rp%piece_pos(rp%piece_ptr(p):rp%piece_ptr(p + 1) - 1))
+            if (any(j < 1 .or. j > sb%nel)) then
+               msg = 'serial positions of piece '//str(p)
+            else if (any(sb%elem(j) /= rp%piece_elem(rp%piece_ptr(p):rp%piece_ptr(p + 1) - 1))) &
+               then
+               msg = 'serial positions of piece '//str(p)
+            end if
+         end associate
+         if (len(msg) > 0) return
+      end do
+      call cut_layout(model, rp, a, an, af, am, as, .false.)
       call file_layout(rp, b, bn, bf, bm, bs)
       if (a%nloc /= b%nloc .or. a%nslot /= b%nslot .or. a%nshared /= b%nshared) then
          msg = 'node, slot or shared-node counts'

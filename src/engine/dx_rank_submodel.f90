@@ -16,12 +16,15 @@ module dx_rank_submodel
 contains
 
    !> Fill rp's sub-model (x0, v0, node labels, pieces) from the global model for the
-   !> elements rp%elements and nodes rp%nodes (set before).
+   !> elements rp%elements and nodes rp%nodes (set before); nothing when model is not built.
    subroutine rank_submodel_cut(model, rp)
       type(model_t), intent(in) :: model
       type(rank_part_t), intent(inout) :: rp
       logical, allocatable :: here(:)
       integer :: b, i, n, np, nen, m
+      ! (a partition of a bare graph, without a built model, has no sub-model)
+      if (.not. (allocated(model%x0) .and. allocated(model%v0) .and. &
+                 allocated(model%node_label) .and. allocated(model%blocks))) return
       rp%x0 = model%x0(:, rp%nodes)
       rp%v0 = model%v0(:, rp%nodes)
       rp%node_label = model%node_label(rp%nodes)
