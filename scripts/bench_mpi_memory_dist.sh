@@ -37,7 +37,7 @@ for b in old new; do
         $d/dynx-part $deck -n $np -o $o/part > $o/part.log 2>&1 || { echo "dynx-part $b $np failed"; exit 1; }
         mpirun $opts -np $np sh -c "exec /usr/bin/time -v -o $o/time.\$OMPI_COMM_WORLD_RANK $d/dynx -i $deck -o $o --part $o/part" \
             > $o/log 2>&1 || { echo "NP $np run of $b failed"; tail $o/log; exit 1; }
-        cmp -s $d/ser/glstat $o/glstat || echo "$b NP $np: glstat differs from serial"
+        h5diff -q $d/ser/d3plot.h5 $o/d3plot.h5 > /dev/null 2>&1 || echo "$b NP $np: d3plot.h5 differs from serial"
         all=$(for r in $(seq 0 $((np - 1))); do rss $o/time.$r; done)
         r0=$(rss $o/time.0)
         mn=$(echo "$all" | sort -n | head -1); mx=$(echo "$all" | sort -n | tail -1)

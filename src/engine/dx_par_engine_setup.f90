@@ -18,6 +18,7 @@ module dx_par_engine_setup
    use dx_par_plan, only: par_gather_setup, par_gather_setup_root
    use dx_sort, only: sort_index
    use dx_par_model, only: par_model_t, par_model_from_file, par_model_fill_state
+   use dx_rank_submodel, only: rank_spcs, rank_prescribed
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report, &
                            has_shells
    use dx_rank_file, only: read_rank_file, write_rank_file, rank_file_name, deck_content_hash
@@ -106,6 +107,11 @@ contains
       call log_info('dynx: MPI run on '//str(np)//' ranks, rank files '// &
                     rank_file_name(dir, 0)//' ...')
       call read_rank_file(rank_file_name(dir, me), hash, np, me, rp, error)
+      if (.not. allocated(error)) then
+         if (size(rp%piece_ptr) == 0) call set_error(error, rank_file_name(dir, me)// &
+            ': the rank file holds no sub-model (written without a built model); rerun '// &
+            'dynx-part', EXIT_INPUT)
+      end if
       call par_agree(error)             ! a missing or wrong rank file: every rank stops
       if (allocated(error)) return
       if (allocated(model%emc)) then   ! conserving solver: whole model, pairs split (dx_par_emc)
@@ -164,18 +170,9 @@ contains
       ! the forces
       eng%rot = has_shells(eng%g) .or. allocated(eng%g%node_rinert)
       call move_alloc(eng%pm%blocks, model%blocks)
-      if (allocated(model%spcs)) then
-         model%spcs = eng%g%spcs(rp%spcs)
-         do k = 1, size(model%spcs)
-            model%spcs(k)%node = loc(model%spcs(k)%node)
-         end do
-      end if
-      if (allocated(model%prescribed)) then
-         model%prescribed = eng%g%prescribed(rp%prescribed)
-         do k = 1, size(model%prescribed)
-            model%prescribed(k)%node = loc(model%prescribed(k)%node)
-         end do
-      end if
+      ! the rank's SPCs and prescribed motions: its file's records (local nodes)
+      if (allocated(model%spcs)) model%spcs = rank_spcs(rp)
+      if (allocated(model%prescribed)) model%prescribed = rank_prescribed(rp)
       eng%owned = rp%node_owner == me
       eng%own = pack([(i, i = 1, eng%pm%nloc)], eng%owned)
       call par_loads_setup(loads, model, eng%g, rp, eng%pm, loc, eng%owned)   ! external loads

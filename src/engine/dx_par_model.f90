@@ -15,7 +15,7 @@ module dx_par_model
    use dx_kinds, only: wp, nv_chunk
    use dx_model, only: model_t, elem_block_t, MAX_NEN, family_t, element_family
    use dx_partition, only: rank_part_t
-   use dx_rank_submodel, only: rank_local_node
+   use dx_rank_submodel, only: rank_local_node, rank_records_verify
    use dx_strings, only: str
    use dx_par_plan, only: shared_sum_t, par_shared_setup, par_shared_sum
    implicit none
@@ -297,6 +297,8 @@ contains
       if (.not. same_r(rp%x0, model%x0(:, rp%nodes))) msg = 'initial coordinates'
       if (.not. same_r(rp%v0, model%v0(:, rp%nodes))) msg = 'initial velocities'
       if (any(rp%node_label /= model%node_label(rp%nodes))) msg = 'node labels'
+      if (len(msg) > 0) return
+      call rank_records_verify(model, rp, msg)   ! SPCs, prescribed motions, nodal loads
       if (len(msg) > 0) return
       do p = 1, size(rp%piece_ptr) - 1      ! each element at its serial block and position
          associate (sb => model%blocks(rp%pieces(1, p)), &

@@ -35,5 +35,10 @@ module dx_rank_part_types
       integer, allocatable :: node_label(:)
       integer, allocatable :: pieces(:, :), piece_ptr(:)
       integer, allocatable :: piece_elem(:), piece_pos(:), piece_conn(:, :)
+      !> The records of spcs, prescribed and node_loads above, global node indices:
+      !> spc_rec (7, *) node, DOF flags 1..6 (0/1); pm_int (4, *) node, dof, vad, curve and
+      !> pm_real (6, *) sf, dir(3), death, birth; nl_int (3, *) node, dof, curve, nl_sf (*)
+      integer, allocatable :: spc_rec(:, :), pm_int(:, :), nl_int(:, :)
+      real(wp), allocatable :: pm_real(:, :), nl_sf(:)
    end type rank_part_t
 end module dx_rank_part_types

@@ -578,14 +578,29 @@ contains
             back%x0(1, 1) = nearest(back%x0(1, 1), 1.0_wp)
             call par_model_verify(model, back, msg)
             bad = bad + merge(1, 0, msg == 'initial coordinates')
+            back%x0(1, 1) = nearest(back%x0(1, 1), -1.0_wp)
             nbad = nbad + 3
+         end if
+         if (size(back%pm_real, 2) > 0) then    ! a prescribed motion's scale, one ulp
+            back%pm_real(1, 1) = nearest(back%pm_real(1, 1), 1.0_wp)
+            call par_model_verify(model, back, msg)
+            bad = bad + merge(1, 0, msg == 'prescribed-motion record 1')
+            back%pm_real(1, 1) = nearest(back%pm_real(1, 1), -1.0_wp)
+            nbad = nbad + 1
+         end if
+         if (size(back%spc_rec, 2) > 0) then    ! an SPC's DOF flag
+            back%spc_rec(2, 1) = 1 - back%spc_rec(2, 1)
+            call par_model_verify(model, back, msg)
+            bad = bad + merge(1, 0, msg == 'SPC record 1')
+            nbad = nbad + 1
          end if
       end do
       call check(ok, 'rank files round-trip (all 13 arrays and the header, 3 ranks)')
       call check(ok2, 'format 2: the sub-model round-trips bit for bit and the sub-model '// &
                  'built from each file equals the cut (par_model_verify)')
       call check(nbad > 0 .and. bad == nbad, 'par_model_verify finds a swapped serial '// &
-                 'position, a swapped corner and a one-ulp coordinate ('//str(bad)//' of '// &
+                 'position, a swapped corner, a one-ulp coordinate, a one-ulp prescribed-motion '// &
+                 'scale and a flipped SPC flag ('//str(bad)//' of '// &
                  str(nbad)//')')
       call check(size(seen_spc) > 0 .and. all(seen_spc == 1) .and. size(seen_pm) > 0 .and. &
                  all(seen_pm == 1), 'every SPC and prescribed motion of the deck is on a rank')
