@@ -9,7 +9,7 @@
 module dx_par_engine_setup
    use, intrinsic :: iso_fortran_env, only: int64
    use dx_kinds, only: wp, nv_chunk
-   use dx_timer, only: current_memory_kb
+   use dx_timer, only: current_memory_kb, peak_memory_kb
    use dx_error, only: error_t, set_error, EXIT_INPUT
    use dx_strings, only: str, rstr
    use dx_log, only: log_info, log_set_quiet
@@ -69,6 +69,7 @@ contains
       call unsupported(model, error)
       if (allocated(error)) return
       if (me > 0) call log_set_quiet(.true.)
+      call log_peak('before the MPI set-up (the whole deck read and built on every rank)')
       call deck_content_hash(model%deck_files, hash, error)   ! the files read_deck read
       if (allocated(error)) return
       eng%deck_hash = hash
@@ -153,9 +154,16 @@ contains
       loc = 0
       loc(rp%nodes) = [(i, i = 1, eng%pm%nloc)]
       model%nn = eng%pm%nloc + eng%pm%nslot
-      model%node_label = [rp%node_label, rp%node_label(eng%pm%slot_node)]
-      model%x0 = reshape([rp%x0, rp%x0(:, eng%pm%slot_node)], [3, model%nn])
-      model%v0 = reshape([rp%v0, rp%v0(:, eng%pm%slot_node)], [3, model%nn])
+      ! (filled in place: no temporaries of the whole list on the heap)
+      allocate(model%node_label(model%nn), model%x0(3, model%nn), model%v0(3, model%nn))
+      model%node_label(1:eng%pm%nloc) = rp%node_label
+      model%x0(:, 1:eng%pm%nloc) = rp%x0
+      model%v0(:, 1:eng%pm%nloc) = rp%v0
+      do i = 1, eng%pm%nslot
+         model%node_label(eng%pm%nloc + i) = rp%node_label(eng%pm%slot_node(i))
+         model%x0(:, eng%pm%nloc + i) = rp%x0(:, eng%pm%slot_node(i))
+         model%v0(:, eng%pm%nloc + i) = rp%v0(:, eng%pm%slot_node(i))
+      end do
       deallocate(rp%x0, rp%v0, rp%piece_conn)
       if (allocated(eng%g%w0)) model%w0 = reshape([eng%g%w0(:, rp%nodes), &   ! VXR, VYR, VZR
          eng%g%w0(:, rp%nodes(eng%pm%slot_node))], [3, model%nn])
@@ -434,7 +442,21 @@ contains
          end if
       end if
       call mem_report(eng)
+      call log_peak('after the MPI set-up')
    end subroutine trim_global
+
+   !> One log line (rank 0; collective): the peak resident memory (VmHWM) so far of rank 0
+   !> and the largest of the other ranks, at the point named by when (docs/performance.md
+   !> "Distributed memory": where the per-rank peak arises).
+   subroutine log_peak(when)
+      character(*), intent(in) :: when
+      integer(int64) :: a(2)
+      a = [peak_memory_kb(), 0_int64]
+      if (par_rank() > 0) a = [0_int64, peak_memory_kb()]
+      call par_allreduce_i8max(a)
+      call log_info('dynx: MPI peak memory (VmHWM) '//when//': rank 0 '//str(int(a(1)))// &
+                    ' KiB, the other ranks at most '//str(int(a(2)))//' KiB')
+   end subroutine log_peak
 
    !> Bytes of the arrays this rank holds that are sized by the whole model (global
    !> elements: elem, global nodes: node), in g, the engine's maps and the gather plans.
