@@ -334,6 +334,10 @@ contains
       if (size(rb)/3 > 16) t = t//'; ...'
       call log_info('dynx: distributed set-up (issue 22 stage 1): each rank''s sub-model '// &
                     'built from its rank file alone'//t)
+      call log_info('dynx: still replicated (stage 2): every rank reads and builds the '// &
+                    'whole deck (tables, element state, segment and body loads, walls, '// &
+                    'contact, rigid bodies); energies, glstat, nodout and serial restarts '// &
+                    'go through the global model')
    end subroutine log_submodels
 
    !> What the engine does not run across ranks yet: exit 2 naming the keyword.
