@@ -9,15 +9,16 @@
 module dx_par_engine_setup
    use, intrinsic :: iso_fortran_env, only: int64
    use dx_kinds, only: wp, nv_chunk
-   use dx_timer, only: current_memory_kb
+   use dx_timer, only: current_memory_kb, peak_memory_kb
    use dx_error, only: error_t, set_error, EXIT_INPUT
    use dx_strings, only: str, rstr
    use dx_log, only: log_info, log_set_quiet
    use dx_model, only: model_t, elem_block_t, ES_HGS, ES_PHIM
-   use dx_par, only: par_rank, par_size, par_allreduce, PAR_MAX
+   use dx_par, only: par_rank, par_size, par_allreduce, PAR_MAX, par_allgather_probe
    use dx_par_plan, only: par_gather_setup, par_gather_setup_root
    use dx_sort, only: sort_index
-   use dx_par_model, only: par_model_build
+   use dx_par_model, only: par_model_t, par_model_from_file, par_model_fill_state
+   use dx_rank_submodel, only: rank_spcs, rank_prescribed
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report, &
                            has_shells
    use dx_rank_file, only: read_rank_file, write_rank_file, rank_file_name, deck_content_hash
@@ -68,6 +69,7 @@ contains
       call unsupported(model, error)
       if (allocated(error)) return
       if (me > 0) call log_set_quiet(.true.)
+      call log_peak('before the MPI set-up (the whole deck read and built on every rank)')
       call deck_content_hash(model%deck_files, hash, error)   ! the files read_deck read
       if (allocated(error)) return
       eng%deck_hash = hash
@@ -106,6 +108,11 @@ contains
       call log_info('dynx: MPI run on '//str(np)//' ranks, rank files '// &
                     rank_file_name(dir, 0)//' ...')
       call read_rank_file(rank_file_name(dir, me), hash, np, me, rp, error)
+      if (.not. allocated(error)) then
+         if (size(rp%piece_ptr) == 0) call set_error(error, rank_file_name(dir, me)// &
+            ': the rank file holds no sub-model (written without a built model); rerun '// &
+            'dynx-part', EXIT_INPUT)
+      end if
       call par_agree(error)             ! a missing or wrong rank file: every rank stops
       if (allocated(error)) return
       if (allocated(model%emc)) then   ! conserving solver: whole model, pairs split (dx_par_emc)
@@ -138,16 +145,26 @@ contains
       eng%g%mass = 0.0_wp
       allocate(eng%gvold(3, eng%g%nn))
       eng%gvold = 0.0_wp
-      call par_model_build(eng%g, rp, eng%pm)
+      ! the sub-model from the rank file alone (format 2: topology, slots, the fixed-order
+      ! sum plans, x0, v0, labels); stage 1 of issue 22 takes the element state from the deck
+      call par_model_from_file(rp, eng%pm)
+      call par_model_fill_state(eng%pm, eng%g, rp)
+      call log_submodels(eng%pm, rp)
       allocate(loc(eng%g%nn))
       loc = 0
       loc(rp%nodes) = [(i, i = 1, eng%pm%nloc)]
       model%nn = eng%pm%nloc + eng%pm%nslot
-      model%node_label = [eng%g%node_label(rp%nodes), eng%g%node_label(rp%nodes(eng%pm%slot_node))]
-      model%x0 = reshape([eng%g%x0(:, rp%nodes), eng%g%x0(:, rp%nodes(eng%pm%slot_node))], &
-                         [3, model%nn])
-      model%v0 = reshape([eng%g%v0(:, rp%nodes), eng%g%v0(:, rp%nodes(eng%pm%slot_node))], &
-                         [3, model%nn])
+      ! (filled in place: no temporaries of the whole list on the heap)
+      allocate(model%node_label(model%nn), model%x0(3, model%nn), model%v0(3, model%nn))
+      model%node_label(1:eng%pm%nloc) = rp%node_label
+      model%x0(:, 1:eng%pm%nloc) = rp%x0
+      model%v0(:, 1:eng%pm%nloc) = rp%v0
+      do i = 1, eng%pm%nslot
+         model%node_label(eng%pm%nloc + i) = rp%node_label(eng%pm%slot_node(i))
+         model%x0(:, eng%pm%nloc + i) = rp%x0(:, eng%pm%slot_node(i))
+         model%v0(:, eng%pm%nloc + i) = rp%v0(:, eng%pm%slot_node(i))
+      end do
+      deallocate(rp%x0, rp%v0, rp%piece_conn)
       if (allocated(eng%g%w0)) model%w0 = reshape([eng%g%w0(:, rp%nodes), &   ! VXR, VYR, VZR
          eng%g%w0(:, rp%nodes(eng%pm%slot_node))], [3, model%nn])
       if (allocated(eng%g%w0)) deallocate(eng%g%w0)   ! (the rank's own copy is enough)
@@ -161,18 +178,9 @@ contains
       ! the forces
       eng%rot = has_shells(eng%g) .or. allocated(eng%g%node_rinert)
       call move_alloc(eng%pm%blocks, model%blocks)
-      if (allocated(model%spcs)) then
-         model%spcs = eng%g%spcs(rp%spcs)
-         do k = 1, size(model%spcs)
-            model%spcs(k)%node = loc(model%spcs(k)%node)
-         end do
-      end if
-      if (allocated(model%prescribed)) then
-         model%prescribed = eng%g%prescribed(rp%prescribed)
-         do k = 1, size(model%prescribed)
-            model%prescribed(k)%node = loc(model%prescribed(k)%node)
-         end do
-      end if
+      ! the rank's SPCs and prescribed motions: its file's records (local nodes)
+      if (allocated(model%spcs)) model%spcs = rank_spcs(rp)
+      if (allocated(model%prescribed)) model%prescribed = rank_prescribed(rp)
       eng%owned = rp%node_owner == me
       eng%own = pack([(i, i = 1, eng%pm%nloc)], eng%owned)
       call par_loads_setup(loads, model, eng%g, rp, eng%pm, loc, eng%owned)   ! external loads
@@ -307,6 +315,31 @@ contains
       end subroutine partition_here
    end subroutine par_engine_setup
 
+   !> One log line (rank 0): the sub-model each rank built from its rank file (nodes,
+   !> slot nodes, elements; the first 16 ranks), the O(NP) table rank 0 gathers for it.
+   subroutine log_submodels(pm, rp)
+      type(par_model_t), intent(in) :: pm
+      type(rank_part_t), intent(in) :: rp
+      real(wp), allocatable :: rb(:)
+      integer, allocatable :: cnt(:)
+      character(:), allocatable :: t
+      integer :: r
+      call par_allgather_probe([real(pm%nloc, wp), real(pm%nslot, wp), &
+                                real(size(rp%piece_elem), wp)], rb, cnt)
+      t = ''
+      do r = 0, min(size(rb)/3, 16) - 1
+         t = t//'; rank '//str(r)//': '//str(nint(rb(3*r + 1)))//' nodes, '// &
+             str(nint(rb(3*r + 3)))//' elements, '//str(nint(rb(3*r + 2)))//' slots'
+      end do
+      if (size(rb)/3 > 16) t = t//'; ...'
+      call log_info('dynx: distributed set-up (issue 22 stage 1): each rank''s sub-model '// &
+                    'built from its rank file alone'//t)
+      call log_info('dynx: still replicated (stage 2): every rank reads and builds the '// &
+                    'whole deck (tables, element state, segment and body loads, walls, '// &
+                    'contact, rigid bodies); energies, glstat, nodout and serial restarts '// &
+                    'go through the global model')
+   end subroutine log_submodels
+
    !> What the engine does not run across ranks yet: exit 2 naming the keyword.
    subroutine unsupported(model, error)
       type(model_t), intent(in) :: model
@@ -413,7 +446,21 @@ contains
          end if
       end if
       call mem_report(eng)
+      call log_peak('after the MPI set-up')
    end subroutine trim_global
+
+   !> One log line (rank 0; collective): the peak resident memory (VmHWM) so far of rank 0
+   !> and the largest of the other ranks, at the point named by when (docs/performance.md
+   !> "Distributed memory": where the per-rank peak arises).
+   subroutine log_peak(when)
+      character(*), intent(in) :: when
+      integer(int64) :: a(2)
+      a = [peak_memory_kb(), 0_int64]
+      if (par_rank() > 0) a = [0_int64, peak_memory_kb()]
+      call par_allreduce_i8max(a)
+      call log_info('dynx: MPI peak memory (VmHWM) '//when//': rank 0 '//str(int(a(1)))// &
+                    ' KiB, the other ranks at most '//str(int(a(2)))//' KiB')
+   end subroutine log_peak
 
    !> Bytes of the arrays this rank holds that are sized by the whole model (global
    !> elements: elem, global nodes: node), in g, the engine's maps and the gather plans.

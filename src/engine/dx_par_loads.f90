@@ -34,6 +34,7 @@ module dx_par_loads
    use dx_par_plan, only: gather_plan_t, par_gather_setup, par_gather_values
    use dx_par_model, only: par_model_t
    use dx_partition, only: rank_part_t
+   use dx_rank_submodel, only: rank_node_loads
    use dx_loads, only: add_external_loads, has_external_loads
    implicit none
    private
@@ -78,12 +79,7 @@ contains
       ld%gp => g
       ld%active = has_external_loads(g)
       if (.not. ld%active) return
-      if (allocated(g%node_loads)) then
-         model%node_loads = g%node_loads(rp%node_loads)
-         do k = 1, size(model%node_loads)
-            model%node_loads(k)%node = loc(model%node_loads(k)%node)
-         end do
-      end if
+      if (allocated(g%node_loads)) model%node_loads = rank_node_loads(rp)   ! its file's records
       if (allocated(g%nr_node)) then      ! non-reflecting nodes on this rank, local numbers
          i = count(loc(g%nr_node) > 0)
          model%nr_node = loc(pack(g%nr_node, loc(g%nr_node) > 0))

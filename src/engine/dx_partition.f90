@@ -27,6 +27,7 @@ module dx_partition
    use dx_metis, only: metis_part_kway, METIS_RECURSIVE
    use dx_contact_input, only: CT_SINGLE_SURFACE
    use dx_rank_part_types, only: rank_part_t   ! what one rank holds (re-exported)
+   use dx_rank_submodel, only: rank_submodel_cut
    use dx_partition_graph, only: node_elements, condense_groups, element_graph, &
                                  add_proximity_edges, sort_int
    implicit none
@@ -520,6 +521,7 @@ contains
             rp%wall_ptr(w + 1) = size(rp%wall_nodes) + 1
          end do
       end if
+      call rank_submodel_cut(model, rp)    ! the sub-model the rank file carries (format 2)
    end subroutine rank_part
 
    !> The partition report: elements, weight, nodes, shared nodes and neighbours per rank,

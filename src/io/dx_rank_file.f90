@@ -9,7 +9,15 @@
 !>   /shared/ranks /shared/offsets /shared/nodes        shared nodes per neighbour rank
 !>   /bc/spc /bc/prescribed /loads/node /loads/segment  indices into the deck's lists
 !>   /walls/offsets /walls/nodes /output/hist_nodes
-!> The checksum (dx_checksum) covers the header and every dataset in that order.
+!> Format 2 adds the rank's sub-model (issue 22 stage 1; dx_rank_submodel, rank_part_t):
+!>   /model/node_label /model/piece_ptr /model/piece_elem /model/piece_pos
+!>   /model/pieces (3, npiece) /model/piece_conn (MAX_NEN = 8, nel)
+!>   /bc/spc_rec (7, n) /bc/pm_int (4, n) /loads/node_int (3, n)       integers
+!>   /model/x0 /model/v0 (3, nloc) /bc/pm_real (6, n) /loads/node_sf (1, n)   float64
+!> (the rank's SPC, prescribed-motion and nodal-load records with global node indices,
+!> in the order of /bc/spc, /bc/prescribed, /loads/node; dx_rank_submodel)
+!> The checksum (dx_checksum) covers the header and every dataset in that order (the
+!> float64 arrays as their bit patterns).
 !> Errors: missing or unreadable file, or a checksum mismatch: EXIT_IO (4); a file written
 !> for another deck, another NP or another rank, or another format version: EXIT_INPUT (2).
 module dx_rank_file
@@ -27,7 +35,7 @@ module dx_rank_file
    public :: write_rank_file, read_rank_file, rank_file_name, deck_content_hash, &
              RANK_FILE_VERSION, RANK_FILE_FORMAT
 
-   integer, parameter :: RANK_FILE_VERSION = 1
+   integer, parameter :: RANK_FILE_VERSION = 2
    character(*), parameter :: RANK_FILE_FORMAT = 'dynx-rank-partition'
    integer, parameter :: NSETS = 13
    !> The integer root attributes after format and version, in write order.
@@ -37,8 +45,23 @@ module dx_rank_file
       '/elements', '/nodes', '/node_owner', '/shared/ranks', '/shared/offsets', &
       '/shared/nodes', '/bc/spc', '/bc/prescribed', '/loads/node', '/loads/segment', &
       '/walls/offsets', '/walls/nodes', '/output/hist_nodes']
-   character(*), parameter :: GROUPS(5) = [character(len=7) :: &
-      '/shared', '/bc', '/loads', '/walls', '/output']
+   character(*), parameter :: GROUPS(6) = [character(len=7) :: &
+      '/shared', '/bc', '/loads', '/walls', '/output', '/model']
+   !> format 2: the sub-model's integer datasets and their rows (0: 1-D) ...
+   integer, parameter :: NMODEL = 9
+   character(*), parameter :: MSETS(NMODEL) = [character(len=17) :: '/model/node_label', &
+      '/model/piece_ptr', '/model/piece_elem', '/model/piece_pos', '/model/pieces', &
+      '/model/piece_conn', '/bc/spc_rec', '/bc/pm_int', '/loads/node_int']
+   integer, parameter :: IROWS(NMODEL) = [0, 0, 0, 0, 3, 8, 7, 4, 3]
+   !> ... and its float64 datasets (2-D, rows)
+   integer, parameter :: NREAL = 4
+   character(*), parameter :: RSETS(NREAL) = [character(len=14) :: '/model/x0', '/model/v0', &
+      '/bc/pm_real', '/loads/node_sf']
+   integer, parameter :: RROWS(NREAL) = [3, 3, 6, 1]
+
+   type :: rarr_t
+      real(wp), allocatable :: a(:)
+   end type rarr_t
 
    type :: iarr_t
       integer, allocatable :: a(:)
@@ -98,10 +121,11 @@ contains
    end subroutine from_arrays
 
    !> The checksum of a rank file's header and datasets.
-   function payload_checksum(version, np, r, ne, nn, hash, arr) result(h)
+   function payload_checksum(version, np, r, ne, nn, hash, arr, marr, rarr) result(h)
       integer, intent(in) :: version, np, r, ne, nn
       character(*), intent(in) :: hash
-      type(iarr_t), intent(in) :: arr(NSETS)
+      type(iarr_t), intent(in) :: arr(NSETS), marr(NMODEL)
+      type(rarr_t), intent(in) :: rarr(NREAL)
       character(16) :: h
       type(checksum_t) :: c
       integer :: k
@@ -112,8 +136,60 @@ contains
       do k = 1, NSETS
          call c%add_ints(arr(k)%a)
       end do
+      do k = 1, NMODEL
+         call c%add_ints(marr(k)%a)
+      end do
+      do k = 1, NREAL
+         call c%add_ints(transfer(rarr(k)%a, [0]))
+      end do
       h = c%hex()
    end function payload_checksum
+
+   !> The sub-model's arrays, flat (empty when rp has none).
+   subroutine model_arrays(rp, marr, rarr)
+      type(rank_part_t), intent(in) :: rp
+      type(iarr_t), intent(out) :: marr(NMODEL)
+      type(rarr_t), intent(out) :: rarr(NREAL)
+      integer :: k
+      do k = 1, NMODEL
+         marr(k)%a = [integer ::]
+      end do
+      do k = 1, NREAL
+         rarr(k)%a = [real(wp) ::]
+      end do
+      if (.not. allocated(rp%piece_ptr)) return
+      marr(1)%a = rp%node_label; marr(2)%a = rp%piece_ptr; marr(3)%a = rp%piece_elem
+      marr(4)%a = rp%piece_pos
+      marr(5)%a = reshape(rp%pieces, [size(rp%pieces)])
+      marr(6)%a = reshape(rp%piece_conn, [size(rp%piece_conn)])
+      marr(7)%a = reshape(rp%spc_rec, [size(rp%spc_rec)])
+      marr(8)%a = reshape(rp%pm_int, [size(rp%pm_int)])
+      marr(9)%a = reshape(rp%nl_int, [size(rp%nl_int)])
+      rarr(1)%a = reshape(rp%x0, [size(rp%x0)])
+      rarr(2)%a = reshape(rp%v0, [size(rp%v0)])
+      rarr(3)%a = reshape(rp%pm_real, [size(rp%pm_real)])
+      rarr(4)%a = reshape(rp%nl_sf, [size(rp%nl_sf)])
+   end subroutine model_arrays
+
+   !> The sub-model's arrays back into rp (moved).
+   subroutine model_from_arrays(marr, rarr, rp)
+      type(iarr_t), intent(inout) :: marr(NMODEL)
+      type(rarr_t), intent(inout) :: rarr(NREAL)
+      type(rank_part_t), intent(inout) :: rp
+      call move_alloc(marr(1)%a, rp%node_label)
+      call move_alloc(marr(2)%a, rp%piece_ptr)
+      call move_alloc(marr(3)%a, rp%piece_elem)
+      call move_alloc(marr(4)%a, rp%piece_pos)
+      rp%pieces = reshape(marr(5)%a, [3, size(marr(5)%a)/3])
+      rp%piece_conn = reshape(marr(6)%a, [8, size(marr(6)%a)/8])
+      rp%spc_rec = reshape(marr(7)%a, [7, size(marr(7)%a)/7])
+      rp%pm_int = reshape(marr(8)%a, [4, size(marr(8)%a)/4])
+      rp%nl_int = reshape(marr(9)%a, [3, size(marr(9)%a)/3])
+      rp%x0 = reshape(rarr(1)%a, [3, size(rarr(1)%a)/3])
+      rp%v0 = reshape(rarr(2)%a, [3, size(rarr(2)%a)/3])
+      rp%pm_real = reshape(rarr(3)%a, [6, size(rarr(3)%a)/6])
+      rp%nl_sf = rarr(4)%a
+   end subroutine model_from_arrays
 
    !> Write rank rp%rank's file at path for the deck with content hash deck_hash.
    subroutine write_rank_file(path, rp, deck_hash, error)
@@ -123,9 +199,11 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(error_t), allocatable :: err2
       type(h5_file_t) :: f
-      type(iarr_t) :: arr(NSETS)
+      type(iarr_t) :: arr(NSETS), marr(NMODEL)
+      type(rarr_t) :: rarr(NREAL)
       integer :: k
       call to_arrays(rp, arr)
+      call model_arrays(rp, marr, rarr)
       call h5_create(f, path, error)
       if (allocated(error)) return
       work: block
@@ -135,6 +213,20 @@ contains
          end do
          do k = 1, NSETS
             call h5_write(f, trim(SETS(k)), arr(k)%a, error)
+            if (allocated(error)) exit work
+         end do
+         do k = 1, NMODEL
+            if (IROWS(k) == 0) then
+               call h5_write(f, trim(MSETS(k)), marr(k)%a, error)
+            else
+               call h5_write(f, trim(MSETS(k)), reshape(marr(k)%a, &
+                             [IROWS(k), size(marr(k)%a)/IROWS(k)]), error)
+            end if
+            if (allocated(error)) exit work
+         end do
+         do k = 1, NREAL
+            call h5_write(f, trim(RSETS(k)), reshape(rarr(k)%a, &
+                          [RROWS(k), size(rarr(k)%a)/RROWS(k)]), error)
             if (allocated(error)) exit work
          end do
          call h5_write_attr(f, '/', 'format', RANK_FILE_FORMAT, error)
@@ -147,7 +239,8 @@ contains
          call h5_write_attr(f, '/', 'deck_hash', deck_hash, error)
          if (allocated(error)) exit work
          call h5_write_attr(f, '/', 'checksum', payload_checksum(RANK_FILE_VERSION, rp%np, &
-                            rp%rank, rp%ne_global, rp%nn_global, deck_hash, arr), error)
+                            rp%rank, rp%ne_global, rp%nn_global, deck_hash, arr, marr, &
+                            rarr), error)
       end block work
       call h5_close(f, err2)
       if (.not. allocated(error) .and. allocated(err2)) call move_alloc(err2, error)
@@ -162,7 +255,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(error_t), allocatable :: err2
       type(h5_file_t) :: f
-      type(iarr_t) :: arr(NSETS)
+      type(iarr_t) :: arr(NSETS), marr(NMODEL)
+      type(rarr_t) :: rarr(NREAL)
       character(:), allocatable :: fmt, fhash, fsum
       integer :: version, k, hv(size(HEADER))
       real(wp), allocatable :: buf(:)
@@ -196,8 +290,17 @@ contains
             if (allocated(error)) exit work
             arr(k)%a = nint(buf)
          end do
+         do k = 1, NMODEL
+            call h5_read(f, trim(MSETS(k)), buf, error)
+            if (allocated(error)) exit work
+            marr(k)%a = nint(buf)
+         end do
+         do k = 1, NREAL
+            call h5_read(f, trim(RSETS(k)), rarr(k)%a, error)
+            if (allocated(error)) exit work
+         end do
          if (fsum /= payload_checksum(version, rp%np, rp%rank, rp%ne_global, rp%nn_global, &
-                                      fhash, arr)) then
+                                      fhash, arr, marr, rarr)) then
             call set_error(error, path//': rank file is corrupt (checksum mismatch); '// &
                            'rerun dynx-part', EXIT_IO)
             exit work
@@ -219,6 +322,7 @@ contains
             exit work
          end if
          call from_arrays(arr, rp)
+         call model_from_arrays(marr, rarr, rp)
       end block work
       call h5_close(f, err2)
       if (.not. allocated(error) .and. allocated(err2)) call move_alloc(err2, error)

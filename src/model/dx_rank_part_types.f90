@@ -3,6 +3,7 @@
 !> io does not import the engine (architecture.md: a type the layers share lives in a
 !> module that uses only base).
 module dx_rank_part_types
+   use dx_kinds, only: wp
    implicit none
    private
    public :: rank_part_t
@@ -24,5 +25,20 @@ module dx_rank_part_types
       integer, allocatable :: wall_ptr(:)    !< (nwalls+1) offsets into wall_nodes
       integer, allocatable :: wall_nodes(:)  !< local slave nodes of each rigid wall
       integer, allocatable :: hist_nodes(:)  !< indices into model%db%hist_nodes
+      !> The rank's sub-model (rank file format 2, group /model; dx_rank_submodel): the
+      !> initial coordinates, velocities and labels of its nodes (order of nodes), and its
+      !> pieces of the serial element blocks in serial block order: pieces(:, p) = serial
+      !> block, dense part, element type; piece p's elements are piece_ptr(p) ..
+      !> piece_ptr(p+1)-1 of piece_elem (global element), piece_pos (position in the serial
+      !> block, ascending) and piece_conn (MAX_NEN, *): global nodes, 0 past the family's nen.
+      real(wp), allocatable :: x0(:, :), v0(:, :)
+      integer, allocatable :: node_label(:)
+      integer, allocatable :: pieces(:, :), piece_ptr(:)
+      integer, allocatable :: piece_elem(:), piece_pos(:), piece_conn(:, :)
+      !> The records of spcs, prescribed and node_loads above, global node indices:
+      !> spc_rec (7, *) node, DOF flags 1..6 (0/1); pm_int (4, *) node, dof, vad, curve and
+      !> pm_real (6, *) sf, dir(3), death, birth; nl_int (3, *) node, dof, curve, nl_sf (*)
+      integer, allocatable :: spc_rec(:, :), pm_int(:, :), nl_int(:, :)
+      real(wp), allocatable :: pm_real(:, :), nl_sf(:)
    end type rank_part_t
 end module dx_rank_part_types

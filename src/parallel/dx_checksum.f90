@@ -90,8 +90,10 @@ contains
       type(checksum_t), intent(inout) :: c
       character(*), intent(in) :: path
       type(error_t), allocatable, intent(out) :: error
+      integer, parameter :: CHUNK = 1048576   ! bytes read at a time (no whole-deck buffer:
+                                              ! every MPI rank hashes the deck)
       integer :: u, ios, k
-      integer(int64) :: sz
+      integer(int64) :: sz, pos, n
       integer(int8), allocatable :: buf(:)
       open(newunit=u, file=path, access='stream', form='unformatted', status='old', &
            action='read', iostat=ios)
@@ -100,15 +102,21 @@ contains
          return
       end if
       inquire(unit=u, size=sz)
-      allocate(buf(max(sz, 0_int64)))
-      if (sz > 0) read(u, iostat=ios) buf
+      allocate(buf(CHUNK))
+      pos = 0
+      do while (pos < sz)
+         n = min(int(CHUNK, int64), sz - pos)
+         read(u, pos=pos + 1, iostat=ios) buf(1:n)
+         if (ios /= 0) exit
+         do k = 1, int(n)
+            call c%add_byte(iand(int(buf(k)), 255))
+         end do
+         pos = pos + n
+      end do
       close(u)
       if (ios /= 0) then
          call set_error(error, 'cannot read '//path//' to compute its content hash', EXIT_IO)
          return
       end if
-      do k = 1, size(buf)
-         call c%add_byte(iand(int(buf(k)), 255))
-      end do
    end subroutine checksum_file
 end module dx_checksum

@@ -16,6 +16,7 @@ program dynx_part
    use dx_rank_file, only: write_rank_file, read_rank_file, rank_file_name, deck_content_hash
    use dx_io_sys, only: sys_mkdir_p
    use dx_par_contact, only: contact_groups, write_contact_report
+   use dx_par_model, only: par_model_verify
    implicit none
    character(:), allocatable :: deck, outdir, arg, val
    type(model_input_t) :: inp
@@ -108,6 +109,7 @@ contains
       type(rank_part_t), allocatable :: rps(:)
       integer, allocatable :: seen(:), conn(:, :), holder(:, :)
       integer :: r, k, q, kq, e, ib, j, nsh
+      character(:), allocatable :: msg
       allocate(rps(0:np - 1), seen(model%ne))
       call model_conn(model, conn)
       seen = 0
@@ -117,6 +119,12 @@ contains
          if (rps(r)%ne_global /= model%ne .or. rps(r)%nn_global /= model%nn) then
             call set_error(error, rank_file_name(outdir, r)//': element or node count '// &
                            'differs from the deck', EXIT_INPUT)
+            return
+         end if
+         call par_model_verify(model, rps(r), msg)   ! the file's sub-model = the cut
+         if (len(msg) > 0) then
+            call set_error(error, rank_file_name(outdir, r)//': the sub-model built from '// &
+               'the file differs from the one cut from the deck''s model: '//msg, EXIT_INPUT)
             return
          end if
          do k = 1, size(rps(r)%elements)
@@ -187,7 +195,8 @@ contains
       end do
       call log_info('dynx-part: verified '//str(np)//' rank files in '//outdir//': every '// &
          'element on exactly one rank, shared-node lists symmetric ('//str(nsh/2)// &
-         ' node-rank pairs)')
+         ' node-rank pairs), each rank''s sub-model from its file equal to the cut from '// &
+         'the deck bit for bit')
    end subroutine verify_files
 
    subroutine usage()
@@ -196,7 +205,9 @@ contains
          '', &
          'Partitions the deck''s elements into NP ranks with METIS and writes', &
          '  DIR/rank_00000.h5 ... one HDF5 file per rank (elements, nodes, shared nodes,', &
-         '                        boundary conditions and loads on its nodes)', &
+         '                        boundary conditions and loads on its nodes, and its', &
+         '                        sub-model: node coordinates, velocities, labels, element', &
+         '                        pieces of the serial blocks with their connectivity)', &
          '  DIR/partition.txt     the partition report (also printed)', &
          '', &
          'options:', &
@@ -205,7 +216,9 @@ contains
          '  --ignore-unknown     unknown keywords are warnings, not errors', &
          '  --verify             write nothing: read DIR''s rank files back and check them', &
          '                       against the deck (checksum, deck hash, NP, every element', &
-         '                       on exactly one rank, symmetric shared-node lists)', &
+         '                       on exactly one rank, symmetric shared-node lists, the', &
+         '                       sub-model built from each file equal to the cut from the', &
+         '                       deck bit for bit)', &
          '  -h, --help           this text', &
          '', &
          'exit codes: 0 normal, 2 input error, 4 I/O failure'

@@ -18,6 +18,7 @@ program test_partition
    use dx_rank_file, only: write_rank_file, read_rank_file, rank_file_name, deck_content_hash
    use dx_io_sys, only: sys_mkdir_p
    use dx_assert, only: check, check_close, assert_summary
+   use dx_par_model, only: par_model_verify
    use dx_strings, only: str
    implicit none
    character(*), parameter :: TMP = 'build/test_partition'
@@ -497,9 +498,13 @@ contains
       character(16) :: hash, hash2, hash_again
       integer :: r, np, gp(1), ge(0)
       integer, allocatable :: seen_spc(:), seen_pm(:)
-      logical :: ok
-      character(:), allocatable :: path
+      logical :: ok, ok2
+      character(:), allocatable :: path, msg
+      integer :: bad, nbad
       write(*, '(a)') 'rank files'
+      ok2 = .true.
+      bad = 0
+      nbad = 0
       np = 3
       call read_deck_input(DECK, inp, error)
       call check(.not. allocated(error), 'read '//DECK)
@@ -545,8 +550,58 @@ contains
             .and. same(back%hist_nodes, rp%hist_nodes) .and. back%rank == r &
             .and. back%np == np .and. back%ne_global == model%ne &
             .and. back%nn_global == model%nn
+         ! format 2: the sub-model, bit for bit, and the one built from it = the cut
+         ok2 = ok2 .and. same(back%node_label, rp%node_label) .and. &
+            same(back%piece_ptr, rp%piece_ptr) .and. same(back%piece_elem, rp%piece_elem) &
+            .and. same(back%piece_pos, rp%piece_pos) .and. &
+            same(reshape(back%pieces, [size(back%pieces)]), reshape(rp%pieces, [size(rp%pieces)])) &
+            .and. all(shape(back%piece_conn) == shape(rp%piece_conn)) .and. &
+            same(reshape(back%piece_conn, [size(back%piece_conn)]), &
+                 reshape(rp%piece_conn, [size(rp%piece_conn)])) .and. &
+            same(transfer(back%x0, [0]), transfer(model%x0(:, rp%nodes), [0])) .and. &
+            same(transfer(back%v0, [0]), transfer(model%v0(:, rp%nodes), [0])) .and. &
+            size(back%piece_elem) == size(rp%elements)
+         call par_model_verify(model, back, msg)
+         ok2 = ok2 .and. len(msg) == 0
+         ! a sub-model that is not the cut is found, naming what differs: an element's
+         ! serial position (its order key), a corner node, a coordinate's last bit
+         if (size(back%piece_pos) > 1) then
+            back%piece_pos([1, 2]) = back%piece_pos([2, 1])
+            call par_model_verify(model, back, msg)
+            bad = bad + merge(1, 0, index(msg, 'serial positions') > 0)
+            back%piece_pos([1, 2]) = back%piece_pos([2, 1])
+            back%piece_conn([1, 2], 1) = back%piece_conn([2, 1], 1)
+            call par_model_verify(model, back, msg)
+            bad = bad + merge(1, 0, index(msg, 'connectivity') > 0 .or. index(msg, 'keys') > 0 &
+                              .or. index(msg, 'slot') > 0)
+            back%piece_conn([1, 2], 1) = back%piece_conn([2, 1], 1)
+            back%x0(1, 1) = nearest(back%x0(1, 1), 1.0_wp)
+            call par_model_verify(model, back, msg)
+            bad = bad + merge(1, 0, msg == 'initial coordinates')
+            back%x0(1, 1) = nearest(back%x0(1, 1), -1.0_wp)
+            nbad = nbad + 3
+         end if
+         if (size(back%pm_real, 2) > 0) then    ! a prescribed motion's scale, one ulp
+            back%pm_real(1, 1) = nearest(back%pm_real(1, 1), 1.0_wp)
+            call par_model_verify(model, back, msg)
+            bad = bad + merge(1, 0, msg == 'prescribed-motion record 1')
+            back%pm_real(1, 1) = nearest(back%pm_real(1, 1), -1.0_wp)
+            nbad = nbad + 1
+         end if
+         if (size(back%spc_rec, 2) > 0) then    ! an SPC's DOF flag
+            back%spc_rec(2, 1) = 1 - back%spc_rec(2, 1)
+            call par_model_verify(model, back, msg)
+            bad = bad + merge(1, 0, msg == 'SPC record 1')
+            nbad = nbad + 1
+         end if
       end do
       call check(ok, 'rank files round-trip (all 13 arrays and the header, 3 ranks)')
+      call check(ok2, 'format 2: the sub-model round-trips bit for bit and the sub-model '// &
+                 'built from each file equals the cut (par_model_verify)')
+      call check(nbad > 0 .and. bad == nbad, 'par_model_verify finds a swapped serial '// &
+                 'position, a swapped corner, a one-ulp coordinate, a one-ulp prescribed-motion '// &
+                 'scale and a flipped SPC flag ('//str(bad)//' of '// &
+                 str(nbad)//')')
       call check(size(seen_spc) > 0 .and. all(seen_spc == 1) .and. size(seen_pm) > 0 .and. &
                  all(seen_pm == 1), 'every SPC and prescribed motion of the deck is on a rank')
       path = rank_file_name(TMP, 1)
