@@ -10,7 +10,9 @@ C1 and C2 cycles (environment, default 100 and 300), and the difference of the s
 per stage divided by C2 - C1: the set-up (deck, model, rank files, output) cancels and what
 remains is the cost of one cycle. Stages are groups of symbols (STAGES below; the copies and
 fills of libc are counted with the element pass, where the serial profile puts them). Needs
-perf and mpirun; prints a markdown table."""
+perf and mpirun; prints a markdown table. DYNX, DYNX_PART (default bin/dynx, bin/dynx-part):
+the binaries, e.g. an older build for an old/new comparison (OUT: build/bench/profile/TAG,
+TAG from the environment, default 'new')."""
 import os
 import re
 import shutil
@@ -23,7 +25,9 @@ box = sys.argv[1:4] if len(sys.argv) >= 4 else ['50', '50', '40']
 NP = int(sys.argv[4]) if len(sys.argv) >= 5 else 2
 C1 = int(os.environ.get('C1', '100'))
 C2 = int(os.environ.get('C2', '300'))
-OUT = 'build/bench/profile'
+DYNX = os.environ.get('DYNX', 'bin/dynx')
+DYNX_PART = os.environ.get('DYNX_PART', 'bin/dynx-part')
+OUT = 'build/bench/profile/' + os.environ.get('TAG', 'new')
 MPIRUN = ['mpirun', '--oversubscribe', '--mca', 'mpi_yield_when_idle', '1']
 if os.geteuid() == 0:
     MPIRUN.append('--allow-run-as-root')
@@ -54,14 +58,14 @@ def run(cyc, np):
     os.makedirs(out)
     perf = ['perf', 'record', '-q', '-e', 'task-clock', '-F', '1000', '-o']
     if np == 0:
-        cmd = perf + [f'{out}/perf.0', 'bin/dynx', '-i', deck, '-o', out]
+        cmd = perf + [f'{out}/perf.0', DYNX, '-i', deck, '-o', out]
     else:
         part = f'{OUT}/part_{tag}_{np}'
         if not os.path.exists(part + '/partition.txt'):
-            subprocess.run(['bin/dynx-part', deck, '-n', str(np), '-o', part], check=True,
+            subprocess.run([DYNX_PART, deck, '-n', str(np), '-o', part], check=True,
                            stdout=subprocess.DEVNULL)
         cmd = MPIRUN + ['-np', str(np), 'sh', '-c', 'exec ' + ' '.join(perf) + f' {out}/perf.'
-                        '$OMPI_COMM_WORLD_RANK bin/dynx -i ' + f'{deck} -o {out} --part {part}']
+                        f'$OMPI_COMM_WORLD_RANK {DYNX} -i {deck} -o {out} --part {part}']
     with open(out + '.log', 'w') as log:
         subprocess.run(cmd, check=True, stdout=log, stderr=subprocess.STDOUT)
     res = []
@@ -83,6 +87,7 @@ def run(cyc, np):
 
 def main():
     os.makedirs(OUT, exist_ok=True)
+    ne = int(box[0]) * int(box[1]) * int(box[2])
     prof = {}
     for np in (0, NP):
         a, b = run(C1, np), run(C2, np)
@@ -98,9 +103,11 @@ def main():
         print(f'| {s} | ' + ' | '.join(f'{c[s]:.3f}' for c in cols) + ' |')
     tot = [sum(c.values()) for c in cols]
     print('| **total** | ' + ' | '.join(f'{t:.3f}' for t in tot) + ' |')
-    print(f'\nSerial CPU per cycle / largest rank\'s: {tot[0] / max(tot[1:]):.2f} (the speed-up '
-          f'with one core per rank and no waiting on a loaded core); serial / mean rank: '
-          f'{tot[0] * NP / sum(tot[1:]):.2f}.')
+    print('| ns per element-cycle (CPU, per rank: x NP) | ' +
+          ' | '.join(f'{1e6 * t * (1 if k == 0 else NP) / ne:.0f}' for k, t in enumerate(tot)) + ' |')
+    print(f'\n{DYNX}: serial CPU per cycle / largest rank\'s: {tot[0] / max(tot[1:]):.2f} (the '
+          f'speed-up with one core per rank and no waiting on a loaded core); serial / mean '
+          f'rank: {tot[0] * NP / sum(tot[1:]):.2f}.')
 
 
 main()
