@@ -22,7 +22,7 @@ resident set = VmHWM at exit, CPU times; or a `ulimit -v` per rank). Four parts 
          V0 + FIT_FRAC x (S - C) with V0 the peak virtual size (VmPeak, what ulimit -v bounds)
          of an empty MPI run's ranks, S the serial run's peak resident memory; PASS when the
          run fails at NP 1 and completes at NP FIT_NP under that limit
-Environment: SMALL (default "50 50 40", 1e5 elements), BIG ("100 100 100", 1e6; "" skips
+Environment: SMALL (default "50 50 40", 1e5 elements; "" skips it), BIG ("100 100 100", 1e6; "" skips
 it), CYC_SMALL (200), CYC_BIG (30), REPS (3), MEM_NP ("1 2 3 4"), WEAK_NP ("1 2 4 8"),
 WEAK_NZ (10), WEAK_CYC (100), FIT_BOX ("50 50 120"), FIT_NP (4), FIT_FRAC (0.4: NP 1 needs the whole
 model, 1.0; NP 4 with distributed memory about 0.25 x 1.1, plus the halo),
@@ -40,7 +40,7 @@ os.chdir(ROOT)
 env = os.environ.get
 SMALL = env('SMALL', '50 50 40')
 BIG = env('BIG', '100 100 100')
-CYC = {SMALL: int(env('CYC_SMALL', '200'))}
+CYC = {SMALL: int(env('CYC_SMALL', '200'))} if SMALL else {}
 if BIG:
     CYC[BIG] = int(env('CYC_BIG', '30'))
 REPS = int(env('REPS', '3'))
@@ -292,12 +292,12 @@ def main():
     emit(f'\n### make bench (scaling, scripts/bench_scaling.py), {datetime.date.today()}, commit '
          f'{rev}{" + local changes" if dirty else ""}, {cpu}, {CORES} cores, load average '
          f'{loadavg():.2f} at the start\n')
-    emit('Command: `' + ' '.join(f'{k}="{env(k)}"' for k in
-                                 ('SMALL', 'BIG', 'REPS', 'PARTS') if env(k) is not None)
-         + (' ' if any(env(k) is not None for k in ('SMALL', 'BIG', 'REPS', 'PARTS')) else '')
-         + 'python3 scripts/bench_scaling.py`\n')
+    keys = ('SMALL', 'BIG', 'CYC_SMALL', 'CYC_BIG', 'REPS', 'MEM_NP', 'WEAK_NP', 'WEAK_NZ',
+            'WEAK_CYC', 'FIT_BOX', 'FIT_NP', 'FIT_FRAC', 'PARTS')
+    given = ''.join(f'{k}="{env(k)}" ' for k in keys if env(k) is not None)
+    emit(f'Command: `{given}python3 scripts/bench_scaling.py`\n')
     c = constant()
-    boxes = [SMALL] + ([BIG] if BIG else [])
+    boxes = ([SMALL] if SMALL else []) + ([BIG] if BIG else [])
     for box in boxes:
         if 'speed' in PARTS or 'mem' in PARTS:
             dk, ser, par, loads = speed(box) if 'speed' in PARTS else (None, None, None, None)
