@@ -104,7 +104,8 @@ def main():
     tot = [sum(c.values()) for c in cols]
     print('| **total** | ' + ' | '.join(f'{t:.3f}' for t in tot) + ' |')
     print('| ns per element-cycle (CPU, per rank: x NP) | ' +
-          ' | '.join(f'{1e6 * t * (1 if k == 0 else NP) / ne:.0f}' for k, t in enumerate(tot)) + ' |')
+          ' | '.join(f'{1e6 * t * (1 if k == 0 else NP) / ne:.0f}'
+                     for k, t in enumerate(tot)) + ' |')
     print(f'\n{DYNX}: serial CPU per cycle / largest rank\'s: {tot[0] / max(tot[1:]):.2f} (the '
           f'speed-up with one core per rank and no waiting on a loaded core); serial / mean '
           f'rank: {tot[0] * NP / sum(tot[1:]):.2f}.')

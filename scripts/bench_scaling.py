@@ -22,8 +22,8 @@ resident set = VmHWM at exit, CPU times; or a `ulimit -v` per rank). Four parts 
          V0 + FIT_FRAC x (S - C) with V0 the peak virtual size (VmPeak, what ulimit -v bounds)
          of an empty MPI run's ranks, S the serial run's peak resident memory; PASS when the
          run fails at NP 1 and completes at NP FIT_NP under that limit
-Environment: SMALL (default "50 50 40", 1e5 elements; "" skips it), BIG ("100 100 100", 1e6; "" skips
-it), CYC_SMALL (200), CYC_BIG (30), REPS (3), MEM_NP ("1 2 3 4"), WEAK_NP ("1 2 4 8"),
+Environment: SMALL (default "50 50 40", 1e5 elements; "" skips it), BIG ("100 100 100",
+1e6; "" skips it), CYC_SMALL (200), CYC_BIG (30), REPS (3), MEM_NP ("1 2 3 4"), WEAK_NP ("1 2 4 8"),
 WEAK_NZ (10), WEAK_CYC (100), FIT_BOX ("50 50 120"), FIT_NP (4), FIT_FRAC (0.4: NP 1 needs the whole
 model, 1.0; NP 4 with distributed memory about 0.25 x 1.1, plus the halo),
 PARTS ("speed mem weak fit"), DOC (docs/scaling.md; "" prints only).
@@ -272,8 +272,9 @@ def fit(c):
     ok = (not one['ok']) and many['ok']
     emit(f'Memory-limit test ({nel(FIT_BOX):,}-element box {FIT_BOX.replace(" ", " x ")}, 10 '
          f'cycles): `ulimit -v {limit}` KiB per rank = V0 {e["vmpeak"]} (VmPeak of an '
-         f'8-element run\'s ranks, largest of NP 1: {v1} and NP {FIT_NP}: {v4}) + {FIT_FRAC} x (serial peak '
-         f'resident {s["rss"]} - C0 {c["rss0"]}). NP 1: {"completed" if one["ok"] else "failed"} (exit '
+         f'8-element run\'s ranks, largest of NP 1: {v1} and NP {FIT_NP}: {v4}) + {FIT_FRAC} '
+         f'x (serial peak resident {s["rss"]} - C0 {c["rss0"]}). NP 1: '
+         f'{"completed" if one["ok"] else "failed"} (exit '
          f'{one["rc"]}); NP {FIT_NP}: {"completed" if many["ok"] else "failed"} (exit '
          f'{many["rc"]}{", " + many["tail"][-160:] if not many["ok"] else ""}). '
          f'**{"PASS" if ok else "FAIL"}** (runs at NP {FIT_NP} and not at NP 1).\n')

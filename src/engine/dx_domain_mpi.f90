@@ -5,8 +5,9 @@
 !> order (posted right after the element pass, before the MINLOC, so the messages travel
 !> during the MINLOC, contact and loads; finished at the exchange stage: ParaDyn's overlap of
 !> communication and computation), one MINLOC for the step that also carries the failure
-!> flag and the stop/dump requests, work and energy sums in serial order from gathered terms, plot parts per rank
-!> (dx_par_engine, dx_par_loads, dx_par_rigid, dx_par_contact, dx_par_plot, dx_par_restart).
+!> flag and the stop/dump requests, work and energy sums in serial order from gathered
+!> terms, plot parts per rank (dx_par_engine, dx_par_loads, dx_par_rigid, dx_par_contact,
+!> dx_par_plot, dx_par_restart).
 !> domain_create builds the run's domain once: serial (one rank, or the conserving solver's
 !> replicated run) or MPI.
 module dx_domain_mpi
