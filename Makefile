@@ -178,8 +178,7 @@ bench: deps
 	@sh scripts/bench_compare.sh
 	@sh scripts/bench_shared_sum.sh
 	@sh scripts/bench_contact.sh
-	@sh scripts/bench_mpi.sh
-	@sh scripts/bench_mpi_memory.sh
+	@python3 scripts/bench_scaling.py   # MPI: speed-up, memory per rank, weak scaling, ulimit (BIG= skips 1e6)
 	@sh scripts/bench_par_contact.sh
 	@sh scripts/bench_implicit.sh
 	@python3 scripts/bench_shell_scenes.py --plate $(if $(PLATE),$(PLATE),40) --post $(if $(POST),$(POST),12) --out docs/performance.md

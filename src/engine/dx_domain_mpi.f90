@@ -2,9 +2,12 @@
 !> Area Report FY97, article 4 of shared/seed; fixed-order sums after OpenRadioss
 !> /PARITH/ON): each stage of dx_domain's cycle as the MPI engine performs it - shared
 !> nodes' slots filled before the element pass, one shared-node force exchange in serial
-!> order, one MINLOC for the step that also carries the failure flag and the stop/dump
-!> requests, work and energy sums in serial order from gathered terms, plot parts per rank
-!> (dx_par_engine, dx_par_loads, dx_par_rigid, dx_par_contact, dx_par_plot, dx_par_restart).
+!> order (posted right after the element pass, before the MINLOC, so the messages travel
+!> during the MINLOC, contact and loads; finished at the exchange stage: ParaDyn's overlap of
+!> communication and computation), one MINLOC for the step that also carries the failure
+!> flag and the stop/dump requests, work and energy sums in serial order from gathered
+!> terms, plot parts per rank (dx_par_engine, dx_par_loads, dx_par_rigid, dx_par_contact,
+!> dx_par_plot, dx_par_restart).
 !> domain_create builds the run's domain once: serial (one rank, or the conserving solver's
 !> replicated run) or MPI.
 module dx_domain_mpi
@@ -13,7 +16,9 @@ module dx_domain_mpi
    use dx_strings, only: str
    use dx_model, only: model_t
    use dx_output, only: output_t
-   use dx_par, only: par_size, par_allreduce, PAR_MAX
+   use dx_par, only: par_size, par_allreduce, PAR_MAX, par_traffic_line
+   use dx_log, only: log_info
+   use dx_par_model, only: par_exchange_post, par_exchange_drop
    use dx_mass_scaling, only: lump_mass
    use dx_domain, only: domain_t, serial_domain_t, requests_t
    use dx_par_engine_setup, only: par_engine_setup, par_engine_mass_share
@@ -183,8 +188,11 @@ contains
       class(requests_t), intent(inout) :: req
       type(error_t), allocatable, intent(inout) :: error
       integer :: flags(4)
+      ! the slots' forces are final: post their exchange (finished in m_exchange)
+      call par_exchange_post(d%eng%pm, model%f)
       call req%poll(flags)
       call par_engine_dt(d%eng, dtcrit, model%dt_elem, error, flags)
+      if (allocated(error)) call par_exchange_drop(d%eng%pm)   ! no exchange stage follows
       req%coll = flags
       req%collective = .true.
    end subroutine m_reduce_dt
@@ -347,6 +355,7 @@ contains
    subroutine m_report(d)
       class(mpi_domain_t), intent(inout) :: d
       call par_engine_report(d%eng, d%contact)
+      call log_info(par_traffic_line())
    end subroutine m_report
 
    !> A failure every rank knows (each stops without MPI_Abort).

@@ -17,11 +17,13 @@ module dx_par_model
    use dx_partition, only: rank_part_t
    use dx_rank_submodel, only: rank_local_node, rank_records_verify
    use dx_strings, only: str
-   use dx_par_plan, only: shared_sum_t, par_shared_setup, par_shared_sum
+   use dx_par_plan, only: shared_sum_t, par_shared_setup, par_shared_sum, par_shared_post, &
+                          par_shared_finish, par_shared_drop
    implicit none
    private
    public :: par_model_t, par_model_build, par_fill_slots, par_exchange_forces, &
-             par_exchange_mass, par_model_from_file, par_model_fill_state, par_model_verify
+             par_exchange_mass, par_model_from_file, par_model_fill_state, par_model_verify, &
+             par_exchange_post, par_exchange_drop
 
    type :: par_model_t
       integer :: nloc = 0                       !< the rank's nodes (local 1..nloc)
@@ -365,19 +367,32 @@ contains
    end subroutine par_fill_slots
 
    !> After the element pass into f (3, nloc + nslot), zeroed before it: the one exchange;
-   !> f at the shared nodes becomes the serial sum of all ranks' contributions.
+   !> f at the shared nodes becomes the serial sum of all ranks' contributions. When the
+   !> slots' values were posted already (par_exchange_post) only the wait and the sums.
    subroutine par_exchange_forces(pm, f)
-      type(par_model_t), intent(in) :: pm
+      type(par_model_t), intent(inout) :: pm
       real(wp), intent(inout) :: f(:, :)
-      real(wp), allocatable :: res(:, :)
-      allocate(res(size(f, 1), pm%nshared))
-      call par_shared_sum(pm%force_plan, f(:, pm%nloc + 1:pm%nloc + pm%nslot), res)
-      f(:, pm%shared_local) = res
+      if (.not. pm%force_plan%posted) &
+         call par_shared_post(pm%force_plan, f(:, pm%nloc + 1:pm%nloc + pm%nslot))
+      call par_shared_finish(pm%force_plan, f, pm%shared_local)
    end subroutine par_exchange_forces
+
+   !> The slots of f are final (right after the element pass): their values sent now, the
+   !> sums formed by the next par_exchange_forces (or discarded by par_exchange_drop).
+   subroutine par_exchange_post(pm, f)
+      type(par_model_t), intent(inout) :: pm
+      real(wp), intent(in) :: f(:, :)
+      call par_shared_post(pm%force_plan, f(:, pm%nloc + 1:pm%nloc + pm%nslot))
+   end subroutine par_exchange_post
+
+   subroutine par_exchange_drop(pm)
+      type(par_model_t), intent(inout) :: pm
+      call par_shared_drop(pm%force_plan)
+   end subroutine par_exchange_drop
 
    !> The same for the lumped mass (nloc + nslot), scattered element-major.
    subroutine par_exchange_mass(pm, mass)
-      type(par_model_t), intent(in) :: pm
+      type(par_model_t), intent(inout) :: pm
       real(wp), intent(inout) :: mass(:)
       real(wp), allocatable :: res(:, :)
       allocate(res(1, pm%nshared))

@@ -5,7 +5,12 @@
 !> (par_check: a failed call aborts all ranks, naming the call). The fixed-order shared-node
 !> sums and ordered gathers built on it are in dx_par_plan.
 !>
-!> Module state: the communicator, this rank, the number of ranks, whether MPI is on.
+!> Module state: the communicator, this rank, the number of ranks, whether MPI is on, and the
+!> bytes this rank has sent (par_traffic_add, par_traffic_line): the shared-node sums'
+!> values, other point-to-point messages, and its own contribution to each collective (the
+!> payload it passes in: what MPI moves on the wire for an Allreduce of P ranks is about
+!> 2 x that, which the line does not guess), plus the number of dt MINLOC reductions (the
+!> cycles of an explicit run).
 module dx_par
    use, intrinsic :: iso_fortran_env, only: error_unit, int64
    use mpi_f08, only: MPI_2DOUBLE_PRECISION, MPI_Abort, MPI_Allgather, MPI_Allgatherv, &
@@ -30,12 +35,16 @@ module dx_par
    public :: par_allgatherv_real, par_sparse_exchange, par_allgather_probe   ! (contact)
    public :: par_displs, par_counts
    public :: par_self_handle   ! (the sparse direct solver, dx_mumps)
+   public :: par_traffic_add, par_traffic_line, PAR_T_EXCH, PAR_T_P2P, PAR_T_COLL
 
    integer, parameter :: PAR_SUM = 1, PAR_MIN = 2, PAR_MAX = 3
 
    type(MPI_Comm), save :: comm
    logical, save :: mpi_on = .false.
    integer, save :: my_rank = 0, nranks = 1
+   !> bytes sent by this rank: shared-node sums, other point-to-point, collectives; MINLOCs
+   integer, parameter :: PAR_T_EXCH = 1, PAR_T_P2P = 2, PAR_T_COLL = 3, PAR_T_DT = 4
+   integer(int64), save :: traffic(4) = 0
 
    interface par_allreduce
       module procedure allreduce_r0, allreduce_r1, allreduce_i0, allreduce_i1
@@ -179,6 +188,7 @@ contains
       integer :: ierr
       if (.not. mpi_on) return
       call MPI_Allreduce([x], y, 1, MPI_DOUBLE_PRECISION, reduce_op(op), comm, ierr)
+      traffic(PAR_T_COLL) = traffic(PAR_T_COLL) + 8
       call par_check(ierr, 'MPI_Allreduce')
       x = y(1)
    end subroutine allreduce_r0
@@ -190,6 +200,7 @@ contains
       integer :: ierr
       if (.not. mpi_on) return
       call MPI_Allreduce(x, y, size(x), MPI_DOUBLE_PRECISION, reduce_op(op), comm, ierr)
+      traffic(PAR_T_COLL) = traffic(PAR_T_COLL) + 8*size(x)
       call par_check(ierr, 'MPI_Allreduce')
       x = y
    end subroutine allreduce_r1
@@ -201,6 +212,7 @@ contains
       integer :: ierr
       if (.not. mpi_on) return
       call MPI_Allreduce([x], y, 1, MPI_INTEGER, reduce_op(op), comm, ierr)
+      traffic(PAR_T_COLL) = traffic(PAR_T_COLL) + 4
       call par_check(ierr, 'MPI_Allreduce')
       x = y(1)
    end subroutine allreduce_i0
@@ -212,6 +224,7 @@ contains
       integer :: ierr
       if (.not. mpi_on) return
       call MPI_Allreduce(x, y, size(x), MPI_INTEGER, reduce_op(op), comm, ierr)
+      traffic(PAR_T_COLL) = traffic(PAR_T_COLL) + 4*size(x)
       call par_check(ierr, 'MPI_Allreduce')
       x = y
    end subroutine allreduce_i1
@@ -262,6 +275,7 @@ contains
       end if
       allocate(c(0:nranks - 1))
       call MPI_Allgather(n, 1, MPI_INTEGER, c, 1, MPI_INTEGER, comm, ierr)
+      traffic(PAR_T_COLL) = traffic(PAR_T_COLL) + 4
       call par_check(ierr, 'MPI_Allgather (counts)')
    end function par_counts
 
@@ -278,6 +292,7 @@ contains
       sd = par_displs(scnt)
       rd = par_displs(rcnt)
       call MPI_Alltoallv(sbuf, scnt, sd, MPI_INTEGER, rbuf, rcnt, rd, MPI_INTEGER, comm, ierr)
+      traffic(PAR_T_COLL) = traffic(PAR_T_COLL) + 4*(sum(int(scnt, int64)) - scnt(my_rank))
       call par_check(ierr, 'MPI_Alltoallv (integer)')
    end subroutine alltoallv_i
 
@@ -296,6 +311,7 @@ contains
       rd = par_displs(rcnt)
       call MPI_Alltoallv(sbuf, scnt, sd, MPI_DOUBLE_PRECISION, rbuf, rcnt, rd, &
                          MPI_DOUBLE_PRECISION, comm, ierr)
+      traffic(PAR_T_COLL) = traffic(PAR_T_COLL) + 8*(sum(int(scnt, int64)) - scnt(my_rank))
       call par_check(ierr, 'MPI_Alltoallv (real)')
    end subroutine alltoallv_r
 
@@ -311,6 +327,7 @@ contains
       pin(1, 1) = x
       pin(2, 1) = real(key, wp)
       call MPI_Allreduce(pin, pout, 1, MPI_2DOUBLE_PRECISION, MPI_MINLOC, comm, ierr)
+      traffic(PAR_T_COLL) = traffic(PAR_T_COLL) + 16
       call par_check(ierr, 'MPI_Allreduce (MINLOC)')
       x = pout(1, 1)
       key = nint(pout(2, 1))
@@ -336,6 +353,7 @@ contains
       end do
       call MPI_Allreduce(pin, pout, 1 + size(flags), MPI_2DOUBLE_PRECISION, MPI_MINLOC, &
                          comm, ierr)
+      traffic(PAR_T_COLL) = traffic(PAR_T_COLL) + 16*(1 + size(flags))
       call par_check(ierr, 'MPI_Allreduce (MINLOC with flags)')
       x = pout(1, 1)
       key = nint(pout(2, 1))
@@ -370,6 +388,7 @@ contains
       allocate(rbuf(sum(c)))
       call MPI_Allgatherv(sbuf, size(sbuf), MPI_DOUBLE_PRECISION, rbuf, c, d, &
                           MPI_DOUBLE_PRECISION, comm, ierr)
+      traffic(PAR_T_COLL) = traffic(PAR_T_COLL) + 8*size(sbuf)
       call par_check(ierr, 'MPI_Allgatherv (real)')
       if (present(cnt)) cnt = c
    end subroutine par_allgatherv_real
@@ -420,6 +439,7 @@ contains
       end do
       call MPI_Waitall(nq, req(1:nq), MPI_STATUSES_IGNORE, ierr)
       call par_check(ierr, 'MPI_Waitall (probe gather)')
+      traffic(PAR_T_P2P) = traffic(PAR_T_P2P) + 8*size(sbuf, kind=int64)*nq
       allocate(rbuf(sum(cnt)))
       a = 0
       do r = 0, nranks - 1
@@ -458,6 +478,7 @@ contains
             nq = nq + 1
             call MPI_Isend(sbuf(b + 1:b + scnt(r)), scnt(r), MPI_DOUBLE_PRECISION, r, &
                            TAG_SPARSE, comm, req(nq), ierr)
+            traffic(PAR_T_P2P) = traffic(PAR_T_P2P) + 8*scnt(r)
             call par_check(ierr, 'MPI_Isend (sparse exchange)')
          end if
          b = b + scnt(r)
@@ -483,6 +504,7 @@ contains
       integer :: ierr
       if (.not. mpi_on) return
       call MPI_Bcast(x, size(x), MPI_DOUBLE_PRECISION, root, comm, ierr)
+      if (my_rank == root) traffic(PAR_T_COLL) = traffic(PAR_T_COLL) + 8*size(x)
       call par_check(ierr, 'MPI_Bcast (values)')
    end subroutine par_bcast_real
 
@@ -506,6 +528,8 @@ contains
          pin(2, 1 + k) = 0.0_wp
       end do
       call MPI_Allreduce(pin, pout, 1 + nf, MPI_2DOUBLE_PRECISION, MPI_MINLOC, comm, ierr)
+      traffic(PAR_T_COLL) = traffic(PAR_T_COLL) + 16*(1 + nf)
+      traffic(PAR_T_DT) = traffic(PAR_T_DT) + 1
       call par_check(ierr, 'MPI_Allreduce (MINLOC, 64-bit key)')
       x = pout(1, 1)
       key = nint(pout(2, 1), int64)
@@ -513,4 +537,31 @@ contains
          flags(k) = -nint(pout(1, 1 + k))
       end do
    end subroutine par_minloc8
+
+   !> Count nbytes sent by this rank as kind k (PAR_T_EXCH, PAR_T_P2P, PAR_T_COLL): for
+   !> dx_par_plan's messages (the other mpi_f08 module).
+   subroutine par_traffic_add(k, nbytes)
+      integer, intent(in) :: k
+      integer(int64), intent(in) :: nbytes
+      traffic(k) = traffic(k) + nbytes
+   end subroutine par_traffic_add
+
+   !> The end-of-run traffic line (a collective: every rank calls it): bytes sent per rank
+   !> per dt reduction (per cycle), the largest over the ranks for each kind, and the totals.
+   function par_traffic_line() result(s)
+      character(:), allocatable :: s
+      real(wp) :: t(4), tmax(4), ncyc
+      integer :: k
+      character(24) :: w(3)
+      t = real(traffic, wp)                  ! (before the reduction below counts itself)
+      tmax = t
+      call allreduce_r1(tmax, PAR_MAX)
+      ncyc = max(1.0_wp, tmax(PAR_T_DT))
+      do k = 1, 3
+         write(w(k), '(i0)') nint(tmax(k)/ncyc, int64)
+      end do
+      s = 'dynx: MPI bytes sent per rank per cycle (largest over the ranks, '// &
+          str(nint(tmax(PAR_T_DT)))//' cycles): shared-node sums '//trim(w(1))// &
+          ', other point-to-point '//trim(w(2))//', collectives (own payload) '//trim(w(3))
+   end function par_traffic_line
 end module dx_par

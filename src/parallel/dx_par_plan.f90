@@ -7,8 +7,17 @@
 !> and builds, for each shared node, the merged list of contributions (own and received) sorted
 !> by key; par_shared_sum then exchanges only the values, once per call, and every rank sharing
 !> a node forms the same sum from 0 in the same order: bit for bit the serial sum.
+!> The value exchange can be split (par_shared_post, par_shared_finish): the sends and receives
+!> are posted as soon as the contributions are final and completed only when the sums are
+!> needed, so the messages travel while the rank does other work (the overlap of
+!> communication with computation of ParaDyn, Hoover et al., article 4 of shared/seed; there
+!> the interior elements, here the dt MINLOC, contact and loads: the element order, and so
+!> the serial bits, stay as they are). The value buffers and requests live in the plan and are
+!> kept from call to call (no allocation per cycle).
 !> Ordered gathers (par_gather_*): every rank's (key, value) pairs in key order, for sums formed
 !> in the serial order. With one rank every plan is the identity (no MPI call).
+!> Bytes sent are counted in dx_par (par_traffic_add: shared-node sums apart from other
+!> point-to-point messages and collectives) for the end-of-run traffic line.
 !> No module state: a plan is built once (setup) and passed to each call.
 module dx_par_plan
    use mpi_f08, only: MPI_Allgatherv, MPI_DOUBLE_PRECISION, MPI_Gatherv, &
@@ -16,10 +25,12 @@ module dx_par_plan
                         MPI_Waitall
    use dx_kinds, only: wp
    use dx_sort, only: sort_index
-   use dx_par, only: par_comm, par_check, par_active, par_rank, par_size, par_displs, par_counts
+   use dx_par, only: par_comm, par_check, par_active, par_rank, par_size, par_displs, par_counts, &
+                     par_traffic_add, PAR_T_EXCH, PAR_T_P2P, PAR_T_COLL
    implicit none
    private
    public :: shared_sum_t, par_shared_setup, par_shared_sum, par_shared_sum_plain, &
+             par_shared_post, par_shared_finish, par_shared_drop, &
              gather_plan_t, par_gather_setup, par_gather_values, par_gather_ordered, &
              par_gather_setup_root, par_gather_values_root
 
@@ -34,6 +45,12 @@ module dx_par_plan
       integer, allocatable :: recv_ptr(:)                !< received contributions from nbr(k)
       integer, allocatable :: ord_ptr(:), ord_src(:)     !< per shared node: sources by key
       integer, allocatable :: nbr_ptr(:), nbr_snode(:)   !< shared nodes of each neighbour
+      !> the value exchange's buffers (kept between calls): own and received contributions
+      !> (ncomp, ncontrib + received), the values sent, the requests; posted: an exchange
+      !> was posted (par_shared_post) and not yet finished
+      real(wp), allocatable :: buf(:, :), sendbuf(:, :)
+      type(MPI_Request), allocatable :: req(:)
+      logical :: posted = .false.
    end type shared_sum_t
 
    !> A fixed ordered gather (the same keys every call): counts, offsets and the key order
@@ -126,6 +143,7 @@ contains
          end do
          call MPI_Waitall(2*nnb, req, MPI_STATUSES_IGNORE, ierr)
          call par_check(ierr, 'MPI_Waitall (shared-node counts)')
+         call par_traffic_add(PAR_T_P2P, 4*size(cnt_send, kind=8))
       end if
       ! received contributions from neighbour k: recv_ptr
       allocate(plan%recv_ptr(nnb + 1), rcnt_ptr(size(cnt_recv) + 1))
@@ -152,6 +170,7 @@ contains
          end do
          call MPI_Waitall(2*nnb, req, MPI_STATUSES_IGNORE, ierr)
          call par_check(ierr, 'MPI_Waitall (shared-node keys)')
+         call par_traffic_add(PAR_T_P2P, 4*size(keys_send, kind=8))
       end if
       ! per shared node: all sources (own i -> i; received j -> nc + j), sorted by key
       allocate(rkey_ptr(nshared + 1))
@@ -210,42 +229,100 @@ contains
    !> res(:, s) = sum over all ranks' contributions to shared node s, from 0 in key order;
    !> cval(:, i) is own contribution i (as in par_shared_setup). One exchange.
    subroutine par_shared_sum(plan, cval, res)
-      type(shared_sum_t), intent(in) :: plan
+      type(shared_sum_t), intent(inout), asynchronous :: plan
       real(wp), intent(in) :: cval(:, :)
       real(wp), intent(out) :: res(:, :)
-      real(wp), allocatable :: buf(:, :), sendbuf(:, :)
-      type(MPI_Request), allocatable :: req(:)
-      integer :: nc, nr, ncomp, k, s, i, ierr, nnb
+      integer :: s
+      call par_shared_post(plan, cval)
+      call par_shared_finish(plan, res, [(s, s = 1, plan%nshared)])
+   end subroutine par_shared_sum
+
+   !> First half of par_shared_sum: own contributions cval(ncomp, ncontrib) copied into the
+   !> plan's buffers, the receives and sends posted (no wait). cval may change afterwards;
+   !> every rank must call par_shared_finish (or par_shared_drop) before the plan's next use.
+   subroutine par_shared_post(plan, cval)
+      type(shared_sum_t), intent(inout), asynchronous :: plan
+      real(wp), intent(in) :: cval(:, :)
+      integer :: nc, nr, ncomp, k, ierr, nnb
+      if (plan%posted) error stop 'dx_par_plan: shared-node exchange posted twice'
       ncomp = size(cval, 1)
       nc = plan%ncontrib
       nnb = size(plan%nbr)
       nr = plan%recv_ptr(nnb + 1) - 1
-      allocate(buf(ncomp, nc + nr))
-      buf(:, 1:nc) = cval(:, 1:nc)
-      if (nnb > 0) then
-         sendbuf = cval(:, plan%send_idx)
-         allocate(req(2*nnb))
-         do k = 1, nnb
-            associate (a => plan%recv_ptr(k), b => plan%recv_ptr(k + 1) - 1, &
-                       c => plan%send_ptr(k), d => plan%send_ptr(k + 1) - 1)
-               call MPI_Irecv(buf(:, nc + a:nc + b), ncomp*(b - a + 1), MPI_DOUBLE_PRECISION, &
-                              plan%nbr(k), TAG_VALUES, par_comm(), req(k), ierr)
-               call par_check(ierr, 'MPI_Irecv (shared-node sum)')
-               call MPI_Isend(sendbuf(:, c:d), ncomp*(d - c + 1), MPI_DOUBLE_PRECISION, &
-                              plan%nbr(k), TAG_VALUES, par_comm(), req(nnb + k), ierr)
-               call par_check(ierr, 'MPI_Isend (shared-node sum)')
-            end associate
+      if (allocated(plan%buf)) then
+         if (size(plan%buf, 1) /= ncomp) deallocate(plan%buf, plan%sendbuf)
+      end if
+      if (.not. allocated(plan%buf)) then
+         allocate(plan%buf(ncomp, nc + nr), plan%sendbuf(ncomp, plan%send_ptr(nnb + 1) - 1))
+         allocate(plan%req(2*nnb))
+      end if
+      plan%buf(:, 1:nc) = cval(:, 1:nc)
+      plan%posted = .true.
+      if (nnb == 0) return
+      do k = 1, size(plan%send_idx)
+         plan%sendbuf(:, k) = cval(:, plan%send_idx(k))
+      end do
+      do k = 1, nnb
+         associate (a => plan%recv_ptr(k), b => plan%recv_ptr(k + 1) - 1, &
+                    c => plan%send_ptr(k), d => plan%send_ptr(k + 1) - 1)
+            call MPI_Irecv(plan%buf(:, nc + a:nc + b), ncomp*(b - a + 1), &
+                           MPI_DOUBLE_PRECISION, plan%nbr(k), TAG_VALUES, par_comm(), &
+                           plan%req(k), ierr)
+            call par_check(ierr, 'MPI_Irecv (shared-node sum)')
+            call MPI_Isend(plan%sendbuf(:, c:d), ncomp*(d - c + 1), MPI_DOUBLE_PRECISION, &
+                           plan%nbr(k), TAG_VALUES, par_comm(), plan%req(nnb + k), ierr)
+            call par_check(ierr, 'MPI_Isend (shared-node sum)')
+         end associate
+      end do
+      call par_traffic_add(PAR_T_EXCH, 8*size(plan%sendbuf, kind=8))
+   end subroutine par_shared_post
+
+   !> Second half: wait for the posted exchange, then res(:, idx(s)) = the sum at shared
+   !> node s in key order (idx: where each shared node's sum goes, e.g. its local node).
+   subroutine par_shared_finish(plan, res, idx)
+      type(shared_sum_t), intent(inout), asynchronous :: plan
+      real(wp), intent(inout) :: res(:, :)
+      integer, intent(in) :: idx(:)
+      integer :: s, i, j
+      real(wp) :: a1, a2, a3
+      call wait_posted(plan)
+      if (size(plan%buf, 1) == 3) then   ! forces, moments: the sums in registers
+         do s = 1, plan%nshared
+            a1 = 0.0_wp; a2 = 0.0_wp; a3 = 0.0_wp
+            do i = plan%ord_ptr(s), plan%ord_ptr(s + 1) - 1
+               j = plan%ord_src(i)
+               a1 = a1 + plan%buf(1, j)
+               a2 = a2 + plan%buf(2, j)
+               a3 = a3 + plan%buf(3, j)
+            end do
+            res(1, idx(s)) = a1; res(2, idx(s)) = a2; res(3, idx(s)) = a3
          end do
-         call MPI_Waitall(2*nnb, req, MPI_STATUSES_IGNORE, ierr)
-         call par_check(ierr, 'MPI_Waitall (shared-node sum)')
+         return
       end if
       do s = 1, plan%nshared
-         res(:, s) = 0.0_wp
+         res(:, idx(s)) = 0.0_wp
          do i = plan%ord_ptr(s), plan%ord_ptr(s + 1) - 1
-            res(:, s) = res(:, s) + buf(:, plan%ord_src(i))
+            res(:, idx(s)) = res(:, idx(s)) + plan%buf(:, plan%ord_src(i))
          end do
       end do
-   end subroutine par_shared_sum
+   end subroutine par_shared_finish
+
+   !> A posted exchange whose sums are not wanted (a failure stops the cycle): completed
+   !> (every rank posted its sends) and discarded. Nothing when none is posted.
+   subroutine par_shared_drop(plan)
+      type(shared_sum_t), intent(inout), asynchronous :: plan
+      if (plan%posted) call wait_posted(plan)
+   end subroutine par_shared_drop
+
+   subroutine wait_posted(plan)
+      type(shared_sum_t), intent(inout), asynchronous :: plan
+      integer :: ierr
+      if (.not. plan%posted) error stop 'dx_par_plan: shared-node exchange not posted'
+      plan%posted = .false.
+      if (size(plan%nbr) == 0) return
+      call MPI_Waitall(size(plan%req), plan%req, MPI_STATUSES_IGNORE, ierr)
+      call par_check(ierr, 'MPI_Waitall (shared-node sum)')
+   end subroutine wait_posted
 
    !> The plain alternative, for comparison: partial(:, s) is this rank's own sum at shared
    !> node s; res(:, s) adds the holders' partial sums in rank order. Deterministic for a
@@ -279,6 +356,7 @@ contains
       end do
       call MPI_Waitall(2*nnb, req, MPI_STATUSES_IGNORE, ierr)
       call par_check(ierr, 'MPI_Waitall (plain shared-node sum)')
+      call par_traffic_add(PAR_T_EXCH, 8*size(sbuf, kind=8))
       ! neighbours in ascending rank order; own partial in its place
       own_added = .false.
       do k = 1, nnb
@@ -320,6 +398,7 @@ contains
          call MPI_Allgatherv(vals, size(vals), MPI_DOUBLE_PRECISION, vv, ncomp*counts, &
                              ncomp*displs, MPI_DOUBLE_PRECISION, par_comm(), ierr)
          call par_check(ierr, 'MPI_Allgatherv (ordered gather values)')
+         call par_traffic_add(PAR_T_COLL, 4*size(keys, kind=8) + 8*size(vals, kind=8))
       end if
       idx = [(i, i = 1, size(kk))]
       call sort_index(idx, kk)
@@ -344,6 +423,7 @@ contains
          call MPI_Allgatherv(keys, size(keys), MPI_INTEGER, kk, plan%counts, plan%displs, &
                              MPI_INTEGER, par_comm(), ierr)
          call par_check(ierr, 'MPI_Allgatherv (gather plan keys)')
+         call par_traffic_add(PAR_T_COLL, 4*size(keys, kind=8))
       end if
       plan%perm = [(i, i = 1, size(kk))]
       call sort_index(plan%perm, kk)
@@ -386,6 +466,7 @@ contains
       call MPI_Gatherv(keys, size(keys), MPI_INTEGER, kk, plan%counts, plan%displs, &
                        MPI_INTEGER, 0, par_comm(), ierr)
       call par_check(ierr, 'MPI_Gatherv (root gather plan keys)')
+      call par_traffic_add(PAR_T_COLL, 4*size(keys, kind=8))
       plan%perm = [(i, i = 1, size(kk))]
       call sort_index(plan%perm, kk)
       plan%keys = kk(plan%perm)
@@ -416,6 +497,7 @@ contains
          return
       end if
       allocate(vv(ncomp, size(plan%keys)))
+      call par_traffic_add(PAR_T_COLL, 8*ncomp*int(plan%n, 8))
       if (root) then
          call MPI_Gatherv(vals, ncomp*plan%n, MPI_DOUBLE_PRECISION, vv, ncomp*plan%counts, &
                           ncomp*plan%displs, MPI_DOUBLE_PRECISION, 0, par_comm(), ierr)

@@ -36,6 +36,7 @@ program test_partition
    call test_serial_order_emulation()
    call test_more_ranks_than_elements()
    call test_proximity_edges()
+   call test_whole_blocks()
    call assert_summary()
 
 contains
@@ -792,4 +793,62 @@ contains
       call check(all(part2%epart == part%epart), 'proximity: reproducible')
    end subroutine test_proximity_edges
 
+   !> Whole serial blocks (dx_partition, BLOCKS_PER_RANK): a deck without contact groups and
+   !> with at least 32 element blocks per rank is cut between blocks, never through one
+   !> (each rank then runs full nv_chunk blocks), and stays balanced within 1.1: a
+   !> 25 x 24 x 16 box of hex8 (9,600 elements, 75 blocks of 128; rows of 25 elements, so a
+   !> block ends mid-row and an element cut across the rows would split blocks) at NP = 2.
+   subroutine test_whole_blocks()
+      character(*), parameter :: DECK = TMP//'/box_blocks.k'
+      integer, parameter :: NP = 2, NX = 25, NY = 24, NZ = 16
+      type(model_t) :: model
+      type(model_input_t) :: inp
+      type(partition_t) :: part
+      integer :: b, nsplit, gp(1), ge(0), u, i, j, k, n1
+      write(*, '(a)') 'whole serial blocks (25 x 24 x 16 box, NP = 2)'
+      open(newunit=u, file=DECK, status='replace', action='write')
+      write(u, '(a)') '*KEYWORD', '*CONTROL_TERMINATION', '       1.0        10', '*PART', 'box', &
+         '         1         1         1', '*SECTION_SOLID', '         1         1', &
+         '*MAT_ELASTIC', '         1    7.8E-6     210.0       0.3', '*NODE'
+      do k = 0, NZ
+         do j = 0, NY
+            do i = 0, NX
+               write(u, '(i8, 3f16.6)') 1 + i + (NX + 1)*(j + (NY + 1)*k), real(i, wp), &
+                  real(j, wp), real(k, wp)
+            end do
+         end do
+      end do
+      write(u, '(a)') '*ELEMENT_SOLID'
+      do k = 0, NZ - 1
+         do j = 0, NY - 1
+            do i = 0, NX - 1
+               n1 = 1 + i + (NX + 1)*(j + (NY + 1)*k)
+               write(u, '(10i8)') 1 + i + NX*(j + NY*k), 1, n1, n1 + 1, n1 + NX + 2, n1 + NX + 1, &
+                  n1 + (NX + 1)*(NY + 1), n1 + 1 + (NX + 1)*(NY + 1), &
+                  n1 + NX + 2 + (NX + 1)*(NY + 1), n1 + NX + 1 + (NX + 1)*(NY + 1)
+            end do
+         end do
+      end do
+      write(u, '(a)') '*END'
+      close(u)
+      call read_deck_input(DECK, inp, error)
+      if (.not. allocated(error)) call build_model_data(inp, model, error)
+      call check(.not. allocated(error), 'read and build '//DECK)
+      if (allocated(error)) return
+      call check(size(model%blocks) >= 32*NP, 'at least 32 blocks per rank: '// &
+                 str(size(model%blocks)))
+      gp = 1
+      call partition_model(model, NP, gp, ge, part, error)
+      call check(.not. allocated(error), 'partition_model')
+      if (allocated(error)) return
+      nsplit = 0
+      do b = 1, size(model%blocks)
+         associate (ep => part%epart(model%blocks(b)%elem(1:model%blocks(b)%nel)))
+            if (any(ep /= ep(1))) nsplit = nsplit + 1
+         end associate
+      end do
+      call check(nsplit == 0, 'no block split over ranks: '//str(nsplit))
+      call check(part%balance <= 1.1_wp, 'balance <= 1.1')
+      call check(all(part%rank_ne > 0), 'every rank has elements')
+   end subroutine test_whole_blocks
 end program test_partition
