@@ -54,9 +54,16 @@ contains
          return
       end if
       ! ---- grown segment boxes and the grid box
-      allocate(blo(3, p%nseg), bhi(3, p%nseg))
+      allocate(blo(3, p%nseg), bhi(3, p%nseg), act(p%nseg))
+      act = .true.
+      ! MPI ghost sorts: only the segments whose x is current here (dx_par_contact)
+      if (allocated(p%segok)) act = p%segok
       ext = 0.0_wp
       do s = 1, p%nseg
+         if (.not. act(s)) then
+            blo(:, s) = huge(1.0_wp); bhi(:, s) = -huge(1.0_wp)
+            cycle
+         end if
          call segment_box(p, x, s, blo(:, s), bhi(:, s))
          ext = ext + maxval(bhi(:, s) - blo(:, s))
          blo(:, s) = blo(:, s) - (margin + p%depth(s))
@@ -66,13 +73,11 @@ contains
             bhi(:, s) = bhi(:, s) + p%noffmax
          end if
       end do
-      ext = ext/real(p%nseg, wp)
+      ext = ext/real(max(1, count(act)), wp)
       ! MPI runs: only the segments whose grown box reaches this strip's slab (the halo) can
       ! be candidates of its nodes; the grid covers them and the strip's nodes. A node's
       ! candidates (the segments whose grown box holds it, ascending) do not depend on the
       ! grid, so every strip finds the serial candidates of its nodes.
-      allocate(act(p%nseg))
-      act = .true.
       if (allocated(p%mine)) then    ! the box of this rank's slave nodes (any 3 axes)
          slo3 = huge(1.0_wp); shi3 = -huge(1.0_wp)
          do i = 1, p%nnode
@@ -81,7 +86,7 @@ contains
             shi3 = max(shi3, x(:, p%node(i)))
          end do
          do s = 1, p%nseg
-            act(s) = all(bhi(:, s) >= slo3) .and. all(blo(:, s) <= shi3)
+            act(s) = act(s) .and. all(bhi(:, s) >= slo3) .and. all(blo(:, s) <= shi3)
          end do
       end if
       lo = huge(1.0_wp); hi = -huge(1.0_wp)

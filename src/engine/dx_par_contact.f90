@@ -40,6 +40,7 @@ module dx_par_contact
    use dx_par, only: par_rank, par_size, par_abort, par_allreduce, PAR_MAX, PAR_SUM, par_wtime, &
                      par_alltoallv, par_allgatherv_real, par_sparse_exchange, par_allgather_probe
    use dx_par_plan, only: gather_plan_t, par_gather_setup, par_gather_values, par_gather_ordered
+   use dx_par_contact_ghost, only: contact_ghost_t, ghost_setup, ghost_sort, ghost_drop
    implicit none
    private
    public :: par_contact_t, par_contact_setup, par_contact_forces, par_contact_add, &
@@ -61,6 +62,10 @@ module dx_par_contact
       integer, allocatable :: c_owner(:)         !< the rank owning each of c_all
       integer, allocatable :: loc_of(:)          !< global node -> local index (0: none)
       integer, allocatable :: h_req(:), h_snd(:) !< halo: nodes received / sent
+      integer, allocatable :: h_sglob(:)         !< global ids of h_snd
+      !> ghost sorts (owner-computes): a sort receives only the segments within reach of
+      !> this rank's slave nodes (dx_par_contact_ghost), not every contact node
+      type(contact_ghost_t) :: gh
       integer, allocatable :: h_rcnt(:), h_scnt(:)   !< (0:np-1) their counts per rank
       integer(8) :: nval_recv = 0                !< numbers received (x, v, work terms)
       integer(8) :: nres_recv = 0                !< numbers received (results)
@@ -71,8 +76,14 @@ module dx_par_contact
       integer, allocatable :: l_loc(:), l_glob(:)   !< held contact nodes: local, global
       real(wp), allocatable :: cvold(:, :)       !< (3, nn global) v(n-1/2), contact nodes
       real(wp) :: t_cont = 0.0_wp, t_comm = 0.0_wp
-      integer :: ncycle = 0
+      !> per stage [s]: x, v exchange (halo, ghosts, full gathers), results exchange, work
+      !> exchange, assembly of the results, contact work on g
+      real(wp) :: t_xv = 0.0_wp, t_res = 0.0_wp, t_wex = 0.0_wp, t_asm = 0.0_wp, &
+                  t_cwork = 0.0_wp
+      integer :: ncycle = 0, nfull = 0
       integer(8) :: nrec_sent = 0
+      !> numbers sent by this rank: x, v (halo, ghosts, gathers), results, work terms
+      integer(8) :: ns_xv = 0, ns_res = 0, ns_wex = 0
    end type par_contact_t
 
 contains
@@ -148,6 +159,8 @@ contains
             g%contact%iface(gif(k))%rank = r
          end do
       end block
+      allocate(pc%h_sglob(0))
+      if (pc%split_mode == 'owner') call ghost_setup(pc%gh, g, pc%loc_of, pc%c_all, pc%c_owner)
       deallocate(model%contact)
       allocate(model%contact)
       pc%on = .true.
@@ -169,7 +182,21 @@ contains
       g%x(:, pc%plan_c%keys) = gv(1:3, :)
       g%v(:, pc%plan_c%keys) = gv(4:6, :)
       pc%nval_recv = pc%nval_recv + 6*(size(pc%plan_c%keys) - size(pc%c_own))
+      pc%ns_xv = pc%ns_xv + 6*size(pc%c_own)*(par_size() - 1)
    end subroutine gather_xv
+
+   !> x(n), v(n-1/2) of every contact node this rank holds (owned or shared: the same bits
+   !> on every rank holding it) into g.
+   subroutine held_xv(pc, model, g)
+      type(par_contact_t), intent(in) :: pc
+      type(model_t), intent(in) :: model
+      type(model_t), intent(inout) :: g
+      integer :: i
+      do i = 1, size(pc%l_loc)
+         g%x(:, pc%l_glob(i)) = model%x(:, pc%l_loc(i))
+         g%v(:, pc%l_glob(i)) = model%v(:, pc%l_loc(i))
+      end do
+   end subroutine held_xv
 
    !> x(n) and v(n-1/2) of the nodes this rank's strips need (between sorts): its own
    !> contact nodes copied, the others from their owners (MPI_Alltoallv over the halo plan).
@@ -179,10 +206,7 @@ contains
       type(model_t), intent(inout) :: g
       real(wp), allocatable :: sb(:), rb(:)
       integer :: i, n
-      do i = 1, size(pc%c_own)
-         g%x(:, pc%c_glob(i)) = model%x(:, pc%c_own(i))
-         g%v(:, pc%c_glob(i)) = model%v(:, pc%c_own(i))
-      end do
+      call held_xv(pc, model, g)
       allocate(sb(6*size(pc%h_snd)), rb(6*size(pc%h_req)))
       do i = 1, size(pc%h_snd)
          n = pc%h_snd(i)
@@ -196,6 +220,7 @@ contains
          g%v(:, n) = rb(6*i - 2:6*i)
       end do
       pc%nval_recv = pc%nval_recv + size(rb)
+      pc%ns_xv = pc%ns_xv + size(sb)
    end subroutine halo_xv
 
    !> After a sort: the nodes this rank's strips need until the next sort (its slave nodes,
@@ -247,7 +272,9 @@ contains
             pc%h_rcnt(r) = 0
             cycle
          end if
-         sglob = pack(pc%c_all, need(pc%c_all) .and. pc%c_owner == r)
+         ! (a node this rank holds is its own copy: held_xv)
+         sglob = pack(pc%c_all, need(pc%c_all) .and. pc%c_owner == r .and. &
+                      pc%loc_of(pc%c_all) == 0)
          pc%h_rcnt(r) = size(sglob)
          req = [req, sglob]
       end do
@@ -258,6 +285,7 @@ contains
       allocate(sglob(sum(pc%h_scnt)))
       call par_alltoallv(pc%h_req, pc%h_rcnt, sglob, pc%h_scnt)
       pc%h_snd = pc%loc_of(sglob)
+      pc%h_sglob = sglob
    end subroutine halo_plan
 
    !> The contact stage of an MPI run, before the shared-node exchange: search and results of
@@ -270,7 +298,7 @@ contains
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: dtcrit
       integer, parameter :: NR = NREC + 3
-      real(wp) :: w2max, t0, t1, vmax
+      real(wp) :: w2max, t0, t1, vmax, dt_est
       integer, allocatable :: cnt(:)
       real(wp), allocatable :: sb(:), rb(:)
       integer :: i, j, k, n, off, q, m, pos, r
@@ -288,13 +316,23 @@ contains
       ! rigid bodies in contact: their centres x_c(n) into g (dx_par_rigid)
       if (allocated(model%rigid)) call par_rigid_centres(model%rigid, g%rigid)
       call contact_prepare(g, dt_old, vmax, due)
-      if (due .or. pc%fresh) then   ! a sort: every contact node's x (the strips, the grids)
+      if (pc%fresh .or. (due .and. .not. pc%gh%on)) then
+         ! every contact node's x (strips, the first stage of a run or a continued run)
          call gather_xv(pc, model, g)
+         call ghost_drop(g)
+         pc%nfull = pc%nfull + 1
+      else if (due) then   ! a sort: the segments within reach of this rank's slave nodes
+         call held_xv(pc, model, g)
+         dt_est = dt_old                        ! (as contact_search_nodes takes it)
+         if (dt_est <= 0.0_wp) dt_est = g%ctrl%tssfac*dtcrit
+         call ghost_sort(pc%gh, g, pc%l_glob, pc%h_sglob, pc%h_scnt, vmax, dt_est, &
+                         pc%ns_xv, pc%nval_recv)
       else                 ! between sorts: the halo of this rank's strips
          call halo_xv(pc, model, g)
       end if
       t1 = par_wtime()
       pc%t_comm = pc%t_comm + (t1 - t0)
+      pc%t_xv = pc%t_xv + (t1 - t0)
       call contact_search_nodes(g, dt_old, dtcrit, vmax, w2max)
       if (due .or. pc%fresh) call halo_plan(pc, g)
       pc%fresh = .false.
@@ -339,6 +377,8 @@ contains
          call par_allgather_probe(sb, rb, cnt)
          t1 = par_wtime()
          pc%t_comm = pc%t_comm + (t1 - t0)
+         pc%t_res = pc%t_res + (t1 - t0)
+         pc%ns_res = pc%ns_res + size(sb)*(par_size() - 1)
          pc%nres_recv = pc%nres_recv + size(rb) - size(sb)
          ! the other ranks' results into their slave nodes (ascending keys per rank)
          pos = 0
@@ -369,7 +409,9 @@ contains
       end associate
       ! the row sums of all results, added in the serial order (every rank alike); w2max
       ! is now the largest candidate bound over the ranks
+      t0 = par_wtime()
       call contact_assemble(g, w2max, .false.)
+      pc%t_asm = pc%t_asm + (par_wtime() - t0)
       pc%t_cont = pc%t_cont + (par_wtime() - t1)
       call contact_dt(g%contact, w2max, dtcrit)
       pc%ncycle = pc%ncycle + 1
@@ -443,12 +485,16 @@ contains
          d(r) = d(r) + 6
       end do
       pc%nval_recv = pc%nval_recv + size(rb) - size(sb)
+      pc%ns_wex = pc%ns_wex + size(sb)*(np - 1)
       pc%t_comm = pc%t_comm + (par_wtime() - t0)
+      pc%t_wex = pc%t_wex + (par_wtime() - t0)
+      t0 = par_wtime()
       call contact_work(g, pc%cvold, dtavg, outdir, error)
       if (allocated(error)) call par_abort(error%message, error%code)   ! rank 0 alone
       if (g%db%sleout_dt > 0.0_wp) &
          call interface_work(g%contact, pc%cvold, g%v, dtavg)   ! per interface (sleout)
       model%energy%sliding = g%energy%sliding
+      pc%t_cwork = pc%t_cwork + (par_wtime() - t0)
    end subroutine par_contact_work
 
    !> End of the run (rank 0 logs): contact time per cycle and the slave nodes per strip.
@@ -489,6 +535,7 @@ contains
          rstr(1.0e6_wp*t(3), 4)//' us (max '//rstr(1.0e6_wp*tm(3), 4)//'), local search, '// &
          'forces and assembly '//rstr(1.0e6_wp*t(4), 4)//' us (max '// &
          rstr(1.0e6_wp*tm(4), 4)//'); means over the ranks')
+      call stage_report(pc, g)
       allocate(cnt(0:np - 1))
       associate (cs => g%contact)
          do i = 1, size(cs%iface)
@@ -509,6 +556,51 @@ contains
          end do
       end associate
    end subroutine par_contact_report
+
+   !> End of the run (rank 0 logs): time per stage and cycle (mean and max over the
+   !> ranks) and the bytes each rank sends per cycle, by stage.
+   subroutine stage_report(pc, g)
+      type(par_contact_t), intent(in) :: pc
+      type(model_t), intent(in) :: g
+      real(wp) :: t(8), tm(8), b(4), bm(4), c
+      character(:), allocatable :: line
+      character(32), parameter :: tn(8) = [character(32) :: 'x, v exchange', 'bucket sorts', &
+         'local search + forces', 'results exchange', 'assembly', 'work exchange', &
+         'contact work', 'whole contact stage']
+      character(16), parameter :: bn(4) = [character(16) :: 'x, v', 'results', 'work', 'total']
+      integer :: k
+      c = real(max(1, pc%ncycle), wp)
+      t(1) = pc%t_xv
+      t(2) = g%contact%t_search
+      t(3) = g%contact%t_force - g%contact%t_search - pc%t_asm
+      t(4) = pc%t_res
+      t(5) = pc%t_asm
+      t(6) = pc%t_wex
+      t(7) = pc%t_cwork
+      t(8) = sum(t(1:7))
+      t = 1.0e6_wp*t/c
+      tm = t
+      call par_allreduce(tm, PAR_MAX)
+      call par_allreduce(t, PAR_SUM)
+      t = t/real(par_size(), wp)
+      b = 8.0_wp*real([pc%ns_xv, pc%ns_res, pc%ns_wex, pc%ns_xv + pc%ns_res + pc%ns_wex], &
+                      wp)/c
+      bm = b
+      call par_allreduce(bm, PAR_MAX)
+      call par_allreduce(b, PAR_SUM)
+      b = b/real(par_size(), wp)
+      line = 'dynx: MPI contact stages per cycle [us], mean (max) over the ranks:'
+      do k = 1, 8
+         line = line//' '//trim(tn(k))//' '//rstr(t(k), 4)//' ('//rstr(tm(k), 4)//');'
+      end do
+      call log_info(line)
+      line = 'dynx: MPI contact: bytes sent per rank and cycle, mean (max):'
+      do k = 1, 4
+         line = line//' '//trim(bn(k))//' '//rstr(b(k), 4)//' ('//rstr(bm(k), 4)//');'
+      end do
+      call log_info(line//' sorts with every contact node gathered '//str(pc%nfull)// &
+                    ', ghost sorts '//str(pc%gh%nsort))
+   end subroutine stage_report
 
    !> Element groups that must stay on one rank: one per local contact pair (interfaces
    !> neither AUTOMATIC_ nor SINGLE_SURFACE), the elements with a face on one of its
