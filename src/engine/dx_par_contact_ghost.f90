@@ -23,6 +23,7 @@
 !> Distrib. Comput. 50:104-122; ParaDyn strips: Hoover et al. 1997 (article 4 of
 !> shared/seed).
 module dx_par_contact_ghost
+   use, intrinsic :: iso_fortran_env, only: int64
    use dx_kinds, only: wp
    use dx_model, only: model_t
    use dx_contact_search, only: segment_box
@@ -151,6 +152,7 @@ contains
       real(wp), allocatable :: sb(:), rb(:), box(:, :, :), ext(:), reach(:)
       logical, allocatable :: occ(:, :)
       integer :: nw, nc, jlo(3), jhi(3)
+      integer(int64) :: w
       integer, allocatable :: cnt(:), d(:), lst(:), scnt(:), rcnt(:), one(:)
       real(wp) :: lo(3), hi(3), e
       integer :: i, j, k, ip, iq, nd, nx, s, r, np, me, st, m, pos, nl, h0
@@ -234,10 +236,9 @@ contains
          do r = 0, np - 1
             box(:, :, r) = reshape(rb(d(r) + 1:d(r) + 6*nd), [6, nd])
             do k = 1, nw
-               e = rb(d(r) + 6*nd + k)
+               w = int(rb(d(r) + 6*nd + k), int64)
                do s = (k - 1)*NBIT + 1, min(nc, k*NBIT)
-                  occ(s, r) = mod(e, 2.0_wp) == 1.0_wp
-                  e = aint(0.5_wp*e)
+                  occ(s, r) = btest(w, s - (k - 1)*NBIT - 1)
                end do
             end do
             d(r) = d(r) + 6*nd + nw      ! next: rank r's extents
