@@ -227,6 +227,9 @@ contains
             if (.not. p%slive(s)) cycle
          end if
          associate (sg => p%sseg(:, s))
+            if (allocated(p%mine)) then   ! MPI runs: a face without a node of this rank
+               if (.not. any(mine_at(sg(1:p%ssn(s))))) cycle
+            end if
             if (p%ssn(s) == 4) then
                d1 = x(:, sg(3)) - x(:, sg(1)); d2 = x(:, sg(4)) - x(:, sg(2))
             else
@@ -247,6 +250,13 @@ contains
          r = norm2(p%nnrm(:, i))
          if (r > 0.0_wp) p%nnrm(:, i) = p%nnrm(:, i)/r
       end do
+   contains
+      !> the slave nodes among these that this rank computes
+      pure elemental logical function mine_at(n)
+         integer, intent(in) :: n
+         mine_at = .false.
+         if (p%nloc(n) > 0) mine_at = p%mine(p%nloc(n))
+      end function mine_at
    end subroutine node_normals
 
    !> The box of segment s at x (explicit loops over its 3-4 nodes: minval/maxval of

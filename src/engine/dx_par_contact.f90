@@ -8,9 +8,12 @@
 !>    (dx_contact_strips): the slave nodes of every pass are cut along their longest extent
 !>    into NP strips of equal node count, rebuilt with the bucket sort; rank r searches and
 !>    computes strip r (pass_node). A local pair is computed by the rank holding it.
-!>  - Each cycle x(n), v(n-1/2) reach the global model g: every contact node's at a sort
-!>    cycle (one allgather), between sorts only the halo the rank's nodes need (its slave
-!>    nodes, their candidate and contact segments' nodes; one alltoallv from the owners).
+!>  - Each cycle x(n), v(n-1/2) reach the global model g: at a sort cycle (owner-computes)
+!>    only the segments within reach of the rank's slave nodes (dx_par_contact_ghost; every
+!>    contact node's by one allgather at the first stage, with strips, or with rigid bodies
+!>    in contact), between sorts only the halo the rank's nodes need (its slave nodes, their
+!>    candidate and contact segments' nodes, point to point from the owners; held nodes
+!>    from the rank's own copy).
 !>    The ranks compute their slave nodes' results, the results
 !>    are gathered (one ordered gather) and every rank adds all of them in the serial order
 !>    (interface, pass, slave node: pass_apply, the same code the serial run uses): the
@@ -63,6 +66,18 @@ module dx_par_contact
       integer, allocatable :: loc_of(:)          !< global node -> local index (0: none)
       integer, allocatable :: h_req(:), h_snd(:) !< halo: nodes received / sent
       integer, allocatable :: h_sglob(:)         !< global ids of h_snd
+      !> held contact nodes the halo needs between sorts (local, global): held_xv's subset
+      integer, allocatable :: hh_loc(:), hh_glob(:)
+      integer, allocatable :: cpos(:)            !< global node -> position in c_all (0: none)
+      !> positions in c_all of the nodes with a contact force this cycle, ascending
+      integer, allocatable :: fl(:)
+      !> this rank's slave nodes in the serial order (mine_list, at each sort): pass, node;
+      !> the passes' interface, index and first serial key
+      integer, allocatable :: ml_ip(:), ml_k(:), pi(:), pj(:), poff(:)
+      logical :: fresh_list = .true.
+      !> this cycle's results (this rank's and the others'): pass, slave node
+      integer, allocatable :: rk_ip(:), rk_k(:)
+      integer :: nrk = 0
       !> ghost sorts (owner-computes): a sort receives only the segments within reach of
       !> this rank's slave nodes (dx_par_contact_ghost), not every contact node
       type(contact_ghost_t) :: gh
@@ -159,7 +174,10 @@ contains
             g%contact%iface(gif(k))%rank = r
          end do
       end block
-      allocate(pc%h_sglob(0))
+      allocate(pc%h_sglob(0), pc%hh_loc(0), pc%hh_glob(0), pc%fl(0), pc%cpos(g%nn), &
+               pc%rk_ip(0), pc%rk_k(0))
+      pc%cpos = 0
+      pc%cpos(pc%c_all) = [(i, i = 1, size(pc%c_all))]
       if (pc%split_mode == 'owner') call ghost_setup(pc%gh, g, pc%loc_of, pc%c_all, pc%c_owner)
       deallocate(model%contact)
       allocate(model%contact)
@@ -206,7 +224,10 @@ contains
       type(model_t), intent(inout) :: g
       real(wp), allocatable :: sb(:), rb(:)
       integer :: i, n
-      call held_xv(pc, model, g)
+      do i = 1, size(pc%hh_loc)      ! the held nodes the halo needs (halo_plan)
+         g%x(:, pc%hh_glob(i)) = model%x(:, pc%hh_loc(i))
+         g%v(:, pc%hh_glob(i)) = model%v(:, pc%hh_loc(i))
+      end do
       allocate(sb(6*size(pc%h_snd)), rb(6*size(pc%h_req)))
       do i = 1, size(pc%h_snd)
          n = pc%h_snd(i)
@@ -245,6 +266,9 @@ contains
                   if (.not. allocated(p%mine)) cycle
                   do k = 1, p%nnode
                      if (.not. p%mine(k)) cycle
+                     ! (a node without candidates and contact reads nothing until the
+                     ! next sort: pass_node returns at once)
+                     if (p%cand_ptr(k + 1) == p%cand_ptr(k) .and. p%iseg(k) == 0) cycle
                      need(p%node(k)) = .true.
                      do c = p%cand_ptr(k), p%cand_ptr(k + 1) - 1
                         s = p%cand(c)
@@ -286,6 +310,8 @@ contains
       call par_alltoallv(pc%h_req, pc%h_rcnt, sglob, pc%h_scnt)
       pc%h_snd = pc%loc_of(sglob)
       pc%h_sglob = sglob
+      pc%hh_loc = pack(pc%l_loc, need(pc%l_glob))
+      pc%hh_glob = pack(pc%l_glob, need(pc%l_glob))
    end subroutine halo_plan
 
    !> The contact stage of an MPI run, before the shared-node exchange: search and results of
@@ -301,7 +327,7 @@ contains
       real(wp) :: w2max, t0, t1, vmax, dt_est
       integer, allocatable :: cnt(:)
       real(wp), allocatable :: sb(:), rb(:)
-      integer :: i, j, k, n, off, q, m, pos, r
+      integer :: i, j, k, n, off, q, m, pos, r, ip
       logical :: due
       t0 = par_wtime()
       g%time = model%time
@@ -341,35 +367,35 @@ contains
       ! functions, force, gap, tangential force); to every rank in one MPI_Allgatherv (and
       ! the counts), each node's result then in its place
       associate (cs => g%contact)
+         ! (over this rank's slave nodes only, in the serial order: mine_list)
+         if (due .or. pc%fresh_list) call mine_list(pc, g)
+         pc%fresh_list = .false.
          n = 0
-         do i = 1, size(cs%iface)
+         do q = 1, size(pc%ml_k)
+            i = pc%pi(pc%ml_ip(q)); j = pc%pj(pc%ml_ip(q)); k = pc%ml_k(q)
             if (g%time < cs%iface(i)%bt .or. g%time > cs%iface(i)%dt) cycle   ! inactive
-            do j = 1, size(cs%iface(i)%pass)
-               associate (p => cs%iface(i)%pass(j))
-                  n = n + count(p%mine .and. (p%rint(1, :) > 0 .or. p%rint(2, :) > 0))
-               end associate
-            end do
+            if (cs%iface(i)%pass(j)%rint(1, k) > 0 .or. cs%iface(i)%pass(j)%rint(2, k) > 0) &
+               n = n + 1
          end do
          allocate(sb(1 + NR*n))
+         if (size(pc%rk_k) < size(pc%ml_k)) then
+            deallocate(pc%rk_k, pc%rk_ip)
+            allocate(pc%rk_k(size(pc%ml_k)), pc%rk_ip(size(pc%ml_k)))
+         end if
+         pc%nrk = 0
          sb(1) = w2max
          m = 1
-         off = 0
-         do i = 1, size(cs%iface)
-            do j = 1, size(cs%iface(i)%pass)
-               associate (p => cs%iface(i)%pass(j))
-                  if (g%time >= cs%iface(i)%bt .and. g%time <= cs%iface(i)%dt) then
-                     do k = 1, p%nnode
-                        if (.not. p%mine(k)) cycle
-                        if (p%rint(1, k) == 0 .and. p%rint(2, k) == 0) cycle
-                        sb(m + 1) = real(off + k, wp)
-                        sb(m + 2:m + 3) = real(p%rint(:, k), wp)
-                        sb(m + 4:m + NR) = p%rval(:, k)
-                        m = m + NR
-                     end do
-                  end if
-                  off = off + p%nnode
-               end associate
-            end do
+         do q = 1, size(pc%ml_k)
+            i = pc%pi(pc%ml_ip(q)); j = pc%pj(pc%ml_ip(q)); k = pc%ml_k(q)
+            if (g%time < cs%iface(i)%bt .or. g%time > cs%iface(i)%dt) cycle
+            associate (p => cs%iface(i)%pass(j))
+               if (p%rint(1, k) == 0 .and. p%rint(2, k) == 0) cycle
+               sb(m + 1) = real(pc%poff(pc%ml_ip(q)) + k, wp)
+               sb(m + 2:m + 3) = real(p%rint(:, k), wp)
+               sb(m + 4:m + NR) = p%rval(:, k)
+               m = m + NR
+               call add_rec(pc%ml_ip(q), k)
+            end associate
          end do
          pc%nrec_sent = pc%nrec_sent + n
          t0 = par_wtime()
@@ -387,8 +413,10 @@ contains
                w2max = max(w2max, rb(pos + 1))
                q = pos + 1                 ! last number read
                off = 0
+               ip = 0
                do i = 1, size(cs%iface)
                   do j = 1, size(cs%iface(i)%pass)
+                     ip = ip + 1
                      associate (p => cs%iface(i)%pass(j))
                         if (allocated(p%rint)) then
                            do while (q < pos + cnt(r))
@@ -397,6 +425,7 @@ contains
                               p%rint(:, k) = nint(rb(q + 2:q + 3))
                               p%rval(:, k) = rb(q + 4:q + NR)
                               q = q + NR
+                              call add_rec(ip, k)
                            end do
                         end if
                         off = off + p%nnode
@@ -411,11 +440,126 @@ contains
       ! is now the largest candidate bound over the ranks
       t0 = par_wtime()
       call contact_assemble(g, w2max, .false.)
+      call force_list(pc, g)
       pc%t_asm = pc%t_asm + (par_wtime() - t0)
       pc%t_cont = pc%t_cont + (par_wtime() - t1)
       call contact_dt(g%contact, w2max, dtcrit)
       pc%ncycle = pc%ncycle + 1
+   contains
+      subroutine add_rec(jp, kk)
+         integer, intent(in) :: jp, kk
+         integer, allocatable :: t1(:), t2(:)
+         if (pc%nrk == size(pc%rk_k)) then
+            allocate(t1(2*pc%nrk + 16), t2(2*pc%nrk + 16))
+            t1(1:pc%nrk) = pc%rk_k(1:pc%nrk); t2(1:pc%nrk) = pc%rk_ip(1:pc%nrk)
+            call move_alloc(t1, pc%rk_k); call move_alloc(t2, pc%rk_ip)
+         end if
+         pc%nrk = pc%nrk + 1
+         pc%rk_k(pc%nrk) = kk
+         pc%rk_ip(pc%nrk) = jp
+      end subroutine add_rec
    end subroutine par_contact_forces
+
+   !> The slave nodes this rank computes (p%mine, after a sort) that may have a result until
+   !> the next sort (candidates, or a contact segment: a node without either gets none, and
+   !> gains none before the next sort), in the serial order (interface, pass, slave node):
+   !> pass ip = (pi, pj), its first key poff.
+   subroutine mine_list(pc, g)
+      type(par_contact_t), intent(inout) :: pc
+      type(model_t), intent(in) :: g
+      integer :: i, j, k, ip, n
+      associate (cs => g%contact)
+         n = sum([(size(cs%iface(i)%pass), i = 1, size(cs%iface))])
+         if (allocated(pc%pi)) deallocate(pc%pi, pc%pj, pc%poff)
+         allocate(pc%pi(n), pc%pj(n), pc%poff(n))
+         n = 0
+         ip = 0
+         do i = 1, size(cs%iface)
+            do j = 1, size(cs%iface(i)%pass)
+               ip = ip + 1
+               pc%pi(ip) = i; pc%pj(ip) = j; pc%poff(ip) = n
+               associate (p => cs%iface(i)%pass(j))
+                  n = n + p%nnode
+               end associate
+            end do
+         end do
+         n = 0
+         do ip = 1, size(pc%pi)
+            associate (p => cs%iface(pc%pi(ip))%pass(pc%pj(ip)))
+               if (allocated(p%mine)) then
+                  do k = 1, p%nnode
+                     if (active(p, k)) n = n + 1
+                  end do
+               end if
+            end associate
+         end do
+         if (allocated(pc%ml_ip)) deallocate(pc%ml_ip, pc%ml_k)
+         allocate(pc%ml_ip(n), pc%ml_k(n))
+         n = 0
+         do ip = 1, size(pc%pi)
+            associate (p => cs%iface(pc%pi(ip))%pass(pc%pj(ip)))
+               if (.not. allocated(p%mine)) cycle
+               do k = 1, p%nnode
+                  if (.not. active(p, k)) cycle
+                  n = n + 1
+                  pc%ml_ip(n) = ip
+                  pc%ml_k(n) = k
+               end do
+            end associate
+         end do
+      end associate
+   contains
+      logical function active(p, k)
+         use dx_contact_types, only: contact_pass_t
+         type(contact_pass_t), intent(in) :: p
+         integer, intent(in) :: k
+         active = p%mine(k)
+         if (active) active = p%cand_ptr(k + 1) > p%cand_ptr(k) .or. p%iseg(k) > 0
+      end function active
+   end subroutine mine_list
+
+   !> pc%fl: the positions in c_all of the nodes with a nonzero contact force (the nodes of
+   !> the results in contact, ascending), for the work exchange (a node without a contact
+   !> force adds an exact zero to the work: skipped, as the serial contact_work does).
+   subroutine force_list(pc, g)
+      use dx_sort, only: sort_index
+      type(par_contact_t), intent(inout) :: pc
+      type(model_t), intent(in) :: g
+      integer, allocatable :: lst(:), idx(:)
+      integer :: i, k, s, n, nd, q
+      associate (cs => g%contact)
+         allocate(lst(5*pc%nrk))
+         n = 0
+         do i = 1, pc%nrk                  ! (this cycle's results: mine and the others')
+            associate (p => cs%iface(pc%pi(pc%rk_ip(i)))%pass(pc%pj(pc%rk_ip(i))))
+               k = pc%rk_k(i)
+               s = p%rint(2, k)
+               if (s == 0) cycle
+               call add(p%node(k))
+               do q = 1, p%nsn(s)
+                  call add(p%seg(q, s))
+               end do
+            end associate
+         end do
+         lst = lst(1:n)
+         idx = [(i, i = 1, n)]
+         call sort_index(idx, lst)
+         pc%fl = lst(idx)
+         do i = 1, n
+            pc%cpos(pc%c_all(pc%fl(i))) = pc%fl(i)
+         end do
+         pc%fl = pack(pc%fl, [(any(cs%fc(:, pc%c_all(pc%fl(i))) /= 0.0_wp), i = 1, n)])
+      end associate
+   contains
+      subroutine add(node)
+         integer, intent(in) :: node
+         nd = pc%cpos(node)
+         if (nd <= 0) return                 ! listed already (marked by the sign)
+         pc%cpos(node) = -nd
+         n = n + 1
+         lst(n) = nd
+      end subroutine add
+   end subroutine force_list
 
    !> After the shared-node exchange: f = (element sum) + contact force at every held
    !> contact node, as the serial contact_forces adds it.
@@ -441,7 +585,7 @@ contains
       type(error_t), allocatable :: error
       integer, allocatable :: cnt(:), d(:)
       real(wp), allocatable :: sb(:), rb(:)
-      integer :: i, n, np, r, l, nd
+      integer :: i, j, n, np, r, l, nd
       real(wp) :: t0
       t0 = par_wtime()
       ! the nodes with a contact force are the same on every rank (fc is replicated): the
@@ -449,17 +593,17 @@ contains
       np = par_size()
       allocate(cnt(0:np - 1), d(0:np - 1))
       cnt = 0
-      do i = 1, size(pc%c_all)
-         if (.not. any(g%contact%fc(:, pc%c_all(i)) /= 0.0_wp)) cycle
+      do j = 1, size(pc%fl)           ! (the nodes with a contact force, ascending)
+         i = pc%fl(j)
          cnt(pc%c_owner(i)) = cnt(pc%c_owner(i)) + 6
       end do
       cnt = cnt + 1                  ! first: the rank's largest contact-node speed
       allocate(sb(cnt(par_rank())))
       sb(1) = contact_vmax(model%v, pc%c_own)
       n = 1
-      do i = 1, size(pc%c_all)
+      do j = 1, size(pc%fl)
+         i = pc%fl(j)
          if (pc%c_owner(i) /= par_rank()) cycle
-         if (.not. any(g%contact%fc(:, pc%c_all(i)) /= 0.0_wp)) cycle
          l = pc%loc_of(pc%c_all(i))
          sb(n + 1:n + 3) = vold(:, l)
          sb(n + 4:n + 6) = model%v(:, l)
@@ -476,9 +620,9 @@ contains
          d(r) = d(r) + 1
       end do
       pc%have_vmax = .true.
-      do i = 1, size(pc%c_all)
+      do j = 1, size(pc%fl)
+         i = pc%fl(j)
          nd = pc%c_all(i)
-         if (.not. any(g%contact%fc(:, nd) /= 0.0_wp)) cycle
          r = pc%c_owner(i)
          pc%cvold(:, nd) = rb(d(r) + 1:d(r) + 3)
          g%v(:, nd) = rb(d(r) + 4:d(r) + 6)
