@@ -40,7 +40,7 @@ module dx_par_contact_ghost
       integer, allocatable :: srank(:)        !< the rank sending each segment
       integer, allocatable :: own_of(:)       !< (nn) owner of a contact node (-1: none)
       integer, allocatable :: stamp(:)        !< (nn) the ghost sort that brought x, v
-      integer, allocatable :: mark(:)         !< (nn) work array: node listed for a rank
+      integer, allocatable :: mark(:)         !< (nn) work array: node listed for rank mark
       integer :: nstamp = 0
       integer :: nsort = 0                    !< ghost sorts done
       !> a coarse grid over the contact nodes at the start: at a sort each rank sends which
@@ -322,6 +322,7 @@ contains
             end if
             h0 = h0 + hs_cnt(r)
             scnt(r) = nl - pos
+            gh%mark(lst(pos + 1:nl)) = -1    ! (unmarked for the next rank)
          end do
          allocate(one(0:np - 1))
          one = 1
@@ -393,11 +394,9 @@ contains
       end function near
       subroutine add_node(n)
          integer, intent(in) :: n
-         integer :: tag
          integer, allocatable :: tmp(:)
-         tag = r + np*mod(st, 100000)
-         if (gh%mark(n) == tag) return
-         gh%mark(n) = tag
+         if (gh%mark(n) == r) return
+         gh%mark(n) = r
          if (nl == size(lst)) then
             allocate(tmp(2*nl))
             tmp(1:nl) = lst(1:nl)
