@@ -210,7 +210,12 @@ contains
                            call contact_strips(p, model%x, cs%nstrip, cs%istrip, &
                                                cs%mine_node)
                         end if
-                        margin = 0.25_wp*mean_extent(p, model%x)
+                        if (p%mext >= 0.0_wp) then   ! MPI ghost sorts: from every rank
+                           margin = 0.25_wp*p%mext
+                           p%mext = -1.0_wp
+                        else
+                           margin = 0.25_wp*mean_extent(p, model%x)
+                        end if
                         margin = max(margin, 4.0_wp*vmax*dt_est)
                         if (has_rigid) then
                            ! rigid nodes: the body's inertia (dx_rigid_contact)

@@ -54,9 +54,16 @@ contains
          return
       end if
       ! ---- grown segment boxes and the grid box
-      allocate(blo(3, p%nseg), bhi(3, p%nseg))
+      allocate(blo(3, p%nseg), bhi(3, p%nseg), act(p%nseg))
+      act = .true.
+      ! MPI ghost sorts: only the segments whose x is current here (dx_par_contact)
+      if (allocated(p%segok)) act = p%segok
       ext = 0.0_wp
       do s = 1, p%nseg
+         if (.not. act(s)) then
+            blo(:, s) = huge(1.0_wp); bhi(:, s) = -huge(1.0_wp)
+            cycle
+         end if
          call segment_box(p, x, s, blo(:, s), bhi(:, s))
          ext = ext + maxval(bhi(:, s) - blo(:, s))
          blo(:, s) = blo(:, s) - (margin + p%depth(s))
@@ -66,13 +73,11 @@ contains
             bhi(:, s) = bhi(:, s) + p%noffmax
          end if
       end do
-      ext = ext/real(p%nseg, wp)
+      ext = ext/real(max(1, count(act)), wp)
       ! MPI runs: only the segments whose grown box reaches this strip's slab (the halo) can
       ! be candidates of its nodes; the grid covers them and the strip's nodes. A node's
       ! candidates (the segments whose grown box holds it, ascending) do not depend on the
       ! grid, so every strip finds the serial candidates of its nodes.
-      allocate(act(p%nseg))
-      act = .true.
       if (allocated(p%mine)) then    ! the box of this rank's slave nodes (any 3 axes)
          slo3 = huge(1.0_wp); shi3 = -huge(1.0_wp)
          do i = 1, p%nnode
@@ -81,7 +86,7 @@ contains
             shi3 = max(shi3, x(:, p%node(i)))
          end do
          do s = 1, p%nseg
-            act(s) = all(bhi(:, s) >= slo3) .and. all(blo(:, s) <= shi3)
+            act(s) = act(s) .and. all(bhi(:, s) >= slo3) .and. all(blo(:, s) <= shi3)
          end do
       end if
       lo = huge(1.0_wp); hi = -huge(1.0_wp)
@@ -222,6 +227,9 @@ contains
             if (.not. p%slive(s)) cycle
          end if
          associate (sg => p%sseg(:, s))
+            if (allocated(p%mine)) then   ! MPI runs: a face without a node of this rank
+               if (.not. any(mine_at(sg(1:p%ssn(s))))) cycle
+            end if
             if (p%ssn(s) == 4) then
                d1 = x(:, sg(3)) - x(:, sg(1)); d2 = x(:, sg(4)) - x(:, sg(2))
             else
@@ -242,6 +250,13 @@ contains
          r = norm2(p%nnrm(:, i))
          if (r > 0.0_wp) p%nnrm(:, i) = p%nnrm(:, i)/r
       end do
+   contains
+      !> the slave nodes among these that this rank computes
+      pure elemental logical function mine_at(n)
+         integer, intent(in) :: n
+         mine_at = .false.
+         if (p%nloc(n) > 0) mine_at = p%mine(p%nloc(n))
+      end function mine_at
    end subroutine node_normals
 
    !> The box of segment s at x (explicit loops over its 3-4 nodes: minval/maxval of

@@ -8,9 +8,12 @@
 !>    (dx_contact_strips): the slave nodes of every pass are cut along their longest extent
 !>    into NP strips of equal node count, rebuilt with the bucket sort; rank r searches and
 !>    computes strip r (pass_node). A local pair is computed by the rank holding it.
-!>  - Each cycle x(n), v(n-1/2) reach the global model g: every contact node's at a sort
-!>    cycle (one allgather), between sorts only the halo the rank's nodes need (its slave
-!>    nodes, their candidate and contact segments' nodes; one alltoallv from the owners).
+!>  - Each cycle x(n), v(n-1/2) reach the global model g: at a sort cycle (owner-computes)
+!>    only the segments within reach of the rank's slave nodes (dx_par_contact_ghost; every
+!>    contact node's by one allgather at the first stage, with strips, or with rigid bodies
+!>    in contact), between sorts only the halo the rank's nodes need (its slave nodes, their
+!>    candidate and contact segments' nodes, point to point from the owners; held nodes
+!>    from the rank's own copy).
 !>    The ranks compute their slave nodes' results, the results
 !>    are gathered (one ordered gather) and every rank adds all of them in the serial order
 !>    (interface, pass, slave node: pass_apply, the same code the serial run uses): the
@@ -33,13 +36,13 @@ module dx_par_contact
    use dx_contact, only: contact_search_nodes, contact_assemble, contact_dt, contact_work, &
                          contact_vmax, contact_prepare
    use dx_contact_types, only: contact_set_t, NREC
-   use dx_contact_input, only: CT_SINGLE_SURFACE
-   use dx_partition, only: face_elements, model_conn, partition_t
+   use dx_contact_groups, only: contact_groups, write_contact_report   ! (re-exported)
    use dx_par_rigid, only: par_rigid_centres
    use dx_energy_sums, only: interface_work
    use dx_par, only: par_rank, par_size, par_abort, par_allreduce, PAR_MAX, PAR_SUM, par_wtime, &
                      par_alltoallv, par_allgatherv_real, par_sparse_exchange, par_allgather_probe
    use dx_par_plan, only: gather_plan_t, par_gather_setup, par_gather_values, par_gather_ordered
+   use dx_par_contact_ghost, only: contact_ghost_t, ghost_setup, ghost_sort, ghost_drop
    implicit none
    private
    public :: par_contact_t, par_contact_setup, par_contact_forces, par_contact_add, &
@@ -61,6 +64,22 @@ module dx_par_contact
       integer, allocatable :: c_owner(:)         !< the rank owning each of c_all
       integer, allocatable :: loc_of(:)          !< global node -> local index (0: none)
       integer, allocatable :: h_req(:), h_snd(:) !< halo: nodes received / sent
+      integer, allocatable :: h_sglob(:)         !< global ids of h_snd
+      !> held contact nodes the halo needs between sorts (local, global): held_xv's subset
+      integer, allocatable :: hh_loc(:), hh_glob(:)
+      integer, allocatable :: cpos(:)            !< global node -> position in c_all (0: none)
+      !> positions in c_all of the nodes with a contact force this cycle, ascending
+      integer, allocatable :: fl(:)
+      !> this rank's slave nodes in the serial order (mine_list, at each sort): pass, node;
+      !> the passes' interface, index and first serial key
+      integer, allocatable :: ml_ip(:), ml_k(:), pi(:), pj(:), poff(:)
+      logical :: fresh_list = .true.
+      !> this cycle's results (this rank's and the others'): pass, slave node
+      integer, allocatable :: rk_ip(:), rk_k(:)
+      integer :: nrk = 0
+      !> ghost sorts (owner-computes): a sort receives only the segments within reach of
+      !> this rank's slave nodes (dx_par_contact_ghost), not every contact node
+      type(contact_ghost_t) :: gh
       integer, allocatable :: h_rcnt(:), h_scnt(:)   !< (0:np-1) their counts per rank
       integer(8) :: nval_recv = 0                !< numbers received (x, v, work terms)
       integer(8) :: nres_recv = 0                !< numbers received (results)
@@ -71,8 +90,14 @@ module dx_par_contact
       integer, allocatable :: l_loc(:), l_glob(:)   !< held contact nodes: local, global
       real(wp), allocatable :: cvold(:, :)       !< (3, nn global) v(n-1/2), contact nodes
       real(wp) :: t_cont = 0.0_wp, t_comm = 0.0_wp
-      integer :: ncycle = 0
+      !> per stage [s]: x, v exchange (halo, ghosts, full gathers), results exchange, work
+      !> exchange, assembly of the results, contact work on g
+      real(wp) :: t_xv = 0.0_wp, t_res = 0.0_wp, t_wex = 0.0_wp, t_asm = 0.0_wp, &
+                  t_cwork = 0.0_wp
+      integer :: ncycle = 0, nfull = 0
       integer(8) :: nrec_sent = 0
+      !> numbers sent by this rank: x, v (halo, ghosts, gathers), results, work terms
+      integer(8) :: ns_xv = 0, ns_res = 0, ns_wex = 0
    end type par_contact_t
 
 contains
@@ -148,6 +173,11 @@ contains
             g%contact%iface(gif(k))%rank = r
          end do
       end block
+      allocate(pc%h_sglob(0), pc%hh_loc(0), pc%hh_glob(0), pc%fl(0), pc%cpos(g%nn), &
+               pc%rk_ip(0), pc%rk_k(0))
+      pc%cpos = 0
+      pc%cpos(pc%c_all) = [(i, i = 1, size(pc%c_all))]
+      if (pc%split_mode == 'owner') call ghost_setup(pc%gh, g, pc%loc_of, pc%c_all, pc%c_owner)
       deallocate(model%contact)
       allocate(model%contact)
       pc%on = .true.
@@ -169,7 +199,21 @@ contains
       g%x(:, pc%plan_c%keys) = gv(1:3, :)
       g%v(:, pc%plan_c%keys) = gv(4:6, :)
       pc%nval_recv = pc%nval_recv + 6*(size(pc%plan_c%keys) - size(pc%c_own))
+      pc%ns_xv = pc%ns_xv + 6*size(pc%c_own)*(par_size() - 1)
    end subroutine gather_xv
+
+   !> x(n), v(n-1/2) of every contact node this rank holds (owned or shared: the same bits
+   !> on every rank holding it) into g.
+   subroutine held_xv(pc, model, g)
+      type(par_contact_t), intent(in) :: pc
+      type(model_t), intent(in) :: model
+      type(model_t), intent(inout) :: g
+      integer :: i
+      do i = 1, size(pc%l_loc)
+         g%x(:, pc%l_glob(i)) = model%x(:, pc%l_loc(i))
+         g%v(:, pc%l_glob(i)) = model%v(:, pc%l_loc(i))
+      end do
+   end subroutine held_xv
 
    !> x(n) and v(n-1/2) of the nodes this rank's strips need (between sorts): its own
    !> contact nodes copied, the others from their owners (MPI_Alltoallv over the halo plan).
@@ -179,9 +223,9 @@ contains
       type(model_t), intent(inout) :: g
       real(wp), allocatable :: sb(:), rb(:)
       integer :: i, n
-      do i = 1, size(pc%c_own)
-         g%x(:, pc%c_glob(i)) = model%x(:, pc%c_own(i))
-         g%v(:, pc%c_glob(i)) = model%v(:, pc%c_own(i))
+      do i = 1, size(pc%hh_loc)      ! the held nodes the halo needs (halo_plan)
+         g%x(:, pc%hh_glob(i)) = model%x(:, pc%hh_loc(i))
+         g%v(:, pc%hh_glob(i)) = model%v(:, pc%hh_loc(i))
       end do
       allocate(sb(6*size(pc%h_snd)), rb(6*size(pc%h_req)))
       do i = 1, size(pc%h_snd)
@@ -196,6 +240,7 @@ contains
          g%v(:, n) = rb(6*i - 2:6*i)
       end do
       pc%nval_recv = pc%nval_recv + size(rb)
+      pc%ns_xv = pc%ns_xv + size(sb)
    end subroutine halo_xv
 
    !> After a sort: the nodes this rank's strips need until the next sort (its slave nodes,
@@ -220,6 +265,9 @@ contains
                   if (.not. allocated(p%mine)) cycle
                   do k = 1, p%nnode
                      if (.not. p%mine(k)) cycle
+                     ! (a node without candidates and contact reads nothing until the
+                     ! next sort: pass_node returns at once)
+                     if (p%cand_ptr(k + 1) == p%cand_ptr(k) .and. p%iseg(k) == 0) cycle
                      need(p%node(k)) = .true.
                      do c = p%cand_ptr(k), p%cand_ptr(k + 1) - 1
                         s = p%cand(c)
@@ -247,7 +295,9 @@ contains
             pc%h_rcnt(r) = 0
             cycle
          end if
-         sglob = pack(pc%c_all, need(pc%c_all) .and. pc%c_owner == r)
+         ! (a node this rank holds is its own copy: held_xv)
+         sglob = pack(pc%c_all, need(pc%c_all) .and. pc%c_owner == r .and. &
+                      pc%loc_of(pc%c_all) == 0)
          pc%h_rcnt(r) = size(sglob)
          req = [req, sglob]
       end do
@@ -258,6 +308,9 @@ contains
       allocate(sglob(sum(pc%h_scnt)))
       call par_alltoallv(pc%h_req, pc%h_rcnt, sglob, pc%h_scnt)
       pc%h_snd = pc%loc_of(sglob)
+      pc%h_sglob = sglob
+      pc%hh_loc = pack(pc%l_loc, need(pc%l_glob))
+      pc%hh_glob = pack(pc%l_glob, need(pc%l_glob))
    end subroutine halo_plan
 
    !> The contact stage of an MPI run, before the shared-node exchange: search and results of
@@ -270,10 +323,10 @@ contains
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: dtcrit
       integer, parameter :: NR = NREC + 3
-      real(wp) :: w2max, t0, t1, vmax
+      real(wp) :: w2max, t0, t1, vmax, dt_est
       integer, allocatable :: cnt(:)
       real(wp), allocatable :: sb(:), rb(:)
-      integer :: i, j, k, n, off, q, m, pos, r
+      integer :: i, j, k, n, off, q, m, pos, r, ip
       logical :: due
       t0 = par_wtime()
       g%time = model%time
@@ -288,13 +341,23 @@ contains
       ! rigid bodies in contact: their centres x_c(n) into g (dx_par_rigid)
       if (allocated(model%rigid)) call par_rigid_centres(model%rigid, g%rigid)
       call contact_prepare(g, dt_old, vmax, due)
-      if (due .or. pc%fresh) then   ! a sort: every contact node's x (the strips, the grids)
+      if (pc%fresh .or. (due .and. .not. pc%gh%on)) then
+         ! every contact node's x (strips, the first stage of a run or a continued run)
          call gather_xv(pc, model, g)
+         call ghost_drop(g)
+         pc%nfull = pc%nfull + 1
+      else if (due) then   ! a sort: the segments within reach of this rank's slave nodes
+         call held_xv(pc, model, g)
+         dt_est = dt_old                        ! (as contact_search_nodes takes it)
+         if (dt_est <= 0.0_wp) dt_est = g%ctrl%tssfac*dtcrit
+         call ghost_sort(pc%gh, g, pc%l_glob, pc%h_sglob, pc%h_scnt, vmax, dt_est, &
+                         pc%ns_xv, pc%nval_recv)
       else                 ! between sorts: the halo of this rank's strips
          call halo_xv(pc, model, g)
       end if
       t1 = par_wtime()
       pc%t_comm = pc%t_comm + (t1 - t0)
+      pc%t_xv = pc%t_xv + (t1 - t0)
       call contact_search_nodes(g, dt_old, dtcrit, vmax, w2max)
       if (due .or. pc%fresh) call halo_plan(pc, g)
       pc%fresh = .false.
@@ -303,35 +366,35 @@ contains
       ! functions, force, gap, tangential force); to every rank in one MPI_Allgatherv (and
       ! the counts), each node's result then in its place
       associate (cs => g%contact)
+         ! (over this rank's slave nodes only, in the serial order: mine_list)
+         if (due .or. pc%fresh_list) call mine_list(pc, g)
+         pc%fresh_list = .false.
          n = 0
-         do i = 1, size(cs%iface)
+         do q = 1, size(pc%ml_k)
+            i = pc%pi(pc%ml_ip(q)); j = pc%pj(pc%ml_ip(q)); k = pc%ml_k(q)
             if (g%time < cs%iface(i)%bt .or. g%time > cs%iface(i)%dt) cycle   ! inactive
-            do j = 1, size(cs%iface(i)%pass)
-               associate (p => cs%iface(i)%pass(j))
-                  n = n + count(p%mine .and. (p%rint(1, :) > 0 .or. p%rint(2, :) > 0))
-               end associate
-            end do
+            if (cs%iface(i)%pass(j)%rint(1, k) > 0 .or. cs%iface(i)%pass(j)%rint(2, k) > 0) &
+               n = n + 1
          end do
          allocate(sb(1 + NR*n))
+         if (size(pc%rk_k) < size(pc%ml_k)) then
+            deallocate(pc%rk_k, pc%rk_ip)
+            allocate(pc%rk_k(size(pc%ml_k)), pc%rk_ip(size(pc%ml_k)))
+         end if
+         pc%nrk = 0
          sb(1) = w2max
          m = 1
-         off = 0
-         do i = 1, size(cs%iface)
-            do j = 1, size(cs%iface(i)%pass)
-               associate (p => cs%iface(i)%pass(j))
-                  if (g%time >= cs%iface(i)%bt .and. g%time <= cs%iface(i)%dt) then
-                     do k = 1, p%nnode
-                        if (.not. p%mine(k)) cycle
-                        if (p%rint(1, k) == 0 .and. p%rint(2, k) == 0) cycle
-                        sb(m + 1) = real(off + k, wp)
-                        sb(m + 2:m + 3) = real(p%rint(:, k), wp)
-                        sb(m + 4:m + NR) = p%rval(:, k)
-                        m = m + NR
-                     end do
-                  end if
-                  off = off + p%nnode
-               end associate
-            end do
+         do q = 1, size(pc%ml_k)
+            i = pc%pi(pc%ml_ip(q)); j = pc%pj(pc%ml_ip(q)); k = pc%ml_k(q)
+            if (g%time < cs%iface(i)%bt .or. g%time > cs%iface(i)%dt) cycle
+            associate (p => cs%iface(i)%pass(j))
+               if (p%rint(1, k) == 0 .and. p%rint(2, k) == 0) cycle
+               sb(m + 1) = real(pc%poff(pc%ml_ip(q)) + k, wp)
+               sb(m + 2:m + 3) = real(p%rint(:, k), wp)
+               sb(m + 4:m + NR) = p%rval(:, k)
+               m = m + NR
+               call add_rec(pc%ml_ip(q), k)
+            end associate
          end do
          pc%nrec_sent = pc%nrec_sent + n
          t0 = par_wtime()
@@ -339,6 +402,8 @@ contains
          call par_allgather_probe(sb, rb, cnt)
          t1 = par_wtime()
          pc%t_comm = pc%t_comm + (t1 - t0)
+         pc%t_res = pc%t_res + (t1 - t0)
+         pc%ns_res = pc%ns_res + size(sb)*(par_size() - 1)
          pc%nres_recv = pc%nres_recv + size(rb) - size(sb)
          ! the other ranks' results into their slave nodes (ascending keys per rank)
          pos = 0
@@ -347,8 +412,10 @@ contains
                w2max = max(w2max, rb(pos + 1))
                q = pos + 1                 ! last number read
                off = 0
+               ip = 0
                do i = 1, size(cs%iface)
                   do j = 1, size(cs%iface(i)%pass)
+                     ip = ip + 1
                      associate (p => cs%iface(i)%pass(j))
                         if (allocated(p%rint)) then
                            do while (q < pos + cnt(r))
@@ -357,6 +424,7 @@ contains
                               p%rint(:, k) = nint(rb(q + 2:q + 3))
                               p%rval(:, k) = rb(q + 4:q + NR)
                               q = q + NR
+                              call add_rec(ip, k)
                            end do
                         end if
                         off = off + p%nnode
@@ -369,11 +437,128 @@ contains
       end associate
       ! the row sums of all results, added in the serial order (every rank alike); w2max
       ! is now the largest candidate bound over the ranks
+      t0 = par_wtime()
       call contact_assemble(g, w2max, .false.)
+      call force_list(pc, g)
+      pc%t_asm = pc%t_asm + (par_wtime() - t0)
       pc%t_cont = pc%t_cont + (par_wtime() - t1)
       call contact_dt(g%contact, w2max, dtcrit)
       pc%ncycle = pc%ncycle + 1
+   contains
+      subroutine add_rec(jp, kk)
+         integer, intent(in) :: jp, kk
+         integer, allocatable :: t1(:), t2(:)
+         if (pc%nrk == size(pc%rk_k)) then
+            allocate(t1(2*pc%nrk + 16), t2(2*pc%nrk + 16))
+            t1(1:pc%nrk) = pc%rk_k(1:pc%nrk); t2(1:pc%nrk) = pc%rk_ip(1:pc%nrk)
+            call move_alloc(t1, pc%rk_k); call move_alloc(t2, pc%rk_ip)
+         end if
+         pc%nrk = pc%nrk + 1
+         pc%rk_k(pc%nrk) = kk
+         pc%rk_ip(pc%nrk) = jp
+      end subroutine add_rec
    end subroutine par_contact_forces
+
+   !> The slave nodes this rank computes (p%mine, after a sort) that may have a result until
+   !> the next sort (candidates, or a contact segment: a node without either gets none, and
+   !> gains none before the next sort), in the serial order (interface, pass, slave node):
+   !> pass ip = (pi, pj), its first key poff.
+   subroutine mine_list(pc, g)
+      type(par_contact_t), intent(inout) :: pc
+      type(model_t), intent(in) :: g
+      integer :: i, j, k, ip, n
+      associate (cs => g%contact)
+         n = sum([(size(cs%iface(i)%pass), i = 1, size(cs%iface))])
+         if (allocated(pc%pi)) deallocate(pc%pi, pc%pj, pc%poff)
+         allocate(pc%pi(n), pc%pj(n), pc%poff(n))
+         n = 0
+         ip = 0
+         do i = 1, size(cs%iface)
+            do j = 1, size(cs%iface(i)%pass)
+               ip = ip + 1
+               pc%pi(ip) = i; pc%pj(ip) = j; pc%poff(ip) = n
+               associate (p => cs%iface(i)%pass(j))
+                  n = n + p%nnode
+               end associate
+            end do
+         end do
+         n = 0
+         do ip = 1, size(pc%pi)
+            associate (p => cs%iface(pc%pi(ip))%pass(pc%pj(ip)))
+               if (allocated(p%mine)) then
+                  do k = 1, p%nnode
+                     if (active(p, k)) n = n + 1
+                  end do
+               end if
+            end associate
+         end do
+         if (allocated(pc%ml_ip)) deallocate(pc%ml_ip, pc%ml_k)
+         allocate(pc%ml_ip(n), pc%ml_k(n))
+         n = 0
+         do ip = 1, size(pc%pi)
+            associate (p => cs%iface(pc%pi(ip))%pass(pc%pj(ip)))
+               if (.not. allocated(p%mine)) cycle
+               do k = 1, p%nnode
+                  if (.not. active(p, k)) cycle
+                  n = n + 1
+                  pc%ml_ip(n) = ip
+                  pc%ml_k(n) = k
+               end do
+            end associate
+         end do
+      end associate
+   contains
+      logical function active(p, k)
+         use dx_contact_types, only: contact_pass_t
+         type(contact_pass_t), intent(in) :: p
+         integer, intent(in) :: k
+         active = p%mine(k)
+         if (active) active = p%cand_ptr(k + 1) > p%cand_ptr(k) .or. p%iseg(k) > 0
+      end function active
+   end subroutine mine_list
+
+   !> pc%fl: the positions in c_all of the nodes with a nonzero contact force (the nodes of
+   !> the results in contact, ascending), for the work exchange (a node without a contact
+   !> force adds an exact zero to the work: skipped, as the serial contact_work does).
+   subroutine force_list(pc, g)
+      use dx_sort, only: sort_index
+      type(par_contact_t), intent(inout) :: pc
+      type(model_t), intent(in) :: g
+      integer, allocatable :: lst(:), idx(:)
+      integer :: i, k, s, n, nd, q
+      associate (cs => g%contact)
+         allocate(lst(5*pc%nrk))
+         n = 0
+         do i = 1, pc%nrk                  ! (this cycle's results: mine and the others')
+            associate (p => cs%iface(pc%pi(pc%rk_ip(i)))%pass(pc%pj(pc%rk_ip(i))))
+               k = pc%rk_k(i)
+               s = p%rint(2, k)
+               if (s == 0) cycle
+               call add(p%node(k))
+               do q = 1, p%nsn(s)
+                  call add(p%seg(q, s))
+               end do
+            end associate
+         end do
+         lst = lst(1:n)
+         idx = [(i, i = 1, n)]
+         call sort_index(idx, lst)
+         pc%fl = lst(idx)
+         do i = 1, n
+            pc%cpos(pc%c_all(pc%fl(i))) = pc%fl(i)
+         end do
+         pc%fl = pack(pc%fl, [(any(cs%fc(:, pc%c_all(pc%fl(i))) /= 0.0_wp), i = 1, n)])
+      end associate
+   contains
+      subroutine add(node)
+         integer, intent(in) :: node
+         nd = pc%cpos(node)
+         if (nd <= 0) return                 ! listed already (marked by the sign)
+         pc%cpos(node) = -nd
+         n = n + 1
+         lst(n) = nd
+      end subroutine add
+   end subroutine force_list
 
    !> After the shared-node exchange: f = (element sum) + contact force at every held
    !> contact node, as the serial contact_forces adds it.
@@ -399,7 +584,7 @@ contains
       type(error_t), allocatable :: error
       integer, allocatable :: cnt(:), d(:)
       real(wp), allocatable :: sb(:), rb(:)
-      integer :: i, n, np, r, l, nd
+      integer :: i, j, n, np, r, l, nd
       real(wp) :: t0
       t0 = par_wtime()
       ! the nodes with a contact force are the same on every rank (fc is replicated): the
@@ -407,17 +592,17 @@ contains
       np = par_size()
       allocate(cnt(0:np - 1), d(0:np - 1))
       cnt = 0
-      do i = 1, size(pc%c_all)
-         if (.not. any(g%contact%fc(:, pc%c_all(i)) /= 0.0_wp)) cycle
+      do j = 1, size(pc%fl)           ! (the nodes with a contact force, ascending)
+         i = pc%fl(j)
          cnt(pc%c_owner(i)) = cnt(pc%c_owner(i)) + 6
       end do
       cnt = cnt + 1                  ! first: the rank's largest contact-node speed
       allocate(sb(cnt(par_rank())))
       sb(1) = contact_vmax(model%v, pc%c_own)
       n = 1
-      do i = 1, size(pc%c_all)
+      do j = 1, size(pc%fl)
+         i = pc%fl(j)
          if (pc%c_owner(i) /= par_rank()) cycle
-         if (.not. any(g%contact%fc(:, pc%c_all(i)) /= 0.0_wp)) cycle
          l = pc%loc_of(pc%c_all(i))
          sb(n + 1:n + 3) = vold(:, l)
          sb(n + 4:n + 6) = model%v(:, l)
@@ -434,21 +619,25 @@ contains
          d(r) = d(r) + 1
       end do
       pc%have_vmax = .true.
-      do i = 1, size(pc%c_all)
+      do j = 1, size(pc%fl)
+         i = pc%fl(j)
          nd = pc%c_all(i)
-         if (.not. any(g%contact%fc(:, nd) /= 0.0_wp)) cycle
          r = pc%c_owner(i)
          pc%cvold(:, nd) = rb(d(r) + 1:d(r) + 3)
          g%v(:, nd) = rb(d(r) + 4:d(r) + 6)
          d(r) = d(r) + 6
       end do
       pc%nval_recv = pc%nval_recv + size(rb) - size(sb)
+      pc%ns_wex = pc%ns_wex + size(sb)*(np - 1)
       pc%t_comm = pc%t_comm + (par_wtime() - t0)
+      pc%t_wex = pc%t_wex + (par_wtime() - t0)
+      t0 = par_wtime()
       call contact_work(g, pc%cvold, dtavg, outdir, error)
       if (allocated(error)) call par_abort(error%message, error%code)   ! rank 0 alone
       if (g%db%sleout_dt > 0.0_wp) &
          call interface_work(g%contact, pc%cvold, g%v, dtavg)   ! per interface (sleout)
       model%energy%sliding = g%energy%sliding
+      pc%t_cwork = pc%t_cwork + (par_wtime() - t0)
    end subroutine par_contact_work
 
    !> End of the run (rank 0 logs): contact time per cycle and the slave nodes per strip.
@@ -489,6 +678,7 @@ contains
          rstr(1.0e6_wp*t(3), 4)//' us (max '//rstr(1.0e6_wp*tm(3), 4)//'), local search, '// &
          'forces and assembly '//rstr(1.0e6_wp*t(4), 4)//' us (max '// &
          rstr(1.0e6_wp*tm(4), 4)//'); means over the ranks')
+      call stage_report(pc, g)
       allocate(cnt(0:np - 1))
       associate (cs => g%contact)
          do i = 1, size(cs%iface)
@@ -510,82 +700,49 @@ contains
       end associate
    end subroutine par_contact_report
 
-   !> Element groups that must stay on one rank: one per local contact pair (interfaces
-   !> neither AUTOMATIC_ nor SINGLE_SURFACE), the elements with a face on one of its
-   !> surfaces (face_elements) or holding one of its slave nodes (node-set slaves). CSR:
-   !> group g = grp_elem(grp_ptr(g):grp_ptr(g+1)-1); gid(g) the interface's label. Empty
-   !> (grp_ptr = [1]) for a deck without such pairs.
-   subroutine contact_groups(model, grp_ptr, grp_elem, gid, gif)
-      type(model_t), intent(in) :: model
-      integer, allocatable, intent(out) :: grp_ptr(:), grp_elem(:), gid(:)
-      integer, allocatable, intent(out), optional :: gif(:)   !< interface index of each
-      integer, allocatable :: conn(:, :), seg(:, :), elems(:), gi(:)
-      logical, allocatable :: take(:), slave(:)
-      integer :: i, j, e, ng
-      allocate(grp_ptr(1), grp_elem(0), gid(0), gi(0))
-      if (present(gif)) gif = gi
-      grp_ptr(1) = 1
-      if (.not. allocated(model%contact)) return
-      call model_conn(model, conn)
-      ng = 0
-      do i = 1, size(model%contact%iface)
-         associate (f => model%contact%iface(i))
-            if (f%kind == CT_SINGLE_SURFACE) cycle
-            if (index(f%name, 'AUTOMATIC') > 0) cycle
-            allocate(seg(4, 0), take(model%ne), slave(model%nn))
-            take = .false.
-            slave = .false.
-            do j = 1, size(f%pass)
-               associate (p => f%pass(j))
-                  seg = reshape([seg, p%seg(:, 1:p%nseg)], [4, size(seg, 2) + p%nseg])
-                  if (p%nsseg > 0) then
-                     seg = reshape([seg, p%sseg(:, 1:p%nsseg)], [4, size(seg, 2) + p%nsseg])
-                  else
-                     slave(p%node) = .true.
-                  end if
-               end associate
-            end do
-            call face_elements(conn, model%nn, seg, elems)
-            take(elems) = .true.
-            if (any(slave)) then
-               do e = 1, model%ne
-                  if (any(slave(conn(:, e)))) take(e) = .true.
-               end do
-            end if
-            elems = pack([(e, e = 1, model%ne)], take)
-            deallocate(seg, take, slave)
-            if (size(elems) == 0) cycle
-            ng = ng + 1
-            grp_elem = [grp_elem, elems]
-            grp_ptr = [grp_ptr, size(grp_elem) + 1]
-            gid = [gid, f%label]
-            gi = [gi, i]
-            if (present(gif)) gif = gi
-         end associate
+   !> End of the run (rank 0 logs): time per stage and cycle (mean and max over the
+   !> ranks) and the bytes each rank sends per cycle, by stage.
+   subroutine stage_report(pc, g)
+      type(par_contact_t), intent(in) :: pc
+      type(model_t), intent(in) :: g
+      real(wp) :: t(8), tm(8), b(4), bm(4), c
+      character(:), allocatable :: line
+      character(32), parameter :: tn(8) = [character(32) :: 'x, v exchange', 'bucket sorts', &
+         'local search + forces', 'results exchange', 'assembly', 'work exchange', &
+         'contact work', 'whole contact stage']
+      character(16), parameter :: bn(4) = [character(16) :: 'x, v', 'results', 'work', 'total']
+      integer :: k
+      c = real(max(1, pc%ncycle), wp)
+      t(1) = pc%t_xv
+      t(2) = g%contact%t_search
+      t(3) = g%contact%t_force - g%contact%t_search - pc%t_asm
+      t(4) = pc%t_res
+      t(5) = pc%t_asm
+      t(6) = pc%t_wex
+      t(7) = pc%t_cwork
+      t(8) = sum(t(1:7))
+      t = 1.0e6_wp*t/c
+      tm = t
+      call par_allreduce(tm, PAR_MAX)
+      call par_allreduce(t, PAR_SUM)
+      t = t/real(par_size(), wp)
+      b = 8.0_wp*real([pc%ns_xv, pc%ns_res, pc%ns_wex, pc%ns_xv + pc%ns_res + pc%ns_wex], &
+                      wp)/c
+      bm = b
+      call par_allreduce(bm, PAR_MAX)
+      call par_allreduce(b, PAR_SUM)
+      b = b/real(par_size(), wp)
+      line = 'dynx: MPI contact stages per cycle [us], mean (max) over the ranks:'
+      do k = 1, 8
+         line = line//' '//trim(tn(k))//' '//rstr(t(k), 4)//' ('//rstr(tm(k), 4)//');'
       end do
-   end subroutine contact_groups
+      call log_info(line)
+      line = 'dynx: MPI contact: bytes sent per rank and cycle, mean (max):'
+      do k = 1, 4
+         line = line//' '//trim(bn(k))//' '//rstr(b(k), 4)//' ('//rstr(bm(k), 4)//');'
+      end do
+      call log_info(line//' sorts with every contact node gathered '//str(pc%nfull)// &
+                    ', ghost sorts '//str(pc%gh%nsort))
+   end subroutine stage_report
 
-   !> Partition report, contact part: where each local contact pair went.
-   subroutine write_contact_report(unit, part, grp_ptr, grp_elem, gid)
-      integer, intent(in) :: unit
-      type(partition_t), intent(in) :: part
-      integer, intent(in) :: grp_ptr(:), grp_elem(:), gid(:)
-      integer :: k, r1, r2, w
-      if (size(gid) == 0) return
-      write(unit, '(a)') 'contact pairs kept whole (one super element each):'
-      write(unit, '(a)') '  contact   elements     weight   rank(s)'
-      do k = 1, size(gid)
-         associate (el => grp_elem(grp_ptr(k):grp_ptr(k + 1) - 1))
-            r1 = minval(part%epart(el))
-            r2 = maxval(part%epart(el))
-            w = sum(part%ewgt(el))
-            if (r1 == r2) then
-               write(unit, '(i9,2i11,3x,i0)') gid(k), size(el), w, r1
-            else
-               write(unit, '(i9,2i11,3x,i0,a,i0,a)') gid(k), size(el), w, r1, '..', r2, &
-                  '  (split: pairs that share elements are merged)'
-            end if
-         end associate
-      end do
-   end subroutine write_contact_report
 end module dx_par_contact

@@ -69,6 +69,12 @@ module dx_contact_types
       logical, allocatable :: mine(:)          !< (nnode) computed by this rank (MPI only)
       integer :: strip_axis = 0                !< axis of the strips at the last sort
       logical :: sort_due = .false.            !< this cycle sorts (contact_prepare)
+      ! --- MPI ghost sorts (dx_par_contact, owner-computes): which segments' node x are
+      !     current on this rank at the sort (the rest lie outside the reach of its slave
+      !     nodes; unallocated: all), and the mean segment extent of the whole pass summed
+      !     in segment order from the ranks' parts (< 0: summed here from x). Not dumped.
+      logical, allocatable :: segok(:)         !< (nseg)
+      real(wp) :: mext = -1.0_wp
       ! --- element erosion (decks that erode only; dx_contact%erosion_refresh): each
       !     segment's owner element and the element across its face (0: an exterior face;
       !     interior faces are dormant until that element erodes), whether it is live now,
