@@ -11,7 +11,7 @@
 !>   *CONTROL_SOLUTION SOLN NLQ ISNAN LCINT LCACC NCDCF NOCOP
 !>   *CONTROL_PARALLEL NCPU NUMRHS CONST PARA; *CONTROL_MPP_IO_NODUMP; *CONTROL_UNITS;
 !>   *CONTROL_RIGID LMF JNTF ORTHMD PARTM SPARSE METALF PLOTEL RBSMS / NORBIC GJADSTF
-!>     GJADVSC TJADSTF TJADVSC
+!>     GJADVSC TJADSTF TJADVSC RCVLR2D
 !>   *KEYWORD_ID (deck labels)
 !>   *DATABASE_EXTENT_BINARY (4 cards), *DATABASE_FORMAT IFORM IBINARY
 !>   *DATABASE_<ascii> DT BINARY LCUR IOOPT for the ASCII files dynx does not write
@@ -240,7 +240,8 @@ contains
    end subroutine read_parallel
 
    !> *CONTROL_RIGID, card 1 LMF JNTF ORTHMD PARTM SPARSE METALF PLOTEL RBSMS, card 2
-   !> (optional) NORBIC GJADSTF GJADVSC TJADSTF TJADVSC. LMF (Lagrange-multiplier joints),
+   !> (optional) NORBIC GJADSTF GJADVSC TJADSTF TJADVSC RCVLR2D (written by pydyna; its
+   !> meaning is not documented here, so only 0 is accepted). LMF (Lagrange-multiplier joints),
    !> JNTF (generalized joint stiffness update) and the added joint stiffness and damping
    !> GJADSTF..TJADVSC act on *CONSTRAINED_JOINT_* only, which dynx does not read (a deck
    !> with joints stops on them), so they cannot change a dynx run: range-checked and
@@ -275,6 +276,7 @@ contains
       call c%real('GJADVSC', 0.0_wp, r, min=0.0_wp)
       call c%real('TJADSTF', 0.0_wp, r, min=0.0_wp)
       call c%real('TJADVSC', 0.0_wp, r, min=0.0_wp)
+      call c%zero_int('RCVLR2D', 'this option of later LS-DYNA versions is not implemented')
       call c%done(error)
    end subroutine read_control_rigid
 
