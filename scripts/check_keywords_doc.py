@@ -38,7 +38,7 @@ DOC = os.path.join(ROOT, 'docs', 'keywords.md')
 GEN_DOC = os.path.join(ROOT, 'docs', 'manual', 'keywords.md')
 GEN_TOOL = os.path.join(ROOT, 'bin', 'dynx-keywords')
 STRUCTURE = ['KEYWORD', 'TITLE', 'INCLUDE', 'INCLUDE_PATH', 'INCLUDE_PATH_RELATIVE', 'PARAMETER',
-             'PARAMETER_EXPRESSION', 'END']
+             'PARAMETER_EXPRESSION', 'PARAMETER_DUPLICATION', 'END']
 # the dynamic registrations of register_materials (dx_read_materials.f90), read from the
 # material/EOS registry below
 DYNAMIC = ["trim(t(i)%keyword)", "'MAT_'//num", "'EOS_'//num"]

@@ -14,6 +14,7 @@ module dx_deck_cards
    use dx_strings, only: upper, str, rstr
    use dx_model_input, only: string_t
    use dx_io_sys, only: sys_file_kind
+   use dx_log, only: log_warn
    use dx_deck_expr, only: eval_expression
    use dx_card_echo, only: echo_t
    use dx_card, only: card_line_t, block_t, param_t, card_t, open_card, std_widths, data_start, &
@@ -50,6 +51,9 @@ module dx_deck_cards
       integer :: cur_scid = 0, scid_file = 0, scid_line = 0
       logical :: has_subcases = .false.
       integer, allocatable :: active(:)
+      !> *PARAMETER_DUPLICATION DFLAG for the definitions after it (0: no such keyword seen,
+      !> a redefinition replaces silently as before)
+      integer :: dflag = 0
    end type deck_t
 
 contains
@@ -397,6 +401,8 @@ contains
          call read_parameters(deck, blk, error)
       case ('PARAMETER_EXPRESSION')
          call read_parameter_expressions(deck, blk, error)
+      case ('PARAMETER_DUPLICATION')
+         call read_parameter_duplication(deck, blk, error)
       case default
          ! kept until the deck is read: exact size, not the doubling's up to 2x slots; the
          ! stripped blank cards stay stored (dx_deck gives them back as cards of defaults)
@@ -496,10 +502,11 @@ contains
       type(block_t), intent(in) :: blk
       type(error_t), allocatable, intent(out) :: error
       integer :: ic, k, col, w(8)
-      character(:), allocatable :: ptxt, vtxt, name
+      character(:), allocatable :: ptxt, vtxt, name, note
       character :: kind
       type(param_t) :: p
       real(wp) :: v
+      logical :: bad
       w = std_widths(blk, 8)
       do ic = 1, blk%n
          do k = 1, 7, 2
@@ -532,20 +539,50 @@ contains
                p%value = v
                p%text = ''
             end if
-            call add_param(deck, p)
+            call add_param(deck, p, note, bad)
+            if (bad) then
+               call field_error(deck, blk, ic, k, w, 'PRMR'//str((k+1)/2), note, error)
+               return
+            end if
+            if (len(note) > 0) call log_warn(card_where(deck, blk, ic)//': *'//blk%name// &
+                                             ': field PRMR'//str((k+1)/2)//': '//note)
          end do
       end do
    end subroutine read_parameters
 
-   !> Define parameter p; a redefinition replaces the earlier value.
-   subroutine add_param(deck, p)
+   !> Define parameter p. A redefinition follows the *PARAMETER_DUPLICATION DFLAG in force
+   !> (LS-DYNA manual, *PARAMETER_DUPLICATION): 1 warn and keep the first definition,
+   !> 2 warn and take the new one, 3 error, 4 take the new one silently, 5 keep the first
+   !> silently; without that keyword (dflag 0) the new one replaces silently (dynx's rule
+   !> before the keyword existed). note: the warning text (bad: the error text), else ''.
+   subroutine add_param(deck, p, note, bad)
       type(deck_t), intent(inout) :: deck
       type(param_t), intent(in) :: p
+      character(:), allocatable, intent(out) :: note
+      logical, intent(out) :: bad
       type(param_t), allocatable :: t(:)
       integer :: j
+      note = ''
+      bad = .false.
       j = find_param(deck%params(1:deck%nparams), p%name)
       if (j > 0) then
-         deck%params(j) = p
+         select case (deck%dflag)
+         case (1)
+            note = 'parameter '//p%name//' is defined again; the first definition is kept '// &
+                   '(*PARAMETER_DUPLICATION DFLAG = 1)'
+         case (2)
+            note = 'parameter '//p%name//' is defined again; the new definition replaces '// &
+                   'the first (*PARAMETER_DUPLICATION DFLAG = 2)'
+            deck%params(j) = p
+         case (3)
+            note = 'parameter '//p%name//' is defined again, an error with '// &
+                   '*PARAMETER_DUPLICATION DFLAG = 3'
+            bad = .true.
+         case (5)
+            continue
+         case default   ! 0 (no keyword) and 4
+            deck%params(j) = p
+         end select
       else
          if (deck%nparams == size(deck%params)) then
             allocate(t(2*size(deck%params)))
@@ -566,10 +603,11 @@ contains
       type(block_t), intent(in) :: blk
       type(error_t), allocatable, intent(out) :: error
       integer :: ic, w, k
-      character(:), allocatable :: line, ptxt, etxt, msg
+      character(:), allocatable :: line, ptxt, etxt, msg, note
       character :: kind
       type(param_t) :: p
       real(wp) :: v
+      logical :: bad
       w = 10
       if (blk%long) w = 20
       do ic = 1, blk%n
@@ -603,9 +641,48 @@ contains
          p%kind = kind
          p%value = v
          p%text = ''
-         call add_param(deck, p)
+         call add_param(deck, p, note, bad)
+         if (bad) then
+            call card_error(deck, blk, ic, 'field PRMR: '//note, error)
+            return
+         end if
+         if (len(note) > 0) call log_warn(card_where(deck, blk, ic)//': *'//blk%name// &
+                                          ': field PRMR: '//note)
       end do
    end subroutine read_parameter_expressions
+
+   !> *PARAMETER_DUPLICATION: one card, DFLAG (I10, default 1; 1 to 5, see add_param). It
+   !> governs the parameter definitions that follow it in the deck; a later
+   !> *PARAMETER_DUPLICATION replaces it.
+   subroutine read_parameter_duplication(deck, blk, error)
+      type(deck_t), intent(inout) :: deck
+      type(block_t), intent(in) :: blk
+      type(error_t), allocatable, intent(out) :: error
+      integer :: w(8), v
+      w = std_widths(blk, 8)
+      v = 1
+      if (blk%n > 1) then
+         call card_error(deck, blk, 2, 'one card expected (DFLAG), found '//str(blk%n), error)
+         return
+      end if
+      if (blk%n == 1) then
+         call get_int(deck, blk, 1, 1, w, 'DFLAG', 1, v, error)
+         if (allocated(error)) return
+         if (v == 0) v = 1
+         if (v < 1 .or. v > 5) then
+            call field_error(deck, blk, 1, 1, w, 'DFLAG', 'expected 1 to 5 (1 warn and keep '// &
+               'the first, 2 warn and replace, 3 error, 4 replace, 5 keep the first), got '// &
+               str(v), error)
+            return
+         end if
+         if (len_trim(blk%cards(1)%text) > w(1)) then
+            call card_error(deck, blk, 1, 'only DFLAG (columns 1-'//str(w(1))// &
+               ') is read; the rest of the card must be blank', error)
+            return
+         end if
+      end if
+      deck%dflag = v
+   end subroutine read_parameter_duplication
 
    ! ----------------------------------------------------------------------------------------
    ! the deck's view of the dx_card field readers: the file name and *PARAMETER table of deck

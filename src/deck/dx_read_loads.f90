@@ -1,7 +1,8 @@
 !> Readers for boundary conditions, loads, initial conditions and rigid walls:
 !> *BOUNDARY_SPC_NODE/_SET, *BOUNDARY_PRESCRIBED_MOTION_NODE/_SET, *INITIAL_VELOCITY,
 !> *INITIAL_VELOCITY_NODE, *INITIAL_VELOCITY_GENERATION, *LOAD_NODE_POINT, *LOAD_SEGMENT,
-!> *LOAD_SEGMENT_SET, *RIGIDWALL_PLANAR. Layouts and defaults: LS-DYNA Keyword User's
+!> *LOAD_SEGMENT_SET, *RIGIDWALL_PLANAR, *DEFINE_COORDINATE_SYSTEM (used by ICID of
+!> *INITIAL_VELOCITY_GENERATION). Layouts and defaults: LS-DYNA Keyword User's
 !> Manual, Vol. I. Options dynx cannot honour (local coordinate systems, boxes, rotational
 !> velocities on solids, follower forces, ...) give an error naming the field.
 module dx_read_loads
@@ -12,7 +13,7 @@ module dx_read_loads
    use dx_deck_registry, only: registry_t
    use dx_model_input, only: model_input_t, origin, spc_in_t, motion_in_t, ivel_in_t, &
                              load_node_in_t, load_seg_in_t, wall_in_t, IVEL_SET, IVEL_NODE, &
-                             IVEL_GEN
+                             IVEL_GEN, csys_in_t
    use dx_deck_buffers, only: spc_buffer_t, motion_buffer_t, ivel_buffer_t, &
                               load_node_buffer_t, load_seg_buffer_t
    implicit none
@@ -36,6 +37,7 @@ contains
       call reg%add('LOAD_SEGMENT', read_load_segment, id=.true.)
       call reg%add('LOAD_SEGMENT_SET', read_load_segment, id=.true.)
       call reg%add('RIGIDWALL_PLANAR', read_rigidwall_planar, id=.true.)
+      call reg%add('DEFINE_COORDINATE_SYSTEM', read_define_csys, title=.true.)
    end subroutine register_loads
 
    !> NID|NSID CID DOFX DOFY DOFZ DOFRX DOFRY DOFRZ
@@ -227,7 +229,10 @@ contains
             call c%real(vn(k), 0.0_wp, r%v(k))
          end do
          call c%zero_int('IVATN', 'rigid body slave parts')
-         call c%zero_int('ICID', 'local coordinate systems')
+         call c%int('ICID', 0, r%icid, min=0)
+         if (c%ok() .and. r%icid /= 0 .and. r%omega /= 0.0_wp) call c%fail('ICID', &
+            'a local system with a rotation (OMEGA /= 0) is not implemented (only VX VY VZ '// &
+            'in the local system, OMEGA = 0)')
          if (c%halt()) exit
          r%src = origin(blk%ifile, c%card_line(), blk%name)
          if (ic + 1 > blk%n) then
@@ -307,14 +312,108 @@ contains
       call c%done(error)
    end subroutine read_load_node
 
+   !> *DEFINE_COORDINATE_SYSTEM(_TITLE): card 1 CID XO YO ZO XL YL ZL CIDL, card 2 XP YP ZP.
+   !> O the origin, L a point on the local x axis, P a point in the local x-y plane (LS-DYNA
+   !> Keyword User's Manual, Vol. I): x = (L - O)/|L - O|, z = x cross (P - O) normalised,
+   !> y = z cross x (a right-handed orthonormal basis). CIDL (points given in another local
+   !> system) is not implemented: an error when nonzero. Coincident points or P on the x
+   !> axis are errors naming the field.
+   subroutine read_define_csys(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      type(card_t) :: c
+      type(csys_in_t) :: s
+      real(wp) :: xl(3), xp(3), z(3), a, b
+      integer :: k, i0
+      character(len=2), parameter :: on(3) = ['XO', 'YO', 'ZO'], ln(3) = ['XL', 'YL', 'ZL'], &
+                                     pn(3) = ['XP', 'YP', 'ZP']
+      if (.not. allocated(inp%csys)) allocate(inp%csys(0))
+      call deck_cursor(deck, blk, c)
+      i0 = data_start(blk)
+      call c%need(i0 + 1, 'two cards expected (CID XO YO ZO XL YL ZL CIDL; XP YP ZP)')
+      call c%max_cards(i0 + 1)
+      if (c%halt()) then
+         call c%done(error)
+         return
+      end if
+      call c%seek(i0)
+      call c%id('CID', s%id)
+      do k = 1, 3
+         call c%real(on(k), 0.0_wp, s%o(k))
+      end do
+      do k = 1, 3
+         call c%real(ln(k), 0.0_wp, xl(k))
+      end do
+      call c%zero_int('CIDL', 'points given in another local system')
+      if (c%ok()) then
+         do k = 1, size(inp%csys)
+            if (inp%csys(k)%id == s%id) call c%fail('CID', 'coordinate system '// &
+               str(s%id)//' is defined twice')
+         end do
+      end if
+      call c%seek(i0 + 1)
+      do k = 1, 3
+         call c%real(pn(k), 0.0_wp, xp(k))
+      end do
+      if (c%ok()) then
+         xl = xl - s%o
+         xp = xp - s%o
+         a = norm2(xl)
+         if (a == 0.0_wp) then
+            call c%fail('XL', 'the x-axis point (XL, YL, ZL) coincides with the origin')
+         else
+            s%axes(:,1) = xl/a
+            z = [s%axes(2,1)*xp(3) - s%axes(3,1)*xp(2), s%axes(3,1)*xp(1) - s%axes(1,1)*xp(3), &
+                 s%axes(1,1)*xp(2) - s%axes(2,1)*xp(1)]
+            b = norm2(z)
+            if (b <= 1.0e-12_wp*max(a, norm2(xp))) then
+               call c%fail('XP', 'the x-y plane point (XP, YP, ZP) lies on the local x axis')
+            else
+               s%axes(:,3) = z/b
+               s%axes(:,2) = [s%axes(2,3)*s%axes(3,1) - s%axes(3,3)*s%axes(2,1), &
+                              s%axes(3,3)*s%axes(1,1) - s%axes(1,3)*s%axes(3,1), &
+                              s%axes(1,3)*s%axes(2,1) - s%axes(2,3)*s%axes(1,1)]
+            end if
+         end if
+      end if
+      if (c%ok()) then
+         s%src = origin(blk%ifile, c%card_line(), blk%name)
+         inp%csys = [inp%csys, s]
+      end if
+      call c%done(error)
+   end subroutine read_define_csys
+
    !> After the whole deck (sets resolved): each *LOAD_NODE_SET card becomes the same load
    !> on every node of its set, in the set's order (LS-DYNA: each node carries SF x curve).
+   !> An *INITIAL_VELOCITY_GENERATION with ICID: VX VY VZ are components along the axes of
+   !> that *DEFINE_COORDINATE_SYSTEM; they become global components v = sum_k v_k axis_k.
    subroutine loads_finish(inp, error)
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
       integer :: i, j, k
       type(load_node_in_t) :: l
       type(load_node_buffer_t) :: buf
+      if (.not. allocated(inp%csys)) allocate(inp%csys(0))
+      if (allocated(inp%ivels)) then
+         do i = 1, size(inp%ivels)
+            if (inp%ivels(i)%icid == 0) cycle
+            j = 0
+            do k = 1, size(inp%csys)
+               if (inp%csys(k)%id == inp%ivels(i)%icid) j = k
+            end do
+            if (j == 0) then
+               call set_error(error, inp%files(inp%ivels(i)%src%ifile)%s//':'// &
+                  str(inp%ivels(i)%src%line)//': *'//inp%ivels(i)%src%key// &
+                  ': field ICID: coordinate system '//str(inp%ivels(i)%icid)// &
+                  ' is not defined (*DEFINE_COORDINATE_SYSTEM)')
+               return
+            end if
+            inp%ivels(i)%v = matmul(inp%csys(j)%axes, inp%ivels(i)%v)
+            inp%ivels(i)%icid = 0
+         end do
+      end if
       do i = 1, size(inp%node_set_loads)
          l = inp%node_set_loads(i)
          j = 0

@@ -10,6 +10,8 @@
 !>   *CONTROL_OUTPUT (5 cards of print and output flags)
 !>   *CONTROL_SOLUTION SOLN NLQ ISNAN LCINT LCACC NCDCF NOCOP
 !>   *CONTROL_PARALLEL NCPU NUMRHS CONST PARA; *CONTROL_MPP_IO_NODUMP; *CONTROL_UNITS;
+!>   *CONTROL_RIGID LMF JNTF ORTHMD PARTM SPARSE METALF PLOTEL RBSMS / NORBIC GJADSTF
+!>     GJADVSC TJADSTF TJADVSC RCVLR2D
 !>   *KEYWORD_ID (deck labels); *CONTACT_FORCE_TRANSDUCER_PENALTY/_CONSTRAINT (card 1
 !>     checked; its rcforc rows are not written: a transducer applies no force)
 !>   *DATABASE_EXTENT_BINARY (4 cards), *DATABASE_FORMAT IFORM IBINARY
@@ -47,6 +49,7 @@ contains
       call reg%add('CONTROL_PARALLEL', read_parallel)
       call reg%add('CONTROL_MPP_IO_NODUMP', read_nodump)
       call reg%add('CONTROL_UNITS', read_units)
+      call reg%add('CONTROL_RIGID', read_control_rigid)
       call reg%add('DATABASE_EXTENT_BINARY', read_extent_binary)
       call reg%add('DATABASE_FORMAT', read_db_format)
       call reg%add('DATABASE_BINARY_D3THDT', read_d3thdt)
@@ -238,6 +241,47 @@ contains
       call flag(c, 'PARA', 0, 2, v)
       call c%done(error)
    end subroutine read_parallel
+
+   !> *CONTROL_RIGID, card 1 LMF JNTF ORTHMD PARTM SPARSE METALF PLOTEL RBSMS, card 2
+   !> (optional) NORBIC GJADSTF GJADVSC TJADSTF TJADVSC RCVLR2D (written by pydyna; its
+   !> meaning is not documented here, so only 0 is accepted). LMF (Lagrange-multiplier joints),
+   !> JNTF (generalized joint stiffness update) and the added joint stiffness and damping
+   !> GJADSTF..TJADVSC act on *CONSTRAINED_JOINT_* only, which dynx does not read (a deck
+   !> with joints stops on them), so they cannot change a dynx run: range-checked and
+   !> accepted. ORTHMD, PARTM, SPARSE act on flexible bodies (*PART_MODES), which dynx does
+   !> not have: accepted. PLOTEL (plot elements for nodal rigid bodies) is output; RBSMS
+   !> acts with selective mass scaling only, which dynx does not have; NORBIC skips LS-DYNA's
+   !> rigid-body inertia check (dynx stops on a bad inertia either way): accepted. METALF = 1
+   !> (the fast rigid-body update of metal forming, rotations suppressed) would change the
+   !> motion of every rigid body and is not implemented: an error naming the field.
+   subroutine read_control_rigid(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      type(card_t) :: c
+      integer :: v
+      real(wp) :: r
+      call deck_cursor(deck, blk, c)
+      call c%max_cards(2)
+      call flag(c, 'LMF', 0, 1, v)
+      call flag(c, 'JNTF', 0, 2, v)
+      call flag(c, 'ORTHMD', 0, 1, v)
+      call flag(c, 'PARTM', 0, 1, v)
+      call flag(c, 'SPARSE', 0, 1, v)
+      call c%zero_int('METALF', 'the fast rigid-body update for metal forming (rotations '// &
+                      'of all rigid bodies suppressed) is not implemented')
+      call flag(c, 'PLOTEL', 0, 2, v)
+      call flag(c, 'RBSMS', 0, 1, v)
+      call c%next()
+      call flag(c, 'NORBIC', 0, 1, v)
+      call c%real('GJADSTF', 0.0_wp, r, min=0.0_wp)
+      call c%real('GJADVSC', 0.0_wp, r, min=0.0_wp)
+      call c%real('TJADSTF', 0.0_wp, r, min=0.0_wp)
+      call c%real('TJADVSC', 0.0_wp, r, min=0.0_wp)
+      call c%zero_int('RCVLR2D', 'this option of later LS-DYNA versions is not implemented')
+      call c%done(error)
+   end subroutine read_control_rigid
 
    !> *CONTROL_MPP_IO_NODUMP: no restart dumps in MPP LS-DYNA. dynx writes dumps only when
    !> *DATABASE_BINARY_D3DUMP/RUNRSF asks or a signal stops the run; no cards.

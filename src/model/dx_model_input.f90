@@ -23,7 +23,7 @@ module dx_model_input
              motion_in_t, ivel_in_t, out_note_t, set_step_in_t, set_gen_in_t, load_node_in_t, load_seg_in_t, wall_in_t, &
              IVEL_SET, IVEL_NODE, IVEL_GEN, add_node, add_element, origin, input_init, &
              beam_in_t, mass_in_t, nr2d_in_t, edge_press_in_t, deposit_in_t, &
-             c2d_in_t
+             c2d_in_t, csys_in_t
 
    integer, parameter :: IVEL_SET = 1   !< *INITIAL_VELOCITY
    integer, parameter :: IVEL_NODE = 2  !< *INITIAL_VELOCITY_NODE
@@ -99,8 +99,17 @@ module dx_model_input
       real(wp) :: vex(3) = 0.0_wp      !< velocity of the excluded nodes (NSIDEX)
       real(wp) :: omega = 0.0_wp
       real(wp) :: xc(3) = 0.0_wp, axis(3) = 0.0_wp
+      integer :: icid = 0              !< GENERATION: v is in *DEFINE_COORDINATE_SYSTEM icid
       type(origin_t) :: src
    end type ivel_in_t
+
+   !> *DEFINE_COORDINATE_SYSTEM: axes(:,k) = local axis k in global components
+   type :: csys_in_t
+      integer :: id = 0
+      real(wp) :: axes(3,3) = 0.0_wp
+      real(wp) :: o(3) = 0.0_wp
+      type(origin_t) :: src
+   end type csys_in_t
 
    type :: load_node_in_t
       integer :: nid = 0, dof = 0, lcid = 0
@@ -229,6 +238,7 @@ module dx_model_input
       type(spc_in_t), allocatable :: spcs(:)
       type(motion_in_t), allocatable :: motions(:)
       type(ivel_in_t), allocatable :: ivels(:)
+      type(csys_in_t), allocatable :: csys(:)     !< *DEFINE_COORDINATE_SYSTEM
       type(load_node_in_t), allocatable :: node_loads(:)
       type(load_node_in_t), allocatable :: node_set_loads(:)  !< *LOAD_NODE_SET (nid = NSID)
       type(load_seg_in_t), allocatable :: seg_loads(:)
