@@ -103,7 +103,8 @@ bin/dynx-thist: build/release/dynx_thist.o build/release/libdynx.a | bin
 	$(FC) $(REL_FLAGS) -o $@ $^ $(LIBS) $(FFTW_LIBS)
 
 UNIT_TESTS := $(patsubst tests/unit/%.f90,build/debug/tests/%,$(filter tests/unit/test_%,$(TEST_SRC)))
-MPI_TESTS := build/debug/tests/mpi_par_test build/debug/tests/mpi_par_model_test build/debug/tests/mpi_fail_test
+MPI_TESTS := build/debug/tests/mpi_par_test build/debug/tests/mpi_par_model_test build/debug/tests/mpi_fail_test \
+             build/debug/tests/mpi_repro_test
 MPI_BENCH := build/release/bench/mpi_shared_bench
 build/release/bench/%: build/release/%.o build/release/libdynx.a
 	@mkdir -p build/release/bench

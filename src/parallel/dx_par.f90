@@ -17,7 +17,7 @@ module dx_par
                         MPI_Isend, MPI_MAX, MPI_MAX_ERROR_STRING, MPI_MIN, MPI_MINLOC, MPI_Op, &
                         MPI_Probe, MPI_Recv, MPI_Request, MPI_Status, MPI_STATUS_IGNORE, &
                         MPI_STATUSES_IGNORE, MPI_SUCCESS, MPI_SUM, MPI_Waitall, MPI_Wtime, &
-                        MPI_COMM_SELF, MPI_Initialized, MPI_Finalized
+                        MPI_COMM_SELF, MPI_Initialized, MPI_Finalized, MPI_INTEGER8
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, exit_process, EXIT_NUMERIC
    use dx_strings, only: str
@@ -30,6 +30,7 @@ module dx_par
    public :: par_allgatherv_real, par_sparse_exchange, par_allgather_probe   ! (contact)
    public :: par_displs, par_counts
    public :: par_self_handle   ! (the sparse direct solver, dx_mumps)
+   public :: par_allreduce_i8  ! (exact reproducible sums, dx_repro_sum)
 
    integer, parameter :: PAR_SUM = 1, PAR_MIN = 2, PAR_MAX = 3
 
@@ -215,6 +216,19 @@ contains
       call par_check(ierr, 'MPI_Allreduce')
       x = y
    end subroutine allreduce_i1
+
+   !> x = sum over ranks of the int64 array x (exact: integer addition, any order). For the
+   !> limbs of dx_repro_sum's exact accumulators.
+   subroutine par_allreduce_i8(x)
+      integer(int64), intent(inout) :: x(:)
+      integer(int64), allocatable :: y(:)
+      integer :: ierr
+      if (.not. mpi_on) return
+      allocate(y(size(x)))
+      call MPI_Allreduce(x, y, size(x), MPI_INTEGER8, MPI_SUM, comm, ierr)
+      call par_check(ierr, 'MPI_Allreduce')
+      x = y
+   end subroutine par_allreduce_i8
 
    !> Broadcast a message and an integer code from rank root (a failure found on one rank,
    !> made known to all: dx_par_engine). On the other ranks text is replaced.
