@@ -30,8 +30,9 @@ module dx_domain
    use dx_restart, only: restart_write
    use dx_par_restart, only: serial_restart_read
    use dx_energy_sums, only: constraint_work, element_energies, set_energy, part_mass_map, &
-                             part_energies, interface_work, eroded_energies, rotation_work, &
-                             part_added_mass
+                             interface_work, rotation_work, part_added_mass
+   use dx_energy_exact, only: energy_terms, energy_values, corner_counts, held_status
+   use dx_repro_sum, only: rsum_t
    use dx_par_emc, only: par_emc_t, par_emc_together
    implicit none
    private
@@ -432,11 +433,22 @@ contains
       logical, intent(in) :: need
       real(wp), intent(in), optional :: wold(:, :)
       real(wp) :: eint, ehg, epend
+      real(wp), allocatable :: alive(:), all(:)
+      integer(1), allocatable :: held(:)
+      type(rsum_t) :: rs
+      if (need) then     ! the reported sums: exact (dx_energy_exact), as an MPI run's
+         if (model%erodes) then
+            call corner_counts(model, alive, all)
+            held = held_status(alive, all)
+         end if
+         call energy_terms(model, vold, size(model%mass), [integer ::], rs, wold=wold, held=held)
+         call energy_values(model, rs, dfac, wsum, erw, model)
+         return
+      end if
+      ! the cycles between (energy guard, status line): plain sums in a fixed order
       call element_energies(model%blocks, eint, ehg, epend)
       eint = eint + dfac*epend   ! the part of W(n) booked next cycle
       call set_energy(model, ke, eint, ehg, wsum, erw)
-      if (need) call part_energies(model, vold, dfac)   ! matsum (when the deck asks)
-      if (model%erodes .and. need) call eroded_energies(model, vold)
    end subroutine s_energies
 
    subroutine s_write_plot(d, model, out, error)

@@ -425,10 +425,12 @@ contains
       k0 = 0.5_wp*sum(rinert*sum(w**2, dim=1))
    end function rotation_initial
 
-   !> Store the energies and momentum of the current step in model%energy.
-   subroutine set_energy(model, ke, eint, ehg, wext, erw)
+   !> Store the energies and momentum of the current step in model%energy (mom: the exact
+   !> momentum sum of energy_values; else summed here in node order).
+   subroutine set_energy(model, ke, eint, ehg, wext, erw, mom)
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: ke, eint, ehg, wext, erw
+      real(wp), intent(in), optional :: mom(3)
       real(wp) :: den
       integer :: d
       model%energy%kinetic = ke
@@ -443,9 +445,13 @@ contains
       else
          model%energy%ratio = 1.0_wp
       end if
-      do d = 1, 3
-         model%energy%momentum(d) = sum(model%mass*model%v(d, :))
-      end do
+      if (present(mom)) then
+         model%energy%momentum = mom
+      else
+         do d = 1, 3
+            model%energy%momentum(d) = sum(model%mass*model%v(d, :))
+         end do
+      end if
       if (allocated(model%rigid)) model%energy%momentum = model%energy%momentum + &
                                                          model%rigid%p_corr
    end subroutine set_energy

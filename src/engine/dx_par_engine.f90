@@ -36,9 +36,10 @@ module dx_par_engine
                           par_gather_values_root
    use dx_sort, only: sort_index
    use dx_par_model, only: par_model_t, par_fill_slots, par_exchange_forces, par_exchange_mass
-   use dx_energy_sums, only: initial_kinetic, kinetic_energy, element_energies, &
-                             constraint_terms, set_energy, part_energies, rot_node_term, &
-                             rotation_kinetic, rotation_initial, eroded_energies, part_added_mass
+   use dx_energy_sums, only: initial_kinetic, constraint_terms, rot_node_term, &
+                             rotation_initial, part_added_mass
+   use dx_energy_exact, only: energy_terms, energy_values, corner_counts, held_status
+   use dx_repro_sum, only: rsum_t, rs_reduce
    use dx_constraints, only: apply_rigidwalls, wall_hits_t
    use dx_par_contact, only: par_contact_t, par_contact_report
    use dx_par_plot, only: par_plot_t, par_plot_write, par_plot_finish
@@ -576,103 +577,41 @@ contains
       eng%t_gath = eng%t_gath + (par_wtime() - t0)
    end subroutine flush_work
 
-   !> Energies and momentum of the step (when needed): nodal velocities and element
-   !> energies gathered to rank 0, the serial sums on its global model, the results sent
-   !> to every rank (MPI_Bcast: one energy record, not the arrays). Decks with contact or
-   !> rigid bodies gather the nodal velocities to every rank (their stages read g's nodes).
-   !> dfac = (dt(n+1/2) - dt(n-1/2))/4 weighs the element work still to be booked (epend,
-   !> dx_energy_sums), gathered per element as alive*(ework(:,4) - ework(:,2)).
+   !> Energies and momentum of the step (when needed), without gathering: every rank forms
+   !> the terms of its owned nodes and of its elements with the serial run's code
+   !> (dx_energy_exact energy_terms), adds them exactly (dx_repro_sum), and one int64
+   !> MPI_Allreduce gives every rank the exact sums, rounded once: the serial run's bits for
+   !> any NP. Erosion: the corner counts of the shared nodes are summed over the ranks by
+   !> the slot exchange first (which nodes only eroded elements hold). matsum's part sums
+   !> go into the global model's psum where it is allocated (rank 0, which writes matsum).
+   !> dfac = (dt(n+1/2) - dt(n-1/2))/4 weighs the element work still to be booked.
    subroutine par_engine_energies(eng, model, vold, wsum, erw, dfac, needed, wold)
       type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: vold(:, :), wsum, erw, dfac
       logical, intent(in) :: needed
       real(wp), intent(in), optional :: wold(:, :)
-      real(wp), allocatable :: vals(:, :), gv(:, :)
-      real(wp) :: ke, eint, ehg, t0, epend, erec(15)
-      integer :: i, e, nv, nr
-      logical :: root
+      real(wp), allocatable :: alive(:), all(:)
+      integer(1), allocatable :: held(:)
+      type(rsum_t) :: rs
+      real(wp) :: t0
       if (.not. needed) return
       t0 = par_wtime()
-      root = par_rank() == 0
-      nr = 6
-      if (present(wold)) nr = 12      ! shells: w(n+1/2), w(n-1/2) too
-      allocate(vals(nr, size(eng%own)), gv(nr, size(eng%plan_own%keys)))
-      do i = 1, size(eng%own)
-         vals(1:3, i) = model%v(:, eng%own(i))
-         vals(4:6, i) = vold(:, eng%own(i))
-         if (nr == 12) then
-            vals(7:9, i) = model%w(:, eng%own(i))
-            vals(10:12, i) = wold(:, eng%own(i))
-         end if
-      end do
-      if (eng%root_only) then
-         call par_gather_values_root(eng%plan_own, vals, gv)
+      if (model%erodes) then
+         call corner_counts(model, alive, all)
+         call par_exchange_mass(eng%pm, alive)
+         call par_exchange_mass(eng%pm, all)
+         held = held_status(alive, all)
+      end if
+      call energy_terms(model, vold, eng%pm%nloc, eng%pm%slot_node, rs, nodes=eng%own, &
+                        wold=wold, held=held)
+      call rs_reduce(rs)
+      if (associated(eng%g)) then
+         call energy_values(model, rs, dfac, wsum, erw, eng%g)
       else
-         call par_gather_values(eng%plan_own, vals, gv)
+         call energy_values(model, rs, dfac, wsum, erw)
       end if
-      if (root .or. .not. eng%root_only) then
-         eng%g%v(:, eng%plan_own%keys) = gv(1:3, :)
-         eng%gvold(:, eng%plan_own%keys) = gv(4:6, :)
-         if (nr == 12) then
-            eng%g%w(:, eng%plan_own%keys) = gv(7:9, :)
-            eng%gwold(:, eng%plan_own%keys) = gv(10:12, :)
-         end if
-      end if
-      deallocate(vals, gv)
-      nv = 3
-      if (model%erodes) nv = 4   ! the eroded flags too (dx_erosion)
-      allocate(vals(nv, size(eng%elem_loc, 2)), gv(nv, size(eng%plan_elem%keys)))
-      do i = 1, size(eng%elem_loc, 2)
-         associate (pb => model%blocks(eng%elem_loc(1, i)), j => eng%elem_loc(2, i))
-            vals(1, i) = pb%eint(j)
-            vals(2, i) = pb%ehg(j)
-            if (nv == 4) vals(4, i) = merge(1.0_wp, 0.0_wp, pb%failed(j))
-            vals(3, i) = 0.0_wp
-            if (pb%esc(ES_WORK) > 0) vals(3, i) = merge(0.0_wp, 1.0_wp, pb%failed(j))* &
-               (pb%es(j, pb%esc(ES_WORK) + WORK_PN) - pb%es(j, pb%esc(ES_WORK) + WORK_QBV))
-         end associate
-      end do
-      call par_gather_values_root(eng%plan_elem, vals, gv)
-      erec = 0.0_wp
-      if (root) then
-         do i = 1, size(eng%plan_elem%keys)
-            e = eng%plan_elem%keys(i)
-            associate (gb => eng%g%blocks(eng%g%elem_block(e)), p => eng%g%elem_pos(e))
-               gb%eint(p) = gv(1, i)
-               gb%ehg(p) = gv(2, i)
-               if (nv == 4) gb%failed(p) = gv(4, i) > 0.5_wp
-               ! the global copy only reports: its ework carries the pending term in col. 4
-               if (gb%esc(ES_WORK) > 0) then
-                  gb%es(p, gb%esc(ES_WORK) + WORK_PN) = gv(3, i)
-                  gb%es(p, gb%esc(ES_WORK) + WORK_QBV) = 0.0_wp
-               end if
-            end associate
-         end do
-         ke = kinetic_energy(eng%g%nn, eng%g%mass, eng%gvold, eng%g%v)
-         if (nr == 12) ke = ke + rotation_kinetic(eng%g%nn, eng%g%rinert, eng%gwold, eng%g%w)
-         if (allocated(eng%g%rigid)) ke = ke + eng%g%rigid%ke_corr   ! body KE (dx_par_rigid)
-         call element_energies(eng%g%blocks, eint, ehg, epend)
-         eint = eint + dfac*epend
-         eng%g%energy%initial = model%energy%initial
-         call set_energy(eng%g, ke, eint, ehg, wsum, erw)
-         call part_energies(eng%g, eng%gvold, dfac)   ! matsum (when the deck asks)
-         if (model%erodes) call eroded_energies(eng%g, eng%gvold)
-         associate (en => eng%g%energy)
-            erec = [en%kinetic, en%internal, en%hourglass, en%external_work, en%rigidwall, &
-                   en%sliding, en%total, en%initial, en%ratio, en%momentum, en%mass, &
-                   en%eroded_ie, en%eroded_ke]
-         end associate
-      end if
-      call par_bcast_real(erec, 0)
-      associate (en => model%energy)
-         en%kinetic = erec(1); en%internal = erec(2); en%hourglass = erec(3)
-         en%external_work = erec(4); en%rigidwall = erec(5); en%sliding = erec(6)
-         en%total = erec(7); en%initial = erec(8); en%ratio = erec(9)
-         en%momentum = erec(10:12); en%mass = erec(13)
-         en%eroded_ie = erec(14); en%eroded_ke = erec(15)
-      end associate
-      eng%g%energy = model%energy
+      if (associated(eng%g)) eng%g%energy = model%energy
       eng%t_gath = eng%t_gath + (par_wtime() - t0)
    end subroutine par_engine_energies
 

@@ -1,0 +1,221 @@
+!> The energies of an output event (glstat, matsum, ENDENG and the end of the run) as exact
+!> sums (dx_repro_sum: the long accumulator, rounded once), the same procedures in a serial
+!> run and on every rank of an MPI run: each term is formed by the same code from the same
+!> numbers wherever it is formed, and the sums are exact, so the result does not depend on
+!> which rank adds which term or in what order: serial = NP 2 = 3 = 4 bit for bit without
+!> gathering anything (docs/history.md, "Reproducible sums"). A rank adds the nodal terms
+!> of the nodes it owns and the terms of its elements (each element on one rank), then one
+!> rs_reduce (one int64 MPI_Allreduce) gives every rank every sum.
+!> Terms (energy balance: Hallquist, DYNA3D User's Manual UCRL-MA-107254; Belytschko, Liu &
+!> Moran 2000, section 6.2.3): the time-centred kinetic energy 1/2 sum m v(n-1/2).v(n+1/2)
+!> (+ 1/2 I w(n-1/2).w(n+1/2) on shell nodes), the element internal and hourglass energies,
+!> the element work still to be booked (weighted by dfac), the momentum sum m v(n+1/2).
+!> Erosion: the internal energy of the eroded elements and the kinetic energy of the nodes
+!> that some element holds and no living element does (corner_counts: under MPI the counts
+!> of a shared node are summed over the ranks by the fixed-order slot exchange).
+!> Per part (*DATABASE_MATSUM): internal, hourglass and pending work of the part's elements;
+!> kinetic energy and momentum element by element, each corner weighted by the element's
+!> share of the lumped mass, (rho V0 + added mass) times the family's nodal share (the
+!> terms the lumped mass is the sum of), so the parts add up to glstat's totals to
+!> round-off, and each element's terms are formed on the one rank that holds it.
+module dx_energy_exact
+   use dx_kinds, only: wp
+   use dx_model, only: model_t, ES_WORK, WORK_PN, WORK_QBV, family_t, element_family
+   use dx_repro_sum, only: rsum_t, rs_init, rs_add, rs_value, rs_count
+   use dx_energy_sums, only: set_energy
+   implicit none
+   private
+   public :: energy_nsums, energy_terms, energy_values, corner_counts, held_status
+
+   !> The sums of an event: kinetic (halved at the end), internal, hourglass, pending
+   !> element work, momentum x y z, eroded internal and kinetic; then PS_N per part.
+   integer, parameter :: S_KE = 1, S_IE = 2, S_HG = 3, S_PEND = 4, S_MOM = 5, S_EIE = 8, &
+                         S_EKE = 9, S_N = 9
+   integer, parameter :: P_IE = 1, P_HG = 2, P_PEND = 3, P_KE = 4, P_MOM = 5, P_EIE = 8, &
+                         P_EKE = 9, PS_N = 9
+
+contains
+
+   !> The number of sums (the same on every rank): with matsum, PS_N per part too.
+   integer function energy_nsums(model)
+      type(model_t), intent(in) :: model
+      energy_nsums = S_N
+      if (model%db%matsum_dt > 0.0_wp .and. allocated(model%parts)) &
+         energy_nsums = S_N + PS_N*size(model%parts)
+   end function energy_nsums
+
+   !> The element corners at each node (all, and those of living elements): erosion.
+   subroutine corner_counts(model, alive, all)
+      type(model_t), intent(in) :: model
+      real(wp), allocatable, intent(out) :: alive(:), all(:)
+      type(family_t) :: fam
+      integer :: b, i, k, nd
+      allocate(alive(size(model%mass)), all(size(model%mass)))
+      alive = 0.0_wp
+      all = 0.0_wp
+      do b = 1, size(model%blocks)
+         associate (blk => model%blocks(b))
+            fam = element_family(blk%etype)
+            do i = 1, blk%nel
+               do k = 1, fam%nen
+                  nd = blk%conn(k, i)
+                  all(nd) = all(nd) + 1.0_wp
+                  if (.not. blk%failed(i)) alive(nd) = alive(nd) + 1.0_wp
+               end do
+            end do
+         end associate
+      end do
+   end subroutine corner_counts
+
+   !> 0: no element holds the node, 1: eroded elements only, 2: a living element.
+   function held_status(alive, all) result(held)
+      real(wp), intent(in) :: alive(:), all(:)
+      integer(1), allocatable :: held(:)
+      allocate(held(size(all)))
+      held = 0_1
+      where (all > 0.0_wp) held = 1_1
+      where (alive > 0.0_wp) held = 2_1
+   end function held_status
+
+   !> This rank's terms of the event into rs (allocated here, energy_nsums sums). nodes: the
+   !> nodes whose nodal terms are added here (absent: every node, a serial run); an element
+   !> corner k > nreal is slot k - nreal of local node slot(k - nreal) (MPI sub-model; a
+   !> serial run passes nreal = nn). wold: shells' w(n-1/2); held (erosion): held_status.
+   subroutine energy_terms(model, vold, nreal, slot, rs, nodes, wold, held)
+      type(model_t), intent(in) :: model
+      real(wp), intent(in) :: vold(:, :)
+      integer, intent(in) :: nreal, slot(:)
+      type(rsum_t), intent(inout) :: rs
+      integer, intent(in), optional :: nodes(:)
+      real(wp), intent(in), optional :: wold(:, :)
+      integer(1), intent(in), optional :: held(:)
+      integer :: j
+      call rs_init(rs, energy_nsums(model))
+      if (present(nodes)) then
+         do j = 1, size(nodes)
+            call node_terms(nodes(j))
+         end do
+      else
+         do j = 1, size(model%mass)
+            call node_terms(j)
+         end do
+      end if
+      call element_terms(model, vold, nreal, slot, rs, held)
+   contains
+      subroutine node_terms(nd)
+         integer, intent(in) :: nd
+         real(wp) :: m, dv
+         integer :: d
+         m = model%mass(nd)
+         dv = m*dot_product(vold(:, nd), model%v(:, nd))
+         call rs_add(rs, S_KE, dv)
+         if (present(wold)) &
+            call rs_add(rs, S_KE, model%rinert(nd)*dot_product(wold(:, nd), model%w(:, nd)))
+         do d = 1, 3
+            call rs_add(rs, S_MOM + d - 1, m*model%v(d, nd))
+         end do
+         if (present(held)) then
+            if (held(nd) == 1_1) call rs_add(rs, S_EKE, dv)
+         end if
+      end subroutine node_terms
+   end subroutine energy_terms
+
+   !> The element terms (each element on one rank) and, with matsum, the parts' terms.
+   subroutine element_terms(model, vold, nreal, slot, rs, held)
+      type(model_t), intent(in) :: model
+      real(wp), intent(in) :: vold(:, :)
+      integer, intent(in) :: nreal, slot(:)
+      type(rsum_t), intent(inout) :: rs
+      integer(1), intent(in), optional :: held(:)
+      type(family_t) :: fam
+      real(wp) :: pend, me, dv, rho
+      integer :: b, i, k, nd, w, p0, d
+      logical :: parts, added
+      parts = rs_count(rs) > S_N
+      added = allocated(model%added_mass) .and. model%ctrl%dt2ms /= 0.0_wp
+      do b = 1, size(model%blocks)
+         associate (blk => model%blocks(b))
+            fam = element_family(blk%etype)
+            w = blk%esc(ES_WORK)
+            p0 = S_N + PS_N*(blk%ipart - 1)
+            rho = 0.0_wp
+            if (parts) rho = model%mats(model%parts(blk%ipart)%imat)%m%ro
+            do i = 1, blk%nel
+               call rs_add(rs, S_IE, blk%eint(i))
+               call rs_add(rs, S_HG, blk%ehg(i))
+               pend = 0.0_wp
+               if (w > 0) then
+                  pend = merge(0.0_wp, 1.0_wp, blk%failed(i))* &
+                         (blk%es(i, w + WORK_PN) - blk%es(i, w + WORK_QBV))
+                  call rs_add(rs, S_PEND, pend)
+               end if
+               if (present(held)) then
+                  if (blk%failed(i)) call rs_add(rs, S_EIE, blk%eint(i))
+               end if
+               if (.not. parts) cycle
+               call rs_add(rs, p0 + P_IE, blk%eint(i))
+               call rs_add(rs, p0 + P_HG, blk%ehg(i))
+               if (w > 0) call rs_add(rs, p0 + P_PEND, pend)
+               if (present(held)) then
+                  if (blk%failed(i)) call rs_add(rs, p0 + P_EIE, blk%eint(i))
+               end if
+               me = rho*blk%vol0(i)
+               if (added) me = me + model%added_mass(blk%elem(i))
+               me = me*fam%mass_share
+               do k = 1, fam%nen
+                  nd = blk%conn(k, i)
+                  if (nd > nreal) nd = slot(nd - nreal)
+                  dv = me*dot_product(vold(:, nd), model%v(:, nd))
+                  call rs_add(rs, p0 + P_KE, dv)
+                  do d = 1, 3
+                     call rs_add(rs, p0 + P_MOM + d - 1, me*model%v(d, nd))
+                  end do
+                  if (present(held)) then
+                     if (held(nd) == 1_1) call rs_add(rs, p0 + P_EKE, dv)
+                  end if
+               end do
+            end do
+         end associate
+      end do
+   end subroutine element_terms
+
+   !> The event's energies from the summed (reduced) rs into model%energy (set_energy: the
+   !> total, the ratio, the momentum with the rigid bodies' correction), the eroded
+   !> energies with erosion, and the parts' sums into psm%psum when it is allocated (the
+   !> serial model, or rank 0's global model that writes matsum). dfac weighs the pending
+   !> element work; wext the external work, erw the rigid-wall energy.
+   subroutine energy_values(model, rs, dfac, wext, erw, psm)
+      type(model_t), intent(inout) :: model
+      type(rsum_t), intent(in) :: rs
+      real(wp), intent(in) :: dfac, wext, erw
+      type(model_t), intent(inout), optional :: psm
+      real(wp) :: ke, eint
+      integer :: p, p0, d
+      ke = 0.5_wp*rs_value(rs, S_KE)
+      if (allocated(model%rigid)) ke = ke + model%rigid%ke_corr   ! bodies' KE (dx_rigid)
+      eint = rs_value(rs, S_IE) + dfac*rs_value(rs, S_PEND)
+      call set_energy(model, ke, eint, rs_value(rs, S_HG), wext, erw, &
+                      [(rs_value(rs, S_MOM + d - 1), d = 1, 3)])
+      if (model%erodes) then
+         model%energy%eroded_ie = rs_value(rs, S_EIE)
+         model%energy%eroded_ke = 0.5_wp*rs_value(rs, S_EKE)
+      end if
+      if (.not. present(psm) .or. rs_count(rs) == S_N) return
+      associate (ps => psm%psum)
+         if (.not. allocated(ps%ie)) return
+         do p = 1, size(ps%ie)
+            p0 = S_N + PS_N*(p - 1)
+            ps%ie(p) = rs_value(rs, p0 + P_IE) + dfac*rs_value(rs, p0 + P_PEND)
+            ps%hge(p) = rs_value(rs, p0 + P_HG)
+            ps%ke(p) = 0.5_wp*rs_value(rs, p0 + P_KE)
+            do d = 1, 3
+               ps%mom(d, p) = rs_value(rs, p0 + P_MOM + d - 1)
+            end do
+            if (model%erodes) then
+               ps%eie(p) = rs_value(rs, p0 + P_EIE)
+               ps%eke(p) = 0.5_wp*rs_value(rs, p0 + P_EKE)
+            end if
+         end do
+      end associate
+   end subroutine energy_values
+end module dx_energy_exact
