@@ -22,17 +22,18 @@ module dx_domain
    use dx_par, only: par_rank, par_size
    use dx_contact2d, only: contact2d_forces
    use dx_loads, only: has_external_loads
-   use dx_constraints, only: apply_rigidwalls, add_wall_hits, wall_hits_t
+   use dx_constraints, only: apply_rigidwalls, wall_hits_t
    use dx_contact, only: contact_forces, contact_work
    use dx_rigid_solver, only: rigid_step
    use dx_element, only: element_mass_share
    use dx_mass_scaling, only: lump_mass, ms_added_total
    use dx_restart, only: restart_write
    use dx_par_restart, only: serial_restart_read
-   use dx_energy_sums, only: constraint_work, element_energies, set_energy, part_mass_map, &
-                             interface_work, rotation_work, part_added_mass
-   use dx_energy_exact, only: energy_terms, energy_values, corner_counts, held_status
-   use dx_repro_sum, only: rsum_t
+   use dx_energy_sums, only: constraint_terms, element_energies, set_energy, part_mass_map, &
+                             interface_work, rot_node_term, part_added_mass
+   use dx_energy_exact, only: energy_terms, energy_values, corner_counts, held_status, &
+                              work_nsums, work_hit, work_values
+   use dx_repro_sum, only: rsum_t, rs_init, rs_add
    use dx_par_emc, only: par_emc_t, par_emc_together
    implicit none
    private
@@ -254,6 +255,7 @@ module dx_domain
    type, extends(domain_t) :: serial_domain_t
       real(wp), allocatable :: cterms(:)        !< constraint work terms (work space)
       type(wall_hits_t) :: hits                 !< this cycle's rigid-wall hits
+      type(rsum_t) :: wrs                       !< the cycle's work sums (s_constraints)
    contains
       procedure :: sum_mass => s_model_nothing
       procedure :: mass_share => s_mass_share
@@ -393,13 +395,36 @@ contains
       real(wp), intent(inout) :: wcon, wrw
       logical, intent(in) :: need
       real(wp), intent(in), optional :: wold(:, :)
-      if (present(wold)) call rotation_work(model, wold, wcon)   ! shells' constraint moments
-      if (.not. allocated(d%cterms)) allocate(d%cterms(size(cnodes)))
-      call constraint_work(cnodes, model%mass, vfree, vold, model%v, dtavg, wcon, d%cterms)
-      if (allocated(model%walls)) then
-         call apply_rigidwalls(model, dt, dtavg, vold, model%v, d%hits)
-         call add_wall_hits(model, d%hits, wrw)
+      real(wp), allocatable :: fw(:, :)
+      real(wp) :: term
+      integer :: i, nw
+      nw = 0
+      if (allocated(model%walls)) nw = size(model%walls)
+      ! this cycle's terms, summed exactly and added to the running sums once (as an MPI
+      ! run adds each cycle's sum over the ranks: dx_energy_exact work_values)
+      call rs_init(d%wrs, work_nsums(nw))
+      if (present(wold)) then      ! shells' constraint moments
+         do i = 1, model%nn
+            if (rot_node_term(model%rinert(i), model%mom(:, i), wold(:, i), model%w(:, i), &
+                              term)) call rs_add(d%wrs, 1, term)
+         end do
       end if
+      if (.not. allocated(d%cterms)) allocate(d%cterms(size(cnodes)))
+      call constraint_terms(cnodes, model%mass, vfree, vold, model%v, dtavg, d%cterms)
+      do i = 1, size(cnodes)
+         call rs_add(d%wrs, 1, d%cterms(i))
+      end do
+      if (nw > 0) then
+         call apply_rigidwalls(model, dt, dtavg, vold, model%v, d%hits)
+         do i = 1, d%hits%n
+            call work_hit(d%wrs, 0, d%hits%wall(i), d%hits%val(1:4, i))
+         end do
+      end if
+      allocate(fw(3, nw))
+      call work_values(d%wrs, 0, nw, wcon, wrw, fw)
+      do i = 1, nw
+         model%walls(i)%force = fw(:, i)
+      end do
    end subroutine s_constraints
 
    !> W_ext += f_ext(n).dtavg (v(n-1/2) + v(n+1/2))/2, node by node.

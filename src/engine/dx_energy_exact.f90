@@ -21,11 +21,12 @@
 module dx_energy_exact
    use dx_kinds, only: wp
    use dx_model, only: model_t, ES_WORK, WORK_PN, WORK_QBV, family_t, element_family
-   use dx_repro_sum, only: rsum_t, rs_init, rs_add, rs_value, rs_count
+   use dx_repro_sum, only: rsum_t, rs_init, rs_add, rs_value, rs_count, rs_reduce
    use dx_energy_sums, only: set_energy
    implicit none
    private
-   public :: energy_nsums, energy_terms, energy_values, corner_counts, held_status
+   public :: energy_nsums, energy_terms, energy_values, corner_counts, held_status, &
+             exact_mass, exact_initial_ke, work_nsums, work_hit, work_values
 
    !> The sums of an event: kinetic (halved at the end), internal, hourglass, pending
    !> element work, momentum x y z, eroded internal and kinetic; then PS_N per part.
@@ -218,4 +219,101 @@ contains
          end do
       end associate
    end subroutine energy_values
+
+   !> Sums per cycle of the constraint and rigid-wall work (work_hit, work_values): the
+   !> constraint work (translations and rotations), the rigid-wall work, then each wall's
+   !> resultant force (3 each). nw: the deck's number of walls.
+   integer function work_nsums(nw)
+      integer, intent(in) :: nw
+      work_nsums = 2 + 3*nw
+   end function work_nsums
+
+   !> One rigid-wall hit (dx_constraints wall_hits_t: val(1) the work term, val(2:4) m
+   !> dv/dtavg) of wall w into the cycle's sums from c0 + 1.
+   subroutine work_hit(rs, c0, w, val)
+      type(rsum_t), intent(inout) :: rs
+      integer, intent(in) :: c0, w
+      real(wp), intent(in) :: val(4)
+      integer :: d
+      call rs_add(rs, c0 + 2, val(1))
+      do d = 1, 3
+         call rs_add(rs, c0 + 2 + 3*(w - 1) + d, -val(1 + d))
+      end do
+   end subroutine work_hit
+
+   !> A cycle's sums (from c0 + 1, summed over the ranks) into the running work sums, each
+   !> cycle's exact sum rounded once and added in cycle order (serial = MPI, any NP); the
+   !> walls' resultant forces become this cycle's (forces: the walls, when the deck has
+   !> them; the rigid-wall work is only added then).
+   subroutine work_values(rs, c0, nw, wcon, wrw, forces)
+      type(rsum_t), intent(in) :: rs
+      integer, intent(in) :: c0, nw
+      real(wp), intent(inout) :: wcon, wrw
+      real(wp), intent(inout), optional :: forces(:, :)
+      integer :: w, d
+      wcon = wcon + rs_value(rs, c0 + 1)
+      if (nw == 0) return
+      wrw = wrw + rs_value(rs, c0 + 2)
+      if (.not. present(forces)) return
+      do w = 1, nw
+         do d = 1, 3
+            forces(d, w) = rs_value(rs, c0 + 2 + 3*(w - 1) + d)
+         end do
+      end do
+   end subroutine work_values
+
+   !> The total nodal mass, an exact sum over the nodes (absent: every node; MPI: the
+   !> owned nodes, and reduce = .true. sums over the ranks: collective).
+   real(wp) function exact_mass(model, nodes, reduce) result(m)
+      type(model_t), intent(in) :: model
+      integer, intent(in), optional :: nodes(:)
+      logical, intent(in), optional :: reduce
+      type(rsum_t) :: rs
+      integer :: j
+      call rs_init(rs, 1)
+      if (present(nodes)) then
+         do j = 1, size(nodes)
+            call rs_add(rs, 1, model%mass(nodes(j)))
+         end do
+      else
+         do j = 1, size(model%mass)
+            call rs_add(rs, 1, model%mass(j))
+         end do
+      end if
+      if (present(reduce)) then
+         if (reduce) call rs_reduce(rs)
+      end if
+      m = rs_value(rs, 1)
+   end function exact_mass
+
+   !> The initial kinetic energy 1/2 sum m v.v (+ 1/2 I w.w on shell nodes), an exact sum
+   !> over the nodes (as exact_mass).
+   real(wp) function exact_initial_ke(model, nodes, reduce) result(e0)
+      type(model_t), intent(in) :: model
+      integer, intent(in), optional :: nodes(:)
+      logical, intent(in), optional :: reduce
+      type(rsum_t) :: rs
+      integer :: j
+      call rs_init(rs, 1)
+      if (present(nodes)) then
+         do j = 1, size(nodes)
+            call node_term(nodes(j))
+         end do
+      else
+         do j = 1, size(model%mass)
+            call node_term(j)
+         end do
+      end if
+      if (present(reduce)) then
+         if (reduce) call rs_reduce(rs)
+      end if
+      e0 = 0.5_wp*rs_value(rs, 1)
+   contains
+      subroutine node_term(nd)
+         integer, intent(in) :: nd
+         call rs_add(rs, 1, model%mass(nd)*dot_product(model%v(:, nd), model%v(:, nd)))
+         if (allocated(model%w) .and. allocated(model%rinert)) &
+            call rs_add(rs, 1, model%rinert(nd)*dot_product(model%w(:, nd), model%w(:, nd)))
+      end subroutine node_term
+   end function exact_initial_ke
 end module dx_energy_exact

@@ -36,10 +36,10 @@ module dx_par_engine
                           par_gather_values_root
    use dx_sort, only: sort_index
    use dx_par_model, only: par_model_t, par_fill_slots, par_exchange_forces, par_exchange_mass
-   use dx_energy_sums, only: initial_kinetic, constraint_terms, rot_node_term, &
-                             rotation_initial, part_added_mass
-   use dx_energy_exact, only: energy_terms, energy_values, corner_counts, held_status
-   use dx_repro_sum, only: rsum_t, rs_reduce
+   use dx_energy_sums, only: constraint_terms, rot_node_term, part_added_mass
+   use dx_energy_exact, only: energy_terms, energy_values, corner_counts, held_status, &
+                              exact_mass, exact_initial_ke, work_nsums, work_hit, work_values
+   use dx_repro_sum, only: rsum_t, rs_reduce, rs_init, rs_add
    use dx_constraints, only: apply_rigidwalls, wall_hits_t
    use dx_par_contact, only: par_contact_t, par_contact_report
    use dx_par_plot, only: par_plot_t, par_plot_write, par_plot_finish
@@ -86,8 +86,8 @@ module dx_par_engine
       type(wall_hits_t) :: hits
       logical :: have_bc = .false.               !< a constrained or wall node anywhere
       real(wp) :: key_mult = 1.0_wp              !< serial positions per (cycle, wall)
-      real(wp), allocatable :: rec(:, :)         !< (NREC_W, nrec) kept records
-      integer :: nrec = 0
+      type(rsum_t) :: wbuf                       !< (work_nsums, NBUF_MAX) kept cycle sums
+      real(wp), allocatable :: rec(:, :)         !< (set-up allocates it; no longer used)
       integer, allocatable :: elem_loc(:, :)     !< (2, nel) piece and position
       type(gather_plan_t) :: plan_own, plan_elem
       integer :: nbuf = 0
@@ -157,7 +157,8 @@ contains
          eng%g%w = 0.0_wp
          eng%gwold = 0.0_wp
       end if
-      model%energy%mass = sum(eng%g%mass)
+      ! the total: an exact sum over the owned nodes and the ranks (dx_energy_exact)
+      model%energy%mass = exact_mass(model, eng%own, .true.)
       if (allocated(eng%g%rigid)) model%energy%mass = model%energy%mass + eng%g%rigid%mass_corr
       eng%g%energy%mass = model%energy%mass
    end subroutine par_engine_mass
@@ -219,40 +220,12 @@ contains
       model%energy%added_mass = tot(1)
    end subroutine par_engine_remass
 
-   !> The initial kinetic energy of the global model.
+   !> The initial kinetic energy 1/2 sum m v.v (+ 1/2 I w.w): the owned nodes' terms, an
+   !> exact sum over the ranks (dx_energy_exact; nothing gathered), the serial run's bits.
    subroutine par_engine_initial(eng, model)
       type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(inout) :: model
-      integer, allocatable :: keys(:)
-      real(wp), allocatable :: gv(:, :)
-      real(wp) :: e0(1)
-      if (eng%root_only) then     ! rank 0 sums, the others receive the sum
-         allocate(gv(3, size(eng%plan_own%keys)))
-         call par_gather_values_root(eng%plan_own, model%v(:, eng%own), gv)
-         e0 = 0.0_wp
-         if (par_rank() == 0) then
-            eng%g%v(:, eng%plan_own%keys) = gv
-            e0(1) = initial_kinetic(eng%g%mass, eng%g%v)
-         end if
-         if (allocated(model%w)) then    ! shells: + 1/2 I w.w, as the serial start
-            call par_gather_values_root(eng%plan_own, model%w(:, eng%own), gv)
-            if (par_rank() == 0) then
-               eng%g%w(:, eng%plan_own%keys) = gv
-               e0(1) = e0(1) + rotation_initial(eng%g%rinert, eng%g%w)
-            end if
-         end if
-         call par_bcast_real(e0, 0)
-         model%energy%initial = e0(1)
-         return
-      end if
-      call par_gather_ordered(eng%pm%node_global(eng%own), model%v(:, eng%own), keys, gv)
-      eng%g%v(:, keys) = gv
-      model%energy%initial = initial_kinetic(eng%g%mass, eng%g%v)
-      if (allocated(model%w)) then
-         call par_gather_ordered(eng%pm%node_global(eng%own), model%w(:, eng%own), keys, gv)
-         eng%g%w(:, keys) = gv
-         model%energy%initial = model%energy%initial + rotation_initial(eng%g%rinert, eng%g%w)
-      end if
+      model%energy%initial = exact_initial_ke(model, eng%own, .true.)
    end subroutine par_engine_initial
 
    !> Before the element pass: shared nodes' x and v into their slot nodes.
@@ -448,17 +421,14 @@ contains
    !> Rigid walls and the work of constraint and wall forces. Each rank corrects its own
    !> wall nodes (the correction of a node depends on that node alone, and every holder of
    !> a shared node has the same x, v and mass) with the serial apply_rigidwalls, which also
-   !> gives each corrected node's work term; constraint_terms gives each constrained node's.
-   !> Both are the serial code on the serial numbers, so the terms of the nodes this rank
-   !> owns are the serial terms bit for bit. The sums are order-dependent: the owned terms
-   !> are kept (a constraint term of exactly +-0 is skipped: adding it to a sum that
-   !> started at +0 changes no bit; every wall hit is kept) for up to NBUF_MAX cycles and,
-   !> when a sum is needed (or the buffer is full), gathered on every rank and added in the
-   !> serial order (cycle, then node for wcon; cycle, wall, node for wrw). Only nodes the
-   !> constraints or walls act on travel: nothing per node and cycle otherwise.
-   !> wold (decks with rotations): the constraint moments' terms of the owned nodes whose
-   !> rotation a constraint set (rot_node_term) are kept as wall -1, so they come first in
-   !> their cycle and in node order, as the serial rotation_work adds them.
+   !> gives each corrected node's work term; constraint_terms gives each constrained node's,
+   !> rot_node_term each shell node's constraint moment term. Both are the serial code on
+   !> the serial numbers, so the terms of the nodes this rank owns are the serial terms bit
+   !> for bit. They go into this cycle's exact sums (dx_energy_exact work_hit: constraint
+   !> work, wall work, each wall's resultant force), kept for up to NBUF_MAX cycles; when a
+   !> sum is needed (or the buffer is full) one int64 allreduce sums the kept cycles over the
+   !> ranks and each cycle's sum is added to wcon, wrw in cycle order, as the serial run
+   !> adds its cycle sums (s_constraints): no term travels, nothing per node and cycle.
    subroutine par_engine_constraints(eng, model, vfree, vold, dt, dtavg, wcon, wrw, needed, &
                                      wold)
       type(par_engine_t), intent(inout) :: eng
@@ -467,25 +437,24 @@ contains
       real(wp), intent(inout) :: wcon, wrw
       logical, intent(in) :: needed
       real(wp), intent(in), optional :: wold(:, :)
-      integer :: i, w, k, nd
+      integer :: i, w, k, nd, c0, ns
       real(wp) :: term
       if (.not. eng%have_bc) return     ! no constrained or wall node anywhere
+      ns = work_nsums(wall_count(eng))
+      if (eng%nbuf == 0) call rs_init(eng%wbuf, NBUF_MAX*ns)
       eng%nbuf = eng%nbuf + 1
+      c0 = (eng%nbuf - 1)*ns
       if (present(wold)) then
          do i = 1, size(eng%own)
             nd = eng%own(i)
             if (rot_node_term(model%rinert(nd), model%mom(:, nd), wold(:, nd), model%w(:, nd), &
-                              term)) &
-               call push([real(eng%nbuf, wp), -1.0_wp, real(eng%pm%node_global(nd), wp), term, &
-                          0.0_wp, 0.0_wp, 0.0_wp])
+                              term)) call rs_add(eng%wbuf, c0 + 1, term)
          end do
       end if
       if (size(eng%lcn) > 0) then
          call constraint_terms(eng%lcn, model%mass, vfree, vold, model%v, dtavg, eng%lc_term)
          do i = 1, size(eng%lcn)
-            if (eng%lc_key(i) > 0 .and. .not. (eng%lc_term(i) == 0.0_wp)) &
-               call push([real(eng%nbuf, wp), 0.0_wp, real(eng%lc_key(i), wp), eng%lc_term(i), &
-                          0.0_wp, 0.0_wp, 0.0_wp])
+            if (eng%lc_key(i) > 0) call rs_add(eng%wbuf, c0 + 1, eng%lc_term(i))  ! owned
          end do
       end if
       if (allocated(model%walls)) then
@@ -494,24 +463,18 @@ contains
             w = eng%hits%wall(i)
             k = eng%hits%k(i)
             if (eng%owned(model%walls(w)%nodes(k))) &
-               call push([real(eng%nbuf, wp), real(w, wp), real(eng%wall_kg(w)%p(k), wp), &
-                          eng%hits%val(:, i)])
+               call work_hit(eng%wbuf, c0, w, eng%hits%val(1:4, i))
          end do
       end if
       if (needed .or. eng%nbuf == NBUF_MAX) call flush_work(eng, wcon, wrw)
-   contains
-      subroutine push(r)
-         real(wp), intent(in) :: r(NREC_W)
-         real(wp), allocatable :: t(:, :)
-         if (eng%nrec == size(eng%rec, 2)) then
-            allocate(t(NREC_W, 2*eng%nrec))
-            t(:, 1:eng%nrec) = eng%rec(:, 1:eng%nrec)
-            call move_alloc(t, eng%rec)
-         end if
-         eng%nrec = eng%nrec + 1
-         eng%rec(:, eng%nrec) = r
-      end subroutine push
    end subroutine par_engine_constraints
+
+   !> The deck's number of rigid walls (the same on every rank).
+   integer function wall_count(eng)
+      type(par_engine_t), intent(in) :: eng
+      wall_count = 0
+      if (allocated(eng%g%walls)) wall_count = size(eng%g%walls)
+   end function wall_count
 
    !> Before a restart dump: the kept cycles' work terms into wcon, wrw (the same additions
    !> in the same order as a later flush would make), so the dump holds the sums to date.
@@ -533,47 +496,28 @@ contains
       hash = eng%deck_hash
    end subroutine par_engine_maps
 
-   !> Gather the kept records on every rank and add their terms in the serial order; the
-   !> walls' resultant forces become those of the last kept cycle (the serial
-   !> add_wall_hits: zero, minus the hits' m dv/dtavg in wall order).
+   !> The kept cycles' sums over the ranks (one int64 allreduce) into wcon, wrw in cycle
+   !> order; the walls' resultant forces become those of the last kept cycle.
    subroutine flush_work(eng, wcon, wrw)
       type(par_engine_t), intent(inout) :: eng
       real(wp), intent(inout) :: wcon, wrw
-      real(wp), allocatable :: rb(:), sk(:)
-      integer, allocatable :: cnt(:), idx(:)
-      integer :: i, j, n, nw, w
+      type(rsum_t) :: kept
+      real(wp), allocatable :: fw(:, :)
+      integer :: c, nw, ns, w
       real(wp) :: t0
       t0 = par_wtime()
-      nw = 0
-      if (allocated(eng%g%walls)) nw = size(eng%g%walls)
-      call par_allgather_probe(reshape(eng%rec(:, 1:eng%nrec), [NREC_W*eng%nrec]), rb, cnt)
-      n = size(rb)/NREC_W
-      allocate(sk(n))
-      do i = 1, n    ! (cycle, wall, position), wall 0 = the constraints, -1 the rotations
-         j = NREC_W*(i - 1)
-         sk(i) = ((rb(j + 1) - 1.0_wp)*real(nw + 2, wp) + rb(j + 2) + 1.0_wp)*eng%key_mult + &
-                 rb(j + 3)
+      nw = wall_count(eng)
+      ns = work_nsums(nw)
+      kept%a = eng%wbuf%a(:, 1:eng%nbuf*ns)
+      call rs_reduce(kept)
+      allocate(fw(3, nw))
+      do c = 1, eng%nbuf
+         call work_values(kept, (c - 1)*ns, nw, wcon, wrw, fw)
       end do
-      idx = [(i, i = 1, n)]
-      call sort_index(idx, sk)
-      if (nw > 0) then
-         do w = 1, nw
-            eng%g%walls(w)%force = 0.0_wp
-         end do
-      end if
-      do i = 1, n
-         j = NREC_W*(idx(i) - 1)
-         w = nint(rb(j + 2))
-         if (w <= 0) then
-            wcon = wcon + rb(j + 4)
-         else
-            wrw = wrw + rb(j + 4)
-            if (nint(rb(j + 1)) == eng%nbuf) &
-               eng%g%walls(w)%force = eng%g%walls(w)%force - rb(j + 5:j + 7)
-         end if
+      do w = 1, nw
+         eng%g%walls(w)%force = fw(:, w)
       end do
       eng%nbuf = 0
-      eng%nrec = 0
       eng%t_gath = eng%t_gath + (par_wtime() - t0)
    end subroutine flush_work
 
