@@ -24,7 +24,7 @@ module dx_domain
    use dx_loads, only: has_external_loads
    use dx_constraints, only: apply_rigidwalls, wall_hits_t
    use dx_contact, only: contact_forces, contact_work
-   use dx_rigid_solver, only: rigid_step
+   use dx_rigid_exact, only: rigid_map_t, rigid_map_serial, rigid_exact_step
    use dx_element, only: element_mass_share
    use dx_mass_scaling, only: lump_mass, ms_added_total
    use dx_restart, only: restart_write
@@ -33,7 +33,7 @@ module dx_domain
                              interface_work, rot_node_term, part_added_mass
    use dx_energy_exact, only: energy_terms, energy_values, corner_counts, held_status, &
                               work_nsums, work_hit, work_values
-   use dx_repro_sum, only: rsum_t, rs_init, rs_add
+   use dx_repro_sum, only: rsum_t, rs_init, rs_add, rs_value
    use dx_par_emc, only: par_emc_t, par_emc_together
    implicit none
    private
@@ -256,6 +256,7 @@ module dx_domain
       real(wp), allocatable :: cterms(:)        !< constraint work terms (work space)
       type(wall_hits_t) :: hits                 !< this cycle's rigid-wall hits
       type(rsum_t) :: wrs                       !< the cycle's work sums (s_constraints)
+      type(rigid_map_t) :: rmap                 !< rigid bodies' nodes (dx_rigid_exact)
    contains
       procedure :: sum_mass => s_model_nothing
       procedure :: mass_share => s_mass_share
@@ -383,7 +384,8 @@ contains
       class(serial_domain_t), intent(inout) :: d
       type(model_t), intent(inout), target :: model
       real(wp), intent(in) :: t, dt, dtavg, vold(:, :)
-      call rigid_step(model%rigid, model, t, dt, dtavg, vold)
+      call rigid_map_serial(d%rmap, model%rigid)     ! (once)
+      call rigid_exact_step(d%rmap, model, t, dt, dtavg, vold)   ! exact sums, as MPI's
    end subroutine s_rigid_step
 
    !> Work of the constraint reactions; rigid walls and their work.
@@ -427,16 +429,21 @@ contains
       end do
    end subroutine s_constraints
 
-   !> W_ext += f_ext(n).dtavg (v(n-1/2) + v(n+1/2))/2, node by node.
+   !> W_ext += f_ext(n).dtavg (v(n-1/2) + v(n+1/2))/2: the cycle's terms, an exact sum.
    subroutine s_load_work(d, fext, vold, v, dtavg, wext, need)
       class(serial_domain_t), intent(inout) :: d
       real(wp), intent(in) :: fext(:, :), vold(:, :), v(:, :), dtavg
       real(wp), intent(inout) :: wext
       logical, intent(in) :: need
+      real(wp) :: term
       integer :: i
+      ! the cycle's terms summed exactly, added once (as an MPI run: dx_par_loads)
+      call rs_init(d%wrs, 1)
       do i = 1, size(fext, 2)
-         wext = wext + dot_product(fext(:, i), 0.5_wp*dtavg*(vold(:, i) + v(:, i)))
+         term = dot_product(fext(:, i), 0.5_wp*dtavg*(vold(:, i) + v(:, i)))
+         if (term /= 0.0_wp) call rs_add(d%wrs, 1, term)
       end do
+      wext = wext + rs_value(d%wrs, 1)
    end subroutine s_load_work
 
    subroutine s_contact_work(d, model, vold, dtavg, outdir, error)
@@ -466,7 +473,13 @@ contains
             call corner_counts(model, alive, all)
             held = held_status(alive, all)
          end if
-         call energy_terms(model, vold, size(model%mass), [integer ::], rs, wold=wold, held=held)
+         if (allocated(model%rigid)) then
+            call energy_terms(model, vold, size(model%mass), [integer ::], rs, wold=wold, &
+                              held=held, racc=d%rmap%racc)
+         else
+            call energy_terms(model, vold, size(model%mass), [integer ::], rs, wold=wold, &
+                              held=held)
+         end if
          call energy_values(model, rs, dfac, wsum, erw, model)
          return
       end if

@@ -21,7 +21,7 @@
 module dx_energy_exact
    use dx_kinds, only: wp
    use dx_model, only: model_t, ES_WORK, WORK_PN, WORK_QBV, family_t, element_family
-   use dx_repro_sum, only: rsum_t, rs_init, rs_add, rs_value, rs_count, rs_reduce
+   use dx_repro_sum, only: rsum_t, rs_init, rs_add, rs_value, rs_count, rs_reduce, rs_add_sum
    use dx_energy_sums, only: set_energy
    implicit none
    private
@@ -81,8 +81,10 @@ contains
    !> This rank's terms of the event into rs (allocated here, energy_nsums sums). nodes: the
    !> nodes whose nodal terms are added here (absent: every node, a serial run); an element
    !> corner k > nreal is slot k - nreal of local node slot(k - nreal) (MPI sub-model; a
-   !> serial run passes nreal = nn). wold: shells' w(n-1/2); held (erosion): held_status.
-   subroutine energy_terms(model, vold, nreal, slot, rs, nodes, wold, held)
+   !> serial run passes nreal = nn). wold: shells' w(n-1/2); held (erosion): held_status;
+   !> racc (rigid bodies): the cycle's rigid nodal terms (dx_rigid_exact), which the
+   !> bodies' own replace.
+   subroutine energy_terms(model, vold, nreal, slot, rs, nodes, wold, held, racc)
       type(model_t), intent(in) :: model
       real(wp), intent(in) :: vold(:, :)
       integer, intent(in) :: nreal, slot(:)
@@ -90,8 +92,15 @@ contains
       integer, intent(in), optional :: nodes(:)
       real(wp), intent(in), optional :: wold(:, :)
       integer(1), intent(in), optional :: held(:)
+      type(rsum_t), intent(in), optional :: racc
       integer :: j
       call rs_init(rs, energy_nsums(model))
+      if (present(racc)) then
+         call rs_add_sum(rs, S_KE, racc, 1)
+         do j = 1, 3
+            call rs_add_sum(rs, S_MOM + j - 1, racc, 1 + j)
+         end do
+      end if
       if (present(nodes)) then
          do j = 1, size(nodes)
             call node_terms(nodes(j))
@@ -190,13 +199,16 @@ contains
       type(rsum_t), intent(in) :: rs
       real(wp), intent(in) :: dfac, wext, erw
       type(model_t), intent(inout), optional :: psm
-      real(wp) :: ke, eint
+      real(wp) :: ke, eint, mom(3)
       integer :: p, p0, d
       ke = 0.5_wp*rs_value(rs, S_KE)
-      if (allocated(model%rigid)) ke = ke + model%rigid%ke_corr   ! bodies' KE (dx_rigid)
+      mom = [(rs_value(rs, S_MOM + d - 1), d = 1, 3)]
+      if (allocated(model%rigid)) then    ! the bodies' own (their nodes' are out: racc)
+         ke = ke + model%rigid%ke_body
+         mom = mom + model%rigid%p_body
+      end if
       eint = rs_value(rs, S_IE) + dfac*rs_value(rs, S_PEND)
-      call set_energy(model, ke, eint, rs_value(rs, S_HG), wext, erw, &
-                      [(rs_value(rs, S_MOM + d - 1), d = 1, 3)])
+      call set_energy(model, ke, eint, rs_value(rs, S_HG), wext, erw, mom)
       if (model%erodes) then
          model%energy%eroded_ie = rs_value(rs, S_EIE)
          model%energy%eroded_ke = 0.5_wp*rs_value(rs, S_EKE)

@@ -426,7 +426,7 @@ contains
    end function rotation_initial
 
    !> Store the energies and momentum of the current step in model%energy (mom: the exact
-   !> momentum sum of energy_values; else summed here in node order).
+   !> momentum of energy_values, rigid bodies included; else summed here in node order).
    subroutine set_energy(model, ke, eint, ehg, wext, erw, mom)
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: ke, eint, ehg, wext, erw
@@ -445,13 +445,13 @@ contains
       else
          model%energy%ratio = 1.0_wp
       end if
-      if (present(mom)) then
+      if (present(mom)) then     ! (the bodies' momentum included)
          model%energy%momentum = mom
-      else
-         do d = 1, 3
-            model%energy%momentum(d) = sum(model%mass*model%v(d, :))
-         end do
+         return
       end if
+      do d = 1, 3
+         model%energy%momentum(d) = sum(model%mass*model%v(d, :))
+      end do
       if (allocated(model%rigid)) model%energy%momentum = model%energy%momentum + &
                                                          model%rigid%p_corr
    end subroutine set_energy

@@ -37,7 +37,7 @@ module dx_repro_sum
    implicit none
    private
    public :: rsum_t, rs_init, rs_clear, rs_add, rs_merge, rs_normalize, rs_value, rs_reduce, &
-             rs_count, RS_W
+             rs_count, rs_add_sum, RS_W
 
    integer, parameter :: RS_NL = 68                  !< limbs 0..67 of 32 bits
    integer, parameter :: RS_CNT = RS_NL, RS_NAN = RS_NL + 1, RS_PINF = RS_NL + 2, &
@@ -78,12 +78,36 @@ contains
       if (allocated(s%a)) rs_count = size(s%a, 2)
    end function rs_count
 
-   !> Sum k += x, exactly (no rounding; the order of deposits does not matter).
+   !> Sum k += x, exactly (no rounding; the order of deposits does not matter). The deposit
+   !> of deposit(), written out on s%a(:, k) (the hot loop of every sum).
    subroutine rs_add(s, k, x)
       type(rsum_t), intent(inout) :: s
       integer, intent(in) :: k
       real(wp), intent(in) :: x
-      call deposit(s%a(:, k), x)
+      integer(int64) :: b, m, r, t0, t1, t2, sg
+      integer :: e, i, sh
+      b = transfer(x, 0_int64)
+      e = int(iand(shiftr(b, 52), 2047_int64))
+      if (e == 0 .or. e == 2047) then         ! zero, subnormal, NaN, Inf: the general path
+         call deposit(s%a(:, k), x)
+         return
+      end if
+      m = ior(iand(b, MASK52), HIDDEN)
+      i = shiftr(e - 1, 5)
+      sh = iand(e - 1, 31)
+      t0 = shiftl(iand(m, shiftl(1_int64, 32 - sh) - 1_int64), sh)
+      r = shiftr(m, 32 - sh)
+      t1 = iand(r, MASK32)
+      t2 = shiftr(r, 32)
+      sg = shifta(b, 63)                      ! 0 or -1: negate without a branch
+      t0 = ieor(t0, sg) - sg
+      t1 = ieor(t1, sg) - sg
+      t2 = ieor(t2, sg) - sg
+      s%a(i, k) = s%a(i, k) + t0
+      s%a(i + 1, k) = s%a(i + 1, k) + t1
+      s%a(i + 2, k) = s%a(i + 2, k) + t2
+      s%a(RS_CNT, k) = s%a(RS_CNT, k) + 1
+      if (s%a(RS_CNT, k) >= MAXCNT) call normalize(s%a(:, k))
    end subroutine rs_add
 
    !> One double into the limbs a(0:RS_W-1): significand m (53 bits with the hidden bit) at
@@ -171,6 +195,19 @@ contains
          call normalize(s%a(:, k))
       end do
    end subroutine rs_merge
+
+   !> Sum k of s += sum j of t, exactly.
+   subroutine rs_add_sum(s, k, t, j)
+      type(rsum_t), intent(inout) :: s
+      integer, intent(in) :: k, j
+      type(rsum_t), intent(in) :: t
+      integer(int64) :: b(0:RS_W - 1)
+      b = t%a(:, j)
+      call normalize(b)
+      call normalize(s%a(:, k))
+      s%a(:, k) = s%a(:, k) + b
+      call normalize(s%a(:, k))
+   end subroutine rs_add_sum
 
    !> Over the ranks (collective; one MPI_Allreduce of int64 for all the sums of s): every
    !> rank gets the exact sums, normalised (the same bits for any NP). No-op on one rank
