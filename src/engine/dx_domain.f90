@@ -26,13 +26,13 @@ module dx_domain
    use dx_contact, only: contact_forces, contact_work
    use dx_rigid_exact, only: rigid_map_t, rigid_map_serial, rigid_exact_step
    use dx_element, only: element_mass_share
-   use dx_mass_scaling, only: lump_mass, ms_added_total
+   use dx_mass_scaling, only: lump_mass
    use dx_restart, only: restart_write
    use dx_par_restart, only: serial_restart_read
    use dx_energy_sums, only: constraint_terms, element_energies, set_energy, part_mass_map, &
-                             interface_work, rot_node_term, part_added_mass
+                             interface_work, rot_node_term
    use dx_energy_exact, only: energy_terms, energy_values, corner_counts, held_status, &
-                              work_nsums, work_hit, work_values
+                              work_nsums, work_hit, work_values, added_mass_sums
    use dx_repro_sum, only: rsum_t, rs_init, rs_add, rs_value
    use dx_par_emc, only: par_emc_t, par_emc_together
    implicit none
@@ -306,8 +306,8 @@ contains
       logical, intent(inout) :: changed
       if (.not. changed) return
       call lump_mass(model)
-      model%energy%added_mass = ms_added_total(model)
-      call part_added_mass(model, model%added_mass)   ! matsum's +mass and shares
+      ! the added total and matsum's +mass per part: exact sums (as an MPI run's)
+      call added_mass_sums(model, .false., model)
    end subroutine s_remass
 
    !> One-element-wide blocks get the element dt bound (element_mass_share).

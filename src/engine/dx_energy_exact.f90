@@ -26,7 +26,7 @@ module dx_energy_exact
    implicit none
    private
    public :: energy_nsums, energy_terms, energy_values, corner_counts, held_status, &
-             exact_mass, exact_initial_ke, work_nsums, work_hit, work_values
+             exact_mass, exact_initial_ke, work_nsums, work_hit, work_values, added_mass_sums
 
    !> The sums of an event: kinetic (halved at the end), internal, hourglass, pending
    !> element work, momentum x y z, eroded internal and kinetic; then PS_N per part.
@@ -273,6 +273,38 @@ contains
          end do
       end do
    end subroutine work_values
+
+   !> Mass scaling (DT2MS): the added mass of the model and of each part, exact sums of the
+   !> elements' added masses (model%added_mass by dense element) over the blocks (a rank:
+   !> its elements; reduce = .true. sums over the ranks, collective), into
+   !> model%energy%added_mass and, where allocated, psm%psum%added (matsum's +mass).
+   subroutine added_mass_sums(model, reduce, psm)
+      type(model_t), intent(inout) :: model
+      logical, intent(in) :: reduce
+      type(model_t), intent(inout), optional :: psm
+      type(rsum_t) :: rs
+      integer :: b, i, p, np
+      np = 0
+      if (allocated(model%parts)) np = size(model%parts)
+      call rs_init(rs, 1 + np)
+      if (allocated(model%added_mass)) then
+         do b = 1, size(model%blocks)
+            associate (blk => model%blocks(b))
+               do i = 1, blk%nel
+                  call rs_add(rs, 1, model%added_mass(blk%elem(i)))
+                  call rs_add(rs, 1 + blk%ipart, model%added_mass(blk%elem(i)))
+               end do
+            end associate
+         end do
+      end if
+      if (reduce) call rs_reduce(rs)
+      model%energy%added_mass = rs_value(rs, 1)
+      if (.not. present(psm)) return
+      if (.not. allocated(psm%psum%added)) return
+      do p = 1, min(np, size(psm%psum%added))
+         psm%psum%added(p) = rs_value(rs, 1 + p)
+      end do
+   end subroutine added_mass_sums
 
    !> The total nodal mass, an exact sum over the nodes (absent: every node; MPI: the
    !> owned nodes, and reduce = .true. sums over the ranks: collective).

@@ -1,9 +1,10 @@
 !> The global sums of the explicit loop (kinetic energy, element energies, constraint work,
-!> momentum, energy ratio), each in one procedure. The serial loop calls them on its model;
-!> the MPI engine (src/parallel/dx_par_engine.f90) gathers the terms into the global model
-!> and calls the very same procedures, so both add the same numbers in the same order with
-!> the same machine code (no reassociation, no different FMA contraction): the parallel
-!> glstat is the serial one bit for bit (docs/history.md, "Fixed-order sums").
+!> momentum, energy ratio), each in one procedure. The energies that are reported (glstat,
+!> matsum, ENDENG, the end) are exact sums formed by dx_energy_exact on dx_repro_sum, the
+!> same in a serial run and on every rank of an MPI run (docs/history.md, "Reproducible
+!> sums"); the plain fixed-order sums here serve the serial loop's cycles between them
+!> (the energy guard, the status line), the terms (constraint_terms, rot_node_term) both,
+!> and the per-part map (part_mass_map: matsum's part masses).
 !> Energy balance: Hallquist, DYNA3D User's Manual (UCRL-MA-107254), and Belytschko, Liu &
 !> Moran 2000, section 6.2.3 (time-centred kinetic energy, work of constraint reactions).
 !> Per-part sums (*DATABASE_MATSUM; LS-DYNA Keyword User's Manual Vol. I, *DATABASE_MATSUM:
@@ -13,8 +14,7 @@
 !> elements put there (rho V0 times the family's nodal share, the very terms the lumped mass
 !> is the sum of), so its kinetic energy 1/2 m v.v and momentum m v are split in proportion
 !> to mass: the parts' sums add up to glstat's totals to round-off (docs/output-format.md,
-!> "matsum"). They are formed, like glstat's, on one model in one fixed order (the serial
-!> model, or rank 0's gathered global model), so they are bitwise equal for any NP.
+!> "matsum"). The reported part sums are dx_energy_exact's (element by element, exact).
 module dx_energy_sums
    use dx_kinds, only: wp
    use dx_model, only: model_t, elem_block_t, energy_t, ES_WORK, WORK_PN, WORK_QBV, &

@@ -4,12 +4,13 @@
 !> sub-model (dx_par_model: the pieces of the serial element blocks, its nodes, one slot node
 !> per shared element corner, its SPCs and prescribed motions). The loop then makes, per cycle:
 !> one shared-node force exchange in fixed serial order (par_shared_sum), one MINLOC for the
-!> stable step, and - only when the deck has them - one ordered gather of the constrained
-!> and rigid-wall nodes' velocities. Energies, momentum and work terms are not formed from
-!> per-rank partial sums: the terms are gathered (par_gather_ordered) into a global copy of
-!> the model held here, and the serial procedures (dx_energy_sums, apply_rigidwalls) run on
-!> it, so they add the same numbers in the same order with the same code: the parallel run
-!> reproduces the serial one bit for bit (NP = 1..4 regression cases, zero tolerance).
+!> stable step. Energies, momentum, the initial kinetic energy, the total and added mass and
+!> the constraint, rigid-wall and external work are exact sums (dx_repro_sum, the long
+!> accumulator; dx_energy_exact): each rank adds the terms of its owned nodes and of its
+!> elements, formed by the serial code, and one int64 MPI_Allreduce per output event (per
+!> up to NBUF_MAX cycles for the work sums) gives every rank the exact sums rounded once, so
+!> the parallel run reproduces the serial one bit for bit (NP = 1..4 regression cases,
+!> zero tolerance) with nothing gathered for them (docs/history.md, "Reproducible sums").
 !> Output: glstat and nodout are written by rank 0 from the nodal state gathered into the
 !> global model; plot states are written by every rank into its own part file (dx_par_plot,
 !> no gather) and combined by rank 0 at the end into the serial d3plot.h5 + d3plot.xdmf.
@@ -36,9 +37,10 @@ module dx_par_engine
                           par_gather_values_root
    use dx_sort, only: sort_index
    use dx_par_model, only: par_model_t, par_fill_slots, par_exchange_forces, par_exchange_mass
-   use dx_energy_sums, only: constraint_terms, rot_node_term, part_added_mass
+   use dx_energy_sums, only: constraint_terms, rot_node_term
    use dx_energy_exact, only: energy_terms, energy_values, corner_counts, held_status, &
-                              exact_mass, exact_initial_ke, work_nsums, work_hit, work_values
+                              exact_mass, exact_initial_ke, work_nsums, work_hit, work_values, &
+                              added_mass_sums
    use dx_repro_sum, only: rsum_t, rs_reduce, rs_init, rs_add
    use dx_constraints, only: apply_rigidwalls, wall_hits_t
    use dx_par_contact, only: par_contact_t, par_contact_report
@@ -179,14 +181,12 @@ contains
    !> Mass scaling changed an element's mass (every rank, together; dx_mass_scaling): the
    !> rank's lumped masses (lump_mass: a slot holds its corner's share) summed at the shared
    !> nodes in serial order as at the start, the global copy of the masses (rank 0, or every
-   !> rank), and the added total, summed over the elements in serial order on rank 0 and
-   !> sent to all: bit for bit the serial run's.
+   !> rank), and the added totals (model, parts), exact sums over the ranks: bit for bit
+   !> the serial run's.
    subroutine par_engine_remass(eng, model)
       type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(inout) :: model
-      real(wp), allocatable :: vals(:, :), gv(:, :), ga(:)
-      real(wp) :: tot(1)
-      integer :: i, e
+      real(wp), allocatable :: vals(:, :), gv(:, :)
       call par_exchange_mass(eng%pm, model%mass)
       call add_node_terms(eng%pm, model%node_mass, model%mass)
       model%mass(eng%pm%nloc + 1:) = 0.0_wp
@@ -198,26 +198,13 @@ contains
          call par_gather_values(eng%plan_own, vals, gv)
       end if
       if (par_rank() == 0 .or. .not. eng%root_only) eng%g%mass(eng%plan_own%keys) = gv(1, :)
-      deallocate(vals, gv)
-      allocate(vals(1, size(eng%elem_loc, 2)), gv(1, size(eng%plan_elem%keys)))
-      do i = 1, size(eng%elem_loc, 2)
-         associate (pb => model%blocks(eng%elem_loc(1, i)), j => eng%elem_loc(2, i))
-            vals(1, i) = model%added_mass(pb%elem(j))
-         end associate
-      end do
-      call par_gather_values_root(eng%plan_elem, vals, gv)
-      tot = 0.0_wp
-      if (par_rank() == 0) then
-         allocate(ga(model%ne))
-         ga = 0.0_wp
-         ga(eng%plan_elem%keys) = gv(1, :)
-         do e = 1, model%ne
-            tot(1) = tot(1) + ga(e)
-         end do
-         call part_added_mass(eng%g, ga)   ! matsum's +mass and shares (global model)
+      ! the added total and matsum's +mass per part: exact sums of the rank's elements
+      ! over the ranks (dx_energy_exact; nothing gathered), rank 0's global psum
+      if (associated(eng%g)) then
+         call added_mass_sums(model, .true., eng%g)
+      else
+         call added_mass_sums(model, .true.)
       end if
-      call par_bcast_real(tot, 0)
-      model%energy%added_mass = tot(1)
    end subroutine par_engine_remass
 
    !> The initial kinetic energy 1/2 sum m v.v (+ 1/2 I w.w): the owned nodes' terms, an
