@@ -31,6 +31,7 @@ python3 $gen 8 4 54 0.080 $B/taylor_10k.k > /dev/null
 python3 scripts/gen_box_deck.py $B/box.k 50 50 40 100 > /dev/null
 sed 's/^\*END$/*DATABASE_GLSTAT\n1.0E-9\n*END/' $B/box.k > $B/box_glstat.k
 once() {   # binary np deck -> "wall cpu" of one run
+    rm -rf $B/out       # (an MPI run would take another deck's rank files found there)
     if [ "$2" = 1 ]; then
         /usr/bin/time -f "%e %U %S" -o $B/time.txt "$1" -i "$3" -o $B/out > $B/run.log 2>&1
     else
