@@ -103,8 +103,9 @@ bin/dynx-thist: build/release/dynx_thist.o build/release/libdynx.a | bin
 	$(FC) $(REL_FLAGS) -o $@ $^ $(LIBS) $(FFTW_LIBS)
 
 UNIT_TESTS := $(patsubst tests/unit/%.f90,build/debug/tests/%,$(filter tests/unit/test_%,$(TEST_SRC)))
-MPI_TESTS := build/debug/tests/mpi_par_test build/debug/tests/mpi_par_model_test build/debug/tests/mpi_fail_test
-MPI_BENCH := build/release/bench/mpi_shared_bench
+MPI_TESTS := build/debug/tests/mpi_par_test build/debug/tests/mpi_par_model_test build/debug/tests/mpi_fail_test \
+             build/debug/tests/mpi_repro_test
+MPI_BENCH := build/release/bench/mpi_shared_bench build/release/bench/repro_sum_bench
 build/release/bench/%: build/release/%.o build/release/libdynx.a
 	@mkdir -p build/release/bench
 	$(FC) $(REL_FLAGS) -o $@ $^ $(LIBS)
@@ -177,6 +178,7 @@ bench: deps
 	@sh scripts/bench.sh
 	@sh scripts/bench_compare.sh
 	@sh scripts/bench_shared_sum.sh
+	@sh scripts/bench_repro_sum.sh
 	@sh scripts/bench_contact.sh
 	@python3 scripts/bench_scaling.py   # MPI: speed-up, memory per rank, weak scaling, ulimit (BIG= skips 1e6)
 	@sh scripts/bench_par_contact.sh

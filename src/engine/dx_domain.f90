@@ -22,16 +22,18 @@ module dx_domain
    use dx_par, only: par_rank, par_size
    use dx_contact2d, only: contact2d_forces
    use dx_loads, only: has_external_loads
-   use dx_constraints, only: apply_rigidwalls, add_wall_hits, wall_hits_t
+   use dx_constraints, only: apply_rigidwalls, wall_hits_t
    use dx_contact, only: contact_forces, contact_work
-   use dx_rigid_solver, only: rigid_step
+   use dx_rigid_exact, only: rigid_map_t, rigid_map_serial, rigid_exact_step
    use dx_element, only: element_mass_share
-   use dx_mass_scaling, only: lump_mass, ms_added_total
+   use dx_mass_scaling, only: lump_mass
    use dx_restart, only: restart_write
    use dx_par_restart, only: serial_restart_read
-   use dx_energy_sums, only: constraint_work, element_energies, set_energy, part_mass_map, &
-                             part_energies, interface_work, eroded_energies, rotation_work, &
-                             part_added_mass
+   use dx_energy_sums, only: constraint_terms, element_energies, set_energy, part_mass_map, &
+                             interface_work, rot_node_term
+   use dx_energy_exact, only: energy_terms, energy_values, corner_counts, held_status, &
+                              work_nsums, work_hit, work_values, added_mass_sums
+   use dx_repro_sum, only: rsum_t, rs_init, rs_add, rs_value
    use dx_par_emc, only: par_emc_t, par_emc_together
    implicit none
    private
@@ -253,6 +255,8 @@ module dx_domain
    type, extends(domain_t) :: serial_domain_t
       real(wp), allocatable :: cterms(:)        !< constraint work terms (work space)
       type(wall_hits_t) :: hits                 !< this cycle's rigid-wall hits
+      type(rsum_t) :: wrs                       !< the cycle's work sums (s_constraints)
+      type(rigid_map_t) :: rmap                 !< rigid bodies' nodes (dx_rigid_exact)
    contains
       procedure :: sum_mass => s_model_nothing
       procedure :: mass_share => s_mass_share
@@ -302,8 +306,8 @@ contains
       logical, intent(inout) :: changed
       if (.not. changed) return
       call lump_mass(model)
-      model%energy%added_mass = ms_added_total(model)
-      call part_added_mass(model, model%added_mass)   ! matsum's +mass and shares
+      ! the added total and matsum's +mass per part: exact sums (as an MPI run's)
+      call added_mass_sums(model, .false., model)
    end subroutine s_remass
 
    !> One-element-wide blocks get the element dt bound (element_mass_share).
@@ -380,7 +384,8 @@ contains
       class(serial_domain_t), intent(inout) :: d
       type(model_t), intent(inout), target :: model
       real(wp), intent(in) :: t, dt, dtavg, vold(:, :)
-      call rigid_step(model%rigid, model, t, dt, dtavg, vold)
+      call rigid_map_serial(d%rmap, model%rigid)     ! (once)
+      call rigid_exact_step(d%rmap, model, t, dt, dtavg, vold)   ! exact sums, as MPI's
    end subroutine s_rigid_step
 
    !> Work of the constraint reactions; rigid walls and their work.
@@ -392,25 +397,53 @@ contains
       real(wp), intent(inout) :: wcon, wrw
       logical, intent(in) :: need
       real(wp), intent(in), optional :: wold(:, :)
-      if (present(wold)) call rotation_work(model, wold, wcon)   ! shells' constraint moments
-      if (.not. allocated(d%cterms)) allocate(d%cterms(size(cnodes)))
-      call constraint_work(cnodes, model%mass, vfree, vold, model%v, dtavg, wcon, d%cterms)
-      if (allocated(model%walls)) then
-         call apply_rigidwalls(model, dt, dtavg, vold, model%v, d%hits)
-         call add_wall_hits(model, d%hits, wrw)
+      real(wp), allocatable :: fw(:, :)
+      real(wp) :: term
+      integer :: i, nw
+      nw = 0
+      if (allocated(model%walls)) nw = size(model%walls)
+      ! this cycle's terms, summed exactly and added to the running sums once (as an MPI
+      ! run adds each cycle's sum over the ranks: dx_energy_exact work_values)
+      call rs_init(d%wrs, work_nsums(nw))
+      if (present(wold)) then      ! shells' constraint moments
+         do i = 1, model%nn
+            if (rot_node_term(model%rinert(i), model%mom(:, i), wold(:, i), model%w(:, i), &
+                              term)) call rs_add(d%wrs, 1, term)
+         end do
       end if
+      if (.not. allocated(d%cterms)) allocate(d%cterms(size(cnodes)))
+      call constraint_terms(cnodes, model%mass, vfree, vold, model%v, dtavg, d%cterms)
+      do i = 1, size(cnodes)
+         call rs_add(d%wrs, 1, d%cterms(i))
+      end do
+      if (nw > 0) then
+         call apply_rigidwalls(model, dt, dtavg, vold, model%v, d%hits)
+         do i = 1, d%hits%n
+            call work_hit(d%wrs, 0, d%hits%wall(i), d%hits%val(1:4, i))
+         end do
+      end if
+      allocate(fw(3, nw))
+      call work_values(d%wrs, 0, nw, wcon, wrw, fw)
+      do i = 1, nw
+         model%walls(i)%force = fw(:, i)
+      end do
    end subroutine s_constraints
 
-   !> W_ext += f_ext(n).dtavg (v(n-1/2) + v(n+1/2))/2, node by node.
+   !> W_ext += f_ext(n).dtavg (v(n-1/2) + v(n+1/2))/2: the cycle's terms, an exact sum.
    subroutine s_load_work(d, fext, vold, v, dtavg, wext, need)
       class(serial_domain_t), intent(inout) :: d
       real(wp), intent(in) :: fext(:, :), vold(:, :), v(:, :), dtavg
       real(wp), intent(inout) :: wext
       logical, intent(in) :: need
+      real(wp) :: term
       integer :: i
+      ! the cycle's terms summed exactly, added once (as an MPI run: dx_par_loads)
+      call rs_init(d%wrs, 1)
       do i = 1, size(fext, 2)
-         wext = wext + dot_product(fext(:, i), 0.5_wp*dtavg*(vold(:, i) + v(:, i)))
+         term = dot_product(fext(:, i), 0.5_wp*dtavg*(vold(:, i) + v(:, i)))
+         if (term /= 0.0_wp) call rs_add(d%wrs, 1, term)
       end do
+      wext = wext + rs_value(d%wrs, 1)
    end subroutine s_load_work
 
    subroutine s_contact_work(d, model, vold, dtavg, outdir, error)
@@ -432,11 +465,28 @@ contains
       logical, intent(in) :: need
       real(wp), intent(in), optional :: wold(:, :)
       real(wp) :: eint, ehg, epend
+      real(wp), allocatable :: alive(:), all(:)
+      integer(1), allocatable :: held(:)
+      type(rsum_t) :: rs
+      if (need) then     ! the reported sums: exact (dx_energy_exact), as an MPI run's
+         if (model%erodes) then
+            call corner_counts(model, alive, all)
+            held = held_status(alive, all)
+         end if
+         if (allocated(model%rigid)) then
+            call energy_terms(model, vold, size(model%mass), [integer ::], rs, wold=wold, &
+                              held=held, racc=d%rmap%racc)
+         else
+            call energy_terms(model, vold, size(model%mass), [integer ::], rs, wold=wold, &
+                              held=held)
+         end if
+         call energy_values(model, rs, dfac, wsum, erw, model)
+         return
+      end if
+      ! the cycles between (energy guard, status line): plain sums in a fixed order
       call element_energies(model%blocks, eint, ehg, epend)
       eint = eint + dfac*epend   ! the part of W(n) booked next cycle
       call set_energy(model, ke, eint, ehg, wsum, erw)
-      if (need) call part_energies(model, vold, dfac)   ! matsum (when the deck asks)
-      if (model%erodes .and. need) call eroded_energies(model, vold)
    end subroutine s_energies
 
    subroutine s_write_plot(d, model, out, error)

@@ -263,7 +263,12 @@ contains
       real(wp), intent(in) :: ke, vold(:, :), wsum, erw, dfac
       logical, intent(in) :: need
       real(wp), intent(in), optional :: wold(:, :)
-      call par_engine_energies(d%eng, model, vold, wsum, erw, dfac, need, wold)
+      if (allocated(model%rigid)) then     ! the rigid nodes' terms of the cycle too
+         call par_engine_energies(d%eng, model, vold, wsum, erw, dfac, need, wold, &
+                                  d%rigid%map%racc)
+      else
+         call par_engine_energies(d%eng, model, vold, wsum, erw, dfac, need, wold)
+      end if
    end subroutine m_energies
 
    !> Every rank appends its part (no communication).

@@ -1,9 +1,10 @@
 !> The global sums of the explicit loop (kinetic energy, element energies, constraint work,
-!> momentum, energy ratio), each in one procedure. The serial loop calls them on its model;
-!> the MPI engine (src/parallel/dx_par_engine.f90) gathers the terms into the global model
-!> and calls the very same procedures, so both add the same numbers in the same order with
-!> the same machine code (no reassociation, no different FMA contraction): the parallel
-!> glstat is the serial one bit for bit (docs/history.md, "Fixed-order sums").
+!> momentum, energy ratio), each in one procedure. The energies that are reported (glstat,
+!> matsum, ENDENG, the end) are exact sums formed by dx_energy_exact on dx_repro_sum, the
+!> same in a serial run and on every rank of an MPI run (docs/history.md, "Reproducible
+!> sums"); the plain fixed-order sums here serve the serial loop's cycles between them
+!> (the energy guard, the status line), the terms (constraint_terms, rot_node_term) both,
+!> and the per-part map (part_mass_map: matsum's part masses).
 !> Energy balance: Hallquist, DYNA3D User's Manual (UCRL-MA-107254), and Belytschko, Liu &
 !> Moran 2000, section 6.2.3 (time-centred kinetic energy, work of constraint reactions).
 !> Per-part sums (*DATABASE_MATSUM; LS-DYNA Keyword User's Manual Vol. I, *DATABASE_MATSUM:
@@ -13,8 +14,7 @@
 !> elements put there (rho V0 times the family's nodal share, the very terms the lumped mass
 !> is the sum of), so its kinetic energy 1/2 m v.v and momentum m v are split in proportion
 !> to mass: the parts' sums add up to glstat's totals to round-off (docs/output-format.md,
-!> "matsum"). They are formed, like glstat's, on one model in one fixed order (the serial
-!> model, or rank 0's gathered global model), so they are bitwise equal for any NP.
+!> "matsum"). The reported part sums are dx_energy_exact's (element by element, exact).
 module dx_energy_sums
    use dx_kinds, only: wp
    use dx_model, only: model_t, elem_block_t, energy_t, ES_WORK, WORK_PN, WORK_QBV, &
@@ -23,18 +23,11 @@ module dx_energy_sums
    use dx_contact_types, only: contact_set_t, REC_FSL, REC_NB
    implicit none
    private
-   public :: initial_kinetic, kinetic_energy, element_energies, constraint_work, &
-             constraint_terms, set_energy, constrained_nodes, energy_bits, part_mass_map, &
-             part_energies, interface_work, rot_node_term, rotation_work, &
-             rotation_kinetic, rotation_initial, eroded_energies, part_added_mass
+   public :: kinetic_energy, element_energies, constraint_terms, set_energy, &
+             constrained_nodes, energy_bits, part_mass_map, interface_work, rot_node_term, &
+             rotation_kinetic
 
 contains
-
-   !> 1/2 sum m v.v at the start.
-   real(wp) function initial_kinetic(mass, v) result(e)
-      real(wp), intent(in) :: mass(:), v(:, :)
-      e = 0.5_wp*sum(mass*sum(v**2, dim=1))
-   end function initial_kinetic
 
    !> Time-centred kinetic energy 1/2 sum_i m_i v_i(n-1/2).v_i(n+1/2), nodes 1..n in order.
    real(wp) function kinetic_energy(n, mass, vold, v) result(ke)
@@ -142,79 +135,7 @@ contains
          allocate(ps%eie(np), ps%eke(np))
          ps%eie = 0.0_wp; ps%eke = 0.0_wp
       end associate
-      if (model%ctrl%dt2ms /= 0.0_wp) call part_added_map(model)
    end subroutine part_mass_map
-
-   !> Mass scaling (DT2MS /= 0): each part's elements in block order, their rho V0, nodal
-   !> share and their nodes' entries of model%psum, kept so that part_added_mass forms the
-   !> shares again with the added mass (an MPI run's global model frees its element arrays).
-   subroutine part_added_map(model)
-      type(model_t), intent(inout) :: model
-      integer, allocatable :: slot(:)
-      type(family_t) :: fam
-      real(wp) :: rho
-      integer :: np, p, b, i, k, ne, nent, j
-      np = size(model%parts)
-      ne = 0; nent = 0
-      do b = 1, size(model%blocks)
-         fam = element_family(model%blocks(b)%etype)
-         ne = ne + model%blocks(b)%nel
-         nent = nent + model%blocks(b)%nel*fam%nen
-      end do
-      associate (ps => model%psum)
-         allocate(ps%eptr(np + 1), ps%el(ne), ps%em(ne), ps%esh(ne), ps%noff(ne + 1), &
-                  ps%ent(nent), slot(model%nn))
-         ps%eptr(1) = 1; ps%noff(1) = 1
-         j = 0
-         do p = 1, np
-            do k = ps%ptr(p), ps%ptr(p + 1) - 1
-               slot(ps%node(k)) = k
-            end do
-            rho = model%mats(model%parts(p)%imat)%m%ro
-            do b = 1, size(model%blocks)
-               if (model%blocks(b)%ipart /= p) cycle
-               fam = element_family(model%blocks(b)%etype)
-               do i = 1, model%blocks(b)%nel
-                  j = j + 1
-                  ps%el(j) = model%blocks(b)%elem(i)
-                  ps%em(j) = rho*model%blocks(b)%vol0(i)
-                  ps%esh(j) = fam%mass_share
-                  ps%noff(j + 1) = ps%noff(j) + fam%nen
-                  ps%ent(ps%noff(j):ps%noff(j + 1) - 1) = slot(model%blocks(b)%conn(1:fam%nen, i))
-               end do
-            end do
-            ps%eptr(p + 1) = j + 1
-         end do
-      end associate
-   end subroutine part_added_map
-
-   !> Mass scaling changed an element's mass: each part's added mass (its elements' dm in
-   !> block order, matsum's +mass) and its shares of the nodal masses, (rho V0 + dm) times
-   !> the family's share as lump_mass forms the nodal mass, so that the parts' kinetic
-   !> energies and momenta are those of the scaled masses and add up to glstat's (with dm
-   !> = 0 the shares are part_mass_map's bit for bit). dm: the added mass by dense element
-   !> (serial: model%added_mass; MPI: rank 0's gathered copy, the same numbers).
-   subroutine part_added_mass(model, dm)
-      type(model_t), intent(inout) :: model
-      real(wp), intent(in) :: dm(:)
-      real(wp) :: a, me
-      integer :: p, j, k
-      associate (ps => model%psum)
-         if (.not. allocated(ps%el)) return
-         ps%m = 0.0_wp
-         do p = 1, size(ps%added)
-            a = 0.0_wp
-            do j = ps%eptr(p), ps%eptr(p + 1) - 1
-               a = a + dm(ps%el(j))
-               me = ps%em(j) + dm(ps%el(j))
-               do k = ps%noff(j), ps%noff(j + 1) - 1
-                  ps%m(ps%ent(k)) = ps%m(ps%ent(k)) + me*ps%esh(j)
-               end do
-            end do
-            ps%added(p) = a
-         end do
-      end associate
-   end subroutine part_added_mass
 
    !> Each contact interface's work of this cycle's forces on its slave nodes and on its
    !> master nodes (sleout), with the centred weighting of the total contact work
@@ -255,118 +176,9 @@ contains
       end do
    end subroutine interface_work
 
-   !> The per-part sums at t(n) (after part_mass_map): internal energy (with the share dfac
-   !> of the pending work, as glstat's), hourglass energy, time-centred kinetic energy
-   !> 1/2 m v(n-1/2).v(n+1/2) and momentum m v(n+1/2), each node weighted by the part's share
-   !> of its mass. Parts, blocks and nodes in a fixed order.
-   subroutine part_energies(model, vold, dfac)
-      type(model_t), intent(inout) :: model
-      real(wp), intent(in) :: vold(:, :), dfac
-      real(wp) :: ke, mom(3), ie, hg, pend
-      integer :: p, b, k, nd
-      associate (ps => model%psum)
-         if (.not. allocated(ps%ie)) return
-         do p = 1, size(ps%ie)
-            ie = 0.0_wp; hg = 0.0_wp; pend = 0.0_wp
-            do b = 1, size(model%blocks)
-               if (model%blocks(b)%ipart /= p) cycle
-               ie = ie + sum(model%blocks(b)%eint)
-               hg = hg + sum(model%blocks(b)%ehg)
-               if (model%blocks(b)%esc(ES_WORK) > 0) pend = pend + block_pending(model%blocks(b))
-            end do
-            ke = 0.0_wp; mom = 0.0_wp
-            do k = ps%ptr(p), ps%ptr(p + 1) - 1
-               nd = ps%node(k)
-               ke = ke + ps%m(k)*dot_product(vold(:, nd), model%v(:, nd))
-               mom = mom + ps%m(k)*model%v(:, nd)
-            end do
-            ps%ie(p) = ie + dfac*pend
-            ps%hge(p) = hg
-            ps%ke(p) = 0.5_wp*ke
-            ps%mom(:, p) = mom
-         end do
-      end associate
-   end subroutine part_energies
-
-   !> Element erosion (dx_erosion): the internal energy of the eroded elements (their energy
-   !> when they eroded: an eroded element's eint no longer changes) and the time-centred
-   !> kinetic energy 1/2 m v(n-1/2).v(n+1/2) of the nodes that some element holds and no
-   !> living element does (blocks, elements and nodes in order), into model%energy; with
-   !> the per-part sums allocated (matsum), each part's share too (the part's eroded
-   !> elements; its mass share of the free nodes). As in LS-DYNA's glstat both are parts of
-   !> the internal and kinetic energy, reported apart.
-   subroutine eroded_energies(model, vold)
-      type(model_t), intent(inout) :: model
-      real(wp), intent(in) :: vold(:, :)
-      integer(1), allocatable :: held(:)    ! 0 no element, 1 eroded elements only, 2 alive
-      type(family_t) :: fam
-      real(wp) :: eie, eke
-      integer :: b, i, k, nd, p
-      allocate(held(model%nn))
-      held = 0
-      eie = 0.0_wp
-      do b = 1, size(model%blocks)
-         associate (blk => model%blocks(b))
-            fam = element_family(blk%etype)
-            do i = 1, blk%nel
-               if (blk%failed(i)) then
-                  eie = eie + blk%eint(i)
-                  do k = 1, fam%nen
-                     nd = blk%conn(k, i)
-                     if (held(nd) == 0) held(nd) = 1
-                  end do
-               else
-                  do k = 1, fam%nen
-                     held(blk%conn(k, i)) = 2
-                  end do
-               end if
-            end do
-         end associate
-      end do
-      eke = 0.0_wp
-      do nd = 1, model%nn
-         if (held(nd) == 1) eke = eke + model%mass(nd)*dot_product(vold(:, nd), model%v(:, nd))
-      end do
-      model%energy%eroded_ie = eie
-      model%energy%eroded_ke = 0.5_wp*eke
-      associate (ps => model%psum)
-         if (.not. allocated(ps%eie)) return
-         do p = 1, size(ps%eie)
-            eie = 0.0_wp
-            do b = 1, size(model%blocks)
-               if (model%blocks(b)%ipart /= p) cycle
-               do i = 1, model%blocks(b)%nel
-                  if (model%blocks(b)%failed(i)) eie = eie + model%blocks(b)%eint(i)
-               end do
-            end do
-            eke = 0.0_wp
-            do k = ps%ptr(p), ps%ptr(p + 1) - 1
-               nd = ps%node(k)
-               if (held(nd) == 1) eke = eke + ps%m(k)*dot_product(vold(:, nd), model%v(:, nd))
-            end do
-            ps%eie(p) = eie
-            ps%eke(p) = 0.5_wp*eke
-         end do
-      end associate
-   end subroutine eroded_energies
-
-   !> Work of the constraint reactions over one step, added to wcon node by node (cnodes in
-   !> ascending order; vfree(:, i) is node cnodes(i)'s velocity before the constraints).
-   subroutine constraint_work(cnodes, mass, vfree, vold, v, dtavg, wcon, terms)
-      integer, intent(in) :: cnodes(:)
-      real(wp), intent(in) :: mass(:), vfree(:, :), vold(:, :), v(:, :), dtavg
-      real(wp), intent(inout) :: wcon
-      real(wp), intent(inout) :: terms(:)    !< work space, size(cnodes) at least
-      integer :: i
-      call constraint_terms(cnodes, mass, vfree, vold, v, dtavg, terms)
-      do i = 1, size(cnodes)
-         wcon = wcon + terms(i)
-      end do
-   end subroutine constraint_work
-
    !> The term of each constrained node in the constraint work, m (v(n+1/2) - vfree).du/dtavg
-   !> with du = dtavg (v(n-1/2) + v(n+1/2))/2 (one node each: an MPI run computes the terms
-   !> of its owned nodes with this code and adds the gathered terms in the serial order).
+   !> with du = dtavg (v(n-1/2) + v(n+1/2))/2 (one node each: serial and MPI runs add the
+   !> terms of their (owned) nodes to the cycle's exact sum, dx_energy_exact work_values).
    subroutine constraint_terms(cnodes, mass, vfree, vold, v, dtavg, terms)
       integer, intent(in) :: cnodes(:)
       real(wp), intent(in) :: mass(:), vfree(:, :), vold(:, :), v(:, :), dtavg
@@ -383,8 +195,8 @@ contains
    !> The work of the constraint moments on the rotations of node i (shells): DOFRX/RY/RZ and
    !> the prescribed rotations set w(n+1/2) against the free wf; the term is
    !> I (w - wf).(w(n-1/2) + w)/2 (as constraint_terms for the translations). rot_node_term
-   !> is false (no term) where the constraint left the free w, so the serial sum (node order,
-   !> rotation_work) and an MPI run's gathered terms of its owned nodes add the same numbers.
+   !> is false (no term) where the constraint left the free w; the terms go into the cycle's
+   !> exact constraint-work sum (serial: every node; MPI: the owned nodes).
    logical function rot_node_term(rinert, wf, wold, w, term)
       real(wp), intent(in) :: rinert, wf(3), wold(3), w(3)
       real(wp), intent(out) :: term
@@ -392,20 +204,6 @@ contains
       rot_node_term = any(wf /= w)
       if (rot_node_term) term = 0.5_wp*rinert*dot_product(w - wf, wold + w)
    end function rot_node_term
-
-   !> Serial: the rotational constraint work of every node in node order into wcon (after
-   !> the solver's rotation step, model%mom holds the free angular velocities).
-   subroutine rotation_work(model, wold, wcon)
-      type(model_t), intent(in) :: model
-      real(wp), intent(in) :: wold(:, :)
-      real(wp), intent(inout) :: wcon
-      real(wp) :: term
-      integer :: i
-      do i = 1, model%nn
-         if (rot_node_term(model%rinert(i), model%mom(:, i), wold(:, i), model%w(:, i), term)) &
-            wcon = wcon + term
-      end do
-   end subroutine rotation_work
 
    !> The rotational kinetic energy 1/2 I w(n-1/2).w(n+1/2) summed in node order (serial,
    !> and rank 0 of an MPI run on the gathered global arrays).
@@ -419,16 +217,12 @@ contains
       end do
    end function rotation_kinetic
 
-   !> The initial rotational kinetic energy 1/2 I w.w (serial and MPI rank 0 alike).
-   real(wp) function rotation_initial(rinert, w) result(k0)
-      real(wp), intent(in) :: rinert(:), w(:, :)
-      k0 = 0.5_wp*sum(rinert*sum(w**2, dim=1))
-   end function rotation_initial
-
-   !> Store the energies and momentum of the current step in model%energy.
-   subroutine set_energy(model, ke, eint, ehg, wext, erw)
+   !> Store the energies and momentum of the current step in model%energy (mom: the exact
+   !> momentum of energy_values, rigid bodies included; else summed here in node order).
+   subroutine set_energy(model, ke, eint, ehg, wext, erw, mom)
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: ke, eint, ehg, wext, erw
+      real(wp), intent(in), optional :: mom(3)
       real(wp) :: den
       integer :: d
       model%energy%kinetic = ke
@@ -442,6 +236,10 @@ contains
          model%energy%ratio = (model%energy%total + erw + model%energy%sliding)/den
       else
          model%energy%ratio = 1.0_wp
+      end if
+      if (present(mom)) then     ! (the bodies' momentum included)
+         model%energy%momentum = mom
+         return
       end if
       do d = 1, 3
          model%energy%momentum(d) = sum(model%mass*model%v(d, :))

@@ -4,12 +4,13 @@
 !> sub-model (dx_par_model: the pieces of the serial element blocks, its nodes, one slot node
 !> per shared element corner, its SPCs and prescribed motions). The loop then makes, per cycle:
 !> one shared-node force exchange in fixed serial order (par_shared_sum), one MINLOC for the
-!> stable step, and - only when the deck has them - one ordered gather of the constrained
-!> and rigid-wall nodes' velocities. Energies, momentum and work terms are not formed from
-!> per-rank partial sums: the terms are gathered (par_gather_ordered) into a global copy of
-!> the model held here, and the serial procedures (dx_energy_sums, apply_rigidwalls) run on
-!> it, so they add the same numbers in the same order with the same code: the parallel run
-!> reproduces the serial one bit for bit (NP = 1..4 regression cases, zero tolerance).
+!> stable step. Energies, momentum, the initial kinetic energy, the total and added mass and
+!> the constraint, rigid-wall and external work are exact sums (dx_repro_sum, the long
+!> accumulator; dx_energy_exact): each rank adds the terms of its owned nodes and of its
+!> elements, formed by the serial code, and one int64 MPI_Allreduce per output event (per
+!> up to NBUF_MAX cycles for the work sums) gives every rank the exact sums rounded once, so
+!> the parallel run reproduces the serial one bit for bit (NP = 1..4 regression cases,
+!> zero tolerance) with nothing gathered for them (docs/history.md, "Reproducible sums").
 !> Output: glstat and nodout are written by rank 0 from the nodal state gathered into the
 !> global model; plot states are written by every rank into its own part file (dx_par_plot,
 !> no gather) and combined by rank 0 at the end into the serial d3plot.h5 + d3plot.xdmf.
@@ -36,9 +37,11 @@ module dx_par_engine
                           par_gather_values_root
    use dx_sort, only: sort_index
    use dx_par_model, only: par_model_t, par_fill_slots, par_exchange_forces, par_exchange_mass
-   use dx_energy_sums, only: initial_kinetic, kinetic_energy, element_energies, &
-                             constraint_terms, set_energy, part_energies, rot_node_term, &
-                             rotation_kinetic, rotation_initial, eroded_energies, part_added_mass
+   use dx_energy_sums, only: constraint_terms, rot_node_term
+   use dx_energy_exact, only: energy_terms, energy_values, corner_counts, held_status, &
+                              exact_mass, exact_initial_ke, work_nsums, work_hit, work_values, &
+                              added_mass_sums
+   use dx_repro_sum, only: rsum_t, rs_reduce, rs_init, rs_add
    use dx_constraints, only: apply_rigidwalls, wall_hits_t
    use dx_par_contact, only: par_contact_t, par_contact_report
    use dx_par_plot, only: par_plot_t, par_plot_write, par_plot_finish
@@ -85,8 +88,8 @@ module dx_par_engine
       type(wall_hits_t) :: hits
       logical :: have_bc = .false.               !< a constrained or wall node anywhere
       real(wp) :: key_mult = 1.0_wp              !< serial positions per (cycle, wall)
-      real(wp), allocatable :: rec(:, :)         !< (NREC_W, nrec) kept records
-      integer :: nrec = 0
+      type(rsum_t) :: wbuf                       !< (work_nsums, NBUF_MAX) kept cycle sums
+      real(wp), allocatable :: rec(:, :)         !< (set-up allocates it; no longer used)
       integer, allocatable :: elem_loc(:, :)     !< (2, nel) piece and position
       type(gather_plan_t) :: plan_own, plan_elem
       integer :: nbuf = 0
@@ -156,7 +159,8 @@ contains
          eng%g%w = 0.0_wp
          eng%gwold = 0.0_wp
       end if
-      model%energy%mass = sum(eng%g%mass)
+      ! the total: an exact sum over the owned nodes and the ranks (dx_energy_exact)
+      model%energy%mass = exact_mass(model, eng%own, .true.)
       if (allocated(eng%g%rigid)) model%energy%mass = model%energy%mass + eng%g%rigid%mass_corr
       eng%g%energy%mass = model%energy%mass
    end subroutine par_engine_mass
@@ -177,14 +181,12 @@ contains
    !> Mass scaling changed an element's mass (every rank, together; dx_mass_scaling): the
    !> rank's lumped masses (lump_mass: a slot holds its corner's share) summed at the shared
    !> nodes in serial order as at the start, the global copy of the masses (rank 0, or every
-   !> rank), and the added total, summed over the elements in serial order on rank 0 and
-   !> sent to all: bit for bit the serial run's.
+   !> rank), and the added totals (model, parts), exact sums over the ranks: bit for bit
+   !> the serial run's.
    subroutine par_engine_remass(eng, model)
       type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(inout) :: model
-      real(wp), allocatable :: vals(:, :), gv(:, :), ga(:)
-      real(wp) :: tot(1)
-      integer :: i, e
+      real(wp), allocatable :: vals(:, :), gv(:, :)
       call par_exchange_mass(eng%pm, model%mass)
       call add_node_terms(eng%pm, model%node_mass, model%mass)
       model%mass(eng%pm%nloc + 1:) = 0.0_wp
@@ -196,62 +198,21 @@ contains
          call par_gather_values(eng%plan_own, vals, gv)
       end if
       if (par_rank() == 0 .or. .not. eng%root_only) eng%g%mass(eng%plan_own%keys) = gv(1, :)
-      deallocate(vals, gv)
-      allocate(vals(1, size(eng%elem_loc, 2)), gv(1, size(eng%plan_elem%keys)))
-      do i = 1, size(eng%elem_loc, 2)
-         associate (pb => model%blocks(eng%elem_loc(1, i)), j => eng%elem_loc(2, i))
-            vals(1, i) = model%added_mass(pb%elem(j))
-         end associate
-      end do
-      call par_gather_values_root(eng%plan_elem, vals, gv)
-      tot = 0.0_wp
-      if (par_rank() == 0) then
-         allocate(ga(model%ne))
-         ga = 0.0_wp
-         ga(eng%plan_elem%keys) = gv(1, :)
-         do e = 1, model%ne
-            tot(1) = tot(1) + ga(e)
-         end do
-         call part_added_mass(eng%g, ga)   ! matsum's +mass and shares (global model)
+      ! the added total and matsum's +mass per part: exact sums of the rank's elements
+      ! over the ranks (dx_energy_exact; nothing gathered), rank 0's global psum
+      if (associated(eng%g)) then
+         call added_mass_sums(model, .true., eng%g)
+      else
+         call added_mass_sums(model, .true.)
       end if
-      call par_bcast_real(tot, 0)
-      model%energy%added_mass = tot(1)
    end subroutine par_engine_remass
 
-   !> The initial kinetic energy of the global model.
+   !> The initial kinetic energy 1/2 sum m v.v (+ 1/2 I w.w): the owned nodes' terms, an
+   !> exact sum over the ranks (dx_energy_exact; nothing gathered), the serial run's bits.
    subroutine par_engine_initial(eng, model)
       type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(inout) :: model
-      integer, allocatable :: keys(:)
-      real(wp), allocatable :: gv(:, :)
-      real(wp) :: e0(1)
-      if (eng%root_only) then     ! rank 0 sums, the others receive the sum
-         allocate(gv(3, size(eng%plan_own%keys)))
-         call par_gather_values_root(eng%plan_own, model%v(:, eng%own), gv)
-         e0 = 0.0_wp
-         if (par_rank() == 0) then
-            eng%g%v(:, eng%plan_own%keys) = gv
-            e0(1) = initial_kinetic(eng%g%mass, eng%g%v)
-         end if
-         if (allocated(model%w)) then    ! shells: + 1/2 I w.w, as the serial start
-            call par_gather_values_root(eng%plan_own, model%w(:, eng%own), gv)
-            if (par_rank() == 0) then
-               eng%g%w(:, eng%plan_own%keys) = gv
-               e0(1) = e0(1) + rotation_initial(eng%g%rinert, eng%g%w)
-            end if
-         end if
-         call par_bcast_real(e0, 0)
-         model%energy%initial = e0(1)
-         return
-      end if
-      call par_gather_ordered(eng%pm%node_global(eng%own), model%v(:, eng%own), keys, gv)
-      eng%g%v(:, keys) = gv
-      model%energy%initial = initial_kinetic(eng%g%mass, eng%g%v)
-      if (allocated(model%w)) then
-         call par_gather_ordered(eng%pm%node_global(eng%own), model%w(:, eng%own), keys, gv)
-         eng%g%w(:, keys) = gv
-         model%energy%initial = model%energy%initial + rotation_initial(eng%g%rinert, eng%g%w)
-      end if
+      model%energy%initial = exact_initial_ke(model, eng%own, .true.)
    end subroutine par_engine_initial
 
    !> Before the element pass: shared nodes' x and v into their slot nodes.
@@ -447,17 +408,14 @@ contains
    !> Rigid walls and the work of constraint and wall forces. Each rank corrects its own
    !> wall nodes (the correction of a node depends on that node alone, and every holder of
    !> a shared node has the same x, v and mass) with the serial apply_rigidwalls, which also
-   !> gives each corrected node's work term; constraint_terms gives each constrained node's.
-   !> Both are the serial code on the serial numbers, so the terms of the nodes this rank
-   !> owns are the serial terms bit for bit. The sums are order-dependent: the owned terms
-   !> are kept (a constraint term of exactly +-0 is skipped: adding it to a sum that
-   !> started at +0 changes no bit; every wall hit is kept) for up to NBUF_MAX cycles and,
-   !> when a sum is needed (or the buffer is full), gathered on every rank and added in the
-   !> serial order (cycle, then node for wcon; cycle, wall, node for wrw). Only nodes the
-   !> constraints or walls act on travel: nothing per node and cycle otherwise.
-   !> wold (decks with rotations): the constraint moments' terms of the owned nodes whose
-   !> rotation a constraint set (rot_node_term) are kept as wall -1, so they come first in
-   !> their cycle and in node order, as the serial rotation_work adds them.
+   !> gives each corrected node's work term; constraint_terms gives each constrained node's,
+   !> rot_node_term each shell node's constraint moment term. Both are the serial code on
+   !> the serial numbers, so the terms of the nodes this rank owns are the serial terms bit
+   !> for bit. They go into this cycle's exact sums (dx_energy_exact work_hit: constraint
+   !> work, wall work, each wall's resultant force), kept for up to NBUF_MAX cycles; when a
+   !> sum is needed (or the buffer is full) one int64 allreduce sums the kept cycles over the
+   !> ranks and each cycle's sum is added to wcon, wrw in cycle order, as the serial run
+   !> adds its cycle sums (s_constraints): no term travels, nothing per node and cycle.
    subroutine par_engine_constraints(eng, model, vfree, vold, dt, dtavg, wcon, wrw, needed, &
                                      wold)
       type(par_engine_t), intent(inout) :: eng
@@ -466,25 +424,24 @@ contains
       real(wp), intent(inout) :: wcon, wrw
       logical, intent(in) :: needed
       real(wp), intent(in), optional :: wold(:, :)
-      integer :: i, w, k, nd
+      integer :: i, w, k, nd, c0, ns
       real(wp) :: term
       if (.not. eng%have_bc) return     ! no constrained or wall node anywhere
+      ns = work_nsums(wall_count(eng))
+      if (eng%nbuf == 0) call rs_init(eng%wbuf, NBUF_MAX*ns)
       eng%nbuf = eng%nbuf + 1
+      c0 = (eng%nbuf - 1)*ns
       if (present(wold)) then
          do i = 1, size(eng%own)
             nd = eng%own(i)
             if (rot_node_term(model%rinert(nd), model%mom(:, nd), wold(:, nd), model%w(:, nd), &
-                              term)) &
-               call push([real(eng%nbuf, wp), -1.0_wp, real(eng%pm%node_global(nd), wp), term, &
-                          0.0_wp, 0.0_wp, 0.0_wp])
+                              term)) call rs_add(eng%wbuf, c0 + 1, term)
          end do
       end if
       if (size(eng%lcn) > 0) then
          call constraint_terms(eng%lcn, model%mass, vfree, vold, model%v, dtavg, eng%lc_term)
          do i = 1, size(eng%lcn)
-            if (eng%lc_key(i) > 0 .and. .not. (eng%lc_term(i) == 0.0_wp)) &
-               call push([real(eng%nbuf, wp), 0.0_wp, real(eng%lc_key(i), wp), eng%lc_term(i), &
-                          0.0_wp, 0.0_wp, 0.0_wp])
+            if (eng%lc_key(i) > 0) call rs_add(eng%wbuf, c0 + 1, eng%lc_term(i))  ! owned
          end do
       end if
       if (allocated(model%walls)) then
@@ -493,24 +450,18 @@ contains
             w = eng%hits%wall(i)
             k = eng%hits%k(i)
             if (eng%owned(model%walls(w)%nodes(k))) &
-               call push([real(eng%nbuf, wp), real(w, wp), real(eng%wall_kg(w)%p(k), wp), &
-                          eng%hits%val(:, i)])
+               call work_hit(eng%wbuf, c0, w, eng%hits%val(1:4, i))
          end do
       end if
       if (needed .or. eng%nbuf == NBUF_MAX) call flush_work(eng, wcon, wrw)
-   contains
-      subroutine push(r)
-         real(wp), intent(in) :: r(NREC_W)
-         real(wp), allocatable :: t(:, :)
-         if (eng%nrec == size(eng%rec, 2)) then
-            allocate(t(NREC_W, 2*eng%nrec))
-            t(:, 1:eng%nrec) = eng%rec(:, 1:eng%nrec)
-            call move_alloc(t, eng%rec)
-         end if
-         eng%nrec = eng%nrec + 1
-         eng%rec(:, eng%nrec) = r
-      end subroutine push
    end subroutine par_engine_constraints
+
+   !> The deck's number of rigid walls (the same on every rank).
+   integer function wall_count(eng)
+      type(par_engine_t), intent(in) :: eng
+      wall_count = 0
+      if (allocated(eng%g%walls)) wall_count = size(eng%g%walls)
+   end function wall_count
 
    !> Before a restart dump: the kept cycles' work terms into wcon, wrw (the same additions
    !> in the same order as a later flush would make), so the dump holds the sums to date.
@@ -532,147 +483,67 @@ contains
       hash = eng%deck_hash
    end subroutine par_engine_maps
 
-   !> Gather the kept records on every rank and add their terms in the serial order; the
-   !> walls' resultant forces become those of the last kept cycle (the serial
-   !> add_wall_hits: zero, minus the hits' m dv/dtavg in wall order).
+   !> The kept cycles' sums over the ranks (one int64 allreduce) into wcon, wrw in cycle
+   !> order; the walls' resultant forces become those of the last kept cycle.
    subroutine flush_work(eng, wcon, wrw)
       type(par_engine_t), intent(inout) :: eng
       real(wp), intent(inout) :: wcon, wrw
-      real(wp), allocatable :: rb(:), sk(:)
-      integer, allocatable :: cnt(:), idx(:)
-      integer :: i, j, n, nw, w
+      type(rsum_t) :: kept
+      real(wp), allocatable :: fw(:, :)
+      integer :: c, nw, ns, w
       real(wp) :: t0
       t0 = par_wtime()
-      nw = 0
-      if (allocated(eng%g%walls)) nw = size(eng%g%walls)
-      call par_allgather_probe(reshape(eng%rec(:, 1:eng%nrec), [NREC_W*eng%nrec]), rb, cnt)
-      n = size(rb)/NREC_W
-      allocate(sk(n))
-      do i = 1, n    ! (cycle, wall, position), wall 0 = the constraints, -1 the rotations
-         j = NREC_W*(i - 1)
-         sk(i) = ((rb(j + 1) - 1.0_wp)*real(nw + 2, wp) + rb(j + 2) + 1.0_wp)*eng%key_mult + &
-                 rb(j + 3)
+      nw = wall_count(eng)
+      ns = work_nsums(nw)
+      kept%a = eng%wbuf%a(:, 1:eng%nbuf*ns)
+      call rs_reduce(kept)
+      allocate(fw(3, nw))
+      do c = 1, eng%nbuf
+         call work_values(kept, (c - 1)*ns, nw, wcon, wrw, fw)
       end do
-      idx = [(i, i = 1, n)]
-      call sort_index(idx, sk)
-      if (nw > 0) then
-         do w = 1, nw
-            eng%g%walls(w)%force = 0.0_wp
-         end do
-      end if
-      do i = 1, n
-         j = NREC_W*(idx(i) - 1)
-         w = nint(rb(j + 2))
-         if (w <= 0) then
-            wcon = wcon + rb(j + 4)
-         else
-            wrw = wrw + rb(j + 4)
-            if (nint(rb(j + 1)) == eng%nbuf) &
-               eng%g%walls(w)%force = eng%g%walls(w)%force - rb(j + 5:j + 7)
-         end if
+      do w = 1, nw
+         eng%g%walls(w)%force = fw(:, w)
       end do
       eng%nbuf = 0
-      eng%nrec = 0
       eng%t_gath = eng%t_gath + (par_wtime() - t0)
    end subroutine flush_work
 
-   !> Energies and momentum of the step (when needed): nodal velocities and element
-   !> energies gathered to rank 0, the serial sums on its global model, the results sent
-   !> to every rank (MPI_Bcast: one energy record, not the arrays). Decks with contact or
-   !> rigid bodies gather the nodal velocities to every rank (their stages read g's nodes).
-   !> dfac = (dt(n+1/2) - dt(n-1/2))/4 weighs the element work still to be booked (epend,
-   !> dx_energy_sums), gathered per element as alive*(ework(:,4) - ework(:,2)).
-   subroutine par_engine_energies(eng, model, vold, wsum, erw, dfac, needed, wold)
+   !> Energies and momentum of the step (when needed), without gathering: every rank forms
+   !> the terms of its owned nodes and of its elements with the serial run's code
+   !> (dx_energy_exact energy_terms), adds them exactly (dx_repro_sum), and one int64
+   !> MPI_Allreduce gives every rank the exact sums, rounded once: the serial run's bits for
+   !> any NP. Erosion: the corner counts of the shared nodes are summed over the ranks by
+   !> the slot exchange first (which nodes only eroded elements hold). matsum's part sums
+   !> go into the global model's psum where it is allocated (rank 0, which writes matsum).
+   !> dfac = (dt(n+1/2) - dt(n-1/2))/4 weighs the element work still to be booked.
+   subroutine par_engine_energies(eng, model, vold, wsum, erw, dfac, needed, wold, racc)
       type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: vold(:, :), wsum, erw, dfac
       logical, intent(in) :: needed
       real(wp), intent(in), optional :: wold(:, :)
-      real(wp), allocatable :: vals(:, :), gv(:, :)
-      real(wp) :: ke, eint, ehg, t0, epend, erec(15)
-      integer :: i, e, nv, nr
-      logical :: root
+      type(rsum_t), intent(in), optional :: racc     !< rigid nodes' terms (dx_rigid_exact)
+      real(wp), allocatable :: alive(:), all(:)
+      integer(1), allocatable :: held(:)
+      type(rsum_t) :: rs
+      real(wp) :: t0
       if (.not. needed) return
       t0 = par_wtime()
-      root = par_rank() == 0
-      nr = 6
-      if (present(wold)) nr = 12      ! shells: w(n+1/2), w(n-1/2) too
-      allocate(vals(nr, size(eng%own)), gv(nr, size(eng%plan_own%keys)))
-      do i = 1, size(eng%own)
-         vals(1:3, i) = model%v(:, eng%own(i))
-         vals(4:6, i) = vold(:, eng%own(i))
-         if (nr == 12) then
-            vals(7:9, i) = model%w(:, eng%own(i))
-            vals(10:12, i) = wold(:, eng%own(i))
-         end if
-      end do
-      if (eng%root_only) then
-         call par_gather_values_root(eng%plan_own, vals, gv)
+      if (model%erodes) then
+         call corner_counts(model, alive, all)
+         call par_exchange_mass(eng%pm, alive)
+         call par_exchange_mass(eng%pm, all)
+         held = held_status(alive, all)
+      end if
+      call energy_terms(model, vold, eng%pm%nloc, eng%pm%slot_node, rs, nodes=eng%own, &
+                        wold=wold, held=held, racc=racc)
+      call rs_reduce(rs)
+      if (associated(eng%g)) then
+         call energy_values(model, rs, dfac, wsum, erw, eng%g)
       else
-         call par_gather_values(eng%plan_own, vals, gv)
+         call energy_values(model, rs, dfac, wsum, erw)
       end if
-      if (root .or. .not. eng%root_only) then
-         eng%g%v(:, eng%plan_own%keys) = gv(1:3, :)
-         eng%gvold(:, eng%plan_own%keys) = gv(4:6, :)
-         if (nr == 12) then
-            eng%g%w(:, eng%plan_own%keys) = gv(7:9, :)
-            eng%gwold(:, eng%plan_own%keys) = gv(10:12, :)
-         end if
-      end if
-      deallocate(vals, gv)
-      nv = 3
-      if (model%erodes) nv = 4   ! the eroded flags too (dx_erosion)
-      allocate(vals(nv, size(eng%elem_loc, 2)), gv(nv, size(eng%plan_elem%keys)))
-      do i = 1, size(eng%elem_loc, 2)
-         associate (pb => model%blocks(eng%elem_loc(1, i)), j => eng%elem_loc(2, i))
-            vals(1, i) = pb%eint(j)
-            vals(2, i) = pb%ehg(j)
-            if (nv == 4) vals(4, i) = merge(1.0_wp, 0.0_wp, pb%failed(j))
-            vals(3, i) = 0.0_wp
-            if (pb%esc(ES_WORK) > 0) vals(3, i) = merge(0.0_wp, 1.0_wp, pb%failed(j))* &
-               (pb%es(j, pb%esc(ES_WORK) + WORK_PN) - pb%es(j, pb%esc(ES_WORK) + WORK_QBV))
-         end associate
-      end do
-      call par_gather_values_root(eng%plan_elem, vals, gv)
-      erec = 0.0_wp
-      if (root) then
-         do i = 1, size(eng%plan_elem%keys)
-            e = eng%plan_elem%keys(i)
-            associate (gb => eng%g%blocks(eng%g%elem_block(e)), p => eng%g%elem_pos(e))
-               gb%eint(p) = gv(1, i)
-               gb%ehg(p) = gv(2, i)
-               if (nv == 4) gb%failed(p) = gv(4, i) > 0.5_wp
-               ! the global copy only reports: its ework carries the pending term in col. 4
-               if (gb%esc(ES_WORK) > 0) then
-                  gb%es(p, gb%esc(ES_WORK) + WORK_PN) = gv(3, i)
-                  gb%es(p, gb%esc(ES_WORK) + WORK_QBV) = 0.0_wp
-               end if
-            end associate
-         end do
-         ke = kinetic_energy(eng%g%nn, eng%g%mass, eng%gvold, eng%g%v)
-         if (nr == 12) ke = ke + rotation_kinetic(eng%g%nn, eng%g%rinert, eng%gwold, eng%g%w)
-         if (allocated(eng%g%rigid)) ke = ke + eng%g%rigid%ke_corr   ! body KE (dx_par_rigid)
-         call element_energies(eng%g%blocks, eint, ehg, epend)
-         eint = eint + dfac*epend
-         eng%g%energy%initial = model%energy%initial
-         call set_energy(eng%g, ke, eint, ehg, wsum, erw)
-         call part_energies(eng%g, eng%gvold, dfac)   ! matsum (when the deck asks)
-         if (model%erodes) call eroded_energies(eng%g, eng%gvold)
-         associate (en => eng%g%energy)
-            erec = [en%kinetic, en%internal, en%hourglass, en%external_work, en%rigidwall, &
-                   en%sliding, en%total, en%initial, en%ratio, en%momentum, en%mass, &
-                   en%eroded_ie, en%eroded_ke]
-         end associate
-      end if
-      call par_bcast_real(erec, 0)
-      associate (en => model%energy)
-         en%kinetic = erec(1); en%internal = erec(2); en%hourglass = erec(3)
-         en%external_work = erec(4); en%rigidwall = erec(5); en%sliding = erec(6)
-         en%total = erec(7); en%initial = erec(8); en%ratio = erec(9)
-         en%momentum = erec(10:12); en%mass = erec(13)
-         en%eroded_ie = erec(14); en%eroded_ke = erec(15)
-      end associate
-      eng%g%energy = model%energy
+      if (associated(eng%g)) eng%g%energy = model%energy
       eng%t_gath = eng%t_gath + (par_wtime() - t0)
    end subroutine par_engine_energies
 

@@ -21,10 +21,11 @@
 !>   *DYNX_PRESSURE_TABLE/_PULSE (dx_edge_pressure) likewise: the shares of the rank's nodes.
 !> - External work: the serial loop adds f.dtavg (v(n-1/2) + v(n+1/2))/2 node by node. The
 !>   term of each owned node that can carry a load is computed locally (the serial
-!>   expression; it depends on that node alone), kept for up to NBUF_MAX cycles and, when a
-!>   sum is needed (glstat, ENDENG, the end) or the buffer is full, gathered and added cycle
-!>   by cycle in node order. Nodes without a load have fext = +0 exactly, and adding a +-0
-!>   term leaves a sum that started at +0 unchanged, so skipping them changes no bit.
+!>   expression; it depends on that node alone) into the cycle's exact sum (dx_repro_sum),
+!>   kept for up to NBUF_MAX cycles; when a sum is needed (glstat, ENDENG, the end) or the
+!>   buffer is full, one int64 allreduce sums the kept cycles over the ranks and each
+!>   cycle's sum is added to wext in cycle order, as the serial run adds its cycle sums
+!>   (dx_domain s_load_work): no term travels.
 !> Fixed-order sums: the idea of OpenRadioss /PARITH/ON (Hoover et al., ParaDyn, LLNL
 !> Engineering Thrust Area Report FY97; shared/seed article 4).
 module dx_par_loads
@@ -32,6 +33,7 @@ module dx_par_loads
    use dx_model, only: model_t
    use dx_par, only: par_allreduce, PAR_MAX
    use dx_par_plan, only: gather_plan_t, par_gather_setup, par_gather_values
+   use dx_repro_sum, only: rsum_t, rs_init, rs_add, rs_reduce, rs_value
    use dx_par_model, only: par_model_t
    use dx_partition, only: rank_part_t
    use dx_rank_submodel, only: rank_node_loads
@@ -57,7 +59,8 @@ module dx_par_loads
       type(gather_plan_t) :: plan_w               !< owned nodes that can carry a load
       integer, allocatable :: w_loc(:)
       integer :: nbuf = 0
-      real(wp), allocatable :: wbuf(:, :)         !< (NBUF_MAX, size(w_loc))
+      real(wp), allocatable :: wbuf(:, :)         !< (set-up allocates it; no longer used)
+      type(rsum_t) :: wacc                         !< (NBUF_MAX) kept cycle sums
    end type par_loads_t
 
 contains
@@ -233,34 +236,34 @@ contains
       real(wp), intent(inout) :: wext
       logical, intent(in) :: needed
       integer :: i
+      real(wp) :: term
       if (.not. ld%active) return
+      if (ld%nbuf == 0) call rs_init(ld%wacc, NBUF_MAX)
       ld%nbuf = ld%nbuf + 1
       do i = 1, size(ld%w_loc)
          associate (n => ld%w_loc(i))
-            ld%wbuf(ld%nbuf, i) = dot_product(fext(:, n), 0.5_wp*dtavg*(vold(:, n) + v(:, n)))
+            term = dot_product(fext(:, n), 0.5_wp*dtavg*(vold(:, n) + v(:, n)))
+            if (term /= 0.0_wp) call rs_add(ld%wacc, ld%nbuf, term)
          end associate
       end do
       if (.not. (needed .or. ld%nbuf == NBUF_MAX)) return
       call par_loads_flush(ld, wext)
    end subroutine par_loads_work
 
-   !> Add the kept external-work terms into wext (collective; nothing when none are kept):
-   !> the same additions in the same order as the flush in par_loads_work would make, so a
-   !> restart dump (dx_checkpoint) that calls it first keeps wext's bits.
+   !> Add the kept cycles' external work into wext (collective; nothing when none are
+   !> kept): the same additions in the same order as the flush in par_loads_work would
+   !> make, so a restart dump (dx_checkpoint) that calls it first keeps wext's bits.
    subroutine par_loads_flush(ld, wext)
       type(par_loads_t), intent(inout) :: ld
       real(wp), intent(inout) :: wext
-      real(wp), allocatable :: vals(:, :), gv(:, :)
-      integer :: i, c
+      type(rsum_t) :: kept
+      integer :: c
       if (.not. ld%active) return
       if (ld%nbuf == 0) return
-      allocate(gv(ld%nbuf, size(ld%plan_w%keys)))
-      vals = ld%wbuf(1:ld%nbuf, :)               ! contiguous for MPI
-      call par_gather_values(ld%plan_w, vals, gv)
+      kept%a = ld%wacc%a(:, 1:ld%nbuf)
+      call rs_reduce(kept)
       do c = 1, ld%nbuf
-         do i = 1, size(ld%plan_w%keys)
-            wext = wext + gv(c, i)
-         end do
+         wext = wext + rs_value(kept, c)
       end do
       ld%nbuf = 0
    end subroutine par_loads_flush

@@ -95,6 +95,9 @@ module dx_rigid_types
       real(wp) :: ke_corr = 0.0_wp            !< body KE minus the nodal KE of rigid nodes, t(n)
       real(wp) :: ke0_corr = 0.0_wp           !< the same at t = 0
       real(wp) :: p_corr(3) = 0.0_wp          !< body momentum minus nodal momentum, t(n+1/2)
+      !> the bodies' own kinetic energy at t(n) and momentum at t(n+1/2) (the reported
+      !> energies add the rigid nodes' nodal terms, negated, to their exact sums)
+      real(wp) :: ke_body = 0.0_wp, p_body(3) = 0.0_wp
       real(wp) :: mass_corr = 0.0_wp          !< body masses minus nodal masses of rigid nodes
       real(wp) :: work = 0.0_wp               !< work of rigid constraints and prescribed motion
       real(wp) :: rbdout_dt = 0.0_wp

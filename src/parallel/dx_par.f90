@@ -22,7 +22,7 @@ module dx_par
                         MPI_Isend, MPI_MAX, MPI_MAX_ERROR_STRING, MPI_MIN, MPI_MINLOC, MPI_Op, &
                         MPI_Probe, MPI_Recv, MPI_Request, MPI_Status, MPI_STATUS_IGNORE, &
                         MPI_STATUSES_IGNORE, MPI_SUCCESS, MPI_SUM, MPI_Waitall, MPI_Wtime, &
-                        MPI_COMM_SELF, MPI_Initialized, MPI_Finalized
+                        MPI_COMM_SELF, MPI_Initialized, MPI_Finalized, MPI_INTEGER8
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, exit_process, EXIT_NUMERIC
    use dx_strings, only: str
@@ -36,6 +36,7 @@ module dx_par
    public :: par_displs, par_counts
    public :: par_self_handle   ! (the sparse direct solver, dx_mumps)
    public :: par_traffic_add, par_traffic_line, PAR_T_EXCH, PAR_T_P2P, PAR_T_COLL
+   public :: par_allreduce_i8  ! (exact reproducible sums, dx_repro_sum)
 
    integer, parameter :: PAR_SUM = 1, PAR_MIN = 2, PAR_MAX = 3
 
@@ -228,6 +229,20 @@ contains
       call par_check(ierr, 'MPI_Allreduce')
       x = y
    end subroutine allreduce_i1
+
+   !> x = sum over ranks of the int64 array x (exact: integer addition, any order). For the
+   !> limbs of dx_repro_sum's exact accumulators.
+   subroutine par_allreduce_i8(x)
+      integer(int64), intent(inout) :: x(:)
+      integer(int64), allocatable :: y(:)
+      integer :: ierr
+      if (.not. mpi_on) return
+      allocate(y(size(x)))
+      call MPI_Allreduce(x, y, size(x), MPI_INTEGER8, MPI_SUM, comm, ierr)
+      call par_check(ierr, 'MPI_Allreduce')
+      traffic(PAR_T_COLL) = traffic(PAR_T_COLL) + 8*size(x)
+      x = y
+   end subroutine par_allreduce_i8
 
    !> Broadcast a message and an integer code from rank root (a failure found on one rank,
    !> made known to all: dx_par_engine). On the other ranks text is replaced.

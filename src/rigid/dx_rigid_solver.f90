@@ -29,6 +29,10 @@ module dx_rigid_solver
    implicit none
    private
    public :: rigid_step, rigid_write_rbdout, rigid_close
+   !> the pieces of a body's step for a caller that sums the nodal terms itself (exactly,
+   !> over the ranks: dx_rigid_exact): the nodes' terms, the body's advance from the sums,
+   !> the nodes' motion
+   public :: rigid_begin, rigid_node_terms, rigid_body_advance, rigid_node_motion
 
 contains
 
@@ -41,15 +45,65 @@ contains
       real(wp) :: grav(3)
       integer :: b
       logical :: body_loads
+      call rigid_begin(rs, model, t, grav, body_loads)
+      do b = 1, size(rs%bodies)
+         call step_body(rs, rs%bodies(b), model, t, dt, dtavg, vold, grav, body_loads)
+      end do
+   end subroutine rigid_step
+
+   !> The start of a rigid stage: the base acceleration of the body loads, the corrections
+   !> zeroed.
+   subroutine rigid_begin(rs, model, t, grav, body_loads)
+      type(rigid_system_t), intent(inout) :: rs
+      type(model_t), intent(in) :: model
+      real(wp), intent(in) :: t
+      real(wp), intent(out) :: grav(3)
+      logical, intent(out) :: body_loads
       body_loads = allocated(model%body_loads)
       grav = 0.0_wp
       if (body_loads) grav = base_acceleration(model%body_loads, model%curves, t)
       rs%ke_corr = 0.0_wp
       rs%p_corr = 0.0_wp
-      do b = 1, size(rs%bodies)
-         call step_body(rs, rs%bodies(b), model, t, dt, dtavg, vold, grav, body_loads)
-      end do
-   end subroutine rigid_step
+      rs%ke_body = 0.0_wp
+      rs%p_body = 0.0_wp
+   end subroutine rigid_begin
+
+   !> Node nd's terms in body bd's sums at t(n): its force tf, the moment about the centre
+   !> of mass r x f (tq) and its own moment tm (a node with rotations), its mass m and m r.
+   subroutine rigid_node_terms(bd, model, nd, tf, tq, tm, m, mr)
+      type(rigid_body_t), intent(in) :: bd
+      type(model_t), intent(in) :: model
+      integer, intent(in) :: nd
+      real(wp), intent(out) :: tf(3), tq(3), tm(3), m, mr(3)
+      real(wp) :: r(3)
+      r = model%x(:, nd) - bd%xc
+      tf = model%f(:, nd)
+      tq = cross(r, model%f(:, nd))
+      tm = 0.0_wp
+      if (allocated(model%mom)) tm = model%mom(:, nd)
+      m = model%mass(nd)
+      mr = model%mass(nd)*r
+   end subroutine rigid_node_terms
+
+   !> Node nd (position i of the body's nodes) follows the body to x(n+1): its secant
+   !> velocity (and, with rotations, w = omega, no nodal rotary inertia); ke = m
+   !> v(n-1/2).v(n+1/2) and p = m v(n+1/2), the nodal terms the body's replace.
+   subroutine rigid_node_motion(bd, model, i, nd, dt, vold, ke, p)
+      type(rigid_body_t), intent(in) :: bd
+      type(model_t), intent(inout) :: model
+      integer, intent(in) :: i, nd
+      real(wp), intent(in) :: dt, vold(:, :)
+      real(wp), intent(out) :: ke, p(3)
+      real(wp) :: xn(3)
+      xn = bd%xc + matmul(bd%rot, bd%s(:, i))
+      model%v(:, nd) = (xn - model%x(:, nd))/dt
+      ke = model%mass(nd)*dot_product(vold(:, nd), model%v(:, nd))
+      p = model%mass(nd)*model%v(:, nd)
+      if (allocated(model%mom)) then
+         model%w(:, nd) = bd%omega
+         model%rinert(nd) = 0.0_wp
+      end if
+   end subroutine rigid_node_motion
 
    subroutine step_body(rs, bd, model, t, dt, dtavg, vold, grav, body_loads)
       type(rigid_system_t), intent(inout) :: rs
@@ -57,26 +111,48 @@ contains
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: t, dt, dtavg, vold(:, :), grav(3)
       logical, intent(in) :: body_loads
-      real(wp) :: f(3), tq(3), r(3), mn, sm(3), df(3), dtq(3), ten(3, 3), tinv(3, 3)
-      real(wp) :: vc_old(3), l_old(3), w_old(3), vfree(3), lfree(3), vnew(3), lnew(3), w(3)
-      real(wp) :: wpres(3), pimom(3), rk(3, 3), xn(3), ke_n, val
-      logical :: pres(3), rotc, rot
-      integer :: i, nd, k, d
-      integer, parameter :: axis(5) = [1, 2, 3, 2, 1]
-      real(wp), parameter :: frac(5) = [0.5_wp, 0.5_wp, 1.0_wp, 0.5_wp, 0.5_wp]
+      real(wp) :: f(3), tq(3), mn, sm(3), tf(3), ttq(3), tm(3), m, mr(3), ke, p(3), ke_n
+      integer :: i
       ! resultant force and torque about the centre of mass at t(n); a node with rotations
       ! (a shell's, as an extra node) adds its moment
-      rot = allocated(model%mom)
       f = 0.0_wp; tq = 0.0_wp; mn = 0.0_wp; sm = 0.0_wp
       do i = 1, size(bd%nodes)
-         nd = bd%nodes(i)
-         r = model%x(:, nd) - bd%xc
-         f = f + model%f(:, nd)
-         tq = tq + cross(r, model%f(:, nd))
-         if (rot) tq = tq + model%mom(:, nd)
-         mn = mn + model%mass(nd)
-         sm = sm + model%mass(nd)*r
+         call rigid_node_terms(bd, model, bd%nodes(i), tf, ttq, tm, m, mr)
+         f = f + tf
+         tq = tq + ttq + tm
+         mn = mn + m
+         sm = sm + mr
       end do
+      call rigid_body_advance(rs, bd, model, t, dt, dtavg, f, tq, mn, sm, grav, body_loads)
+      ! nodes: secant velocities onto x(n+1); nodal KE and momentum they replace
+      ke_n = 0.0_wp
+      do i = 1, size(bd%nodes)
+         call rigid_node_motion(bd, model, i, bd%nodes(i), dt, vold, ke, p)
+         ke_n = ke_n + ke
+         rs%p_corr = rs%p_corr - p
+      end do
+      rs%ke_corr = rs%ke_corr - 0.5_wp*ke_n
+   end subroutine step_body
+
+   !> Body bd over t(n) -> t(n+1) from the sums over its nodes at t(n): force f, torque tq
+   !> about the centre (r x f plus nodal moments), nodal mass mn and first moment sm. Adds
+   !> the body's kinetic energy and momentum to ke_corr, p_corr (and ke_body, p_body).
+   subroutine rigid_body_advance(rs, bd, model, t, dt, dtavg, fin, tqin, mn, sm, grav, &
+                                 body_loads)
+      type(rigid_system_t), intent(inout) :: rs
+      type(rigid_body_t), intent(inout) :: bd
+      type(model_t), intent(in) :: model
+      real(wp), intent(in) :: t, dt, dtavg, fin(3), tqin(3), mn, sm(3), grav(3)
+      logical, intent(in) :: body_loads
+      real(wp) :: f(3), tq(3), df(3), dtq(3), ten(3, 3), tinv(3, 3)
+      real(wp) :: vc_old(3), l_old(3), w_old(3), vfree(3), lfree(3), vnew(3), lnew(3), w(3)
+      real(wp) :: wpres(3), pimom(3), rk(3, 3), val, keb
+      logical :: pres(3), rotc
+      integer :: k, d
+      integer, parameter :: axis(5) = [1, 2, 3, 2, 1]
+      real(wp), parameter :: frac(5) = [0.5_wp, 0.5_wp, 1.0_wp, 0.5_wp, 0.5_wp]
+      f = fin
+      tq = tqin
       ! body loads act on the body mass at its centre, not on the lumped nodal masses
       df = 0.0_wp; dtq = 0.0_wp
       if (body_loads) then
@@ -141,9 +217,11 @@ contains
                 + dtavg*(dot_product(df, 0.5_wp*(vc_old + vnew)) + &
                          dot_product(dtq, 0.5_wp*(w_old + w)))
       ! body kinetic energy at t(n), momentum at t(n+1/2)
-      rs%ke_corr = rs%ke_corr + 0.5_wp*bd%mass*dot_product(vc_old, vnew) + &
-                   0.5_wp*dot_product(l_old, w)
+      keb = 0.5_wp*bd%mass*dot_product(vc_old, vnew) + 0.5_wp*dot_product(l_old, w)
+      rs%ke_corr = rs%ke_corr + keb
       rs%p_corr = rs%p_corr + bd%mass*vnew
+      rs%ke_body = rs%ke_body + keb
+      rs%p_body = rs%p_body + bd%mass*vnew
       bd%vc = vnew
       bd%lsp = lnew
       bd%omega = w
@@ -161,26 +239,7 @@ contains
             bd%rot = matmul(bd%rot, rk)
          end do
       end if
-      ! nodes: secant velocities onto x(n+1); nodal KE and momentum they replace
-      ke_n = 0.0_wp
-      do i = 1, size(bd%nodes)
-         nd = bd%nodes(i)
-         xn = bd%xc + matmul(bd%rot, bd%s(:, i))
-         model%v(:, nd) = (xn - model%x(:, nd))/dt
-         ke_n = ke_n + model%mass(nd)*dot_product(vold(:, nd), model%v(:, nd))
-         rs%p_corr = rs%p_corr - model%mass(nd)*model%v(:, nd)
-      end do
-      rs%ke_corr = rs%ke_corr - 0.5_wp*ke_n
-      ! nodes with rotations turn with the body: w(n+1/2) = omega(n+1/2); their rotary
-      ! inertia leaves the nodal update (the solver's rotation step skips I = 0, so w stays)
-      ! and its kinetic energy (the body's inertia is that of its elements and masses)
-      if (rot) then
-         do i = 1, size(bd%nodes)
-            model%w(:, bd%nodes(i)) = w
-            model%rinert(bd%nodes(i)) = 0.0_wp
-         end do
-      end if
-   end subroutine step_body
+   end subroutine rigid_body_advance
 
    pure function diag(a) result(m)
       real(wp), intent(in) :: a(3)

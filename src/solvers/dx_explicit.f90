@@ -28,8 +28,8 @@ module dx_explicit
    use dx_output, only: output_t
    use dx_checkpoint, only: checkpoint_t, checkpoint_failure_dump, checkpoint_energy_band
    use dx_rigid_solver, only: rigid_close, rigid_write_rbdout
-   use dx_energy_sums, only: initial_kinetic, kinetic_energy, constrained_nodes, energy_bits, &
-                             rotation_kinetic, rotation_initial
+   use dx_energy_sums, only: kinetic_energy, constrained_nodes, energy_bits, rotation_kinetic
+   use dx_energy_exact, only: exact_mass, exact_initial_ke
    use dx_domain, only: domain_t
    use dx_mass_scaling, only: ms_init, lump_mass, ms_block, ms_percent, ms_log_start, &
                               ms_endmas_report, MS_WARN_PERCENT
@@ -99,7 +99,7 @@ contains
       end if
       model%time = 0.0_wp
       model%cycle = 0
-      model%energy%mass = sum(model%mass)
+      model%energy%mass = exact_mass(model)   ! (MPI: dom%sum_mass sums the ranks')
       if (allocated(model%rigid)) model%energy%mass = model%energy%mass + model%rigid%mass_corr
       if (present(dom)) call dom%sum_mass(model)   ! MPI: shared nodes' mass summed
    end subroutine init_state
@@ -132,9 +132,7 @@ contains
       if (.not. model%run%started) then
          model%run = run_state_t()
          model%run%started = .true.
-         model%energy%initial = initial_kinetic(model%mass, model%v)
-         if (allocated(model%w)) model%energy%initial = model%energy%initial + &
-            rotation_initial(model%rinert, model%w)
+         model%energy%initial = exact_initial_ke(model)   ! (MPI: the ranks' sum next)
          call dom%initial_energy(model)
          if (allocated(model%rigid)) model%energy%initial = model%energy%initial + &
                                                            model%rigid%ke0_corr
@@ -348,9 +346,7 @@ contains
       class(domain_t), intent(inout) :: dom
       real(wp) :: pct
       if (model%cycle == 0) then
-         model%energy%initial = initial_kinetic(model%mass, model%v)
-         if (allocated(model%w)) model%energy%initial = model%energy%initial + &
-            rotation_initial(model%rinert, model%w)
+         model%energy%initial = exact_initial_ke(model)   ! (MPI: the ranks' sum next)
          call dom%initial_energy(model)
          if (allocated(model%rigid)) model%energy%initial = model%energy%initial + &
                                                            model%rigid%ke0_corr
