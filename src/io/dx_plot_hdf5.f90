@@ -595,6 +595,10 @@ contains
       if (allocated(error)) return
       call sys_rename(self%dir//'/'//H5NAME//'.tmp', self%dir//'/'//H5NAME, error)
       if (allocated(error)) return
+      ! no state written (rank 0 of an MPI run: dx_par_plot publishes the states and the
+      ! XDMF, and plot_combine replaces this d3plot.h5 after): the XDMF of plot_open (no
+      ! state) and d3plot.states/ are left as they are
+      if (self%nstates == 0) return
       call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, self%topo, &
                       self%times(1:self%nstates), error, rows=self%rows)
       if (allocated(error)) return

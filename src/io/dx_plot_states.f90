@@ -177,7 +177,7 @@ contains
       character(:), allocatable :: p
       integer :: k
       call states_clear(dir, n + 1)
-      do k = 0, n
+      do k = n, 0, -1                   ! the mesh file last: its link marks the end
          p = dir//'/'//state_file(k)
          if (is_link(p)) cycle
          call file_remove(p//'.lnk')
