@@ -81,6 +81,10 @@ def snapshot(reader, t, png):
     view.ViewTime = t
     disp = Show(reader, view)
     ColorBy(disp, ("CELLS", "von_mises"))
+    disp.RescaleTransferFunctionToDataRange(False, True)
+    view.CameraPosition = [1.0, -1.0, 0.3]      # the bar (axis z) from the side
+    view.CameraFocalPoint = [0.0, 0.0, 0.0]
+    view.CameraViewUp = [0.0, 0.0, 1.0]
     ResetCamera(view)
     Render(view)
     SaveScreenshot(png, view, ImageResolution=[640, 480])
