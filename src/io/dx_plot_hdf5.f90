@@ -55,7 +55,10 @@ module dx_plot_hdf5
       logical :: live = .false.
       !> the rows of the schema its states hold (the optional ones: dx_plot_fields)
       logical :: rows(NSTATE_FIELDS) = .false.
+      !> an MPI run's rank 0: the parts are combined and published by dx_par_plot
+      logical :: by_parts = .false.
    contains
+      procedure :: set_by_parts => plot_set_by_parts
       procedure :: open => plot_open
       procedure :: resume => plot_resume
       procedure :: write_state => plot_write_state
@@ -577,6 +580,12 @@ contains
                       self%times(1:k), error, states_dir=STATES_DIR, rows=self%rows)
    end subroutine write_arrays
 
+   !> Mark the writer of an MPI run's rank 0 (output_plot_by_parts).
+   subroutine plot_set_by_parts(self)
+      class(plot_file_t), intent(inout) :: self
+      self%by_parts = .true.
+   end subroutine plot_set_by_parts
+
    !> Flush and close (safe to call twice and after errors).
    subroutine plot_close(self, error)
       class(plot_file_t), intent(inout) :: self
@@ -595,10 +604,10 @@ contains
       if (allocated(error)) return
       call sys_rename(self%dir//'/'//H5NAME//'.tmp', self%dir//'/'//H5NAME, error)
       if (allocated(error)) return
-      ! no state written (rank 0 of an MPI run: dx_par_plot publishes the states and the
-      ! XDMF, and plot_combine replaces this d3plot.h5 after): the XDMF of plot_open (no
-      ! state) and d3plot.states/ are left as they are
-      if (self%nstates == 0) return
+      ! rank 0 of an MPI run (by_parts; no state written here, or only the states a restart
+      ! kept): dx_par_plot publishes the states and the XDMF, and plot_combine replaces this
+      ! d3plot.h5 after, so the XDMF and d3plot.states/ a viewer holds are left alone
+      if (self%nstates == 0 .or. self%by_parts) return
       call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, self%topo, &
                       self%times(1:self%nstates), error, rows=self%rows)
       if (allocated(error)) return
