@@ -2,7 +2,8 @@
 
 Usage: xvfb-run -a -s "-screen 0 1024x768x24" pvpython scripts/check_live_paraview.py \
            DECK OUTDIR [NP ...]
-(NP 1 = the serial bin/dynx; NP > 1 = mpirun --oversubscribe -np NP bin/dynx)
+(NP 1 = the serial bin/dynx; NP > 1 = mpirun --oversubscribe -np NP bin/dynx; the
+environment variable DYNX names another binary, e.g. an older build to see the test fail)
 
 ParaView is loaded first, then for each NP the run is started in OUTDIR/live_npN and, as a user
 would, its d3plot.xdmf is opened with the XDMF3 reader as soon as it lists 2 states, while the
@@ -97,7 +98,7 @@ def live_run(deck, out, np, failures):
     tag = "NP %d" % np
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
-    cmd = [os.path.join(ROOT, "bin", "dynx"), "-i", deck, "-o", out]
+    cmd = [os.environ.get("DYNX", os.path.join(ROOT, "bin", "dynx")), "-i", deck, "-o", out]
     # pvpython ran MPI_Init itself (Debian's ParaView is built with MPI): its OMPI_/PMIX_
     # variables would make the job's mpirun (or the serial dynx's MPI_Init) join it
     env = {k: v for k, v in os.environ.items()
