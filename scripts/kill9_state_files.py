@@ -6,8 +6,8 @@ killed by strace fault injection (-e inject=SYSCALL:signal=SIGKILL:when=N) at
     state 6's file;
   - after it: a pwrite64 inside state 10's file, its fsync and rename (written, not yet
     announced), a write of the XDMF after state 10 and the rename announcing state 11;
-  - plot_close at the end of the run: the rename of d3plot.h5.tmp into place and the unlink
-    of state file 9 (the clean-up of d3plot.states/, from the last state file down).
+  - plot_close at the end of the run: the rename of d3plot.h5.tmp into place and the rename
+    of state file 9's link to ../d3plot.h5 over it (issue 21: the state files become links).
 After each kill:
   1. every state the XDMF lists is read through it (kill9_check.check_killed: h5dump reads each
      file named whole, every dataset named is there), and the newest d3dump continues the run
@@ -51,6 +51,18 @@ def xdmf_states(path):
     return len(re.findall(r'<Grid Name="state', open(path).read()))
 
 
+def not_links(d):
+    """The entries of d/d3plot.states that are not symbolic links to ../d3plot.h5 (at the
+    end of a run or a combine every state file becomes one: issue 21, live viewing)."""
+    s = os.path.join(d, 'd3plot.states')
+    if not os.path.isdir(s):
+        return []
+    return [f for f in sorted(os.listdir(s))
+            if os.readlink(os.path.join(s, f)) != '../d3plot.h5'
+            if os.path.islink(os.path.join(s, f))] + \
+           [f for f in sorted(os.listdir(s)) if not os.path.islink(os.path.join(s, f))]
+
+
 def main():
     out = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else
                           os.path.join(ROOT, 'build', 'kill9_state_files'))
@@ -64,7 +76,8 @@ def main():
     if subprocess.run([dynx, '-i', deck, '-o', ref], capture_output=True).returncode != 0:
         print('FAIL reference run')
         return 1
-    bad = [f for f in ('d3plot.states', 'd3plot.h5.tmp') if os.path.exists(os.path.join(ref, f))]
+    bad = [f for f in ('d3plot.h5.tmp',) if os.path.exists(os.path.join(ref, f))]
+    bad += not_links(ref)
     if bad or 'd3plot.states' in open(os.path.join(ref, 'd3plot.xdmf')).read():
         print('FAIL the uninterrupted run left %s or an XDMF naming state files' % bad)
         return 1
@@ -81,7 +94,8 @@ def main():
                'XDMF write after state 10'),
               ('rename', nth(calls, 'rename', 'd3plot.xdmf.tmp', 12), 'XDMF rename, state 11'),
               ('rename', nth(calls, 'rename', 'd3plot.h5.tmp'), 'd3plot.h5 into place'),
-              ('unlink', nth(calls, 'unlink', '000009.h5'), 'clean-up of the state files')]
+              ('rename', nth(calls, 'rename', '000009.h5.lnk'),
+               'state file 9 replaced by its link to d3plot.h5')]
     fail = 0
     refs = {}
     for sc, n, what in points:
@@ -122,8 +136,9 @@ def main():
                 if not os.path.exists(a) or open(a, 'rb').read() != open(b, 'rb').read():
                     problems.append('dynx-combine: %s differs from the run ended at state %d'
                                     % (f, nm))
-            if os.path.exists(os.path.join(c, 'd3plot.states')):
-                problems.append('dynx-combine left d3plot.states/')
+            if not_links(c):
+                problems.append('dynx-combine left files in d3plot.states/ that are not '
+                                'links to ../d3plot.h5: %s' % not_links(c))
         tag = '%s #%d (%s): %d XDMF states, combined %d' % (sc, n, what, nx, nm)
         if problems:
             fail = 1

@@ -1,6 +1,7 @@
 !> Plot output of an MPI run (ParaDyn step 5; docs/history.md, docs/output-format.md): each
 !> rank writes its owned nodes and its elements to its own part file (dx_plot_part) at every
-!> plot time, with no gather; at the end of the run (normal or after a failure) rank 0
+!> plot time, with no gather (rank 0 then publishes the state for live viewing, reading the
+!> ranks' state files: plot_live_t); at the end of the run (normal or after a failure) rank 0
 !> combines the parts into d3plot.h5 + d3plot.xdmf, equal to the serial run's files.
 !> Per-processor plot files merged after the run: ParaDyn (Hoover et al., LLNL Engineering
 !> Thrust Area Report FY97, article 4 of shared/seed).
@@ -21,7 +22,8 @@ module dx_par_plot
    use dx_io_sys, only: sys_mkdir_p, sys_epoch_seconds
    use dx_plot_hdf5, only: element_average, plot_merge_states, plot_rows, element_damage, &
                            block_damage_slot, element_thickness
-   use dx_plot_part, only: plot_part_t, plot_combine
+   use dx_plot_part, only: plot_part_t, plot_combine, plot_live_t
+   use dx_plot_states, only: states_link_all
    use dx_plot_fields, only: plot_state_t, plot_state_alloc, plot_state_read, field_in_part, &
                              PLOT_FIELDS, NSTATE_FIELDS, CENTRE_NODE, F_COORD, F_VEL, &
                              F_STRESS, F_EPSP, F_FAILED, F_DAMAGE, F_BEAM_FORCE, F_BEAM_MOMENT, &
@@ -35,6 +37,7 @@ module dx_par_plot
    !> The plot stage's part of a rank's domain (a component of mpi_domain_t).
    type :: par_plot_t
       type(plot_part_t) :: part
+      type(plot_live_t) :: live               !< rank 0: the states published while running
       character(:), allocatable :: dir
       integer, allocatable :: own(:)          !< owned local nodes
       integer, allocatable :: eloc(:, :)      !< (2, nel): block and position of each element
@@ -213,7 +216,8 @@ contains
       call h5_close(f, err2)
    end subroutine par_plot_from_serial
 
-   !> Append the rank's part of the plot state at model%time (no communication).
+   !> Append the rank's part of the plot state at model%time; after a barrier rank 0
+   !> publishes the state for viewers of the running job (plot_live_t).
    subroutine par_plot_write(pp, model, error)
       type(par_plot_t), intent(inout) :: pp
       type(model_t), intent(in) :: model
@@ -251,6 +255,11 @@ contains
                                                                         pp%eloc(2, i))
       end do
       call pp%part%write_state(st, error)
+      ! live viewing (issue 21): once every rank's state file is on disk, rank 0 publishes
+      ! the state in the serial layout and the XDMF naming it (dx_plot_part)
+      call par_barrier()
+      if (allocated(error) .or. par_rank() /= 0) return
+      call pp%live%publish(pp%dir, pp%part%nstates, error)
    end subroutine par_plot_write
 
    !> States this rank's part holds.
@@ -272,6 +281,9 @@ contains
       if (allocated(error)) return
       if (par_rank() /= 0) return
       call plot_combine(pp%dir, n, error)
+      if (allocated(error)) return
+      ! the published state files become links to d3plot.h5 (a viewer reads on)
+      call states_link_all(pp%dir, n, error)
       if (allocated(error)) return
       call log_info('dynx: combined '//str(n)//' plot states of '//str(par_size())// &
                     ' ranks into '//pp%dir//'/d3plot.h5 + d3plot.xdmf')

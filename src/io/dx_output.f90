@@ -36,6 +36,7 @@ module dx_output
    contains
       procedure :: open => output_open
       procedure :: write_plot => output_write_plot
+      procedure :: plot_by_parts => output_plot_by_parts
       procedure :: write_glstat => output_write_glstat
       procedure :: write_nodout => output_write_nodout
       procedure :: write_matsum => output_write_matsum
@@ -165,6 +166,14 @@ contains
       elout_bytes = self%elout%bytes
       ncforc_bytes = self%ncforc%bytes
    end subroutine output_sizes
+
+   !> An MPI run: the ranks' parts hold the states, dx_par_plot publishes them while the run
+   !> goes and combines them at its end; this writer's close then leaves the XDMF and the
+   !> state files alone (dx_plot_hdf5: plot_close).
+   subroutine output_plot_by_parts(self)
+      class(output_t), intent(inout) :: self
+      call self%plot%set_by_parts()
+   end subroutine output_plot_by_parts
 
    !> Write one plot state at model%time.
    subroutine output_write_plot(self, model, error)

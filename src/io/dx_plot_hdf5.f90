@@ -27,7 +27,8 @@ module dx_plot_hdf5
    use dx_strings, only: str
    use dx_xdmf, only: xdmf_write, state_group
    use dx_plot_states, only: STATES_DIR, state_file, states_write_mesh, states_write_state, &
-                             states_have, states_clear, states_remove_all, file_remove
+                             states_have, states_clear, states_remove_all, file_remove, &
+                             states_link_all, is_link
    use dx_io_sys, only: sys_fsync
    use dx_plot_cells, only: cell_topo_t, model_cells, cells_topology, read_cells
    use dx_plot_fields, only: plot_state_t, plot_state_alloc, plot_state_derive, plot_state_write, &
@@ -54,7 +55,10 @@ module dx_plot_hdf5
       logical :: live = .false.
       !> the rows of the schema its states hold (the optional ones: dx_plot_fields)
       logical :: rows(NSTATE_FIELDS) = .false.
+      !> an MPI run's rank 0: the parts are combined and published by dx_par_plot
+      logical :: by_parts = .false.
    contains
+      procedure :: set_by_parts => plot_set_by_parts
       procedure :: open => plot_open
       procedure :: resume => plot_resume
       procedure :: write_state => plot_write_state
@@ -136,7 +140,9 @@ contains
          if (allocated(error)) exit work
          if (.not. publish) then
             ! plot_resume: the mesh file, unless the killed run's is there (never rewritten)
+            ! (a link to the d3plot.h5 that plot_resume removes is replaced by the file)
             inquire(file=dir//'/'//state_file(0), exist=there)
+            if (there) there = .not. is_link(dir//'/'//state_file(0))
             if (.not. there) call states_write_mesh(dir, x0, nlab, cells, elab, ids, &
                                                     self%title, error)
             exit work
@@ -158,9 +164,9 @@ contains
    !> Merge the state files a killed run left in dir (d3plot.states/mesh.h5 and the
    !> contiguous NNNNNN.h5 from 1) into dir/d3plot.h5 + d3plot.xdmf, with the writer's calls
    !> in the run's order (the bytes of the uninterrupted run's file at that state), then
-   !> remove the state files (bin/dynx-combine). nmerged: states merged. If d3plot.h5 is
-   !> there (the run was killed while plot_close cleaned up), only the XDMF is pointed at it
-   !> and the state files are removed.
+   !> turn the state files into links to d3plot.h5 (bin/dynx-combine). nmerged: states
+   !> merged. If d3plot.h5 is there (the run was killed while plot_close cleaned up), only
+   !> the XDMF is pointed at it and the state files are linked.
    subroutine plot_merge_states(dir, nmerged, error)
       character(*), intent(in) :: dir
       integer, intent(out) :: nmerged
@@ -204,7 +210,7 @@ contains
                          cells_topology(cells), x(1:nmerged), error, rows=self%rows)
          if (allocated(error)) return
          call file_remove(dir//'/'//H5NAME//'.tmp')
-         call states_remove_all(dir)
+         call states_link_all(dir, nmerged, error)
          return
       end if
       nn = size(nlab)
@@ -235,7 +241,7 @@ contains
          return
       end if
       nmerged = self%nstates
-      self%live = .true.            ! plot_close: rename, XDMF, remove the state files
+      self%live = .true.            ! plot_close: rename, XDMF, link the state files
       call plot_close(self, error)
    end subroutine plot_merge_states
 
@@ -263,8 +269,10 @@ contains
       integer :: ndisk, k, nn, ne
       logical :: there, from_states
       character(:), allocatable :: g, src
-      from_states = states_have(dir, nkeep)
+      ! d3plot.h5, when there, is whole and of this run (renamed into place at its orderly
+      ! end; the state files may then be links to it, which are replaced below)
       inquire(file=dir//'/'//H5NAME, exist=there)
+      from_states = .not. there .and. states_have(dir, nkeep)
       if (.not. there .and. .not. from_states) then
          call self%open(model, dir, error)
          return
@@ -572,6 +580,12 @@ contains
                       self%times(1:k), error, states_dir=STATES_DIR, rows=self%rows)
    end subroutine write_arrays
 
+   !> Mark the writer of an MPI run's rank 0 (output_plot_by_parts).
+   subroutine plot_set_by_parts(self)
+      class(plot_file_t), intent(inout) :: self
+      self%by_parts = .true.
+   end subroutine plot_set_by_parts
+
    !> Flush and close (safe to call twice and after errors).
    subroutine plot_close(self, error)
       class(plot_file_t), intent(inout) :: self
@@ -584,15 +598,21 @@ contains
       if (.not. self%live) return
       self%live = .false.
       if (allocated(error)) return          ! the state files stay listed and readable
-      ! d3plot.h5 into place (whole, synced), the XDMF pointed at it, the state files gone:
+      ! d3plot.h5 into place (whole, synced), the XDMF pointed at it, the state files links:
       ! a kill between any two steps leaves an XDMF whose files are all whole
       call sys_fsync(self%dir//'/'//H5NAME//'.tmp', error)
       if (allocated(error)) return
       call sys_rename(self%dir//'/'//H5NAME//'.tmp', self%dir//'/'//H5NAME, error)
       if (allocated(error)) return
+      ! rank 0 of an MPI run (by_parts; no state written here, or only the states a restart
+      ! kept): dx_par_plot publishes the states and the XDMF, and plot_combine replaces this
+      ! d3plot.h5 after, so the XDMF and d3plot.states/ a viewer holds are left alone
+      if (self%nstates == 0 .or. self%by_parts) return
       call xdmf_write(self%xdmf_path, H5NAME, self%title, self%nn, self%ne, self%topo, &
                       self%times(1:self%nstates), error, rows=self%rows)
       if (allocated(error)) return
-      call states_remove_all(self%dir)
+      ! the state files become links to d3plot.h5: a viewer that read the XDMF while the
+      ! job ran still finds every state it lists (live viewing, issue 21)
+      call states_link_all(self%dir, self%nstates, error)
    end subroutine plot_close
 end module dx_plot_hdf5

@@ -28,7 +28,8 @@ module dx_plot_part
                     h5_create_group, h5_write, h5_write_attr, h5_read_attr, h5_read, &
                     h5_create_extendible, h5_append, h5_write_int_attrs, h5_read_int_attrs
    use dx_io_sys, only: sys_rename, sys_mkdir_p
-   use dx_plot_states, only: file_remove, publish
+   use dx_plot_states, only: file_remove, publish, states_write_mesh, states_write_state, &
+                             states_remove_all, LIVE_DIR => STATES_DIR
    use dx_xdmf, only: xdmf_write, state_group
    use dx_plot_cells, only: write_cells, read_cells, cells_topology, cell_topo_t
    use dx_plot_fields, only: plot_state_t, plot_state_alloc, plot_state_derive, plot_state_write, &
@@ -37,7 +38,7 @@ module dx_plot_part
    implicit none
    private
    public :: plot_part_t, plot_part_name, plot_part_state_name, plot_part_count, plot_combine, &
-             plot_part_truncate, PART_FORMAT
+             plot_part_truncate, PART_FORMAT, plot_live_t
 
    character(*), parameter :: PART_FORMAT = 'dynx plot part'
    integer, parameter :: PART_VERSION = 2
@@ -45,6 +46,22 @@ module dx_plot_part
    !> The integer root attributes of a part file after format and version, in write order.
    character(*), parameter :: HEADER(5) = [character(9) :: 'rank', 'nprocs', 'stamp', &
                                            'nn_global', 'ne_global']
+
+   !> Rank 0's view of a running MPI job's parts, for live viewing (plot_live_publish):
+   !> the parts' node and element indices, the initial coordinates and the states' times.
+   type :: part_idx_t
+      integer, allocatable :: n(:), e(:)
+   end type part_idx_t
+   type :: plot_live_t
+      type(part_idx_t), allocatable :: idx(:)
+      real(wp), allocatable :: x0(:, :), times(:)
+      character(:), allocatable :: title
+      type(cell_topo_t) :: topo
+      logical :: rows(NSTATE_FIELDS) = .false.
+      integer :: np = 0, nn = 0, ne = 0
+   contains
+      procedure :: publish => plot_live_publish
+   end type plot_live_t
 
    !> One rank's open part file.
    type :: plot_part_t
@@ -465,6 +482,130 @@ contains
          if (pf(r)%is_open()) call h5_close(pf(r), err2)
       end do
    end subroutine plot_combine
+
+   !> Publish state k of a running MPI job for viewers (issue 21, live viewing; rank 0, once
+   !> every rank's state-k file is on disk): the state in the serial layout as
+   !> DIR/d3plot.states/KKKKKK.h5 (dx_plot_states: temp, fsync, rename), then d3plot.xdmf
+   !> naming states 1..k there, as a serial run does while it runs. The first call reads the
+   !> parts' meshes once, writes the mesh file and (a restart) the states before k. At the
+   !> end of the run plot_combine writes d3plot.h5 and the XDMF over it, and the state
+   !> files become links to it (dx_plot_states: states_link_all). d3plot.h5 and its XDMF
+   !> are not touched here, so their bytes are those of plot_combine alone.
+   subroutine plot_live_publish(self, dir, k, error)
+      class(plot_live_t), intent(inout) :: self
+      character(*), intent(in) :: dir
+      integer, intent(in) :: k
+      type(error_t), allocatable, intent(out) :: error
+      type(h5_file_t) :: f
+      type(error_t), allocatable :: err2
+      real(wp), allocatable :: buf(:), tmp(:)
+      integer, allocatable :: node_ids(:), cells(:, :), elem_ids(:), part_ids(:), rc(:, :)
+      integer :: r, stamp, j
+      character(:), allocatable :: path
+      if (.not. allocated(self%idx)) then
+         call h5_open_read(f, plot_part_name(dir, 0), error)
+         if (allocated(error)) return
+         call read_header(f, plot_part_name(dir, 0), self%np, stamp, self%nn, self%ne, &
+                          self%title, error)
+         call h5_close(f, err2)
+         if (allocated(error)) return
+         allocate(self%idx(0:self%np - 1), self%x0(3, self%nn), node_ids(self%nn), &
+                  elem_ids(self%ne), part_ids(self%ne), self%times(max(16, k)))
+         do r = 0, self%np - 1
+            path = plot_part_name(dir, r)
+            call h5_open_read(f, path, error)
+            if (allocated(error)) return
+            mesh: block
+               call h5_read(f, '/mesh/nodes', buf, error)
+               if (allocated(error)) exit mesh
+               self%idx(r)%n = nint(buf)
+               call h5_read(f, '/mesh/elements', buf, error)
+               if (allocated(error)) exit mesh
+               self%idx(r)%e = nint(buf)
+               call h5_read(f, '/mesh/coordinates', buf, error)
+               if (allocated(error)) exit mesh
+               self%x0(:, self%idx(r)%n) = reshape(buf, [3, size(self%idx(r)%n)])
+               call h5_read(f, '/mesh/node_ids', buf, error)
+               if (allocated(error)) exit mesh
+               node_ids(self%idx(r)%n) = nint(buf)
+               call read_cells(f, size(self%idx(r)%e), rc, error)
+               if (allocated(error)) exit mesh
+               if (.not. allocated(cells)) allocate(cells(size(rc, 1), self%ne))
+               cells(:, self%idx(r)%e) = rc
+               call h5_read(f, '/mesh/element_ids', buf, error)
+               if (allocated(error)) exit mesh
+               elem_ids(self%idx(r)%e) = nint(buf)
+               call h5_read(f, '/mesh/part_ids', buf, error)
+               if (allocated(error)) exit mesh
+               part_ids(self%idx(r)%e) = nint(buf)
+            end block mesh
+            call h5_close(f, err2)
+            if (allocated(error)) return
+         end do
+         self%topo = cells_topology(cells)
+         ! an older run's state files go (their XDMF is rewritten at the first state below)
+         if (k == 1) call states_remove_all(dir)
+         call states_write_mesh(dir, self%x0, node_ids, cells, elem_ids, part_ids, &
+                                self%title, error)
+         if (allocated(error)) return
+         do j = 1, k - 1                  ! a restart: the states kept from before the dump
+            call live_state(j)
+            if (allocated(error)) return
+         end do
+      end if
+      call live_state(k)
+      if (allocated(error)) return
+      call xdmf_write(dir//'/'//XMFNAME, H5NAME, self%title, self%nn, self%ne, self%topo, &
+                      self%times(1:k), error, states_dir=LIVE_DIR, rows=self%rows)
+
+   contains
+
+      !> State j from the parts' state-j files, derived and written as the serial writer's.
+      subroutine live_state(j)
+         integer, intent(in) :: j
+         type(plot_state_t) :: st
+         character(:), allocatable :: g
+         integer :: r, i, n
+         g = state_group(j)
+         do r = 0, self%np - 1
+            path = plot_part_state_name(dir, r, j)
+            call h5_open_read(f, path, error)
+            if (allocated(error)) return
+            part: block
+               if (r == 0) then
+                  call plot_rows_in_file(f, g, self%rows, error)
+                  if (allocated(error)) exit part
+                  call plot_state_alloc(st, self%nn, self%ne, rows=self%rows)
+                  call h5_read_attr(f, g, 'time', st%time, error)
+                  if (allocated(error)) exit part
+               end if
+               do i = 1, NSTATE_FIELDS
+                  if (.not. field_in_part(i)) cycle
+                  if (.not. st%on(i)) cycle
+                  call h5_read(f, g//'/'//trim(PLOT_FIELDS(i)%name), buf, error)
+                  if (allocated(error)) exit part
+                  n = PLOT_FIELDS(i)%ncomp
+                  if (PLOT_FIELDS(i)%centre == CENTRE_NODE) then
+                     st%f(i)%r(:, self%idx(r)%n) = reshape(buf, [n, size(self%idx(r)%n)])
+                  else
+                     st%f(i)%r(:, self%idx(r)%e) = reshape(buf, [n, size(self%idx(r)%e)])
+                  end if
+               end do
+            end block part
+            call h5_close(f, err2)
+            if (allocated(error)) return
+         end do
+         call plot_state_derive(st, self%x0)
+         self%rows = st%on
+         if (j > size(self%times)) then
+            allocate(tmp(2*j))
+            tmp(1:size(self%times)) = self%times
+            call move_alloc(tmp, self%times)
+         end if
+         self%times(j) = st%time
+         call states_write_state(dir, j, st, error)
+      end subroutine live_state
+   end subroutine plot_live_publish
 
    !> The root attributes of a part file (format checked).
    subroutine read_header(f, path, np, stamp, nn, ne, title, error)

@@ -8,12 +8,14 @@
 !> an HDF5 file is only unsafe while it is being rewritten in place (H5Fflush rewrites its
 !> B-trees, heaps and superblock), and no listed file ever is. At the orderly end of the run
 !> the writer (dx_plot_hdf5) renames its d3plot.h5 into place, points the XDMF at it and
-!> removes this directory. The same idea as LS-DYNA's d3plot families (one file per group
+!> replaces each file here by a symbolic link to ../d3plot.h5 (states_link_all; issue 21,
+!> live viewing): d3plot.h5 holds the same groups under the same paths, so a reader (a
+!> ParaView session) that still holds the XDMF of the running job reads on through them. The same idea as LS-DYNA's d3plot families (one file per group
 !> of states); the atomic-rename discipline is the one of Pillai et al., "All file systems
 !> are not created equal", OSDI 2014 (write temp, fsync, rename).
 !> All HDF5 calls go through dx_h5.
 module dx_plot_states
-   use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
+   use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char, c_size_t, c_long
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_IO
    use dx_h5, only: h5_file_t, h5_create, h5_close_keep, h5_create_group
@@ -23,7 +25,7 @@ module dx_plot_states
    implicit none
    private
    public :: STATES_DIR, state_file, states_write_mesh, states_write_state, states_have, &
-             states_clear, states_remove_all, file_remove, publish
+             states_clear, states_remove_all, file_remove, publish, states_link_all, is_link
 
    character(*), parameter :: STATES_DIR = 'd3plot.states'
 
@@ -38,6 +40,18 @@ module dx_plot_states
          character(kind=c_char), intent(in) :: path(*)
          integer(c_int) :: r
       end function c_rmdir
+      function c_symlink(target, path) bind(C, name='symlink') result(r)
+         import :: c_char, c_int
+         character(kind=c_char), intent(in) :: target(*), path(*)
+         integer(c_int) :: r
+      end function c_symlink
+      function c_readlink(path, buf, n) bind(C, name='readlink') result(r)
+         import :: c_char, c_size_t, c_long
+         character(kind=c_char), intent(in) :: path(*)
+         character(kind=c_char), intent(out) :: buf(*)
+         integer(c_size_t), value :: n
+         integer(c_long) :: r
+      end function c_readlink
    end interface
 
 contains
@@ -140,8 +154,41 @@ contains
       call file_remove(dir//'/'//state_file(m + 1)//'.tmp')
       do k = m, kfrom, -1
          call file_remove(dir//'/'//state_file(k))
+         call file_remove(dir//'/'//state_file(k)//'.lnk')
       end do
    end subroutine states_clear
+
+   !> Whether path is a symbolic link (readlink(2) succeeds).
+   logical function is_link(path)
+      character(*), intent(in) :: path
+      character(kind=c_char) :: buf(8)
+      is_link = c_readlink(path//c_null_char, buf, 8_c_size_t) >= 0
+   end function is_link
+
+   !> The end of a run whose d3plot.h5 (same groups, same paths) is in place: the mesh file
+   !> and the state files 1..n become symbolic links to ../d3plot.h5, each made as NAME.lnk
+   !> and renamed over NAME (atomic: a reader or a kill finds the whole file or the link,
+   !> never nothing), so an XDMF read while the job ran stays valid. Later state files (a
+   !> killed run's, none after an orderly end) are removed.
+   subroutine states_link_all(dir, n, error)
+      character(*), intent(in) :: dir
+      integer, intent(in) :: n
+      type(error_t), allocatable, intent(out) :: error
+      character(:), allocatable :: p
+      integer :: k
+      call states_clear(dir, n + 1)
+      do k = n, 0, -1                   ! the mesh file last: its link marks the end
+         p = dir//'/'//state_file(k)
+         if (is_link(p)) cycle
+         call file_remove(p//'.lnk')
+         if (c_symlink('../d3plot.h5'//c_null_char, p//'.lnk'//c_null_char) /= 0) then
+            call set_error(error, 'cannot create the symbolic link '//p//'.lnk', EXIT_IO)
+            return
+         end if
+         call sys_rename(p//'.lnk', p, error)
+         if (allocated(error)) return
+      end do
+   end subroutine states_link_all
 
    !> Remove dir/d3plot.states entirely (state files, the mesh file, the directory).
    subroutine states_remove_all(dir)
@@ -150,6 +197,7 @@ contains
       call states_clear(dir, 1)
       call file_remove(dir//'/'//state_file(0)//'.tmp')
       call file_remove(dir//'/'//state_file(0))
+      call file_remove(dir//'/'//state_file(0)//'.lnk')
       r = c_rmdir(dir//'/'//STATES_DIR//c_null_char)
    end subroutine states_remove_all
 end module dx_plot_states

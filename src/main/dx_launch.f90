@@ -212,6 +212,8 @@ contains
       else if (writer) then
          call out%open(om, cli%outdir, error)
       end if
+      ! MPI (om is the gathered global model): the ranks' parts hold the plot states
+      if (writer .and. .not. associated(om, model)) call out%plot_by_parts()
       call par_agree(error)            ! MPI: rank 0 opened the output; its error stops all
       if (allocated(error)) call die(error, dom)
    end subroutine launch_output

@@ -10,7 +10,7 @@ program dynx_combine
    use dx_strings, only: str
    use dx_plot_part, only: plot_combine, plot_part_name
    use dx_plot_hdf5, only: plot_merge_states
-   use dx_plot_states, only: state_file
+   use dx_plot_states, only: state_file, is_link, states_link_all
    use dx_out_lock, only: out_lock
    implicit none
    character(:), allocatable :: dir, arg
@@ -49,7 +49,11 @@ program dynx_combine
       call exit_process(error%code)
    end if
    inquire(file=plot_part_name(dir, 0), exist=there)
-   if (.not. there) inquire(file=dir//'/'//state_file(0), exist=there)
+   if (.not. there) then
+      ! (a finished run's state files are links to its d3plot.h5, the mesh file last)
+      inquire(file=dir//'/'//state_file(0), exist=there)
+      if (there) there = .not. is_link(dir//'/'//state_file(0))
+   end if
    if (there .and. .not. plot_part_exists()) then
       ! a serial run killed before its end: merge its state files (dx_plot_states)
       call plot_merge_states(dir, nst, error)
@@ -68,6 +72,13 @@ program dynx_combine
       call exit_process(EXIT_IO)
    end if
    call plot_combine(dir, nst, error)
+   if (allocated(error)) then
+      write(error_unit, '(a)') 'dynx-combine: error: '//error%message
+      call exit_process(error%code)
+   end if
+   ! the states an MPI run published while it ran become links to d3plot.h5 (issue 21)
+   inquire(file=dir//'/'//state_file(0), exist=there)
+   if (there) call states_link_all(dir, nst, error)
    if (allocated(error)) then
       write(error_unit, '(a)') 'dynx-combine: error: '//error%message
       call exit_process(error%code)
