@@ -17,6 +17,8 @@ module dx_deck_cards
    use dx_log, only: log_warn
    use dx_deck_expr, only: eval_expression
    use dx_card_echo, only: echo_t
+   use dx_deck_subcase, only: case_tag, next_token
+   use dx_param_dup, only: read_dflag, redefine_param
    use dx_card, only: card_line_t, block_t, param_t, card_t, open_card, std_widths, data_start, &
                       block_title, ncards, card_is_blank, field_text, find_param, field_int, &
                       field_real, field_str, error_at_field, error_at_card, error_at_block, &
@@ -229,7 +231,9 @@ contains
          return
       end if
       if (index(name, 'CASE_BEGIN_') == 1 .or. index(name, 'CASE_END_') == 1) then
-         call case_tag(deck, name, ifile, lineno, error)
+         call case_tag(deck%files, name, ifile, lineno, deck%cur_scid, deck%scid_file, &
+                       deck%scid_line, error)
+         if (deck%cur_scid /= 0) deck%has_subcases = .true.
          blk%name = 'CASE_TAG'         ! no block: the tag only opens or closes a subcase
          return
       end if
@@ -258,63 +262,6 @@ contains
       blk%n = 0
       have_block = name /= 'END'
    end subroutine start_block
-
-   !> *CASE_BEGIN_n opens subcase n (the blocks up to *CASE_END_n belong to it; no nesting),
-   !> *CASE_END_n closes it (LS-DYNA Keyword User's Manual Vol. I, *CASE).
-   subroutine case_tag(deck, name, ifile, lineno, error)
-      type(deck_t), intent(inout) :: deck
-      character(*), intent(in) :: name
-      integer, intent(in) :: ifile, lineno
-      type(error_t), allocatable, intent(out) :: error
-      integer :: n, ios
-      character(:), allocatable :: tail, here
-      here = deck%files(ifile)%s//':'//str(lineno)//': *'//name//': '
-      tail = name(index(name, '_', back=.true.) + 1:)
-      n = 0
-      ios = 1
-      if (len(tail) > 0 .and. verify(tail, '0123456789') == 0) read(tail, *, iostat=ios) n
-      if (ios /= 0 .or. n <= 0) then
-         call set_error(error, here//'the subcase number after the last _ must be a '// &
-            'positive integer (*CASE_BEGIN_n ... *CASE_END_n)')
-      else if (name(6:6) == 'B') then
-         if (deck%cur_scid /= 0) then
-            call set_error(error, here//'subcase '//str(deck%cur_scid)//' (begun at '// &
-               deck%files(deck%scid_file)%s//':'//str(deck%scid_line)//') is still open: '// &
-               'close it with *CASE_END_'//str(deck%cur_scid)//' first (no nesting)')
-            return
-         end if
-         deck%cur_scid = n
-         deck%scid_file = ifile
-         deck%scid_line = lineno
-         deck%has_subcases = .true.
-      else if (deck%cur_scid /= n) then
-         if (deck%cur_scid == 0) then
-            call set_error(error, here//'no *CASE_BEGIN_'//str(n)//' is open')
-         else
-            call set_error(error, here//'subcase '//str(deck%cur_scid)//' is open (begun at '// &
-               deck%files(deck%scid_file)%s//':'//str(deck%scid_line)//'): close it with '// &
-               '*CASE_END_'//str(deck%cur_scid))
-         end if
-      else
-         deck%cur_scid = 0
-      end if
-   end subroutine case_tag
-
-   !> Split off the next blank-separated token of s.
-   subroutine next_token(s, tok)
-      character(:), allocatable, intent(inout) :: s
-      character(:), allocatable, intent(out) :: tok
-      integer :: k
-      s = trim(adjustl(s))
-      k = index(s, ' ')
-      if (k == 0) then
-         tok = s
-         s = ''
-      else
-         tok = s(1:k-1)
-         s = s(k+1:)
-      end if
-   end subroutine next_token
 
    !> Append a card; the card list grows by doubling while the block is read (linear time)
    !> and is cut to its exact size when the block is kept (finish_block: resize_cards).
@@ -402,7 +349,8 @@ contains
       case ('PARAMETER_EXPRESSION')
          call read_parameter_expressions(deck, blk, error)
       case ('PARAMETER_DUPLICATION')
-         call read_parameter_duplication(deck, blk, error)
+         call read_dflag(deck%files(blk%ifile)%s, deck%params(1:deck%nparams), blk, &
+                         deck%dflag, error)
       case default
          ! kept until the deck is read: exact size, not the doubling's up to 2x slots; the
          ! stripped blank cards stay stored (dx_deck gives them back as cards of defaults)
@@ -551,10 +499,7 @@ contains
    end subroutine read_parameters
 
    !> Define parameter p. A redefinition follows the *PARAMETER_DUPLICATION DFLAG in force
-   !> (LS-DYNA manual, *PARAMETER_DUPLICATION): 1 warn and keep the first definition,
-   !> 2 warn and take the new one, 3 error, 4 take the new one silently, 5 keep the first
-   !> silently; without that keyword (dflag 0) the new one replaces silently (dynx's rule
-   !> before the keyword existed). note: the warning text (bad: the error text), else ''.
+   !> (dx_param_dup). note: the warning text (bad: the error text), else ''.
    subroutine add_param(deck, p, note, bad)
       type(deck_t), intent(inout) :: deck
       type(param_t), intent(in) :: p
@@ -562,27 +507,13 @@ contains
       logical, intent(out) :: bad
       type(param_t), allocatable :: t(:)
       integer :: j
+      logical :: replace
       note = ''
       bad = .false.
       j = find_param(deck%params(1:deck%nparams), p%name)
       if (j > 0) then
-         select case (deck%dflag)
-         case (1)
-            note = 'parameter '//p%name//' is defined again; the first definition is kept '// &
-                   '(*PARAMETER_DUPLICATION DFLAG = 1)'
-         case (2)
-            note = 'parameter '//p%name//' is defined again; the new definition replaces '// &
-                   'the first (*PARAMETER_DUPLICATION DFLAG = 2)'
-            deck%params(j) = p
-         case (3)
-            note = 'parameter '//p%name//' is defined again, an error with '// &
-                   '*PARAMETER_DUPLICATION DFLAG = 3'
-            bad = .true.
-         case (5)
-            continue
-         case default   ! 0 (no keyword) and 4
-            deck%params(j) = p
-         end select
+         call redefine_param(deck%dflag, p%name, replace, note, bad)
+         if (replace) deck%params(j) = p
       else
          if (deck%nparams == size(deck%params)) then
             allocate(t(2*size(deck%params)))
@@ -650,39 +581,6 @@ contains
                                           ': field PRMR: '//note)
       end do
    end subroutine read_parameter_expressions
-
-   !> *PARAMETER_DUPLICATION: one card, DFLAG (I10, default 1; 1 to 5, see add_param). It
-   !> governs the parameter definitions that follow it in the deck; a later
-   !> *PARAMETER_DUPLICATION replaces it.
-   subroutine read_parameter_duplication(deck, blk, error)
-      type(deck_t), intent(inout) :: deck
-      type(block_t), intent(in) :: blk
-      type(error_t), allocatable, intent(out) :: error
-      integer :: w(8), v
-      w = std_widths(blk, 8)
-      v = 1
-      if (blk%n > 1) then
-         call card_error(deck, blk, 2, 'one card expected (DFLAG), found '//str(blk%n), error)
-         return
-      end if
-      if (blk%n == 1) then
-         call get_int(deck, blk, 1, 1, w, 'DFLAG', 1, v, error)
-         if (allocated(error)) return
-         if (v == 0) v = 1
-         if (v < 1 .or. v > 5) then
-            call field_error(deck, blk, 1, 1, w, 'DFLAG', 'expected 1 to 5 (1 warn and keep '// &
-               'the first, 2 warn and replace, 3 error, 4 replace, 5 keep the first), got '// &
-               str(v), error)
-            return
-         end if
-         if (len_trim(blk%cards(1)%text) > w(1)) then
-            call card_error(deck, blk, 1, 'only DFLAG (columns 1-'//str(w(1))// &
-               ') is read; the rest of the card must be blank', error)
-            return
-         end if
-      end if
-      deck%dflag = v
-   end subroutine read_parameter_duplication
 
    ! ----------------------------------------------------------------------------------------
    ! the deck's view of the dx_card field readers: the file name and *PARAMETER table of deck

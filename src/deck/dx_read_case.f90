@@ -2,7 +2,8 @@
 !> Oasys PRIMER's "*CASE" notes for how LS-DYNA runs them). Card 1 CASEID (I10) JOBID (A70);
 !> then any number of cards, each either the case's command-line arguments (COMMANDS) or a
 !> list of subcase ids SCID1..SCID8 (the *CASE_BEGIN_n ... *CASE_END_n blocks, or keywords
-!> with CID=n on their keyword line, that the case includes; dx_deck_cards tags the blocks).
+!> with CID=n on their keyword line, that the case includes; dx_deck_cards tags the blocks
+!> through dx_deck_subcase, which also splits this module's card tokens).
 !> LS-DYNA runs every case one after another, each with the keywords outside any subcase
 !> plus its own subcases, and names its files after JOBID. dynx (dx_launch) runs each case
 !> as its own run in OUTDIR/JOBID (blank JOBID: caseCASEID); `--case ID` runs one case.
@@ -13,6 +14,7 @@ module dx_read_case
    use dx_strings, only: str, lower
    use dx_deck_cards, only: deck_t, block_t, card_t, deck_cursor, read_cards
    use dx_deck_registry, only: registry_t
+   use dx_deck_subcase, only: next_token
    use dx_model_input, only: model_input_t
    implicit none
    private
@@ -141,7 +143,7 @@ contains
          if (len(t) == 0) cycle
          if (verify(t, ' ,0123456789') == 0) then        ! SCID1..SCID8
             do while (len(t) > 0)
-               call next_tok(t, tok)
+               call next_token(t, tok, commas=.true.)
                if (len(tok) == 0) exit
                read(tok, *, iostat=ios) n
                if (ios /= 0 .or. n <= 0) then
@@ -153,7 +155,7 @@ contains
             end do
          else                                            ! COMMANDS
             do while (len(t) > 0 .and. c%ok())
-               call next_tok(t, tok)
+               call next_token(t, tok, commas=.true.)
                if (len(tok) == 0) exit
                k = index(tok, '=')
                if (k > 1) then
@@ -168,24 +170,4 @@ contains
       end do
       call c%done(error)
    end subroutine parse_case
-
-   !> next token of s separated by blanks or commas
-   subroutine next_tok(s, tok)
-      character(:), allocatable, intent(inout) :: s
-      character(:), allocatable, intent(out) :: tok
-      integer :: k
-      s = trim(adjustl(s))
-      do while (len(s) > 0)
-         if (s(1:1) /= ',') exit
-         s = trim(adjustl(s(2:)))
-      end do
-      k = scan(s, ' ,')
-      if (k == 0) then
-         tok = s
-         s = ''
-      else
-         tok = s(1:k - 1)
-         s = s(k + 1:)
-      end if
-   end subroutine next_tok
 end module dx_read_case
