@@ -101,15 +101,9 @@ contains
             call rs_add_sum(rs, S_MOM + j - 1, racc, 1 + j)
          end do
       end if
-      if (present(nodes)) then
-         do j = 1, size(nodes)
-            call node_terms(nodes(j))
-         end do
-      else
-         do j = 1, size(model%mass)
-            call node_terms(j)
-         end do
-      end if
+      do j = 1, node_count(model, nodes)
+         call node_terms(node_at(j, nodes))
+      end do
       call element_terms(model, vold, nreal, slot, rs, held)
    contains
       subroutine node_terms(nd)
@@ -315,18 +309,10 @@ contains
       type(rsum_t) :: rs
       integer :: j
       call rs_init(rs, 1)
-      if (present(nodes)) then
-         do j = 1, size(nodes)
-            call rs_add(rs, 1, model%mass(nodes(j)))
-         end do
-      else
-         do j = 1, size(model%mass)
-            call rs_add(rs, 1, model%mass(j))
-         end do
-      end if
-      if (present(reduce)) then
-         if (reduce) call rs_reduce(rs)
-      end if
+      do j = 1, node_count(model, nodes)
+         call rs_add(rs, 1, model%mass(node_at(j, nodes)))
+      end do
+      call reduce_if(rs, reduce)
       m = rs_value(rs, 1)
    end function exact_mass
 
@@ -339,18 +325,10 @@ contains
       type(rsum_t) :: rs
       integer :: j
       call rs_init(rs, 1)
-      if (present(nodes)) then
-         do j = 1, size(nodes)
-            call node_term(nodes(j))
-         end do
-      else
-         do j = 1, size(model%mass)
-            call node_term(j)
-         end do
-      end if
-      if (present(reduce)) then
-         if (reduce) call rs_reduce(rs)
-      end if
+      do j = 1, node_count(model, nodes)
+         call node_term(node_at(j, nodes))
+      end do
+      call reduce_if(rs, reduce)
       e0 = 0.5_wp*rs_value(rs, 1)
    contains
       subroutine node_term(nd)
@@ -360,4 +338,34 @@ contains
             call rs_add(rs, 1, model%rinert(nd)*dot_product(model%w(:, nd), model%w(:, nd)))
       end subroutine node_term
    end function exact_initial_ke
+
+   ! ----------------------------------------------------------------------------------------
+   ! the node list of the owned-node sums: the given nodes, or every node when absent
+
+   !> The number of nodes in the list.
+   pure integer function node_count(model, nodes)
+      type(model_t), intent(in) :: model
+      integer, intent(in), optional :: nodes(:)
+      if (present(nodes)) then
+         node_count = size(nodes)
+      else
+         node_count = size(model%mass)
+      end if
+   end function node_count
+
+   !> The j-th node of the list.
+   pure integer function node_at(j, nodes)
+      integer, intent(in) :: j
+      integer, intent(in), optional :: nodes(:)
+      node_at = j
+      if (present(nodes)) node_at = nodes(j)
+   end function node_at
+
+   !> rs summed over the ranks when reduce is present and true (collective).
+   subroutine reduce_if(rs, reduce)
+      type(rsum_t), intent(inout) :: rs
+      logical, intent(in), optional :: reduce
+      if (.not. present(reduce)) return
+      if (reduce) call rs_reduce(rs)
+   end subroutine reduce_if
 end module dx_energy_exact
