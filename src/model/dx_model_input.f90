@@ -241,6 +241,11 @@ module dx_model_input
       type(motion_in_t), allocatable :: motions(:)
       type(ivel_in_t), allocatable :: ivels(:)
       type(csys_in_t), allocatable :: csys(:)     !< *DEFINE_COORDINATE_SYSTEM
+      ! --- *NODE_MERGE(_SET, _TOLERANCE) (dx_read_merge)
+      integer, allocatable :: merge_nodes(:), merge_sets(:)   !< candidates: labels, node sets
+      real(wp) :: merge_tol = -1.0_wp                         !< TOLR (< 0: not given)
+      type(origin_t) :: merge_src                             !< the last merge keyword
+      integer, allocatable :: node_alias(:, :)   !< (2, n): merged-away label, kept label
       type(load_node_in_t), allocatable :: node_loads(:)
       type(load_node_in_t), allocatable :: node_set_loads(:)  !< *LOAD_NODE_SET (nid = NSID)
       type(load_seg_in_t), allocatable :: seg_loads(:)
