@@ -98,7 +98,8 @@ def block_emc_ball_shell(work):
     rows = []
     for d in (od, odf):
         with open(os.path.join(d, 'emcstat')) as f:
-            rows.append([l_.split() for l_ in f if l_.strip() and not l_.startswith('#')][-1])
+            rows.append([l_.split() for l_ in f
+                         if l_.strip() and l_.lstrip()[:1] in tuple('+-.0123456789')][-1])
     dist = math.sqrt(sum((float(rows[0][14 + i]) - float(rows[1][14 + i])) ** 2
                          for i in range(3)))
     return ('Measured (`scripts/doc_numbers.py`): smoothed (`deck.k`), largest drift over the '

@@ -93,7 +93,7 @@ def main():
         incontact = 0
         with open(os.path.join(r['dir'], 'emcstat')) as f:
             for line in f:
-                if not line.startswith('#') and line.strip():
+                if line.lstrip()[:1] in tuple('+-.0123456789') and line.strip():
                     incontact += int(line.split()[13]) > 0
         os.remove(os.path.join(r['dir'], 'emcstat'))
         r['incontact'] = incontact

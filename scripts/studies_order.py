@@ -206,7 +206,8 @@ BAR_UR = (BAR_T - 0.01) - 0.5 * BAR_TC
 
 def emcstat(d):
     with open(os.path.join(d, 'emcstat')) as f:
-        return [[float(x) for x in l.split()] for l in f if l.strip() and not l.startswith('#')]
+        return [[float(x) for x in l.split()] for l in f
+                if l.strip() and l.lstrip()[:1] in tuple('+-.0123456789')]
 
 
 def bars_case(dt):

@@ -1,6 +1,9 @@
 !> Model build of constraints and loads: expands *NODE TC/RC, *BOUNDARY_SPC_*,
 !> *BOUNDARY_PRESCRIBED_MOTION_*, *INITIAL_VELOCITY(_GENERATION, _NODE), *LOAD_NODE_*,
-!> *LOAD_SEGMENT(_SET) and *RIGIDWALL_PLANAR onto dense node and segment lists (dx_model_build
+!> *LOAD_SEGMENT(_SET) and *RIGIDWALL_PLANAR onto dense node and segment lists. An SPC with
+!> CID (a skew constraint) becomes, per node and constrained local axis e, a prescribed
+!> zero velocity along e (prescribed_t dof 4, curve 0): the node moves freely in the other
+!> directions (the LS-DYNA meaning of CID on *BOUNDARY_SPC) (dx_model_build
 !> calls it after the sets). No paper: bookkeeping of the LS-DYNA keyword manual's fields.
 module dx_build_loads
    use dx_kinds, only: wp
@@ -8,7 +11,7 @@ module dx_build_loads
    use dx_error, only: error_t, set_error
    use dx_strings, only: str
    use dx_model, only: model_t, prescribed_t, load_segment_t, element_family, family_t
-   use dx_model_input, only: model_input_t, IVEL_SET, IVEL_NODE, IVEL_GEN
+   use dx_model_input, only: model_input_t, IVEL_SET, IVEL_NODE, IVEL_GEN, origin_t
    use dx_build_common, only: maps_t, at, at_line, set_nodes, curve_index, node_index, &
                               dense_segments
    implicit none
@@ -26,13 +29,14 @@ contains
       logical, allocatable :: fix(:, :)
       integer, allocatable :: nodes(:)
       integer :: i, k, n, c
-      type(prescribed_t), allocatable :: pr(:)
+      type(prescribed_t), allocatable :: pr(:), skew(:)
       logical, allocatable :: rot(:)
+      integer :: j, d
       logical, parameter :: code(3, 0:7) = reshape([.false., .false., .false., &
          .true., .false., .false., .false., .true., .false., .false., .false., .true., &
          .true., .true., .false., .false., .true., .true., .true., .false., .true., &
          .true., .true., .true.], [3, 8])
-      allocate(fix(6, model%nn))
+      allocate(fix(6, model%nn), skew(0))
       fix = .false.
       do i = 1, model%nn
          fix(1:3, i) = code(:, inp%node_tc(i))
@@ -46,6 +50,17 @@ contains
             else
                nodes = [node_index(inp, mp, s%id, s%src, 'NID', error)]
                if (allocated(error)) return
+            end if
+            if (s%cid /= 0) then
+               j = csys_at(inp, s%cid, s%src, error)
+               if (allocated(error)) return
+               do k = 1, size(nodes)
+                  do d = 1, 3
+                     if (s%dof(d)) skew = [skew, prescribed_t(node=nodes(k), dof=4, vad=0, &
+                        curve=0, sf=0.0_wp, dir=inp%csys(j)%axes(:, d))]
+                  end do
+               end do
+               cycle
             end if
             do k = 1, size(nodes)
                fix(:, nodes(k)) = fix(:, nodes(k)) .or. s%dof
@@ -92,8 +107,28 @@ contains
             end do
          end associate
       end do
+      ! skew SPCs last: the velocity along a constrained local axis is zero after the step's
+      ! prescribed motions (dx_constraints apply_prescribed, curve 0)
+      pr = [pr, skew]
       call move_alloc(pr, model%prescribed)
    end subroutine build_bcs
+
+   !> The index in inp%csys of *DEFINE_COORDINATE_SYSTEM id (an error naming CID if none).
+   function csys_at(inp, id, src, error) result(j)
+      type(model_input_t), intent(in) :: inp
+      integer, intent(in) :: id
+      type(origin_t), intent(in) :: src
+      type(error_t), allocatable, intent(inout) :: error
+      integer :: j, k
+      j = 0
+      if (allocated(inp%csys)) then
+         do k = 1, size(inp%csys)
+            if (inp%csys(k)%id == id) j = k
+         end do
+      end if
+      if (j == 0) call set_error(error, at(inp, src)//'field CID: coordinate system '// &
+         str(id)//' is not defined (*DEFINE_COORDINATE_SYSTEM)')
+   end function csys_at
 
    !> A 2D deck (dx_quad2d; all its parts are 2D, dx_model_build): the z DOF of every node is
    !> fixed, so every z component of a nodal quantity stays zero whatever the loads; in

@@ -104,6 +104,11 @@ contains
             return
          end if
       end do
+      if (allocated(inp%node_alias)) then     ! *NODE_MERGE: a merged-away label names its
+         do i = 1, size(inp%node_alias, 2)    ! kept node (dx_read_merge)
+            call mp%node%insert(inp%node_alias(1, i), mp%node%get(inp%node_alias(2, i)), old)
+         end do
+      end if
       model%nn = inp%nn
       model%node_label = inp%node_label(1:inp%nn)
       model%x0 = inp%x(:, 1:inp%nn)

@@ -331,7 +331,14 @@ contains
       if (allocated(model%prescribed)) then
          do k = 1, size(model%prescribed)
             nd = model%prescribed(k)%node
-            if (rs%node_body(nd) /= 0) then
+            if (rs%node_body(nd) /= 0 .and. model%prescribed(k)%curve == 0) then  ! skew SPC
+               call set_error(error, constraint_where(inp, model, nset_map, nd, .true.)// &
+                  'node '//str(model%node_label(nd))//' of rigid body '// &
+                  str(rs%bodies(rs%node_body(nd))%label)//' has a nodal constraint '// &
+                  '(*BOUNDARY_SPC_* with CID); constrain rigid bodies with CMO/CON1/CON2 '// &
+                  'of *MAT_RIGID or *BOUNDARY_PRESCRIBED_MOTION_RIGID')
+               return
+            else if (rs%node_body(nd) /= 0) then
                call set_error(error, constraint_where(inp, model, nset_map, nd, .false.)// &
                   'node '//str(model%node_label(nd))//' of rigid body '// &
                   str(rs%bodies(rs%node_body(nd))%label)//' has a nodal prescribed motion; '// &

@@ -17,6 +17,7 @@ module dx_deck
    use dx_read_controls, only: register_controls
    use dx_read_sets, only: register_sets, sets_finish
    use dx_read_loads, only: register_loads, loads_finish
+   use dx_read_merge, only: register_merge, merge_finish
    use dx_read_curves, only: register_curves
    use dx_read_rigid, only: register_rigid
    use dx_read_contact, only: register_contact
@@ -55,6 +56,7 @@ contains
       call register_output(reg)
       call register_twod(reg)
       call register_case(reg)
+      call register_merge(reg)
    end function new_registry
 
    !> Read the deck at path into the unresolved model input (no build).
@@ -194,6 +196,8 @@ contains
       end do
       if (allocated(deck%title)) inp%title = deck%title
       call sets_finish(inp, error)
+      if (allocated(error)) return
+      call merge_finish(inp, error)
       if (allocated(error)) return
       call loads_finish(inp, error)
       if (allocated(error)) return

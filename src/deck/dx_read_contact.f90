@@ -90,7 +90,10 @@ contains
       if (blk%n >= i0 + 1 .and. c%ok()) then
          call c%next()
          ct%line2 = c%card_line()
-         call c%real('FS', 0.0_wp, ct%fs, min=0.0_wp)
+         call c%real('FS', 0.0_wp, ct%fs)
+         if (c%ok() .and. ct%fs < 0.0_wp) call c%fail('FS', 'must be >= 0, got '// &
+            rstr(ct%fs)//' (-1, the parts'' friction of *PART_CONTACT, and -2, friction '// &
+            'tables, are not implemented)')
          call c%real('FD', 0.0_wp, ct%fd, min=0.0_wp)
          call c%real('DC', 0.0_wp, ct%dc, min=0.0_wp)
          call c%real('VC', 0.0_wp, ct%vc, min=0.0_wp)

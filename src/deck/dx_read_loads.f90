@@ -2,9 +2,10 @@
 !> *BOUNDARY_SPC_NODE/_SET, *BOUNDARY_PRESCRIBED_MOTION_NODE/_SET, *INITIAL_VELOCITY,
 !> *INITIAL_VELOCITY_NODE, *INITIAL_VELOCITY_GENERATION, *LOAD_NODE_POINT, *LOAD_SEGMENT,
 !> *LOAD_SEGMENT_SET, *RIGIDWALL_PLANAR, *DEFINE_COORDINATE_SYSTEM (used by ICID of
-!> *INITIAL_VELOCITY_GENERATION). Layouts and defaults: LS-DYNA Keyword User's
-!> Manual, Vol. I. Options dynx cannot honour (local coordinate systems, boxes, rotational
-!> velocities on solids, follower forces, ...) give an error naming the field.
+!> *INITIAL_VELOCITY(_NODE, _GENERATION), CID of *LOAD_NODE_* and *BOUNDARY_SPC_*).
+!> Layouts and defaults: LS-DYNA Keyword User's Manual, Vol. I. Options dynx cannot honour
+!> (boxes, rotational velocities on solids, follower forces, ...) give an error naming the
+!> field.
 module dx_read_loads
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error
@@ -13,7 +14,7 @@ module dx_read_loads
    use dx_deck_registry, only: registry_t
    use dx_model_input, only: model_input_t, origin, spc_in_t, motion_in_t, ivel_in_t, &
                              load_node_in_t, load_seg_in_t, wall_in_t, IVEL_SET, IVEL_NODE, &
-                             IVEL_GEN, csys_in_t
+                             IVEL_GEN, csys_in_t, origin_t
    use dx_deck_buffers, only: spc_buffer_t, motion_buffer_t, ivel_buffer_t, &
                               load_node_buffer_t, load_seg_buffer_t
    implicit none
@@ -61,12 +62,15 @@ contains
          s = spc_in_t()
          s%is_set = blk%base == 'BOUNDARY_SPC_SET'
          call c%id(trim(merge('NSID', 'NID ', s%is_set)), s%id)
-         call c%zero_int('CID', 'local coordinate systems')
+         call c%int('CID', 0, s%cid, min=0)
          do k = 1, 6
             call c%int(trim(dn(k)), 0, d)
             if (c%ok() .and. d /= 0 .and. d /= 1) call c%fail(trim(dn(k)), 'must be 0 '// &
                '(free) or 1 (constrained), got '//str(d))
             s%dof(k) = d == 1
+            if (c%ok() .and. k > 3 .and. s%dof(k) .and. s%cid /= 0) call c%fail(trim(dn(k)), &
+               'a rotation constrained in a local system (CID /= 0) is not implemented '// &
+               '(translations DOFX DOFY DOFZ along the local axes are)')
          end do
          if (c%halt()) exit
          s%src = origin(blk%ifile, c%card_line(), blk%name)
@@ -155,7 +159,7 @@ contains
             call c%fail_card(ic, 'NSID and NSIDEX must be >= 0')
          call c%zero_int('BOXID', 'boxes')
          call c%zero_int('IRIGID', 'rigid bodies')
-         call c%zero_int('ICID', 'local coordinate systems')
+         call c%int('ICID', 0, r%icid, min=0)
          r%src = origin(blk%ifile, c%card_line(), blk%name)
          if (c%ok() .and. ic + 1 > blk%n) &
             call c%fail_card(ic, 'missing card 2 (VX VY VZ VXR VYR VZR)')
@@ -191,7 +195,7 @@ contains
          call c%seek(ic)
          call c%id('NID', r%id)
          call velocity(c, ['VX ', 'VY ', 'VZ ', 'VXR', 'VYR', 'VZR'], r%v, r%vr)
-         call c%zero_int('ICID', 'local coordinate systems')
+         call c%int('ICID', 0, r%icid, min=0)
          if (c%halt()) exit
          r%src = origin(blk%ifile, c%card_line(), blk%name)
          call buf%push(r)
@@ -296,7 +300,7 @@ contains
          call c%id('LCID', l%lcid)
          call c%real('SF', 1.0_wp, l%sf)
          if (l%sf == 0.0_wp) l%sf = 1.0_wp
-         call c%zero_int('CID', 'local coordinate systems')
+         call c%int('CID', 0, l%cid, min=0)
          do k = 1, 3
             call c%zero_int('M'//str(k), 'follower forces')
          end do
@@ -387,8 +391,12 @@ contains
 
    !> After the whole deck (sets resolved): each *LOAD_NODE_SET card becomes the same load
    !> on every node of its set, in the set's order (LS-DYNA: each node carries SF x curve).
-   !> An *INITIAL_VELOCITY_GENERATION with ICID: VX VY VZ are components along the axes of
-   !> that *DEFINE_COORDINATE_SYSTEM; they become global components v = sum_k v_k axis_k.
+   !> An *INITIAL_VELOCITY(_NODE, _GENERATION) with ICID: the velocities (VX VY VZ, the
+   !> rotational VXR VYR VZR, the exempted VXE VYE VZE) are components along the axes of that
+   !> *DEFINE_COORDINATE_SYSTEM; they become global components v = sum_k v_k axis_k.
+   !> A *LOAD_NODE_* with CID: the force (moment) along local axis d becomes its global
+   !> components, one nodal load per nonzero component (sf axis_d(k), same curve): the sum is
+   !> the local load (LS-DYNA Keyword User's Manual, *LOAD_NODE, CID).
    subroutine loads_finish(inp, error)
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
@@ -399,19 +407,14 @@ contains
       if (allocated(inp%ivels)) then
          do i = 1, size(inp%ivels)
             if (inp%ivels(i)%icid == 0) cycle
-            j = 0
-            do k = 1, size(inp%csys)
-               if (inp%csys(k)%id == inp%ivels(i)%icid) j = k
-            end do
-            if (j == 0) then
-               call set_error(error, inp%files(inp%ivels(i)%src%ifile)%s//':'// &
-                  str(inp%ivels(i)%src%line)//': *'//inp%ivels(i)%src%key// &
-                  ': field ICID: coordinate system '//str(inp%ivels(i)%icid)// &
-                  ' is not defined (*DEFINE_COORDINATE_SYSTEM)')
-               return
-            end if
-            inp%ivels(i)%v = matmul(inp%csys(j)%axes, inp%ivels(i)%v)
-            inp%ivels(i)%icid = 0
+            j = csys_index(inp, inp%ivels(i)%icid, inp%ivels(i)%src, 'ICID', error)
+            if (j == 0) return
+            associate (r => inp%ivels(i), a => inp%csys(j)%axes)
+               r%v = matmul(a, r%v)
+               r%vr = matmul(a, r%vr)
+               r%vex = matmul(a, r%vex)
+               r%icid = 0
+            end associate
          end do
       end if
       do i = 1, size(inp%node_set_loads)
@@ -435,7 +438,43 @@ contains
       call buf%flush(inp%node_loads)
       deallocate(inp%node_set_loads)
       allocate(inp%node_set_loads(0))
+      if (.not. any(inp%node_loads(:)%cid /= 0)) return
+      do i = 1, size(inp%node_loads)
+         l = inp%node_loads(i)
+         if (l%cid == 0) then
+            call buf%push(l)
+            cycle
+         end if
+         j = csys_index(inp, l%cid, l%src, 'CID', error)
+         if (j == 0) return
+         do k = 1, 3
+            if (inp%csys(j)%axes(k, mod(l%dof - 1, 4) + 1) == 0.0_wp) cycle
+            call buf%push(load_node_in_t(nid=l%nid, dof=k + 4*((l%dof - 1)/4), lcid=l%lcid, &
+                          cid=0, sf=l%sf*inp%csys(j)%axes(k, mod(l%dof - 1, 4) + 1), src=l%src))
+         end do
+      end do
+      deallocate(inp%node_loads)
+      allocate(inp%node_loads(0))
+      call buf%flush(inp%node_loads)
    end subroutine loads_finish
+
+   !> The index in inp%csys of coordinate system id (0 with an error naming the field when it
+   !> is not defined).
+   function csys_index(inp, id, src, field, error) result(j)
+      type(model_input_t), intent(in) :: inp
+      integer, intent(in) :: id
+      type(origin_t), intent(in) :: src
+      character(*), intent(in) :: field
+      type(error_t), allocatable, intent(inout) :: error
+      integer :: j, k
+      j = 0
+      do k = 1, size(inp%csys)
+         if (inp%csys(k)%id == id) j = k
+      end do
+      if (j == 0) call set_error(error, inp%files(src%ifile)%s//':'//str(src%line)//': *'// &
+         src%key//': field '//field//': coordinate system '//str(id)// &
+         ' is not defined (*DEFINE_COORDINATE_SYSTEM)')
+   end function csys_index
 
    !> *LOAD_SEGMENT: LCID SF AT N1 N2 N3 N4 (N5 must be blank: no higher-order segments);
    !> *LOAD_SEGMENT_SET: SSID LCID SF AT

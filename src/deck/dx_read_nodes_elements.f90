@@ -1,5 +1,5 @@
-!> Readers for the mesh and part keywords: *NODE, *ELEMENT_SOLID, *PART, *SECTION_SOLID,
-!> *HOURGLASS. Field layouts and defaults: LS-DYNA Keyword User's Manual, Vol. I.
+!> Readers for the mesh and part keywords: *NODE, *ELEMENT_SOLID, *PART (and *PART_CONTACT:
+!> its card 3 checked by part_contact_card), *SECTION_SOLID, *HOURGLASS. Field layouts and defaults: LS-DYNA Keyword User's Manual, Vol. I.
 !> *NODE: NID X Y Z TC RC as i8,3e16,2i8 (long: i20,3e20,2i20).
 !> *ELEMENT_SOLID: EID PID on card 1 and N1..N10 on card 2 (i8 fields, long i20), or the
 !> older one-card layout EID PID N1..N8, recognised by text beyond column 16 (long: 40).
@@ -24,6 +24,7 @@ contains
       call reg%add('NODE', read_node)
       call reg%add('ELEMENT_SOLID', read_element_solid)
       call reg%add('PART', read_part)
+      call reg%add('PART_CONTACT', read_part)
       call reg%add('SECTION_SOLID', read_section_solid, title=.true.)
       call reg%add('HOURGLASS', read_hourglass, title=.true.)
    end subroutine register_nodes_elements
@@ -186,9 +187,11 @@ contains
       type(model_input_t), intent(inout) :: inp
       type(error_t), allocatable, intent(out) :: error
       integer :: ic, v, k
+      logical :: contact
       type(part_t) :: p
       type(card_t) :: c
       character(len=6), parameter :: unsup(3) = ['GRAV  ', 'ADPOPT', 'TMID  ']
+      contact = blk%base == 'PART_CONTACT'
       call deck_cursor(deck, blk, c)
       call c%need(2, 'missing card 2 (PID SECID MID EOSID HGID GRAV ADPOPT TMID)')
       ic = 1
@@ -220,11 +223,49 @@ contains
          if (c%ok() .and. p%secid <= 0) call c%fail('SECID', 'a section id is required')
          if (c%ok() .and. p%mid <= 0) call c%fail('MID', 'a material id is required')
          if (c%halt()) exit
+         ! card 3 of the block's last part left blank (stripped as layout: a blank line
+         ! before the next keyword) or missing: a card of defaults, as LS-DYNA reads it
+         if (contact .and. ic + 1 <= blk%n) then
+            call c%seek(ic + 1)
+            call part_contact_card(c)
+            if (c%halt()) exit
+         end if
          call input_add_part(inp, p, origin(blk%ifile, blk%cards(ic)%line, blk%name))
-         ic = ic + 1
+         ic = ic + merge(2, 1, contact)
       end do
       call c%done(error)
    end subroutine read_part
+
+   !> *PART_CONTACT card 3: FS FD DC VC OPTT SFT SSF CPARM8 (LS-DYNA Keyword User's Manual,
+   !> *PART). FS FD DC VC are the part's friction (static, dynamic, decay, viscous): LS-DYNA
+   !> uses them only in a *CONTACT whose FS is -1, which dynx refuses naming FS, so they
+   !> cannot act here; they are range-checked (>= 0) and accepted. OPTT (a contact thickness
+   !> for the part's shells and beams), SFT (its scale factor), SSF (a scale factor of the
+   !> part's slave penalty stiffness) and CPARM8 (spot-weld beams in *CONTACT_AUTOMATIC_
+   !> GENERAL) would change the contact forces and are not implemented: a value other than
+   !> the default (0; SFT and SSF also 1) is an error naming the field.
+   subroutine part_contact_card(c)
+      type(card_t), intent(inout) :: c
+      real(wp) :: x
+      integer :: k
+      character(len=2), parameter :: fr(4) = ['FS', 'FD', 'DC', 'VC']
+      do k = 1, 4
+         call c%real(trim(fr(k)), 0.0_wp, x, min=0.0_wp)
+      end do
+      call c%real('OPTT', 0.0_wp, x)
+      if (c%ok() .and. x /= 0.0_wp) call c%fail('OPTT', 'a contact thickness of the part ('// &
+         rstr(x)//') is not implemented (0: the section''s thickness)')
+      call c%real('SFT', 0.0_wp, x)
+      if (c%ok() .and. x /= 0.0_wp .and. x /= 1.0_wp) call c%fail('SFT', 'a contact '// &
+         'thickness scale factor ('//rstr(x)//') is not implemented (0 or 1)')
+      call c%real('SSF', 0.0_wp, x)
+      if (c%ok() .and. x /= 0.0_wp .and. x /= 1.0_wp) call c%fail('SSF', 'a part''s slave '// &
+         'penalty scale factor ('//rstr(x)//') is not implemented (0 or 1; scale the '// &
+         'contact''s SFS instead)')
+      call c%real('CPARM8', 0.0_wp, x)
+      if (c%ok() .and. x /= 0.0_wp) call c%fail('CPARM8', 'spot-weld beam contact ('// &
+         'CPARM8 = '//rstr(x)//') is not implemented')
+   end subroutine part_contact_card
 
    !> *SECTION_SOLID: SECID ELFORM AET per card (each after its title card with _TITLE).
    subroutine read_section_solid(deck, blk, inp, error)

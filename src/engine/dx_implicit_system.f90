@@ -131,6 +131,12 @@ contains
       if (allocated(model%prescribed)) then
          do k = 1, size(model%prescribed)
             associate (pr => model%prescribed(k))
+               if (pr%curve == 0) then
+                  call set_error(error, '*BOUNDARY_SPC_*: node '// &
+                     str(model%node_label(pr%node))//': field CID: a constraint along the '// &
+                     'axes of a *DEFINE_COORDINATE_SYSTEM (skew SPC) is explicit only; the '// &
+                     'implicit solver takes SPCs along x, y, z (CID = 0)'); return
+               end if
                if (pr%vad /= 2 .or. pr%dof < 1 .or. pr%dof > 3) then
                   call set_error(error, '*BOUNDARY_PRESCRIBED_MOTION_*: node '// &
                      str(model%node_label(pr%node))//': field VAD/DOF: the implicit solver '// &

@@ -4,7 +4,8 @@
 !>  1. the input echo (dx_card_echo): every keyword block read, every field its reader took
 !>     with its value, `default` where the field was blank or missing;
 !>  2. the model summary: nodes, elements per family, parts with material, density and mass
-!>     (rho V0 summed over the part's elements, as matsum's mass), the total mass;
+!>     (rho V0 summed over the part's elements, as matsum's mass), the total mass, and the
+!>     units hint (dx_units_hint: the common LS-DYNA unit sets the materials fit);
 !>  3. the smallest element time steps at t = 0 with their element ids, solid and 2D
 !>     families: TSSFAC L/c with L the family's time-step length (elem_length: V/A_max for
 !>     the hexahedron) and c the material's wave speed at V/V0 = 1 (the solver's own step
@@ -20,6 +21,7 @@ module dx_d3hsp
    use dx_matsum, only: part_masses
    use dx_timer, only: peak_memory_kb
    use dx_io_sys, only: sys_write_file
+   use dx_units_hint, only: units_hint
    implicit none
    private
    public :: write_d3hsp
@@ -101,7 +103,43 @@ contains
          end associate
       end do
       if (allocated(pm)) call put(txt, '  total mass     '//rstr(sum(pm)))
+      call hint(txt, model)
    end subroutine summary
+
+   !> The units hint (dx_units_hint) from each solid or 2D material's density and wave speed
+   !> at t = 0 (first block of a part using it, zero history as in time_steps).
+   subroutine hint(txt, model)
+      character(:), allocatable, intent(inout) :: txt
+      type(model_t), intent(in) :: model
+      real(wp), allocatable :: rho(:), cs(:), hv0(:, :)
+      logical, allocatable :: seen(:)
+      real(wp) :: c(1)
+      integer :: b, im
+      type(family_t) :: f
+      allocate(rho(0), cs(0), seen(size(model%mats)))
+      seen = .false.
+      do b = 1, size(model%blocks)
+         associate (blk => model%blocks(b))
+            f = element_family(blk%etype)
+            if (f%rot .or. f%nen > 8) cycle
+            im = model%parts(blk%ipart)%imat
+            if (im == 0) cycle
+            if (seen(im)) cycle
+            seen(im) = .true.
+            associate (mat => model%mats(im)%m)
+               if (mat%is_rigid .or. .not. (mat%ro > 0.0_wp)) cycle
+               if (allocated(hv0)) deallocate(hv0)
+               allocate(hv0(1, max(1, blk%nhv)))
+               hv0 = 0.0_wp
+               call mat%wave_speed(1, [1.0_wp], hv0, c)
+               if (.not. (c(1) > 0.0_wp)) cycle
+               rho = [rho, mat%ro]
+               cs = [cs, c(1)]
+            end associate
+         end associate
+      end do
+      txt = txt//units_hint(rho, cs, model%ctrl%endtim)
+   end subroutine hint
 
    !> The NSMALL smallest TSSFAC L/c at t = 0 of the solid and 2D elements, with their ids.
    subroutine time_steps(txt, model)

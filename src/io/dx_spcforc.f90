@@ -6,13 +6,14 @@
 !> The labels follow LS-DYNA's spcforc as we know it from its users' files (LS-DYNA Keyword
 !> User's Manual Vol. I, *DATABASE_SPCFORC: "SPC reaction forces"); the exact column layout
 !> could not be checked against a reference file, so readers should split at the labels.
-!> Numbers with 10 significant digits (es18.10e3, as glstat). dynx's SPCs act in the global
-!> axes, so 'local' = global; rotational SPCs carry no moment in solid-only models.
+!> Numbers with 10 significant digits (es18.10e3, as glstat). Reactions are printed in the
+!> global axes (also those of skew SPCs), under LS-DYNA's label 'local'; rotational SPCs carry no moment in solid-only models.
 !> The reaction is what the constraint applies to hold its degrees of freedom at rest:
 !> R = -f on each constrained translation, f the node's summed internal, contact and
 !> external force of the step (model%f); the other components are 0. (Before the first cycle
 !> a constrained degree of freedom with an initial velocity is brought to rest by an extra
-!> m v0/dt, which R does not include.) Prescribed motions are not SPCs (LS-DYNA reports them
+!> m v0/dt, which R does not include.) A skew SPC (CID: zero velocity along local axes e)
+!> reacts with R = -(f.e) e per constrained axis, in global components. Prescribed motions are not SPCs (LS-DYNA reports them
 !> in bndout). In an MPI run f is gathered to rank 0 (the serial sums, bit for bit).
 module dx_spcforc
    use dx_kinds, only: wp
@@ -41,20 +42,35 @@ contains
       type(model_t), intent(in) :: model
       integer, allocatable, intent(out) :: nodes(:)
       real(wp), allocatable, intent(out) :: r(:, :)
-      logical, allocatable :: mask(:, :)
+      logical, allocatable :: mask(:, :), skewed(:)
       integer :: k, i
       allocate(nodes(0), r(3, 0))
       if (.not. allocated(model%spcs) .or. .not. allocated(model%f)) return
-      allocate(mask(3, model%nn))
+      allocate(mask(3, model%nn), skewed(model%nn))
       mask = .false.
+      skewed = .false.
       do k = 1, size(model%spcs)
          mask(:, model%spcs(k)%node) = mask(:, model%spcs(k)%node) .or. model%spcs(k)%dof(1:3)
       end do
-      nodes = pack([(i, i = 1, model%nn)], any(mask, dim=1))
+      if (allocated(model%prescribed)) then
+         do k = 1, size(model%prescribed)
+            if (model%prescribed(k)%curve == 0) skewed(model%prescribed(k)%node) = .true.
+         end do
+      end if
+      nodes = pack([(i, i = 1, model%nn)], any(mask, dim=1) .or. skewed)
       deallocate(r)
       allocate(r(3, size(nodes)))
       do i = 1, size(nodes)
          r(:, i) = merge(-model%f(:, nodes(i)), 0.0_wp, mask(:, nodes(i))) + 0.0_wp  ! (no -0)
+      end do
+      if (.not. any(skewed)) return
+      ! skew SPCs (CID): R = -(f.e) e along each constrained local axis e, in record order
+      do k = 1, size(model%prescribed)
+         associate (p => model%prescribed(k))
+            if (p%curve /= 0) cycle
+            i = findloc(nodes, p%node, dim=1)
+            r(:, i) = r(:, i) - dot_product(model%f(:, p%node), p%dir)*p%dir
+         end associate
       end do
    end subroutine spc_reactions
 

@@ -1,7 +1,8 @@
 !> Kinematic constraints applied to the mid-step velocity v(n+1/2) each cycle:
 !> *BOUNDARY_SPC_* (fixed translations), *BOUNDARY_PRESCRIBED_MOTION_* (VAD 0 velocity,
 !> 1 acceleration, 2 displacement, active between BIRTH and DEATH) and *RIGIDWALL_PLANAR
-!> stonewalls (Hallquist, LS-DYNA Theory Manual, "Rigid walls"): a node predicted to cross
+!> stonewalls; a skew SPC (CID of *BOUNDARY_SPC_*) is a prescribed zero velocity along each
+!> constrained local axis, dof 4 and curve 0 (Hallquist, LS-DYNA Theory Manual, "Rigid walls"): a node predicted to cross
 !> the wall gets the normal velocity that puts it exactly on the wall; FRIC = 0 frictionless,
 !> FRIC >= 1 no sliding after contact, 0 < FRIC < 1 Coulomb friction on the impulse.
 module dx_constraints
@@ -98,8 +99,9 @@ contains
             nd = pm%node
             d = pm%dir
             select case (pm%vad)
-            case (0)      ! velocity at the mid-step time
-               val = pm%sf*model%curves(pm%curve)%eval(t + 0.5_wp*dt)
+            case (0)      ! velocity at the mid-step time (curve 0: a skew SPC, zero)
+               val = 0.0_wp
+               if (pm%curve > 0) val = pm%sf*model%curves(pm%curve)%eval(t + 0.5_wp*dt)
             case (1)      ! acceleration at t(n)
                val = dot_product(d, vold(:, nd)) + dtavg*pm%sf*model%curves(pm%curve)%eval(t)
             case default  ! displacement: land exactly on u(t + dt)

@@ -76,6 +76,7 @@ module dx_model_input
       integer :: id = 0               !< node label or node set label
       logical :: is_set = .false.
       logical :: dof(6) = .false.
+      integer :: cid = 0              !< DOFX..DOFZ along the axes of *DEFINE_COORDINATE_SYSTEM cid
       type(origin_t) :: src
    end type spc_in_t
 
@@ -99,7 +100,7 @@ module dx_model_input
       real(wp) :: vex(3) = 0.0_wp      !< velocity of the excluded nodes (NSIDEX)
       real(wp) :: omega = 0.0_wp
       real(wp) :: xc(3) = 0.0_wp, axis(3) = 0.0_wp
-      integer :: icid = 0              !< GENERATION: v is in *DEFINE_COORDINATE_SYSTEM icid
+      integer :: icid = 0              !< v (vr, vex) given in *DEFINE_COORDINATE_SYSTEM icid
       type(origin_t) :: src
    end type ivel_in_t
 
@@ -113,6 +114,7 @@ module dx_model_input
 
    type :: load_node_in_t
       integer :: nid = 0, dof = 0, lcid = 0
+      integer :: cid = 0               !< DOF along the axes of *DEFINE_COORDINATE_SYSTEM cid
       real(wp) :: sf = 1.0_wp
       type(origin_t) :: src
    end type load_node_in_t
@@ -239,6 +241,11 @@ module dx_model_input
       type(motion_in_t), allocatable :: motions(:)
       type(ivel_in_t), allocatable :: ivels(:)
       type(csys_in_t), allocatable :: csys(:)     !< *DEFINE_COORDINATE_SYSTEM
+      ! --- *NODE_MERGE(_SET, _TOLERANCE) (dx_read_merge)
+      integer, allocatable :: merge_nodes(:), merge_sets(:)   !< candidates: labels, node sets
+      real(wp) :: merge_tol = -1.0_wp                         !< TOLR (< 0: not given)
+      type(origin_t) :: merge_src                             !< the last merge keyword
+      integer, allocatable :: node_alias(:, :)   !< (2, n): merged-away label, kept label
       type(load_node_in_t), allocatable :: node_loads(:)
       type(load_node_in_t), allocatable :: node_set_loads(:)  !< *LOAD_NODE_SET (nid = NSID)
       type(load_seg_in_t), allocatable :: seg_loads(:)

@@ -327,7 +327,9 @@ contains
             return
          end if
          write(rs%rbdout_unit, '(a)') '# dynx rbdout: rigid body state (docs/output-format.md)'
-         write(rs%rbdout_unit, '(a)') '# time body xc yc zc vx vy vz wx wy wz w1 w2 w3 '// &
+         ! the names line without '#' (gnuplot's columnhead form; the '# body' lines after it
+         ! are comments to gnuplot; docs/output-format.md)
+         write(rs%rbdout_unit, '(a)') 'time body xc yc zc vx vy vz wx wy wz w1 w2 w3 '// &
             'lx ly lz ke r11 r21 r31 r12 r22 r32 r13 r23 r33'
          rs%rbdout_open = .true.
          do b = 1, size(rs%bodies)

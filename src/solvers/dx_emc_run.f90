@@ -91,8 +91,10 @@ contains
                write(u, '(a)') '# dynx emcstat: energy-momentum conserving rigid-body '// &
                   'contact (docs/conserving-contact.md)'
                write(u, '(a,i0,a,es24.16e3)') '# bodies ', st%nb, ' dt ', self%dt0
-               write(u, '(a)') '# cycle time ke upen etot px py pz lx ly lz iters resid '// &
-                  'npair [per body: xc yc zc lx ly lz (about the origin)]'
+               ! the names line without '#' (gnuplot's columnhead form): one name per
+               ! column, body b's as NAME@b (dynx-thist's NAME@ID; docs/output-format.md)
+               write(u, '(a)') 'cycle time ke upen etot px py pz lx ly lz iters resid '// &
+                  'npair'//body_names(st%nb)
             end if
             self%t = 0.0_wp
             self%ke = emc_energy(st)
@@ -356,4 +358,20 @@ contains
          self%ke = emc_energy(st)
       end associate
    end subroutine from_snapshot
+
+   !> ' xc@1 yc@1 zc@1 lx@1 ly@1 lz@1 xc@2 ...': the names of the per-body columns of emcstat
+   function body_names(nb) result(t)
+      integer, intent(in) :: nb
+      character(:), allocatable :: t
+      character(len=2), parameter :: nm(6) = ['xc', 'yc', 'zc', 'lx', 'ly', 'lz']
+      character(12) :: num
+      integer :: b, k
+      t = ''
+      do b = 1, nb
+         write(num, '(i0)') b
+         do k = 1, 6
+            t = t//' '//nm(k)//'@'//trim(num)
+         end do
+      end do
+   end function body_names
 end module dx_emc_run

@@ -5,7 +5,8 @@
 !>  * column files (glstat, nodout, rcforc, rbdout, ...): '#' header lines, the names line
 !>    the last of them with as many words as the first data line has fields (rbdout writes
 !>    one '#' line per body after it) or one whose '[per body: ...]' group repeats to that
-!>    count (emcstat: entities 1, 2, ...); the time is the column named time (else the
+!>    count (old emcstat: entities 1, 2, ...), its words NAME@ID naming entity ID's column
+!>    (emcstat); the names line may also lack the '#' (gnuplot's columnhead form); the time is the column named time (else the
 !>    first); the column after it, when named '*_id' (node_id, contact_id, ...), body, node,
 !>    part or id, is the entity id of the row, otherwise the entity is 0.
 !>  * LS-DYNA block files (matsum, sleout, spcforc, ...): a line holding 'time =' starts a
@@ -278,7 +279,8 @@ contains
 
    !> The column names of a header line and each column's entity (0: the row's own). A
    !> group '[per body: a b c (note)]' after the plain names repeats a, b, c once per body
-   !> (entities 1, 2, ...) to fill nfields columns (emcstat); otherwise the words as they are.
+   !> (entities 1, 2, ...) to fill nfields columns (emcstat before 2026-12-07); a word
+   !> NAME@ID is column NAME of entity ID (emcstat now); otherwise the words as they are.
    subroutine expand_names(line, nfields, names, ent)
       character(*), intent(in) :: line
       integer, intent(in) :: nfields
@@ -291,6 +293,14 @@ contains
          call split_words(line, names)
          allocate(ent(size(names)))
          ent = 0
+         do k = 1, size(names)            ! NAME@ID: the column of entity ID (emcstat)
+            q = index(names(k), '@', back=.true.)
+            if (q < 2) cycle
+            read(names(k)(q + 1:), *, iostat=r) b
+            if (r /= 0 .or. verify(trim(names(k)(q + 1:)), '0123456789') /= 0) cycle
+            ent(k) = b
+            names(k) = names(k)(1:q - 1)
+         end do
          return
       end if
       call split_words(line(1:p - 1), base)
