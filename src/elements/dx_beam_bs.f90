@@ -52,6 +52,7 @@ module dx_beam_bs
    private
    public :: beam_bs_block, beam_bs_rotary_inertia, beam_bs_init, beam_bs_axes
    public :: BM_E2, BM_TH, BM_RES, BM_SEC
+   public :: turn, normal_to   ! (the Hughes-Liu beam's frame, dx_beam_hl)
    ! (BM_E2, BM_TH, BM_RES, BM_SEC: the ES_BEAM slot's columns, dx_element_types)
 
 contains
