@@ -31,6 +31,10 @@ height 1 along t = z: A = 2, ISS = 1/6, ITT = 2/3), length L = 100 along x.
       start over 30 ms, then a constant rate) to 0.3 rad at 150 ms (its root clamped): a pure
       bending to 12.6 times the yield curvature, the moment saturates at the fully plastic
       moment of the section
+  gen_beam_deck.py bench N KIND [OUT]  the bench cantilever of N beams, 1000 cycles (ENDCYC):
+      KIND bs (ELFORM 2, cantilever's first mode), hl (ELFORM 1, QR 2, the same), hl_plastic
+      (the section and *MAT_003 of plastic N 5 0 3 on a free bar stretched at a uniform rate:
+      every section point yielding from about cycle 100 on)
   gen_beam_deck.py frame [OUT]          a plate of 4x4 BT shells carried by four beam legs
       (a beam-and-shell frame, shared nodes; the plate with stiffness hourglass IHQ 4,
       which keeps its energy: the default viscous one lets a BT plate on point supports
@@ -338,6 +342,34 @@ def plastic(n, qr, cst, mat):
     return s
 
 
+def bench(n, kind):
+    """the bench cantilevers: 1000 cycles (ENDCYC) of N elements"""
+    global HL
+    if kind == 'hl_plastic':
+        # a free bar stretched at a uniform rate (v = rate (x - L/2)): every section point
+        # yields together (SIGY/E = 2.38e-4 reached after about 100 cycles: the step is about
+        # 0.0174/N ms), the release waves from the ends cover 5 % of the bar in 1000 cycles
+        s = plastic(n, 5, 0, 3)
+        c = s.index('*DEFINE_CURVE')
+        e = s.index('*BOUNDARY_SPC_NODE')
+        rate = 0.05/E*n/(100*0.0174)
+        vel = ['*INITIAL_VELOCITY_NODE']
+        for k in range(n + 1):
+            x = 100.0*k/n
+            vel.append(f'{k + 1:10d}{rate*(x - 50.0):10.4g}{0.0:10.4g}{0.0:10.4g}')
+        s[c:e + 2] = vel
+        tend = 1.0
+    else:
+        HL = 2 if kind == 'hl' else None
+        s = cantilever(n)
+        tend = 1000.0
+    k = s.index('*CONTROL_TERMINATION')
+    s[k + 1] = f'{tend:10.4f}      1000'
+    for key in ('*DATABASE_GLSTAT', '*DATABASE_NODOUT', '*DATABASE_BINARY_D3PLOT'):
+        s[s.index(key) + 1] = f'{1000.0:10.4f}'
+    return s
+
+
 def main(argv):
     global HL
     if argv[1] == '--hl':
@@ -347,6 +379,8 @@ def main(argv):
     if kind == 'plastic':
         lines = plastic(int(argv[2]), int(argv[3]), int(argv[4]), int(argv[5]))
         out = argv[6:]
+    elif kind == 'bench':
+        lines, out = bench(int(argv[2]), argv[3]), argv[4:]
     elif kind == 'cantilever':
         lines, out = cantilever(int(argv[2])), argv[3:]
     elif kind == 'axial':
