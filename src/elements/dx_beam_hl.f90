@@ -44,7 +44,7 @@ module dx_beam_hl
    use dx_element_types, only: elem_block_t, part_t, ES_BEAM, ES_WORK, block_result_t, &
                                ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, BM_E2, BM_TH, BM_RES, BM_SEC
    use dx_hex8, only: centred_work
-   use dx_beam_bs, only: beam_turn => turn, beam_normal_to => normal_to
+   use dx_beam_bs, only: beam_kinematics, beam_end_forces
    implicit none
    private
    public :: beam_hl_block, beam_hl_rule, beam_hl_nip, beam_hl_section, HL_QR_MAX
@@ -155,8 +155,8 @@ contains
       real(wp) :: de5(blk%nel, 5), s5(blk%nel, 5), sec(5)
       integer :: ierr(blk%nel)
       real(wp) :: g, lam, ym, c2, hdt, de, shrf, s, t, d11, g12, g13, wa, sg1, sg2, sg3
-      real(wp) :: xm(3, 2), dm(3), lm, e1m(3), e2o(3), e2m(3), e3m(3), om(3), dv(3)
       real(wp) :: e1(3), e2(3), e3(3), l, l0, r(6), rold(6), fl(3, 2), ml(3, 2)
+      logical :: ok
       real(wp) :: a, iss, itt, tj, mn, jn, wmax2, dte, wo, wn
       integer :: i, k, c, n1, n2, cw, ip, np, n
       n = blk%nel
@@ -174,33 +174,14 @@ contains
       ! ---- frames and rates (dx_beam_bs's kinematics)
       do i = 1, n
          n1 = blk%conn(1, i); n2 = blk%conn(2, i)
-         xm(:, 1) = x(:, n1) - hdt*v(:, n1)
-         xm(:, 2) = x(:, n2) - hdt*v(:, n2)
-         dm = xm(:, 2) - xm(:, 1)
-         lm = norm2(dm)
-         e1 = x(:, n2) - x(:, n1)
-         l = norm2(e1)
-         if (.not. (lm > 0.0_wp) .or. .not. (l > 0.0_wp)) then
+         call beam_kinematics(x(:, n1), x(:, n2), v(:, n1), v(:, n2), w(:, n1), w(:, n2), &
+                              blk%es(i, c + BM_E2:c + BM_E2 + 2), hdt, dt_old, lmv(i), &
+                              rate(i, :), lv(i), e1v(:, i), e2v(:, i), ok)
+         if (.not. ok) then
             res%ibad = i; res%errcode = ELEM_ERR_NEGVOL
             return
          end if
-         e1m = dm/lm
-         dv = v(:, n2) - v(:, n1)
-         om = cross(e1m, dv)/lm + 0.5_wp*dot_product(w(:, n1) + w(:, n2), e1m)*e1m
-         e2o = blk%es(i, c + BM_E2:c + BM_E2 + 2)
-         e2m = beam_normal_to(beam_turn(e2o, hdt*om), e1m)
-         e3m = cross(e1m, e2m)
-         rate(i, 1) = dot_product(dv, e1m)
-         rate(i, 2) = dot_product(w(:, n2) - w(:, n1), e1m)
-         rate(i, 3) = dot_product(w(:, n1), e2m) + dot_product(dv, e3m)/lm
-         rate(i, 4) = dot_product(w(:, n2), e2m) + dot_product(dv, e3m)/lm
-         rate(i, 5) = dot_product(w(:, n1), e3m) - dot_product(dv, e2m)/lm
-         rate(i, 6) = dot_product(w(:, n2), e3m) - dot_product(dv, e2m)/lm
-         lmv(i) = lm
-         e1 = e1/l
-         e2 = beam_normal_to(beam_turn(e2o, dt_old*om), e1)
-         blk%es(i, c + BM_E2:c + BM_E2 + 2) = e2
-         e1v(:, i) = e1; e2v(:, i) = e2; lv(i) = l
+         blk%es(i, c + BM_E2:c + BM_E2 + 2) = e2v(:, i)
          call beam_hl_section(part%bcst, blk%es(i, c + BM_TH), blk%es(i, c + BM_TH + 1), &
                               sec, hs(i), ht(i))
       end do
@@ -270,10 +251,7 @@ contains
          blk%eint(i) = blk%eint(i) + de
          res%deint = res%deint + de
          blk%relvol(i) = l/l0
-         fl(:, 2) = r(1)*e1 - (r(5) + r(6))/l*e2 + (r(3) + r(4))/l*e3
-         fl(:, 1) = -fl(:, 2)
-         ml(:, 1) = -r(2)*e1 + r(3)*e2 + r(5)*e3
-         ml(:, 2) = r(2)*e1 + r(4)*e2 + r(6)*e3
+         call beam_end_forces(r, e1, e2, e3, l, fl, ml)
          do k = 1, 2
             f(:, blk%conn(k, i)) = f(:, blk%conn(k, i)) - fl(:, k)
             mom(:, blk%conn(k, i)) = mom(:, blk%conn(k, i)) - ml(:, k)

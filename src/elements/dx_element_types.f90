@@ -302,9 +302,10 @@ contains
          ! forces, moments, mass and rotary inertia scattered element-major (dx_beam_bs)
          f%rot = .true.; f%scatter_em = .true.
          ! Hughes-Liu: the section points (block%nip, the QR/CST rule) call the material;
-         ! weight measured in the beam bench (docs/history.md, "Plastic beams")
+         ! weight: 434 CPU ns per element-cycle (QR 2, elastic; 901 at 4x4 plastic) against
+         ! the hexahedron's 263 (BENCH_ONLY=beam make bench, docs/performance.md)
          if (etype == ETYPE_BEAM_HL) then
-            f%nip = 4; f%weight = 3
+            f%nip = 4; f%weight = 2
          end if
       end select
    end function element_family
