@@ -22,6 +22,16 @@
       the plot's beam resultants (rows beam_force, beam_moment) in the last state of a beam
       under a pure end moment M about its s axis: every element's |M_s| against M within
       TOL_M relative; T, M_t (over M) and N, Q_s, Q_t (over M/L) within TOL_F.
+  beam_check.py pair OUT1 OUT2 L T E RHO TOL
+      the first periods of two runs of the cantilever (two formulations on one mesh): both
+      errors against Euler-Bernoulli printed, |T1/T2 - 1| <= TOL
+  beam_check.py plastic OUT QR CST SIGY D1 D2 TOL_RULE TOL_MP
+      Hughes-Liu beams in pure bending past the yield curvature (gen_beam_deck.py plastic):
+      the section rule's fully plastic moment M_rule = SIGY sum_k w_k |t_k| (QR, CST of
+      dx_beam_hl: CST 0 the rectangle TS = D1 by TT = D2, bending about s; CST 1 the tube of
+      diameters D1, D2) against the exact Mp (SIGY TS TT**2/4; SIGY (D1**3 - D2**3)/6) within
+      TOL_MP relative (the rule's own error, stated in the case), and every element's |M_s| in
+      the last plot state against M_rule within TOL_RULE (T, M_t, N, Q below 0.02 M/L)
   beam_check.py turned OUT L ANGLE T0 TOL
       a beam of length L turned about y as a rigid body by ANGLE (its root at the origin): the
       first history node's mean position over t >= T0 within TOL L of (L cos, 0, -L sin).
@@ -192,6 +202,55 @@ def resultants(argv):
     return em <= tol_m and eo <= tol_f and ef <= tol_f
 
 
+def pair(argv):
+    """OUT1 OUT2 L T E RHO TOL"""
+    o1, o2 = argv[0], argv[1]
+    length, t, e, rho, tol = map(float, argv[2:7])
+    iy = t*t/12.0
+    tref = 2*math.pi/(1.8751040687**2*math.sqrt(e*iy/(rho*length**4)))
+    p1, p2 = first_period(o1), first_period(o2)
+    r = p1/p2 - 1.0
+    print(f'first periods {p1:.6f} ({p1/tref - 1:+.3e}) and {p2:.6f} ({p2/tref - 1:+.3e}) '
+          f'against Euler-Bernoulli {tref:.6f}: ratio - 1 = {r:+.3e} (tol {tol:.1e})')
+    return abs(r) <= tol
+
+
+def hl_rule(qr, cst):
+    """dx_beam_hl's section rule in unit coordinates: [(s, t, weight fraction)]"""
+    if cst == 1:
+        n = 4*qr
+        return [(math.cos(2*math.pi*k/n), math.sin(2*math.pi*k/n), 1.0/n) for k in range(n)]
+    r = {1: ([0.0], [2.0]),
+         2: ([-1/math.sqrt(3), 1/math.sqrt(3)], [1.0, 1.0]),
+         3: ([-math.sqrt(0.6), 0.0, math.sqrt(0.6)], [5/9, 8/9, 5/9]),
+         4: ([-1.0, 0.0, 1.0], [1/3, 4/3, 1/3])}
+    if qr == 5:
+        a, b = math.sqrt(3/7 - 2/7*math.sqrt(1.2)), math.sqrt(3/7 + 2/7*math.sqrt(1.2))
+        wa, wb = (18 + math.sqrt(30))/36, (18 - math.sqrt(30))/36
+        g, w = [-b, -a, a, b], [wb, wa, wa, wb]
+    else:
+        g, w = r[qr]
+    return [(gi, gj, 0.25*wi*wj) for gj, wj in zip(g, w) for gi, wi in zip(g, w)]
+
+
+def plastic(argv):
+    """OUT QR CST SIGY D1 D2 TOL_RULE TOL_MP"""
+    out, qr, cst = argv[0], int(argv[1]), int(argv[2])
+    sigy, d1, d2, tol_rule, tol_mp = map(float, argv[3:8])
+    if cst == 1:
+        area, ht = math.pi*(d1*d1 - d2*d2)/4, 0.5*math.sqrt(0.5*(d1*d1 + d2*d2))
+        mp = sigy*(d1**3 - d2**3)/6
+    else:
+        area, ht = d1*d2, 0.5*d2
+        mp = sigy*d1*d2*d2/4
+    mrule = sigy*area*ht*sum(w*abs(t) for _, t, w in hl_rule(qr, cst))
+    e = mrule/mp - 1.0
+    print(f'fully plastic moment: rule QR {qr} CST {cst} {mrule:.6e}, exact {mp:.6e}: '
+          f'{e:+.4e} (tol {tol_mp:.1e})')
+    ok = abs(e) <= tol_mp
+    return resultants([out, str(mrule), '100', str(tol_rule), '0.02']) and ok
+
+
 def turned(argv):
     """OUT L ANGLE T0 TOL: the tip (first history node) after a rigid turn about y"""
     out, length, ang, t0, tol = argv[0], *map(float, argv[1:5])
@@ -210,7 +269,7 @@ def main():
     cmd, argv = sys.argv[1], sys.argv[2:]
     fn = {'wave': wave, 'order': order, 'rotation': rotation, 'torsion': torsion,
           'tip': tip, 'circle': circle, 'resultants': resultants,
-          'turned': turned}.get(cmd)
+          'turned': turned, 'plastic': plastic, 'pair': pair}.get(cmd)
     if fn is None:
         raise SystemExit(__doc__)
     if not fn(argv):

@@ -7,6 +7,10 @@
 # wall puts the lateral faces in tension past the thresholds, so the damage paths run: at the
 # end 93 % (MODEL 1), 6 % (2), 85 % (3) of the elements damaged) (issue 18).
 # BENCH_ONLY=hirate runs only the 22**3 cube rows (piecewise-linear and issue 18's models).
+# Beams (issue 17): a 20 000-element cantilever (scripts/gen_beam_deck.py bench), 1000 cycles,
+# of resultant beams (ELFORM 2), of Hughes-Liu beams (ELFORM 1, 2x2 Gauss, elastic) and of
+# Hughes-Liu beams of *MAT_003 yielding (the plastic cantilever's tip rotation, 4x4 Gauss);
+# BENCH_ONLY=beam runs only these rows.
 # Appends a dated table to docs/performance.md.
 set -e
 cd "$(dirname "$0")/.."
@@ -34,6 +38,18 @@ run_case() {   # name deck elements
     echo "| $1 | $3 | $cyc | $wall | $ns | $cns | $kib | $bpe |" >> $B/table.md
     echo "bench: $1: $ns ns/element-cycle (CPU $cns), $bpe bytes/element"
 }
+beam_rows() {
+    for kind in bs hl hl_plastic; do
+        python3 scripts/gen_beam_deck.py bench 20000 $kind $B/beam_$kind.k
+        run_case beam_${kind}_20000 $B/beam_$kind.k 20000
+    done
+}
+if [ "${BENCH_ONLY:-}" = beam ]; then
+    beam_rows
+    cat $B/table.md >> docs/performance.md
+    cat $B/table.md
+    exit 0
+fi
 sizes="10 22 46 100"; [ "${BENCH_ONLY:-}" = hirate ] && sizes=22
 for n in $sizes; do
     ne=$((n*n*n))
@@ -82,5 +98,6 @@ if [ -f ../shared/bench/gen_taylor.py ] && [ "${BENCH_ONLY:-}" != hirate ]; then
     python3 ../shared/bench/gen_taylor.py 8 4 54 0.080 $B/taylor_10k.k > /dev/null
     run_case taylor_10k $B/taylor_10k.k 10368
 fi
+[ "${BENCH_ONLY:-}" != hirate ] && beam_rows
 cat $B/table.md >> docs/performance.md
 cat $B/table.md

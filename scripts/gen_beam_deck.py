@@ -22,6 +22,19 @@ height 1 along t = z: A = 2, ISS = 1/6, ITT = 2/3), length L = 100 along x.
   gen_beam_deck.py torsion [OUT]        a torsion pendulum: 4 beams clamped at x = 0 with an
       *ELEMENT_INERTIA (100 kg mm**2, isotropic) at the tip, started with VXR = 0.01 x/L
       rad/ms: omega = sqrt(G J/(L I))
+  gen_beam_deck.py --hl QR KIND ...    any kind above with Hughes-Liu beams (ELFORM 1, the same
+      2 x 1 rectangle: TS = 2, TT = 1, section rule QR, SHRF 5/6) in place of ELFORM 2
+  gen_beam_deck.py plastic N QR CST MAT [OUT]  the cantilever of N Hughes-Liu beams (QR, CST 0:
+      the 2 x 1 rectangle; CST 1: the tube D = 2, d = 1), elastic-perfectly plastic
+      (*MAT_003 or *MAT_024 by MAT, E = 210, PR = 0.3, SIGY = 0.05, ETAN = 0), at rest, its
+      tip turned about y by a prescribed angle (DOF 6, VAD 2) raised monotonically (a smooth
+      start over 30 ms, then a constant rate) to 0.3 rad at 150 ms (its root clamped): a pure
+      bending to 12.6 times the yield curvature, the moment saturates at the fully plastic
+      moment of the section
+  gen_beam_deck.py bench N KIND [OUT]  the bench cantilever of N beams, 1000 cycles (ENDCYC):
+      KIND bs (ELFORM 2, cantilever's first mode), hl (ELFORM 1, QR 2, the same), hl_plastic
+      (the section and *MAT_003 of plastic N 5 0 3 on a free bar stretched at a uniform rate:
+      every section point yielding from about cycle 100 on)
   gen_beam_deck.py frame [OUT]          a plate of 4x4 BT shells carried by four beam legs
       (a beam-and-shell frame, shared nodes; the plate with stiffness hourglass IHQ 4,
       which keeps its energy: the default viscous one lets a BT plate on point supports
@@ -49,7 +62,19 @@ def head(title, tend, dplot, dhist, hist_nodes):
             '*DATABASE_HISTORY_NODE', ''.join(f'{n:10d}' for n in hist_nodes)]
 
 
+HL = None                        # --hl: the section rule QR of ELFORM 1 beams
+
+
 def beam_part(pid=1, secid=1, mid=1):
+    if HL is not None:
+        return ['*PART', 'beam', f'{pid:10d}{secid:10d}{mid:10d}',
+                '*SECTION_BEAM',
+                '$    SECID    ELFORM      SHRF   QR/IRID       CST     SCOOR       NSM',
+                f'{secid:10d}         1  0.833333{HL:10.1f}         0',
+                '$      TS1       TS2       TT1       TT2     NSLOC     NTLOC',
+                f'{B:10.4f}{B:10.4f}{H:10.4f}{H:10.4f}',
+                '*MAT_ELASTIC', '$      MID        RO         E        PR',
+                f'{mid:10d}{RHO:10.3e}{E:10.1f}{0.0:10.3f}']
     return ['*PART', 'beam', f'{pid:10d}{secid:10d}{mid:10d}',
             '*SECTION_BEAM',
             '$    SECID    ELFORM      SHRF   QR/IRID       CST     SCOOR       NSM',
@@ -271,9 +296,92 @@ def torsion():
     return s
 
 
+def plastic(n, qr, cst, mat):
+    """the cantilever at rest, Hughes-Liu, elastic-perfectly plastic, tip rotation 0.3 rad"""
+    global HL
+    HL = qr
+    s = root_rotation(n)
+    i = s.index('*BOUNDARY_PRESCRIBED_MOTION_NODE')
+    s[i + 2] = f'{n + 1:10d}{6:10d}{2:10d}{1:10d}{0.3:10.7f}'
+    j = s.index('*BOUNDARY_SPC_NODE')
+    s[j + 1] = ('         1         0         1         1         1         1         1'
+                '         1')
+    k = s.index('*SECTION_BEAM')
+    if cst == 1:
+        s[k + 2] = f'{1:10d}         1  0.833333{qr:10.1f}         1'
+        s[k + 4] = f'{2.0:10.4f}{2.0:10.4f}{1.0:10.4f}{1.0:10.4f}'
+    m = s.index('*MAT_ELASTIC')
+    if mat == 3:
+        s[m:m + 3] = ['*MAT_PLASTIC_KINEMATIC',
+                      '$      MID        RO         E        PR      SIGY      ETAN      BETA',
+                      f'{1:10d}{RHO:10.3e}{E:10.1f}{0.3:10.3f}{0.05:10.4f}{0.0:10.4f}{1.0:10.4f}',
+                      '$      SRC       SRP        FS        VP', '']
+    else:
+        s[m:m + 3] = ['*MAT_PIECEWISE_LINEAR_PLASTICITY',
+                      '$      MID        RO         E        PR      SIGY      ETAN      FAIL'
+                      '      TDEL',
+                      f'{1:10d}{RHO:10.3e}{E:10.1f}{0.3:10.3f}{0.05:10.4f}{0.0:10.4f}',
+                      '$        C         P      LCSS      LCSR        VP', '', '', '']
+    s[2] = (f'Cantilever, {n} Hughes-Liu beams (QR {qr}, CST {cst}, *MAT_{mat:03d}), '
+            'elastic-perfectly plastic, end rotation 0.3 rad')
+    # monotonic: theta/0.3 = f(t)/f(150), f = t**2/(2 t0) up to t0 = 30 ms, then t - t0/2
+    # (a smooth start, then a constant rate: no fibre unloads, the moment stays at Mp)
+    c = s.index('*DEFINE_CURVE')
+    e = s.index('*BOUNDARY_PRESCRIBED_MOTION_NODE')
+    t0, tend = 30.0, 150.0
+    def f(t):
+        return t*t/(2.0*t0) if t < t0 else t - 0.5*t0
+    curve = ['*DEFINE_CURVE', '         1']
+    for k in range(31):
+        t = tend*k/30
+        curve.append(f'{t:20.8f}{f(t)/f(tend):20.10f}')
+    curve.append(f'{1000.0:20.8f}{f(1000.0)/f(tend):20.10f}')
+    s[c:e] = curve
+    s[s.index('*CONTROL_TERMINATION') + 1] = f'{tend:10.4f}'
+    s[s.index('*DATABASE_BINARY_D3PLOT') + 1] = f'{10.0:10.6f}'
+    return s
+
+
+def bench(n, kind):
+    """the bench cantilevers: 1000 cycles (ENDCYC) of N elements"""
+    global HL
+    if kind == 'hl_plastic':
+        # a free bar stretched at a uniform rate (v = rate (x - L/2)): every section point
+        # yields together (SIGY/E = 2.38e-4 reached after about 100 cycles: the step is about
+        # 0.0174/N ms), the release waves from the ends cover 5 % of the bar in 1000 cycles
+        s = plastic(n, 5, 0, 3)
+        c = s.index('*DEFINE_CURVE')
+        e = s.index('*BOUNDARY_SPC_NODE')
+        rate = 0.05/E*n/(100*0.0174)
+        vel = ['*INITIAL_VELOCITY_NODE']
+        for k in range(n + 1):
+            x = 100.0*k/n
+            vel.append(f'{k + 1:10d}{rate*(x - 50.0):10.4g}{0.0:10.4g}{0.0:10.4g}')
+        s[c:e + 2] = vel
+        tend = 1.0
+    else:
+        HL = 2 if kind == 'hl' else None
+        s = cantilever(n)
+        tend = 1000.0
+    k = s.index('*CONTROL_TERMINATION')
+    s[k + 1] = f'{tend:10.4f}      1000'
+    for key in ('*DATABASE_GLSTAT', '*DATABASE_NODOUT', '*DATABASE_BINARY_D3PLOT'):
+        s[s.index(key) + 1] = f'{1000.0:10.4f}'
+    return s
+
+
 def main(argv):
+    global HL
+    if argv[1] == '--hl':
+        HL = int(argv[2])
+        argv = argv[:1] + argv[3:]
     kind = argv[1]
-    if kind == 'cantilever':
+    if kind == 'plastic':
+        lines = plastic(int(argv[2]), int(argv[3]), int(argv[4]), int(argv[5]))
+        out = argv[6:]
+    elif kind == 'bench':
+        lines, out = bench(int(argv[2]), argv[3]), argv[4:]
+    elif kind == 'cantilever':
         lines, out = cantilever(int(argv[2])), argv[3:]
     elif kind == 'axial':
         lines, out = axial(int(argv[2])), argv[3:]

@@ -1,5 +1,6 @@
 !> Model build of the beam and discrete-mass keywords (dx_read_beams): the parts with a
-!> *SECTION_BEAM (ELFORM 2 resultant beams, dx_beam_bs: elastic *MAT_ELASTIC only), each
+!> *SECTION_BEAM (ELFORM 2 resultant beams, dx_beam_bs: elastic *MAT_ELASTIC only; ELFORM 1
+!> Hughes-Liu beams, dx_beam_hl: *MAT_ELASTIC, *MAT_003, *MAT_024 at the section points), each
 !> *ELEMENT_BEAM's nodes, length, section and initial frame (the orientation node N3, the
 !> _ORIENTATION vector, or the default, the global z axis: a beam along z without N3 or a
 !> vector has no usable orientation and is an input error),
@@ -14,8 +15,10 @@ module dx_beam_build
    use dx_log, only: log_warn
    use dx_model, only: model_t, part_t, section_t
    use dx_model_input, only: model_input_t
-   use dx_element_types, only: etype_of_beam_elform
+   use dx_element_types, only: etype_of_beam_elform, ETYPE_BEAM_HL
    use dx_beam_bs, only: beam_bs_axes
+   use dx_beam_hl, only: beam_hl_section
+   use dx_material, only: has_lamina_form
    use dx_build_common, only: maps_t, at, at_line
    implicit none
    private
@@ -27,8 +30,9 @@ module dx_beam_build
                                                       '*SECTION_BEAM ']
    character(len=14), parameter :: KIND_CARDS(0:2) = ['*ELEMENT_SOLID', '*ELEMENT_SHELL', &
                                                       '*ELEMENT_BEAM ']
-   !> set-up data of one beam (bdat(:, e)): e2 (3), A ISS ITT J SA (5)
-   integer, parameter :: BEAM_NDAT = 8
+   !> set-up data of one beam (bdat(:, e)): e2 (3), A ISS ITT J SA (5), the Hughes-Liu
+   !> section's mean dimensions (2: TS TT or D d; 0 for ELFORM 2)
+   integer, parameter :: BEAM_NDAT = 10
 
 contains
 
@@ -49,10 +53,18 @@ contains
       character(*), intent(in) :: w
       type(error_t), allocatable, intent(out) :: error
       integer :: k, n, first
+      real(wp) :: hs, ht
       associate (sec => model%sections(p%isec), m => model%mats(p%imat)%m)
          p%bsec = sec%bprop(1:5)
+         if (etype_of_beam_elform(sec%elform) == ETYPE_BEAM_HL) then
+            call beam_hl_section(sec%cst, 0.5_wp*(sec%bprop(1) + sec%bprop(2)), &
+                                 0.5_wp*(sec%bprop(3) + sec%bprop(4)), p%bsec, hs, ht)
+            p%bqr = sec%qr
+            p%bcst = sec%cst
+            p%shrf = sec%shrf
+         end if
          ! the default orientation matters when the section is not symmetric: one note
-         if (sec%bprop(2) /= sec%bprop(3)) then
+         if (p%bsec(2) /= p%bsec(3)) then
             n = 0; first = 0
             do k = 1, inp%nbeam
                if (inp%beams(k)%n3 /= 0 .or. inp%beams(k)%has_v) cycle
@@ -75,7 +87,16 @@ contains
                '(*MAT_RIGID on a *SECTION_BEAM part) are not supported yet')
             return
          end if
-         if (m%mtype /= 1) then
+         if (etype_of_beam_elform(sec%elform) == ETYPE_BEAM_HL) then
+            if ((m%mtype /= 1 .and. m%mtype /= 3 .and. m%mtype /= 24) .or. &
+                .not. has_lamina_form(m)) then
+               call set_error(error, w//'part '//str(p%label)//': field MID: material '// &
+                  str(p%mid)//' (type '//str(m%mtype)//') on a *SECTION_BEAM ELFORM 1 part '// &
+                  'has no beam section-point update here (supported: *MAT_ELASTIC, '// &
+                  '*MAT_PLASTIC_KINEMATIC, *MAT_PIECEWISE_LINEAR_PLASTICITY without VP = 1)')
+               return
+            end if
+         else if (m%mtype /= 1) then
             call set_error(error, w//'part '//str(p%label)//': field MID: material '// &
                str(p%mid)//' (type '//str(m%mtype)//') on a *SECTION_BEAM ELFORM 2 part: '// &
                'the resultant beam is elastic here (supported: *MAT_ELASTIC, type 1)')
@@ -118,7 +139,7 @@ contains
       real(wp), intent(out) :: vol, bdat(BEAM_NDAT)
       type(error_t), allocatable, intent(out) :: error
       integer :: k, n3, lab
-      real(wp) :: l0, vo(3), sec(5), e2(3)
+      real(wp) :: l0, vo(3), sec(5), e2(3), dm(4), hs, ht
       logical :: ok
       character(:), allocatable :: how
       lab = inp%elem_label(e)
@@ -167,10 +188,27 @@ contains
                            'orientation)')
             return
          end if
-         sec = s%bprop(1:5)
-         do k = 1, 5
-            if (b%parm(k) > 0.0_wp) sec(k) = b%parm(k)
-         end do
+         bdat(9:10) = 0.0_wp
+         if (etype_of_beam_elform(s%elform) == ETYPE_BEAM_HL) then
+            ! Hughes-Liu: the _THICKNESS values are TS1 TS2 TT1 TT2 (0: the section's)
+            dm = s%bprop(1:4)
+            do k = 1, 4
+               if (b%parm(k) > 0.0_wp) dm(k) = b%parm(k)
+            end do
+            bdat(9) = 0.5_wp*(dm(1) + dm(2))
+            bdat(10) = 0.5_wp*(dm(3) + dm(4))
+            if (s%cst == 1 .and. .not. (bdat(10) < bdat(9))) then
+               call set_error(error, w//'element '//str(lab)//': fields PARM1-PARM4: the '// &
+                  'inner diameter is not below the outer one (tubular section, CST 1)')
+               return
+            end if
+            call beam_hl_section(s%cst, bdat(9), bdat(10), sec, hs, ht)
+         else
+            sec = s%bprop(1:5)
+            do k = 1, 5
+               if (b%parm(k) > 0.0_wp) sec(k) = b%parm(k)
+            end do
+         end if
       end associate
       vol = sec(1)*l0
       bdat(1:3) = e2

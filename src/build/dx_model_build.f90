@@ -20,10 +20,12 @@ module dx_model_build
    use dx_model_input, only: model_input_t, origin_t
    use dx_element_types, only: ES_THK, shell_area, etype_of_shell_elform
    use dx_build_twod, only: part_dim, check_dimension, twod_element, build_twod_extras
-   use dx_element_types, only: ETYPE_SHELL_BT, ES_THK, shell_area, ES_BEAM, etype_of_beam_elform
+   use dx_element_types, only: ETYPE_SHELL_BT, ES_THK, shell_area, ES_BEAM, etype_of_beam_elform, &
+                               ETYPE_BEAM_HL
    use dx_beam_build, only: beam_part, beam_index, beam_element, build_point_masses, &
                             section_kind, KIND_NAMES, KIND_CARDS, BEAM_NDAT
-   use dx_beam_bs, only: beam_bs_init
+   use dx_beam_bs, only: beam_bs_init, BM_TH
+   use dx_beam_hl, only: beam_hl_nip
    use dx_label_map, only: label_map_t
    use dx_build_common, only: maps_t, at, at_line, set_nodes, curve_index, node_index, &
                               dense_segments, map_labels
@@ -556,6 +558,7 @@ contains
             fam = element_family(etype)
             nip = fam%nip
             if (model%sections(p%isec)%shell) nip = model%sections(p%isec)%nip
+            if (etype == ETYPE_BEAM_HL) nip = beam_hl_nip(p%bqr, p%bcst)   ! the section rule
             nhv = model%mats(p%imat)%m%nhist()
             pos = start(j)
             do while (pos < start(j + 1))
@@ -597,6 +600,9 @@ contains
                      call b%es_add(ES_BEAM, fam%es_ncol(ES_BEAM))
                      do k = 1, nel
                         call beam_bs_init(b, k, bdat(1:3, b%elem(k)), bdat(4:8, b%elem(k)))
+                        ! Hughes-Liu: the section's dimensions in the (unused) angle columns
+                        if (etype == ETYPE_BEAM_HL) b%es(k, b%esc(ES_BEAM) + BM_TH: &
+                           b%esc(ES_BEAM) + BM_TH + 1) = bdat(9:10, b%elem(k))
                      end do
                   end if
                   do k = 1, nel

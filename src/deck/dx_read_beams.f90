@@ -5,8 +5,11 @@
 !> dynx does not implement is an error naming the field (docs/keywords.md, "Beams").
 !> *SECTION_BEAM card 1: SECID ELFORM SHRF QR/IRID CST SCOOR NSM; card 2 (ELFORM 2, the
 !>   Belytschko-Schwer resultant beam): A ISS ITT J SA IST (J = 0: ISS + ITT, the polar
-!>   moment). ELFORM 1 (Hughes-Liu; card 2 TS1 TS2 TT1 TT2 NSLOC NTLOC) and the others are
-!>   refused at ELFORM (docs/design.md, "Beams": why ELFORM 2).
+!>   moment). ELFORM 1 (Hughes-Liu with cross-section integration, dx_beam_hl): card 2
+!>   TS1 TS2 TT1 TT2 NSLOC NTLOC, the thicknesses in s and t at N1 and N2 (CST 0, rectangle) or
+!>   the outer and inner diameters at N1 and N2 (CST 1, tube); TS2 = 0 (TT2 = 0) takes TS1
+!>   (TT1); QR 1-5 (LS-DYNA's rules); a user rule (QR < 0, *INTEGRATION_BEAM), CST 2, NSLOC
+!>   or NTLOC /= 0 are refused naming the field. The other formulations are refused at ELFORM.
 !> *ELEMENT_BEAM card 1: EID PID N1 N2 N3 RT1 RR1 RT2 RR2 LOCAL (i8; long i20); then, in
 !>   the manual's order, the _THICKNESS card PARM1..PARM5 (ELFORM 2: A ISS ITT J SA; 0: the
 !>   section's), the _OFFSET card WX1 WY1 WZ1 WX2 WY2 WZ2 (must be 0: no offsets), the
@@ -73,13 +76,23 @@ contains
          call c%int('CST', 0, cst, min=0, max=2)   ! cross-section type: integrated beams only
          call c%real('SCOOR', 0.0_wp, scoor)
          call c%real('NSM', 0.0_wp, nsm, min=0.0_wp)
-         if (c%ok() .and. s%elform /= 2) call c%fail('ELFORM', 'beam formulation '// &
-            str(s%elform)//' is not supported (supported: 2 Belytschko-Schwer resultant beam)')
+         if (c%ok() .and. s%elform /= 2 .and. s%elform /= 1) call c%fail('ELFORM', 'beam '// &
+            'formulation '//str(s%elform)//' is not supported (supported: 1 Hughes-Liu, '// &
+            '2 Belytschko-Schwer resultant beam)')
+         if (c%ok() .and. s%elform == 1) call hl_rule(c, qr, cst, s)
          if (c%ok() .and. scoor /= 0.0_wp) call c%fail('SCOOR', 'cross-section location '// &
             rstr(scoor)//' is not supported (supported: 0, the frame from N1, N2 and the '// &
             'orientation)')
          s%nsm = nsm
          if (c%halt()) exit
+         if (s%elform == 1) then
+            if (.not. card_follows(c, blk, ic, 'TS1 TS2 TT1 TT2 NSLOC NTLOC) of section '// &
+                                   str(s%label))) exit
+            call hl_card(c, s)
+            if (c%halt()) exit
+            call add_section(inp, s, blk, ic, step)
+            cycle
+         end if
          if (.not. card_follows(c, blk, ic, 'A ISS ITT J SA IST) of section '//str(s%label))) &
             exit
          do k = 1, 6
@@ -103,6 +116,71 @@ contains
       end do
       call c%done(error)
    end subroutine read_section_beam
+
+   !> The Hughes-Liu section rule of card 1: QR (1-5, a whole number) and CST (0, 1).
+   subroutine hl_rule(c, qr, cst, s)
+      type(card_t), intent(inout) :: c
+      real(wp), intent(in) :: qr
+      integer, intent(in) :: cst
+      type(section_t), intent(inout) :: s
+      real(wp) :: q
+      q = qr
+      if (q == 0.0_wp) q = 2.0_wp      ! blank: the default 2x2 Gauss
+      if (q < 0.0_wp) then
+         call c%fail('QR/IRID', 'user-defined integration rule '//rstr(-q)//' '// &
+            '(*INTEGRATION_BEAM) is not supported (supported: QR 1 one point, 2 2x2 Gauss, '// &
+            '3 3x3 Gauss, 4 3x3 Lobatto, 5 4x4 Gauss)')
+         return
+      end if
+      if (q /= anint(q) .or. q < 1.0_wp .or. q > 5.0_wp) then
+         call c%fail('QR/IRID', 'quadrature rule '//rstr(q)//' is not supported (supported:'// &
+            ' 1 one point, 2 2x2 Gauss, 3 3x3 Gauss, 4 3x3 Lobatto, 5 4x4 Gauss)')
+         return
+      end if
+      if (cst == 2) then
+         call c%fail('CST', 'cross-section type 2 (arbitrary, *INTEGRATION_BEAM) is not '// &
+            'supported (supported: 0 rectangular, 1 tubular)')
+         return
+      end if
+      s%qr = nint(q)
+      s%cst = cst
+   end subroutine hl_rule
+
+   !> Card 2 of a Hughes-Liu section: TS1 TS2 TT1 TT2 NSLOC NTLOC into s%bprop(1:4).
+   subroutine hl_card(c, s)
+      type(card_t), intent(inout) :: c
+      type(section_t), intent(inout) :: s
+      real(wp) :: v
+      integer :: k
+      character(len=5), parameter :: DN(4) = ['TS1  ', 'TS2  ', 'TT1  ', 'TT2  ']
+      character(len=5), parameter :: LN(2) = ['NSLOC', 'NTLOC']
+      do k = 1, 4
+         call c%real(trim(DN(k)), 0.0_wp, s%bprop(k))
+         if (c%ok() .and. s%bprop(k) < 0.0_wp) call c%fail(trim(DN(k)), 'section '// &
+            'dimension must be >= 0, got '//rstr(s%bprop(k)))
+      end do
+      do k = 1, 2
+         call c%real(trim(LN(k)), 0.0_wp, v)
+         if (c%ok() .and. v /= 0.0_wp) call c%fail(trim(LN(k)), 'reference surface '// &
+            'location '//rstr(v)//' is not supported (supported: 0, the section centre)')
+      end do
+      if (s%bprop(2) == 0.0_wp) s%bprop(2) = s%bprop(1)
+      if (s%bprop(4) == 0.0_wp) s%bprop(4) = s%bprop(3)
+      if (.not. c%ok()) return
+      if (s%cst == 0) then
+         if (.not. (s%bprop(1) > 0.0_wp)) call c%fail('TS1', 'thickness in s must be > 0 '// &
+            '(rectangular section, CST 0), got '//rstr(s%bprop(1)))
+         if (c%ok() .and. .not. (s%bprop(3) > 0.0_wp)) call c%fail('TT1', 'thickness in t '// &
+            'must be > 0 (rectangular section, CST 0), got '//rstr(s%bprop(3)))
+      else
+         if (.not. (s%bprop(1) > 0.0_wp)) call c%fail('TS1', 'outer diameter must be > 0 '// &
+            '(tubular section, CST 1), got '//rstr(s%bprop(1)))
+         if (c%ok() .and. .not. (s%bprop(3) < s%bprop(1) .and. s%bprop(4) < s%bprop(2))) &
+            call c%fail('TT1', 'inner diameters ('//rstr(s%bprop(3))//', '// &
+            rstr(s%bprop(4))//') must be below the outer ones ('//rstr(s%bprop(1))//', '// &
+            rstr(s%bprop(2))//') (tubular section, CST 1)')
+      end if
+   end subroutine hl_card
 
    !> *ELEMENT_BEAM and its _THICKNESS, _OFFSET, _ORIENTATION options: the element goes to
    !> the element list (N1, N2; the other node fields 0), its extras to inp%beams.

@@ -52,6 +52,7 @@ module dx_beam_bs
    private
    public :: beam_bs_block, beam_bs_rotary_inertia, beam_bs_init, beam_bs_axes
    public :: BM_E2, BM_TH, BM_RES, BM_SEC
+   public :: beam_kinematics, beam_end_forces   ! (the Hughes-Liu beam's, dx_beam_hl)
    ! (BM_E2, BM_TH, BM_RES, BM_SEC: the ES_BEAM slot's columns, dx_element_types)
 
 contains
@@ -137,6 +138,60 @@ contains
       r = e2 - dot_product(e2, e1)*e1
       r = r/norm2(r)
    end function normal_to
+
+   !> The kinematics of one beam (both formulations): the mid-step geometry
+   !> x - hdt v, its frame (e1m; e2 turned by half the step's spin), the six rates
+   !> rate = ((v2 - v1).e1, (w2 - w1).e1, the end rotation rates about e2 at N1, N2 and about
+   !> e3 at N1, N2 relative to the chord) and the mid-step length lm; then the frame of x(n):
+   !> its length l, e1 and e2o turned by the whole step's spin, re-orthogonalised.
+   !> ok = .false. when a length is not positive. (beam_bs_block keeps its own inline copy of
+   !> these lines and of beam_end_forces: moved into these routines they changed the last bits
+   !> of beam_frame's outputs, the compiler's contractions differing; dx_beam_hl calls them.)
+   pure subroutine beam_kinematics(x1, x2, v1, v2, w1, w2, e2o, hdt, dt_old, lm, rate, l, &
+                                   e1, e2, ok)
+      real(wp), intent(in) :: x1(3), x2(3), v1(3), v2(3), w1(3), w2(3), e2o(3), hdt, dt_old
+      real(wp), intent(out) :: lm, rate(6), l, e1(3), e2(3)
+      logical, intent(out) :: ok
+      real(wp) :: xm(3, 2), dm(3), e1m(3), e2m(3), e3m(3), om(3), dv(3)
+      ok = .false.
+      rate = 0.0_wp; l = 0.0_wp; e1 = 0.0_wp; e2 = 0.0_wp
+      xm(:, 1) = x1 - hdt*v1
+      xm(:, 2) = x2 - hdt*v2
+      dm = xm(:, 2) - xm(:, 1)
+      lm = norm2(dm)
+      if (.not. (lm > 0.0_wp)) return
+      e1m = dm/lm
+      dv = v2 - v1
+      om = cross(e1m, dv)/lm + 0.5_wp*dot_product(w1 + w2, e1m)*e1m
+      e2m = normal_to(turn(e2o, hdt*om), e1m)
+      e3m = cross(e1m, e2m)
+      rate(1) = dot_product(dv, e1m)
+      rate(2) = dot_product(w2 - w1, e1m)
+      rate(3) = dot_product(w1, e2m) + dot_product(dv, e3m)/lm
+      rate(4) = dot_product(w2, e2m) + dot_product(dv, e3m)/lm
+      rate(5) = dot_product(w1, e3m) - dot_product(dv, e2m)/lm
+      rate(6) = dot_product(w2, e3m) - dot_product(dv, e2m)/lm
+      e1 = x2 - x1
+      l = norm2(e1)
+      if (.not. (l > 0.0_wp)) return
+      e1 = e1/l
+      e2 = normal_to(turn(e2o, dt_old*om), e1)
+      ok = .true.
+   end subroutine beam_kinematics
+
+   !> The internal end forces fl(:, a) and moments ml(:, a) of the resultants in end-moment
+   !> form r = (N, T, M_s at N1, N2, M_t at N1, N2) in the frame e1, e2, e3 of length l.
+   pure subroutine beam_end_forces(r, e1, e2, e3, l, fl, ml)
+      real(wp), intent(in) :: r(6), e1(3), e2(3), e3(3), l
+      real(wp), intent(out) :: fl(3, 2), ml(3, 2)
+      real(wp) :: vs, vt
+      vt = (r(5) + r(6))/l
+      vs = (r(3) + r(4))/l
+      fl(:, 2) = r(1)*e1 - vt*e2 + vs*e3
+      fl(:, 1) = -fl(:, 2)
+      ml(:, 1) = -r(2)*e1 + r(3)*e2 + r(5)*e3
+      ml(:, 2) = r(2)*e1 + r(4)*e2 + r(6)*e3
+   end subroutine beam_end_forces
 
    !> One explicit pass over a block of resultant beams: x = x(n), v = v(n-1/2),
    !> w = w(n-1/2), dt_old = dt(n-1/2). Integrates the deformation angles to t(n), forms the

@@ -11,18 +11,21 @@
 !> quadrilaterals ELFORM 13, 14, 15 of *SECTION_SHELL (dx_quad2d: plane strain, area- and
 !> volume-weighted axisymmetric; Hallquist, DYNA2D, UCID-18756; Flanagan & Belytschko 1981),
 !> resultant beam ELFORM 2 of *SECTION_BEAM (dx_beam_bs: Belytschko, Schwer & Klein 1977,
-!> IJNME 11).
+!> IJNME 11), Hughes-Liu beam ELFORM 1 with cross-section integration (dx_beam_hl: Hughes & Liu
+!> 1981, CMAME 26, 27).
 module dx_element
    use dx_kinds, only: wp
    use dx_material, only: material_t
    use dx_element_types, only: elem_block_t, part_t, ES_PHIM, block_result_t, family_t, element_family, ELEM_ERR_NEGVOL, &
                                ELEM_ERR_MATERIAL, ETYPE_TET4, ETYPE_SHELL_BT, ETYPE_QUAD2D_PS, &
-                               ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS, ETYPE_BEAM_BS
+                               ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS, ETYPE_BEAM_BS, &
+                               ETYPE_BEAM_HL
    use dx_hex8, only: hex8_block, hex8_mass_share
    use dx_tet4, only: tet4_block
    use dx_shell_bt, only: shell_bt_block, shell_bt_rotary_inertia
    use dx_quad2d, only: quad2d_block
    use dx_beam_bs, only: beam_bs_block, beam_bs_rotary_inertia
+   use dx_beam_hl, only: beam_hl_block
    implicit none
    private
    public :: element_block_pass, element_mass_share, block_result_t, family_t, element_family
@@ -54,6 +57,8 @@ contains
                              dt_old, f, mom, res)
       case (ETYPE_BEAM_BS)
          call beam_bs_block(blk, mat, x, v, w, dt_old, f, mom, res)
+      case (ETYPE_BEAM_HL)
+         call beam_hl_block(blk, mat, part, x, v, w, dt_old, f, mom, res)
       case (ETYPE_TET4)
          call tet4_block(blk, mat, part, x, v, dt_old, f, res, time, dtfloor)
       case (ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS)
@@ -72,7 +77,7 @@ contains
       integer, intent(in) :: cnodes(:)
       select case (blk%etype)
       case (ETYPE_TET4, ETYPE_SHELL_BT, ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, &
-            ETYPE_QUAD2D_PSS, ETYPE_BEAM_BS)
+            ETYPE_QUAD2D_PSS, ETYPE_BEAM_BS, ETYPE_BEAM_HL)
          call blk%es_drop(ES_PHIM)
       case default
          call hex8_mass_share(blk, rho, mass, cnodes)
@@ -88,7 +93,7 @@ contains
       select case (blk%etype)
       case (ETYPE_SHELL_BT)
          call shell_bt_rotary_inertia(blk, rho, rotascl, rinert)
-      case (ETYPE_BEAM_BS)       ! (ROTASCL is *CONTROL_SHELL's: shells only)
+      case (ETYPE_BEAM_BS, ETYPE_BEAM_HL)   ! (ROTASCL is *CONTROL_SHELL's: shells only)
          call beam_bs_rotary_inertia(blk, rho, rinert)
       end select
    end subroutine element_rotary_inertia

@@ -39,7 +39,7 @@ module dx_element_types
    public :: etype_of_shell_elform, ES_THK, shell_area, shell_frame, shell_stress_global
    public :: ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS, quad2d_area, &
              quad2d_rvol
-   public :: ETYPE_BEAM_BS, etype_of_beam_elform, ES_BEAM, elem_stress_global
+   public :: ETYPE_BEAM_BS, ETYPE_BEAM_HL, etype_of_beam_elform, ES_BEAM, elem_stress_global, is_beam
    public :: BM_E2, BM_TH, BM_RES, BM_SEC, beam_resultants
    public :: MAX_NEN, MAX_FACE_NODES, MAX_FACES
    public :: ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, etype_of_elform, ETYPES
@@ -62,6 +62,7 @@ module dx_element_types
    integer, parameter :: ETYPE_QUAD2D_PSS = 1012   !< plane stress (ELFORM 12), thickness t
    !> beams: 2000 + the *SECTION_BEAM ELFORM
    integer, parameter :: ETYPE_BEAM_BS = 2002    !< Belytschko-Schwer resultant beam (dx_beam_bs)
+   integer, parameter :: ETYPE_BEAM_HL = 2001    !< Hughes-Liu beam, section integration (dx_beam_hl)
    !> every element type, one per family first (lookups by nen or XDMF code take the first)
    integer, parameter :: ETYPES(5) = [ETYPE_HEX8_1PT, ETYPE_TET4, ETYPE_SHELL_BT, &
                                       ETYPE_HEX8_SRI, ETYPE_BEAM_BS]
@@ -184,6 +185,9 @@ module dx_element_types
       !> beam parts (*SECTION_BEAM ELFORM 2): A, ISS, ITT, J, SA (SA = 0: no shear
       !> deformation, Euler-Bernoulli)
       real(wp) :: bsec(5) = 0.0_wp
+      !> Hughes-Liu beam parts (*SECTION_BEAM ELFORM 1): the section rule QR (1-5) and the
+      !> cross-section type CST (0 rectangle, 1 tube); the shear factor is shrf above
+      integer :: bqr = 2, bcst = 0
    end type part_t
 
    !> A group of at most nv_chunk elements of one part and one formulation.
@@ -285,7 +289,7 @@ contains
          f%twod = .true.
          f%axisym = etype == ETYPE_QUAD2D_AW .or. etype == ETYPE_QUAD2D_VW
          if (etype == ETYPE_QUAD2D_PSS) f%es_ncol(ES_THK) = 1     ! its thickness
-      case (ETYPE_BEAM_BS)
+      case (ETYPE_BEAM_BS, ETYPE_BEAM_HL)
          ! a line N1-N2 (the orientation node N3 is set-up data, not a node of the cell);
          ! no face, one edge; an XDMF Polyline of 2 nodes (written in a Mixed topology,
          ! which names the node count of a polyline cell)
@@ -297,8 +301,20 @@ contains
          f%nip = 1; f%weight = 1
          ! forces, moments, mass and rotary inertia scattered element-major (dx_beam_bs)
          f%rot = .true.; f%scatter_em = .true.
+         ! Hughes-Liu: the section points (block%nip, the QR/CST rule) call the material;
+         ! weight: 434 CPU ns per element-cycle (QR 2, elastic; 901 at 4x4 plastic) against
+         ! the hexahedron's 263 (BENCH_ONLY=beam make bench, docs/performance.md)
+         if (etype == ETYPE_BEAM_HL) then
+            f%nip = 4; f%weight = 2
+         end if
       end select
    end function element_family
+
+   !> A beam element type (either formulation of *SECTION_BEAM).
+   pure logical function is_beam(etype)
+      integer, intent(in) :: etype
+      is_beam = etype == ETYPE_BEAM_BS .or. etype == ETYPE_BEAM_HL
+   end function is_beam
 
    !> Element type of a *SECTION_SOLID ELFORM (0: not supported).
    pure integer function etype_of_elform(elform) result(etype)
@@ -362,6 +378,7 @@ contains
       integer, intent(in) :: elform
       etype = 0
       if (elform == 2) etype = ETYPE_BEAM_BS
+      if (elform == 1) etype = ETYPE_BEAM_HL
    end function etype_of_beam_elform
 
    !> An element's plot stress s (xx yy zz xy yz zx, held in the element's own frame by
@@ -375,7 +392,7 @@ contains
       select case (etype)
       case (ETYPE_SHELL_BT)
          call shell_stress_global(xe(:, 1:4), s)
-      case (ETYPE_BEAM_BS)
+      case (ETYPE_BEAM_BS, ETYPE_BEAM_HL)
          e1 = xe(:, 2) - xe(:, 1)
          l = norm2(e1)
          if (l > 0.0_wp) e1 = e1/l
@@ -514,7 +531,7 @@ contains
          vol = quad2d_area(xe)
       case (ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW)   ! per radian
          vol = quad2d_rvol(xe)
-      case (ETYPE_BEAM_BS)       ! the length: the caller multiplies by the section area
+      case (ETYPE_BEAM_BS, ETYPE_BEAM_HL)   ! the length: the caller multiplies by the area
          vol = norm2(xe(:, 2) - xe(:, 1))
       case default
          vol = hex_volume(xe)
@@ -531,7 +548,7 @@ contains
       case (ETYPE_TET4)
          call tet_moments(xe, xref, vol, m1, m2)
       case (ETYPE_SHELL_BT, ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS, &
-            ETYPE_BEAM_BS)
+            ETYPE_BEAM_BS, ETYPE_BEAM_HL)
          ! rigid shells, rigid 2D parts and beams are refused at build: no moments yet
          vol = 0.0_wp; m1 = 0.0_wp; m2 = 0.0_wp
       case default
@@ -559,7 +576,7 @@ contains
          l = quad2d_area(xe)/amax
          return
       end if
-      if (etype == ETYPE_BEAM_BS) then     ! the beam's length (its axial wave step L/c)
+      if (is_beam(etype)) then     ! the beam's length (its axial wave step L/c)
          l = norm2(xe(:, 2) - xe(:, 1))
          return
       end if

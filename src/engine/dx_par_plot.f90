@@ -17,7 +17,7 @@ module dx_par_plot
    use dx_strings, only: str
    use dx_log, only: log_info
    use dx_model, only: model_t, family_t, element_family, elem_stress_global, &
-                       beam_resultants, ETYPE_BEAM_BS
+                       beam_resultants, is_beam
    use dx_par, only: par_rank, par_size, par_barrier, par_allreduce, PAR_MAX
    use dx_io_sys, only: sys_mkdir_p, sys_epoch_seconds
    use dx_plot_hdf5, only: element_average, plot_merge_states, plot_rows, element_damage, &
@@ -247,7 +247,7 @@ contains
          st%f(F_FAILED)%r(1, i) = real(fl, wp)
          if (st%on(F_DAMAGE)) st%f(F_DAMAGE)%r(1, i) = element_damage(model%blocks(b), &
             pp%eloc(2, i), block_damage_slot(model, model%blocks(b)))
-         if (st%on(F_BEAM_FORCE) .and. model%blocks(b)%etype == ETYPE_BEAM_BS) &
+         if (st%on(F_BEAM_FORCE) .and. is_beam(model%blocks(b)%etype)) &
             call beam_resultants(model%blocks(b), pp%eloc(2, i), &
                model%x(:, model%blocks(b)%conn(:, pp%eloc(2, i))), &
                st%f(F_BEAM_FORCE)%r(:, i), st%f(F_BEAM_MOMENT)%r(:, i))

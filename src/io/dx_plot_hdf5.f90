@@ -17,7 +17,7 @@ module dx_plot_hdf5
    use dx_kinds, only: wp
    use dx_error, only: error_t
    use dx_model, only: model_t, elem_block_t, family_t, element_family, elem_stress_global, &
-                       ES_DMG, beam_resultants, ETYPE_BEAM_BS, ES_THK, ETYPE_SHELL_BT, &
+                       ES_DMG, beam_resultants, is_beam, ES_THK, ETYPE_SHELL_BT, &
                        etype_of_shell_elform
    use dx_h5, only: h5_file_t, h5_create, h5_close, h5_flush, h5_create_group, h5_write, &
                     h5_write_attr, h5_create_extendible, h5_append, h5_open_read, h5_read, &
@@ -531,7 +531,7 @@ contains
       if (.not. allocated(model%x)) return
       do ib = 1, size(model%blocks)
          associate (blk => model%blocks(ib))
-            if (blk%etype /= ETYPE_BEAM_BS) cycle
+            if (.not. is_beam(blk%etype)) cycle
             do i = 1, blk%nel
                call beam_resultants(blk, i, model%x(:, blk%conn(:, i)), &
                                     st%f(F_BEAM_FORCE)%r(:, blk%elem(i)), &

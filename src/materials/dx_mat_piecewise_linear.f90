@@ -21,7 +21,7 @@ module dx_mat_piecewise_linear
    use dx_strings, only: rstr, str
    use dx_card, only: card_t
    use dx_material, only: material_t, read_mid_ro, MAT_ERR_NO_PLANE_STRESS, MAT_ERR_PS_ALG
-   use dx_plane_stress, only: ps_update, ps_rate, ps_alg_valid
+   use dx_plane_stress, only: ps_update, ps_rate, ps_alg_valid, ps_fibre_constants
    use dx_mat_elastic, only: check_elastic_constants
    use dx_curve, only: curve_t
    implicit none
@@ -355,7 +355,7 @@ contains
    end function return_map
 
    !> Lamina update (sigma33 = 0) of nv points: see the module header and dx_plane_stress.
-   subroutine pl_update_plane_stress(self, nv, dt, deps, sig, hv, ierr, dezz)
+   subroutine pl_update_plane_stress(self, nv, dt, deps, sig, hv, ierr, dezz, fibre)
       class(mat_piecewise_linear_t), intent(in) :: self
       integer, intent(in) :: nv
       real(wp), intent(in) :: dt
@@ -364,6 +364,8 @@ contains
       real(wp), intent(inout) :: hv(:, :)
       integer, intent(inout) :: ierr(nv)
       real(wp), intent(out), optional :: dezz(nv)
+      logical, intent(in), optional :: fibre
+      real(wp) :: ee, nu
       real(wp) :: alpha(nv, 3), epsp(nv), y0(nv), hi(nv), dep(nv), r(nv), h, dh, rate
       logical :: tab
       integer :: i
@@ -374,6 +376,10 @@ contains
       if (.not. ps_alg_valid(self%ps_alg)) then
          ierr = MAT_ERR_PS_ALG
          return
+      end if
+      ee = self%e; nu = self%pr
+      if (present(fibre)) then   ! a beam's section point (dx_plane_stress: fibre constants)
+         if (fibre) call ps_fibre_constants(self%e, self%shear, ee, nu)
       end if
       ! the tabulated curve itself (two points or more), else the linear radius
       tab = .not. self%bilinear
@@ -395,10 +401,10 @@ contains
       end do
       alpha = 0.0_wp
       if (tab) then
-         call ps_update(self%ps_alg, nv, self%e, self%pr, self%shear, deps, sig, alpha, epsp, y0, &
+         call ps_update(self%ps_alg, nv, ee, nu, self%shear, deps, sig, alpha, epsp, y0, &
                         hi, 0.0_wp, dep, ierr, crv=self%hard, r=r, dezz=dezz)
       else
-         call ps_update(self%ps_alg, nv, self%e, self%pr, self%shear, deps, sig, alpha, epsp, y0, &
+         call ps_update(self%ps_alg, nv, ee, nu, self%shear, deps, sig, alpha, epsp, y0, &
                         hi, 0.0_wp, dep, ierr, dezz=dezz)
       end if
       do i = 1, nv

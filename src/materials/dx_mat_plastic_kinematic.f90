@@ -15,7 +15,7 @@ module dx_mat_plastic_kinematic
    use dx_strings, only: rstr
    use dx_card, only: card_t
    use dx_material, only: material_t, read_mid_ro, MAT_ERR_PS_ALG
-   use dx_plane_stress, only: ps_update, ps_rate, ps_alg_valid
+   use dx_plane_stress, only: ps_update, ps_rate, ps_alg_valid, ps_fibre_constants
    use dx_mat_elastic, only: check_elastic_constants
    implicit none
    private
@@ -138,7 +138,7 @@ contains
    end subroutine pk_update
 
    !> Lamina update (sigma33 = 0) of nv points: see the module header and dx_plane_stress.
-   subroutine pk_update_plane_stress(self, nv, dt, deps, sig, hv, ierr, dezz)
+   subroutine pk_update_plane_stress(self, nv, dt, deps, sig, hv, ierr, dezz, fibre)
       class(mat_plastic_kinematic_t), intent(in) :: self
       integer, intent(in) :: nv
       real(wp), intent(in) :: dt
@@ -147,11 +147,17 @@ contains
       real(wp), intent(inout) :: hv(:, :)
       integer, intent(inout) :: ierr(nv)
       real(wp), intent(out), optional :: dezz(nv)
+      logical, intent(in), optional :: fibre
+      real(wp) :: ee, nu
       real(wp) :: alpha(nv, 3), epsp(nv), y0(nv), hi(nv), dep(nv), r
       integer :: i
       if (.not. ps_alg_valid(self%ps_alg)) then
          ierr = MAT_ERR_PS_ALG
          return
+      end if
+      ee = self%e; nu = self%pr
+      if (present(fibre)) then   ! a beam's section point (dx_plane_stress: fibre constants)
+         if (fibre) call ps_fibre_constants(self%e, self%shear, ee, nu)
       end if
       do i = 1, nv
          r = 1.0_wp
@@ -163,7 +169,7 @@ contains
          alpha(i, 2) = hv(i, 3)
          alpha(i, 3) = hv(i, 5)
       end do
-      call ps_update(self%ps_alg, nv, self%e, self%pr, self%shear, deps, sig, alpha, epsp, y0, hi, &
+      call ps_update(self%ps_alg, nv, ee, nu, self%shear, deps, sig, alpha, epsp, y0, hi, &
                      (1.0_wp - self%beta)*self%ep, dep, ierr, dezz=dezz)
       do i = 1, nv
          hv(i, 1) = epsp(i)

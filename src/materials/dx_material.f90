@@ -15,6 +15,9 @@
 !> the default is plane-stress Hooke's law from K and G (transverse shears elastic, any shear
 !> correction factor is the element's). Models with plastic history or an equation of state
 !> that do not override it get ierr = MAT_ERR_NO_PLANE_STRESS (the caller names the type).
+!> fibre (optional, .true.): the point is a beam's section point (uniaxial stress plus two
+!> shears, sigma22 = sigma33 = 0) in the lamina form of dx_plane_stress's ps_fibre_constants:
+!> the model uses the fibre constants in place of E and nu (the shear modulus unchanged).
 !> ps_alg chooses the plane-stress plasticity algorithm (dx_plane_stress: 1 three secant
 !> iterations, 2 full iteration, 3 radial scaling - *CONTROL_SHELL MITER's LS-DYNA values - and
 !> 4 dynx's one-step analytic return); the shell build sets it, MAT_ERR_PS_ALG flags other values.
@@ -25,6 +28,7 @@ module dx_material
    use dx_curve, only: curve_t
    use dx_card, only: card_t
    use dx_eos, only: eos_t
+   use dx_plane_stress, only: ps_fibre_constants
    implicit none
    private
    public :: material_t, mat_holder_t, read_mid_ro, fd_step, fd_tangent
@@ -198,7 +202,7 @@ contains
    !> A model with plastic history (hv_eps_p > 0) or an equation of state that does not override
    !> this has no plane-stress form: its points get ierr = MAT_ERR_NO_PLANE_STRESS, sig unchanged.
    !> dezz (optional): the thickness strain increment of each point.
-   subroutine default_update_plane_stress(self, nv, dt, deps, sig, hv, ierr, dezz)
+   subroutine default_update_plane_stress(self, nv, dt, deps, sig, hv, ierr, dezz, fibre)
       class(material_t), intent(in) :: self
       integer, intent(in) :: nv
       real(wp), intent(in) :: dt
@@ -207,7 +211,8 @@ contains
       real(wp), intent(inout) :: hv(:, :)
       integer, intent(inout) :: ierr(nv)
       real(wp), intent(out), optional :: dezz(nv)
-      real(wp) :: g, lam, lb, tr
+      logical, intent(in), optional :: fibre
+      real(wp) :: g, lam, lb, tr, ef, nuf
       integer :: i
       if (self%hv_eps_p > 0 .or. self%takes_eos() .or. self%is_rigid) then
          ierr = MAT_ERR_NO_PLANE_STRESS
@@ -216,6 +221,12 @@ contains
       g = self%shear
       lam = self%bulk - 2.0_wp*g/3.0_wp
       lb = 2.0_wp*g*lam/(lam + 2.0_wp*g)
+      if (present(fibre)) then      ! a beam's section point: the fibre constants
+         if (fibre) then
+            call ps_fibre_constants(g*(3.0_wp*lam + 2.0_wp*g)/(lam + g), g, ef, nuf)
+            lb = ef*nuf/(1.0_wp - nuf**2)
+         end if
+      end if
       do i = 1, nv
          tr = lb*(deps(i, 1) + deps(i, 2))
          sig(i, 1) = sig(i, 1) + tr + 2.0_wp*g*deps(i, 1)

@@ -37,13 +37,21 @@
 !> (DYNA3D's non-iterative option; it ignores the sigma33 = 0 consistency of the plastic flow).
 !> Transverse shears (components 4, 5) are elastic. dezz: the thickness strain increment,
 !> elastic -nu/E (dsig11 + dsig22) plus plastic -(depsp11 + depsp22).
+!> Beam section points (the Hughes-Liu beam, dx_beam_hl; Hughes & Liu 1981): uniaxial stress
+!> x = sig11 plus the two shears t2 = sig12, t3 = sig13 (sig22 = sig33 = sig23 = 0), von Mises
+!> radius x^2 + 3 t2^2 + 3 t3^2, elastic factors E and G. The lamina with xi11 = x + t3,
+!> xi22 = x - t3, xi12 = t2 has the modes s = 2x, d = 2 t3, t = t2 and the same radius; its
+!> return scales s by 1/(1 + lam a1) and (d, t) by 1/(1 + lam a2). With the fibre constants
+!> (ps_fibre_constants) Ef, nuf for which Ef/(2(1 - nuf)) = E and Ef/(2(1 + nuf)) = G, the
+!> lamina's trial (strain increments de11/2 + dg13/2, de11/2 - dg13/2, dg12) and every one of the
+!> algorithms above are the beam point's, exactly: no second return mapping (dx_beam_hl).
 module dx_plane_stress
    use dx_kinds, only: wp
    use dx_curve, only: curve_t
    implicit none
    private
    public :: PS_SECANT3, PS_FULL, PS_RADIAL, PS_ONE_STEP, PS_ONE_STEP_N, ps_alg_name, ps_alg_valid
-   public :: ps_update, ps_full_lambda, ps_rate
+   public :: ps_update, ps_full_lambda, ps_rate, ps_fibre_constants
 
    integer, parameter :: PS_SECANT3 = 1, PS_FULL = 2, PS_RADIAL = 3, PS_ONE_STEP = 4
    !> the one-step return with the normal where the step enters the yield surface (the seed's
@@ -69,6 +77,15 @@ contains
       integer, intent(in) :: alg
       ps_alg_valid = alg >= PS_SECANT3 .and. alg <= PS_ONE_STEP_N
    end function ps_alg_valid
+
+   !> The fibre constants of a beam section point (module header): nuf = (E - G)/(E + G),
+   !> Ef = 2 G (1 + nuf), so that Ef/(2(1 - nuf)) = E and Ef/(2(1 + nuf)) = G.
+   pure subroutine ps_fibre_constants(e, g, ef, nuf)
+      real(wp), intent(in) :: e, g
+      real(wp), intent(out) :: ef, nuf
+      nuf = (e - g)/(e + g)
+      ef = 2.0_wp*g*(1.0_wp + nuf)
+   end subroutine ps_fibre_constants
 
    !> Effective strain rate of a lamina step (U: LS-DYNA's exact shell measure not confirmed):
    !> sqrt(2/3 e':e')/dt with the thickness strain of incompressible flow, e33 = -(e11 + e22),

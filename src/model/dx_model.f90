@@ -14,7 +14,7 @@ module dx_model
    use dx_run_state, only: run_state_t, restart_ctrl_t
    use dx_emc_types, only: emc_system_t
    use dx_element_types, only: elem_quality, ASPECT_WARN, WARP_WARN, shell_stress_global
-   use dx_element_types, only: elem_stress_global, beam_resultants, ETYPE_BEAM_BS
+   use dx_element_types, only: elem_stress_global, beam_resultants, ETYPE_BEAM_BS, is_beam
    use dx_element_types, only: elem_block_t, part_t, family_t, element_family, elem_volume, elem_moments, elem_length, &
                                etype_of_elform, solid_shape, MAX_NEN, MAX_FACE_NODES, &
                                MAX_FACES, ETYPE_DEFAULT, ETYPES, ES_WORK, ES_HGS, ES_PHIM, &
@@ -31,7 +31,7 @@ module dx_model
    !> the element-family table (dx_element_types): what every consumer asks of a block's
    !> element type (nodes, faces, edges, volume, moments, lumped mass, plot cell, weight)
    public :: elem_quality, ASPECT_WARN, WARP_WARN, shell_stress_global, elem_stress_global
-   public :: beam_resultants, ETYPE_BEAM_BS
+   public :: beam_resultants, ETYPE_BEAM_BS, is_beam
    public :: family_t, element_family, elem_volume, elem_moments, elem_length, etype_of_elform, &
              solid_shape, MAX_NEN, MAX_FACE_NODES, MAX_FACES, ETYPES
    !> the family-state slots of a block's es array (dx_element_types)
@@ -57,6 +57,9 @@ module dx_model
       logical :: beam = .false.
       real(wp) :: bprop(6) = 0.0_wp
       real(wp) :: nsm = 0.0_wp         !< non-structural mass per length (beams)
+      !> ELFORM 1 (Hughes-Liu): bprop(1:4) = TS1 TS2 TT1 TT2 (CST 0) or the outer and inner
+      !> diameters D1 D2 d1 d2 (CST 1); the section rule QR and the type CST
+      integer :: qr = 2, cst = 0
    end type section_t
 
    !> *HOURGLASS (a negative or zero value means: take the *CONTROL_* default)
