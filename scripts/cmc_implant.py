@@ -13,16 +13,18 @@ plastic strain 0, 0.0108, 0.0363, 0.0910; B-bar hexahedra (ELFORM 2). The ball i
 (*MAT_RIGID, CoCr E 210 GPa for the contact penalty): its stiffness is 200x the
 polyethylene's, so its own deformation (~0.5 % of the socket's) is below the mesh error;
 translations x and z free (y: symmetry), rotations fixed (a frictionless sphere in a sphere
-has no rotational stiffness). Its radius is R + 1e-7 mm (a 0.1 nm interference: a body held
-by contact only needs an active contact at the first iteration; the preload it adds is
-negligible). Frictionless NODES_TO_SURFACE contact, slave the ball's outer nodes (on the
-socket's directions), master the socket's inner segments, SFS 100.
+has no rotational stiffness). Its outer nodes start DELTA = 1e-7 mm into the socket's
+facets (a body held by contact only needs an active contact at the first iteration; the
+preload is negligible). Frictionless NODES_TO_SURFACE contact, slave the ball's outer
+nodes (one on the ray through each socket facet's centre, DELTA past the facet's plane),
+master the socket's inner segments, SFS 100.
 Loads (the seed's joint reaction forces, N): key pinch 188.5, screwdriver grasp 241.1, tip
 pinch 61.5, "directed dorsally and radially" (not perpendicular): dynx applies them at
-20 degrees from the cup axis in the x-z plane (an assumption: the seed gives no angle), in
-4 load steps (half of each on the half model).
+10 degrees from the cup axis in the x-z plane (an assumption: the seed gives no angle; at
+20 degrees the patch reaches this 40-degree cap's rim, which yields through under 241 N),
+in 4 load steps with IAUTO 1 (half of each on the half model).
 
-  cmc_implant.py gen [--n 4] [--load 188.5] [--angle 20] [--backed] OUT.k
+  cmc_implant.py gen [--n 4] [--load 188.5] [--angle 10] [--backed] OUT.k
   cmc_implant.py post OUTDIR        peak pressure, von Mises, reaction against the load
   cmc_implant.py check OUTDIR       the regression case (implicit_cmc_implant)
   cmc_implant.py study WORKDIR [--n 3,6,12]  mesh convergence (key pinch, unbacked), then
@@ -51,7 +53,7 @@ def direction(u, v, a=A):
     return tuple(x/n for x in d)
 
 
-def gen(path, n=4, load=188.5, angle=20.0, backed=False, steps=4):
+def gen(path, n=4, load=188.5, angle=10.0, backed=False, steps=4, centres=True):
     """The deck: socket n x 2n (v, u) elements over the cap, n through the thickness
     (polyethylene and Ti layers in proportion when backed); ball one layer 0.5 mm deep on
     the same cap."""
@@ -96,17 +98,38 @@ def gen(path, n=4, load=188.5, angle=20.0, backed=False, steps=4):
                      nid(i, j, k + 1), nid(i + 1, j, k + 1), nid(i + 1, j + 1, k + 1),
                      nid(i, j + 1, k + 1)]
                 elems.append((1 if k < npe else 2, c[4:] + c[:4]))
-    # ball: the socket's cap (the same directions: its outer nodes face the socket's inner
-    # ones), one layer from Rb - 0.5 to Rb, ids from 100000
-    rb = R + DELTA
-    bid = lambda i, j, k: 100001 + i + (nu_ + 1)*(j + (nv_ + 1)*k)
-    for k, r in enumerate((rb - 0.5, rb)):
-        for j in range(nv_ + 1):
-            for i in range(nu_ + 1):
-                dd = direction(-1.0 + 2.0*i/nu_, j/nv_)
-                nodes[bid(i, j, k)] = tuple(r*x for x in dd)
-    for j in range(nv_):
-        for i in range(nu_):
+    # ball: one layer from Rb - 0.5 to Rb, ids from 100000; its outer nodes face the
+    # socket's facets: with centres (the default) on the rays through the facets' parametric
+    # centres, each at DELTA inside the facet's plane (a node in a segment's interior keeps
+    # one segment while the ball moves; on the socket's corners (centres=False) a node meets
+    # four facets and flipped between them under a near-axial load)
+    def socket_at(i2, j2, r):     # half-integer grid (i2/2, j2/2) of the socket's layer at r
+        return tuple(r*x for x in direction(-1.0 + i2/nu_, 0.5*j2/nv_))
+    if centres:
+        mi, mj = nu_ - 1, nv_ - 1
+        def ball_node(i, j, k):
+            q = [socket_at(2*(i + a), 2*(j + b), R) for a, b in ((0, 0), (1, 0), (1, 1), (0, 1))]
+            c = [sum(p[m] for p in q)/4.0 for m in range(3)]
+            e1 = [q[1][m] - q[0][m] + q[2][m] - q[3][m] for m in range(3)]
+            e2 = [q[3][m] - q[0][m] + q[2][m] - q[1][m] for m in range(3)]
+            nrm = [e1[1]*e2[2] - e1[2]*e2[1], e1[2]*e2[0] - e1[0]*e2[2], e1[0]*e2[1] - e1[1]*e2[0]]
+            ln = math.sqrt(sum(v*v for v in nrm))
+            nrm = [v/ln for v in nrm]
+            dd = direction(-1.0 + (2*i + 1.0)/nu_, (j + 0.5)/nv_)
+            t = sum(c[m]*nrm[m] for m in range(3))/sum(dd[m]*nrm[m] for m in range(3))
+            r = abs(t) + DELTA - (0.5 if k == 0 else 0.0)
+            return tuple(r*x for x in dd)
+    else:
+        mi, mj = nu_, nv_
+        def ball_node(i, j, k):
+            return socket_at(2*i, 2*j, R + DELTA - (0.5 if k == 0 else 0.0))
+    bid = lambda i, j, k: 100001 + i + (mi + 1)*(j + (mj + 1)*k)
+    for k in (0, 1):
+        for j in range(mj + 1):
+            for i in range(mi + 1):
+                nodes[bid(i, j, k)] = ball_node(i, j, k)
+    for j in range(mj):
+        for i in range(mi):
             c = [bid(i, j, 0), bid(i + 1, j, 0), bid(i + 1, j + 1, 0), bid(i, j + 1, 0),
                  bid(i, j, 1), bid(i + 1, j, 1), bid(i + 1, j + 1, 1), bid(i, j + 1, 1)]
             elems.append((3, c[4:] + c[:4]))
@@ -129,7 +152,7 @@ def gen(path, n=4, load=188.5, angle=20.0, backed=False, steps=4):
     # penalty's compliance 1/100 of the layer's); the ball's nodes face the socket's corners,
     # so the faceting of the conforming surfaces does not open gaps (a faceted master's
     # chords lie 0.02 mm inside the sphere at n = 3, more than the ball's travel)
-    outer = [bid(i, j, 1) for j in range(nv_ + 1) for i in range(nu_ + 1)]
+    outer = [bid(i, j, 1) for j in range(mj + 1) for i in range(mi + 1)]
     d.kw('SET_NODE_LIST', f(1), *[''.join(f(q) for q in outer[k:k + 8])
                                   for k in range(0, len(outer), 8)])
     segs = [f(nid(i, j, 0), nid(i + 1, j, 0), nid(i + 1, j + 1, 0), nid(i, j + 1, 0))
@@ -140,7 +163,7 @@ def gen(path, n=4, load=188.5, angle=20.0, backed=False, steps=4):
          f(100.0, 100.0))
     d.curve(1, [(0.0, 0.0), (1.0, 1.0)])
     b = math.radians(angle)
-    pole = bid(nu_//2, 0, 1)
+    pole = bid(mi//2, 0, 1)
     half = 0.5*load
     d.load(pole, 1, 1, half*math.sin(b))
     d.load(pole, 3, 1, -half*math.cos(b))
@@ -218,25 +241,24 @@ def post(out):
         print('step %d: residual ratios %s' % (i + 1, ' '.join('%.1e' % v for v in q)))
 
 
-# the regression case (n = 3, key pinch 188.5 N at 20 degrees, unbacked): this code's own
+# the regression case (n = 3, key pinch 188.5 N at 10 degrees, unbacked): this code's own
 # values at the commit that added the case (peak pressure, max von Mises, max plastic strain of
 # the polyethylene): a gold, to 1e-6 relative (the serial run is deterministic; the bound
 # leaves room for the last digits of another compiler's MUMPS/BLAS sums)
-GOLD_N3 = (28.1818, 19.9870, 0.012976)
+GOLD_N3 = (18.1782, 16.0243, 0.0036755)
 
 
 def check(out, load=188.5):
-    """implicit_cmc_implant (n = 3, key pinch, unbacked, 4 load steps): (1) equilibrium: the
-    socket's held surface reacts the applied 188.5 N (the contact carries it all) to 1e-6;
-    (2) Newton near the solution: every pair of residual ratios with q_k <= 1e-2 and q_(k+1)
-    above 1e-10 (within 100x of the round-off of the penalty forces: SFS 100 on the
-    polyethylene's segments, ~1e5 N/mm at coordinates ~3 mm, over |r0| ~ 24 N) has q_(k+1) <= max(30 q_k^2, 0.01 q_k): quadratic (measured
-    q(k+1)/q(k)^2 up to 21) down to ~1e-6, then a fast linear tail (0.004-0.007 per
-    iteration: the ball's nodes face the socket's segment corners, and a node moving across
-    a faceted master's edge changes its segment; SSNV104 shows the same tail); an iteration
-    gaining less than two decades near the solution fails; (3) the peak pressure, von Mises
-    and plastic strain against GOLD_N3 to 1e-4 relative (the printed 6 digits), with the
-    thin-layer (Winkler) estimate p0 = 3 F/(2 pi R^2 (1 - cos^3 40 deg)) printed beside."""
+    """implicit_cmc_implant (n = 3, key pinch at 10 degrees, unbacked, 4 load steps): (1)
+    equilibrium: the socket's held surface reacts the applied 188.5 N (the contact carries it
+    all) to 1e-6; (2) quadratic Newton near the solution: every pair of residual ratios with
+    q_k <= 2e-2 and q_(k+1) above 1e-10 (within 100x of the round-off of the penalty forces:
+    SFS 100 on the polyethylene's segments, ~1e5 N/mm at coordinates ~3 mm, over |r0| ~
+    24 N) has q_(k+1) <= 10 q_k^2 (measured <= 0.2; a linear rate of 0.2 or slower fails),
+    at least one pair; (3) the peak pressure, von Mises and plastic strain against GOLD_N3
+    (this code's values when the case was added) to 1e-4 relative (the printed 6 digits;
+    1e-3 on the plastic strain), with the thin-layer (Winkler) estimate
+    p0 = 3 F/(2 pi R^2 (1 - cos^3 40 deg)) of an axial load printed beside."""
     from dxpost import report
     p, vm, ep, f = result(out)
     ok = report('reaction [N] vs the applied load', f, load, 0.0, 1e-6)
@@ -245,11 +267,11 @@ def check(out, load=188.5):
     for i, q in enumerate(newton(out)):
         print('step %d: residual ratios %s' % (i + 1, ' '.join('%.2e' % v for v in q)))
         for a, b in zip(q, q[1:]):
-            if a <= 1e-2 and b > 1e-10:
+            if a <= 2e-2 and b > 1e-10:
                 npair += 1
-                worst = max(worst, b/max(30*a*a, 0.01*a))
-    good = npair >= 1 and worst <= 1.0
-    print('Newton: %d pairs near the solution, max q(k+1)/max(30 q(k)^2, 0.01 q(k)) = %.3g  %s'
+                worst = max(worst, b/(a*a))
+    good = npair >= 1 and worst <= 10.0
+    print('Newton: %d pairs near the solution, max q(k+1)/q(k)^2 = %.3g  %s'
           % (npair, worst, 'PASS' if good else 'FAIL'))
     ok &= good
     gp, gv, ge = GOLD_N3
@@ -320,7 +342,7 @@ if __name__ == '__main__':
             args.remove('--backed')
         n = opt('--n', 4, int)
         load = opt('--load', 188.5)
-        angle = opt('--angle', 20.0)
+        angle = opt("--angle", 10.0)
         gen(args[0], n=n, load=load, angle=angle, backed=backed)
     elif what == 'post':
         post(args[0])
