@@ -45,9 +45,10 @@ module dx_implicit_contact
    use dx_model, only: model_t
    use dx_contact_penalty, only: project_point
    use dx_sparse, only: sparse_sym_t, sparse_add_element
+   use dx_implicit_rigid, only: irigid_t, irig_add
    implicit none
    private
-   public :: icontact_t, icon_pairs, icon_assemble, icon_commit
+   public :: icontact_t, icon_pairs, icon_assemble, icon_commit, icon_pair_nodes
 
    integer, parameter :: NDE = 24      !< the pattern's element width (the hexahedron's)
    !> the quadrilateral segment's corners in (xi, eta) (dx_contact_penalty's quad_geom)
@@ -247,8 +248,9 @@ contains
 
    !> The contact forces at u into fint (f_int - f_contact) and with want_k each active
    !> pair's tangent into kmat (the pair ip is pseudo-element e0 + ip of its pattern).
-   subroutine icon_assemble(model, con, u, want_k, fint, kmat, e0)
+   subroutine icon_assemble(model, con, u, want_k, fint, kmat, e0, rig)
       type(model_t), intent(in) :: model
+      type(irigid_t), intent(in) :: rig   !< rigid bodies (pairs touching one: T^T k T)
       type(icontact_t), intent(inout) :: con
       real(wp), intent(in) :: u(:, :)
       logical, intent(in) :: want_k
@@ -342,7 +344,8 @@ contains
                ke = 0.0_wp
                ke(1:15, 1:15) = pair_tangent()
                if (mu <= 0.0_wp) ke = 0.5_wp*(ke + transpose(ke))   ! symmetric to round-off
-               call sparse_add_element(kmat, e0 + best, ke)
+               call irig_add(rig, model, kmat, e0 + best, [p%node(con%snode(i)), &
+                  (p%seg(min(b, nsn), s), b = 1, 4)], ke)
             end if
          end associate
       end do
@@ -447,6 +450,25 @@ contains
    end function past_free_edge
 
    !> The trial contact state (of the last evaluation) becomes the committed one.
+   !> The nodes of each candidate pair: enodes(1:5, ip) = slave, the segment's corners
+   !> (a triangle's fourth 0), 0 after them.
+   subroutine icon_pair_nodes(model, con, enodes)
+      type(model_t), intent(in) :: model
+      type(icontact_t), intent(in) :: con
+      integer, intent(out) :: enodes(:, :)
+      integer :: i, ip, s
+      enodes = 0
+      do i = 1, con%ns
+         associate (p => model%contact%iface(con%sif(i))%pass(con%spass(i)))
+            do ip = con%sfirst(i), con%slast(i)
+               s = con%pseg(ip)
+               enodes(1, ip) = p%node(con%snode(i))
+               enodes(2:1 + p%nsn(s), ip) = p%seg(1:p%nsn(s), s)
+            end do
+         end associate
+      end do
+   end subroutine icon_pair_nodes
+
    subroutine icon_commit(con)
       type(icontact_t), intent(inout) :: con
       con%ftc = con%ftt

@@ -20,13 +20,17 @@ module dx_implicit_system
    use dx_loads, only: add_external_loads
    use dx_par, only: par_self_handle
    use dx_contact_input, only: CT_NODES_TO_SURFACE, CT_SURFACE_TO_SURFACE, CT_ONE_WAY
-   use dx_implicit_contact, only: icontact_t, icon_pairs, icon_assemble, icon_commit
+   use dx_implicit_contact, only: icontact_t, icon_pairs, icon_assemble, icon_commit, &
+                                  icon_pair_nodes
+   use dx_implicit_rigid, only: irigid_t, irig_setup, irig_layouts, irig_add, irig_nodes, &
+                                irig_gather, irig_scatter, irig_reset, irig_commit, &
+                                irig_prescribe, irig_dof_name
    implicit none
    private
    public :: implicit_system_t, isys_setup, isys_assemble, isys_commit, isys_external, &
              isys_refind, &
              isys_prescribe, isys_comm, isys_gather, isys_scatter, isys_dof_name, &
-             isys_fix, isys_null_names
+             isys_fix, isys_null_names, isys_reset
 
    !> One block's committed (c) and trial (t) point state: S, Ebar (6, 8, nel), history
    !> (nh, 8, nel); the element's stress work w (committed) and its trial increment dw.
@@ -48,18 +52,22 @@ module dx_implicit_system
       integer :: nel = 0                    !< elements (contact pairs follow in the pattern)
       type(icontact_t) :: con               !< penalty contact (dx_implicit_contact)
       logical :: has_contact = .false.
+      type(irigid_t) :: rig                 !< rigid bodies (dx_implicit_rigid)
+      logical, allocatable :: rblock(:)     !< (blocks) a rigid part's block: not assembled
    end type implicit_system_t
 
 contains
 
    !> Check the model for what the implicit solver has, number the equations, form the
    !> sparse pattern and the zero state. Errors are input errors (exit 2).
-   subroutine isys_setup(model, sys, error)
+   subroutine isys_setup(model, sys, error, rigid_ok)
       type(model_t), intent(in) :: model
       type(implicit_system_t), intent(inout) :: sys
       type(error_t), allocatable, intent(out) :: error
+      logical, intent(in), optional :: rigid_ok   !< rigid bodies are taken (dx_implicit)
       integer :: b, e, a, i, k, n, nh, ne, d, ngp
-      integer, allocatable :: cmap(:, :)
+      integer, allocatable :: cmap(:, :), enodes(:, :)
+      logical :: rok
       character(*), parameter :: why = ' (the implicit Newton solver of IMFLAG = 1, issue 20)'
       sys%linear = model%ctrl%imp%nsolvr == 1
       if (allocated(model%contact)) then
@@ -84,9 +92,11 @@ contains
          end do
          sys%has_contact = size(model%contact%iface) > 0
       end if
-      if (allocated(model%rigid)) then
+      rok = .false.
+      if (present(rigid_ok)) rok = rigid_ok
+      if (allocated(model%rigid) .and. .not. rok) then
          call set_error(error, 'rigid bodies (*MAT_RIGID, *CONSTRAINED_*) are not yet in '// &
-                        'the implicit solver'//why); return
+                        'this implicit analysis (eigenvalues)'//why); return
       end if
       if (allocated(model%walls)) then
          if (size(model%walls) > 0) then
@@ -100,6 +110,7 @@ contains
       end if
       do b = 1, size(model%blocks)
          associate (p => model%parts(model%blocks(b)%ipart))
+            if (model%mats(p%imat)%m%is_rigid) cycle     ! (a rigid body's elements)
             if (.not. tl_supported(model%blocks(b)%etype)) then
                call set_error(error, '*PART '//str(p%label)//': its *SECTION_* element '// &
                   'formulation is not in the implicit solver (solid ELFORM 1, 2, 10 are)'// &
@@ -110,10 +121,6 @@ contains
                   'one solve per step) takes elastic materials; *PART '//str(p%label)// &
                   ' has *MAT_ type '//str(model%mats(p%imat)%m%mtype)//' with history '// &
                   '(plasticity): use NSOLVR 12'); return
-            end if
-            if (model%mats(p%imat)%m%is_rigid) then
-               call set_error(error, '*PART '//str(p%label)//': rigid material is not yet '// &
-                              'in the implicit solver'//why); return
             end if
          end associate
       end do
@@ -148,6 +155,9 @@ contains
             end associate
          end do
       end if
+      if (allocated(model%rigid)) then     ! a rigid body's nodes: its six equations
+         where (spread(model%rigid%node_body, 1, 3) > 0) sys%eqn = 0
+      end if
       n = 0
       do i = 1, model%nn
          do d = 1, 3
@@ -157,6 +167,9 @@ contains
             end if
          end do
       end do
+      ! rigid bodies: their nodes no equations, each body six after the nodes' (n grows)
+      call irig_setup(model, sys%eqn, n, sys%rig, error)
+      if (allocated(error)) return
       sys%neq = n
       if (n == 0) then
          call set_error(error, 'the implicit solver found no free degree of freedom (every '// &
@@ -169,10 +182,12 @@ contains
          sys%eoff(b) = ne
          ne = ne + model%blocks(b)%nel
       end do
-      allocate(sys%emap(3*TL_NEN, ne))
+      allocate(sys%emap(3*TL_NEN, ne), sys%rblock(size(model%blocks)))
       do b = 1, size(model%blocks)
          associate (blk => model%blocks(b))
             sys%emap(:, sys%eoff(b) + 1:sys%eoff(b) + blk%nel) = 0
+            sys%rblock(b) = model%mats(model%parts(blk%ipart)%imat)%m%is_rigid
+            if (sys%rblock(b)) cycle
             do e = 1, blk%nel
                do a = 1, size(blk%conn, 1)
                   do d = 1, 3
@@ -185,10 +200,15 @@ contains
       sys%nel = ne
       if (sys%has_contact) then    ! one pseudo-element per candidate contact pair
          call icon_pairs(model, sys%eqn, sys%con, cmap)
+         call rigid_layouts(model, sys, cmap, error)
+         if (allocated(error)) return
          ! Coulomb friction makes the consistent contact tangent unsymmetric: every entry
          call sparse_symbolic(n, reshape([sys%emap, cmap], [3*TL_NEN, ne + sys%con%np]), sys%k, &
                               unsym=any(model%contact%iface(:)%fs > 0.0_wp))
       else
+         allocate(cmap(3*TL_NEN, 0))
+         call rigid_layouts(model, sys, cmap, error)
+         if (allocated(error)) return
          call sparse_symbolic(n, sys%emap, sys%k)
       end if
       allocate(sys%bs(size(model%blocks)))
@@ -223,6 +243,7 @@ contains
       ke = 0.0_wp
       if (want_k) call sparse_zero(sys%k)
       do b = 1, size(model%blocks)
+         if (sys%rblock(b)) cycle
          associate (blk => model%blocks(b), s => sys%bs(b), &
                     mat => model%mats(model%parts(model%blocks(b)%ipart)%imat)%m)
             nen = size(blk%conn, 1)
@@ -250,39 +271,82 @@ contains
                do a = 1, nen
                   fint(:, blk%conn(a, e)) = fint(:, blk%conn(a, e)) + fe(3*a - 2:3*a)
                end do
-               if (want_k) call sparse_add_element(sys%k, sys%eoff(b) + e, ke)
+               if (want_k) call irig_add(sys%rig, model, sys%k, sys%eoff(b) + e, &
+                                         blk%conn(:, e), ke)
             end do
          end associate
       end do
-      if (sys%has_contact) call icon_assemble(model, sys%con, u, want_k, fint, sys%k, sys%nel)
+      if (sys%has_contact) call icon_assemble(model, sys%con, u, want_k, fint, sys%k, sys%nel, &
+                                              sys%rig)
    end subroutine isys_assemble
 
    !> The contact candidates re-found from the committed displacements u (after a converged
    !> step); when they changed, the sparse pattern is formed anew (changed: the caller
    !> analyses it again).
-   subroutine isys_refind(model, sys, u, changed)
+   subroutine isys_refind(model, sys, u, changed, error)
       type(model_t), intent(in) :: model
       type(implicit_system_t), intent(inout) :: sys
       real(wp), intent(in) :: u(:, :)
       logical, intent(out) :: changed
+      type(error_t), allocatable, intent(out) :: error
       integer, allocatable :: cmap(:, :)
       changed = .false.
       if (.not. sys%has_contact) return
       call icon_pairs(model, sys%eqn, sys%con, cmap, u, changed)
       if (.not. changed) return
+      call rigid_layouts(model, sys, cmap, error)
+      if (allocated(error)) return
       call sparse_symbolic(sys%neq, reshape([sys%emap, cmap], [3*TL_NEN, sys%nel + sys%con%np]), &
                            sys%k, unsym=.not. sys%k%sym)
    end subroutine isys_refind
 
+   !> The condensed maps of the elements and contact pairs (cmap) that touch rigid bodies
+   !> (dx_implicit_rigid's layouts); nothing without bodies.
+   subroutine rigid_layouts(model, sys, cmap, error)
+      type(model_t), intent(in) :: model
+      type(implicit_system_t), intent(inout) :: sys
+      integer, intent(inout) :: cmap(:, :)
+      type(error_t), allocatable, intent(out) :: error
+      integer, allocatable :: enodes(:, :), map(:, :)
+      integer :: b, e, np
+      if (sys%rig%nb == 0) return
+      np = size(cmap, 2)
+      allocate(enodes(8, sys%nel + np), map(3*TL_NEN, sys%nel + np))
+      enodes = 0
+      do b = 1, size(model%blocks)
+         if (sys%rblock(b)) cycle
+         associate (blk => model%blocks(b))
+            do e = 1, blk%nel
+               enodes(1:size(blk%conn, 1), sys%eoff(b) + e) = blk%conn(:, e)
+            end do
+         end associate
+      end do
+      if (np > 0) call icon_pair_nodes(model, sys%con, enodes(:, sys%nel + 1:))
+      map(:, 1:sys%nel) = sys%emap
+      map(:, sys%nel + 1:) = cmap
+      call irig_layouts(sys%rig, sys%eqn, enodes, map, error)
+      sys%emap = map(:, 1:sys%nel)
+      cmap = map(:, sys%nel + 1:)
+   end subroutine rigid_layouts
+
+   !> The rigid bodies' trial state back to the committed one (a step's start or retry).
+   subroutine isys_reset(sys)
+      type(implicit_system_t), intent(inout) :: sys
+      call irig_reset(sys%rig)
+   end subroutine isys_reset
+
    !> The trial state (of the last assembly) becomes the committed one; the blocks' plot
    !> fields: Cauchy stress and history (element averages in every point slot) and the
    !> stress work (glstat's internal energy).
-   subroutine isys_commit(model, sys)
+   subroutine isys_commit(model, sys, h, gamma)
       type(model_t), intent(inout) :: model
       type(implicit_system_t), intent(inout) :: sys
+      real(wp), intent(in) :: h, gamma     !< dynamics: the step and Newmark GAMMA (h = 0: statics)
       integer :: b, ip, k
       if (sys%has_contact) call icon_commit(sys%con)
+      call irig_commit(sys%rig, h, gamma)
       do b = 1, size(model%blocks)
+         if (sys%rblock(b)) cycle
          associate (blk => model%blocks(b), s => sys%bs(b))
             s%sc = s%st; s%ec = s%et; s%hc = s%ht
             s%wc = s%wc + s%dw
@@ -308,10 +372,10 @@ contains
       call add_external_loads(model, t, fext)
    end subroutine isys_external
 
-   !> The prescribed displacements at time t into u.
+   !> The prescribed displacements (and rigid motions, the rigid nodes') at time t into u.
    subroutine isys_prescribe(model, sys, t, u)
       type(model_t), intent(in) :: model
-      type(implicit_system_t), intent(in) :: sys
+      type(implicit_system_t), intent(inout) :: sys
       real(wp), intent(in) :: t
       real(wp), intent(inout) :: u(:, :)
       integer :: k
@@ -320,14 +384,23 @@ contains
             u(pr%dof, pr%node) = pr%sf*model%curves(pr%curve)%eval(t)
          end associate
       end do
+      if (sys%rig%nb == 0) return
+      call irig_prescribe(sys%rig, model, t)
+      call irig_nodes(sys%rig, model, u)
    end subroutine isys_prescribe
 
-   !> The equations' entries of a nodal field v(3, nn) into r(neq).
-   subroutine isys_gather(sys, v, r)
+   !> The equations' entries of a nodal field v(3, nn) into r(neq): a rigid body's the
+   !> resultant force and moment of its nodes' (model given; else 0: nodal fields as masses).
+   subroutine isys_gather(sys, v, r, model)
       type(implicit_system_t), intent(in) :: sys
       real(wp), intent(in) :: v(:, :)
       real(wp), intent(out) :: r(:)
+      type(model_t), intent(in), optional :: model
       integer :: i, d
+      if (sys%rig%nb > 0) then
+         r = 0.0_wp
+         if (present(model)) call irig_gather(sys%rig, model, v, r)
+      end if
       do i = 1, size(sys%eqn, 2)
          do d = 1, 3
             if (sys%eqn(d, i) > 0) r(sys%eqn(d, i)) = v(d, i)
@@ -335,12 +408,18 @@ contains
       end do
    end subroutine isys_gather
 
-   !> v(3, nn) += alpha r(neq) on the equations' entries.
-   subroutine isys_scatter(sys, r, alpha, v)
-      type(implicit_system_t), intent(in) :: sys
+   !> v(3, nn) += alpha r(neq) on the equations' entries; with model (v: the displacements)
+   !> the rigid bodies move by alpha r and their nodes' v follow.
+   subroutine isys_scatter(sys, r, alpha, v, model)
+      type(implicit_system_t), intent(inout) :: sys
       real(wp), intent(in) :: r(:), alpha
       real(wp), intent(inout) :: v(:, :)
+      type(model_t), intent(in), optional :: model
       integer :: i, d
+      if (sys%rig%nb > 0 .and. present(model)) then
+         call irig_scatter(sys%rig, r, alpha)
+         call irig_nodes(sys%rig, model, v)
+      end if
       do i = 1, size(sys%eqn, 2)
          do d = 1, 3
             if (sys%eqn(d, i) > 0) v(d, i) = v(d, i) + alpha*r(sys%eqn(d, i))
@@ -363,6 +442,8 @@ contains
       character(:), allocatable :: s
       integer :: i, d
       character(1), parameter :: ax(3) = ['x', 'y', 'z']
+      s = irig_dof_name(sys%rig, model, q)
+      if (len(s) > 0) return
       s = 'equation '//str(q)
       do i = 1, size(sys%eqn, 2)
          do d = 1, 3

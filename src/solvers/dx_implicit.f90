@@ -40,7 +40,10 @@ module dx_implicit
    use dx_mumps, only: mumps_t
    use dx_implicit_system, only: implicit_system_t, isys_setup, isys_assemble, isys_commit, &
                                  isys_external, isys_prescribe, isys_comm, isys_gather, &
-                                 isys_scatter, isys_null_names, isys_fix, isys_refind
+                                 isys_scatter, isys_null_names, isys_fix, isys_refind, &
+                                 isys_reset
+   use dx_implicit_rigid, only: irig_geo, irig_inertia, irig_start_dyn, irig_kinetic, &
+                                irig_velocity
    implicit none
    private
    public :: implicit_t
@@ -54,6 +57,7 @@ module dx_implicit
       !> committed out-of-balance force f_ext - f_int (HHT), the trial acceleration, the
       !> lumped mass per equation
       real(wp), allocatable :: vc(:, :), ac(:, :), rsc(:, :), at(:, :), meq(:)
+      real(wp), allocatable :: m3(:, :)    !< nodal lumped mass (0 on rigid bodies' nodes)
       logical :: dyn = .false.
       real(wp) :: kin = 0.0_wp             !< kinetic energy of the committed state
       real(wp) :: wext = 0.0_wp            !< external work so far
@@ -81,7 +85,6 @@ contains
       type(output_t), intent(inout) :: out
       type(error_t), allocatable, intent(out) :: error
       real(wp) :: t0
-      real(wp), allocatable :: m3(:, :)
       if (.not. (model%ctrl%endtim > 0.0_wp)) then
          call set_error(error, '*CONTROL_TERMINATION: field ENDTIM: the implicit solver '// &
             '(IMFLAG = 1) steps the loads from 0 to ENDTIM, which must be > 0, got '// &
@@ -102,7 +105,7 @@ contains
       end select
       if (.not. allocated(model%x)) call init_state(model, dom)
       model%v = 0.0_wp
-      call isys_setup(model, self%sys, error)
+      call isys_setup(model, self%sys, error, rigid_ok=.true.)
       if (allocated(error)) return
       allocate(self%u(3, model%nn), self%uc(3, model%nn), self%fint(3, model%nn), &
                self%fintc(3, model%nn), self%fext(3, model%nn))
@@ -111,18 +114,23 @@ contains
       self%dyn = model%ctrl%imp%dynamic
       if (self%dyn) then
          allocate(self%vc(3, model%nn), self%ac(3, model%nn), self%rsc(3, model%nn), &
-                  self%at(3, model%nn), self%meq(self%sys%neq), m3(3, model%nn))
+                  self%at(3, model%nn), self%meq(self%sys%neq), self%m3(3, model%nn))
          self%vc = model%v0
-         m3 = spread(model%mass, 1, 3)
-         call isys_gather(self%sys, m3, self%meq)
+         self%m3 = spread(model%mass, 1, 3)
+         where (spread(self%sys%rig%nbody, 1, 3) > 0) self%m3 = 0.0_wp   ! (the bodies' own)
+         call isys_gather(self%sys, self%m3, self%meq)
+         associate (m3 => self%m3)
          ! a(0) = M^-1 (f_ext(0) - f_int(0)), u = 0 (f_int = 0)
          model%x = model%x0
          call isys_external(model, 0.0_wp, self%rsc)
          self%ac = 0.0_wp
          where (m3 > 0.0_wp) self%ac = self%rsc/m3
          self%at = self%ac
-         self%kin = 0.5_wp*sum(m3*self%vc**2)
+         call irig_start_dyn(self%sys%rig, model, self%rsc)
+         self%kin = 0.5_wp*sum(m3*self%vc**2) + irig_kinetic(self%sys%rig)
          model%v = self%vc
+         call irig_velocity(self%sys%rig, model, model%v)
+         end associate
          call log_info('dynx: implicit: dynamics (*CONTROL_IMPLICIT_DYNAMICS): Newmark GAMMA '// &
             rstr(model%ctrl%imp%gamma, 6)//', BETA '//rstr(model%ctrl%imp%beta, 6)// &
             ', HHT ALPHA '//rstr(model%ctrl%imp%alpha, 6)//', lumped mass')
@@ -190,7 +198,8 @@ contains
          self%t = 0.0_wp
          self%dt = 0.0_wp
          self%done = .false.
-         call dom%energies(model, self%kin, model%v, 0.0_wp, 0.0_wp, 0.0_wp, .true.)
+         call dom%energies(model, self%kin, model%v, 0.0_wp, 0.0_wp, 0.0_wp, &
+            .not. allocated(model%rigid))   ! (rigid: the bodies' own kinetic energy, kin)
          model%energy%ratio = 1.0_wp
          return
       end if
@@ -211,7 +220,11 @@ contains
          self%u = self%uc
       end do
       ! ---- converged: commit, energies, the next step's length
-      call isys_commit(model, self%sys)
+      if (self%dyn) then
+         call isys_commit(model, self%sys, tn - self%t, model%ctrl%imp%gamma)
+      else
+         call isys_commit(model, self%sys, 0.0_wp, 0.0_wp)
+      end if
       if (self%dyn) then
          ! work of the applied forces (trapezoid; reactions of SPCs do no work)
          self%wext = self%wext + 0.5_wp*sum((self%rsc + self%fext)*(self%u - self%uc))
@@ -220,14 +233,15 @@ contains
          self%ac = self%at
          self%rsc = self%fext
          call isys_fix(self%sys, self%vc)
-         self%kin = 0.5_wp*sum(spread(model%mass, 1, 3)*self%vc**2)
+         self%kin = 0.5_wp*sum(self%m3*self%vc**2) + irig_kinetic(self%sys%rig)
       else
          self%wext = self%wext + 0.5_wp*sum((self%fintc + self%fint)*(self%u - self%uc))
       end if
       self%uc = self%u
       self%fintc = self%fint
       changed = .false.
-      if (tn < self%tend) call isys_refind(model, self%sys, self%u, changed)
+      if (tn < self%tend) call isys_refind(model, self%sys, self%u, changed, error)
+      if (allocated(error)) return
       if (changed) then        ! new contact candidates: the pattern analysed again
          call self%ms%analyse(self%sys%k, isys_comm(), error)
          if (allocated(error)) return
@@ -237,7 +251,10 @@ contains
       model%f = self%fext - self%fint    ! (spcforc: the reactions are -f on the SPC dofs)
       model%x = model%x0 + self%u
       model%v = 0.0_wp
-      if (self%dyn) model%v = self%vc
+      if (self%dyn) then
+         model%v = self%vc
+         call irig_velocity(self%sys%rig, model, model%v)
+      end if
       self%dt = tn - self%t
       self%t = tn
       self%done = tn >= self%tend
@@ -245,7 +262,8 @@ contains
       model%time = tn
       model%cycle = self%nsteps
       model%dt = self%dt
-      call dom%energies(model, self%kin, model%v, self%wext, 0.0_wp, 0.0_wp, .true.)
+      call dom%energies(model, self%kin, model%v, self%wext, 0.0_wp, 0.0_wp, &
+                        .not. allocated(model%rigid))
       if (model%ctrl%imp%iauto == 1) then
          if (nit < model%ctrl%imp%iteopt - model%ctrl%imp%itewin) then
             h = 1.25_wp*h
@@ -288,6 +306,7 @@ contains
       nit = 0
       associate (sys => self%sys, imp => model%ctrl%imp)
          self%u = self%uc
+         call isys_reset(sys)
          call isys_prescribe(model, sys, tn, self%u)
          call residual(.true.)
          if (allocated(error)) return
@@ -306,7 +325,7 @@ contains
             if (allocated(error)) return
             s0 = dot_product(self%du, self%r)
             if (imp%nsolvr == 1) then       ! linear: one solve, then the stresses
-               call isys_scatter(sys, self%du, 1.0_wp, self%u)
+               call isys_scatter(sys, self%du, 1.0_wp, self%u, model)
                call residual(.false.)
                if (allocated(error)) return
                rn = norm2(self%r)
@@ -318,7 +337,7 @@ contains
             end if
             ! ---- line search on s(eta) = du . r(u + eta du)
             eta = 1.0_wp
-            call isys_scatter(sys, self%du, eta, self%u)
+            call isys_scatter(sys, self%du, eta, self%u, model)
             call residual(.true.)
             if (allocated(error)) return
             s1 = dot_product(self%du, self%r)
@@ -330,7 +349,7 @@ contains
                eta_new = eta - s1*(eta - etap)/(s1 - sp)
                eta_new = min(max(eta_new, 0.1_wp), 1.0_wp)
                if (eta_new == eta) exit
-               call isys_scatter(sys, self%du, eta_new - eta, self%u)
+               call isys_scatter(sys, self%du, eta_new - eta, self%u, model)
                etap = eta; sp = s1
                eta = eta_new
                call residual(.true.)
@@ -366,6 +385,7 @@ contains
       subroutine residual(want_k)
          logical, intent(in) :: want_k
          real(wp) :: t0
+         real(wp), allocatable :: vnet(:, :)
          if (self%sys%linear) then
             model%x = model%x0
          else
@@ -377,21 +397,24 @@ contains
          self%tasm = self%tasm + (wall_time() - t0)
          if (allocated(error)) return
          if (.not. self%dyn) then
-            call isys_gather(self%sys, self%fext - self%fint, self%r)
+            call isys_gather(self%sys, self%fext - self%fint, self%r, model)
+            if (want_k) call irig_geo(self%sys%rig, model, self%fext - self%fint, self%sys%k)
             return
          end if
          ! Newmark: a(n+1) from u(n+1); HHT: r = (1 + alpha)(f_ext - f_int)(n+1)
          ! - alpha (f_ext - f_int)(n) - M a(n+1); K_eff = (1 + alpha) K + M/(beta h^2)
          associate (al => model%ctrl%imp%alpha, be => model%ctrl%imp%beta)
             self%at = (self%u - self%uc - h*self%vc)/(be*h*h) - (0.5_wp/be - 1.0_wp)*self%ac
-            call isys_gather(self%sys, (1.0_wp + al)*(self%fext - self%fint) - &
-                             al*(self%rsc - self%fintc) - spread(model%mass, 1, 3)*self%at, &
-                             self%r)
+            vnet = (1.0_wp + al)*(self%fext - self%fint) - al*(self%rsc - self%fintc) - &
+                   self%m3*self%at
+            call isys_gather(self%sys, vnet, self%r, model)
             if (want_k) then
                self%sys%k%a = (1.0_wp + al)*self%sys%k%a
                self%sys%k%a(self%sys%k%dg) = &
                   self%sys%k%a(self%sys%k%dg) + self%meq/(be*h*h)
+               call irig_geo(self%sys%rig, model, vnet, self%sys%k)
             end if
+            call irig_inertia(self%sys%rig, h, be, want_k, self%r, self%sys%k)
          end associate
       end subroutine residual
 
