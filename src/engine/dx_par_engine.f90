@@ -37,6 +37,7 @@ module dx_par_engine
                           par_gather_values_root
    use dx_sort, only: sort_index
    use dx_par_model, only: par_model_t, par_fill_slots, par_exchange_forces, par_exchange_mass
+   use dx_rank_submodel, only: rank_local_node
    use dx_energy_sums, only: constraint_terms, rot_node_term
    use dx_energy_exact, only: energy_terms, energy_values, corner_counts, held_status, &
                               exact_mass, exact_initial_ke, work_nsums, work_hit, work_values, &
@@ -281,21 +282,11 @@ contains
    integer(int64) function elem_key(eng, e)
       type(par_engine_t), intent(in) :: eng
       integer, intent(in) :: e
-      integer :: lo, hi, mid
-      lo = 1
-      hi = size(eng%lel)
-      do while (lo <= hi)
-         mid = (lo + hi)/2
-         if (eng%lel(mid) == e) then
-            elem_key = eng%lkey(mid)
-            return
-         else if (eng%lel(mid) < e) then
-            lo = mid + 1
-         else
-            hi = mid - 1
-         end if
-      end do
-      if (e == eng%stale_elem) then
+      integer :: k
+      k = rank_local_node(eng%lel, e)        ! (the binary search of an ascending list)
+      if (k > 0) then
+         elem_key = eng%lkey(k)
+      else if (e == eng%stale_elem) then
          elem_key = eng%stale_key
       else if (allocated(eng%g%elem_block)) then
          elem_key = serial_key(eng, e)
