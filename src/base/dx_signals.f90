@@ -15,11 +15,14 @@
 !>                    is one dump, not one per rank.
 !>   SIGXFSZ:         ignored, so a file-size limit (ulimit -f) makes write(2) fail with
 !>                    EFBIG: an I/O error naming the file (exit 4), not a kill by signal.
+!>   SIGSEGV:         an exhausted address space (ulimit -v) is exit 4 with a message
+!>                    (dx_memory_fault); any other fault goes to the previous handler.
 !> The handler only stores the signal number in a C int (the sig_atomic_t idiom); the
 !> solver polls it once per cycle. This is the only module-level mutable state of dynx
 !> besides the log settings.
 module dx_signals
    use, intrinsic :: iso_c_binding, only: c_int, c_funptr, c_funloc, c_intptr_t
+   use dx_memory_fault, only: memory_fault_install
    implicit none
    private
    public :: signals_install, signal_stop_requested, signal_dump_requested, signal_name, &
@@ -74,6 +77,7 @@ contains
       old = c_signal(SIGUSR1_NUM, c_funloc(on_signal))
       old = c_signal(SIGUSR2_NUM, c_funloc(on_signal))
       old = c_signal(SIGXFSZ_NUM, transfer(1_c_intptr_t, old))   ! SIG_IGN
+      call memory_fault_install()      ! out of memory: exit 4 with a message, not SIGSEGV
    end subroutine signals_install
 
    !> The signal number of a pending stop request (0: none).

@@ -206,12 +206,13 @@ module dx_domain
          class(domain_t), intent(inout) :: d
          type(error_t), intent(in) :: error
       end subroutine fail_i
-      subroutine output_i(d, model, om, writer)
+      subroutine output_i(d, model, om, writer, kind)
          import :: domain_t, model_t
          class(domain_t), intent(inout) :: d
          type(model_t), intent(inout), target :: model
          type(model_t), pointer, intent(out) :: om
          logical, intent(out) :: writer
+         integer, intent(in), optional :: kind   !< the history file (dx_solver histories)
       end subroutine output_i
       subroutine elout_i(d, model, om)
          import :: domain_t, model_t
@@ -503,11 +504,12 @@ contains
       type(error_t), intent(in) :: error
    end subroutine s_fail
 
-   subroutine s_output_model(d, model, om, writer)
+   subroutine s_output_model(d, model, om, writer, kind)
       class(serial_domain_t), intent(inout) :: d
       type(model_t), intent(inout), target :: model
       type(model_t), pointer, intent(out) :: om
       logical, intent(out) :: writer
+      integer, intent(in), optional :: kind
       om => model
       writer = d%writer()
    end subroutine s_output_model

@@ -287,13 +287,15 @@ contains
       call par_engine_fail(error)
    end subroutine m_fail
 
-   !> The global model with the nodal state of this step (gathered); rank 0 writes.
-   subroutine m_output_model(d, model, om, writer)
+   !> The global model with the nodal state of this step that history file kind reads
+   !> (gathered; par_engine_output); rank 0 writes.
+   subroutine m_output_model(d, model, om, writer, kind)
       class(mpi_domain_t), intent(inout) :: d
       type(model_t), intent(inout), target :: model
       type(model_t), pointer, intent(out) :: om
       logical, intent(out) :: writer
-      call par_engine_output(d%eng, model, .false., om, writer)
+      integer, intent(in), optional :: kind
+      call par_engine_output(d%eng, model, .false., om, writer, kind)
    end subroutine m_output_model
 
    !> elout's values gathered into the global model om on rank 0 (par_engine_elout).
@@ -305,11 +307,12 @@ contains
    end subroutine m_element_output
 
    !> The global model (serial numbering) rank 0 opens the output with.
-   subroutine m_output_target(d, model, om, writer)
+   subroutine m_output_target(d, model, om, writer, kind)
       class(mpi_domain_t), intent(inout) :: d
       type(model_t), intent(inout), target :: model
       type(model_t), pointer, intent(out) :: om
       logical, intent(out) :: writer
+      integer, intent(in), optional :: kind
       om => par_engine_global(d%eng)
       writer = par_engine_writer()
    end subroutine m_output_target

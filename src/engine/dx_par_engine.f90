@@ -37,6 +37,7 @@ module dx_par_engine
                           par_gather_values_root
    use dx_sort, only: sort_index
    use dx_par_model, only: par_model_t, par_fill_slots, par_exchange_forces, par_exchange_mass
+   use dx_rank_submodel, only: rank_local_node
    use dx_energy_sums, only: constraint_terms, rot_node_term
    use dx_energy_exact, only: energy_terms, energy_values, corner_counts, held_status, &
                               exact_mass, exact_initial_ke, work_nsums, work_hit, work_values, &
@@ -92,6 +93,9 @@ module dx_par_engine
       real(wp), allocatable :: rec(:, :)         !< (set-up allocates it; no longer used)
       integer, allocatable :: elem_loc(:, :)     !< (2, nel) piece and position
       type(gather_plan_t) :: plan_own, plan_elem
+      !> root_only: the owned history nodes (nodout rows sent by their owners to rank 0)
+      type(gather_plan_t) :: plan_hist
+      integer, allocatable :: own_hist(:)        !< local numbers of the owned history nodes
       integer :: nbuf = 0
       !> wall time in the force exchange, the dt reduction, the ordered gathers
       real(wp) :: t_exch = 0.0_wp, t_dt = 0.0_wp, t_gath = 0.0_wp
@@ -281,21 +285,11 @@ contains
    integer(int64) function elem_key(eng, e)
       type(par_engine_t), intent(in) :: eng
       integer, intent(in) :: e
-      integer :: lo, hi, mid
-      lo = 1
-      hi = size(eng%lel)
-      do while (lo <= hi)
-         mid = (lo + hi)/2
-         if (eng%lel(mid) == e) then
-            elem_key = eng%lkey(mid)
-            return
-         else if (eng%lel(mid) < e) then
-            lo = mid + 1
-         else
-            hi = mid - 1
-         end if
-      end do
-      if (e == eng%stale_elem) then
+      integer :: k
+      k = rank_local_node(eng%lel, e)        ! (the binary search of an ascending list)
+      if (k > 0) then
+         elem_key = eng%lkey(k)
+      else if (e == eng%stale_elem) then
          elem_key = eng%stale_key
       else if (allocated(eng%g%elem_block)) then
          elem_key = serial_key(eng, e)
@@ -547,19 +541,24 @@ contains
       eng%t_gath = eng%t_gath + (par_wtime() - t0)
    end subroutine par_engine_energies
 
-   !> The global model for glstat and nodout at this step (nodal x, v, f gathered to rank 0,
-   !> or to every rank for decks with contact or rigid bodies); writer is true on rank 0,
-   !> which writes them. Plot states do not come here (par_engine_plot: per-rank part
-   !> files); plot is kept for the interface and not used.
-   subroutine par_engine_output(eng, model, plot, om, writer)
+   !> The global model for the history writers at this step; writer is true on rank 0,
+   !> which writes them. kind (dx_solver's history kinds: 1 glstat, 2 nodout, 3 matsum,
+   !> 4 spcforc, 5 sleout, 6 elout, 7 ncforc; absent: all nodes) says what is gathered into
+   !> it: glstat, matsum, sleout and elout read no nodal x, v, f (energies are exact sums,
+   !> dx_energy_exact), so nothing; nodout: when rank 0 alone writes (root_only), only the
+   !> rows of the history nodes, each sent by its owner (plan_hist, O(history nodes)); else,
+   !> and for spcforc and ncforc, x, v, f of every node (to rank 0, or to every rank for
+   !> decks with contact or rigid bodies). Plot states do not come here (par_engine_plot:
+   !> per-rank part files); plot is kept for the interface and not used.
+   subroutine par_engine_output(eng, model, plot, om, writer, kind)
       type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(in) :: model
       logical, intent(in) :: plot
       type(model_t), pointer, intent(out) :: om
       logical, intent(out) :: writer
-      real(wp), allocatable :: vals(:, :), gv(:, :)
-      integer :: i
+      integer, intent(in), optional :: kind
       real(wp) :: t0
+      integer :: k
       t0 = par_wtime()
       eng%g%time = model%time
       eng%g%cycle = model%cycle
@@ -567,25 +566,47 @@ contains
       eng%g%dt_elem = model%dt_elem
       eng%g%energy = model%energy
       eng%g%run = model%run
-      allocate(vals(9, size(eng%own)), gv(9, size(eng%plan_own%keys)))
-      do i = 1, size(eng%own)
-         vals(1:3, i) = model%x(:, eng%own(i))
-         vals(4:6, i) = model%v(:, eng%own(i))
-         vals(7:9, i) = model%f(:, eng%own(i))
-      end do
-      if (eng%root_only) then
-         call par_gather_values_root(eng%plan_own, vals, gv)
-      else
-         call par_gather_values(eng%plan_own, vals, gv)
-      end if
-      if (par_rank() == 0 .or. .not. eng%root_only) then
-         eng%g%x(:, eng%plan_own%keys) = gv(1:3, :)
-         eng%g%v(:, eng%plan_own%keys) = gv(4:6, :)
-         eng%g%f(:, eng%plan_own%keys) = gv(7:9, :)
-      end if
+      k = 0
+      if (present(kind)) k = kind
+      select case (k)
+      case (1, 3, 5, 6)                 ! no nodal values read
+      case (2)
+         if (eng%root_only) then
+            call gather_nodal(eng%plan_hist, eng%own_hist)
+         else
+            call gather_nodal(eng%plan_own, eng%own)
+         end if
+      case default
+         call gather_nodal(eng%plan_own, eng%own)
+      end select
       om => eng%g
       writer = par_rank() == 0
       eng%t_gath = eng%t_gath + (par_wtime() - t0)
+   contains
+      !> x, v, f of the local nodes nodes into g at plan's global keys (rank 0, or every
+      !> rank when not root_only).
+      subroutine gather_nodal(plan, nodes)
+         type(gather_plan_t), intent(in) :: plan
+         integer, intent(in) :: nodes(:)
+         real(wp), allocatable :: vals(:, :), gv(:, :)
+         integer :: i
+         allocate(vals(9, size(nodes)), gv(9, size(plan%keys)))
+         do i = 1, size(nodes)
+            vals(1:3, i) = model%x(:, nodes(i))
+            vals(4:6, i) = model%v(:, nodes(i))
+            vals(7:9, i) = model%f(:, nodes(i))
+         end do
+         if (eng%root_only) then
+            call par_gather_values_root(plan, vals, gv)
+         else
+            call par_gather_values(plan, vals, gv)
+         end if
+         if (par_rank() == 0 .or. .not. eng%root_only) then
+            eng%g%x(:, plan%keys) = gv(1:3, :)
+            eng%g%v(:, plan%keys) = gv(4:6, :)
+            eng%g%f(:, plan%keys) = gv(7:9, :)
+         end if
+      end subroutine gather_nodal
    end subroutine par_engine_output
 
    !> elout (*DATABASE_HISTORY_SOLID): every local element's mean stress and effective

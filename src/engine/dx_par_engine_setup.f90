@@ -18,7 +18,7 @@ module dx_par_engine_setup
    use dx_par_plan, only: par_gather_setup, par_gather_setup_root
    use dx_sort, only: sort_index
    use dx_par_model, only: par_model_t, par_model_from_file, par_model_fill_state
-   use dx_rank_submodel, only: rank_spcs, rank_prescribed
+   use dx_rank_submodel, only: rank_spcs, rank_prescribed, rank_local_node
    use dx_partition, only: partition_t, rank_part_t, partition_model, rank_part, write_report, &
                            has_shells
    use dx_rank_file, only: read_rank_file, write_rank_file, rank_file_name, deck_content_hash
@@ -252,6 +252,8 @@ contains
       end block
       if (eng%root_only) then     ! ordered sums and output on rank 0 alone
          call par_gather_setup_root(eng%plan_own, eng%pm%node_global(eng%own))
+         call owned_history_nodes(eng, eng%g%db%hist_nodes)      ! nodout rows from owners
+         call par_gather_setup_root(eng%plan_hist, eng%pm%node_global(eng%own_hist))
       else
          call par_gather_setup(eng%plan_own, eng%pm%node_global(eng%own))
       end if
@@ -314,6 +316,27 @@ contains
          end if
       end subroutine partition_here
    end subroutine par_engine_setup
+
+   !> eng%own_hist: the owned local nodes (ascending) that are history nodes (hist: the
+   !> deck's dense global history nodes, any order, repeats allowed; O(history nodes)).
+   subroutine owned_history_nodes(eng, hist)
+      type(par_engine_t), intent(inout) :: eng
+      integer, allocatable, intent(in) :: hist(:)
+      integer, allocatable :: h(:), idx(:)
+      logical, allocatable :: keep(:)
+      integer :: i
+      allocate(keep(size(eng%own)))
+      keep = .false.
+      if (allocated(hist)) then
+         idx = [(i, i = 1, size(hist))]
+         call sort_index(idx, hist)
+         h = hist(idx)
+         do i = 1, size(eng%own)
+            keep(i) = rank_local_node(h, eng%pm%node_global(eng%own(i))) > 0
+         end do
+      end if
+      eng%own_hist = pack(eng%own, keep)
+   end subroutine owned_history_nodes
 
    !> One log line (rank 0): the sub-model each rank built from its rank file (nodes,
    !> slot nodes, elements; the first 16 ranks), the O(NP) table rank 0 gathers for it.

@@ -13,8 +13,8 @@ module dx_rank_submodel
    use dx_strings, only: str
    implicit none
    private
-   public :: rank_submodel_cut, rank_local_node, rank_spcs, rank_prescribed, rank_node_loads, &
-             rank_records_verify
+   public :: rank_submodel_cut, rank_local_node, rank_local_nodes, rank_spcs, rank_prescribed, &
+             rank_node_loads, rank_records_verify
 
 contains
 
@@ -71,28 +71,46 @@ contains
    subroutine cut_records(model, rp)
       type(model_t), intent(in) :: model
       type(rank_part_t), intent(inout) :: rp
-      integer :: k
-      allocate(rp%spc_rec(7, size(rp%spcs)), rp%pm_int(4, size(rp%prescribed)), &
-               rp%pm_real(6, size(rp%prescribed)), rp%nl_int(3, size(rp%node_loads)), &
-               rp%nl_sf(size(rp%node_loads)))
-      do k = 1, size(rp%spcs)
-         associate (c => model%spcs(rp%spcs(k)))
-            rp%spc_rec(:, k) = [c%node, merge(1, 0, c%dof)]
-         end associate
-      end do
-      do k = 1, size(rp%prescribed)
-         associate (c => model%prescribed(rp%prescribed(k)))
-            rp%pm_int(:, k) = [c%node, c%dof, c%vad, c%curve]
-            rp%pm_real(:, k) = [c%sf, c%dir, c%death, c%birth]
-         end associate
-      end do
-      do k = 1, size(rp%node_loads)
-         associate (c => model%node_loads(rp%node_loads(k)))
-            rp%nl_int(:, k) = [c%node, c%dof, c%curve]
-            rp%nl_sf(k) = c%sf
-         end associate
-      end do
+      call encode_records(model%spcs(rp%spcs), model%prescribed(rp%prescribed), &
+                          model%node_loads(rp%node_loads), rp%spc_rec, rp%pm_int, &
+                          rp%pm_real, rp%nl_int, rp%nl_sf)
    end subroutine cut_records
+
+   !> The rank file's layout of SPC (s), prescribed-motion (p) and nodal-load (l) records,
+   !> their node numbers as they are: spc_rec (7, *) node and DOF flags; pm_int (4, *) node,
+   !> dof, vad, curve and pm_real (6, *) sf, dir, death, birth; nl_int (3, *) node, dof,
+   !> curve and nl_sf (*). The one encoding both the cut and dynx-part --verify use.
+   subroutine encode_records(s, p, l, spc_rec, pm_int, pm_real, nl_int, nl_sf)
+      type(spc_t), intent(in) :: s(:)
+      type(prescribed_t), intent(in) :: p(:)
+      type(load_node_t), intent(in) :: l(:)
+      integer, allocatable, intent(out) :: spc_rec(:, :), pm_int(:, :), nl_int(:, :)
+      real(wp), allocatable, intent(out) :: pm_real(:, :), nl_sf(:)
+      integer :: k
+      allocate(spc_rec(7, size(s)), pm_int(4, size(p)), pm_real(6, size(p)), &
+               nl_int(3, size(l)), nl_sf(size(l)))
+      do k = 1, size(s)
+         spc_rec(:, k) = [s(k)%node, merge(1, 0, s(k)%dof)]
+      end do
+      do k = 1, size(p)
+         pm_int(:, k) = [p(k)%node, p(k)%dof, p(k)%vad, p(k)%curve]
+         pm_real(:, k) = [p(k)%sf, p(k)%dir, p(k)%death, p(k)%birth]
+      end do
+      nl_int = reshape([(l(k)%node, l(k)%dof, l(k)%curve, k = 1, size(l))], [3, size(l)])
+      nl_sf = l%sf
+   end subroutine encode_records
+
+   !> The generic gather by global node of every record kind: the local numbers (positions
+   !> in the rank's ascending node list nodes) of the global nodes gnode; 0 where the rank
+   !> does not hold the node.
+   pure function rank_local_nodes(nodes, gnode) result(loc)
+      integer, intent(in) :: nodes(:), gnode(:)
+      integer :: loc(size(gnode))
+      integer :: k
+      do k = 1, size(gnode)
+         loc(k) = rank_local_node(nodes, gnode(k))
+      end do
+   end function rank_local_nodes
 
    !> The rank's SPCs from its file, on local node numbers (the rank's node list).
    function rank_spcs(rp) result(a)
@@ -100,8 +118,8 @@ contains
       type(spc_t), allocatable :: a(:)
       integer :: k
       allocate(a(size(rp%spc_rec, 2)))
+      a%node = rank_local_nodes(rp%nodes, rp%spc_rec(1, :))
       do k = 1, size(a)
-         a(k)%node = rank_local_node(rp%nodes, rp%spc_rec(1, k))
          a(k)%dof = rp%spc_rec(2:7, k) /= 0
       end do
    end function rank_spcs
@@ -112,34 +130,32 @@ contains
       type(prescribed_t), allocatable :: a(:)
       integer :: k
       allocate(a(size(rp%pm_int, 2)))
+      a%node = rank_local_nodes(rp%nodes, rp%pm_int(1, :))
+      a%dof = rp%pm_int(2, :)
+      a%vad = rp%pm_int(3, :)
+      a%curve = rp%pm_int(4, :)
+      a%sf = rp%pm_real(1, :)
       do k = 1, size(a)
-         a(k)%node = rank_local_node(rp%nodes, rp%pm_int(1, k))
-         a(k)%dof = rp%pm_int(2, k)
-         a(k)%vad = rp%pm_int(3, k)
-         a(k)%curve = rp%pm_int(4, k)
-         a(k)%sf = rp%pm_real(1, k)
          a(k)%dir = rp%pm_real(2:4, k)
-         a(k)%death = rp%pm_real(5, k)
-         a(k)%birth = rp%pm_real(6, k)
       end do
+      a%death = rp%pm_real(5, :)
+      a%birth = rp%pm_real(6, :)
    end function rank_prescribed
 
    !> The rank's nodal point loads from its file, on local node numbers.
    function rank_node_loads(rp) result(a)
       type(rank_part_t), intent(in) :: rp
       type(load_node_t), allocatable :: a(:)
-      integer :: k
       allocate(a(size(rp%nl_int, 2)))
-      do k = 1, size(a)
-         a(k)%node = rank_local_node(rp%nodes, rp%nl_int(1, k))
-         a(k)%dof = rp%nl_int(2, k)
-         a(k)%curve = rp%nl_int(3, k)
-         a(k)%sf = rp%nl_sf(k)
-      end do
+      a%node = rank_local_nodes(rp%nodes, rp%nl_int(1, :))
+      a%dof = rp%nl_int(2, :)
+      a%curve = rp%nl_int(3, :)
+      a%sf = rp%nl_sf
    end function rank_node_loads
 
-   !> dynx-part --verify: the file's records, turned into the run's (local nodes), against
-   !> the deck's lists at the file's indices, bit for bit. msg: empty when equal.
+   !> dynx-part --verify: the file's records, turned into the run's (local nodes) and back
+   !> to global nodes through the rank's node list, against the deck's lists at the file's
+   !> indices, in the file's encoding, bit for bit. msg: empty when equal.
    subroutine rank_records_verify(model, rp, msg)
       type(model_t), intent(in) :: model
       type(rank_part_t), intent(in) :: rp
@@ -147,7 +163,8 @@ contains
       type(spc_t), allocatable :: s(:)
       type(prescribed_t), allocatable :: p(:)
       type(load_node_t), allocatable :: l(:)
-      integer :: k
+      integer, allocatable :: as(:, :), api(:, :), ali(:, :), bs(:, :), bpi(:, :), bli(:, :)
+      real(wp), allocatable :: apr(:, :), alr(:), bpr(:, :), blr(:)
       msg = ''
       s = rank_spcs(rp)
       p = rank_prescribed(rp)
@@ -157,40 +174,37 @@ contains
          msg = 'number of SPC, prescribed-motion or nodal-load records'
          return
       end if
-      do k = 1, size(s)
-         associate (g => model%spcs(rp%spcs(k)))
-            if (rp%nodes(max(1, s(k)%node)) /= g%node .or. s(k)%node < 1 .or. &
-                any(s(k)%dof .neqv. g%dof)) msg = 'SPC record '//str(k)
-         end associate
-      end do
-      do k = 1, size(p)
-         associate (g => model%prescribed(rp%prescribed(k)))
-            if (p(k)%node < 1) then
-               msg = 'prescribed-motion record '//str(k)
-            else if (rp%nodes(p(k)%node) /= g%node .or. p(k)%dof /= g%dof .or. &
-                p(k)%vad /= g%vad .or. p(k)%curve /= g%curve .or. &
-                .not. same(p(k)%sf, g%sf) .or. .not. same(p(k)%death, g%death) .or. &
-                .not. same(p(k)%birth, g%birth) .or. .not. all(transfer(p(k)%dir, [0]) == &
-                transfer(g%dir, [0]))) then
-               msg = 'prescribed-motion record '//str(k)
-            end if
-         end associate
-      end do
-      do k = 1, size(l)
-         associate (g => model%node_loads(rp%node_loads(k)))
-            if (l(k)%node < 1) then
-               msg = 'nodal-load record '//str(k)
-            else if (rp%nodes(l(k)%node) /= g%node .or. l(k)%dof /= g%dof .or. &
-                l(k)%curve /= g%curve .or. .not. same(l(k)%sf, g%sf)) then
-               msg = 'nodal-load record '//str(k)
-            end if
-         end associate
-      end do
+      if (any(s%node < 1)) msg = 'SPC record '//str(findloc(s%node < 1, .true., 1))
+      if (any(p%node < 1)) msg = 'prescribed-motion record '//str(findloc(p%node < 1, .true., 1))
+      if (any(l%node < 1)) msg = 'nodal-load record '//str(findloc(l%node < 1, .true., 1))
+      if (len(msg) > 0) return
+      s%node = rp%nodes(s%node)
+      p%node = rp%nodes(p%node)
+      l%node = rp%nodes(l%node)
+      call encode_records(s, p, l, as, api, apr, ali, alr)
+      call encode_records(model%spcs(rp%spcs), model%prescribed(rp%prescribed), &
+                          model%node_loads(rp%node_loads), bs, bpi, bpr, bli, blr)
+      if (any(as /= bs)) then
+         msg = 'SPC record '//str(first_col(any(as /= bs, 1)))
+      else if (any(api /= bpi) .or. any(bits(apr) /= bits(bpr))) then
+         msg = 'prescribed-motion record '//str(first_col(any(api /= bpi, 1) .or. &
+                                                          any(bits(apr) /= bits(bpr), 1)))
+      else if (any(ali /= bli) .or. any(transfer(alr, 0_8, size(alr)) /= &
+                                        transfer(blr, 0_8, size(blr)))) then
+         msg = 'nodal-load record '//str(first_col(any(ali /= bli, 1) .or. &
+               transfer(alr, 0_8, size(alr)) /= transfer(blr, 0_8, size(blr))))
+      end if
    contains
-      logical function same(a, b)
-         real(wp), intent(in) :: a, b
-         same = transfer(a, 0_8) == transfer(b, 0_8)
-      end function same
+      !> The bit patterns of a (6, n) table of doubles.
+      function bits(a) result(b)
+         real(wp), intent(in) :: a(:, :)
+         integer(8) :: b(size(a, 1), size(a, 2))
+         b = reshape(transfer(a, 0_8, size(a)), shape(a))
+      end function bits
+      integer function first_col(d)
+         logical, intent(in) :: d(:)
+         first_col = findloc(d, .true., 1)
+      end function first_col
    end subroutine rank_records_verify
 
    !> Position of global node n in the ascending list nodes (0: absent); binary search.

@@ -238,7 +238,7 @@ contains
             interval = model%db%ncforc_dt; next = model%run%next_ncforc
          end select
          if (.not. (interval > 0.0_wp .and. (t >= next .or. done))) return
-         call dom%output_model(model, om, writer)
+         call dom%output_model(model, om, writer, kind)
          if (kind == 6) call dom%element_output(model, om)
          if (writer .and. kind == 1) call out%write_glstat(om, error)
          if (writer .and. kind == 2) call out%write_nodout(om, error)
