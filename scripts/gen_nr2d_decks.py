@@ -25,7 +25,7 @@
   gen_nr2d_decks.py deposit DECK ELFORM      a disc particle (radius 1 mm; *MAT_NULL + *EOS_LINEAR_
                                             POLYNOMIAL, a gas-like gamma - 1 = 0.4) in an elastic
                                             block, *DYNX_ENERGY_DEPOSITION 1 J/ms for 5 us
-  gen_nr2d_decks.py backside DIR            decks/pressure_table: the back-surface scene's
+  gen_nr2d_decks.py backside DIR [H]        decks/pressure_table: the back-surface scene's
                                             set-up (seed article 3) in elastic silica: an
                                             axisymmetric block radius 200 um, 300 um deep (5 um
                                             elements), non-reflecting side and bottom, the
@@ -247,10 +247,11 @@ def deposit(path, elform):
     write(path, s)
 
 
-def backside(d):
+def backside(d, h=0.005):
     import os
-    h = 0.005                                   # mm (5 um)
-    nx, ny = 40, 60
+    # h: element size (mm), 5 um in the scene; other values for the mesh study
+    # (scripts/studies_order_seed.py)
+    nx, ny = round(0.2/h), round(0.3/h)
     xy, quads, nid = block(nx, ny, h, h)
     top = [nid(i, ny) for i in range(nx + 1)]
     nrb = [nid(nx, j) for j in range(ny + 1)] + [nid(i, 0) for i in range(nx)]
@@ -383,7 +384,7 @@ def main(argv):
     elif what == 'deposit':
         deposit(path, int(argv[2]))
     elif what == 'backside':
-        backside(path)
+        backside(path, *(float(x) for x in argv[2:3]))
     elif what == 'blocks':
         blocks(path, float(argv[2]) if len(argv) > 2 else 0.0, len(argv) > 3)
     elif what == 'taylor2':

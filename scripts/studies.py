@@ -512,7 +512,9 @@ def readme(build, docs):
          '--L0 32.4 --R0 3.2`.', '',
          'Other pages of `make studies`, each with error against run time and observed orders: '
          '[scene_orders.md](scene_orders.md) (rod_impact, sliding_block, incline_friction, '
-         'emc_bars), [emc.md](emc.md) (conserving contact: ball in a box, ball in a shell, '
+         'emc_bars, taylor_bar_axisym, taylor_steinberg), [seed_scene_orders.md]'
+         '(seed_scene_orders.md) (brittle_impact, pressure_table, shell_projectile_plate, '
+         'shell_box_post: mesh sweeps, Richardson), [emc.md](emc.md) (conserving contact: ball in a box, ball in a shell, '
          'bars), [hertz.md](hertz.md), [ball_in_box.md](ball_in_box.md), [spall.md](spall.md), '
          '[lamina.md](lamina.md); the stiff and extreme cases: [stability.md](stability.md). '
          'Numbers checked by `make test`: `scripts/doc_numbers.py --check`.', '',
