@@ -26,6 +26,7 @@
       the same bar in 2D and as 3D hexahedra (gen_quad2d_decks.py hexbar): the arrival times
       of the front (as in bar) at the axis nodes y >= YMIN differ by at most TOL_T.
   quad2d_check.py taylor OUT LF TOL_L RF TOL_R
+  quad2d_check.py taylor2 OUT LF TOL_L RF TOL_R PEN  (gen_nr2d_decks.py taylor2: the mirror)
       axisymmetric Taylor bar: final length and foot radius within TOL_L, TOL_R relative of
       LF, RF (the converged 3D values).
   quad2d_check.py energy OUT BAND [AFTER]
@@ -221,6 +222,27 @@ def taylor(out, lf_ref, tol_l, rf_ref, tol_r):
         fail('Taylor bar')
 
 
+def taylor2(out, lf_ref, tol_l, rf_ref, tol_r, pen_max):
+    """Two Taylor bars head on (gen_nr2d_decks.py taylor2): bar A's final length (its top
+    axis node's y, the node of largest initial y) and foot radius (x of its contact face's
+    outer corner) against the rigid wall's, and the overlap of the two contact faces: by
+    symmetry twice the largest depth of bar A's face nodes below y = 0 over the nodout
+    records (sampled every 0.2 us); below pen_max (mm)."""
+    d = nodout(out)
+    y0 = {n: r[0][4][1] for n, r in d.items()}
+    top = max(d, key=lambda n: y0[n])
+    face = [n for n in d if y0[n] < 0.01]
+    foot = max(face, key=lambda n: d[n][0][4][0])
+    lf, rf = d[top][-1][4][1], d[foot][-1][4][0]
+    pen = max(max(-2.0*r[4][1] for r in d[n]) for n in face)
+    el, er = lf/lf_ref - 1.0, rf/rf_ref - 1.0
+    print(f'{out}: Lf = {lf:.4f} mm ({el:+.3e} of {lf_ref}, tol {tol_l}), Rf = {rf:.4f} mm '
+          f'({er:+.3e} of {rf_ref}, tol {tol_r}), largest overlap of the faces {pen:.4e} mm '
+          f'(limit {pen_max})')
+    if abs(el) > tol_l or abs(er) > tol_r or pen > pen_max:
+        fail('Taylor bars head on')
+
+
 def energy(out, band, after):
     worst = 0.0
     for r in read_table(out + '/glstat'):
@@ -248,6 +270,8 @@ if __name__ == '__main__':
         bar(sys.argv[2], float(sys.argv[3]), float(sys.argv[4]))
     elif w == 'barcmp':
         barcmp(sys.argv[2], sys.argv[3], float(sys.argv[4]), float(sys.argv[5]))
+    elif w == 'taylor2':
+        taylor2(sys.argv[2], *map(float, sys.argv[3:8]))
     elif w == 'taylor':
         taylor(sys.argv[2], *map(float, sys.argv[3:7]))
     elif w == 'energy':

@@ -292,6 +292,8 @@ contains
          associate (r => inp%contacts2d(i), ci => model%contact2d%iface(i))
             ci%label = r%label
             ci%fs = r%fs
+            ci%istiff = r%istiff
+            ci%sofscl = 0.1_wp*r%sfact
             do p = 1, 2                    ! side p: its free edges
                sid = merge(r%sids, r%sidm, p == 1)
                q = mp%pset%get(sid)

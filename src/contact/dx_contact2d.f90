@@ -11,7 +11,14 @@
 !> k |g| n on s, minus its shares (1 - xi, xi) on a, b (xi clamped to [0, 1]; momentum is
 !> conserved exactly), k = SFACT x 0.1 x K L**2/A of the master edge's element (LS-DYNA's
 !> solid penalty SLSFAC K A**2/V in 2D, per unit thickness; per radian in axisymmetry: times
-!> r_m**2/rbar, r_m the edge's midpoint radius, rbar = V/A the element's). Coulomb friction:
+!> r_m**2/rbar, r_m the edge's midpoint radius, rbar = V/A the element's); with card 3's ISTIFF
+!> = 2 instead the soft-constraint stiffness of LS-DYNA's SOFT = 1 (LS-DYNA Theory Manual,
+!> "Soft constraint penalty formulation"): k = 0.5 SOFSCL m*/dt**2, SOFSCL = 0.1 SFACT, m* the
+!> smaller of the slave's mass and the edge point's 1/((1 - xi)**2/m_a + xi**2/m_b) (so
+!> omega dt <= sqrt(2 SOFSCL) per pass, whatever the two meshes' masses), dt the elements'
+!> stable step times TSSFAC, updated when it has moved by 5 % (the Taylor mirror's crushed
+!> foot needs k to follow the shrinking step; cycle-to-cycle changes of k are not
+!> conservative); it does not lower the step (it is scaled to it). Coulomb friction:
 !> f_t = -min(FS |f_n|, m_s |v_t|/(2 dt)) along the relative sliding velocity v_t, the second
 !> the force that stops the slave's sliding in one step when both passes hold the pair
 !> (sticking). Positions x(n), velocities v(n-1/2). The critical step takes each contact
@@ -31,19 +38,30 @@ module dx_contact2d
    !> an edge faces a slave node when their normals make more than acos(-NFACE) = 102 deg
    !> (a node of a flat surface is not caught by the side of a block sliding over it)
    real(wp), parameter :: NFACE = 0.2_wp
+   !> relative change of the step that updates the soft constraint's stiffness (ISTIFF 2)
+   real(wp), parameter :: DTHYS = 0.05_wp
 
 contains
 
    !> The contact forces of t(n) into c%fc and f(1:2, :); the work of the last cycle's forces
    !> into c%work (fold . (vold + v)/2 dtavg, dtavg = the mean of the last two dt_old)
-   subroutine contact2d_forces(c, x, v, mass, dt_old, f, dtcrit)
+   subroutine contact2d_forces(c, x, v, mass, dt_old, tssfac, f, dtcrit)
       type(contact2d_t), intent(inout) :: c
-      real(wp), intent(in) :: x(:, :), v(:, :), mass(:), dt_old
+      real(wp), intent(in) :: x(:, :), v(:, :), mass(:), dt_old, tssfac
       real(wp), intent(inout) :: f(:, :), dtcrit
       integer :: i, p, k, j, s, a, b, jbest, n
-      real(wp) :: d(2), t(2), nv(2), el, xi, g, gbest, xib, fn(2), vt, ft, vrel(2), w2
+      real(wp) :: d(2), t(2), nv(2), el, xi, g, gbest, xib, fn(2), vt, ft, vrel(2), w2, kk, &
+                  dts, me
       real(wp), allocatable :: ns(:, :)
       n = size(x, 2)
+      ! the step of the soft-constraint stiffness (cycle 0: the coming one) follows the
+      ! step when it has moved by more than DTHYS: a k following each cycle's small changes
+      ! is not conservative (the step dips while the faces are pressed: 3e-3 of the energy
+      ! lost in contact2d_blocks_soft, 2e-4 with DTHYS), a k frozen at the first step too
+      ! soft once the elements at the contact are crushed (the Taylor mirror's faces
+      ! overlap 0.10 mm at SOFSCL 0.3, 0.04 mm with DTHYS)
+      if (abs(tssfac*dtcrit - c%dtsoft) > DTHYS*c%dtsoft) c%dtsoft = tssfac*dtcrit
+      dts = c%dtsoft
       if (.not. allocated(c%fc)) then
          allocate(c%fc(2, n), c%fold(2, n), c%vold(2, n))
          c%fc = 0.0_wp; c%fold = 0.0_wp; c%vold = v(1:2, :)
@@ -94,7 +112,15 @@ contains
                   d = x(1:2, b) - x(1:2, a)
                   t = d/norm2(d)
                   nv = [t(2), -t(1)]
-                  fn = -ps%k(jbest)*gbest*nv
+                  kk = ps%k(jbest)
+                  if (c%iface(i)%istiff == 2) then
+                     ! soft constraint: 0.5 SOFSCL m*/dt**2, m* = min(m_s, m_e), m_e the edge
+                     ! point's mass 1/((1 - xi)**2/m_a + xi**2/m_b) (omega dt <= sqrt(2
+                     ! SOFSCL) per pass, whatever the meshes' masses)
+                     me = 1.0_wp/((1.0_wp - xib)**2/mass(a) + xib**2/mass(b))
+                     kk = 0.5_wp*c%iface(i)%sofscl*min(mass(s), me)/dts**2
+                  end if
+                  fn = -kk*gbest*nv
                   if (fs > 0.0_wp) then          ! Coulomb, regularised (module header)
                      vrel = v(1:2, s) - ((1.0_wp - xib)*v(1:2, a) + xib*v(1:2, b))
                      vt = dot_product(vrel, t)
@@ -107,10 +133,13 @@ contains
                      fn = fn + ft*t
                   end if
                   ! the step the contact spring allows: 2/omega, omega**2 = 2 k (1/m_s +
-                  ! (1 - xi)**2/m_a + xi**2/m_b) (both passes may hold the pair)
-                  w2 = 2.0_wp*ps%k(jbest)*(1.0_wp/mass(s) + (1.0_wp - xib)**2/mass(a) + &
-                                           xib**2/mass(b))
-                  dtcrit = min(dtcrit, 2.0_wp/sqrt(w2))
+                  ! (1 - xi)**2/m_a + xi**2/m_b) (both passes may hold the pair); the soft
+                  ! constraint is scaled to the step itself (fed back, it would shrink it)
+                  if (c%iface(i)%istiff /= 2) then
+                     w2 = 2.0_wp*kk*(1.0_wp/mass(s) + (1.0_wp - xib)**2/mass(a) + &
+                                     xib**2/mass(b))
+                     dtcrit = min(dtcrit, 2.0_wp/sqrt(w2))
+                  end if
                   c%fc(:, s) = c%fc(:, s) + fn
                   c%fc(:, a) = c%fc(:, a) - (1.0_wp - xib)*fn
                   c%fc(:, b) = c%fc(:, b) - xib*fn

@@ -15,9 +15,12 @@
 !>   RATE (per unit thickness or per radian in 2D) from TSTART to TEND.
 !> *CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE (_ID/_TITLE) card 1: SIDS SIDM SFACT FREQ FS FD DC
 !>   MEMBS (LS-DYNA Keyword User's Manual, *CONTACT_2D_AUTOMATIC; SIDS, SIDM read as *SET_PART
-!>   ids); optional card 2: TBIRTH TDEATH SOS SOM NDS NDM COF INIT. FREQ is read past (dynx
-!>   searches every cycle); FD other than 0 or FS, DC, MEMBS and card 2's fields other than
-!>   their defaults are refused (not implemented).
+!>   ids); optional card 2: TBIRTH TDEATH SOS SOM NDS NDM COF INIT; optional card 3: VC VDC IPF
+!>   SLIDE ISTIFF TIEDGAP IGAPCL TIETYP. FREQ is read past (dynx searches every cycle); ISTIFF
+!>   0 or 1 is the segment penalty scaled by SFACT, 2 the soft-constraint stiffness from the
+!>   nodal masses and the step (LS-DYNA's SOFT = 1 form, SOFSCL = 0.1 SFACT; dx_contact2d);
+!>   FD other than 0 or FS, DC, MEMBS and the other fields of cards 2-3 other than their
+!>   defaults are refused (not implemented).
 module dx_read_twod
    use dx_kinds, only: wp
    use dx_error, only: error_t
@@ -257,7 +260,8 @@ contains
    end subroutine read_pulse_or_deposit
 
    !> *CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE: card 1 SIDS SIDM SFACT FREQ FS FD DC MEMBS,
-   !> optional card 2 TBIRTH TDEATH SOS SOM NDS NDM COF INIT (defaults only)
+   !> optional card 2 TBIRTH TDEATH SOS SOM NDS NDM COF INIT (defaults only), optional card 3
+   !> VC VDC IPF SLIDE ISTIFF TIEDGAP IGAPCL TIETYP (ISTIFF 0, 1, 2; the others defaults)
    subroutine read_contact_2d(deck, blk, inp, error)
       type(deck_t), intent(in) :: deck
       type(block_t), intent(in) :: blk
@@ -269,6 +273,8 @@ contains
       integer :: ic, k
       character(len=6), parameter :: c2(8) = ['TBIRTH', 'TDEATH', 'SOS   ', 'SOM   ', &
                                               'NDS   ', 'NDM   ', 'COF   ', 'INIT  ']
+      character(len=7), parameter :: c3(7) = ['VC     ', 'VDC    ', 'IPF    ', 'SLIDE  ', &
+                                              'TIEDGAP', 'IGAPCL ', 'TIETYP ']
       call deck_cursor(deck, blk, c)
       ic = data_start(blk)
       if (blk%opt_id .or. blk%opt_title) then          ! CID HEADING
@@ -276,7 +282,7 @@ contains
          call c%int('CID', 0, b%label, min=0)
       end if
       call c%need(ic, 'missing card '//str(ic)//' (SIDS SIDM SFACT FREQ FS FD DC MEMBS)')
-      call c%max_cards(ic + 1)
+      call c%max_cards(ic + 2)
       call c%seek(ic)
       call c%id('SIDS', b%sids)
       call c%id('SIDM', b%sidm)
@@ -293,6 +299,19 @@ contains
          call c%seek(ic + 1)
          do k = 1, 8
             call c%zero_real(trim(c2(k)), 'this option of the 2D contact')
+         end do
+      end if
+      if (ic + 2 <= blk%n) then                        ! card 3: VC VDC IPF SLIDE ISTIFF ..
+         call c%seek(ic + 2)
+         do k = 1, 4
+            call c%zero_real(trim(c3(k)), 'this option of the 2D contact')
+         end do
+         call c%int('ISTIFF', 0, b%istiff)
+         if (c%ok() .and. all(b%istiff /= [0, 1, 2])) call c%fail('ISTIFF', 'only 0 or 1 '// &
+            '(segment penalty from SFACT) and 2 (soft constraint from the nodal masses and '// &
+            'the step) are supported, got '//str(b%istiff))
+         do k = 5, 7
+            call c%zero_real(trim(c3(k)), 'this option of the 2D contact')
          end do
       end if
       if (.not. c%halt()) then

@@ -371,7 +371,8 @@ contains
       real(wp), intent(inout) :: dtcrit
       if (allocated(model%contact)) call contact_forces(model, dt_old, dtcrit)
       if (allocated(model%contact2d)) call contact2d_forces(model%contact2d, model%x, model%v, &
-                                                            model%mass, dt_old, model%f, dtcrit)
+                                                            model%mass, dt_old, model%ctrl%tssfac, &
+                                                            model%f, dtcrit)
    end subroutine s_contact_forces
 
    subroutine s_loads_shared(d, model, t, fext)

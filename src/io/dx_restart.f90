@@ -132,6 +132,9 @@ contains
             call rs%put('contact2d_vold', model%contact2d%vold)
             call rs%put('contact2d_dtold', model%contact2d%dtold)
             call rs%put('contact2d_work', model%contact2d%work)
+            ! the soft constraint's step (only with ISTIFF = 2: other dumps unchanged)
+            if (any(model%contact2d%iface(:)%istiff == 2)) &
+               call rs%put('contact2d_dtsoft', model%contact2d%dtsoft)
          end if
       end if
    end subroutine dump_components
@@ -164,6 +167,7 @@ contains
                call rs%get('contact2d_vold', c%vold)
                call rs%get('contact2d_dtold', c%dtold)
                call rs%get('contact2d_work', c%work)
+               if (rs%has('contact2d_dtsoft')) call rs%get('contact2d_dtsoft', c%dtsoft)
             end associate
          end if
       end if

@@ -18,6 +18,10 @@ module dx_contact2d_types
    type :: c2d_iface_t
       integer :: label = 0
       real(wp) :: fs = 0.0_wp                  !< Coulomb friction coefficient
+      !> ISTIFF: 0 the segment penalty pass(:)%k; 2 the soft-constraint stiffness 0.5 SOFSCL
+      !> m*/dt**2 (m* the smaller of the slave's and the edge point's mass, dt the last step)
+      integer :: istiff = 0
+      real(wp) :: sofscl = 0.1_wp              !< 0.1 SFACT (ISTIFF = 2)
       type(c2d_pass_t) :: pass(2)
    end type c2d_iface_t
 
@@ -27,6 +31,7 @@ module dx_contact2d_types
       real(wp), allocatable :: fold(:, :)      !< (2, nn) of the last cycle
       real(wp), allocatable :: vold(:, :)      !< (2, nn) v(n-3/2)
       real(wp) :: dtold = 0.0_wp               !< dt_old of the last cycle
+      real(wp) :: dtsoft = 0.0_wp              !< the step of the soft constraint (ISTIFF 2)
       real(wp) :: work = 0.0_wp                !< work of the contact forces (one cycle late)
       integer :: ncontact = 0                  !< slave nodes in contact, this cycle
    end type contact2d_t
