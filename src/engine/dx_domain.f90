@@ -185,14 +185,16 @@ module dx_domain
          character(*), intent(in) :: outdir
          type(error_t), allocatable, intent(out) :: error
       end subroutine contact_work_i
-      !> wold: w(n-1/2) of decks with rotations (an MPI run sums their kinetic energy)
-      subroutine energies_i(d, model, ke, vold, wsum, erw, dfac, need, wold)
+      !> wold: w(n-1/2) of decks with rotations (an MPI run sums their kinetic energy);
+      !> parts: matsum is written at this step (its part sums are formed; default .true.)
+      subroutine energies_i(d, model, ke, vold, wsum, erw, dfac, need, wold, parts)
          import :: domain_t, model_t, wp
          class(domain_t), intent(inout) :: d
          type(model_t), intent(inout) :: model
          real(wp), intent(in) :: ke, vold(:, :), wsum, erw, dfac
          logical, intent(in) :: need
          real(wp), intent(in), optional :: wold(:, :)
+         logical, intent(in), optional :: parts
       end subroutine energies_i
       subroutine plot_i(d, model, out, error)
          import :: domain_t, model_t, output_t, error_t
@@ -460,12 +462,13 @@ contains
    end subroutine s_contact_work
 
    !> The energies at t(n); dfac weighs the element work booked next cycle.
-   subroutine s_energies(d, model, ke, vold, wsum, erw, dfac, need, wold)
+   subroutine s_energies(d, model, ke, vold, wsum, erw, dfac, need, wold, parts)
       class(serial_domain_t), intent(inout) :: d
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: ke, vold(:, :), wsum, erw, dfac
       logical, intent(in) :: need
       real(wp), intent(in), optional :: wold(:, :)
+      logical, intent(in), optional :: parts
       real(wp) :: eint, ehg, epend
       real(wp), allocatable :: alive(:), all(:)
       integer(1), allocatable :: held(:)
@@ -477,10 +480,10 @@ contains
          end if
          if (allocated(model%rigid)) then
             call energy_terms(model, vold, size(model%mass), [integer ::], rs, wold=wold, &
-                              held=held, racc=d%rmap%racc)
+                              held=held, racc=d%rmap%racc, parts=parts)
          else
             call energy_terms(model, vold, size(model%mass), [integer ::], rs, wold=wold, &
-                              held=held)
+                              held=held, parts=parts)
          end if
          call energy_values(model, rs, dfac, wsum, erw, model)
          return

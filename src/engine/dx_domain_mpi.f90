@@ -257,17 +257,19 @@ contains
       call par_contact_work(d%contact, model, par_engine_global(d%eng), vold, dtavg, outdir)
    end subroutine m_contact_work
 
-   subroutine m_energies(d, model, ke, vold, wsum, erw, dfac, need, wold)
+   subroutine m_energies(d, model, ke, vold, wsum, erw, dfac, need, wold, parts)
       class(mpi_domain_t), intent(inout) :: d
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: ke, vold(:, :), wsum, erw, dfac
       logical, intent(in) :: need
       real(wp), intent(in), optional :: wold(:, :)
+      logical, intent(in), optional :: parts
       if (allocated(model%rigid)) then     ! the rigid nodes' terms of the cycle too
          call par_engine_energies(d%eng, model, vold, wsum, erw, dfac, need, wold, &
-                                  d%rigid%map%racc)
+                                  d%rigid%map%racc, parts=parts)
       else
-         call par_engine_energies(d%eng, model, vold, wsum, erw, dfac, need, wold)
+         call par_engine_energies(d%eng, model, vold, wsum, erw, dfac, need, wold, &
+                                  parts=parts)
       end if
    end subroutine m_energies
 

@@ -37,10 +37,16 @@ module dx_energy_exact
 
 contains
 
-   !> The number of sums (the same on every rank): with matsum, PS_N per part too.
-   integer function energy_nsums(model)
+   !> The number of sums (the same on every rank): with matsum, PS_N per part too (parts:
+   !> whether this event writes matsum, default .true.; .false.: the totals only, as on the
+   !> cycles that glstat or ENDENG alone need).
+   integer function energy_nsums(model, parts)
       type(model_t), intent(in) :: model
+      logical, intent(in), optional :: parts
       energy_nsums = S_N
+      if (present(parts)) then
+         if (.not. parts) return
+      end if
       if (model%db%matsum_dt > 0.0_wp .and. allocated(model%parts)) &
          energy_nsums = S_N + PS_N*size(model%parts)
    end function energy_nsums
@@ -83,8 +89,8 @@ contains
    !> corner k > nreal is slot k - nreal of local node slot(k - nreal) (MPI sub-model; a
    !> serial run passes nreal = nn). wold: shells' w(n-1/2); held (erosion): held_status;
    !> racc (rigid bodies): the cycle's rigid nodal terms (dx_rigid_exact), which the
-   !> bodies' own replace.
-   subroutine energy_terms(model, vold, nreal, slot, rs, nodes, wold, held, racc)
+   !> bodies' own replace. parts: the parts' sums too (energy_nsums; default .true.).
+   subroutine energy_terms(model, vold, nreal, slot, rs, nodes, wold, held, racc, parts)
       type(model_t), intent(in) :: model
       real(wp), intent(in) :: vold(:, :)
       integer, intent(in) :: nreal, slot(:)
@@ -93,8 +99,9 @@ contains
       real(wp), intent(in), optional :: wold(:, :)
       integer(1), intent(in), optional :: held(:)
       type(rsum_t), intent(in), optional :: racc
+      logical, intent(in), optional :: parts
       integer :: j
-      call rs_init(rs, energy_nsums(model))
+      call rs_init(rs, energy_nsums(model, parts))
       if (present(racc)) then
          call rs_add_sum(rs, S_KE, racc, 1)
          do j = 1, 3

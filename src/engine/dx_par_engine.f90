@@ -509,14 +509,17 @@ contains
    !> any NP. Erosion: the corner counts of the shared nodes are summed over the ranks by
    !> the slot exchange first (which nodes only eroded elements hold). matsum's part sums
    !> go into the global model's psum where it is allocated (rank 0, which writes matsum).
-   !> dfac = (dt(n+1/2) - dt(n-1/2))/4 weighs the element work still to be booked.
-   subroutine par_engine_energies(eng, model, vold, wsum, erw, dfac, needed, wold, racc)
+   !> dfac = (dt(n+1/2) - dt(n-1/2))/4 weighs the element work still to be booked; parts:
+   !> matsum is written at this step (the part sums are formed; default .true.).
+   subroutine par_engine_energies(eng, model, vold, wsum, erw, dfac, needed, wold, racc, &
+                                  parts)
       type(par_engine_t), intent(inout) :: eng
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: vold(:, :), wsum, erw, dfac
       logical, intent(in) :: needed
       real(wp), intent(in), optional :: wold(:, :)
       type(rsum_t), intent(in), optional :: racc     !< rigid nodes' terms (dx_rigid_exact)
+      logical, intent(in), optional :: parts
       real(wp), allocatable :: alive(:), all(:)
       integer(1), allocatable :: held(:)
       type(rsum_t) :: rs
@@ -530,7 +533,7 @@ contains
          held = held_status(alive, all)
       end if
       call energy_terms(model, vold, eng%pm%nloc, eng%pm%slot_node, rs, nodes=eng%own, &
-                        wold=wold, held=held, racc=racc)
+                        wold=wold, held=held, racc=racc, parts=parts)
       call rs_reduce(rs)
       if (associated(eng%g)) then
          call energy_values(model, rs, dfac, wsum, erw, eng%g)

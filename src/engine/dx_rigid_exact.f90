@@ -26,11 +26,13 @@ module dx_rigid_exact
    !> The body nodes this rank holds: body b's are node(ptr(b):ptr(b+1)-1) (local
    !> indices), pos their positions in the body's node list, own whether this rank owns
    !> them (adds their terms). racc: the cycle's rigid nodal terms (-m v(n-1/2).v(n+1/2),
-   !> -m v(n+1/2)) of the owned nodes.
+   !> -m v(n+1/2)) of the owned nodes; acc: the bodies' sums of the cycle (kept: allocated
+   !> once, cleared each cycle).
    type :: rigid_map_t
       integer, allocatable :: ptr(:), node(:), pos(:)
       logical, allocatable :: own(:)
       type(rsum_t) :: racc
+      type(rsum_t) :: acc
    end type rigid_map_t
 
 contains
@@ -64,11 +66,10 @@ contains
       type(rigid_map_t), intent(inout) :: map
       type(model_t), intent(inout) :: model
       real(wp), intent(in) :: t, dt, dtavg, vold(:, :)
-      type(rsum_t) :: acc
       real(wp) :: grav(3), tf(3), tq(3), tm(3), m, mr(3), s(RB_NS), ke, p(3), ke_n
       integer :: b, j, c0, d, nb
       logical :: body_loads
-      associate (rs => model%rigid)
+      associate (rs => model%rigid, acc => map%acc)
          nb = size(rs%bodies)
          call rs_init(acc, RB_NS*nb)
          do b = 1, nb

@@ -10,7 +10,7 @@ module dx_constraints
    use dx_model, only: model_t
    implicit none
    private
-   public :: apply_spc, apply_prescribed, apply_rigidwalls, add_wall_hits, apply_spc_rot, &
+   public :: apply_spc, apply_prescribed, apply_rigidwalls, apply_spc_rot, &
              apply_prescribed_rot
 
    !> The nodes the stonewalls corrected in one cycle (apply_rigidwalls), in wall order:
@@ -116,10 +116,10 @@ contains
    !> Stonewalls: correct v so no slave node crosses its wall during the step. Each node a
    !> wall corrects is a hit, recorded in wall order (walls, then the wall's node list) with
    !> its terms: the work the wall does on it, f.dtavg (v(n-1/2) + v(n+1/2))/2 = m dv.(v(n-1/2)
-   !> + v(n+1/2))/2, and m dv/dtavg (the force on the wall is minus their sum). add_wall_hits
-   !> sums them in that order. Terms and sums are separate steps so that an MPI run, whose
-   !> ranks compute the hits of the nodes they own with this same code, can add the gathered
-   !> terms in the serial order and get the serial bits (dx_par_engine).
+   !> + v(n+1/2))/2, and m dv/dtavg (the force on the wall is minus their sum). Terms and
+   !> sums are separate steps: the domain adds the terms exactly (dx_energy_exact work_hit),
+   !> so that an MPI run, whose ranks compute the hits of the nodes they own with this same
+   !> code, gets the serial bits.
    subroutine apply_rigidwalls(model, dt, dtavg, vold, v, hits)
       type(model_t), intent(in) :: model
       real(wp), intent(in) :: dt, dtavg
@@ -185,22 +185,4 @@ contains
       hits%val(1, hits%n) = work
       hits%val(2:4, hits%n) = f
    end subroutine add_hit
-
-   !> The serial sums of one cycle's hits: work += the work terms in hit order; each wall's
-   !> resultant force = - (its hits' m dv/dtavg summed in order), zero without hits.
-   subroutine add_wall_hits(model, hits, work)
-      type(model_t), intent(inout) :: model
-      type(wall_hits_t), intent(in) :: hits
-      real(wp), intent(inout) :: work
-      integer :: i, w
-      if (.not. allocated(model%walls)) return
-      do w = 1, size(model%walls)
-         model%walls(w)%force = 0.0_wp
-      end do
-      do i = 1, hits%n
-         w = hits%wall(i)
-         work = work + hits%val(1, i)
-         model%walls(w)%force = model%walls(w)%force - hits%val(2:4, i)
-      end do
-   end subroutine add_wall_hits
 end module dx_constraints

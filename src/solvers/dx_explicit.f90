@@ -328,7 +328,8 @@ contains
          if (allocated(model%contact2d)) wrig = wrig + model%contact2d%work   ! (a cycle late)
          call dom%energies(model, ke, vold, wext + wcon + wrig + model%run%wdep, -wrw, &
                            0.25_wp*(dt - dt_old), &
-                           need, self%wold)
+                           need, self%wold, parts=model%db%matsum_dt > 0.0_wp .and. &
+                           (done .or. t >= model%run%next_matsum))
          if (model%ctrl%endeng > 0.0_wp) call checkpoint_energy_band(ck, model, t)
       end associate
       self%t = t
