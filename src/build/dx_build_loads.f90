@@ -31,12 +31,13 @@ contains
       integer :: i, k, n, c
       type(prescribed_t), allocatable :: pr(:), skew(:)
       logical, allocatable :: rot(:)
-      integer :: j, d
+      integer :: j, d, m
+      integer, allocatable :: skew_spc(:)
       logical, parameter :: code(3, 0:7) = reshape([.false., .false., .false., &
          .true., .false., .false., .false., .true., .false., .false., .false., .true., &
          .true., .true., .false., .false., .true., .true., .true., .false., .true., &
          .true., .true., .true.], [3, 8])
-      allocate(fix(6, model%nn), skew(0))
+      allocate(fix(6, model%nn), skew(0), skew_spc(0))
       fix = .false.
       do i = 1, model%nn
          fix(1:3, i) = code(:, inp%node_tc(i))
@@ -56,8 +57,10 @@ contains
                if (allocated(error)) return
                do k = 1, size(nodes)
                   do d = 1, 3
-                     if (s%dof(d)) skew = [skew, prescribed_t(node=nodes(k), dof=4, vad=0, &
-                        curve=0, sf=0.0_wp, dir=inp%csys(j)%axes(:, d))]
+                     if (.not. s%dof(d)) cycle
+                     skew = [skew, prescribed_t(node=nodes(k), dof=4, vad=0, curve=0, &
+                                                sf=0.0_wp, dir=inp%csys(j)%axes(:, d))]
+                     skew_spc = [skew_spc, i]
                   end do
                end do
                cycle
@@ -68,6 +71,31 @@ contains
          end associate
       end do
       call twod_fixes(model, fix)
+      ! a skew SPC with a global translational one on the same node, or with a skew axis of
+      ! another system that is neither parallel nor orthogonal to it: the constraints are
+      ! applied one after the other (apply_spc, then apply_prescribed), which holds all of
+      ! them only for orthogonal axes: refused, naming CID
+      do k = 1, size(skew)
+         associate (s => inp%spcs(skew_spc(k)), nd => skew(k)%node)
+            if (any(fix(1:3, nd))) then
+               call set_error(error, at(inp, s%src)//'field CID: node '// &
+                  str(model%node_label(nd))//' also has a constraint along the global '// &
+                  'axes (*BOUNDARY_SPC_* with CID 0 or *NODE TC): a mix of global and '// &
+                  'local constraints on one node is not implemented')
+               return
+            end if
+            do m = 1, k - 1
+               if (skew(m)%node /= nd) cycle
+               if (abs(dot_product(skew(m)%dir, skew(k)%dir)) > 1.0e-12_wp .and. &
+                   abs(dot_product(skew(m)%dir, skew(k)%dir)) < 1.0_wp - 1.0e-12_wp) then
+                  call set_error(error, at(inp, s%src)//'field CID: node '// &
+                     str(model%node_label(nd))//' is held along axes of two coordinate '// &
+                     'systems that are neither parallel nor orthogonal: not implemented')
+                  return
+               end if
+            end do
+         end associate
+      end do
       n = count(any(fix, dim=1))
       allocate(model%spcs(n))
       n = 0
