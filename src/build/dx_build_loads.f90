@@ -11,7 +11,7 @@ module dx_build_loads
    use dx_error, only: error_t, set_error
    use dx_strings, only: str
    use dx_model, only: model_t, prescribed_t, load_segment_t, element_family, family_t
-   use dx_model_input, only: model_input_t, IVEL_SET, IVEL_NODE, IVEL_GEN, origin_t
+   use dx_model_input, only: model_input_t, IVEL_SET, IVEL_NODE, IVEL_GEN
    use dx_build_common, only: maps_t, at, at_line, set_nodes, curve_index, node_index, &
                               dense_segments
    implicit none
@@ -31,7 +31,7 @@ contains
       integer :: i, k, n, c
       type(prescribed_t), allocatable :: pr(:), skew(:)
       logical, allocatable :: rot(:)
-      integer :: j, d, m
+      integer :: d, m
       integer, allocatable :: skew_spc(:)
       logical, parameter :: code(3, 0:7) = reshape([.false., .false., .false., &
          .true., .false., .false., .false., .true., .false., .false., .false., .true., &
@@ -52,14 +52,12 @@ contains
                nodes = [node_index(inp, mp, s%id, s%src, 'NID', error)]
                if (allocated(error)) return
             end if
-            if (s%cid /= 0) then
-               j = csys_at(inp, s%cid, s%src, error)
-               if (allocated(error)) return
+            if (s%cid /= 0) then               ! axes resolved by dx_read_loads loads_finish
                do k = 1, size(nodes)
                   do d = 1, 3
                      if (.not. s%dof(d)) cycle
                      skew = [skew, prescribed_t(node=nodes(k), dof=4, vad=0, curve=0, &
-                                                sf=0.0_wp, dir=inp%csys(j)%axes(:, d))]
+                                                sf=0.0_wp, dir=s%axes(:, d))]
                      skew_spc = [skew_spc, i]
                   end do
                end do
@@ -140,23 +138,6 @@ contains
       pr = [pr, skew]
       call move_alloc(pr, model%prescribed)
    end subroutine build_bcs
-
-   !> The index in inp%csys of *DEFINE_COORDINATE_SYSTEM id (an error naming CID if none).
-   function csys_at(inp, id, src, error) result(j)
-      type(model_input_t), intent(in) :: inp
-      integer, intent(in) :: id
-      type(origin_t), intent(in) :: src
-      type(error_t), allocatable, intent(inout) :: error
-      integer :: j, k
-      j = 0
-      if (allocated(inp%csys)) then
-         do k = 1, size(inp%csys)
-            if (inp%csys(k)%id == id) j = k
-         end do
-      end if
-      if (j == 0) call set_error(error, at(inp, src)//'field CID: coordinate system '// &
-         str(id)//' is not defined (*DEFINE_COORDINATE_SYSTEM)')
-   end function csys_at
 
    !> A 2D deck (dx_quad2d; all its parts are 2D, dx_model_build): the z DOF of every node is
    !> fixed, so every z component of a nodal quantity stays zero whatever the loads; in
