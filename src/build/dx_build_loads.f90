@@ -11,7 +11,7 @@ module dx_build_loads
    use dx_error, only: error_t, set_error
    use dx_strings, only: str
    use dx_model, only: model_t, prescribed_t, load_segment_t, element_family, family_t
-   use dx_model_input, only: model_input_t, IVEL_SET, IVEL_NODE, IVEL_GEN, origin_t
+   use dx_model_input, only: model_input_t, IVEL_SET, IVEL_NODE, IVEL_GEN
    use dx_build_common, only: maps_t, at, at_line, set_nodes, curve_index, node_index, &
                               dense_segments
    implicit none
@@ -31,12 +31,13 @@ contains
       integer :: i, k, n, c
       type(prescribed_t), allocatable :: pr(:), skew(:)
       logical, allocatable :: rot(:)
-      integer :: j, d
+      integer :: d, m
+      integer, allocatable :: skew_spc(:)
       logical, parameter :: code(3, 0:7) = reshape([.false., .false., .false., &
          .true., .false., .false., .false., .true., .false., .false., .false., .true., &
          .true., .true., .false., .false., .true., .true., .true., .false., .true., &
          .true., .true., .true.], [3, 8])
-      allocate(fix(6, model%nn), skew(0))
+      allocate(fix(6, model%nn), skew(0), skew_spc(0))
       fix = .false.
       do i = 1, model%nn
          fix(1:3, i) = code(:, inp%node_tc(i))
@@ -51,13 +52,13 @@ contains
                nodes = [node_index(inp, mp, s%id, s%src, 'NID', error)]
                if (allocated(error)) return
             end if
-            if (s%cid /= 0) then
-               j = csys_at(inp, s%cid, s%src, error)
-               if (allocated(error)) return
+            if (s%cid /= 0) then               ! axes resolved by dx_read_loads loads_finish
                do k = 1, size(nodes)
                   do d = 1, 3
-                     if (s%dof(d)) skew = [skew, prescribed_t(node=nodes(k), dof=4, vad=0, &
-                        curve=0, sf=0.0_wp, dir=inp%csys(j)%axes(:, d))]
+                     if (.not. s%dof(d)) cycle
+                     skew = [skew, prescribed_t(node=nodes(k), dof=4, vad=0, curve=0, &
+                                                sf=0.0_wp, dir=s%axes(:, d))]
+                     skew_spc = [skew_spc, i]
                   end do
                end do
                cycle
@@ -68,6 +69,31 @@ contains
          end associate
       end do
       call twod_fixes(model, fix)
+      ! a skew SPC with a global translational one on the same node, or with a skew axis of
+      ! another system that is neither parallel nor orthogonal to it: the constraints are
+      ! applied one after the other (apply_spc, then apply_prescribed), which holds all of
+      ! them only for orthogonal axes: refused, naming CID
+      do k = 1, size(skew)
+         associate (s => inp%spcs(skew_spc(k)), nd => skew(k)%node)
+            if (any(fix(1:3, nd))) then
+               call set_error(error, at(inp, s%src)//'field CID: node '// &
+                  str(model%node_label(nd))//' also has a constraint along the global '// &
+                  'axes (*BOUNDARY_SPC_* with CID 0 or *NODE TC): a mix of global and '// &
+                  'local constraints on one node is not implemented')
+               return
+            end if
+            do m = 1, k - 1
+               if (skew(m)%node /= nd) cycle
+               if (abs(dot_product(skew(m)%dir, skew(k)%dir)) > 1.0e-12_wp .and. &
+                   abs(dot_product(skew(m)%dir, skew(k)%dir)) < 1.0_wp - 1.0e-12_wp) then
+                  call set_error(error, at(inp, s%src)//'field CID: node '// &
+                     str(model%node_label(nd))//' is held along axes of two coordinate '// &
+                     'systems that are neither parallel nor orthogonal: not implemented')
+                  return
+               end if
+            end do
+         end associate
+      end do
       n = count(any(fix, dim=1))
       allocate(model%spcs(n))
       n = 0
@@ -112,23 +138,6 @@ contains
       pr = [pr, skew]
       call move_alloc(pr, model%prescribed)
    end subroutine build_bcs
-
-   !> The index in inp%csys of *DEFINE_COORDINATE_SYSTEM id (an error naming CID if none).
-   function csys_at(inp, id, src, error) result(j)
-      type(model_input_t), intent(in) :: inp
-      integer, intent(in) :: id
-      type(origin_t), intent(in) :: src
-      type(error_t), allocatable, intent(inout) :: error
-      integer :: j, k
-      j = 0
-      if (allocated(inp%csys)) then
-         do k = 1, size(inp%csys)
-            if (inp%csys(k)%id == id) j = k
-         end do
-      end if
-      if (j == 0) call set_error(error, at(inp, src)//'field CID: coordinate system '// &
-         str(id)//' is not defined (*DEFINE_COORDINATE_SYSTEM)')
-   end function csys_at
 
    !> A 2D deck (dx_quad2d; all its parts are 2D, dx_model_build): the z DOF of every node is
    !> fixed, so every z component of a nodal quantity stays zero whatever the loads; in

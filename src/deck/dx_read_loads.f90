@@ -394,7 +394,8 @@ contains
    !> An *INITIAL_VELOCITY(_NODE, _GENERATION) with ICID: the velocities (VX VY VZ, the
    !> rotational VXR VYR VZR, the exempted VXE VYE VZE) are components along the axes of that
    !> *DEFINE_COORDINATE_SYSTEM; they become global components v = sum_k v_k axis_k.
-   !> A *LOAD_NODE_* with CID: the force (moment) along local axis d becomes its global
+   !> A *BOUNDARY_SPC_* with CID gets that system's axes (dx_build_loads holds the node's
+   !> velocity along each constrained one at zero). A *LOAD_NODE_* with CID: the force (moment) along local axis d becomes its global
    !> components, one nodal load per nonzero component (sf axis_d(k), same curve): the sum is
    !> the local load (LS-DYNA Keyword User's Manual, *LOAD_NODE, CID).
    subroutine loads_finish(inp, error)
@@ -404,6 +405,12 @@ contains
       type(load_node_in_t) :: l
       type(load_node_buffer_t) :: buf
       if (.not. allocated(inp%csys)) allocate(inp%csys(0))
+      do i = 1, size(inp%spcs)              ! skew SPCs: the axes of their CID
+         if (inp%spcs(i)%cid == 0) cycle
+         j = csys_index(inp, inp%spcs(i)%cid, inp%spcs(i)%src, 'CID', error)
+         if (j == 0) return
+         inp%spcs(i)%axes = inp%csys(j)%axes
+      end do
       if (allocated(inp%ivels)) then
          do i = 1, size(inp%ivels)
             if (inp%ivels(i)%icid == 0) cycle

@@ -77,6 +77,7 @@ module dx_model_input
       logical :: is_set = .false.
       logical :: dof(6) = .false.
       integer :: cid = 0              !< DOFX..DOFZ along the axes of *DEFINE_COORDINATE_SYSTEM cid
+      real(wp) :: axes(3, 3) = 0.0_wp !< cid's axes (loads_finish), axes(:, k) local axis k
       type(origin_t) :: src
    end type spc_in_t
 
