@@ -22,6 +22,10 @@
       the plot's beam resultants (rows beam_force, beam_moment) in the last state of a beam
       under a pure end moment M about its s axis: every element's |M_s| against M within
       TOL_M relative; T, M_t (over M) and N, Q_s, Q_t (over M/L) within TOL_F.
+  beam_check.py deflection OUT1 OUT2 OUT3 L T0 WREF LO HI
+      small-deflection cantilever under a tip force on three meshes (each twice as fine): the
+      tip's (first history node) mean transverse displacement over t >= T0 against WREF
+      (relative errors printed) and the observed orders log2(e_i/e_i+1) in [LO, HI]
   beam_check.py pair OUT1 OUT2 L T E RHO TOL
       the first periods of two runs of the cantilever (two formulations on one mesh): both
       errors against Euler-Bernoulli printed, |T1/T2 - 1| <= TOL
@@ -202,6 +206,22 @@ def resultants(argv):
     return em <= tol_m and eo <= tol_f and ef <= tol_f
 
 
+def deflection(argv):
+    """OUT1 OUT2 OUT3 L T0 WREF LO HI"""
+    outs = argv[0:3]
+    length, t0, wref, lo, hi = map(float, argv[3:8])
+    errs = []
+    for out in outs:
+        d = nodout(out)
+        rows = [r for r in d[sorted(d)[0]] if r[0] >= t0]
+        w = sum(r[1][2] for r in rows)/len(rows)
+        errs.append(abs(w - wref)/wref)
+    orders = [math.log2(errs[i]/errs[i + 1]) for i in range(2)]
+    print(f'tip deflection errors {errs[0]:.3e} {errs[1]:.3e} {errs[2]:.3e} against {wref:.6e}; '
+          f'observed orders {orders[0]:.2f} {orders[1]:.2f} (range [{lo}, {hi}])')
+    return all(lo <= o <= hi for o in orders)
+
+
 def pair(argv):
     """OUT1 OUT2 L T E RHO TOL"""
     o1, o2 = argv[0], argv[1]
@@ -269,7 +289,8 @@ def main():
     cmd, argv = sys.argv[1], sys.argv[2:]
     fn = {'wave': wave, 'order': order, 'rotation': rotation, 'torsion': torsion,
           'tip': tip, 'circle': circle, 'resultants': resultants,
-          'turned': turned, 'plastic': plastic, 'pair': pair}.get(cmd)
+          'turned': turned, 'plastic': plastic, 'pair': pair,
+          'deflection': deflection}.get(cmd)
     if fn is None:
         raise SystemExit(__doc__)
     if not fn(argv):

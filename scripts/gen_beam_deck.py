@@ -31,6 +31,8 @@ height 1 along t = z: A = 2, ISS = 1/6, ITT = 2/3), length L = 100 along x.
       start over 30 ms, then a constant rate) to 0.3 rad at 150 ms (its root clamped): a pure
       bending to 12.6 times the yield curvature, the moment saturates at the fully plastic
       moment of the section
+  gen_beam_deck.py tipforce N [OUT]    the elastica deck with a small tip force P = 0.01 E I/L**2
+      (linear range: tip w = P L**3/(3 E I) + P L/(SHRF G A) = L/300 plus the shear term)
   gen_beam_deck.py bench N KIND [OUT]  the bench cantilever of N beams, 1000 cycles (ENDCYC):
       KIND bs (ELFORM 2, cantilever's first mode), hl (ELFORM 1, QR 2, the same), hl_plastic
       (the section and *MAT_003 of plastic N 5 0 3 on a free bar stretched at a uniform rate:
@@ -241,6 +243,16 @@ def elastica(n):
     return s
 
 
+def tipforce(n):
+    """elastica() with P = 0.01 E ISS/L**2: the small-deflection tip force"""
+    s = elastica(n)
+    i = s.index('*LOAD_NODE_POINT')
+    p = 0.01*E*ISS/100.0**2
+    s[i + 2] = f'{n + 1:10d}{3:10d}{1:10d}{p:10.4e}'
+    s[2] = s[2].replace('P L**2/(E I) = 1 (elastica)', 'P L**2/(E I) = 0.01 (linear)')
+    return s
+
+
 def circle(n):
     """the cantilever of cantilever() at rest under an end moment about y (*LOAD_NODE_POINT
     DOF 6) M = 2 pi E ISS/L raised smoothly (1 - cos) over 100 ms and held to 200 ms: the
@@ -389,6 +401,8 @@ def main(argv):
         lines, out = rotation(), argv[2:]
     elif kind == 'frame':
         lines, out = frame(), argv[2:]
+    elif kind == 'tipforce':
+        lines, out = tipforce(int(argv[2])), argv[3:]
     elif kind == 'elastica':
         lines, out = elastica(int(argv[2])), argv[3:]
     elif kind == 'circle':

@@ -21,7 +21,8 @@
 !> Shell (ELFORM 2 of *SECTION_SHELL, 1002): 4 nodes, one face, elem_volume = the mid-surface
 !> area (the caller multiplies by the thickness). Beam (ELFORM 2 of *SECTION_BEAM, 2002):
 !> 2 nodes, no face, elem_volume = the length (the caller multiplies by the area), an XDMF
-!> Polyline. Both carry rotations (family_t%rot).
+!> Polyline; the Hughes-Liu beam (ELFORM 1, 2001) shares that row, its nip the section rule's
+!> points (dx_beam_hl). Both carry rotations (family_t%rot).
 !> Element error codes and the result record of one block pass live here too (dx_element),
 !> and the element block and the part the kernels work on (elem_block_t with its family state
 !> es, part_t): the model holds and re-exports them, so src/elements/ never imports src/model/
