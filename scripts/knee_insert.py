@@ -27,11 +27,11 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from gen_implicit_decks import Deck  # noqa: E402
 from gen_contact_decks import graded  # noqa: E402
+from cmc_implant import last_state, von_mises, PE_CURVE  # noqa: E402
 
 E, NU, RD, W, T = 1016.0, 0.46, 80.0, 20.0, 10.0
 ESTAR = E/(1 - NU*NU)
 J_CURVE = {0: 40.0, 45: 30.0, 90: 20.0}
-PE_CURVE = ((0.0, 14.07), (0.0108, 22.05), (0.0363, 27.06), (0.0910, 29.52), (1.0, 29.52))
 
 
 def hertz(flex, d):
@@ -139,31 +139,15 @@ def gen(path, n=4, flex=0, d=0.1, elastic=False, steps=4, thick=False):
 def result(out, thick=False):
     """(F = 4 x the base's z reaction, peak -sigma_zz of the insert's top layer, max von Mises,
     max plastic strain)"""
-    import dxpost
     global T, W
     T, W = (40.0, 40.0) if thick else (10.0, 20.0)
-    h5 = os.path.join(out, 'd3plot.h5')
-    for attempt in range(10):     # (seen: the file not yet readable right after the run)
-        try:
-            k = len(dxpost.states(h5))
-            break
-        except SystemExit:
-            time.sleep(1.0)
-    else:
-        k = len(dxpost.states(h5))
-    _, x0 = dxpost.dataset(h5, dxpost.state_path(1) + '/coordinates')
-    _, sig = dxpost.dataset(h5, dxpost.state_path(k) + '/stress')
-    _, conn = dxpost.dataset(h5, '/mesh/hex8')
-    _, pid = dxpost.dataset(h5, '/mesh/part_ids')
-    _, eps = dxpost.dataset(h5, dxpost.state_path(k) + '/eff_plastic_strain')
-    x = dxpost.vec3(x0)
+    x, sig, conn, pid, eps = last_state(out)
     p, vm, ep = 0.0, 0.0, 0.0
     for e in range(len(pid)):
         if pid[e] != 1:
             continue
         s = sig[6*e:6*e + 6]
-        vm = max(vm, math.sqrt(0.5*((s[0] - s[1])**2 + (s[1] - s[2])**2 + (s[2] - s[0])**2)
-                               + 3*(s[3]**2 + s[4]**2 + s[5]**2)))
+        vm = max(vm, von_mises(s))
         ep = max(ep, eps[e])
         nd = conn[8*e:8*e + 8]
         if sum(1 for q in nd if abs(x[q][2] - ztop(x[q][0], x[q][1])) < 1e-7) >= 4:
