@@ -171,13 +171,12 @@ def gen(path, n=4, load=188.5, angle=10.0, backed=False, steps=4, centres=True):
     d.write(path)
 
 
-def result(out):
-    """(peak contact pressure: max over the socket's inner-layer elements of -n.sigma.n, n
-    radial from the ball's centre; max von Mises in the polyethylene; max effective plastic
-    strain in it (0 if elastic); the reaction's magnitude x 2 (spcforc, the half model))."""
+def last_state(out):
+    """The plot's undeformed nodes [(x, y, z)], the last state's stress (flat, 6 per element),
+    the hex8 connectivity (flat), the part ids and the effective plastic strain."""
     import dxpost
     h5 = os.path.join(out, 'd3plot.h5')
-    for attempt in range(10):     # (seen once: the file not yet readable right after the run)
+    for attempt in range(10):     # (seen: the file not yet readable right after the run)
         try:
             k = len(dxpost.states(h5))
             break
@@ -189,21 +188,28 @@ def result(out):
     _, sig = dxpost.dataset(h5, dxpost.state_path(k) + '/stress')
     _, conn = dxpost.dataset(h5, '/mesh/hex8')
     _, pid = dxpost.dataset(h5, '/mesh/part_ids')
-    try:
-        _, eps = dxpost.dataset(h5, dxpost.state_path(k) + '/eff_plastic_strain')
-    except Exception:
-        eps = None
-    x = dxpost.vec3(x0)
+    _, eps = dxpost.dataset(h5, dxpost.state_path(k) + '/eff_plastic_strain')
+    return dxpost.vec3(x0), sig, conn, pid, eps
+
+
+def von_mises(s):
+    return math.sqrt(0.5*((s[0] - s[1])**2 + (s[1] - s[2])**2 + (s[2] - s[0])**2)
+                     + 3*(s[3]**2 + s[4]**2 + s[5]**2))
+
+
+def result(out):
+    """(peak contact pressure: max over the socket's inner-layer elements of -n.sigma.n, n
+    radial from the ball's centre; max von Mises in the polyethylene; max effective plastic
+    strain in it (0 if elastic); the reaction's magnitude x 2 (spcforc, the half model))."""
+    x, sig, conn, pid, eps = last_state(out)
     pmax, vm, ep = 0.0, 0.0, 0.0
     for e in range(len(pid)):
         if pid[e] != 1:
             continue
         nd = conn[8*e:8*e + 8]
         s = sig[6*e:6*e + 6]
-        vm = max(vm, math.sqrt(0.5*((s[0] - s[1])**2 + (s[1] - s[2])**2 + (s[2] - s[0])**2)
-                               + 3*(s[3]**2 + s[4]**2 + s[5]**2)))
-        if eps is not None:
-            ep = max(ep, eps[e])
+        vm = max(vm, von_mises(s))
+        ep = max(ep, eps[e])
         on = sum(1 for q in nd if abs(math.dist(x[q], (0, 0, 0)) - R) < 1e-6*R)
         if on < 4:
             continue

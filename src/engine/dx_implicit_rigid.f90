@@ -25,6 +25,7 @@ module dx_implicit_rigid
    use dx_vec3, only: cross
    use dx_model, only: model_t
    use dx_sparse, only: sparse_sym_t, sparse_add_element
+   use dx_dense_solve, only: dense_solve
    implicit none
    private
    public :: irigid_t, irig_setup, irig_layouts, irig_add, irig_nodes, irig_gather, &
@@ -389,15 +390,18 @@ contains
       type(irigid_t), intent(inout) :: rig
       type(model_t), intent(in) :: model
       real(wp), intent(in) :: f(:, :)
-      real(wp) :: g(6, rig%nb), mb(6, 6), jinv(3, 3)
+      real(wp) :: g(6, rig%nb), mb(6, 6), jm(3, 3), x(3)
+      character(:), allocatable :: msg
       integer :: b
       if (rig%nb == 0) return
       g = resultants(rig, model, f)
       do b = 1, rig%nb
          mb = body_mass(rig, b)
          rig%ac(1:3, b) = g(1:3, b)/mb(1, 1)
-         jinv = inv3(mb(4:6, 4:6))
-         rig%ac(4:6, b) = matmul(jinv, g(4:6, b))
+         jm = mb(4:6, 4:6)
+         x = g(4:6, b)
+         call dense_solve(jm, x, msg)     ! (J is positive definite: the build checks it)
+         rig%ac(4:6, b) = x
          where (rig%beq(:, b) <= 0) rig%ac(:, b) = 0.0_wp
          where (rig%beq(:, b) == 0) rig%vc(:, b) = 0.0_wp
       end do
@@ -515,19 +519,4 @@ contains
       q = eye() + c1*s + c2*matmul(s, s)
    end function rodrigues
 
-   pure function inv3(a) result(b)
-      real(wp), intent(in) :: a(3, 3)
-      real(wp) :: b(3, 3), det
-      b(1, 1) = a(2, 2)*a(3, 3) - a(2, 3)*a(3, 2)
-      b(1, 2) = a(1, 3)*a(3, 2) - a(1, 2)*a(3, 3)
-      b(1, 3) = a(1, 2)*a(2, 3) - a(1, 3)*a(2, 2)
-      b(2, 1) = a(2, 3)*a(3, 1) - a(2, 1)*a(3, 3)
-      b(2, 2) = a(1, 1)*a(3, 3) - a(1, 3)*a(3, 1)
-      b(2, 3) = a(1, 3)*a(2, 1) - a(1, 1)*a(2, 3)
-      b(3, 1) = a(2, 1)*a(3, 2) - a(2, 2)*a(3, 1)
-      b(3, 2) = a(1, 2)*a(3, 1) - a(1, 1)*a(3, 2)
-      b(3, 3) = a(1, 1)*a(2, 2) - a(1, 2)*a(2, 1)
-      det = a(1, 1)*b(1, 1) + a(1, 2)*b(2, 1) + a(1, 3)*b(3, 1)
-      b = b/det
-   end function inv3
 end module dx_implicit_rigid
