@@ -547,11 +547,12 @@ contains
    !> The global model for the history writers at this step; writer is true on rank 0,
    !> which writes them. kind (dx_solver's history kinds: 1 glstat, 2 nodout, 3 matsum,
    !> 4 spcforc, 5 sleout, 6 elout, 7 ncforc; absent: all nodes) says what is gathered into
-   !> it: glstat, matsum, sleout and elout read no nodal x, v, f (energies are exact sums,
-   !> dx_energy_exact), so nothing; nodout: when rank 0 alone writes (root_only), only the
-   !> rows of the history nodes, each sent by its owner (plan_hist, O(history nodes)); else,
-   !> and for spcforc and ncforc, x, v, f of every node (to rank 0, or to every rank for
-   !> decks with contact or rigid bodies). Plot states do not come here (par_engine_plot:
+   !> it when rank 0 alone writes (root_only: no contact, no rigid bodies): glstat, matsum,
+   !> sleout and elout read no nodal x, v, f (energies are exact sums, dx_energy_exact), so
+   !> nothing; nodout only the rows of the history nodes, each sent by its owner (plan_hist,
+   !> O(history nodes)); spcforc and ncforc x, v, f of every node. Decks with contact or
+   !> rigid bodies gather every node to every rank at each event as before (their global
+   !> copy also serves the contact stage). Plot states do not come here (par_engine_plot:
    !> per-rank part files); plot is kept for the interface and not used.
    subroutine par_engine_output(eng, model, plot, om, writer, kind)
       type(par_engine_t), intent(inout) :: eng
@@ -570,7 +571,7 @@ contains
       eng%g%energy = model%energy
       eng%g%run = model%run
       k = 0
-      if (present(kind)) k = kind
+      if (present(kind) .and. eng%root_only) k = kind   ! (contact, rigid: every node, as before)
       select case (k)
       case (1, 3, 5, 6)                 ! no nodal values read
       case (2)

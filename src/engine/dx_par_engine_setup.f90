@@ -359,8 +359,9 @@ contains
                     'built from its rank file alone'//t)
       call log_info('dynx: still replicated (stage 2): every rank reads and builds the '// &
                     'whole deck (tables, element state, segment and body loads, walls, '// &
-                    'contact, rigid bodies); energies, glstat, nodout and serial restarts '// &
-                    'go through the global model')
+                    'contact, rigid bodies); energies are exact sums, nodout takes the '// &
+                    'owners'' rows (decks without contact or rigid bodies), spcforc, '// &
+                    'ncforc and serial restarts go through the global model')
    end subroutine log_submodels
 
    !> What the engine does not run across ranks yet: exit 2 naming the keyword.
