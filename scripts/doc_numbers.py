@@ -325,7 +325,42 @@ def block_pressure_table(work):
             % (cyc, max(w), tot, ratio, tot - w[-1], max(w)))
 
 
+def block_stiff_first_touch(work):
+    """docs/extreme-cases.md: the stiff penalty rods (gen_contact_decks.py rod --nx 50) over
+    the first 4 us with rcforc every cycle: the largest contact force in the first 2.5 us of
+    contact (the first touch) and after it, against rho c v A/2 (issue 23 item 4: what the
+    stiff_penalty table's sampled largest force measures)."""
+    import dxpost
+    fp = 7.85e-6 * math.sqrt(210.0 / 7.85e-6) * 10.0 / 2.0
+    out = ['| SFS | VDC [%] | cycles | largest force in the first 2.5 us of contact / rho c v '
+           'A/2 | largest force after it / rho c v A/2 |', '|---|---|---|---|---|']
+    for sfs, vdc in (('1e4', 0), ('1e4', 20), ('1e5', 0), ('1e5', 20)):
+        deck = os.path.join(work, 'touch_%s_%d.k' % (sfs, vdc))
+        sh([PY, 'scripts/gen_contact_decks.py', 'rod', '--nx', '50', '--sfs', sfs, '--vdc',
+            str(vdc), deck])
+        lines = open(deck).read().split('\n')
+        for i, l in enumerate(lines):
+            if l.startswith('*CONTROL_TERMINATION'):
+                lines[i + 1] = ' 0.004'
+            if l.startswith('*DATABASE_RCFORC'):
+                lines[i + 1] = ' 1.0e-7'
+        with open(deck, 'w') as f:
+            f.write('\n'.join(lines))
+        od, log = run_deck(deck, work, 'touch')
+        cyc = int(re.search(r'normal termination at cycle (\d+)', log).group(1))
+        names, rows = dxpost.columns(os.path.join(od, 'rcforc'))
+        on = [r for r in rows if r[names.index('nactive')] > 0]
+        t0 = on[0][0]
+        k = names.index('slave_x')
+        early = max(abs(r[k]) for r in on if r[0] <= t0 + 0.0025) / fp
+        late = max(abs(r[k]) for r in on if r[0] > t0 + 0.0025) / fp
+        out.append('| %s | %d | %d | %.1f | %.2f |' % (sfs, vdc, cyc, early, late))
+    return '\n'.join(out)
+
+
 BLOCKS = {
+    # four 4 us rod runs (up to 3700 cycles of 100 hexes)
+    'stiff_first_touch': ('docs/extreme-cases.md', True, block_stiff_first_touch),
     # one 123-cycle 2D run
     'pressure_table': ('decks/pressure_table/README.md', True, block_pressure_table),
     # two 1250-cycle runs of 64 hexes (regression extreme_incompressible_elform1/2)
