@@ -15,7 +15,8 @@ build; one unit allows a rounding flip from another compiler's last-bit differen
 times are not compared. The text around the numbers must be identical.
 
 Checked study rows (each under a few seconds): docs/studies/scene_orders.md (rod_impact
-nx = 25 and 50, emc_bars dt = 8e-3 and 4e-3 s, sliding_block refine 1), docs/studies/README.md
+nx = 25 and 50, emc_bars dt = 8e-3 and 4e-3 s, sliding_block refine 1),
+docs/studies/seed_scene_orders.md (the coarsest level of each seed scene), docs/studies/README.md
 (the elastic wave nx = 25, 50, 100 rows; the Taylor (2,2,16) row) and docs/studies/hertz.md
 against its stored table docs/studies/data/hertz.dat (no rerun: the runs take minutes).
 Prints 'N passed, M failed' (scripts/test_suites.sh). Standard library only; run with
@@ -470,6 +471,32 @@ def check_scene_orders():
     return res
 
 
+def check_seed_orders(work):
+    """seed_scene_orders.md: the cheapest level of each seed scene rerun (about 3 CPU s in
+    all); its measured cells (the value and the listed columns; not the error against the
+    Richardson value of the finer levels, nor the order or the time) against the page."""
+    import studies_order_seed as sos
+    sos.WORK = work
+    doc = table_rows('docs/studies/seed_scene_orders.md')
+    key = {'brittle_impact': ('Da', '%.4f'), 'pressure_table': ('W', '%.5f'),
+           'shell_projectile_plate': ('w', '%.4f'), 'shell_box_post': ('v', '%.4f')}
+    case = {'brittle_impact': sos.brittle_case, 'pressure_table': sos.ptable_case,
+            'shell_projectile_plate': sos.plate_case, 'shell_box_post': sos.post_case}
+    res = []
+    for sc in sos.SCENES:
+        r = case[sc['name']](sc['runs'][0])
+        what = 'seed_scene_orders.md %s %s' % (sc['name'], r['label'])
+        d = doc.get(r['label'])
+        if d is None:
+            res.append((what, ['row not found']))
+            continue
+        k, fmt = key[sc['name']]
+        new = [r['label'], fmt % r[k]] + r['more']
+        dd = d[:2] + d[3:3 + len(r['more'])]
+        res.append((what, cells_check(dd, new, what, ())))
+    return res
+
+
 def check_wave_taylor(work):
     import studies
     doc = table_rows('docs/studies/README.md')
@@ -540,6 +567,7 @@ def main():
                 results.append(('block %s (%s)' % (name, path),
                                 compare(read_block(name), fn(work), name)))
         results += check_scene_orders()
+        results += check_seed_orders(work)
         results += check_wave_taylor(work)
         results += check_hertz()
         nf = 0
