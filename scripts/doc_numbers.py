@@ -15,7 +15,8 @@ build; one unit allows a rounding flip from another compiler's last-bit differen
 times are not compared. The text around the numbers must be identical.
 
 Checked study rows (each under a few seconds): docs/studies/scene_orders.md (rod_impact
-nx = 25 and 50, emc_bars dt = 8e-3 and 4e-3 s, sliding_block refine 1), docs/studies/README.md
+nx = 25 and 50, emc_bars dt = 8e-3 and 4e-3 s, sliding_block refine 1),
+docs/studies/seed_scene_orders.md (the coarsest level of each seed scene), docs/studies/README.md
 (the elastic wave nx = 25, 50, 100 rows; the Taylor (2,2,16) row) and docs/studies/hertz.md
 against its stored table docs/studies/data/hertz.dat (no rerun: the runs take minutes).
 Prints 'N passed, M failed' (scripts/test_suites.sh). Standard library only; run with
@@ -326,7 +327,42 @@ def block_pressure_table(work):
             % (cyc, max(w), tot, ratio, tot - w[-1], max(w)))
 
 
+def block_stiff_first_touch(work):
+    """docs/extreme-cases.md: the stiff penalty rods (gen_contact_decks.py rod --nx 50) over
+    the first 4 us with rcforc every cycle: the largest contact force in the first 2.5 us of
+    contact (the first touch) and after it, against rho c v A/2 (issue 23 item 4: what the
+    stiff_penalty table's sampled largest force measures)."""
+    import dxpost
+    fp = 7.85e-6 * math.sqrt(210.0 / 7.85e-6) * 10.0 / 2.0
+    out = ['| SFS | VDC [%] | cycles | largest force in the first 2.5 us of contact / rho c v '
+           'A/2 | largest force after it / rho c v A/2 |', '|---|---|---|---|---|']
+    for sfs, vdc in (('1e4', 0), ('1e4', 20), ('1e5', 0), ('1e5', 20)):
+        deck = os.path.join(work, 'touch_%s_%d.k' % (sfs, vdc))
+        sh([PY, 'scripts/gen_contact_decks.py', 'rod', '--nx', '50', '--sfs', sfs, '--vdc',
+            str(vdc), deck])
+        lines = open(deck).read().split('\n')
+        for i, l in enumerate(lines):
+            if l.startswith('*CONTROL_TERMINATION'):
+                lines[i + 1] = ' 0.004'
+            if l.startswith('*DATABASE_RCFORC'):
+                lines[i + 1] = ' 1.0e-7'
+        with open(deck, 'w') as f:
+            f.write('\n'.join(lines))
+        od, log = run_deck(deck, work, 'touch')
+        cyc = int(re.search(r'normal termination at cycle (\d+)', log).group(1))
+        names, rows = dxpost.columns(os.path.join(od, 'rcforc'))
+        on = [r for r in rows if r[names.index('nactive')] > 0]
+        t0 = on[0][0]
+        k = names.index('slave_x')
+        early = max(abs(r[k]) for r in on if r[0] <= t0 + 0.0025) / fp
+        late = max(abs(r[k]) for r in on if r[0] > t0 + 0.0025) / fp
+        out.append('| %s | %d | %d | %.1f | %.2f |' % (sfs, vdc, cyc, early, late))
+    return '\n'.join(out)
+
+
 BLOCKS = {
+    # four 4 us rod runs (up to 3700 cycles of 100 hexes)
+    'stiff_first_touch': ('docs/extreme-cases.md', True, block_stiff_first_touch),
     # one 123-cycle 2D run
     'pressure_table': ('decks/pressure_table/README.md', True, block_pressure_table),
     # two 1250-cycle runs of 64 hexes (regression extreme_incompressible_elform1/2)
@@ -436,6 +472,32 @@ def check_scene_orders():
     return res
 
 
+def check_seed_orders(work):
+    """seed_scene_orders.md: the cheapest level of each seed scene rerun (about 3 CPU s in
+    all); its measured cells (the value and the listed columns; not the error against the
+    Richardson value of the finer levels, nor the order or the time) against the page."""
+    import studies_order_seed as sos
+    sos.WORK = work
+    doc = table_rows('docs/studies/seed_scene_orders.md')
+    key = {'brittle_impact': ('Da', '%.4f'), 'pressure_table': ('W', '%.5f'),
+           'shell_projectile_plate': ('w', '%.4f'), 'shell_box_post': ('v', '%.4f')}
+    case = {'brittle_impact': sos.brittle_case, 'pressure_table': sos.ptable_case,
+            'shell_projectile_plate': sos.plate_case, 'shell_box_post': sos.post_case}
+    res = []
+    for sc in sos.SCENES:
+        r = case[sc['name']](sc['runs'][0])
+        what = 'seed_scene_orders.md %s %s' % (sc['name'], r['label'])
+        d = doc.get(r['label'])
+        if d is None:
+            res.append((what, ['row not found']))
+            continue
+        k, fmt = key[sc['name']]
+        new = [r['label'], fmt % r[k]] + r['more']
+        dd = d[:2] + d[3:3 + len(r['more'])]
+        res.append((what, cells_check(dd, new, what, ())))
+    return res
+
+
 def check_wave_taylor(work):
     import studies
     doc = table_rows('docs/studies/README.md')
@@ -506,6 +568,7 @@ def main():
                 results.append(('block %s (%s)' % (name, path),
                                 compare(read_block(name), fn(work), name)))
         results += check_scene_orders()
+        results += check_seed_orders(work)
         results += check_wave_taylor(work)
         results += check_hertz()
         nf = 0

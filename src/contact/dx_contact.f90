@@ -1,7 +1,12 @@
 !> The contact stage of the explicit cycle (called only when the deck has *CONTACT):
 !>  contact_forces: after the element pass, before the velocity update: bucket sort when due
 !>    (every BSORT cycles, and whenever twice the largest nodal travel since the last sort
-!>    reaches the search margin), local search and penalty forces for every active interface
+!>    reaches the search margin; in serial runs a due sort that provably finds no candidate,
+!>    because the last sort found none with the slave nodes' box a gap away from the grown
+!>    segments' box and the travel since cannot have closed it, keeps only its bookkeeping:
+!>    contact with nothing to do pays no sorts, and a pass with no candidate and no node in
+!>    contact no pass over its slave nodes; results unchanged, the sorts skipped are those
+!>    that would have found nothing), local search and penalty forces for every active interface
 !>    (BT <= t <= DT), added into model%f; the contact springs enter the critical step as
 !>    dt <= 1/sqrt(1/dt_e^2 + w_c^2/4), w_c^2 = max over nodes of the Gershgorin row sum of
 !>    the contact stiffness over the nodal mass (2k on a slave node, 2k N_i on a master node,
@@ -163,6 +168,7 @@ contains
                do j = 1, size(f%pass)
                   associate (p => f%pass(j))
                      p%moved = p%moved + vmax*dt_old
+                     p%moved_real = p%moved_real + vmax*dt_old
                      p%sort_due = model%cycle - p%last_sort >= f%bsort .or. &
                                   2.0_wp*p%moved >= p%margin .or. &
                                   (cs%nstrip > 1 .and. .not. allocated(p%mine))
@@ -217,7 +223,12 @@ contains
                            margin = 0.25_wp*mean_extent(p, model%x)
                         end if
                         margin = max(margin, 4.0_wp*vmax*dt_est)
-                        if (has_rigid) then
+                        if (idle_sort(p, margin, has_rigid .or. model%erodes)) then
+                           ! this sort would find no candidate either: only its bookkeeping
+                           p%margin = margin
+                           p%moved = 0.0_wp
+                           p%nskip = p%nskip + 1
+                        else if (has_rigid) then
                            ! rigid nodes: the body's inertia (dx_rigid_contact)
                            meff = model%mass
                            call rigid_effective_mass(model%rigid, cs%node, model%x, meff)
@@ -230,7 +241,10 @@ contains
                      end if
                      w2max = max(w2max, p%w2pot)
                      call pass_records(p)
-                     if (allocated(p%mine)) then
+                     if (idle_pass(p)) then
+                        ! no candidate and no node in contact: every result is none
+                        p%rint = 0
+                     else if (allocated(p%mine)) then
                         do k = 1, p%nnode
                            if (p%mine(k)) then
                               call pass_node(f, p, k, model%x, model%v, model%mass, &
@@ -274,6 +288,11 @@ contains
                if (t < f%bt .or. t > f%dt) cycle
                do j = 1, size(f%pass)
                   associate (p => f%pass(j))
+                     ! serial, idle (contact_search_nodes): no result, every node's state
+                     ! already none (iseg, gap, ft 0), fsum 0
+                     if (.not. allocated(p%mine)) then
+                        if (idle_pass(p)) cycle
+                     end if
                      fsum = 0.0_wp
                      do k = 1, p%nnode
                         if (p%rint(1, k) == 0 .and. p%rint(2, k) == 0) then
@@ -322,6 +341,32 @@ contains
          dtcrit = min(dtcrit, cs%dt_limit)
       end if
    end subroutine contact_dt
+
+   !> A sort of pass p with this margin would find no candidate (serial runs, no rigid
+   !> bodies, no erosion: nodes move by at most v dt per step): the last sort that ran
+   !> found none, its slave nodes' box a gap p%clear away from its grown segments' box along
+   !> an axis, and since then each node has moved at most p%moved_real, so that gap has
+   !> closed by at most 2 moved_real plus the margin's growth. Half the gap is kept as a
+   !> safety. The candidates (none), w2pot (0) and so the results are those of the sort.
+   logical function idle_sort(p, margin, rigid_or_erodes)
+      use dx_contact_types, only: contact_pass_t
+      type(contact_pass_t), intent(in) :: p
+      real(wp), intent(in) :: margin
+      logical, intent(in) :: rigid_or_erodes
+      idle_sort = .false.
+      if (p%clear <= 0.0_wp .or. allocated(p%mine) .or. allocated(p%segok)) return
+      if (rigid_or_erodes) return
+      idle_sort = 2.0_wp*p%moved_real + max(0.0_wp, margin - p%margin_real) < 0.5_wp*p%clear
+   end function idle_sort
+
+   !> Pass p has no candidate pair (on this rank) and no slave node in contact: pass_node
+   !> would give every node no result.
+   logical function idle_pass(p)
+      use dx_contact_types, only: contact_pass_t
+      type(contact_pass_t), intent(in) :: p
+      idle_pass = size(p%cand) == 0
+      if (idle_pass) idle_pass = .not. any(p%iseg(1:p%nnode) > 0)
+   end function idle_pass
 
    !> mean largest extent of the pass's segments
    real(wp) function mean_extent(p, x) result(ext)
@@ -380,7 +425,9 @@ contains
             end do
             call log_info('dynx: contact: '//str(size(cs%iface))//' interface(s), '// &
                str(size(cs%node))//' contact nodes, '//str(sum([(sum(cs%iface(i)%pass(:)%nsort), &
-               i = 1, size(cs%iface))]))//' bucket sorts, wall time search '// &
+               i = 1, size(cs%iface))]))//' bucket sorts ('// &
+               str(sum([(sum(cs%iface(i)%pass(:)%nskip), i = 1, size(cs%iface))]))// &
+               ' more skipped: no candidate possible), wall time search '// &
                rstr(cs%t_search, 4)//' s, local search + forces '// &
                rstr(cs%t_force - cs%t_search, 4)//' s, candidates per slave node '// &
                rstr(real(ncand, wp)/real(max(1, nslave), wp), 4)//', sliding energy '// &

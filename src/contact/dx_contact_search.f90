@@ -7,7 +7,7 @@
 !> dx_contact_penalty only looks at these candidates until the next sort.
 !> The sort is valid while no two points have closed more than the margin, i.e. while twice
 !> the largest nodal travel since the sort stays below the margin (dx_contact re-sorts then,
-!> and every BSORT cycles).
+!> and every BSORT cycles, unless the sort provably finds no candidate: p%clear).
 !> Cost: O(nseg + nnode) per sort for a surface of evenly sized segments.
 !> MPI runs (p%mine allocated, dx_contact_strips): candidates only for this strip's nodes.
 module dx_contact_search
@@ -40,7 +40,7 @@ contains
       real(wp), intent(in), optional :: mass(:)
       real(wp), allocatable :: blo(:, :), bhi(:, :), snrm(:, :)
       real(wp) :: d1(3), d2(3)
-      real(wp) :: lo(3), hi(3), ext, h, vol, slo3(3), shi3(3)
+      real(wp) :: lo(3), hi(3), ext, h, vol, slo3(3), shi3(3), glo(3), ghi(3), gap
       integer :: i, s, k, n, c, ic(3), jlo(3), jhi(3), i1, i2, i3, ncap, ncells, nc
       integer, allocatable :: fill(:), cand(:), tmp(:)
       logical, allocatable :: act(:)
@@ -49,6 +49,9 @@ contains
       p%moved = 0.0_wp
       p%nsort = p%nsort + 1
       if (p%nsseg > 0) call node_normals(p, x)
+      p%clear = -1.0_wp
+      p%margin_real = margin
+      p%moved_real = 0.0_wp
       if (p%nseg == 0 .or. p%nnode == 0) then
          p%cand_ptr = 1
          return
@@ -95,12 +98,16 @@ contains
          lo = min(lo, blo(:, s))
          hi = max(hi, bhi(:, s))
       end do
+      glo = lo; ghi = hi        ! the grown segment boxes' box
+      slo3 = huge(1.0_wp); shi3 = -huge(1.0_wp)
       do i = 1, p%nnode
          if (allocated(p%mine)) then
             if (.not. p%mine(i)) cycle
          end if
          lo = min(lo, x(:, p%node(i)))
          hi = max(hi, x(:, p%node(i)))
+         slo3 = min(slo3, x(:, p%node(i)))
+         shi3 = max(shi3, x(:, p%node(i)))
       end do
       if (any(lo > hi)) then     ! an empty strip
          lo = 0.0_wp; hi = 0.0_wp
@@ -198,6 +205,13 @@ contains
          end do
       end do
       p%cand_ptr(p%nnode + 1) = nc + 1
+      ! no candidate: the largest gap along an axis between the slave nodes' box and the
+      ! grown segments' box (a node inside no grown box needs none; dx_contact's idle sorts),
+      ! kept when it is well above the round-off of the coordinates' update
+      if (nc == 0 .and. all(glo <= ghi) .and. all(slo3 <= shi3)) then
+         gap = maxval(max(glo - shi3, slo3 - ghi))
+         if (gap > 1.0e-9_wp*maxval(max(abs(lo), abs(hi)))) p%clear = gap
+      end if
       p%w2pot = 0.0_wp
       if (present(mass)) then
          do i = 1, p%nnode

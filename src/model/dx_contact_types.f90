@@ -52,6 +52,15 @@ module dx_contact_types
       integer :: last_sort = -1000000          !< cycle of the last sort
       integer :: nsort = 0
       real(wp) :: w2pot = 0.0_wp               !< contact frequency^2 bound of the candidates
+      ! --- idle contact (serial runs, dx_contact): at the last bucket sort that ran, the gap
+      !     along one axis between the slave nodes' box and the box of the grown segment boxes
+      !     when it found no candidate (<= 0: candidates, or not known), its margin, and the
+      !     largest nodal travel since it; sorts that provably find no candidate either are
+      !     kept as a count (nskip) and their bookkeeping (margin, moved, last_sort) only
+      real(wp) :: clear = -1.0_wp
+      real(wp) :: margin_real = 0.0_wp
+      real(wp) :: moved_real = 0.0_wp
+      integer :: nskip = 0
       integer, allocatable :: cand_ptr(:)      !< (nnode+1) CSR into cand
       integer, allocatable :: cand(:)          !< candidate segments of each slave node
       integer :: ncell(3) = 0                  !< bucket grid

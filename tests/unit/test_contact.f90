@@ -213,5 +213,14 @@ contains
       end do
       call check(nbad == 0, 'candidates = brute-force box test for 400 nodes x 144 segments')
       call check(size(p%cand) > 0, 'some candidates found')
+      call check(p%clear < 0.0_wp, 'a sort with candidates records no clear gap')
+      ! the slave nodes lifted to z = 5: no candidate, and the gap along z between the nodes
+      ! and the grown segment boxes (top at the surface's highest node + margin + depth) is
+      ! recorded for the idle sorts of dx_contact
+      x(3, (m + 1)**2 + 1:) = 5.0_wp
+      call bucket_sort(p, x, 0.25_wp)
+      call check(size(p%cand) == 0, 'nodes lifted clear: no candidate')
+      call check_close(p%clear, 5.0_wp - (maxval(x(3, 1:(m + 1)**2)) + reach), 1.0e-12_wp, &
+                       0.0_wp, 'clear gap = 5 - (highest surface node + margin + depth)')
    end subroutine test_bucket_sort
 end program test_contact
