@@ -44,6 +44,9 @@
                                             wall. History nodes: bar A's top axis node and its
                                             contact face's nodes (quad2d_check.py taylor2). ISTIFF 2: the soft-constraint
                                             stiffness (SOFSCL = 0.1 SF)
+  gen_nr2d_decks.py fold DECK               plane strain: a U of steel (base 9 x 2 mm, legs 4 x
+                                            10 mm, slot 1 mm) whose legs close at +-60 m/s: a
+                                            single-surface contact on the one part
   gen_nr2d_decks.py slide DECK FS           plane strain: a steel block 4 x 2 mm (0.5 mm
                                             elements) at 1 m/s along x on a base 12 x 2 mm
                                             (fixed bottom), pressed by 0.01 GPa on its top
@@ -345,6 +348,31 @@ def taylor2(path, nr, nz, sfact=1.0, istiff=0):
     write(path, s)
 
 
+def fold(path, v0=60.0):
+    """One plane-strain part shaped as a U (a base 9 x 2 mm, two legs 4 x 10 mm either side
+    of a 1 mm slot; 1 mm elements), the legs at +-v0 (m/s) towards each other, one
+    *CONTACT_2D_AUTOMATIC_SINGLE_SURFACE on the part: the slot's faces meet (self-contact).
+    History nodes: the slot's faces, x = 4 and x = 5, y = 2 .. 12."""
+    nx, ny = 9, 12
+    xy, quads, nid = block(nx, ny, 1.0, 1.0)
+    quads = [q for q in quads if not (xy[q[0] - 1][0] == 4.0 and xy[q[0] - 1][1] >= 2.0)]
+    s = head2('A U folding onto itself (2D single-surface contact)', 0.06, 13,
+              [(1, 1, 0, 'U')])
+    s[6:6] = ['*DATABASE_NODOUT', f'{0.0002:10.3e}']
+    s += mesh_cards(xy, quads)
+    face = [nid(4, j) for j in range(2, ny + 1)] + [nid(5, j) for j in range(2, ny + 1)]
+    s += ['*DATABASE_HISTORY_NODE_SET', f'{1:10d}'] + node_set(1, face)
+    s += ['*SET_PART_LIST', f'{1:10d}', f'{1:10d}', '*CONTACT_2D_AUTOMATIC_SINGLE_SURFACE',
+          '$     SIDS      SIDM     SFACT', f'{1:10d}{0:10d}{1.0:10.3f}',
+          '*INITIAL_VELOCITY_NODE']
+    for j in range(3, ny + 1):
+        for i in range(nx + 1):
+            vx = v0 if i <= 4 else -v0
+            s.append(f'{nid(i, j):10d}{vx:10.3f}{0.0:10.3f}{0.0:10.3f}')
+    s.append('*END')
+    write(path, s)
+
+
 def slide(path, fs):
     h = 0.5
     xb, qb, nidb = block(24, 4, h, h)                          # base 12 x 2
@@ -400,6 +428,8 @@ def main(argv):
                 int(argv[5]) if len(argv) > 5 else 0)
     elif what == 'slide':
         slide(path, float(argv[2]))
+    elif what == 'fold':
+        fold(path)
     elif what == 'cyl':
         ring(path, float(argv[2]), int(argv[3]), 13)
     else:

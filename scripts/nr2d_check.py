@@ -33,6 +33,11 @@
       elements at each node, the lumped masses of a uniform mesh) against the exchange (0,
       V0) within TOL_V V0; the x momentum of glstat constant to 1e-12 relative; |KE + IE + HG -
       KE0| <= TOL_E KE0 at the end (the contact's penalty energy returned).
+  nr2d_check.py fold OUT OUTNC PEN DEEP
+      the U of gen_nr2d_decks.py fold closing its slot under a single-surface contact: the
+      slot's width (the x = 5 face nodes' x minus the x = 4 ones' at the same height, every
+      nodout line) never below -PEN in OUT; OUTNC, the same deck without the contact, must
+      reach below -DEEP (the legs would pass through each other).
   nr2d_check.py friction OUT DECK MU P W TRAMP RHO TOL
       a block (part 2 of DECK, gen_nr2d_decks.py slide: W x 2 mm, density RHO) sliding on a
       base under the pressure P (ramped over TRAMP) with Coulomb friction MU: while it slides,
@@ -240,7 +245,26 @@ def blocks_check(argv):
         raise SystemExit('FAIL')
 
 
+def slot_gap(out):
+    """The smallest width of the U's slot (gen_nr2d_decks.py fold): x of each x = 5 face node
+    minus x of the x = 4 node at the same height, over the nodout lines: (gap, t, node)."""
+    d = nodout_series(out, 'coor')
+    left = sorted(n for n in d if abs(d[n][0][1][0] - 4.0) < 1e-9)
+    right = sorted(n for n in d if abs(d[n][0][1][0] - 5.0) < 1e-9)
+    return min((d[b][k][1][0] - d[a][k][1][0], d[a][k][0], a)
+               for a, b in zip(left, right) for k in range(len(d[a])))
+
+
+def fold(argv):
+    out, outnc, pen, deep = argv[0], argv[1], float(argv[2]), float(argv[3])
+    g, gnc = slot_gap(out), slot_gap(outnc)
+    print(f'slot: narrowest {g[0]:.4f} mm (t {g[1]:.4f}, node {g[2]}; bound -{pen}); without the '
+          f'contact {gnc[0]:.4f} mm (t {gnc[1]:.4f}; must pass -{deep})')
+    if g[0] < -pen or gnc[0] > -deep:
+        raise SystemExit('FAIL')
+
+
 if __name__ == '__main__':
     {'reflect': reflect, 'absorbed': absorbed, 'momentum': momentum,
      'tableimpulse': tableimpulse, 'deposit': deposit, 'blocks': blocks_check,
-     'friction': friction}[sys.argv[1]](sys.argv[2:])
+     'friction': friction, 'fold': fold}[sys.argv[1]](sys.argv[2:])

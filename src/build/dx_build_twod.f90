@@ -294,8 +294,10 @@ contains
             ci%fs = r%fs
             ci%istiff = r%istiff
             ci%sofscl = 0.1_wp*r%sfact
+            if (r%single) ci%npass = 1
             do p = 1, 2                    ! side p: its free edges
                sid = merge(r%sids, r%sidm, p == 1)
+               if (r%single) sid = r%sids  ! (single surface: both sides are SIDS)
                q = mp%pset%get(sid)
                if (q == 0) then
                   call set_error(error, at(inp, r%src)//'field '//fld(p)//': part set '// &

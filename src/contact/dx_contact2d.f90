@@ -25,6 +25,10 @@
 !> pair's spring bound 2/omega (as the 3D penalty contact, dx_contact). Every slave node
 !> against every master edge of its pass (no bucket sort: interfaces of a few thousand
 !> edges). Serial runs only (dx_par_engine_setup refuses a deck with it under MPI).
+!> Single surface (*CONTACT_2D_AUTOMATIC_SINGLE_SURFACE): one pass, every node of the free
+!> edges of the part set against every one of those edges but its own two; the facing test
+!> and the gap window (-L/2, 0) keep a node off its neighbouring edges round a convex
+!> corner (the nodes there lie behind the edge's line, or face along it).
 module dx_contact2d
    use dx_kinds, only: wp
    use dx_contact2d_types, only: contact2d_t
@@ -76,7 +80,7 @@ contains
       c%ncontact = 0
       allocate(ns(2, n))
       do i = 1, size(c%iface)
-         do p = 1, 2
+         do p = 1, c%iface(i)%npass
             ! the slave side's nodal normals: its edges are the other pass's master edges
             ns = 0.0_wp
             associate (os => c%iface(i)%pass(3 - p))

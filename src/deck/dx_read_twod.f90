@@ -13,6 +13,8 @@
 !>   the inward normal, zero where the surface faces away.
 !> *DYNX_ENERGY_DEPOSITION card 1: PID RATE TSTART TEND: energy into part PID at the constant
 !>   RATE (per unit thickness or per radian in 2D) from TSTART to TEND.
+!> *CONTACT_2D_AUTOMATIC_SINGLE_SURFACE: the same cards, SIDM blank (the free edges of part set
+!>   SIDS against their own nodes).
 !> *CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE (_ID/_TITLE) card 1: SIDS SIDM SFACT FREQ FS FD DC
 !>   MEMBS (LS-DYNA Keyword User's Manual, *CONTACT_2D_AUTOMATIC; SIDS, SIDM read as *SET_PART
 !>   ids); optional card 2: TBIRTH TDEATH SOS SOM NDS NDM COF INIT; optional card 3: VC VDC IPF
@@ -43,6 +45,8 @@ contains
       call reg%add('DYNX_PRESSURE_PULSE', read_pulse_or_deposit)
       call reg%add('DYNX_ENERGY_DEPOSITION', read_pulse_or_deposit)
       call reg%add('CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE', read_contact_2d, title=.true., &
+                   id=.true.)
+      call reg%add('CONTACT_2D_AUTOMATIC_SINGLE_SURFACE', read_contact_2d, title=.true., &
                    id=.true.)
    end subroutine register_twod
 
@@ -284,8 +288,13 @@ contains
       call c%need(ic, 'missing card '//str(ic)//' (SIDS SIDM SFACT FREQ FS FD DC MEMBS)')
       call c%max_cards(ic + 2)
       call c%seek(ic)
+      b%single = blk%base == 'CONTACT_2D_AUTOMATIC_SINGLE_SURFACE'
       call c%id('SIDS', b%sids)
-      call c%id('SIDM', b%sidm)
+      if (b%single) then                               ! (one surface: SIDS)
+         call c%zero_int('SIDM', 'a single-surface contact has one part set, SIDS')
+      else
+         call c%id('SIDM', b%sidm)
+      end if
       call c%real('SFACT', 1.0_wp, b%sfact, min=0.0_wp)
       if (b%sfact == 0.0_wp) b%sfact = 1.0_wp
       call c%skip(1)                                   ! FREQ: dynx searches every cycle

@@ -21,6 +21,9 @@ module dx_contact2d_types
       !> ISTIFF: 0 the segment penalty pass(:)%k; 2 the soft-constraint stiffness 0.5 SOFSCL
       !> m*/dt**2 (m* the smaller of the slave's and the edge point's mass, dt the last step)
       integer :: istiff = 0
+      !> passes run: 2 (surface to surface), 1 (single surface: pass 1 is every node of the
+      !> side against every edge of it; pass 2 holds the same edges for the nodal normals)
+      integer :: npass = 2
       real(wp) :: sofscl = 0.1_wp              !< 0.1 SFACT (ISTIFF = 2)
       type(c2d_pass_t) :: pass(2)
    end type c2d_iface_t

@@ -150,6 +150,7 @@ module dx_model_input
    !> *CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE as read (SIDS, SIDM part sets)
    type :: c2d_in_t
       integer :: sids = 0, sidm = 0, label = 0, istiff = 0
+      logical :: single = .false.              !< *CONTACT_2D_AUTOMATIC_SINGLE_SURFACE
       real(wp) :: sfact = 1.0_wp, fs = 0.0_wp
       type(origin_t) :: src
    end type c2d_in_t
