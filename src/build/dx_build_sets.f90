@@ -10,6 +10,7 @@ module dx_build_sets
    use dx_log, only: log_warn
    use dx_model_input, only: model_input_t, origin_t
    use dx_build_twod, only: part_dim
+   use dx_label_map, only: label_map_t
    use dx_build_common, only: maps_t, at, set_nodes, curve_index, node_index, dense_segments, &
                               map_labels, hist_solids, hist_nodes
    implicit none
@@ -24,7 +25,7 @@ contains
       type(model_t), intent(inout) :: model
       type(maps_t), intent(inout) :: mp
       type(error_t), allocatable, intent(out) :: error
-      integer :: i, k, j
+      integer :: i
       integer, allocatable :: lab(:)
       type(origin_t), allocatable :: src(:)
       src = [(inp%node_sets(i)%src, i = 1, size(inp%node_sets))]
@@ -33,19 +34,10 @@ contains
       if (allocated(error)) return
       allocate(model%node_sets(size(inp%node_sets)))
       do i = 1, size(inp%node_sets)
-         associate (s => inp%node_sets(i))
-            model%node_sets(i)%label = s%label
-            allocate(model%node_sets(i)%nodes(size(s%ids)))
-            do k = 1, size(s%ids)
-               j = mp%node%get(s%ids(k))
-               if (j == 0) then
-                  call set_error(error, at(inp, s%src)//'set '//str(s%label)//': node '// &
-                                 str(s%ids(k))//' is not defined (*NODE)')
-                  return
-               end if
-               model%node_sets(i)%nodes(k) = j
-            end do
-         end associate
+         model%node_sets(i)%label = inp%node_sets(i)%label
+         call dense_ids(inp, inp%node_sets(i)%src, inp%node_sets(i)%label, inp%node_sets(i)%ids, &
+                        mp%node, 'node', 'NODE', model%node_sets(i)%nodes, error)
+         if (allocated(error)) return
       end do
       src = [(inp%part_sets(i)%src, i = 1, size(inp%part_sets))]
       lab = inp%part_sets(:)%label
@@ -53,19 +45,10 @@ contains
       if (allocated(error)) return
       allocate(model%part_sets(size(inp%part_sets)))
       do i = 1, size(inp%part_sets)
-         associate (s => inp%part_sets(i))
-            model%part_sets(i)%label = s%label
-            allocate(model%part_sets(i)%parts(size(s%ids)))
-            do k = 1, size(s%ids)
-               j = mp%part%get(s%ids(k))
-               if (j == 0) then
-                  call set_error(error, at(inp, s%src)//'set '//str(s%label)//': part '// &
-                                 str(s%ids(k))//' is not defined (*PART)')
-                  return
-               end if
-               model%part_sets(i)%parts(k) = j
-            end do
-         end associate
+         model%part_sets(i)%label = inp%part_sets(i)%label
+         call dense_ids(inp, inp%part_sets(i)%src, inp%part_sets(i)%label, inp%part_sets(i)%ids, &
+                        mp%part, 'part', 'PART', model%part_sets(i)%parts, error)
+         if (allocated(error)) return
       end do
       src = [(inp%segment_sets(i)%src, i = 1, size(inp%segment_sets))]
       lab = inp%segment_sets(:)%label
@@ -80,6 +63,28 @@ contains
          end associate
       end do
    end subroutine build_sets
+
+   !> The dense indices (idmap) of the labels ids of set label (read at src); a label idmap
+   !> does not hold is an error naming the set, the what ('node', 'part') and its keyword.
+   subroutine dense_ids(inp, src, label, ids, idmap, what, key, dense, error)
+      type(model_input_t), intent(in) :: inp
+      type(origin_t), intent(in) :: src
+      integer, intent(in) :: label, ids(:)
+      type(label_map_t), intent(in) :: idmap
+      character(*), intent(in) :: what, key
+      integer, allocatable, intent(out) :: dense(:)
+      type(error_t), allocatable, intent(out) :: error
+      integer :: k
+      allocate(dense(size(ids)))
+      do k = 1, size(ids)
+         dense(k) = idmap%get(ids(k))
+         if (dense(k) == 0) then
+            call set_error(error, at(inp, src)//'set '//str(label)//': '//what//' '// &
+                           str(ids(k))//' is not defined (*'//key//')')
+            return
+         end if
+      end do
+   end subroutine dense_ids
 
 
    !> controls and output requests; the run must end

@@ -158,7 +158,6 @@ contains
          'SIGR', 'D1', 'SIGT', 'LAMBDA', 'D2', 'CG', 'KF', 'PHEL', 'LC', '', 'T', '', '', 'EFMIN', ''], &
          [3, 5])
       integer :: k
-      logical :: unused
       call check_elastic_constants(self, self%e, self%pr, error)
       if (allocated(error)) return
       if (.not. (self%sigy > 0.0_wp)) then
@@ -192,24 +191,21 @@ contains
       end if
       ! model parameters: thresholds >= 0, rates and scales > 0; a field the model does not
       ! use must stay blank or 0 (never silently ignored)
-      do k = 1, 8
-         if (k > 5) then
-            unused = .true.
-         else
-            unused = len_trim(names(self%model, k)) == 0
-         end if
-         if (unused) then
-            if (self%p(k) /= 0.0_wp) then
-               call set_field_error(error, 'P'//str(k), 'MODEL '//str(self%model)// &
-                  ' does not use P'//str(k)//' (leave it blank or 0), got '//rstr(self%p(k)))
-               return
-            end if
+      ! (P1-P5: by the model's names; P6-P8: no model uses them)
+      do k = 1, 5
+         if (len_trim(names(self%model, k)) == 0) then
+            call unused_field(k)
+            if (allocated(error)) return
             cycle
          end if
          if (.not. (self%p(k) >= 0.0_wp)) then
             call set_field_error(error, 'P'//str(k), trim(names(self%model, k))// &
                                  ' must be >= 0, got '//rstr(self%p(k))); return
          end if
+      end do
+      do k = 6, 8
+         call unused_field(k)
+         if (allocated(error)) return
       end do
       select case (self%model)
       case (1)
@@ -234,6 +230,13 @@ contains
          if (.not. (self%p(k) > 0.0_wp)) call set_field_error(error, 'P'//str(k), &
             trim(names(self%model, k))//' must be > 0, got '//rstr(self%p(k)))
       end subroutine positive
+      !> a field the model does not use: blank or 0
+      subroutine unused_field(k)
+         integer, intent(in) :: k
+         if (self%p(k) /= 0.0_wp) call set_field_error(error, 'P'//str(k), 'MODEL '// &
+            str(self%model)//' does not use P'//str(k)//' (leave it blank or 0), got '// &
+            rstr(self%p(k)))
+      end subroutine unused_field
    end subroutine br_setup
 
    pure integer function br_nhist(self)

@@ -31,8 +31,9 @@ module dx_eigen
    use dx_model, only: model_t
    use dx_output, only: output_t
    use dx_checkpoint, only: checkpoint_t
-   use dx_domain, only: domain_t, serial_domain_t
-   use dx_integrator, only: integrator_t, run_options_t, END_STOPPED
+   use dx_domain, only: domain_t
+   use dx_integrator, only: integrator_t, run_options_t, END_STOPPED, serial_fresh_only, &
+                            close_files
    use dx_explicit, only: init_state
    use dx_mumps, only: mumps_t
    use dx_lanczos, only: lanczos_modes
@@ -78,16 +79,8 @@ contains
          at = '*CONTROL_IMPLICIT_EIGENVALUE: '
          if (imp%eig_ifile > 0 .and. allocated(model%deck_files)) at = &
             model%deck_files(imp%eig_ifile)%s//':'//str(imp%eig_line)//': '//at
-         if (model%cycle > 0) then
-            call set_error(error, 'the eigenvalue run has no restart', EXIT_INPUT); return
-         end if
-         select type (dom)
-         type is (serial_domain_t)
-         class default
-            call set_error(error, 'the eigenvalue run (IMFLAG = 1) is not supported in an MPI '// &
-                           'run (it runs serially): run bin/dynx without mpirun and dynx-part', EXIT_INPUT)
-            return
-         end select
+         call serial_fresh_only(model, dom, 'eigenvalue run', '', error)
+         if (allocated(error)) return
          if (.not. allocated(model%x)) call init_state(model, dom)
          model%v = 0.0_wp
          call isys_setup(model, self%sys, error)
@@ -249,14 +242,9 @@ contains
       type(output_t), intent(inout) :: out
       integer, intent(in) :: how
       type(error_t), allocatable, intent(inout) :: error
-      type(error_t), allocatable :: ioerr
       call self%ms%finish()
       if (how == END_STOPPED) return
-      if (dom%writer()) call out%close(ioerr)
-      if (allocated(ioerr) .and. .not. allocated(error)) call move_alloc(ioerr, error)
-      if (allocated(ioerr)) deallocate(ioerr)
-      call dom%plot_finish(ioerr, allocated(error))
-      if (allocated(ioerr) .and. .not. allocated(error)) call move_alloc(ioerr, error)
+      call close_files(dom, out, error)     ! (serial only: the plot finish does nothing)
       if (allocated(error)) return
       call log_info('dynx: normal termination: '//str(self%imode)//' modes, wall time '// &
          rstr(wall_time() - self%t0wall, 4)//' s, peak memory '//str(peak_memory_kb())//' KiB')

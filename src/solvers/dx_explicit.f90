@@ -33,7 +33,7 @@ module dx_explicit
    use dx_domain, only: domain_t
    use dx_mass_scaling, only: ms_init, lump_mass, ms_block, ms_percent, ms_log_start, &
                               ms_endmas_report, MS_WARN_PERCENT
-   use dx_integrator, only: integrator_t, run_options_t, END_FAILED, END_STOPPED
+   use dx_integrator, only: integrator_t, run_options_t, END_FAILED, END_STOPPED, close_files
    implicit none
    private
    public :: explicit_t, init_state, elem_label, explicit_rbdout
@@ -46,6 +46,8 @@ module dx_explicit
    type, extends(integrator_t) :: explicit_t
       real(wp), allocatable :: vold(:, :), fext(:, :), vfree(:, :)
       real(wp), allocatable :: wold(:, :)   !< w(n-1/2) (decks with shells only)
+      !> nodal moments (fext has 6 rows): (v, w) at n-1/2 and n+1/2 for their work
+      real(wp), allocatable :: vw_old(:, :), vw_new(:, :)
       integer, allocatable :: cnodes(:)
       logical :: loads = .false.
       logical :: ms_warned = .false.   !< mass scaling: the increase passed MS_WARN_PERCENT
@@ -124,6 +126,9 @@ contains
       if (allocated(model%w)) allocate(self%wold(3, model%nn))
       self%loads = dom%has_loads(model)      ! the deck's loads, whatever this rank holds
       if (self%loads) allocate(self%fext(load_rows(model), model%nn))   ! 6: nodal moments
+      if (self%loads) then
+         if (size(self%fext, 1) == 6) allocate(self%vw_old(6, model%nn), self%vw_new(6, model%nn))
+      end if
       call constrained_nodes(model, self%cnodes)
       allocate(self%vfree(3, size(self%cnodes)))
       call dom%mass_share(model, self%cnodes)  ! one-element-wide blocks get the element dt bound
@@ -301,8 +306,9 @@ contains
             if (size(fext, 1) == 3) then
                call dom%load_work(fext, vold, model%v, dtavg, wext, need)
             else            ! the moments' work M.dtavg (w(n-1/2) + w(n+1/2))/2 per node too
-               call dom%load_work(fext, stack6(vold, self%wold), stack6(model%v, model%w), &
-                                  dtavg, wext, need)
+               call stack6(vold, self%wold, self%vw_old)
+               call stack6(model%v, model%w, self%vw_new)
+               call dom%load_work(fext, self%vw_old, self%vw_new, dtavg, wext, need)
             end if
          end if
          if (allocated(model%contact)) then
@@ -413,7 +419,6 @@ contains
       type(output_t), intent(inout) :: out
       integer, intent(in) :: how
       type(error_t), allocatable, intent(inout) :: error
-      type(error_t), allocatable :: ioerr
       integer :: i
       if (how == END_STOPPED) return
       if (how == END_FAILED) then
@@ -429,10 +434,7 @@ contains
          real(max(1, model%ne), wp), 4)//' ns per element-cycle, peak memory '// &
          str(peak_memory_kb())//' KiB')
       if (allocated(model%rigid)) call rigid_close(model%rigid)
-      if (dom%writer()) call out%close(ioerr)
-      if (allocated(ioerr)) call move_alloc(ioerr, error)
-      call dom%plot_finish(ioerr, .false.)   ! MPI: rank 0 combines the per-rank plot files
-      if (allocated(ioerr) .and. .not. allocated(error)) call move_alloc(ioerr, error)
+      call close_files(dom, out, error)      ! MPI: rank 0 combines the per-rank plot files
    end subroutine x_close
 
    !> One rbdout record of the rigid bodies at time t (MPI: rank 0 writes).
@@ -523,10 +525,11 @@ contains
          new_line('a')//'dynx: state at the failure (for inspection, not restartable) in '//dump
    end subroutine finish
    !> (6, n): the rows of a over those of b (velocities over angular velocities).
-   pure function stack6(a, b) result(r)
+   !> r = (a; b): two (3, nn) arrays as one (6, nn), in the work array r.
+   pure subroutine stack6(a, b, r)
       real(wp), intent(in) :: a(:, :), b(:, :)
-      real(wp) :: r(6, size(a, 2))
+      real(wp), intent(inout) :: r(:, :)
       r(1:3, :) = a
       r(4:6, :) = b
-   end function stack6
+   end subroutine stack6
 end module dx_explicit

@@ -33,8 +33,9 @@ module dx_implicit
    use dx_model, only: model_t
    use dx_output, only: output_t
    use dx_checkpoint, only: checkpoint_t
-   use dx_domain, only: domain_t, serial_domain_t
-   use dx_integrator, only: integrator_t, run_options_t, END_FAILED, END_STOPPED
+   use dx_domain, only: domain_t
+   use dx_integrator, only: integrator_t, run_options_t, END_FAILED, END_STOPPED, &
+                            serial_fresh_only, close_files
    use dx_explicit, only: init_state
    use dx_sparse, only: sparse_matvec
    use dx_mumps, only: mumps_t
@@ -91,18 +92,9 @@ contains
             rstr(model%ctrl%endtim), EXIT_INPUT)
          return
       end if
-      if (model%cycle > 0) then
-         call set_error(error, 'the implicit solver has no restart (its element state is '// &
-                        'not in the dump)', EXIT_INPUT)
-         return
-      end if
-      select type (dom)
-      type is (serial_domain_t)
-      class default
-         call set_error(error, 'the implicit solver (IMFLAG = 1) is not supported in an MPI run (it runs '// &
-                        'serially): run bin/dynx without mpirun and dynx-part', EXIT_INPUT)
-         return
-      end select
+      call serial_fresh_only(model, dom, 'implicit solver', ' (its element state is not '// &
+                             'in the dump)', error)
+      if (allocated(error)) return
       if (.not. allocated(model%x)) call init_state(model, dom)
       model%v = 0.0_wp
       call isys_setup(model, self%sys, error, rigid_ok=.true.)
@@ -538,9 +530,6 @@ contains
          'analysis '//rstr(self%tana, 3)//' s before it, factorizations and solves '// &
          rstr(self%tfac, 3)//' s, assembly '//rstr(self%tasm, 3)//' s), peak memory '// &
          str(peak_memory_kb())//' KiB')
-      if (dom%writer()) call out%close(ioerr)
-      if (allocated(ioerr)) call move_alloc(ioerr, error)
-      call dom%plot_finish(ioerr, .false.)
-      if (allocated(ioerr) .and. .not. allocated(error)) call move_alloc(ioerr, error)
+      call close_files(dom, out, error)
    end subroutine i_close
 end module dx_implicit

@@ -5,14 +5,15 @@
 !> conserving_t (dx_emc_solver); the factory make_integrator is in dx_solver.
 module dx_integrator
    use dx_kinds, only: wp, huge_wp
-   use dx_error, only: error_t
+   use dx_error, only: error_t, set_error, EXIT_INPUT
    use dx_model, only: model_t
    use dx_output, only: output_t
    use dx_checkpoint, only: checkpoint_t
-   use dx_domain, only: domain_t
+   use dx_domain, only: domain_t, serial_domain_t
    implicit none
    private
-   public :: run_options_t, integrator_t, energy_guard_t, END_NORMAL, END_FAILED, END_STOPPED
+   public :: run_options_t, integrator_t, energy_guard_t, END_NORMAL, END_FAILED, END_STOPPED, &
+             serial_fresh_only, close_files
 
    integer, parameter :: END_NORMAL = 0, END_FAILED = 1, END_STOPPED = 2
 
@@ -93,4 +94,41 @@ module dx_integrator
          type(error_t), allocatable, intent(inout) :: error
       end subroutine close_i
    end interface
+
+contains
+
+   !> The refusals of an integrator that runs serially and from the start only (the
+   !> implicit and eigenvalue runs): a restart (model%cycle > 0: 'the WHO has no restart'
+   !> and why) or an MPI domain is an input error.
+   subroutine serial_fresh_only(model, dom, who, why, error)
+      type(model_t), intent(in) :: model
+      class(domain_t), intent(in) :: dom
+      character(*), intent(in) :: who, why
+      type(error_t), allocatable, intent(out) :: error
+      if (model%cycle > 0) then
+         call set_error(error, 'the '//who//' has no restart'//why, EXIT_INPUT)
+         return
+      end if
+      select type (dom)
+      type is (serial_domain_t)
+      class default
+         call set_error(error, 'the '//who//' (IMFLAG = 1) is not supported in an MPI run '// &
+                        '(it runs serially): run bin/dynx without mpirun and dynx-part', &
+                        EXIT_INPUT)
+      end select
+   end subroutine serial_fresh_only
+
+   !> The files at the end of a run: the writer closes the output files, then the domain
+   !> finishes the plot (MPI: rank 0 combines the per-rank plot files); the first failure
+   !> (one already in error included) is the one reported.
+   subroutine close_files(dom, out, error)
+      class(domain_t), intent(inout) :: dom
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(inout) :: error
+      type(error_t), allocatable :: ioerr
+      if (dom%writer()) call out%close(ioerr)
+      if (allocated(ioerr) .and. .not. allocated(error)) call move_alloc(ioerr, error)
+      call dom%plot_finish(ioerr, .false.)
+      if (allocated(ioerr) .and. .not. allocated(error)) call move_alloc(ioerr, error)
+   end subroutine close_files
 end module dx_integrator
