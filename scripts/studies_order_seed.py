@@ -229,12 +229,7 @@ PTABLE = {
 # shell_projectile_plate: quarter plate N x N BT shells, rigid projectile (4 x 4 x 8 hexes
 # held), 1 ms: the plate centre's peak deflection and the projectile's speed at 1 ms
 def plate_case(n):
-    d = os.path.join(WORK, 'plate_%d' % n)
-    od, wall = run_dir('plate_%d' % n, [PY, os.path.join(S, 'gen_shell_scenes.py'), 'plate',
-                                        str(n), d, '--tend', '1.0', '--dplot', '0'],
-                       ['deck.k', 'mesh.k'])
-    names, rows = dxpost.columns(os.path.join(od, 'nodout'))
-    hist, _ = _hist(os.path.join(d, 'mesh.k'))
+    od, wall, names, rows, hist = shell_run('plate', n, '1.0')
     centre, proj = hist[0], hist[-1]
     kz, kv = names.index('z_disp'), names.index('z_vel')
     zc = [r for r in rows if int(r[1]) == centre]
@@ -247,9 +242,17 @@ def plate_case(n):
                                       '%.1e' % max(abs(v - 1) for v in ratio)], 'wall': wall}
 
 
-def _hist(mesh):
+def shell_run(scene, n, tend):
+    """gen_shell_scenes.py SCENE N (no plot states) run to TEND ms: outdir, CPU s, nodout
+    column names and rows, the deck's history node list."""
     import shell_scene_check
-    return shell_scene_check.read_mesh(mesh)
+    name = '%s_%d' % (scene, n)
+    d = os.path.join(WORK, name)
+    od, cpu = run_dir(name, [PY, os.path.join(S, 'gen_shell_scenes.py'), scene, str(n), d,
+                             '--tend', tend, '--dplot', '0'], ['deck.k', 'mesh.k'])
+    names, rows = dxpost.columns(os.path.join(od, 'nodout'))
+    hist, _ = shell_scene_check.read_mesh(os.path.join(d, 'mesh.k'))
+    return od, cpu, names, rows, hist
 
 
 PL_LEVELS = [10, 20, 40, 80]
@@ -281,12 +284,7 @@ PLATE = {
 # shell_box_post: the box-section front on the rigid U post, N shells per side, 2 ms: the
 # vehicle's (rigid rear ring's) speed and crush at 2 ms
 def post_case(n):
-    d = os.path.join(WORK, 'post_%d' % n)
-    od, wall = run_dir('post_%d' % n, [PY, os.path.join(S, 'gen_shell_scenes.py'), 'post',
-                                       str(n), d, '--tend', '2.0', '--dplot', '0'],
-                       ['deck.k', 'mesh.k'])
-    names, rows = dxpost.columns(os.path.join(od, 'nodout'))
-    hist, _ = _hist(os.path.join(d, 'mesh.k'))
+    od, wall, names, rows, hist = shell_run('post', n, '2.0')
     ring = hist[-1]
     kx, kv = names.index('x_disp'), names.index('x_vel')
     rr = [r for r in rows if int(r[1]) == ring]
