@@ -27,6 +27,14 @@ import h5py
 import numpy as np
 
 
+def starts(mixed):
+    k, out = 0, []
+    while k < len(mixed):
+        out.append(k)
+        k += 1 + {5: 4, 4: 3}[int(mixed[k])]
+    return out
+
+
 def measure(out):
     f = h5py.File(out + '/d3plot.h5', 'r')
     ks = sorted(k for k in f['states'] if k != 'times')
@@ -61,6 +69,10 @@ def measure(out):
     if len(env) > 2:
         slope = np.polyfit(env[:, 0], env[:, 1], 1)[0]      # dr/d(depth)
         m['angle'] = np.degrees(np.arctan(slope))
+    xs = f['states/' + ks[-1] + '/coordinates'][:]
+    sn = np.unique(mixed[np.concatenate([np.arange(k0 + 1, k0 + 5) for k0 in starts(mixed)])]
+                   [np.repeat(sil, 4)])
+    m['heave'] = xs[sn, 1].max()                  # the highest silica node (surface at 0)
     m['ndamaged'] = int((ds > 0).sum())
     m['nsilica'] = int(sil.sum())
     lines = [l for l in open(out + '/glstat') if l.lstrip()[:1] in tuple('+-.0123456789')]
@@ -80,8 +92,8 @@ def main():
         p.add_argument('--' + q, type=float, nargs=2)
     a = p.parse_args()
     m = measure(a.out)
-    print('silica elements damaged %d of %d; hourglass energy / initial kinetic %.4f'
-          % (m['ndamaged'], m['nsilica'], m['hourglass']))
+    print('silica elements damaged %d of %d; hourglass energy / initial kinetic %.4f; '
+          'surface heave %.4f mm' % (m['ndamaged'], m['nsilica'], m['hourglass'], m['heave']))
     ok = m['finite']
     print(('ok   ' if ok else 'FAIL ') + 'glstat and damage finite')
     ref = {'outer': 'experiment 1.65, DYNA2D 1.62 mm', 'inner': '0.8 / 0.7 mm',
