@@ -37,7 +37,8 @@ module dx_element_types
    private
    public :: family_t, element_family, elem_volume, elem_moments, elem_length, block_result_t
    public :: ETYPE_HEX8_1PT, ETYPE_HEX8_SRI, ETYPE_TET4, ETYPE_DEFAULT, ETYPE_SHELL_BT
-   public :: etype_of_shell_elform, ES_THK, shell_area, shell_frame, shell_stress_global
+   public :: etype_of_shell_elform, ES_THK, shell_area, shell_frame, shell_stress_global, &
+             shell_axes
    public :: ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS, quad2d_area, &
              quad2d_rvol
    public :: ETYPE_BEAM_BS, ETYPE_BEAM_HL, etype_of_beam_elform, ES_BEAM, elem_stress_global, is_beam
@@ -436,18 +437,8 @@ contains
    pure subroutine shell_frame(xe, e, xl, area)
       real(wp), intent(in) :: xe(3, 4)
       real(wp), intent(out) :: e(3, 3), xl(2, 4), area
-      real(wp) :: s21(3), n(3), r(3), a
       integer :: k
-      s21 = xe(:, 2) - xe(:, 1)
-      n = cross(xe(:, 3) - xe(:, 1), xe(:, 4) - xe(:, 2))
-      a = norm2(n)
-      if (a > 0.0_wp) n = n/a
-      e(:, 3) = n
-      r = s21 - dot_product(s21, n)*n
-      a = norm2(r)
-      if (a > 0.0_wp) r = r/a
-      e(:, 1) = r
-      e(:, 2) = cross(n, r)
+      call shell_axes(xe, e)
       do k = 1, 4
          xl(1, k) = dot_product(e(:, 1), xe(:, k) - xe(:, 1))
          xl(2, k) = dot_product(e(:, 2), xe(:, k) - xe(:, 1))
@@ -455,6 +446,27 @@ contains
       area = 0.5_wp*((xl(1, 3) - xl(1, 1))*(xl(2, 4) - xl(2, 2)) - &
                      (xl(1, 4) - xl(1, 2))*(xl(2, 3) - xl(2, 1)))
    end subroutine shell_frame
+
+   !> The axes e(3, 3) of shell_frame alone (no local coordinates), the cross products
+   !> written out (dx_vec3's cross is not inlined across modules: 9 % of a shell run).
+   pure subroutine shell_axes(xe, e)
+      real(wp), intent(in) :: xe(3, 4)
+      real(wp), intent(out) :: e(3, 3)
+      real(wp) :: s21(3), d31(3), d42(3), n(3), r(3), a
+      s21 = xe(:, 2) - xe(:, 1)
+      d31 = xe(:, 3) - xe(:, 1)
+      d42 = xe(:, 4) - xe(:, 2)
+      n = [d31(2)*d42(3) - d31(3)*d42(2), d31(3)*d42(1) - d31(1)*d42(3), &
+           d31(1)*d42(2) - d31(2)*d42(1)]
+      a = norm2(n)
+      if (a > 0.0_wp) n = n/a
+      e(:, 3) = n
+      r = s21 - dot_product(s21, n)*n
+      a = norm2(r)
+      if (a > 0.0_wp) r = r/a
+      e(:, 1) = r
+      e(:, 2) = [n(2)*r(3) - n(3)*r(2), n(3)*r(1) - n(1)*r(3), n(1)*r(2) - n(2)*r(1)]
+   end subroutine shell_axes
 
    !> A shell's stress s (xx yy zz xy yz zx) from its co-rotational frame (nodes xe(3, 4))
    !> to the global axes: sigma_global = E sigma_local E^T.

@@ -45,7 +45,7 @@ module dx_shell_bt
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_material, only: material_t
    use dx_element_types, only: elem_block_t, part_t, ES_THK, block_result_t, &
-                               ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, shell_frame
+                               ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, shell_frame, shell_axes
    implicit none
    private
    public :: shell_bt_block, shell_bt_rotary_inertia, thickness_rule
@@ -159,7 +159,7 @@ contains
       integer, parameter :: MAXIP = 5
       real(wp) :: dm(nv_chunk, 3), kap(nv_chunk, 3), gam(nv_chunk, 2), thk(nv_chunk)
       real(wp) :: rc(nv_chunk), rs(nv_chunk), rc2(nv_chunk), rs2(nv_chunk)
-      real(wp) :: ea(3, 3), xla(2, 4), aa, psi
+      real(wp) :: ea(3, 3), psi, ef(3, 3, nv_chunk), amf(nv_chunk)
       real(wp) :: rold(nv_chunk, 8), rnew(nv_chunk, 8)
       real(wp) :: de5(blk%nel, 5), s5(blk%nel, 5)
       real(wp) :: zeta(MAXIP), wt(MAXIP)
@@ -191,6 +191,7 @@ contains
             xm(:, k) = x(:, nn) - hdt*ve(:, k)
          end do
          call shell_frame(xm, e, xl, am)
+         ef(:, :, i) = e; amf(i) = am          ! (the forces' frame: built once a cycle)
          if (.not. (am > 0.0_wp)) then
             ierr(i) = ELEM_ERR_NEGVOL
             am = 1.0_wp
@@ -211,10 +212,10 @@ contains
          ! a step to the frame of x(n) after the update, each less the frame's own rotation
          ! (exact angle between the frames: the Jaumann rate in the rotating frame)
          psi = 0.25_wp*dt_old*(dot_product(b1, vl(2, :)) - dot_product(b2, vl(1, :)))
-         call shell_frame(xm - hdt*ve, ea, xla, aa)
+         call shell_axes(xm - hdt*ve, ea)
          z = psi - atan2(-dot_product(ea(:, 1), e(:, 2)), dot_product(ea(:, 1), e(:, 1)))
          rc(i) = cos(z); rs(i) = sin(z)
-         call shell_frame(xm + hdt*ve, ea, xla, aa)
+         call shell_axes(xm + hdt*ve, ea)
          z = psi - atan2(-dot_product(e(:, 1), ea(:, 2)), dot_product(e(:, 1), ea(:, 1)))
          rc2(i) = cos(z); rs2(i) = sin(z)
       end do
@@ -259,10 +260,10 @@ contains
          do k = 1, NEN
             nn = blk%conn(k, i)
             xe(:, k) = x(:, nn); ve(:, k) = v(:, nn); we(:, k) = w(:, nn)
-            xm(:, k) = xe(:, k) - hdt*ve(:, k)
          end do
-         ! the frame of the stresses (the mid-step one); the geometry of x(n) in it
-         call shell_frame(xm, e, xl, am)
+         ! the frame of the stresses (the mid-step one, kept from the strain pass); the
+         ! geometry of x(n) in it
+         e = ef(:, :, i); am = amf(i)
          do k = 1, NEN
             xl(1, k) = dot_product(e(:, 1), xe(:, k) - xe(:, 1))
             xl(2, k) = dot_product(e(:, 2), xe(:, k) - xe(:, 1))
