@@ -42,7 +42,7 @@
                                             head on through *CONTACT_2D_AUTOMATIC_SURFACE_TO_
                                             SURFACE: by symmetry the bar on a rigid frictionless
                                             wall. History nodes: bar A's top axis node and its
-                                            contact face's nodes (quad2d_check.py taylor2). ISTIFF 2: the soft-constraint
+                                            contact face's nodes (quad2d_check.py taylor2). ISTIFF 1: the soft-constraint
                                             stiffness (SOFSCL = 0.1 SF)
   gen_nr2d_decks.py fold DECK               plane strain: a U of steel (base 9 x 2 mm, legs 4 x
                                             10 mm, slot 1 mm) whose legs close at +-60 m/s: a

@@ -18,6 +18,7 @@ module dx_build_twod
    use dx_element_types, only: etype_of_shell_elform, quad2d_area, ETYPE_QUAD2D_PSS, ES_THK
    use dx_build_common, only: at, at_line, maps_t, set_nodes
    use dx_sort, only: sort_index
+   use dx_log, only: log_warn
    implicit none
    private
    public :: part_dim, check_dimension, twod_element, build_twod_extras
@@ -293,6 +294,9 @@ contains
             ci%label = r%label
             ci%fs = r%fs
             ci%istiff = r%istiff
+            if (r%istiff == 0) call log_warn(at(inp, r%src)//'ISTIFF = 0: dynx scales the '// &
+               'contact stiffness from the segment stiffness and dimensions (ISTIFF = 2); '// &
+               'LS-DYNA''s explicit default is ISTIFF = 1 (segment masses and the step)')
             ci%sofscl = 0.1_wp*r%sfact
             if (r%single) ci%npass = 1
             do p = 1, 2                    ! side p: its free edges
@@ -318,6 +322,12 @@ contains
                associate (ps => ci%pass(3 - p))
                   ps%edge = side(1:2, :)
                   allocate(ps%k(size(side, 2)))
+                  if (r%single) then
+                     allocate(ps%own(4, size(side, 2)))
+                     do k = 1, size(side, 2)
+                        ps%own(:, k) = model%blocks(side(3, k))%conn(1:4, side(4, k))
+                     end do
+                  end if
                   do k = 1, size(side, 2)
                      associate (blk => model%blocks(side(3, k)), &
                                 m0 => model%mats(model%parts(model%blocks(side(3, k))%ipart)%imat)%m)

@@ -12,7 +12,7 @@
 !> conserved exactly), k = SFACT x 0.1 x K L**2/A of the master edge's element (LS-DYNA's
 !> solid penalty SLSFAC K A**2/V in 2D, per unit thickness; per radian in axisymmetry: times
 !> r_m**2/rbar, r_m the edge's midpoint radius, rbar = V/A the element's); with card 3's ISTIFF
-!> = 2 instead the soft-constraint stiffness of LS-DYNA's SOFT = 1 (LS-DYNA Theory Manual,
+!> = 1 (the manual's scaling from the segment masses and the explicit step) instead the soft-constraint stiffness of LS-DYNA's SOFT = 1 (LS-DYNA Theory Manual,
 !> "Soft constraint penalty formulation"): k = 0.5 SOFSCL m*/dt**2, SOFSCL = 0.1 SFACT, m* the
 !> smaller of the slave's mass and the edge point's 1/((1 - xi)**2/m_a + xi**2/m_b) (so
 !> omega dt <= sqrt(2 SOFSCL) per pass, whatever the two meshes' masses), dt the elements'
@@ -42,7 +42,7 @@ module dx_contact2d
    !> an edge faces a slave node when their normals make more than acos(-NFACE) = 102 deg
    !> (a node of a flat surface is not caught by the side of a block sliding over it)
    real(wp), parameter :: NFACE = 0.2_wp
-   !> relative change of the step that updates the soft constraint's stiffness (ISTIFF 2)
+   !> relative change of the step that updates the soft constraint's stiffness (ISTIFF 1)
    real(wp), parameter :: DTHYS = 0.05_wp
 
 contains
@@ -98,6 +98,11 @@ contains
                   do j = 1, size(ps%edge, 2)
                      a = ps%edge(1, j); b = ps%edge(2, j)
                      if (s == a .or. s == b) cycle
+                     ! single surface: not the far face of the node's own element (a part
+                     ! thinner than half an edge would be pushed through itself)
+                     if (allocated(ps%own)) then
+                        if (any(ps%own(:, j) == s)) cycle
+                     end if
                      d = x(1:2, b) - x(1:2, a)
                      el = norm2(d)
                      t = d/el
@@ -117,7 +122,7 @@ contains
                   t = d/norm2(d)
                   nv = [t(2), -t(1)]
                   kk = ps%k(jbest)
-                  if (c%iface(i)%istiff == 2) then
+                  if (c%iface(i)%istiff == 1) then
                      ! soft constraint: 0.5 SOFSCL m*/dt**2, m* = min(m_s, m_e), m_e the edge
                      ! point's mass 1/((1 - xi)**2/m_a + xi**2/m_b) (omega dt <= sqrt(2
                      ! SOFSCL) per pass, whatever the meshes' masses)
@@ -139,7 +144,7 @@ contains
                   ! the step the contact spring allows: 2/omega, omega**2 = 2 k (1/m_s +
                   ! (1 - xi)**2/m_a + xi**2/m_b) (both passes may hold the pair); the soft
                   ! constraint is scaled to the step itself (fed back, it would shrink it)
-                  if (c%iface(i)%istiff /= 2) then
+                  if (c%iface(i)%istiff /= 1) then
                      w2 = 2.0_wp*kk*(1.0_wp/mass(s) + (1.0_wp - xib)**2/mass(a) + &
                                      xib**2/mass(b))
                      dtcrit = min(dtcrit, 2.0_wp/sqrt(w2))

@@ -19,8 +19,12 @@
 !>   MEMBS (LS-DYNA Keyword User's Manual, *CONTACT_2D_AUTOMATIC; SIDS, SIDM read as *SET_PART
 !>   ids); optional card 2: TBIRTH TDEATH SOS SOM NDS NDM COF INIT; optional card 3: VC VDC IPF
 !>   SLIDE ISTIFF TIEDGAP IGAPCL TIETYP. FREQ is read past (dynx searches every cycle); ISTIFF
-!>   0 or 1 is the segment penalty scaled by SFACT, 2 the soft-constraint stiffness from the
-!>   nodal masses and the step (LS-DYNA's SOFT = 1 form, SOFSCL = 0.1 SFACT; dx_contact2d);
+!>   as the manual defines it: 1 the stiffness scaled from the segment masses and the
+!>   explicit step (LS-DYNA's explicit default; here the SOFT = 1 form, SOFSCL = 0.1 SFACT,
+!>   SFACT at most 10 so the spring stays stable at the step), 2 the stiffness from the
+!>   segment stiffness and dimensions (the penalty SFACT x 0.1 K l**2/V); ISTIFF 0 (blank)
+!>   is dynx's default, the segment form of 2, which differs from LS-DYNA's explicit default
+!>   (1): the build says so in a warning (dx_contact2d);
 !>   FD other than 0 or FS, DC, MEMBS and the other fields of cards 2-3 other than their
 !>   defaults are refused (not implemented).
 module dx_read_twod
@@ -316,9 +320,12 @@ contains
             call c%zero_real(trim(c3(k)), 'this option of the 2D contact')
          end do
          call c%int('ISTIFF', 0, b%istiff)
-         if (c%ok() .and. all(b%istiff /= [0, 1, 2])) call c%fail('ISTIFF', 'only 0 or 1 '// &
-            '(segment penalty from SFACT) and 2 (soft constraint from the nodal masses and '// &
-            'the step) are supported, got '//str(b%istiff))
+         if (c%ok() .and. all(b%istiff /= [0, 1, 2])) call c%fail('ISTIFF', 'only 1 '// &
+            '(stiffness from the segment masses and the step), 2 (from the segment '// &
+            'stiffness and dimensions) and 0 (dynx: as 2) are supported, got '//str(b%istiff))
+         if (c%ok() .and. b%istiff == 1 .and. b%sfact > 10.0_wp) call c%fail('SFACT', &
+            'with ISTIFF = 1 the contact spring 0.05 SFACT m/dt**2 is stable at the step '// &
+            'only up to SFACT = 10 (both passes may hold a pair), got '//rstr(b%sfact))
          do k = 5, 7
             call c%zero_real(trim(c3(k)), 'this option of the 2D contact')
          end do

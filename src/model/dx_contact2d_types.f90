@@ -13,18 +13,20 @@ module dx_contact2d_types
       integer, allocatable :: node(:)          !< (ns) slave nodes
       integer, allocatable :: edge(:, :)       !< (2, nm) master edges a -> b (outward (dy, -dx))
       real(wp), allocatable :: k(:)            !< (nm) penalty stiffness of each master edge
+      !> (4, nm) single surface only: the nodes of the element each master edge bounds
+      integer, allocatable :: own(:, :)
    end type c2d_pass_t
 
    type :: c2d_iface_t
       integer :: label = 0
       real(wp) :: fs = 0.0_wp                  !< Coulomb friction coefficient
-      !> ISTIFF: 0 the segment penalty pass(:)%k; 2 the soft-constraint stiffness 0.5 SOFSCL
+      !> ISTIFF: 0 and 2 the segment penalty pass(:)%k; 1 the soft-constraint stiffness 0.5 SOFSCL
       !> m*/dt**2 (m* the smaller of the slave's and the edge point's mass, dt the last step)
       integer :: istiff = 0
       !> passes run: 2 (surface to surface), 1 (single surface: pass 1 is every node of the
       !> side against every edge of it; pass 2 holds the same edges for the nodal normals)
       integer :: npass = 2
-      real(wp) :: sofscl = 0.1_wp              !< 0.1 SFACT (ISTIFF = 2)
+      real(wp) :: sofscl = 0.1_wp              !< 0.1 SFACT (ISTIFF = 1)
       type(c2d_pass_t) :: pass(2)
    end type c2d_iface_t
 
@@ -34,7 +36,7 @@ module dx_contact2d_types
       real(wp), allocatable :: fold(:, :)      !< (2, nn) of the last cycle
       real(wp), allocatable :: vold(:, :)      !< (2, nn) v(n-3/2)
       real(wp) :: dtold = 0.0_wp               !< dt_old of the last cycle
-      real(wp) :: dtsoft = 0.0_wp              !< the step of the soft constraint (ISTIFF 2)
+      real(wp) :: dtsoft = 0.0_wp              !< the step of the soft constraint (ISTIFF 1)
       real(wp) :: work = 0.0_wp                !< work of the contact forces (one cycle late)
       integer :: ncontact = 0                  !< slave nodes in contact, this cycle
    end type contact2d_t
