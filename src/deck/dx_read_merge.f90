@@ -169,6 +169,7 @@ contains
       inp%node_src(:, 1:n) = inp%node_src(:, keep(1:n))
       inp%nn = n
       inp%node_alias = alias
+      call sets_without_aliases(inp, alias)
    contains
       !> the root of node i's group (path halving)
       integer function find(i0) result(r)
@@ -201,4 +202,38 @@ contains
       character(:), allocatable :: s
       s = inp%files(src%ifile)%s//':'//str(src%line)//': *'//src%key//': '
    end function where
+
+   !> After the merge every node set names each node once: a merged-away label becomes its
+   !> kept node's label, and a repeat (a set that held both) is dropped, the first kept in
+   !> order; a load, constraint, contact or history on the set then acts on the node once.
+   subroutine sets_without_aliases(inp, alias)
+      type(model_input_t), intent(inout) :: inp
+      integer, intent(in) :: alias(:, :)
+      type(label_map_t) :: amap, seen
+      integer, allocatable :: ids(:)
+      integer :: i, k, n, lab, old
+      if (.not. allocated(inp%node_sets)) return
+      call amap%init(size(alias, 2))
+      do k = 1, size(alias, 2)
+         call amap%insert(alias(1, k), alias(2, k), old)
+      end do
+      do i = 1, size(inp%node_sets)
+         associate (st => inp%node_sets(i))
+            if (.not. allocated(st%ids)) cycle
+            call seen%init(size(st%ids))
+            allocate(ids(size(st%ids)))
+            n = 0
+            do k = 1, size(st%ids)
+               lab = st%ids(k)
+               if (amap%get(lab) /= 0) lab = amap%get(lab)
+               call seen%insert(lab, 1, old)
+               if (old /= 0) cycle
+               n = n + 1
+               ids(n) = lab
+            end do
+            st%ids = ids(1:n)
+            deallocate(ids)
+         end associate
+      end do
+   end subroutine sets_without_aliases
 end module dx_read_merge
