@@ -24,7 +24,8 @@
 !> (sticking). Positions x(n), velocities v(n-1/2). The critical step takes each contact
 !> pair's spring bound 2/omega (as the 3D penalty contact, dx_contact). Every slave node
 !> against every master edge of its pass (no bucket sort: interfaces of a few thousand
-!> edges). Serial runs only (dx_par_engine_setup refuses a deck with it under MPI).
+!> edges). MPI runs: dx_par_contact2d runs this pass on a replicated table of the contact
+!> nodes (compact numbering in the serial order), so the results are the serial ones.
 !> Single surface (*CONTACT_2D_AUTOMATIC_SINGLE_SURFACE): one pass, every node of the free
 !> edges of the part set against every one of those edges but its own two; the facing test
 !> and the gap window (-L/2, 0) keep a node off its neighbouring edges round a convex
