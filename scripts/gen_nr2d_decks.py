@@ -51,6 +51,10 @@
                                             elements) at 1 m/s along x on a base 12 x 2 mm
                                             (fixed bottom), pressed by 0.01 GPa on its top
                                             (*LOAD_SEGMENT, ramped over 0.5 us), friction FS
+  gen_nr2d_decks.py tiedbar DECK MODE      plane strain: a steel bar 80 x 2 mm cut at x = 40,
+                                            the half x < 40 at -10 m/s, the other at rest;
+                                            MODE tied, oneway (*CONTACT_2D_AUTOMATIC_TIED,
+                                            _TIED_ONE_WAY), contact (surface to surface), uncut
 Each of the wave decks writes the history nodes on the diagonal (or the axis of the strip) every 0.2 mm
 of radius; the same mesh with a larger ROUT or LENGTH has the same nodes and elements inside
 (the reference run without reflection, nr2d_check.py). Units: mm, ms, kg, GPa (steel).
@@ -402,6 +406,58 @@ def slide(path, fs):
     write(path, s)
 
 
+def tiedbar(path, mode, v0=10.0, n=40):
+    """A plane-strain steel bar 2n x 2 mm (1 mm elements, rollers on y = 0 and 2: 1D strain)
+    cut at x = n into part A (x < n, nodes 1..) and part B (x > n, nodes 1001..; its own
+    nodes at the cut), A at -v0 along x (away from B), B at rest. mode: 'tied'
+    (*CONTACT_2D_AUTOMATIC_TIED), 'oneway' (_TIED_ONE_WAY), 'contact' (_SURFACE_TO_SURFACE:
+    the cut opens), 'uncut' (B's elements on A's cut nodes: one bar; the cut nodes at -v0/2,
+    the momentum of the two half masses). History nodes on y = 0: x = n - 10, n (A's, B's),
+    n + 10, n + 20, n + 30 (labels alike in every mode); nodout every 0.1 us."""
+    xa, qa, nid = block(n, 2, 1.0, 1.0)
+    xb = [(x + n, y) for x, y in xa]
+    lab = list(range(1, len(xa) + 1)) + [1000 + i for i in range(1, len(xb) + 1)]
+    qb = [tuple(1000 + k for k in q) for q in qa]
+    xy = xa + xb
+    vx = {k: -v0 for k in range(1, len(xa) + 1)}
+    vx.update({1000 + k: 0.0 for k in range(1, len(xb) + 1)})
+    if mode == 'uncut':                      # B's cut nodes are A's
+        cut = {1000 + nid(0, j): nid(n, j) for j in range(3)}
+        qb = [tuple(cut.get(k, k) for k in q) for q in qb]
+        keep = [i for i, k in enumerate(lab) if k not in cut]
+        xy, lab = [xy[i] for i in keep], [lab[i] for i in keep]
+        for j in range(3):
+            vx[nid(n, j)] = -0.5*v0
+            del vx[1000 + nid(0, j)]
+    kw = {'tied': '*CONTACT_2D_AUTOMATIC_TIED', 'oneway': '*CONTACT_2D_AUTOMATIC_TIED_ONE_WAY',
+          'contact': '*CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE'}
+    s = head2(f'A bar cut in two, {mode} (2D tied contact)', 0.012, 13,
+              [(1, 1, 0, 'A'), (2, 1, 0, 'B')])
+    s[6:6] = ['*DATABASE_NODOUT', f'{1e-4:10.3e}']
+    s += ['*NODE +'] + [f'{k:20d}{x:20.13e}{y:20.13e}{0.0:20.13e}' for k, (x, y) in zip(lab, xy)]
+    s += ['*ELEMENT_SHELL']
+    for i, q in enumerate(qa + qb, 1):
+        s.append(f'{i:8d}{1 if i <= len(qa) else 2:8d}' + ''.join(f'{k:8d}' for k in q))
+    hist = [nid(n - 10, 0), nid(n, 0), 1000 + nid(0, 0), 1000 + nid(10, 0), 1000 + nid(20, 0),
+            1000 + nid(30, 0)]
+    if mode == 'uncut':
+        hist.remove(1000 + nid(0, 0))
+    s += ['*DATABASE_HISTORY_NODE_SET', f'{3:10d}'] + node_set(3, hist)
+    s += node_set(4, [k for k, (x, y) in zip(lab, xy) if y in (0.0, 2.0)])
+    s += ['*BOUNDARY_SPC_SET', f'{4:10d}{0:10d}{0:10d}{1:10d}{0:10d}']
+    s += ['*SET_PART_LIST', f'{1:10d}', f'{1:10d}', '*SET_PART_LIST', f'{2:10d}', f'{2:10d}']
+    if mode in kw:
+        s += [kw[mode], '$    SURFA     SURFB     SFACT', f'{1:10d}{2:10d}{1.0:10.3f}']
+    if mode in ('tied', 'oneway'):
+        s += ['$   TBIRTH', f'{0.0:10.1f}',
+              '$       VC       VDC       IPF     SLIDE    ISTIFF   TIEDGAP    IGAPCL    TIETYP',
+              f'{0.0:10.1f}{0.0:10.1f}{0:10d}{0:10d}{0:10d}{0.0:10.1f}{0:10d}{1:10d}']
+    s += ['*INITIAL_VELOCITY_NODE'] + [f'{k:10d}{v:10.3f}{0.0:10.3f}{0.0:10.3f}'
+                                       for k, v in sorted(vx.items())]
+    s += ['*END']
+    write(path, s)
+
+
 def write(path, lines):
     with open(path, 'w') as f:
         f.write('\n'.join(lines) + '\n')
@@ -430,6 +486,8 @@ def main(argv):
         slide(path, float(argv[2]))
     elif what == 'fold':
         fold(path)
+    elif what == 'tiedbar':
+        tiedbar(path, argv[2])
     elif what == 'cyl':
         ring(path, float(argv[2]), int(argv[3]), 13)
     else:

@@ -44,6 +44,19 @@
       its friction impulse is MU times the normal impulse, and the normal impulse is the
       pressure's I_p plus m dv_y (its own vertical momentum), so at every nodout line
       v_x = v_x0 - MU (I_p/m + dv_y) (centre-of-mass velocities) within TOL.
+  nr2d_check.py tiedbar OUT CONTACT UNCUT V0 NODE D TOLT TOLV TOLO TOLE TOLE1
+      the bar of gen_nr2d_decks.py tiedbar (plane strain, 1D strain, half A at -V0, half B at
+      rest, cut and tied): the tension wave carries v_x = -V0/2 into B at the 1D-strain
+      speed c = sqrt(E(1-nu)/((1+nu)(1-2nu))/rho) (steel). At history node NODE, D mm into B:
+      the time v_x passes -V0/4 within TOLT of D/c; the mean v_x over the plateau (its
+      arrival + 2 us to the return of the far end's reflection, (80 - 40 + 80 - 40 - D)/c -
+      0.5 us) within TOLV V0/2 of -V0/2 and its largest deviation within TOLO V0/2; x momentum
+      of glstat constant to 1e-12 relative; |energy ratio - 1| <= TOLE at the end and TOLE1 on
+      every glstat line (the tie's work is booked a cycle late: the first cycles, when the
+      tie takes up the jump in velocity, are off by a cycle's work).
+      CONTACT (the same bar with a surface-to-surface contact instead): the cut opens, the
+      node stays at rest (|v_x| <= 1e-6 V0). UNCUT (the bar in one piece): its arrival and
+      plateau printed beside.
 """
 import math
 import sys
@@ -264,7 +277,58 @@ def fold(argv):
         raise SystemExit('FAIL')
 
 
+def tied_series(out, node, v0):
+    """(time v_x passes -v0/4, the v_x rows) of history node NODE in OUT"""
+    rows = [(t, v[0]) for t, v in nodout_series(out, 'vel')[node]]
+    for (t0, a), (t1, b) in zip(rows, rows[1:]):
+        if a > -0.25*v0 >= b:
+            return t0 + (t1 - t0)*(a + 0.25*v0)/(a - b), rows
+    return None, rows
+
+
+def tiedbar(argv):
+    out, outc, outu = argv[0:3]
+    v0, node, d, tolt, tolv, tolo, tole, tole1 = float(argv[3]), int(argv[4]), \
+        *map(float, argv[5:11])
+    c = math.sqrt(210.0*(1 - 0.3)/((1 + 0.3)*(1 - 0.6))/7.85e-6)
+    ok = True
+    for label, o in (('tied', out), ('uncut', outu)):
+        th, rows = tied_series(o, node, v0)
+        if th is None:
+            print(f'{label}: v_x never passes -V0/4 at node {node}')
+            ok = False
+            continue
+        t_end = (80.0 - d)/c - 5e-4
+        pl = [v for t, v in rows if th + 2e-3 <= t <= t_end]
+        mean = sum(pl)/len(pl)
+        dev = max(abs(v + 0.5*v0) for v in pl)
+        print(f'{label}: arrival {th*1e3:.4f} us (D/c {d/c*1e3:.4f} us, {(th - d/c)*1e3:+.4f}; '
+              f'bound {tolt*1e3:.3f}), plateau mean {mean:.5f} (-V0/2 = {-0.5*v0}; rel '
+              f'{abs(mean + 0.5*v0)/(0.5*v0):.2e}, bound {tolv}), largest deviation '
+              f'{dev/(0.5*v0):.2e} (bound {tolo}) over {len(pl)} lines')
+        if label == 'tied' and (abs(th - d/c) > tolt or abs(mean + 0.5*v0) > tolv*0.5*v0 or
+                                dev > tolo*0.5*v0):
+            ok = False
+    g = read_columns(out + '/glstat')
+    xm = [r['xmom'] for r in g.values()]
+    dm = max(abs(x - xm[0]) for x in xm)/abs(xm[0])
+    de = max(abs(r['energy_ratio'] - 1.0) for r in g.values())
+    de1 = abs(g[max(g)]['energy_ratio'] - 1.0)
+    print(f'tied: x momentum drift {dm:.2e} (bound 1e-12), |energy ratio - 1| at the end '
+          f'{de1:.2e} (bound {tole}), largest {de:.2e} (bound {tole1})')
+    if dm > 1e-12 or de1 > tole or de > tole1:
+        ok = False
+    _, rows = tied_series(outc, node, v0)
+    vc = max(abs(v) for t, v in rows)
+    print(f'contact instead of the tie: largest |v_x| at node {node} {vc:.2e} (the cut opens; '
+          f'bound {1e-6*v0:.1e})')
+    if vc > 1e-6*v0:
+        ok = False
+    if not ok:
+        raise SystemExit('FAIL')
+
+
 if __name__ == '__main__':
     {'reflect': reflect, 'absorbed': absorbed, 'momentum': momentum,
      'tableimpulse': tableimpulse, 'deposit': deposit, 'blocks': blocks_check,
-     'friction': friction, 'fold': fold}[sys.argv[1]](sys.argv[2:])
+     'friction': friction, 'fold': fold, 'tiedbar': tiedbar}[sys.argv[1]](sys.argv[2:])

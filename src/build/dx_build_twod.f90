@@ -18,7 +18,8 @@ module dx_build_twod
    use dx_element_types, only: etype_of_shell_elform, quad2d_area, ETYPE_QUAD2D_PSS, ES_THK
    use dx_build_common, only: at, at_line, maps_t, set_nodes
    use dx_sort, only: sort_index
-   use dx_log, only: log_warn
+   use dx_log, only: log_warn, log_info
+   use dx_contact2d_types, only: c2d_iface_t
    implicit none
    private
    public :: part_dim, check_dimension, twod_element, build_twod_extras
@@ -294,7 +295,12 @@ contains
             ci%label = r%label
             ci%fs = r%fs
             ci%istiff = r%istiff
-            if (r%istiff == 0) call log_warn(at(inp, r%src)//'ISTIFF = 0: dynx scales the '// &
+            ci%tied = r%tied > 0
+            if (r%tied == 2) ci%npass = 1   ! (one way: SIDS's nodes on SIDM's edges)
+            if (r%tied > 0 .and. r%tietyp == 0) call log_warn(at(inp, r%src)//'TIETYP = 0: '// &
+               'LS-DYNA ties by kinematic constraints where it can; dynx ties by a penalty '// &
+               'spring (as TIETYP = 1), stiffness SFACT x K L**2/A of the master edge''s element')
+            if (r%istiff == 0 .and. r%tied == 0) call log_warn(at(inp, r%src)//'ISTIFF = 0: dynx scales the '// &
                'contact stiffness from the segment stiffness and dimensions (ISTIFF = 2); '// &
                'LS-DYNA''s explicit default is ISTIFF = 1 (segment masses and the step)')
             ci%sofscl = 0.1_wp*r%sfact
@@ -342,7 +348,9 @@ contains
                         rm = 1.0_wp
                         if (fam%axisym) rm = 0.5_wp*(model%x0(1, side(1, k)) + &
                                                      model%x0(1, side(2, k)))
-                        ps%k(k) = r%sfact*0.1_wp*m0%bulk*el**2*rm**2/vol
+                        ! (a tie: the element's own stiffness, not a tenth of it)
+                        ps%k(k) = r%sfact*merge(1.0_wp, 0.1_wp, r%tied > 0)*m0%bulk*el**2* &
+                                  rm**2/vol
                      end associate
                   end do
                end associate
@@ -352,9 +360,66 @@ contains
                   ps%node = pack([(j, j = 1, model%nn)], mark)
                end associate
             end do
+            if (ci%tied) call tie_project(ci, model%x0, r%tiedgap, at(inp, r%src))
          end associate
       end do
    end subroutine build_contact2d
+
+   !> A tied 2D interface: each slave node of each pass is tied to the master edge it lies
+   !> on at t = 0 (LS-DYNA's tied contact: the nodes within the search gap TIEDGAP of an
+   !> edge, projected once): the nearest edge whose projection xi is within the gap of
+   !> [0, 1] and whose normal distance is at most the gap (0: 1 % of the edge's length;
+   !> > 0 that length; < 0 |TIEDGAP| % of the edge's length); xi clamped to [0, 1] and the
+   !> node's offset from that point, in the edge's frame, kept (gaps remain: IGAPCL 0).
+   subroutine tie_project(ci, x0, tiedgap, where)
+      type(c2d_iface_t), intent(inout) :: ci
+      real(wp), intent(in) :: x0(:, :), tiedgap
+      character(*), intent(in) :: where
+      integer :: p, k, j, s, a, b, jb, ntied
+      real(wp) :: d(2), t(2), el, gap, xi, g, best, xib, gb, xb
+      ntied = 0
+      do p = 1, ci%npass
+         associate (ps => ci%pass(p))
+            allocate(ps%tie_edge(size(ps%node)), ps%tie_xi(size(ps%node)), &
+                     ps%tie_off(2, size(ps%node)))
+            ps%tie_edge = 0
+            ps%tie_xi = 0.0_wp
+            ps%tie_off = 0.0_wp
+            do k = 1, size(ps%node)
+               s = ps%node(k)
+               jb = 0; best = huge(1.0_wp); xib = 0.0_wp; gb = 0.0_wp; xb = 0.0_wp
+               do j = 1, size(ps%edge, 2)
+                  a = ps%edge(1, j); b = ps%edge(2, j)
+                  if (s == a .or. s == b) cycle
+                  d = x0(1:2, b) - x0(1:2, a)
+                  el = norm2(d)
+                  t = d/el
+                  gap = 0.01_wp*el
+                  if (tiedgap > 0.0_wp) gap = tiedgap
+                  if (tiedgap < 0.0_wp) gap = 0.01_wp*abs(tiedgap)*el
+                  xi = dot_product(x0(1:2, s) - x0(1:2, a), t)/el
+                  if (xi < -gap/el .or. xi > 1.0_wp + gap/el) cycle
+                  g = dot_product(x0(1:2, s) - x0(1:2, a), [t(2), -t(1)])
+                  if (abs(g) > gap .or. abs(g) >= best) cycle
+                  best = abs(g); jb = j; xb = xi; gb = g
+                  xib = min(max(xi, 0.0_wp), 1.0_wp)
+               end do
+               if (jb == 0) cycle
+               a = ps%edge(1, jb); b = ps%edge(2, jb)
+               ps%tie_edge(k) = jb
+               ps%tie_xi(k) = xib
+               ps%tie_off(:, k) = [(xb - xib)*norm2(x0(1:2, b) - x0(1:2, a)), gb]
+               ntied = ntied + 1
+            end do
+         end associate
+      end do
+      if (ntied == 0) then
+         call log_warn(where//'no node of the tied interface lies within TIEDGAP of an '// &
+                       'edge of the other side at t = 0: nothing is tied')
+      else
+         call log_info('dynx: '//where//str(ntied)//' nodes tied')
+      end if
+   end subroutine tie_project
 
    !> *DYNX_PRESSURE_TABLE, *DYNX_PRESSURE_PULSE -> model%edge_pressures: per free edge of
    !> the set its radius (table) or cos**2 theta (pulse) and per node its share of the

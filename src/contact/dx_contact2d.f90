@@ -23,15 +23,23 @@
 !> the force that stops the slave's sliding in one step when both passes hold the pair
 !> (sticking). Positions x(n), velocities v(n-1/2). The critical step takes each contact
 !> pair's spring bound 2/omega (as the 3D penalty contact, dx_contact). Every slave node
-!> against every master edge of its pass (no bucket sort: interfaces of a few thousand
-!> edges). Serial runs only (dx_par_engine_setup refuses a deck with it under MPI).
+!> against the master edges of its cell of a grid rebuilt each cycle (dx_contact2d_bins:
+!> the same edges in the same order as the all-pairs search, so the same results). MPI
+!> runs: dx_par_contact2d runs this pass on a replicated table of the contact nodes (compact
+!> numbering in the serial order), so the results are the serial ones.
 !> Single surface (*CONTACT_2D_AUTOMATIC_SINGLE_SURFACE): one pass, every node of the free
 !> edges of the part set against every one of those edges but its own two; the facing test
 !> and the gap window (-L/2, 0) keep a node off its neighbouring edges round a convex
 !> corner (the nodes there lie behind the edge's line, or face along it).
+!> Tied (*CONTACT_2D_AUTOMATIC_TIED, _TIED_ONE_WAY; LS-DYNA Theory Manual, "Tied interfaces",
+!> in its penalty form, TIETYP = 1): the slave nodes within TIEDGAP of a master edge at t = 0
+!> are projected once (dx_build_twod tie_project) and held to that point of the edge and
+!> their offset by a spring SFACT x K L**2/A (ten times the contact's), in tension and
+!> compression and along the edge; both sides' nodes (TIED) or SIDS's (ONE_WAY).
 module dx_contact2d
    use dx_kinds, only: wp
-   use dx_contact2d_types, only: contact2d_t
+   use dx_contact2d_types, only: contact2d_t, c2d_pass_t
+   use dx_contact2d_bins, only: c2d_bins_t, bins_build, bins_range
    implicit none
    private
    public :: contact2d_forces
@@ -53,11 +61,14 @@ contains
       type(contact2d_t), intent(inout) :: c
       real(wp), intent(in) :: x(:, :), v(:, :), mass(:), dt_old, tssfac
       real(wp), intent(inout) :: f(:, :), dtcrit
-      integer :: i, p, k, j, s, a, b, jbest, n
+      integer :: i, p, k, j, s, a, b, jbest, n, j1, j2, jj
+      logical :: single
+      type(c2d_bins_t) :: bn
       real(wp) :: d(2), t(2), nv(2), el, xi, g, gbest, xib, fn(2), vt, ft, vrel(2), w2, kk, &
-                  dts, me
+                  dts, me, dte
       real(wp), allocatable :: ns(:, :)
       n = size(x, 2)
+      dte = dtcrit                    ! (the elements' step, for the ties' bound)
       ! the step of the soft-constraint stiffness (cycle 0: the coming one) follows the
       ! step when it has moved by more than DTHYS: a k following each cycle's small changes
       ! is not conservative (the step dips while the faces are pressed: 3e-3 of the energy
@@ -81,6 +92,10 @@ contains
       allocate(ns(2, n))
       do i = 1, size(c%iface)
          do p = 1, c%iface(i)%npass
+            if (c%iface(i)%tied) then       ! (no search: the ties of t = 0)
+               call tie_pass(c, c%iface(i)%pass(p), c%iface(i)%npass, x, mass, dte, dtcrit)
+               cycle
+            end if
             ! the slave side's nodal normals: its edges are the other pass's master edges
             ns = 0.0_wp
             associate (os => c%iface(i)%pass(3 - p))
@@ -92,15 +107,19 @@ contains
                end do
             end associate
             associate (ps => c%iface(i)%pass(p), fs => c%iface(i)%fs)
+               call bins_build(bn, ps%edge, x)  ! (each node: the edges of its cell)
+               single = allocated(ps%own)
                do k = 1, size(ps%node)
                   s = ps%node(k)
                   jbest = 0; gbest = -huge(1.0_wp); xib = 0.0_wp
-                  do j = 1, size(ps%edge, 2)
+                  call bins_range(bn, x(1:2, s), j1, j2)
+                  do jj = j1, j2
+                     j = bn%list(jj)
                      a = ps%edge(1, j); b = ps%edge(2, j)
                      if (s == a .or. s == b) cycle
                      ! single surface: not the far face of the node's own element (a part
                      ! thinner than half an edge would be pushed through itself)
-                     if (allocated(ps%own)) then
+                     if (single) then
                         if (any(ps%own(:, j) == s)) cycle
                      end if
                      d = x(1:2, b) - x(1:2, a)
@@ -161,4 +180,41 @@ contains
       c%vold = v(1:2, :)
       c%dtold = dt_old
    end subroutine contact2d_forces
+
+   !> One pass of a tied interface: each tied slave node s is held by a spring k (the master
+   !> edge's penalty) to its point xi of edge a -> b plus its t = 0 offset in the edge's
+   !> turning frame; f = -k d on s, (1 - xi) k d and xi k d on a, b (momentum exact; the
+   !> offset turns with the edge, so a rigid rotation leaves d = 0). The step: a tie is as
+   !> stiff as the elements, so its node's frequency is the elements' and the tie's together:
+   !> 1/dt**2 = 1/dte**2 + omega**2/4 (dte the elements' step, no larger than the tied
+   !> nodes' own; omega**2 = npass k (1/m_s + (1 - xi)**2/m_a + xi**2/m_b): two-way ties
+   !> hold a pair of coincident nodes twice). Alone, the bound 2/omega lets the bar of tiedbar (two-way ties on
+   !> coincident nodes) blow up at cycle 28: the pair's mode is 2 k_e/m + 8 k/m.
+   subroutine tie_pass(c, ps, npass, x, mass, dte, dtcrit)
+      type(contact2d_t), intent(inout) :: c
+      type(c2d_pass_t), intent(in) :: ps
+      integer, intent(in) :: npass
+      real(wp), intent(in) :: x(:, :), mass(:), dte
+      real(wp), intent(inout) :: dtcrit
+      integer :: k, j, s, a, b
+      real(wp) :: t(2), nv(2), xi, dd(2), fn(2), w2
+      do k = 1, size(ps%node)
+         j = ps%tie_edge(k)
+         if (j == 0) cycle
+         s = ps%node(k); a = ps%edge(1, j); b = ps%edge(2, j)
+         xi = ps%tie_xi(k)
+         t = x(1:2, b) - x(1:2, a)
+         t = t/norm2(t)
+         nv = [t(2), -t(1)]
+         dd = x(1:2, s) - ((1.0_wp - xi)*x(1:2, a) + xi*x(1:2, b)) - ps%tie_off(1, k)*t - &
+              ps%tie_off(2, k)*nv
+         fn = -ps%k(j)*dd
+         w2 = real(npass, wp)*ps%k(j)*(1.0_wp/mass(s) + (1.0_wp - xi)**2/mass(a) + xi**2/mass(b))
+         dtcrit = min(dtcrit, 1.0_wp/sqrt(1.0_wp/dte**2 + 0.25_wp*w2))
+         c%ncontact = c%ncontact + 1
+         c%fc(:, s) = c%fc(:, s) + fn
+         c%fc(:, a) = c%fc(:, a) - (1.0_wp - xi)*fn
+         c%fc(:, b) = c%fc(:, b) - xi*fn
+      end do
+   end subroutine tie_pass
 end module dx_contact2d

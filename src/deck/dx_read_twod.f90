@@ -52,6 +52,9 @@ contains
                    id=.true.)
       call reg%add('CONTACT_2D_AUTOMATIC_SINGLE_SURFACE', read_contact_2d, title=.true., &
                    id=.true.)
+      call reg%add('CONTACT_2D_AUTOMATIC_TIED', read_contact_2d, title=.true., id=.true.)
+      call reg%add('CONTACT_2D_AUTOMATIC_TIED_ONE_WAY', read_contact_2d, title=.true., &
+                   id=.true.)
    end subroutine register_twod
 
    !> *BOUNDARY_NON_REFLECTING_2D: one card NSID AD AS per boundary
@@ -293,6 +296,8 @@ contains
       call c%max_cards(ic + 2)
       call c%seek(ic)
       b%single = blk%base == 'CONTACT_2D_AUTOMATIC_SINGLE_SURFACE'
+      if (blk%base == 'CONTACT_2D_AUTOMATIC_TIED') b%tied = 1
+      if (blk%base == 'CONTACT_2D_AUTOMATIC_TIED_ONE_WAY') b%tied = 2
       call c%id('SIDS', b%sids)
       if (b%single) then                               ! (one surface: SIDS)
          call c%zero_int('SIDM', 'a single-surface contact has one part set, SIDS')
@@ -302,7 +307,11 @@ contains
       call c%real('SFACT', 1.0_wp, b%sfact, min=0.0_wp)
       if (b%sfact == 0.0_wp) b%sfact = 1.0_wp
       call c%skip(1)                                   ! FREQ: dynx searches every cycle
-      call c%real('FS', 0.0_wp, b%fs, min=0.0_wp)
+      if (b%tied > 0) then                             ! (a tie does not slide)
+         call c%zero_real('FS', 'friction on a tied interface')
+      else
+         call c%real('FS', 0.0_wp, b%fs, min=0.0_wp)
+      end if
       call c%real('FD', 0.0_wp, r, min=0.0_wp)
       if (c%ok() .and. r /= 0.0_wp .and. r /= b%fs) call c%fail('FD', 'a dynamic '// &
          'coefficient other than FS is not implemented (one Coulomb coefficient FS)')
@@ -326,9 +335,22 @@ contains
          if (c%ok() .and. b%istiff == 1 .and. b%sfact > 10.0_wp) call c%fail('SFACT', &
             'with ISTIFF = 1 the contact spring 0.05 SFACT m/dt**2 is stable at the step '// &
             'only up to SFACT = 10 (both passes may hold a pair), got '//rstr(b%sfact))
-         do k = 5, 7
-            call c%zero_real(trim(c3(k)), 'this option of the 2D contact')
-         end do
+         if (c%ok() .and. b%istiff == 1 .and. b%tied > 0) call c%fail('ISTIFF', 'a tied '// &
+            'interface takes its penalty from the segment stiffness and dimensions (ISTIFF '// &
+            '0 or 2); ISTIFF = 1 is not implemented for ties')
+         if (b%tied > 0) then                          ! TIEDGAP IGAPCL TIETYP
+            call c%real('TIEDGAP', 0.0_wp, b%tiedgap)
+            call c%zero_int('IGAPCL', 'IGAPCL = 1 (moving the SURFA nodes onto the SURFB '// &
+                            'segments to close the gaps)')
+            call c%int('TIETYP', 0, b%tietyp)
+            if (c%ok() .and. all(b%tietyp /= [0, 1])) call c%fail('TIETYP', 'TIETYP is 0 '// &
+               '(LS-DYNA: kinematic constraints where possible) or 1 (penalty), got '// &
+               str(b%tietyp))
+         else
+            do k = 5, 7
+               call c%zero_real(trim(c3(k)), 'this option of the 2D contact')
+            end do
+         end if
       end if
       if (.not. c%halt()) then
          b%src = origin(blk%ifile, c%card_line(), blk%name)

@@ -36,6 +36,8 @@ module dx_domain_mpi
    use dx_par_rigid, only: par_rigid_t, par_rigid_step, par_rigid_writes
    use dx_par_contact, only: par_contact_t, par_contact_forces, par_contact_add, &
                              par_contact_work
+   use dx_par_contact2d, only: par_contact2d_t, par_contact2d_setup, par_contact2d_forces, &
+                               par_contact2d_add, par_contact2d_from_global
    use dx_par_plot, only: par_plot_t, par_plot_nstates
    use dx_par_restart, only: par_restart_parts_t, par_restart_write, par_restart_read
    implicit none
@@ -49,6 +51,7 @@ module dx_domain_mpi
       type(par_rigid_t) :: rigid        !< rigid bodies spanning ranks
       type(par_plot_t) :: plot          !< this rank's plot part file
       type(par_contact_t) :: contact    !< contact nodes' plans and halo
+      type(par_contact2d_t) :: c2d      !< the 2D contact, replicated (dx_par_contact2d)
       type(par_engine_t) :: eng         !< global model, plan and maps, kept work, failures
       type(par_restart_parts_t) :: parts  !< the dump parts this rank wrote or read
    contains
@@ -102,6 +105,8 @@ contains
       call par_engine_setup(md%eng, model, deck, outdir, partdir, md%loads, md%rigid, md%plot, &
                             md%contact, md%emc, error)
       if (par_engine_on(md%eng)) then
+         if (.not. allocated(error) .and. allocated(model%contact2d)) &
+            call par_contact2d_setup(md%c2d, model, md%eng%pm%node_global, md%eng%owned)
          call move_alloc(md, dom)
       else
          allocate(serial_domain_t :: dom)
@@ -202,7 +207,9 @@ contains
       type(model_t), intent(inout), target :: model
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: dtcrit
-      call par_contact_forces(d%contact, model, par_engine_global(d%eng), dt_old, dtcrit)
+      if (allocated(model%contact)) &
+         call par_contact_forces(d%contact, model, par_engine_global(d%eng), dt_old, dtcrit)
+      if (d%c2d%on) call par_contact2d_forces(d%c2d, model, dt_old, dtcrit)
    end subroutine m_contact_forces
 
    subroutine m_loads_shared(d, model, t, fext)
@@ -220,6 +227,7 @@ contains
       call par_engine_exchange(d%eng, model%f)
       if (allocated(model%mom)) call par_engine_exchange(d%eng, model%mom)   ! shells' moments
       if (allocated(model%contact)) call par_contact_add(d%contact, model, par_engine_global(d%eng))
+      if (d%c2d%on) call par_contact2d_add(d%c2d, model)
    end subroutine m_exchange
 
    subroutine m_rigid_step(d, model, t, dt, dtavg, vold)
@@ -359,6 +367,8 @@ contains
       character(*), intent(in) :: path
       type(error_t), allocatable, intent(out) :: error
       call par_restart_read(d%eng, d%plot, d%parts, model, path, error)
+      if (.not. allocated(error)) &     ! (a serial dump: read into the global model)
+         call par_contact2d_from_global(d%c2d, model, par_engine_global(d%eng))
    end subroutine m_read_restart
 
    !> End of the run: communication times (largest over the ranks), contact statistics.

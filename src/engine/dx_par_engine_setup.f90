@@ -373,8 +373,6 @@ contains
       if (model%erodes .and. allocated(model%contact)) what = '*CONTACT_ with element '// &
          'erosion (*MAT_ADD_EROSION or *CONTROL_TIMESTEP ERODE = 1: the contact surfaces '// &
          'after erosion are formed on the serial model only)'
-      if (allocated(model%contact2d)) what = '*CONTACT_2D_AUTOMATIC_SURFACE_TO_SURFACE (the 2D '// &
-         'contact, dx_contact2d, is serial)'
       if (len(what) > 0) call set_error(error, model%deck_file//': '//what// &
          ' is not supported in an MPI run yet; run this deck serially (without mpirun)', &
          EXIT_INPUT)

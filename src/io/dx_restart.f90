@@ -132,8 +132,8 @@ contains
             call rs%put('contact2d_vold', model%contact2d%vold)
             call rs%put('contact2d_dtold', model%contact2d%dtold)
             call rs%put('contact2d_work', model%contact2d%work)
-            ! the soft constraint's step (only with ISTIFF = 2: other dumps unchanged)
-            if (any(model%contact2d%iface(:)%istiff == 2)) &
+            ! the soft constraint's step (only with ISTIFF = 1: other dumps unchanged)
+            if (any(model%contact2d%iface(:)%istiff == 1)) &
                call rs%put('contact2d_dtsoft', model%contact2d%dtsoft)
          end if
       end if

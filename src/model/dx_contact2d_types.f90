@@ -15,6 +15,10 @@ module dx_contact2d_types
       real(wp), allocatable :: k(:)            !< (nm) penalty stiffness of each master edge
       !> (4, nm) single surface only: the nodes of the element each master edge bounds
       integer, allocatable :: own(:, :)
+      !> tied interfaces: each slave node's master edge (0: not tied), its place xi on it
+      !> and its offset from that point at t = 0 in the edge's frame (the gap the tie keeps)
+      integer, allocatable :: tie_edge(:)
+      real(wp), allocatable :: tie_xi(:), tie_off(:, :)   !< tie_off(2, ns): (along t, along n)
    end type c2d_pass_t
 
    type :: c2d_iface_t
@@ -26,6 +30,7 @@ module dx_contact2d_types
       !> passes run: 2 (surface to surface), 1 (single surface: pass 1 is every node of the
       !> side against every edge of it; pass 2 holds the same edges for the nodal normals)
       integer :: npass = 2
+      logical :: tied = .false.                !< *CONTACT_2D_AUTOMATIC_TIED(_ONE_WAY)
       real(wp) :: sofscl = 0.1_wp              !< 0.1 SFACT (ISTIFF = 1)
       type(c2d_pass_t) :: pass(2)
    end type c2d_iface_t

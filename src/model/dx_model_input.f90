@@ -151,6 +151,10 @@ module dx_model_input
    type :: c2d_in_t
       integer :: sids = 0, sidm = 0, label = 0, istiff = 0
       logical :: single = .false.              !< *CONTACT_2D_AUTOMATIC_SINGLE_SURFACE
+      !> *CONTACT_2D_AUTOMATIC_TIED: 1 (both sides' nodes tied), _TIED_ONE_WAY: 2 (SIDS's);
+      !> TIEDGAP (card 3: 0 1 % of the edge, > 0 a length, < 0 |TIEDGAP| % of the edge), TIETYP
+      integer :: tied = 0, tietyp = 0
+      real(wp) :: tiedgap = 0.0_wp
       real(wp) :: sfact = 1.0_wp, fs = 0.0_wp
       type(origin_t) :: src
    end type c2d_in_t

@@ -230,7 +230,7 @@ contains
          if (allocated(error)) return
          ! ---- contact forces (only when the deck has *CONTACT)
          if (allocated(model%contact) .or. allocated(model%contact2d)) &
-            call dom%contact_forces(model, dt_old, dtcrit)   ! (2D: dx_contact2d, serial)
+            call dom%contact_forces(model, dt_old, dtcrit)   ! (2D: dx_contact2d; MPI dx_par_contact2d)
          ! ---- external forces
          if (loads) then
             fext = 0.0_wp
