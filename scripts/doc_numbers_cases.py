@@ -132,7 +132,9 @@ def page_rows(path, prefix):
     out = []
     for line in open(os.path.join(ROOT, path)):
         if line.startswith('| ' + prefix):
-            out.append([c.strip() for c in line.strip().strip('|').split('|')])
+            cells = [c.strip() for c in line.strip().strip('|').split('|')]
+            if ',' not in cells[0]:          # not a Richardson row (three levels)
+                out.append(cells)
     return out
 
 
@@ -188,3 +190,91 @@ def block_brittle_impact_2d(work):
 
 BLOCKS['brittle_impact_2d'] = ('decks/brittle_impact_2d/README.md', True,
                                block_brittle_impact_2d)
+
+
+HG_ROWS = [  # (deck, generator arguments, test)
+    ('cube, IHQ 1, QH 0.1, TSSFAC 0.9', ['gen_hourglass_decks.py', '--qh', '0.1'],
+     '`hourglass_cube_qh010`'),
+    ('cube, IHQ 3, QH 0.1', ['gen_hourglass_decks.py', '--ihq', '3'], '`hourglass_cube_ihq3`'),
+    ('cube, IHQ 1, QH 0.15', ['gen_hourglass_decks.py', '--qh', '0.15'],
+     '`hourglass_cube_qh015`'),
+    ('square 4x4, ELFORM 13, QH 0.1', ['gen_hourglass_decks.py', '--twod', '--qh', '0.1'],
+     '(sweep)'),
+    ('square 4x4, ELFORM 13, QH 0.2', ['gen_hourglass_decks.py', '--twod', '--qh', '0.2'],
+     '`hourglass_quad2d_qh020`'),
+    ('BT plate 4x4, 10 x 10 x 1 mm, centre node kicked, 10 ms',
+     ['gen_hourglass_decks.py', '--plate', '--node', 'centre', '--side', '10', '--thk', '1'],
+     '`hourglass_bt_plate`'),
+    ('BT plate 4x4, 100 x 100 x 1 mm, corner node kicked', ['gen_hourglass_decks.py', '--plate'],
+     '(sweep)'),
+    ('BT plate 4x4, 40 x 40 x 1 mm, centre node',
+     ['gen_hourglass_decks.py', '--plate', '--node', 'centre', '--side', '40'], '(sweep)'),
+    ('thin plate 1:1 of section 5', ['thin_sweep.py', '--write-deck', '1'],
+     '`thin_plate_aspect32` (1:32)'),
+    ('thin plate 1:8', ['thin_sweep.py', '--write-deck', '8'], ''),
+    ('needle 1:32', ['thin_sweep.py', '--shape', 'needle', '--write-deck', '32'],
+     '`thin_needle_aspect64` (1:64)'),
+]
+
+
+def block_hourglass(work):
+    """docs/extreme-cases.md section 8: the viscous-hourglass decks now (each well under a
+    CPU second): largest |energy ratio - 1| over glstat and the first step."""
+    out = ['| deck | max abs(energy ratio - 1) | exit | first step [ms] | test |',
+           '|---|---|---|---|---|']
+    for k, (label, gen, test) in enumerate(HG_ROWS):
+        deck = os.path.join(work, 'hg%d.k' % k)
+        cmd = [PY, os.path.join('scripts', gen[0])] + gen[1:]
+        cmd = cmd + [deck] if gen[0] == 'gen_hourglass_decks.py' else cmd[:-1] + [gen[-1], deck]
+        rc, log = sh(cmd)
+        if rc != 0 or not os.path.exists(deck):
+            raise SystemExit('doc_numbers_cases: %s failed\n%s' % (' '.join(cmd), log[-800:]))
+        rc, log = sh([DYNX, '-i', deck, '-o', deck[:-2]])
+        g = glstat(deck[:-2])
+        out.append('| %s | %.1e | %d | %.5g | %s |'
+                   % (label, max(abs(r - 1.0) for r in g['energy_ratio'][1:]), rc, g['dt'][0],
+                      test))
+    return '\n'.join(out)
+
+
+BLOCKS['hourglass_after'] = ('docs/extreme-cases.md', True, block_hourglass)
+
+
+def block_cmc_mesh(work):
+    """decks/cmc_implant/README.md: the key-pinch mesh convergence, from the rows of
+    docs/studies/more_scene_orders.md (no rerun; --check compares the README with the page)."""
+    rows = [r for r in page_rows('docs/studies/more_scene_orders.md', 'n = ') if '(h 1/' in r[0]]
+    if not rows:
+        raise SystemExit('doc_numbers_cases: more_scene_orders.md has no cmc_implant rows')
+    out = ['| n | peak pressure MPa | max von Mises MPa | max plastic strain | reaction N | '
+           'iterations | CPU s |', '|---|---|---|---|---|---|---|']
+    for r in rows:
+        out.append('| %s | %s | %s | %s | %s | %s | %s |'
+                   % (r[0].split()[2], r[1], r[3], r[4], r[5], r[6], r[8]))
+    return '\n'.join(out)
+
+
+def block_knee_mesh(work):
+    """decks/knee_insert/README.md: the elastic Hertz series (thick insert, 0 deg), from the
+    knee_insert rows of docs/studies/more_scene_orders.md against Hertz F 486.0 N, p0 29.01
+    MPa (the README's formulas; no rerun)."""
+    import knee_insert
+    _, _, fh, p0 = knee_insert.hertz(0, 0.1)
+    sec = open(os.path.join(ROOT, 'docs/studies/more_scene_orders.md')).read()
+    sec = sec[sec.index('## Knee insert'):]
+    rows = [[c.strip() for c in l.strip().strip('|').split('|')] for l in sec.split('\n')
+            if l.startswith('| n = ') and ',' not in l.split('|')[1]]
+    out = ['| n | F N | F vs Hertz | peak -sigma_zz (top layer) MPa | vs p0 | iterations | '
+           'CPU s |', '|---|---|---|---|---|---|---|']
+    for r in rows:
+        if len(r) < 7:
+            continue
+        f, p = float(r[1]), float(r[3])
+        out.append('| %s | %.1f | %+.1f %% | %.2f | %+.1f %% | %s | %s |'
+                   % (r[0].split()[2], f, 100 * (f / fh - 1), p, 100 * (p / p0 - 1), r[4],
+                      r[6]))
+    return '\n'.join(out)
+
+
+BLOCKS['cmc_mesh'] = ('decks/cmc_implant/README.md', True, block_cmc_mesh)
+BLOCKS['knee_mesh'] = ('decks/knee_insert/README.md', True, block_knee_mesh)
