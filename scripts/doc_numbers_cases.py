@@ -278,3 +278,77 @@ def block_knee_mesh(work):
 
 BLOCKS['cmc_mesh'] = ('decks/cmc_implant/README.md', True, block_cmc_mesh)
 BLOCKS['knee_mesh'] = ('decks/knee_insert/README.md', True, block_knee_mesh)
+
+
+def block_single_cubes(work):
+    """docs/extreme-cases.md, Observations 1 and 2 now: the single undistorted unit cube of
+    case 3a's loading, ELFORM 1 and ELFORM 2 (gen_extreme_decks.py distorted --only N --shape
+    cube), each about 420 cycles."""
+    out = []
+    for only, name in (('1', 'ELFORM 1 (IHQ 1)'), ('2', 'ELFORM 2')):
+        deck = os.path.join(work, 'cube%s.k' % only)
+        rc, log = sh([PY, 'scripts/gen_extreme_decks.py', 'distorted', '--only', only,
+                      '--shape', 'cube', '--tend', '0.05', deck])
+        rc, log = sh([DYNX, '-i', deck, '-o', deck[:-2]])
+        m = re.search(r'normal termination at cycle (\d+)', log)
+        g = glstat(deck[:-2])
+        r = g['energy_ratio'][1:]
+        out.append('%s: exit %d%s, energy ratio %.4f - %.4f (t > 0), %.4f at the end'
+                   % (name, rc, ', %s cycles' % m.group(1) if m else '', min(r), max(r), r[-1]))
+    return ('Now (`scripts/doc_numbers.py`, checked by `make test`; 0.05 ms): ' + '; '.join(out)
+            + '.')
+
+
+BLOCKS['single_cubes'] = ('docs/extreme-cases.md', True, block_single_cubes)
+
+
+EMC_ROWS = [  # (case, emc_check arguments, label)
+    ('emc_ball_box', ['--etol', '2e-13', '--ptol', '2e-13', '--ltol', '2e-13', '--min-contact',
+                      '500', '--lx-exchange', '100'], '1. ball in a box'),
+    ('emc_ball_shell_friction', ['--dissipative', '0.2', '--plateau', '1e-5', '--ptol', '1e-12',
+                                 '--ltol', '1e-12', '--min-contact', '500'],
+     '2. ball in a shell, friction FS = 0.3'),
+    ('emc_extreme_corner', ['--etol', '1e-12', '--ptol', '1e-12', '--ltol', '1e-12', '--lfloor',
+                            '600', '--min-contact', '100'], 'multi-point: box corner'),
+    ('emc_extreme_grazing', ['--etol', '1e-12', '--ptol', '1e-12', '--ltol', '1e-12',
+                             '--lfloor', '300', '--min-contact', '100'], 'grazing'),
+    ('emc_extreme_stiff_cut', ['--etol', '1e-10', '--ptol', '1e-12', '--ltol', '1e-12',
+                               '--min-contact', '0', '--lx-exchange', '10'],
+     'stiff: EPS 1e12, dt = 1e4 x contact time'),
+]
+
+
+def block_emc_measured(work):
+    """docs/conserving-contact.md: the measured column of the cheap conserving-contact cases
+    (each run under 2 s; emc_check.py as the cases' checks run it)."""
+    out = ['| case | output lines with contact | largest relative drift: energy (friction: its '
+           'loss), linear momentum, angular momentum | more |', '|---|---|---|---|']
+    for case, args, label in EMC_ROWS:
+        rc, log, od = run_case(case, work, expect_rc=0)
+        _, chk = sh([PY, 'scripts/emc_check.py', od] + args)
+        m = re.search(r'(\d+) with contact; max rel. drift: energy (\S+), linear momentum '
+                      r'(\S+), angular momentum (\S+);', chk)
+        if not m:
+            raise SystemExit('doc_numbers_cases: %s: emc_check output\n%s' % (case, chk))
+        more = []
+        d = re.search(r'largest energy rise per line (\S+), loss (\S+)', chk)
+        if d:
+            more.append('largest energy rise per line %.1e, loss %.1f %%'
+                        % (float(d.group(1)), 100 * float(d.group(2))))
+        d = re.search(r'energy change over the second half (\S+)', chk)
+        if d:
+            more.append('change over the second half %.1e' % float(d.group(1)))
+        if case == 'emc_extreme_corner':
+            n = max(int(float(l.split()[13])) for l in open(os.path.join(od, 'emcstat'))
+                    if re.match(r'\s*[-+.0-9]', l))
+            more.append('at most %d pairs in one step' % n)
+        d = re.search(r'step cuts (\d+)', log)
+        if d and case == 'emc_extreme_stiff_cut':
+            more.append('%s step cuts' % d.group(1))
+        e, p, a = (float(m.group(k)) for k in (2, 3, 4))
+        out.append('| `%s` (%s) | %s | %.1e, %.1e, %.1e | %s |'
+                   % (case, label, m.group(1), e, p, a, '; '.join(more)))
+    return '\n'.join(out)
+
+
+BLOCKS['emc_measured'] = ('docs/conserving-contact.md', True, block_emc_measured)
