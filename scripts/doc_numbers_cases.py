@@ -352,3 +352,67 @@ def block_emc_measured(work):
 
 
 BLOCKS['emc_measured'] = ('docs/conserving-contact.md', True, block_emc_measured)
+
+
+def block_thin_now(work):
+    """docs/extreme-cases.md section 5: the thin-plate and needle sweeps with today's dynx
+    (scripts/thin_sweep.py, 16 runs of about 94 cycles on 64 hexes)."""
+    out = []
+    for shape, title in (('plate', 'Plate elements 1 x 1 x 1/A, now:'),
+                         ('needle', 'Needle elements 1 x 1/A x 1/A, now:')):
+        rc, tab = sh([PY, 'scripts/thin_sweep.py', '--shape', shape, '--out',
+                      os.path.join(work, 'thin_' + shape)])
+        if rc != 0:
+            raise SystemExit('doc_numbers_cases: thin_sweep.py --shape %s: exit %d\n%s'
+                             % (shape, rc, tab[-1500:]))
+        out += [title, ''] + [l for l in tab.split('\n') if l.startswith('|')] + ['']
+    return '\n'.join(out).rstrip()
+
+
+BLOCKS['thin_now'] = ('docs/extreme-cases.md', True, block_thin_now)
+
+
+def taylor_axisym_rows(work, meshes, with_cpu):
+    """Rows of decks/taylor_bar_axisym/README.md's table: gen_quad2d_decks.py taylor DIR
+    ELFORM NR NZ, run, final length and footprint (quad2d_check.py taylor), energy ratio at the
+    end, cycles, CPU seconds (user + system) of the run."""
+    import resource
+    rows = []
+    for ef, nr, nz in meshes:
+        d = os.path.join(work, 'tax_%d_%d' % (ef, nr))
+        os.makedirs(d, exist_ok=True)
+        rc, out = sh([PY, 'scripts/gen_quad2d_decks.py', 'taylor', d, str(ef), str(nr), str(nz)])
+        t0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+        rc, log = sh([DYNX, '-i', os.path.join(d, 'deck.k'), '-o', os.path.join(d, 'out')])
+        t1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+        if rc != 0:
+            raise SystemExit('doc_numbers_cases: taylor axisym %d %d: exit %d' % (ef, nr, rc))
+        cpu = t1.ru_utime - t0.ru_utime + t1.ru_stime - t0.ru_stime
+        _, chk = sh([PY, 'scripts/quad2d_check.py', 'taylor', os.path.join(d, 'out'), '21.45',
+                     '1', '7.225', '1'])
+        m = re.search(r'Lf = (\S+) mm .*Rf = (\S+) mm', chk)
+        c = re.search(r'normal termination at cycle (\d+), time \S+, energy ratio (\S+)', log)
+        rows.append('| %d x %d | %d | %.3f mm | %.3f mm | %.5f | %s |'
+                    % (nr, nz, ef, float(m.group(1)), float(m.group(2)), float(c.group(2)),
+                       c.group(1)) + (' %.2g s |' % cpu if with_cpu else ''))
+    return rows
+
+
+def block_taylor_axisym(work):
+    """The 8 x 80 rows (ELFORM 15 and 14; about 2 CPU s each): rerun by --check (no CPU
+    column: --check compares every number)."""
+    return '\n'.join(['| mesh (nr x nz) | ELFORM | final length | footprint radius | energy '
+                      'ratio | cycles |', '|---|---|---|---|---|---|']
+                     + taylor_axisym_rows(work, [(15, 8, 80), (14, 8, 80)], False))
+
+
+def block_taylor_axisym_fine(work):
+    """The 16 x 160 rows (20-40 CPU s each): --update only (make studies)."""
+    return '\n'.join(['| mesh (nr x nz) | ELFORM | final length | footprint radius | energy '
+                      'ratio | cycles | CPU (user + system) |', '|---|---|---|---|---|---|---|']
+                     + taylor_axisym_rows(work, [(15, 16, 160), (14, 16, 160)], True))
+
+
+BLOCKS['taylor_axisym'] = ('decks/taylor_bar_axisym/README.md', True, block_taylor_axisym)
+BLOCKS['taylor_axisym_fine'] = ('decks/taylor_bar_axisym/README.md', False,
+                                block_taylor_axisym_fine)
