@@ -196,6 +196,7 @@ studies: deps
 	@sh scripts/studies_hirate.sh
 	@/usr/bin/python3 scripts/studies_order.py
 	@/usr/bin/python3 scripts/studies_order_seed.py
+	@/usr/bin/python3 scripts/studies_order_more.py
 	@/usr/bin/python3 scripts/doc_numbers.py --update
 
 # each deck of tests/public/index.tsv: --check, a --walltime-capped run, a physics check

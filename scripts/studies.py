@@ -31,6 +31,37 @@ M = E * (1 - NU) / ((1 + NU) * (1 - 2 * NU))
 CL = math.sqrt(M / RHO)
 
 
+
+# every scene under decks/ and its page (docs/studies/README.md; doc_numbers.py --check
+# tests that the list names every deck directory)
+SCENE_PAGES = ['Every scene under `decks/` and the page with its error against run time and observed order:',
+               '',
+               '| scene | page |',
+               '|---|---|',
+               '| ball_in_box | [ball_in_box.md](ball_in_box.md) (TSSFAC and SFS sweeps) |',
+               '| brittle_impact | [seed_scene_orders.md](seed_scene_orders.md) |',
+               '| brittle_impact_2d | [more_scene_orders.md](more_scene_orders.md) |',
+               '| cmc_implant | [more_scene_orders.md](more_scene_orders.md) |',
+               '| elastic_wave | section 1 below, [elastic_wave.md](elastic_wave.md) |',
+               '| emc_ball_box | [emc.md](emc.md) (step sweep) |',
+               '| emc_ball_shell | [emc.md](emc.md) (step sweep) |',
+               '| emc_bars | [scene_orders.md](scene_orders.md), [emc.md](emc.md) |',
+               '| hertz | [hertz.md](hertz.md) |',
+               '| incline_friction | [scene_orders.md](scene_orders.md) |',
+               '| knee_insert | [more_scene_orders.md](more_scene_orders.md) |',
+               "| patch_test | none: constant strain is reproduced to round-off (no discretisation error to refine); the rigid rotation's residual is the prescribed curves' chords, about 1/N^2 in the curve points (decks/patch_test/README.md) |",
+               '| pressure_table | [seed_scene_orders.md](seed_scene_orders.md) |',
+               '| rod_impact | [scene_orders.md](scene_orders.md) |',
+               '| shell_box_post | [seed_scene_orders.md](seed_scene_orders.md) |',
+               '| shell_projectile_plate | [seed_scene_orders.md](seed_scene_orders.md) |',
+               '| sliding_block | [scene_orders.md](scene_orders.md) |',
+               '| spall_plate_impact | [spall.md](spall.md) |',
+               '| ssnv104 | [more_scene_orders.md](more_scene_orders.md) |',
+               "| taylor_bar | section 2 below, [taylor_simo.md](taylor_simo.md) (Richardson); Wilkins-Guinan: section 3 (no order: the material model's error) |",
+               '| taylor_bar_axisym | [scene_orders.md](scene_orders.md) |',
+               '| taylor_steinberg | [scene_orders.md](scene_orders.md) |']
+
+
 def sh(cmd, log=None):
     """Run cmd; return (rc, stdout+stderr, elapsed s)."""
     t0 = time.perf_counter()
@@ -514,10 +545,12 @@ def readme(build, docs):
          '[scene_orders.md](scene_orders.md) (rod_impact, sliding_block, incline_friction, '
          'emc_bars, taylor_bar_axisym, taylor_steinberg), [seed_scene_orders.md]'
          '(seed_scene_orders.md) (brittle_impact, pressure_table, shell_projectile_plate, '
-         'shell_box_post: mesh sweeps, Richardson), [emc.md](emc.md) (conserving contact: ball in a box, ball in a shell, '
+         'shell_box_post: mesh sweeps, Richardson), [more_scene_orders.md](more_scene_orders.md) '
+         '(brittle_impact_2d, cmc_implant, ssnv104, knee_insert: mesh sweeps, Richardson), '
+         '[emc.md](emc.md) (conserving contact: ball in a box, ball in a shell, '
          'bars), [hertz.md](hertz.md), [ball_in_box.md](ball_in_box.md), [spall.md](spall.md), '
          '[lamina.md](lamina.md); the stiff and extreme cases: [stability.md](stability.md). '
-         'Numbers checked by `make test`: `scripts/doc_numbers.py --check`.', '',
+         'Numbers checked by `make test`: `scripts/doc_numbers.py --check`.', ''] + SCENE_PAGES + ['',
          '## 1. Elastic wave in a bar (uniaxial strain)', '',
          '![error against wall time](wave_error.png)', '',
          '![stress profile nx = 100](wave_profile.png) ![front, mesh sweep](wave_profile_zoom.png)',

@@ -239,18 +239,6 @@ contains
          end if
          ! ---- shared-node exchange (MPI): serial-order sums at shared nodes, contact forces
          call dom%exchange(model)
-         ! non-reflecting boundary: nodal dashpots on v(n-1/2), after the exchange (the
-         ! same bits on every rank holding the node)
-         if (loads) call add_nonreflecting(model, fext)
-         if (loads) call add_edge_pressures(model, t, fext)   ! (t = 0 geometry: node by node)
-         if (loads) then
-            if (size(fext, 1) == 3) then
-               model%f = model%f + fext
-            else            ! *LOAD_NODE DOF 5-7: rows 4-6 are moments
-               model%f = model%f + fext(1:3, :)
-               model%mom = model%mom + fext(4:6, :)
-            end if
-         end if
          ! ---- time step
          dt = model%ctrl%tssfac*dtcrit
          if (model%cycle == 0 .and. model%ctrl%dtinit > 0.0_wp) dt = min(dt, model%ctrl%dtinit)
@@ -277,6 +265,19 @@ contains
             return
          end if
          dtavg = 0.5_wp*(dt_old + dt)
+         if (loads) call add_edge_pressures(model, t, fext)   ! (t = 0 geometry: node by node)
+         ! non-reflecting boundary: nodal dashpots on the centred velocity (v(n-1/2) +
+         ! v(n+1/2))/2, solved with the node's other forces (unconditionally stable; the
+         ! lagged v(n-1/2) was not), after the exchange: the same bits on every rank
+         if (loads) call add_nonreflecting(model, fext, dtavg)
+         if (loads) then
+            if (size(fext, 1) == 3) then
+               model%f = model%f + fext
+            else            ! *LOAD_NODE DOF 5-7: rows 4-6 are moments
+               model%f = model%f + fext(1:3, :)
+               model%mom = model%mom + fext(4:6, :)
+            end if
+         end if
          ! ---- velocities: v(n+1/2) = v(n-1/2) + dtavg*f/m
          vold = model%v
          do i = 1, model%nn
