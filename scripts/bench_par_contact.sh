@@ -52,7 +52,7 @@ import re, sys
 s, p = open(sys.argv[1]).read(), open(sys.argv[2]).read()
 r, t0, t1, t2, same = sys.argv[3], float(sys.argv[4]), float(sys.argv[5]), float(sys.argv[6]), sys.argv[7]
 split, t1s = sys.argv[8], float(sys.argv[9])
-m = re.search(r'contact: \d+ interface\(s\), (\d+) contact nodes, (\d+) bucket sorts, wall time '
+m = re.search(r'contact: \d+ interface\(s\), (\d+) contact nodes, (\d+) bucket sorts[^,]*, wall time '
               r'search ([0-9.E+-]+) s, local search \+ forces ([0-9.E+-]+) s', s)
 ncyc = int(re.search(r'normal termination at cycle (\d+)', s).group(1)) + 1
 def loop(log):

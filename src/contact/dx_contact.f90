@@ -36,7 +36,7 @@ module dx_contact
    implicit none
    private
    public :: contact_forces, contact_work, contact_search_nodes, contact_assemble, contact_dt, &
-             contact_vmax, contact_prepare
+             contact_vmax, contact_prepare, idle_sort
 
 contains
 
@@ -342,7 +342,7 @@ contains
       end if
    end subroutine contact_dt
 
-   !> A sort of pass p with this margin would find no candidate (serial runs, no rigid
+   !> A sort of pass p with this margin would find no candidate (serial and MPI runs, no rigid
    !> bodies, no erosion: nodes move by at most v dt per step): the last sort that ran
    !> found none, its slave nodes' box a gap p%clear away from its grown segments' box along
    !> an axis, and since then each node has moved at most p%moved_real, so that gap has
@@ -354,7 +354,8 @@ contains
       real(wp), intent(in) :: margin
       logical, intent(in) :: rigid_or_erodes
       idle_sort = .false.
-      if (p%clear <= 0.0_wp .or. allocated(p%mine) .or. allocated(p%segok)) return
+      ! (MPI runs: p%clear is the serial one, reduced over the ranks: dx_par_contact)
+      if (p%clear <= 0.0_wp) return
       if (rigid_or_erodes) return
       idle_sort = 2.0_wp*p%moved_real + max(0.0_wp, margin - p%margin_real) < 0.5_wp*p%clear
    end function idle_sort

@@ -44,7 +44,7 @@ contains
       integer :: i, s, k, n, c, ic(3), jlo(3), jhi(3), i1, i2, i3, ncap, ncells, nc
       integer, allocatable :: fill(:), cand(:), tmp(:)
       logical, allocatable :: act(:)
-      logical :: ok
+      logical :: ok, mpi
       p%margin = margin
       p%moved = 0.0_wp
       p%nsort = p%nsort + 1
@@ -77,6 +77,17 @@ contains
          end if
       end do
       ext = ext/real(max(1, count(act)), wp)
+      mpi = allocated(p%mine) .or. allocated(p%segok)
+      if (mpi) then   ! the box of all the grown boxes here (dx_par_contact idle_reduce)
+         lo = huge(1.0_wp); hi = -huge(1.0_wp)
+         do s = 1, p%nseg
+            if (.not. act(s)) cycle
+            lo = min(lo, blo(:, s))
+            hi = max(hi, bhi(:, s))
+         end do
+         p%sbox(1:3) = lo
+         p%sbox(4:6) = hi
+      end if
       ! MPI runs: only the segments whose grown box reaches this strip's slab (the halo) can
       ! be candidates of its nodes; the grid covers them and the strip's nodes. A node's
       ! candidates (the segments whose grown box holds it, ascending) do not depend on the
@@ -208,7 +219,14 @@ contains
       ! no candidate: the largest gap along an axis between the slave nodes' box and the
       ! grown segments' box (a node inside no grown box needs none; dx_contact's idle sorts),
       ! kept when it is well above the round-off of the coordinates' update
-      if (nc == 0 .and. all(glo <= ghi) .and. all(slo3 <= shi3)) then
+      ! (MPI runs: each rank holds a part of both boxes and of the candidates; the ranks'
+      ! parts are reduced after the sort into this same test, dx_par_contact idle_reduce)
+      if (mpi) then
+         p%sbox(7:9) = slo3
+         p%sbox(10:12) = shi3
+         p%sbox(13) = real(nc, wp)
+         p%sbox_new = .true.
+      else if (nc == 0 .and. all(glo <= ghi) .and. all(slo3 <= shi3)) then
          gap = maxval(max(glo - shi3, slo3 - ghi))
          if (gap > 1.0e-9_wp*maxval(max(abs(lo), abs(hi)))) p%clear = gap
       end if

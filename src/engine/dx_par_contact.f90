@@ -42,7 +42,8 @@ module dx_par_contact
    use dx_par, only: par_rank, par_size, par_abort, par_allreduce, PAR_MAX, PAR_SUM, par_wtime, &
                      par_alltoallv, par_allgatherv_real, par_sparse_exchange, par_allgather_probe
    use dx_par_plan, only: gather_plan_t, par_gather_setup, par_gather_values, par_gather_ordered
-   use dx_par_contact_ghost, only: contact_ghost_t, ghost_setup, ghost_sort, ghost_drop
+   use dx_par_contact_ghost, only: contact_ghost_t, ghost_setup, ghost_sort, ghost_drop, &
+                                   idle_reduce
    implicit none
    private
    public :: par_contact_t, par_contact_setup, par_contact_forces, par_contact_add, &
@@ -327,7 +328,7 @@ contains
       integer, allocatable :: cnt(:)
       real(wp), allocatable :: sb(:), rb(:)
       integer :: i, j, k, n, off, q, m, pos, r, ip
-      logical :: due
+      logical :: due, idle
       t0 = par_wtime()
       g%time = model%time
       g%cycle = model%cycle
@@ -351,7 +352,9 @@ contains
          dt_est = dt_old                        ! (as contact_search_nodes takes it)
          if (dt_est <= 0.0_wp) dt_est = g%ctrl%tssfac*dtcrit
          call ghost_sort(pc%gh, g, pc%l_glob, pc%h_sglob, pc%h_scnt, vmax, dt_est, &
-                         pc%ns_xv, pc%nval_recv)
+                         pc%ns_xv, pc%nval_recv, idle)
+         ! every sorting pass skips its sort (idle contact): the last sort's halo only
+         if (idle) call halo_xv(pc, model, g)
       else                 ! between sorts: the halo of this rank's strips
          call halo_xv(pc, model, g)
       end if
@@ -359,13 +362,14 @@ contains
       pc%t_comm = pc%t_comm + (t1 - t0)
       pc%t_xv = pc%t_xv + (t1 - t0)
       call contact_search_nodes(g, dt_old, dtcrit, vmax, w2max)
+      if (due) call idle_reduce(g)
       if (due .or. pc%fresh) call halo_plan(pc, g)
       pc%fresh = .false.
       ! this rank's results (slave nodes near or in contact): after this rank's candidate
       ! bound w2max, per node its serial position and NR numbers (segments, shape
       ! functions, force, gap, tangential force); to every rank in one MPI_Allgatherv (and
       ! the counts), each node's result then in its place
-      associate (cs => g%contact)
+      results: associate (cs => g%contact)
          ! (over this rank's slave nodes only, in the serial order: mine_list)
          if (due .or. pc%fresh_list) call mine_list(pc, g)
          pc%fresh_list = .false.
@@ -399,6 +403,14 @@ contains
          pc%nrec_sent = pc%nrec_sent + n
          t0 = par_wtime()
          pc%t_cont = pc%t_cont + (t0 - t1)
+         ! no rank can have a result (the last sort of every active pass found no candidate
+         ! on any rank, and no slave node is in contact: iseg is replicated), so w2max is 0
+         ! on every rank: nothing to exchange (an idle contact under MPI)
+         if (quiet()) then
+            pc%t_cont = pc%t_cont + (par_wtime() - t0)
+            t1 = par_wtime()
+            exit results
+         end if
          call par_allgather_probe(sb, rb, cnt)
          t1 = par_wtime()
          pc%t_comm = pc%t_comm + (t1 - t0)
@@ -434,7 +446,7 @@ contains
             end if
             pos = pos + cnt(r)
          end do
-      end associate
+      end associate results
       ! the row sums of all results, added in the serial order (every rank alike); w2max
       ! is now the largest candidate bound over the ranks
       t0 = par_wtime()
@@ -445,6 +457,24 @@ contains
       call contact_dt(g%contact, w2max, dtcrit)
       pc%ncycle = pc%ncycle + 1
    contains
+      !> every active pass's last sort found no candidate on any rank, no node in contact
+      logical function quiet()
+         integer :: a, b
+         quiet = .true.
+         associate (cs => g%contact)
+            do a = 1, size(cs%iface)
+               if (g%time < cs%iface(a)%bt .or. g%time > cs%iface(a)%dt) cycle
+               do b = 1, size(cs%iface(a)%pass)
+                  associate (p => cs%iface(a)%pass(b))
+                     quiet = p%cand_none
+                     if (quiet) quiet = size(p%cand) == 0
+                     if (quiet) quiet = .not. any(p%iseg(1:p%nnode) > 0)
+                  end associate
+                  if (.not. quiet) return
+               end do
+            end do
+         end associate
+      end function quiet
       subroutine add_rec(jp, kk)
          integer, intent(in) :: jp, kk
          integer, allocatable :: t1(:), t2(:)

@@ -27,11 +27,12 @@ module dx_par_contact_ghost
    use dx_kinds, only: wp
    use dx_model, only: model_t
    use dx_contact_search, only: segment_box
-   use dx_par, only: par_rank, par_size, par_allreduce, PAR_MIN, par_alltoallv, &
+   use dx_contact, only: idle_sort
+   use dx_par, only: par_rank, par_size, par_allreduce, PAR_MIN, PAR_MAX, par_alltoallv, &
                      par_allgatherv_real, par_sparse_exchange
    implicit none
    private
-   public :: contact_ghost_t, ghost_setup, ghost_sort, ghost_drop
+   public :: contact_ghost_t, ghost_setup, ghost_sort, ghost_drop, idle_reduce
 
    type :: contact_ghost_t
       logical :: on = .false.
@@ -143,12 +144,16 @@ contains
    !> already; the ghosts of the sorting passes and the last sort's halo (hs_glob, hs_cnt:
    !> global nodes to send to each rank) arrive from the other ranks. Sets p%mext and
    !> p%segok of every sorting pass. nsent/nrecv: numbers sent / received (counted up).
-   subroutine ghost_sort(gh, g, held, hs_glob, hs_cnt, vmax, dt_est, nsent, nrecv)
+   !> idle: every sorting pass will skip its sort (dx_contact idle_sort, decided from the
+   !> margin of the serial bits, so on every rank alike): no ghost is sent, and the caller
+   !> brings the last sort's halo (the candidates and contact segments stay).
+   subroutine ghost_sort(gh, g, held, hs_glob, hs_cnt, vmax, dt_est, nsent, nrecv, idle)
       type(contact_ghost_t), intent(inout) :: gh
       type(model_t), intent(inout) :: g
       integer, intent(in) :: held(:), hs_glob(:), hs_cnt(0:)
       real(wp), intent(in) :: vmax, dt_est
       integer(8), intent(inout) :: nsent, nrecv
+      logical, intent(out) :: idle
       real(wp), allocatable :: sb(:), rb(:), box(:, :, :), ext(:), reach(:)
       logical, allocatable :: occ(:, :)
       integer :: nw, nc, jlo(3), jhi(3)
@@ -157,10 +162,14 @@ contains
       real(wp) :: lo(3), hi(3), e
       integer :: i, j, k, ip, iq, nd, nx, s, r, np, me, st, m, pos, nl, h0
       logical, allocatable :: due(:)
+      logical :: rigid_or_erodes
       np = par_size()
       me = par_rank()
+      idle = .true.
+      rigid_or_erodes = allocated(g%rigid)
+      if (rigid_or_erodes) rigid_or_erodes = allocated(g%rigid%node_body)
+      rigid_or_erodes = rigid_or_erodes .or. g%erodes
       gh%nstamp = gh%nstamp + 1
-      gh%nsort = gh%nsort + 1
       st = gh%nstamp
       gh%stamp(held) = st
       associate (cs => g%contact)
@@ -270,9 +279,14 @@ contains
                   if (p%nseg > 0) e = e + maxval(p%depth(1:p%nseg))
                   if (p%shells) e = e + p%noffmax
                   reach(m) = 1.25_wp*e
+                  ! (contact_search_nodes: the same margin, rigid bodies and erosion)
+                  if (.not. idle_sort(p, max(0.25_wp*p%mext, 4.0_wp*vmax*dt_est), &
+                                      rigid_or_erodes)) idle = .false.
                end associate
             end do
          end do
+         if (idle) return
+         gh%nsort = gh%nsort + 1
          ! ---- the nodes each other rank gets: the halo of the last sort, then the
          !      segments within reach of its boxes and those its slave nodes touch
          allocate(lst(max(64, size(hs_glob))), scnt(0:np - 1), rcnt(0:np - 1))
@@ -413,4 +427,64 @@ contains
          end do
       end subroutine add_seg
    end subroutine ghost_sort
+
+   !> After the bucket sorts of this cycle: each sorted pass's boxes (grown segment boxes,
+   !> slave nodes) and candidate count, the ranks' parts reduced by one exact MPI_Allreduce
+   !> (MAX of -lo, hi, count: order-free, so the serial bits for any NP), then the serial
+   !> test of bucket_sort on the whole pass: no candidate, and the largest gap along an axis
+   !> between the two boxes well above the round-off, sets p%clear, which lets a later due
+   !> sort be skipped (dx_contact idle_sort) on every rank alike and as in the serial run.
+   !> The union of the ranks' sorted segments is every segment (each rank sorts at least
+   !> the segments it sends, ghost sorts; or all of them), of their slave nodes every slave
+   !> node. Called on every rank at the same cycles (the sorts are decided on replicated
+   !> numbers); no message when no pass sorted.
+   subroutine idle_reduce(g)
+      type(model_t), intent(inout) :: g
+      real(wp), allocatable :: b(:)
+      real(wp) :: lo(3), hi(3), glo(3), ghi(3), slo(3), shi(3), gap
+      integer :: i, j, n
+      associate (cs => g%contact)
+         n = 0
+         do i = 1, size(cs%iface)
+            do j = 1, size(cs%iface(i)%pass)
+               if (cs%iface(i)%pass(j)%sbox_new) n = n + 1
+            end do
+         end do
+         if (n == 0) return
+         allocate(b(13*n))
+         n = 0
+         do i = 1, size(cs%iface)
+            do j = 1, size(cs%iface(i)%pass)
+               associate (p => cs%iface(i)%pass(j))
+                  if (.not. p%sbox_new) cycle
+                  b(n + 1:n + 3) = -p%sbox(1:3)
+                  b(n + 4:n + 6) = p%sbox(4:6)
+                  b(n + 7:n + 9) = -p%sbox(7:9)
+                  b(n + 10:n + 13) = p%sbox(10:13)
+                  n = n + 13
+               end associate
+            end do
+         end do
+         call par_allreduce(b, PAR_MAX)
+         n = 0
+         do i = 1, size(cs%iface)
+            do j = 1, size(cs%iface(i)%pass)
+               associate (p => cs%iface(i)%pass(j))
+                  if (.not. p%sbox_new) cycle
+                  p%sbox_new = .false.
+                  p%cand_none = b(n + 13) == 0.0_wp
+                  glo = -b(n + 1:n + 3); ghi = b(n + 4:n + 6)
+                  slo = -b(n + 7:n + 9); shi = b(n + 10:n + 12)
+                  ! (bucket_sort's test; its lo, hi: the grown boxes' box and the nodes')
+                  if (b(n + 13) == 0.0_wp .and. all(glo <= ghi) .and. all(slo <= shi)) then
+                     gap = maxval(max(glo - shi, slo - ghi))
+                     lo = min(glo, slo); hi = max(ghi, shi)
+                     if (gap > 1.0e-9_wp*maxval(max(abs(lo), abs(hi)))) p%clear = gap
+                  end if
+                  n = n + 13
+               end associate
+            end do
+         end do
+      end associate
+   end subroutine idle_reduce
 end module dx_par_contact_ghost

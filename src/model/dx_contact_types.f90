@@ -61,6 +61,13 @@ module dx_contact_types
       real(wp) :: margin_real = 0.0_wp
       real(wp) :: moved_real = 0.0_wp
       integer :: nskip = 0
+      !     MPI runs: the rank's part of the sort's boxes (the grown boxes of the segments
+      !     it sorted, its slave nodes; lo, hi each) and candidate count, reduced over the
+      !     ranks after the sort (dx_par_contact idle_reduce) into the serial clear
+      real(wp) :: sbox(13) = 0.0_wp
+      logical :: sbox_new = .false.
+      !     ... and whether that sort found no candidate on any rank (known to every rank)
+      logical :: cand_none = .false.
       integer, allocatable :: cand_ptr(:)      !< (nnode+1) CSR into cand
       integer, allocatable :: cand(:)          !< candidate segments of each slave node
       integer :: ncell(3) = 0                  !< bucket grid
