@@ -74,11 +74,9 @@ module dx_par_engine
       integer, allocatable :: own(:)             !< owned local nodes
       integer, allocatable :: key_elem(:)        !< serial order key -> global element
       logical, allocatable :: owned(:)           !< (nloc) this rank owns the node
-      real(wp), allocatable :: gvold(:, :)
-      !> Decks with rotations (shells): the global model's g%w, g%rinert (the rank-0 sums
-      !> of the rotational kinetic energy) and w(n-1/2) gathered beside them
+      !> Decks with rotations (shells, beams): rotations, moments and rotary inertia summed
+      !> at shared nodes as the forces
       logical :: rot = .false.
-      real(wp), allocatable :: gwold(:, :)
       !> Work of the constraints and stonewalls (par_engine_constraints): the rank's
       !> constrained nodes (the explicit loop's cnodes), the serial position of each owned
       !> one (0: not owned), the map of each wall's local node list to its serial positions,
@@ -157,11 +155,9 @@ contains
                                  reshape(model%rinert(eng%own), [1, size(eng%own)]), keys, vals)
          if (allocated(eng%g%rinert)) deallocate(eng%g%rinert)
          if (allocated(eng%g%w)) deallocate(eng%g%w)
-         if (allocated(eng%gwold)) deallocate(eng%gwold)
-         allocate(eng%g%rinert(eng%g%nn), eng%g%w(3, eng%g%nn), eng%gwold(3, eng%g%nn))
+         allocate(eng%g%rinert(eng%g%nn), eng%g%w(3, eng%g%nn))
          eng%g%rinert(keys) = vals(1, :)
          eng%g%w = 0.0_wp
-         eng%gwold = 0.0_wp
       end if
       ! the total: an exact sum over the owned nodes and the ranks (dx_energy_exact)
       model%energy%mass = exact_mass(model, eng%own, .true.)

@@ -2,7 +2,10 @@
 !> every rank reads its rank file (dynx-part; or rank 0 partitions the deck when none exists),
 !> turns the serial model into its sub-model (dx_par_model) and sets up the domain's load,
 !> rigid-body, contact and plot stages; at the end of set-up what of the global model the
-!> run no longer needs is freed (trim_global) and the memory left is logged.
+!> run no longer needs is freed (trim_global) and the memory left is logged. Peak memory
+!> (issue 22): g's element state is freed as soon as the rank's is copied from it, and the
+!> ranks other than 0 of a deck without contact and rigid bodies never allocate g's nodal
+!> x, v, f (a serial dump read into g allocates them: dx_par_restart).
 !> Fixed-order sums: the idea of OpenRadioss /PARITH/ON; single exchange per cycle: ParaDyn
 !> (Hoover et al., LLNL Engineering Thrust Area Report FY97, article 4 of shared/seed).
 !> No module state: everything is in the par_engine_t passed in.
@@ -137,18 +140,28 @@ contains
          call move_alloc(tv0, eng%g%v0)
          call move_alloc(tlab, eng%g%node_label)
       end block
-      allocate(eng%g%x(3, eng%g%nn), eng%g%v(3, eng%g%nn), eng%g%f(3, eng%g%nn), &
-               eng%g%mass(eng%g%nn))
-      eng%g%x = eng%g%x0
-      eng%g%v = eng%g%v0
-      eng%g%f = 0.0_wp
+      ! g's nodal state: on the writer (rank 0), and on every rank of a deck with contact or
+      ! rigid bodies (their stages read it); the other ranks of a root-only deck never fill
+      ! it (the masses: par_engine_mass stores them for the loads' shared nodes)
+      if (me == 0 .or. .not. eng%root_only) then
+         allocate(eng%g%x(3, eng%g%nn), eng%g%v(3, eng%g%nn), eng%g%f(3, eng%g%nn))
+         eng%g%x = eng%g%x0
+         eng%g%v = eng%g%v0
+         eng%g%f = 0.0_wp
+      end if
+      allocate(eng%g%mass(eng%g%nn))
       eng%g%mass = 0.0_wp
-      allocate(eng%gvold(3, eng%g%nn))
-      eng%gvold = 0.0_wp
       ! the sub-model from the rank file alone (format 2: topology, slots, the fixed-order
       ! sum plans, x0, v0, labels); stage 1 of issue 22 takes the element state from the deck
       call par_model_from_file(rp, eng%pm)
       call par_model_fill_state(eng%pm, eng%g, rp)
+      ! g's stresses, material history and hourglass forces are the rank's now (nothing of
+      ! the set-up below reads g's: freed here, before the rank's own arrays grow)
+      do k = 1, size(eng%g%blocks)
+         if (allocated(eng%g%blocks(k)%sig)) deallocate(eng%g%blocks(k)%sig)
+         if (allocated(eng%g%blocks(k)%hv)) deallocate(eng%g%blocks(k)%hv)
+         call eng%g%blocks(k)%es_drop(ES_HGS)
+      end do
       call log_submodels(eng%pm, rp)
       allocate(loc(eng%g%nn))
       loc = 0
@@ -277,11 +290,6 @@ contains
                           eng%pm%slot_node, eng%own, eng%elem_loc, outdir, error)
       call par_agree(error)
       if (allocated(error)) return
-      do k = 1, size(eng%g%blocks)
-         if (allocated(eng%g%blocks(k)%sig)) deallocate(eng%g%blocks(k)%sig)
-         if (allocated(eng%g%blocks(k)%hv)) deallocate(eng%g%blocks(k)%hv)
-         call eng%g%blocks(k)%es_drop(ES_HGS)
-      end do
       eng%on = .true.
    contains
       !> Rank 0 only: partition the deck into dir as `dynx-part deck -n np -o dir` would.
@@ -461,10 +469,8 @@ contains
             if (allocated(eng%g%node_label)) deallocate(eng%g%node_label)
             if (allocated(eng%g%spcs)) deallocate(eng%g%spcs)
             if (allocated(eng%g%prescribed)) deallocate(eng%g%prescribed)
-            if (allocated(eng%gvold)) deallocate(eng%gvold)
             if (allocated(eng%g%w)) deallocate(eng%g%w)            ! shells
             if (allocated(eng%g%rinert)) deallocate(eng%g%rinert)
-            if (allocated(eng%gwold)) deallocate(eng%gwold)
          end if
       end if
       call mem_report(eng)
@@ -522,10 +528,8 @@ contains
       if (allocated(eng%g%f)) node = node + 8*size(eng%g%f, kind=int64)
       if (allocated(eng%g%mass)) node = node + 8*size(eng%g%mass, kind=int64)
       if (allocated(eng%g%node_label)) node = node + 4*size(eng%g%node_label, kind=int64)
-      if (allocated(eng%gvold)) node = node + 8*size(eng%gvold, kind=int64)
       if (allocated(eng%g%w)) node = node + 8*size(eng%g%w, kind=int64)
       if (allocated(eng%g%rinert)) node = node + 8*size(eng%g%rinert, kind=int64)
-      if (allocated(eng%gwold)) node = node + 8*size(eng%gwold, kind=int64)
       if (allocated(eng%plan_own%keys)) node = node + 4*size(eng%plan_own%keys, kind=int64)
       if (allocated(eng%plan_own%perm)) node = node + 4*size(eng%plan_own%perm, kind=int64)
    end subroutine global_bytes

@@ -280,6 +280,9 @@ contains
       call par_barrier()           ! every part closed before rank 0 reads them
       if (allocated(error)) return
       if (par_rank() /= 0) return
+      ! the live view's whole-model tables are done with: freed before the combine's own
+      if (allocated(pp%live%idx)) deallocate(pp%live%idx)
+      if (allocated(pp%live%x0)) deallocate(pp%live%x0)
       call plot_combine(pp%dir, n, error)
       if (allocated(error)) return
       ! the published state files become links to d3plot.h5 (a viewer reads on)

@@ -277,6 +277,12 @@ contains
       else
          ! a serial dump: into the global model, then this rank's nodes and elements
          call global_blocks(gp, .true.)      ! g's element state is freed after setup
+         if (.not. allocated(gp%x)) then     ! (ranks > 0 of a root-only deck hold none)
+            allocate(gp%x(3, gp%nn), gp%v(3, gp%nn), gp%f(3, gp%nn))
+            gp%x = gp%x0
+            gp%v = gp%v0
+            gp%f = 0.0_wp
+         end if
          call restart_read(gp, path, error)
          call par_agree(error)
          if (allocated(error)) return

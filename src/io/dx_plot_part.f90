@@ -11,7 +11,10 @@
 !> mesh only; state k of the rank is its own small file DIR/d3plot_rank_NNNNN.states/
 !> KKKKKK.h5 (group /states/KKKKKK, the run's stamp). Each is written under NAME.tmp, closed,
 !> fsynced and renamed, and never touched again, so a kill -9 at any moment leaves every
-!> renamed file whole. A rank's states are the files 1, 2, ... up to the first missing one;
+!> renamed file whole. Rank 0 joins a state (the combine, and the live view's published state
+!> files) one whole-model field at a time (stream_state), with plot_state_write's calls, so
+!> the bytes are the serial writer's and rank 0 never holds a whole state (issue 22).
+!> A rank's states are the files 1, 2, ... up to the first missing one;
 !> plot_combine takes the states every part has completed (the smallest count), so the files
 !> of a run killed mid-way combine into the complete states only. plot_part_truncate is the
 !> one routine that cuts a run's parts back to a state count (restarts: states after the
@@ -28,13 +31,14 @@ module dx_plot_part
                     h5_create_group, h5_write, h5_write_attr, h5_read_attr, h5_read, &
                     h5_create_extendible, h5_append, h5_write_int_attrs, h5_read_int_attrs
    use dx_io_sys, only: sys_rename, sys_mkdir_p
-   use dx_plot_states, only: file_remove, publish, states_write_mesh, states_write_state, &
+   use dx_plot_states, only: file_remove, publish, states_write_mesh, state_file, &
                              states_remove_all, LIVE_DIR => STATES_DIR
    use dx_xdmf, only: xdmf_write, state_group
    use dx_plot_cells, only: write_cells, read_cells, cells_topology, cell_topo_t
-   use dx_plot_fields, only: plot_state_t, plot_state_alloc, plot_state_derive, plot_state_write, &
-                             plot_mesh_write, field_in_part, PLOT_FIELDS, NSTATE_FIELDS, &
-                             CENTRE_NODE, plot_rows_in_file
+   use dx_plot_fields, only: plot_mesh_write, field_in_part, PLOT_FIELDS, NSTATE_FIELDS, &
+                             CENTRE_NODE, plot_rows_in_file, plot_field_t, stress_invariants, &
+                             plot_state_t, plot_state_write, &
+                             F_COORD, F_DISP, F_STRESS, F_VM, F_PRES
    implicit none
    private
    public :: plot_part_t, plot_part_name, plot_part_state_name, plot_part_count, plot_combine, &
@@ -295,14 +299,10 @@ contains
       real(wp), allocatable :: times(:), buf(:), x0(:, :)
       integer, allocatable :: cnt_n(:), cnt_e(:), node_ids(:), &
                               cells(:, :), elem_ids(:), part_ids(:), rc(:, :)
-      type(plot_state_t) :: st
       type(cell_topo_t) :: topo
       logical :: rows(NSTATE_FIELDS)
-      type :: idx_t
-         integer, allocatable :: n(:), e(:)
-      end type idx_t
-      type(idx_t), allocatable :: idx(:)
-      integer :: np, nn, ne, stamp, r, k, ival, nst, i, n, j
+      type(part_idx_t), allocatable :: idx(:)
+      integer :: np, nn, ne, stamp, r, k, ival, nst, i, n
       character(:), allocatable :: g, path
       nstates_out = 0
       ! ---- rank 0's part says how many there are
@@ -380,6 +380,7 @@ contains
                str(count(cnt_e /= 1))//' elements wrong)', EXIT_IO)
             exit work
          end if
+         deallocate(cnt_n, cnt_e)
          do r = 0, np - 1
             call h5_close(pf(r), error)
             if (allocated(error)) exit work
@@ -428,36 +429,19 @@ contains
          if (allocated(error)) exit work
          topo = cells_topology(cells)
          deallocate(cells, elem_ids, part_ids, node_ids)
+         rows = .not. PLOT_FIELDS(1:NSTATE_FIELDS)%opt
          do k = 1, nst
             g = state_group(k)
-            do r = 0, np - 1
-               call h5_open_read(pf(r), plot_part_state_name(dir, r, k), error)
+            if (k == 1) then      ! the optional rows of the schema the parts hold
+               call h5_open_read(pf(0), plot_part_state_name(dir, 0, k), error)
                if (allocated(error)) exit work
-               ! the optional rows of the schema the parts hold (from the first state)
-               if (k == 1 .and. r == 0) then
-                  call plot_rows_in_file(pf(r), g, rows, error)
-                  if (allocated(error)) exit work
-                  call plot_state_alloc(st, nn, ne, rows=rows)
-               end if
-               ! each part field of the schema, scattered to the global nodes or elements
-               do j = 1, NSTATE_FIELDS
-                  if (.not. field_in_part(j)) cycle
-                  if (.not. st%on(j)) cycle
-                  call h5_read(pf(r), g//'/'//trim(PLOT_FIELDS(j)%name), buf, error)
-                  if (allocated(error)) exit work
-                  n = PLOT_FIELDS(j)%ncomp
-                  if (PLOT_FIELDS(j)%centre == CENTRE_NODE) then
-                     st%f(j)%r(:, idx(r)%n) = reshape(buf, [n, size(idx(r)%n)])
-                  else
-                     st%f(j)%r(:, idx(r)%e) = reshape(buf, [n, size(idx(r)%e)])
-                  end if
-               end do
-               call h5_close(pf(r), error)
+               call plot_rows_in_file(pf(0), g, rows, error)
                if (allocated(error)) exit work
-            end do
-            st%time = times(k)
-            call plot_state_derive(st, x0)
-            call plot_state_write(out, g, st, error)
+               call h5_close(pf(0), error)
+               if (allocated(error)) exit work
+               rows = rows .or. .not. PLOT_FIELDS(1:NSTATE_FIELDS)%opt
+            end if
+            call stream_state(out, g, times(k), dir, k, idx, x0, nn, ne, rows, error)
             if (allocated(error)) exit work
             call h5_append(out, '/states/times', times(k), i, error)
             if (allocated(error)) exit work
@@ -473,7 +457,7 @@ contains
          call sys_rename(dir//'/'//H5NAME//'.tmp', dir//'/'//H5NAME, error)
          if (allocated(error)) exit work
          call xdmf_write(dir//'/'//XMFNAME, H5NAME, title, nn, ne, topo, times, error, &
-                         rows=st%on)
+                         rows=rows)
          if (allocated(error)) exit work
          nstates_out = nst
       end block work
@@ -498,7 +482,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       type(h5_file_t) :: f
       type(error_t), allocatable :: err2
-      real(wp), allocatable :: buf(:), tmp(:)
+      real(wp), allocatable :: buf(:)
       integer, allocatable :: node_ids(:), cells(:, :), elem_ids(:), part_ids(:), rc(:, :)
       integer :: r, stamp, j
       character(:), allocatable :: path
@@ -548,6 +532,11 @@ contains
          call states_write_mesh(dir, self%x0, node_ids, cells, elem_ids, part_ids, &
                                 self%title, error)
          if (allocated(error)) return
+         ! the mesh's whole-model tables are written: freed before a state's (issue 22:
+         ! rank 0's peak is the first publish)
+         deallocate(node_ids, cells, elem_ids, part_ids)
+         if (allocated(buf)) deallocate(buf)
+         if (allocated(rc)) deallocate(rc)
          do j = 1, k - 1                  ! a restart: the states kept from before the dump
             call live_state(j)
             if (allocated(error)) return
@@ -560,52 +549,123 @@ contains
 
    contains
 
-      !> State j from the parts' state-j files, derived and written as the serial writer's.
+      !> State j from the parts' state-j files, written as the serial writer's (stream_state:
+      !> one whole-model field at a time) under temp, fsync and rename (dx_plot_states).
       subroutine live_state(j)
          integer, intent(in) :: j
-         type(plot_state_t) :: st
-         character(:), allocatable :: g
-         integer :: r, i, n
+         type(h5_file_t) :: out
+         character(:), allocatable :: g, p
+         real(wp) :: t
+         real(wp), allocatable :: tmp(:)
          g = state_group(j)
-         do r = 0, self%np - 1
-            path = plot_part_state_name(dir, r, j)
-            call h5_open_read(f, path, error)
-            if (allocated(error)) return
-            part: block
-               if (r == 0) then
-                  call plot_rows_in_file(f, g, self%rows, error)
-                  if (allocated(error)) exit part
-                  call plot_state_alloc(st, self%nn, self%ne, rows=self%rows)
-                  call h5_read_attr(f, g, 'time', st%time, error)
-                  if (allocated(error)) exit part
-               end if
-               do i = 1, NSTATE_FIELDS
-                  if (.not. field_in_part(i)) cycle
-                  if (.not. st%on(i)) cycle
-                  call h5_read(f, g//'/'//trim(PLOT_FIELDS(i)%name), buf, error)
-                  if (allocated(error)) exit part
-                  n = PLOT_FIELDS(i)%ncomp
-                  if (PLOT_FIELDS(i)%centre == CENTRE_NODE) then
-                     st%f(i)%r(:, self%idx(r)%n) = reshape(buf, [n, size(self%idx(r)%n)])
-                  else
-                     st%f(i)%r(:, self%idx(r)%e) = reshape(buf, [n, size(self%idx(r)%e)])
-                  end if
-               end do
-            end block part
-            call h5_close(f, err2)
-            if (allocated(error)) return
-         end do
-         call plot_state_derive(st, self%x0)
-         self%rows = st%on
+         path = plot_part_state_name(dir, 0, j)
+         call h5_open_read(f, path, error)
+         if (allocated(error)) return
+         call plot_rows_in_file(f, g, self%rows, error)
+         if (.not. allocated(error)) call h5_read_attr(f, g, 'time', t, error)
+         call h5_close(f, err2)
+         if (allocated(error)) return
+         self%rows = self%rows .or. .not. PLOT_FIELDS(1:NSTATE_FIELDS)%opt
+         p = dir//'/'//state_file(j)
+         call h5_create(out, p//'.tmp', error)
+         if (allocated(error)) return
+         call h5_create_group(out, '/states', error)
+         if (.not. allocated(error)) call stream_state(out, g, t, dir, j, self%idx, self%x0, &
+                                                       self%nn, self%ne, self%rows, error)
+         call publish(out, p, error)
+         if (allocated(error)) return
          if (j > size(self%times)) then
             allocate(tmp(2*j))
             tmp(1:size(self%times)) = self%times
             call move_alloc(tmp, self%times)
          end if
-         self%times(j) = st%time
-         call states_write_state(dir, j, st, error)
+         self%times(j) = t
       end subroutine live_state
    end subroutine plot_live_publish
+
+   !> State group g of out from the parts' files of state k (dir; idx: each part's global
+   !> nodes and elements): the group, its time, then every state field that on names in
+   !> table order with the very calls of plot_state_write, so the file's bytes are the
+   !> serial writer's. One whole-model field at a time (issue 22: the whole state on rank 0
+   !> was its peak memory): a part field is read from every part and scattered to the global
+   !> nodes or elements; the derived ones as plot_state_derive forms them (displacement =
+   !> coordinates - x0, von Mises and pressure from the stress by stress_invariants), so at
+   !> most the stress and its two invariants (or two nodal vectors) are held at once.
+   subroutine stream_state(out, g, time, dir, k, idx, x0, nn, ne, on, error)
+      type(h5_file_t), intent(inout) :: out
+      character(*), intent(in) :: g, dir
+      real(wp), intent(in) :: time, x0(:, :)
+      integer, intent(in) :: k, nn, ne
+      type(part_idx_t), intent(in) :: idx(0:)
+      logical, intent(in) :: on(NSTATE_FIELDS)
+      type(error_t), allocatable, intent(out) :: error
+      real(wp), allocatable :: a(:, :), keep(:, :), vm(:), pres(:)
+      type(plot_field_t) :: fld
+      integer :: i
+      call h5_create_group(out, g, error)
+      if (allocated(error)) return
+      call h5_write_attr(out, g, 'time', time, error)
+      if (allocated(error)) return
+      do i = 1, NSTATE_FIELDS
+         if (.not. on(i)) cycle
+         fld = PLOT_FIELDS(i)
+         select case (i)
+         case (F_DISP)                    ! (the coordinates come first in the table)
+            a = keep - x0
+            deallocate(keep)
+         case (F_VM)                      ! (the stress comes first; pressure next)
+            allocate(vm(ne), pres(ne))
+            call stress_invariants(keep, vm, pres)
+            deallocate(keep)
+            a = reshape(vm, [1, ne])
+            deallocate(vm)
+         case (F_PRES)
+            a = reshape(pres, [1, ne])
+            deallocate(pres)
+         case default
+            call part_field(a)
+            if (allocated(error)) return
+         end select
+         if (fld%int) then
+            call h5_write(out, g//'/'//trim(fld%name), nint(a(1, :)), error)
+         else if (fld%ncomp == 1) then
+            call h5_write(out, g//'/'//trim(fld%name), a(1, :), error)
+         else
+            call h5_write(out, g//'/'//trim(fld%name), a, error)
+         end if
+         if (allocated(error)) return
+         if ((i == F_COORD .and. on(F_DISP)) .or. (i == F_STRESS .and. on(F_VM))) &
+            call move_alloc(a, keep)
+      end do
+   contains
+      !> field i of every part scattered to the global nodes or elements (zero elsewhere)
+      subroutine part_field(v)
+         real(wp), allocatable, intent(out) :: v(:, :)
+         type(h5_file_t) :: f
+         type(error_t), allocatable :: err2
+         real(wp), allocatable :: buf(:)
+         integer :: r, n
+         n = fld%ncomp
+         if (fld%centre == CENTRE_NODE) then
+            allocate(v(n, nn))
+         else
+            allocate(v(n, ne))
+         end if
+         v = 0.0_wp
+         do r = 0, size(idx) - 1
+            call h5_open_read(f, plot_part_state_name(dir, r, k), error)
+            if (allocated(error)) return
+            call h5_read(f, g//'/'//trim(fld%name), buf, error)
+            call h5_close(f, err2)
+            if (allocated(error)) return
+            if (fld%centre == CENTRE_NODE) then
+               v(:, idx(r)%n) = reshape(buf, [n, size(idx(r)%n)])
+            else
+               v(:, idx(r)%e) = reshape(buf, [n, size(idx(r)%e)])
+            end if
+         end do
+      end subroutine part_field
+   end subroutine stream_state
 
    !> The root attributes of a part file (format checked).
    subroutine read_header(f, path, np, stamp, nn, ne, title, error)
