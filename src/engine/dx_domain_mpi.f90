@@ -9,15 +9,15 @@
 !> terms, plot parts per rank (dx_par_engine, dx_par_loads, dx_par_rigid, dx_par_contact,
 !> dx_par_plot, dx_par_restart).
 !> domain_create builds the run's domain once: serial (one rank, or the conserving solver's
-!> replicated run) or MPI.
+!> or the implicit solver's replicated run) or MPI.
 module dx_domain_mpi
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_NUMERIC
    use dx_strings, only: str
    use dx_model, only: model_t
    use dx_output, only: output_t
-   use dx_par, only: par_size, par_allreduce, PAR_MAX, par_traffic_line
-   use dx_log, only: log_info
+   use dx_par, only: par_size, par_rank, par_allreduce, PAR_MAX, par_traffic_line
+   use dx_log, only: log_info, log_set_quiet
    use dx_par_model, only: par_exchange_post, par_exchange_drop
    use dx_mass_scaling, only: lump_mass
    use dx_domain, only: domain_t, serial_domain_t, requests_t
@@ -100,6 +100,13 @@ contains
       class(domain_t), allocatable, intent(out) :: dom
       type(error_t), allocatable, intent(out) :: error
       type(mpi_domain_t), allocatable :: md
+      if (par_size() > 1 .and. model%ctrl%imp%imflag == 1 .and. .not. allocated(model%emc)) then
+         ! the implicit solver under MPI: the whole model on every rank (replicated, rank 0
+         ! writes), its elements split by dx_implicit_par; no rank files
+         if (par_rank() > 0) call log_set_quiet(.true.)
+         allocate(serial_domain_t :: dom)
+         return
+      end if
       allocate(md)
       md%contact%split_mode = split
       call par_engine_setup(md%eng, model, deck, outdir, partdir, md%loads, md%rigid, md%plot, &

@@ -9,6 +9,8 @@
 !> step, so the first residual of a step carries the imposed increment.
 !> Equations are numbered node by node (x, y, z), the sparse pattern is formed once
 !> (dx_sparse) and its analysis is done once by the caller.
+!> MPI runs (dx_implicit_par): the whole system on every rank, each rank assembles its own
+!> elements, the internal force summed in rank order; contact is refused there.
 module dx_implicit_system
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_NUMERIC
@@ -18,7 +20,10 @@ module dx_implicit_system
    use dx_hex8_stiffness, only: tl_solid_element, tl_supported, tl_points, TL_ERR_JAC, TL_NEN
    use dx_sparse, only: sparse_sym_t, sparse_symbolic, sparse_zero, sparse_add_element
    use dx_loads, only: add_external_loads
-   use dx_par, only: par_self_handle
+   use dx_par, only: par_self_handle, par_size
+   use dx_implicit_par, only: ipar_t, ipar_setup, ipar_entries, ipar_sum, ipar_exact, &
+                              ipar_bcast, ipar_bcast_int, ipar_first, ipar_agree, ipar_agreed, &
+                              ipar_comm, ipar_max_flags, ipar_global, ipar_assemble
    use dx_contact_input, only: CT_NODES_TO_SURFACE, CT_SURFACE_TO_SURFACE, CT_ONE_WAY
    use dx_implicit_contact, only: icontact_t, icon_pairs, icon_assemble, icon_commit, &
                                   icon_pair_nodes
@@ -30,7 +35,9 @@ module dx_implicit_system
    public :: implicit_system_t, isys_setup, isys_assemble, isys_commit, isys_external, &
              isys_refind, &
              isys_prescribe, isys_comm, isys_gather, isys_scatter, isys_dof_name, &
-             isys_fix, isys_null_names, isys_reset
+             isys_fix, isys_null_names, isys_reset, isys_root, isys_mpi, isys_analyse_entries, &
+             isys_bcast, isys_bcast_int, isys_agree, isys_agreed, isys_max_flags, isys_global, &
+             isys_nranks, isys_sum_entries
 
    !> One block's committed (c) and trial (t) point state: S, Ebar (6, 8, nel), history
    !> (nh, 8, nel); the element's stress work w (committed) and its trial increment dw.
@@ -54,6 +61,7 @@ module dx_implicit_system
       logical :: has_contact = .false.
       type(irigid_t) :: rig                 !< rigid bodies (dx_implicit_rigid)
       logical, allocatable :: rblock(:)     !< (blocks) a rigid part's block: not assembled
+      type(ipar_t) :: par                   !< MPI: this rank's elements and entries
    end type implicit_system_t
 
 contains
@@ -66,7 +74,8 @@ contains
       type(error_t), allocatable, intent(out) :: error
       logical, intent(in), optional :: rigid_ok   !< rigid bodies are taken (dx_implicit)
       integer :: b, e, a, i, k, n, nh, ne, d, ngp
-      integer, allocatable :: cmap(:, :), enodes(:, :)
+      integer, allocatable :: cmap(:, :), enodes(:, :), eidx(:)
+      integer :: nnode
       logical :: rok
       character(*), parameter :: why = ' (the implicit Newton solver of IMFLAG = 1, issue 20)'
       sys%linear = model%ctrl%imp%nsolvr == 1
@@ -91,6 +100,14 @@ contains
             end associate
          end do
          sys%has_contact = size(model%contact%iface) > 0
+      end if
+      call ipar_setup(model, sys%par, error)
+      if (allocated(error)) return
+      if (sys%par%on .and. sys%has_contact) then
+         call set_error(error, '*'//model%contact%iface(1)%name//' (contact '// &
+            str(model%contact%iface(1)%label)//'): the implicit contact is not yet in an MPI '// &
+            'run (the implicit solver runs under MPI without contact); run this deck '// &
+            'serially (without mpirun)'); return
       end if
       rok = .false.
       if (present(rigid_ok)) rok = rigid_ok
@@ -168,6 +185,7 @@ contains
          end do
       end do
       ! rigid bodies: their nodes no equations, each body six after the nodes' (n grows)
+      nnode = n
       call irig_setup(model, sys%eqn, n, sys%rig, error)
       if (allocated(error)) return
       sys%neq = n
@@ -211,6 +229,17 @@ contains
          if (allocated(error)) return
          call sparse_symbolic(n, sys%emap, sys%k)
       end if
+      if (sys%par%on) then      ! MPI: the entries this rank passes to MUMPS
+         allocate(eidx(model%ne))
+         eidx = 0
+         do b = 1, size(model%blocks)
+            if (sys%rblock(b)) cycle
+            do e = 1, model%blocks(b)%nel
+               eidx(model%blocks(b)%elem(e)) = sys%eoff(b) + e
+            end do
+         end do
+         call ipar_entries(sys%par, sys%k, eidx, nnode + 1)
+      end if
       allocate(sys%bs(size(model%blocks)))
       do b = 1, size(model%blocks)
          associate (blk => model%blocks(b), s => sys%bs(b))
@@ -237,8 +266,9 @@ contains
       logical, intent(in) :: want_k
       real(wp), intent(out) :: fint(:, :)
       type(error_t), allocatable, intent(out) :: error
-      integer :: b, e, a, ierr, nen
+      integer :: b, e, a, ierr, nen, kfail
       real(wp) :: xe0(3, TL_NEN), ue(3, TL_NEN), fe(3*TL_NEN), ke(3*TL_NEN, 3*TL_NEN)
+      kfail = huge(kfail)
       fint = 0.0_wp
       ke = 0.0_wp
       if (want_k) call sparse_zero(sys%k)
@@ -248,6 +278,9 @@ contains
                     mat => model%mats(model%parts(model%blocks(b)%ipart)%imat)%m)
             nen = size(blk%conn, 1)
             do e = 1, blk%nel
+               if (sys%par%on) then          ! MPI: this rank's elements
+                  if (.not. sys%par%own(blk%elem(e))) cycle
+               end if
                do a = 1, nen
                   xe0(:, a) = model%x0(:, blk%conn(a, e))
                   ue(:, a) = u(:, blk%conn(a, e))
@@ -256,6 +289,10 @@ contains
                   s%sc(:, :, e), s%ec(:, :, e), s%hc(:, :, e), s%st(:, :, e), s%et(:, :, e), &
                   s%ht(:, :, e), fe(1:3*nen), want_k, ke(1:3*nen, 1:3*nen), s%dw(e), &
                   s%cauchy(:, e), s%havg(:, e), ierr)
+               if (ierr /= 0 .and. sys%par%on) then   ! MPI: the first failure over the ranks
+                  kfail = 2*(sys%eoff(b) + e) + merge(0, 1, ierr == TL_ERR_JAC)
+                  exit
+               end if
                if (ierr /= 0) then
                   if (ierr == TL_ERR_JAC) then
                      call set_error(error, 'element '//str(model%elem_label(blk%elem(e)))// &
@@ -275,10 +312,43 @@ contains
                                          blk%conn(:, e), ke)
             end do
          end associate
+         if (kfail < huge(kfail)) exit
       end do
+      if (sys%par%on) then
+         call ipar_first(sys%par, kfail)
+         if (kfail < huge(kfail)) then
+            call element_failed(model, sys, kfail, error)
+            return
+         end if
+         call ipar_sum(sys%par, fint)
+      end if
       if (sys%has_contact) call icon_assemble(model, sys%con, u, want_k, fint, sys%k, sys%nel, &
                                               sys%rig)
    end subroutine isys_assemble
+
+   !> MPI: the message of the failed element of key 2 idx + (0: Jacobian, 1: material), idx
+   !> its assembly index (the same message as the serial run's, on every rank).
+   subroutine element_failed(model, sys, key, error)
+      type(model_t), intent(in) :: model
+      type(implicit_system_t), intent(in) :: sys
+      integer, intent(in) :: key
+      type(error_t), allocatable, intent(out) :: error
+      integer :: b, e, q
+      q = key/2
+      b = count(sys%eoff < q)
+      e = q - sys%eoff(b)
+      associate (blk => model%blocks(b))
+         if (mod(key, 2) == 0) then
+            call set_error(error, 'element '//str(model%elem_label(blk%elem(e)))// &
+               ' (part '//str(model%parts(blk%ipart)%label)//'): a Jacobian <= 0 '// &
+               '(inverted element)', EXIT_NUMERIC)
+         else
+            call set_error(error, 'element '//str(model%elem_label(blk%elem(e)))// &
+               ' (part '//str(model%parts(blk%ipart)%label)//'): the material '// &
+               'update failed', EXIT_NUMERIC)
+         end if
+      end associate
+   end subroutine element_failed
 
    !> The contact candidates re-found from the committed displacements u (after a converged
    !> step); when they changed, the sparse pattern is formed anew (changed: the caller
@@ -349,6 +419,7 @@ contains
          if (sys%rblock(b)) cycle
          associate (blk => model%blocks(b), s => sys%bs(b))
             s%sc = s%st; s%ec = s%et; s%hc = s%ht
+            if (sys%par%on) call gather_fields(sys%par, blk%elem, s)
             s%wc = s%wc + s%dw
             blk%eint = s%wc
             do ip = 1, blk%nip
@@ -362,6 +433,29 @@ contains
          end associate
       end do
    end subroutine isys_commit
+
+   !> MPI: a block's plot fields and work increments from their owners (zero elsewhere).
+   subroutine gather_fields(ip, elem, s)
+      type(ipar_t), intent(in) :: ip
+      integer, intent(in) :: elem(:)
+      type(block_state_t), intent(inout) :: s
+      real(wp), allocatable :: buf(:)
+      integer :: n6, nh, ne, e
+      ne = size(s%dw)
+      n6 = size(s%cauchy)
+      nh = size(s%havg)
+      where (.not. ip%own(elem(1:ne))) s%dw = 0.0_wp
+      do e = 1, ne
+         if (ip%own(elem(e))) cycle
+         s%cauchy(:, e) = 0.0_wp
+         s%havg(:, e) = 0.0_wp
+      end do
+      buf = [reshape(s%cauchy, [n6]), reshape(s%havg, [nh]), s%dw]
+      call ipar_exact(ip, buf)
+      s%cauchy = reshape(buf(1:n6), shape(s%cauchy))
+      s%havg = reshape(buf(n6 + 1:n6 + nh), shape(s%havg))
+      s%dw = buf(n6 + nh + 1:)
+   end subroutine gather_fields
 
    !> External forces at time t on the geometry model%x (zeroed first).
    subroutine isys_external(model, t, fext)
@@ -475,4 +569,74 @@ contains
    integer function isys_comm()
       isys_comm = par_self_handle()
    end function isys_comm
+
+   !> This rank adds the terms the system takes once (rigid bodies' inertia and rotation
+   !> terms, the mass diagonal): rank 0, or the serial run.
+   logical function isys_root(sys)
+      type(implicit_system_t), intent(in) :: sys
+      isys_root = .not. sys%par%on .or. sys%par%me == 0
+   end function isys_root
+
+   !> An MPI run on more than one rank (dx_implicit_par).
+   logical function isys_mpi(sys)
+      type(implicit_system_t), intent(in) :: sys
+      isys_mpi = sys%par%on
+   end function isys_mpi
+
+   !> The ranks of the run (1: serial).
+   integer function isys_nranks()
+      isys_nranks = par_size()
+   end function isys_nranks
+
+   !> MPI: the communicator of the run and this rank's entries (for dx_mumps's analysis).
+   subroutine isys_analyse_entries(sys, comm, loc)
+      type(implicit_system_t), intent(in) :: sys
+      integer, intent(out) :: comm
+      integer, allocatable, intent(out) :: loc(:)
+      comm = ipar_comm()
+      loc = sys%par%loc
+   end subroutine isys_analyse_entries
+
+   !> x from rank 0 to every rank (MPI; no-op serially).
+   subroutine isys_bcast(sys, x)
+      type(implicit_system_t), intent(in) :: sys
+      real(wp), intent(inout) :: x(:)
+      call ipar_bcast(sys%par, x)
+   end subroutine isys_bcast
+
+   subroutine isys_bcast_int(sys, iv)
+      type(implicit_system_t), intent(in) :: sys
+      integer, intent(inout) :: iv(:)
+      call ipar_bcast_int(sys%par, iv)
+   end subroutine isys_bcast_int
+
+   !> MPI: after the start and every step, a failure known to every rank (dx_par_agree).
+   subroutine isys_agree(error)
+      type(error_t), allocatable, intent(inout) :: error
+      call ipar_agree(error)
+   end subroutine isys_agree
+
+   logical function isys_agreed(sys)
+      type(implicit_system_t), intent(in) :: sys
+      isys_agreed = ipar_agreed(sys%par)
+   end function isys_agreed
+
+   !> The stop/dump requests reduced over the ranks (dx_checkpoint, replicated runs).
+   subroutine isys_max_flags(flags)
+      integer, intent(inout) :: flags(:)
+      call ipar_max_flags(flags)
+   end subroutine isys_max_flags
+
+   !> MPI: the owned entries of the tangent summed from every rank that touches them (before
+   !> each factorization; no-op serially).
+   subroutine isys_sum_entries(sys)
+      type(implicit_system_t), intent(inout) :: sys
+      call ipar_assemble(sys%par, sys%k)
+   end subroutine isys_sum_entries
+
+   !> MPI: the whole tangent on every rank (the singular-stiffness diagnosis).
+   subroutine isys_global(sys)
+      type(implicit_system_t), intent(inout) :: sys
+      call ipar_global(sys%par, sys%k)
+   end subroutine isys_global
 end module dx_implicit_system

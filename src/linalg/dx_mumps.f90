@@ -13,6 +13,12 @@
 !> -10 (numerically singular) is reported the same way.
 !> comm: the MPI communicator's Fortran handle (a serial run: MPI_COMM_SELF, which the
 !> engine's dx_par%par_self_handle gives after starting MPI; linalg itself uses no MPI).
+!> MPI runs (loc given to analyse): the distributed assembled input (ICNTL(18) = 3, users'
+!> guide 5.2.2.2): each rank passes the entries loc(:) of s that it assembled (IRN_loc,
+!> JCN_loc, A_loc; MUMPS sums an entry given by several ranks), MUMPS factorizes on every
+!> rank of comm; the right-hand side and the solution are centralized on the host (rank 0
+!> of comm: ICNTL(20) = 0, ICNTL(21) = 0): solve's b is the solution on the host only (the
+!> caller broadcasts it); INFOG (nnull) is global, null_eq is the host's.
 module dx_mumps
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_NUMERIC
@@ -37,6 +43,8 @@ module dx_mumps
       logical :: analysed = .false.    !< JOB = 1 done for the current pattern
       integer :: nnull = 0             !< null pivots of the last factorization
       integer, allocatable :: null_eq(:)   !< their equations
+      logical :: dist = .false.            !< distributed assembled input (ICNTL(18) = 3)
+      integer, allocatable :: loc(:)       !< its entries (positions in the matrix's values)
       real(wp) :: null_tol = 1.0e-12_wp    !< CNTL(3): null pivot threshold relative to ||A||
    contains
       procedure :: analyse => m_analyse
@@ -48,11 +56,12 @@ module dx_mumps
 contains
 
    !> Init (first call) and the analysis of s's pattern (ordering, symbolic factorization).
-   subroutine m_analyse(self, s, comm, error)
+   subroutine m_analyse(self, s, comm, error, loc)
       class(mumps_t), intent(inout) :: self
       type(sparse_sym_t), intent(in) :: s
       integer, intent(in) :: comm
       type(error_t), allocatable, intent(out) :: error
+      integer, intent(in), optional :: loc(:)   !< MPI: this rank's entries (distributed input)
       if (.not. self%on) then
          self%id%COMM = comm
          self%id%SYM = 2
@@ -72,11 +81,15 @@ contains
       if (associated(self%id%A)) deallocate(self%id%A)
       if (associated(self%id%RHS)) deallocate(self%id%RHS)
       self%id%N = s%n
-      self%id%NNZ = int(s%nnz, kind(self%id%NNZ))
-      allocate(self%id%IRN(s%nnz), self%id%JCN(s%nnz), self%id%A(s%nnz), self%id%RHS(s%n))
-      self%id%IRN = s%irn
-      self%id%JCN = s%col
-      self%id%A = 0.0_wp
+      if (present(loc)) then
+         call dist_entries(self, s, loc)
+      else
+         self%id%NNZ = int(s%nnz, kind(self%id%NNZ))
+         allocate(self%id%IRN(s%nnz), self%id%JCN(s%nnz), self%id%A(s%nnz), self%id%RHS(s%n))
+         self%id%IRN = s%irn
+         self%id%JCN = s%col
+         self%id%A = 0.0_wp
+      end if
       self%id%JOB = 1
       call dmumps(self%id)
       if (self%id%INFOG(1) < 0) then
@@ -98,7 +111,11 @@ contains
          return
       end if
       call quiet(self)
-      self%id%A = s%a
+      if (self%dist) then
+         self%id%A_loc = s%a(self%loc)
+      else
+         self%id%A = s%a
+      end if
       self%id%ICNTL(24) = 1
       self%id%CNTL(3) = self%null_tol
       self%id%JOB = 2
@@ -117,9 +134,12 @@ contains
       if (self%id%INFOG(28) > 0) then
          self%nnull = self%id%INFOG(28)
          allocate(self%null_eq(self%nnull))
-         do k = 1, self%nnull
-            self%null_eq(k) = self%id%PIVNUL_LIST(k)
-         end do
+         self%null_eq = 0
+         if (self%id%MYID == 0) then       ! (the host's list; MPI: the caller broadcasts it)
+            do k = 1, self%nnull
+               self%null_eq(k) = self%id%PIVNUL_LIST(k)
+            end do
+         end if
       end if
    end subroutine m_factor
 
@@ -147,11 +167,37 @@ contains
       if (associated(self%id%JCN)) deallocate(self%id%JCN)
       if (associated(self%id%A)) deallocate(self%id%A)
       if (associated(self%id%RHS)) deallocate(self%id%RHS)
+      call free_loc(self)
       self%id%JOB = -2
       call dmumps(self%id)
       self%on = .false.
       self%analysed = .false.
    end subroutine m_finish
+
+   !> The distributed assembled input: this rank's entries loc of s's pattern (their
+   !> values at each factorization), the right-hand side on every rank (the host's is used).
+   subroutine dist_entries(self, s, loc)
+      class(mumps_t), intent(inout) :: self
+      type(sparse_sym_t), intent(in) :: s
+      integer, intent(in) :: loc(:)
+      call free_loc(self)
+      self%dist = .true.
+      self%loc = loc
+      self%id%ICNTL(18) = 3
+      self%id%NNZ_loc = int(size(loc), kind(self%id%NNZ_loc))
+      allocate(self%id%IRN_loc(size(loc)), self%id%JCN_loc(size(loc)), &
+               self%id%A_loc(size(loc)), self%id%RHS(s%n))
+      self%id%IRN_loc = s%irn(loc)
+      self%id%JCN_loc = s%col(loc)
+      self%id%A_loc = 0.0_wp
+   end subroutine dist_entries
+
+   subroutine free_loc(self)
+      class(mumps_t), intent(inout) :: self
+      if (associated(self%id%IRN_loc)) deallocate(self%id%IRN_loc)
+      if (associated(self%id%JCN_loc)) deallocate(self%id%JCN_loc)
+      if (associated(self%id%A_loc)) deallocate(self%id%A_loc)
+   end subroutine free_loc
 
    !> MUMPS prints nothing (errors come back through INFOG); METIS ordering.
    subroutine quiet(self)

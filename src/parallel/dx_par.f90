@@ -34,7 +34,7 @@ module dx_par
    public :: par_bcast_real, par_minloc8, par_comm, par_check
    public :: par_allgatherv_real, par_sparse_exchange, par_allgather_probe   ! (contact)
    public :: par_displs, par_counts
-   public :: par_self_handle   ! (the sparse direct solver, dx_mumps)
+   public :: par_self_handle, par_comm_handle   ! (the sparse direct solver, dx_mumps)
    public :: par_traffic_add, par_traffic_line, PAR_T_EXCH, PAR_T_P2P, PAR_T_COLL
    public :: par_allreduce_i8  ! (exact reproducible sums, dx_repro_sum)
 
@@ -113,6 +113,16 @@ contains
       if (.not. started) call MPI_Init(ierr)
       par_self_handle = MPI_COMM_SELF%MPI_VAL
    end function par_self_handle
+
+   !> The Fortran handle of the run's communicator (an MPI run of the implicit solver: MUMPS
+   !> factorizes on every rank); MPI_COMM_SELF's when MPI is not running on several ranks.
+   integer function par_comm_handle()
+      if (mpi_on) then
+         par_comm_handle = comm%MPI_VAL
+      else
+         par_comm_handle = par_self_handle()
+      end if
+   end function par_comm_handle
 
    integer function par_rank()
       par_rank = my_rank

@@ -38,7 +38,8 @@ module dx_eigen
    use dx_mumps, only: mumps_t
    use dx_lanczos, only: lanczos_modes
    use dx_implicit_system, only: implicit_system_t, isys_setup, isys_assemble, isys_comm, &
-                                 isys_gather, isys_scatter, isys_null_names
+                                 isys_gather, isys_scatter, isys_null_names, isys_nranks, &
+                                 isys_agree
    implicit none
    private
    public :: eigen_t
@@ -79,6 +80,13 @@ contains
          at = '*CONTROL_IMPLICIT_EIGENVALUE: '
          if (imp%eig_ifile > 0 .and. allocated(model%deck_files)) at = &
             model%deck_files(imp%eig_ifile)%s//':'//str(imp%eig_line)//': '//at
+         if (isys_nranks() > 1) then      ! (the domain is replicated: see dx_domain_mpi)
+            call set_error(error, at//'the eigenvalue run is not yet in an MPI run (the '// &
+               'implicit statics and dynamics are); run this deck serially (without mpirun)', &
+               EXIT_INPUT)
+            call isys_agree(error)       ! (every rank refuses: one message, no MPI_Abort)
+            return
+         end if
          call serial_fresh_only(model, dom, 'eigenvalue run', '', error)
          if (allocated(error)) return
          if (.not. allocated(model%x)) call init_state(model, dom)

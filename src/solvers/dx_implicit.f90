@@ -23,7 +23,10 @@
 !> pivots) names the free nodes and the rigid-body modes the stiffness does not resist.
 !> Energies (glstat): internal = the elements' stress work (trapezoid per step), external
 !> work = the trapezoid of the internal force (= the applied loads and reactions) over the
-!> step's displacement, kinetic 0. Serial only; no restart dumps of the implicit state.
+!> step's displacement, kinetic 0. No restart dumps of the implicit state.
+!> MPI runs (mpirun -np N): every rank repeats the Newton decisions on the same residual;
+!> each assembles its own elements and MUMPS factorizes on all ranks (dx_implicit_par);
+!> a failure is agreed after every step, stop/dump requests are reduced (replicated run).
 module dx_implicit
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_NUMERIC, EXIT_INPUT
@@ -32,7 +35,7 @@ module dx_implicit
    use dx_timer, only: wall_time, peak_memory_kb
    use dx_model, only: model_t
    use dx_output, only: output_t
-   use dx_checkpoint, only: checkpoint_t
+   use dx_checkpoint, only: checkpoint_t, checkpoint_requests
    use dx_domain, only: domain_t
    use dx_integrator, only: integrator_t, run_options_t, END_FAILED, END_STOPPED, &
                             serial_fresh_only, close_files
@@ -42,7 +45,9 @@ module dx_implicit
    use dx_implicit_system, only: implicit_system_t, isys_setup, isys_assemble, isys_commit, &
                                  isys_external, isys_prescribe, isys_comm, isys_gather, &
                                  isys_scatter, isys_null_names, isys_fix, isys_refind, &
-                                 isys_reset
+                                 isys_reset, isys_root, isys_mpi, isys_analyse_entries, &
+                                 isys_bcast, isys_bcast_int, isys_agree, isys_agreed, &
+                                 isys_max_flags, isys_global, isys_sum_entries
    use dx_implicit_rigid, only: irig_geo, irig_inertia, irig_start_dyn, irig_kinetic, &
                                 irig_velocity
    implicit none
@@ -69,8 +74,8 @@ module dx_implicit
       real(wp) :: tfac = 0.0_wp, tasm = 0.0_wp, tana = 0.0_wp   !< wall seconds: factor+solve, assembly, analysis
       real(wp) :: hfac = -1.0_wp           !< linear runs: the step of the factorization kept
    contains
-      procedure :: start => i_start
-      procedure :: step => i_step
+      procedure :: start => i_start_agreed
+      procedure :: step => i_step_agreed
       procedure :: advance => i_advance
       procedure :: close => i_close
    end type implicit_t
@@ -127,8 +132,9 @@ contains
             rstr(model%ctrl%imp%gamma, 6)//', BETA '//rstr(model%ctrl%imp%beta, 6)// &
             ', HHT ALPHA '//rstr(model%ctrl%imp%alpha, 6)//', lumped mass')
       end if
+      ck%replicated = isys_mpi(self%sys)   ! MPI: stop/dump requests reduced over the ranks
       t0 = wall_time()
-      call self%ms%analyse(self%sys%k, isys_comm(), error)
+      call analyse(self, error)
       self%tana = wall_time() - t0
       if (allocated(error)) return
       call log_info('dynx: implicit: '//str(self%sys%neq)//' equations, '// &
@@ -161,6 +167,45 @@ contains
       self%t0wall = wall_time()
       if (ck%wall0 <= 0.0_wp) ck%wall0 = self%t0wall
    end subroutine i_start
+
+   !> The sparse solver's analysis of the pattern (MPI: this rank's entries, every rank).
+   subroutine analyse(self, error)
+      class(implicit_t), intent(inout) :: self
+      type(error_t), allocatable, intent(out) :: error
+      integer :: comm
+      integer, allocatable :: loc(:)
+      if (isys_mpi(self%sys)) then
+         call isys_analyse_entries(self%sys, comm, loc)
+         call self%ms%analyse(self%sys%k, comm, error, loc)
+      else
+         call self%ms%analyse(self%sys%k, isys_comm(), error)
+      end if
+   end subroutine analyse
+
+   !> The start, then (MPI) a failure known to every rank: each rank found the same.
+   subroutine i_start_agreed(self, model, dom, opts, ck, out, error)
+      class(implicit_t), intent(inout) :: self
+      type(model_t), intent(inout), target :: model
+      class(domain_t), intent(inout) :: dom
+      type(run_options_t), intent(in) :: opts
+      type(checkpoint_t), intent(inout) :: ck
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      call i_start(self, model, dom, opts, ck, out, error)
+      call isys_agree(error)
+   end subroutine i_start_agreed
+
+   !> One step, then (MPI) a failure known to every rank: each rank found the same.
+   subroutine i_step_agreed(self, model, dom, ck, out, error)
+      class(implicit_t), intent(inout) :: self
+      type(model_t), intent(inout), target :: model
+      class(domain_t), intent(inout) :: dom
+      type(checkpoint_t), intent(inout) :: ck
+      type(output_t), intent(inout) :: out
+      type(error_t), allocatable, intent(out) :: error
+      call i_step(self, model, dom, ck, out, error)
+      call isys_agree(error)
+   end subroutine i_step_agreed
 
    real(wp) function dtmin_of(model)
       type(model_t), intent(in) :: model
@@ -235,7 +280,7 @@ contains
       if (tn < self%tend) call isys_refind(model, self%sys, self%u, changed, error)
       if (allocated(error)) return
       if (changed) then        ! new contact candidates: the pattern analysed again
-         call self%ms%analyse(self%sys%k, isys_comm(), error)
+         call analyse(self, error)
          if (allocated(error)) return
          call log_info('dynx: implicit: contact candidates re-found: '// &
             str(self%sys%con%np)//' pairs, '//str(self%sys%k%nnz)//' stored entries')
@@ -390,7 +435,8 @@ contains
          if (allocated(error)) return
          if (.not. self%dyn) then
             call isys_gather(self%sys, self%fext - self%fint, self%r, model)
-            if (want_k) call irig_geo(self%sys%rig, model, self%fext - self%fint, self%sys%k)
+            if (want_k .and. isys_root(self%sys)) &     ! (MPI: rank 0 adds it once)
+               call irig_geo(self%sys%rig, model, self%fext - self%fint, self%sys%k)
             return
          end if
          ! Newmark: a(n+1) from u(n+1); HHT: r = (1 + alpha)(f_ext - f_int)(n+1)
@@ -402,11 +448,14 @@ contains
             call isys_gather(self%sys, vnet, self%r, model)
             if (want_k) then
                self%sys%k%a = (1.0_wp + al)*self%sys%k%a
-               self%sys%k%a(self%sys%k%dg) = &
-                  self%sys%k%a(self%sys%k%dg) + self%meq/(be*h*h)
-               call irig_geo(self%sys%rig, model, vnet, self%sys%k)
+               if (isys_root(self%sys)) then     ! (MPI: rank 0 adds them once)
+                  self%sys%k%a(self%sys%k%dg) = &
+                     self%sys%k%a(self%sys%k%dg) + self%meq/(be*h*h)
+                  call irig_geo(self%sys%rig, model, vnet, self%sys%k)
+               end if
             end if
-            call irig_inertia(self%sys%rig, h, be, want_k, self%r, self%sys%k)
+            call irig_inertia(self%sys%rig, h, be, want_k .and. isys_root(self%sys), self%r, &
+                              self%sys%k)
          end associate
       end subroutine residual
 
@@ -417,6 +466,7 @@ contains
          ! NSOLVR 1 takes elastic materials only: K (and K_eff at the same step) is the same
          ! matrix every step, so its factorization is kept
          if (.not. (self%sys%linear .and. h == self%hfac)) then
+            call isys_sum_entries(self%sys)        ! (MPI: each entry on its owner)
             call self%ms%factor(self%sys%k, error)
             if (allocated(error)) return
             self%nfactor = self%nfactor + 1
@@ -428,6 +478,7 @@ contains
          end if
          self%du = self%r
          call self%ms%solve(self%du, error)
+         call isys_bcast(self%sys, self%du)     ! (MPI: the host's solution)
          self%tfac = self%tfac + (wall_time() - t0)
       end subroutine factor_solve
    end subroutine newton
@@ -448,6 +499,8 @@ contains
       character(16), parameter :: names(6) = [character(16) :: 'translation x', 'translation y', &
          'translation z', 'rotation about x', 'rotation about y', 'rotation about z']
       allocate(m(3, model%nn), mv(self%sys%neq), km(self%sys%neq))
+      call isys_global(self%sys)                        ! (MPI: the whole K, the host's
+      call isys_bcast_int(self%sys, self%ms%null_eq)    ! null pivots on every rank)
       xc = sum(model%x0, dim=2)/real(max(1, model%nn), wp)
       kmax = 0.0_wp
       do i = 1, self%sys%neq
@@ -498,6 +551,7 @@ contains
       type(checkpoint_t), intent(inout) :: ck
       model%time = self%t
       model%cycle = self%nsteps
+      call checkpoint_requests(ck, model, isys_max_flags)   ! (MPI: reduced; else no-op)
    end subroutine i_advance
 
    subroutine i_close(self, model, dom, ck, out, how, error)
@@ -509,7 +563,8 @@ contains
       integer, intent(in) :: how
       type(error_t), allocatable, intent(inout) :: error
       type(error_t), allocatable :: ioerr
-      call self%ms%finish()
+      ! (MPI: a failure of one rank alone aborts the run: no collective call then)
+      if (how /= END_FAILED .or. isys_agreed(self%sys)) call self%ms%finish()
       if (how == END_STOPPED) return
       model%time = self%t
       if (how == END_FAILED) then
