@@ -12,11 +12,25 @@ glass surface at z = 0, silica below it). Units mm, ms, kg, GPa.
       0.05, 60 ns. H: element size in mm (default 0.005); SF: the table's scale factor
       (*DYNX_PRESSURE_TABLE SF, default 1: 100 kbar).
 
+  gen_laser2d_decks.py subsurface DIR [--m M] [--rate RATE]
+      Scene 4, sub-surface: a cerium oxide particle 100 nm across, its centre 300 nm under the
+      surface, in silica (crack model), energy deposited into it at the constant RATE (per
+      radian, J/ms; default 2e-6: chosen so that the particle pressure peaks at about the
+      seed's 1.8 ns on M = 8; the seed gives no energy) for 3 ns, 3.5 ns run. The particle is *MAT_NULL with
+      *EOS_LINEAR_POLYNOMIAL p = C1 mu + (C4 + C5 mu) E (the seed: "a linear polynomial EOS
+      with energy-dependent bulk modulus and Gruneisen gamma"): rho 7.22 g/cm3, C1 = K = 220
+      GPa, C4 = C5 = gamma = 1.5 (assumed, handbook-order values for CeO2; the seed gives none).
+      Mesh: an O-grid around the particle (its core a half-square of 25 nm, 4M arcs over the
+      half circle, graded rings out to a half-square of 300 nm whose top is the surface) and
+      graded blocks to r = 1.5 um and z = -1.5 um, non-reflecting side and bottom, particle
+      and glass sharing their nodes (bonded). M (default 8): the mesh density.
+
 Silica constants (both scenes): rho 2.2 g/cm3, E 72 GPa, nu 0.17 (fused silica handbook
 values); crack model FT 0.5 GPa, SIGC 6 GPa, YCF 1 GPa, EPSC 0.01: the illustrative values of
 decks/brittle_impact (docs/damage.md), not the seed's (it gives none).
 """
 import argparse
+import math
 import os
 import shutil
 import sys
@@ -64,15 +78,120 @@ def backside(d, h, sf=1.0):
     print(f'backside: {len(xy)} nodes, {len(quads)} quads, h = {h*1e3:g} um')
 
 
+def _geo(q, n):
+    """Fractions 0..1 of n intervals growing by the factor q."""
+    return [(q**i - 1.0)/(q**n - 1.0) for i in range(n + 1)]
+
+
+def subsurface(d, m, rate, tend=3.5e-6, tdep=3.0e-6):
+    a, zc, big = 5.0e-5, -3.0e-4, 1.5e-3          # particle radius, centre, block (mm)
+    b, c = 0.5*a, -zc                             # core and outer half-squares (c = 300 nm)
+    nodes, keys, quads, pids = [], {}, [], []
+
+    def node(x, y):
+        k = (round(x*1e13), round(y*1e13))
+        if k not in keys:
+            keys[k] = len(nodes) + 1
+            nodes.append((x, y))
+        return keys[k]
+
+    def square(h, s):                             # the half-square of half-size h, s in 0..4m
+        if s <= m:
+            return (h*s/m, zc - h)
+        if s <= 3*m:
+            return (h, zc - h + h*(s - m)/m)
+        return (h*(4*m - s)/m, zc + h)
+
+    def circle(s):
+        x, y = square(1.0, s)
+        y -= zc
+        r = math.hypot(x, y)
+        return (a*x/r, zc + a*y/r)
+
+    def quad(n1, n2, n3, n4, pid):
+        (x1, y1), (x2, y2), (x3, y3), (x4, y4) = (nodes[n - 1] for n in (n1, n2, n3, n4))
+        ar = (x3 - x1)*(y4 - y2) - (x4 - x2)*(y3 - y1)
+        quads.append((n1, n2, n3, n4) if ar > 0 else (n1, n4, n3, n2))
+        pids.append(pid)
+
+    # particle core: (m + 1) x (2m + 1) nodes on the half-square of half-size b
+    core = [[node(b*i/m, zc - b + b*j/m) for j in range(2*m + 1)] for i in range(m + 1)]
+    for i in range(m):
+        for j in range(2*m):
+            quad(core[i][j], core[i + 1][j], core[i + 1][j + 1], core[i][j + 1], 2)
+    # rings: core square -> circle (particle), circle -> square c (glass, graded)
+    k1 = max(2, m//2)
+    k2 = 2*m
+    tg = _geo(1.12, k2)
+    rings = []
+    for k in range(k1 + 1):
+        t = k/k1
+        rings.append([node(*[(1 - t)*p + t*q for p, q in zip(square(b, s), circle(s))])
+                      for s in range(4*m + 1)])
+    for k in range(1, k2 + 1):
+        t = tg[k]
+        rings.append([node(*[(1 - t)*p + t*q for p, q in zip(circle(s), square(c, s))])
+                      for s in range(4*m + 1)])
+    for k in range(k1 + k2):
+        for s in range(4*m):
+            quad(rings[k][s], rings[k][s + 1], rings[k + 1][s + 1], rings[k + 1][s],
+                 2 if k < k1 else 1)
+    # right block r = c..big over z = -2c..0, bottom block z = -big..-2c over r = 0..big
+    nr = 3*m//2
+    rr = [c + (big - c)*f for f in _geo(1.25, nr)]
+    right = [[node(rr[i], zc - c + c*j/m) for j in range(2*m + 1)] for i in range(nr + 1)]
+    for i in range(nr):
+        for j in range(2*m):
+            quad(right[i][j], right[i + 1][j], right[i + 1][j + 1], right[i][j + 1], 1)
+    xs = [c*i/m for i in range(m)] + rr
+    nz = 3*m//2
+    zz = [zc - c - (big + zc - c)*f for f in _geo(1.25, nz)]
+    bot = [[node(x, z) for z in zz] for x in xs]
+    for i in range(len(xs) - 1):
+        for j in range(nz):
+            quad(bot[i][j + 1], bot[i + 1][j + 1], bot[i + 1][j], bot[i][j], 1)
+    surf = [n for n, (x, y) in enumerate(nodes, 1) if abs(y) < 1e-12]
+    nrb = [n for n, (x, y) in enumerate(nodes, 1) if abs(x - big) < 1e-12 or abs(y + big) < 1e-12]
+    s = ['*KEYWORD', '*TITLE',
+         f'Sub-surface CeO2 particle (100 nm, 300 nm deep) in silica, energy deposited, m = {m}',
+         f'$ generated by scripts/gen_laser2d_decks.py subsurface DIR --m {m} --rate {rate:g}',
+         '*CONTROL_TERMINATION', f'{tend:10.3e}',
+         '*CONTROL_HOURGLASS', '$      IHQ        QH', f'{4:10d}{0.05:10.3f}',
+         '*DATABASE_GLSTAT', f'{tend/70:10.3e}', '*DATABASE_BINARY_D3PLOT', f'{tend/35:10.3e}',
+         '*SECTION_SHELL', '$    SECID    ELFORM', f'{1:10d}{15:10d}', '$       T1', '       0.0']
+    s += silica_cards(1)
+    s += ['*MAT_NULL', '$      MID        RO        PC        MU',
+          f'{2:10d}{7.22e-6:10.3e}{-1.0e3:10.1f}{0.0:10.1f}', '*EOS_LINEAR_POLYNOMIAL',
+          '$    EOSID        C0        C1        C2        C3        C4        C5        C6',
+          f'{1:10d}{0.0:10.1f}{220.0:10.1f}{0.0:10.1f}{0.0:10.1f}{1.5:10.2f}{1.5:10.2f}'
+          f'{0.0:10.1f}', '$       E0        V0', f'{0.0:10.1f}{1.0:10.1f}',
+          '*PART', 'silica', f'{1:10d}{1:10d}{1:10d}', '*PART', 'cerium oxide particle',
+          f'{2:10d}{1:10d}{2:10d}{1:10d}']
+    s += nr2d.mesh_cards(nodes, quads, pids)
+    s += nr2d.node_set(2, sorted(nrb))
+    s += ['*BOUNDARY_NON_REFLECTING_2D', '$     NSID        AD        AS',
+          f'{2:10d}{0:10d}{0:10d}',
+          '*DYNX_ENERGY_DEPOSITION', '$      PID      RATE    TSTART      TEND',
+          f'{2:10d}{rate:10.4g}{0.0:10.4g}{tdep:10.4g}', '*END']
+    os.makedirs(d, exist_ok=True)
+    nr2d.write(os.path.join(d, 'deck.k'), s)
+    print(f'subsurface: {len(nodes)} nodes, {len(quads)} quads ({pids.count(2)} particle), '
+          f'{len(surf)} surface nodes, m = {m}')
+
+
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument('what', choices=['backside'])
+    ap.add_argument('what', choices=['backside', 'subsurface'])
     ap.add_argument('dir')
     ap.add_argument('--h', type=float, default=0.005)
     ap.add_argument('--sf', type=float, default=1.0, help='backside: the table scale factor')
+    ap.add_argument('--m', type=int, default=8, help='subsurface: mesh density')
+    ap.add_argument('--rate', type=float, default=2e-6, help='subsurface: J/ms per radian')
     a = ap.parse_args()
     if a.what == 'backside':
         backside(a.dir, a.h, a.sf)
+    else:
+        subsurface(a.dir, a.m, a.rate)
 
 
 if __name__ == '__main__':
