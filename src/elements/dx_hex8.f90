@@ -1,7 +1,6 @@
-!> Hex8 element kernels over one element block (at most nv_chunk elements): gather nodal
-!> coordinates and velocities, strain increment at the mid-step geometry, Jaumann rotation,
-!> material update (one dispatch per block), bulk viscosity, hourglass control, internal force
-!> scatter, internal/hourglass energy and the element stable time step.
+!> Hex8 element kernels over one element block (at most nv_chunk elements): gather nodal x and v,
+!> strain increment at the mid-step geometry, Jaumann rotation, material update (one dispatch per
+!> block), bulk viscosity, hourglass, internal force scatter, energies, element stable time step.
 !> ELFORM 1: uniform-strain one-point hex with hourglass control (Flanagan & Belytschko 1981,
 !> IJNME 17:679-706): IHQ 1 = viscous on the base vectors Gamma (Kosloff-Frasier / DYNA
 !> standard), IHQ 2,3 = viscous on the FB orthogonal vectors gamma, IHQ 4,5 = stiffness on
@@ -504,16 +503,19 @@ contains
    !> (wo, wn = dt sigma_old:D V, dt sigma_new:D V); the viscosity force q B(x(n)) uses
    !> bvn = B(n).v(n-1/2) and B(n-1).v(n-1/2) from Simpson's rule, exact for the cubic V(x):
    !> V(n) - V(n-1) = dt/6 (B(n-1) + 4 B(n-1/2) + B(n)).v(n-1/2), bvm = B(n-1/2).v(n-1/2).
-   !> s1..s4 = q, q bvn, dt, sigma:D V of the last pass (the element's ework row).
-   pure subroutine centred_work(s1, s2, s3, s4, dt, wo, wn, q, vol, vol_old, bvn, bvm, de)
+   !> s1..s4 = q, q bvn, dt, sigma:D V of the last pass (the element's ework row). bvpx: B(n-1).
+   !> v(n-1/2) itself, given where B is not dV/dx (axisymmetric quads; Simpson books the exact dV).
+   pure subroutine centred_work(s1, s2, s3, s4, dt, wo, wn, q, vol, vol_old, bvn, bvm, de, bvpx)
       real(wp), intent(inout) :: s1, s2, s3, s4
       real(wp), intent(in) :: dt, wo, wn, q, vol, vol_old, bvn, bvm
       real(wp), intent(out) :: de
+      real(wp), intent(in), optional :: bvpx
       real(wp) :: bvp, pn
       de = 0.0_wp
       pn = 0.0_wp
       if (dt > 0.0_wp) then
-         bvp = 6.0_wp*(vol - vol_old)/dt - 4.0_wp*bvm - bvn
+         if (present(bvpx)) bvp = bvpx
+         if (.not. present(bvpx)) bvp = 6.0_wp*(vol - vol_old)/dt - 4.0_wp*bvm - bvn
          pn = wn/dt
          de = 0.5_wp*(wo + wn) + 0.25_wp*(dt - s3)*(s4 - wo/dt) &
               - (0.25_wp*(s3 + dt)*s1*bvp + 0.25_wp*(dt - s3)*s2 + 0.5_wp*dt*q*bvn)
@@ -530,20 +532,23 @@ contains
    !> that failed in this pass gets alive = 0 on return (no force from now on). (hex8_sri
    !> keeps its one loop: split in two, the pending power is no longer fused, FMA, with
    !> q B.v and its last digit changes, e.g. glstat of patch_rigid_rotation_elform2.)
-   subroutine centred_work_block(blk, n, w, dt, wo, wn, q, vol, vold, bvn, bvm, alive, res)
+   subroutine centred_work_block(blk, n, w, dt, wo, wn, q, vol, vold, bvn, bvm, alive, res, bvpx)
       type(elem_block_t), intent(inout) :: blk
       integer, intent(in) :: n, w
       real(wp), intent(in) :: dt
       real(wp), dimension(:), intent(in) :: wo, wn, q, vol, vold, bvn, bvm
       real(wp), intent(inout) :: alive(:)
       type(block_result_t), intent(inout) :: res
+      real(wp), intent(in), optional :: bvpx(:)
       real(wp), dimension(nv_chunk) :: e1, e2, e3, e4, de
       integer :: i
       e1(1:n) = blk%es(1:n, w); e2(1:n) = blk%es(1:n, w + 1)
       e3(1:n) = blk%es(1:n, w + 2); e4(1:n) = blk%es(1:n, w + 3)
       do i = 1, n
-         call centred_work(e1(i), e2(i), e3(i), e4(i), dt, wo(i), wn(i), q(i), vol(i), &
-                           vold(i), bvn(i), bvm(i), de(i))
+         if (present(bvpx)) call centred_work(e1(i), e2(i), e3(i), e4(i), dt, wo(i), wn(i), &
+            q(i), vol(i), vold(i), bvn(i), bvm(i), de(i), bvpx(i))
+         if (.not. present(bvpx)) call centred_work(e1(i), e2(i), e3(i), e4(i), dt, wo(i), &
+            wn(i), q(i), vol(i), vold(i), bvn(i), bvm(i), de(i))
       end do
       blk%es(1:n, w) = e1(1:n); blk%es(1:n, w + 1) = e2(1:n)
       blk%es(1:n, w + 2) = e3(1:n); blk%es(1:n, w + 3) = e4(1:n)

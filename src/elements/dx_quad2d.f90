@@ -33,7 +33,8 @@
 !> geometry, Jaumann rotation (spin w_xy only), one material dispatch per block with the 3D
 !> strain increment (xx, yy, zz = hoop or 0, xy), DYNA bulk viscosity q with the time step's
 !> length L (one length for both, issue 15), the centred work of stress and viscosity
-!> (dx_hex8's centred_work_block; V is quadratic (13) or cubic (14, 15) in x, Simpson exact).
+!> (dx_hex8's centred_work_block; 12, 13: B = dA/dx, Simpson exact; 14, 15: the one-point B is
+!> not dV/dx, so the work of the last pass's q gets B(n-1).v(n-1/2) itself, quad2d_bdotv).
 !> Hourglass: Flanagan & Belytschko 1981 (IJNME 17:679-706) for the 4-node quad, viscous:
 !> gamma_I = h_I - (h.x) b_xI - (h.y) b_yI, h = (1, -1, 1, -1), modal rates q_i = gamma_I v_iI,
 !> f_iI += a_h q_i gamma_I with a_h = QH rho c sqrt(A) t (t = 1 plane strain, rbar per radian):
@@ -102,6 +103,30 @@ contains
       end if
    end subroutine quad2d_geometry
 
+   !> The power per unit viscosity of the bulk-viscosity nodal forces -q (the B terms and the
+   !> formulation's hoop term, as the force pass applies them) at velocities vx, vy: rbar B.v +
+   !> A vbar_r (15), sum r_I B_rI v_rI + rbar B_z.v_z (14). Not dV/dt: the one-point B is not
+   !> the gradient of int r dA (10 % apart on a distorted quad), so the centred work is given it.
+   pure subroutine quad2d_bdotv(n, aw, x, vx, vy, bx, by, a, v, vr, bv)
+      integer, intent(in) :: n
+      logical, intent(in) :: aw
+      real(wp), dimension(:, :), intent(in) :: x, vx, vy, bx, by
+      real(wp), dimension(:), intent(in) :: a, v, vr
+      real(wp), intent(out) :: bv(:)
+      real(wp) :: rb
+      integer :: i, k
+      do i = 1, n
+         bv(i) = 0.0_wp
+         if (.not. (a(i) > 0.0_wp)) cycle
+         rb = v(i)/a(i)
+         do k = 1, 4
+            if (aw) bv(i) = bv(i) + x(i, k)*bx(i, k)*vx(i, k) + rb*by(i, k)*vy(i, k)
+            if (.not. aw) bv(i) = bv(i) + bx(i, k)*vx(i, k) + by(i, k)*vy(i, k)
+         end do
+         if (.not. aw) bv(i) = rb*bv(i) + a(i)*vr(i)
+      end do
+   end subroutine quad2d_bdotv
+
    !> One explicit pass over a block of 2D quadrilaterals: x = x(n), v = v(n-1/2), dt_old =
    !> dt(n-1/2). Updates stress/history to t(n) and subtracts the internal force from f(1:2, :).
    subroutine quad2d_block(blk, mat, part, x, v, dt_old, f, res)
@@ -115,7 +140,7 @@ contains
       real(wp), dimension(nv_chunk, 4) :: xe, ye, vx, vy, xm, ym, bx, by, fx, fy, g, bxm, bym
       real(wp), dimension(nv_chunk) :: ar, arm, vol, volm, rb, rbm, rv, c, q, trd, w12, ein, rb0
       real(wp), dimension(nv_chunk) :: alive, bv, bvm, vold, lc, wo, wn
-      real(wp), dimension(nv_chunk) :: vr, vz, dh
+      real(wp), dimension(nv_chunk) :: vr, vz, dh, bvp
       real(wp) :: de6(nv_chunk, 6), so(nv_chunk, 6), sn(nv_chunk, 6)
       real(wp) :: deps(blk%nel, 6)
       real(wp) :: l11, l22, l12, l21, dtl, hdt, d1, d4, s1, s2, s4, hx, hy, hr, hz, ah, qx, qy
@@ -292,7 +317,16 @@ contains
             wn(i) = dt_old*pw(2)
          end if
       end do
-      call centred_work_block(blk, n, w, dt_old, wo, wn, q, vol, vold, bv, bvm, alive, res)
+      if (axi) then   ! the last pass's viscosity force: its one-point B(n-1).v(n-1/2) (header)
+         xm(1:n, :) = xe(1:n, :) - dt_old*vx(1:n, :)
+         ym(1:n, :) = ye(1:n, :) - dt_old*vy(1:n, :)
+         call quad2d_geometry(n, axi, xm, ym, bxm, bym, arm, volm)
+         call quad2d_bdotv(n, aw, xm, vx, vy, bxm, bym, arm, volm, vr, bvp)
+         call centred_work_block(blk, n, w, dt_old, wo, wn, q, vol, vold, bv, bvm, alive, res, &
+                                 bvp)
+      else
+         call centred_work_block(blk, n, w, dt_old, wo, wn, q, vol, vold, bv, bvm, alive, res)
+      end if
       ! ---- internal force: rbar (sigma - q) B_I plus the hoop term of the formulation
       do i = 1, n
          s1 = sn(i, 1) - q(i); s2 = sn(i, 2) - q(i); s4 = sn(i, 4)
