@@ -416,3 +416,28 @@ def block_taylor_axisym_fine(work):
 BLOCKS['taylor_axisym'] = ('decks/taylor_bar_axisym/README.md', True, block_taylor_axisym)
 BLOCKS['taylor_axisym_fine'] = ('decks/taylor_bar_axisym/README.md', False,
                                 block_taylor_axisym_fine)
+
+
+def block_elastic_wave(work):
+    """decks/elastic_wave/README.md: the scene deck against the analytic plateau and front
+    (dxpost.py wave; 71 cycles)."""
+    od, deck = os.path.join(work, 'ew'), os.path.join(ROOT, 'decks/elastic_wave/deck.k')
+    rc, log = sh([DYNX, '-i', deck, '-o', od])
+    cyc = int(re.search(r'normal termination at cycle (\d+)', log).group(1))
+    _, out = sh([PY, 'scripts/dxpost.py', 'wave', od])
+    t = float(re.search(r'^t (\S+)', out, re.M).group(1))
+    h = float(re.search(r'\bh (\S+)', out).group(1))
+    pl, plr = (float(x) for x in re.search(r'plateau stress \[GPa\]\s+(\S+)\s+reference\s+(\S+)',
+                                          out).groups())
+    xf, xr = (float(x) for x in re.search(r'front position \[mm\]\s+(\S+)\s+reference\s+(\S+)',
+                                          out).groups())
+    ov = float(re.search(r'overshoot \(min/plateau - 1\)\s+(\S+)', out).group(1))
+    return ('Numbers it reproduces (`scripts/doc_numbers.py`, checked by `make test`; %d cycles):'
+            '\n\n| quantity | dynx | analytic |\n|---|---|---|\n'
+            '| plateau stress [GPa] | %.7f | %.7f (relative error %+.2e) |\n'
+            '| front (half-plateau crossing) [mm] at t = %.6f ms | %.4f | %.4f (%+.3f mm = '
+            '%+.3f elements) |\n| overshoot min(sigma)/plateau - 1 | %.1e | 0 |'
+            % (cyc, pl, plr, (pl - plr) / plr, t, xf, xr, xf - xr, (xf - xr) / h, ov))
+
+
+BLOCKS['elastic_wave'] = ('decks/elastic_wave/README.md', True, block_elastic_wave)
