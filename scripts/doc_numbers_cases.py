@@ -441,3 +441,22 @@ def block_elastic_wave(work):
 
 
 BLOCKS['elastic_wave'] = ('decks/elastic_wave/README.md', True, block_elastic_wave)
+
+
+def block_plate_scene(work):
+    """decks/shell_projectile_plate/README.md: the 20 x 20 (the regression case's mesh) and
+    40 x 40 (this deck) rows of docs/studies/seed_scene_orders.md (the same generator and
+    deck; make studies; no rerun here, --check reruns the page's coarsest row)."""
+    rows = {r[0].split(' (')[0]: r for r in page_rows('docs/studies/seed_scene_orders.md', '')
+            if r[0] in ('20 x 20 (h 5 mm)', '40 x 40 (h 2.5 mm)')}
+    if len(rows) != 2:
+        raise SystemExit('doc_numbers_cases: seed_scene_orders.md lacks the plate rows')
+    a, b = rows['20 x 20'], rows['40 x 40']
+    return ('| | 20 x 20 (the regression case\'s mesh) | 40 x 40 (this deck) |\n|---|---|---|\n'
+            '| peak deflection of the plate centre | %s mm at %s ms | %s mm at %s ms |\n'
+            '| projectile rebound speed at 1 ms | %s m/s | %s m/s |\n'
+            '| energy ratio, largest departure from 1 | %s | %s |'
+            % (a[1], a[3], b[1], b[3], a[4], b[4], a[5], b[5]))
+
+
+BLOCKS['plate_scene'] = ('decks/shell_projectile_plate/README.md', True, block_plate_scene)
