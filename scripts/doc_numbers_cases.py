@@ -416,3 +416,47 @@ def block_taylor_axisym_fine(work):
 BLOCKS['taylor_axisym'] = ('decks/taylor_bar_axisym/README.md', True, block_taylor_axisym)
 BLOCKS['taylor_axisym_fine'] = ('decks/taylor_bar_axisym/README.md', False,
                                 block_taylor_axisym_fine)
+
+
+def block_elastic_wave(work):
+    """decks/elastic_wave/README.md: the scene deck against the analytic plateau and front
+    (dxpost.py wave; 71 cycles)."""
+    od, deck = os.path.join(work, 'ew'), os.path.join(ROOT, 'decks/elastic_wave/deck.k')
+    rc, log = sh([DYNX, '-i', deck, '-o', od])
+    cyc = int(re.search(r'normal termination at cycle (\d+)', log).group(1))
+    _, out = sh([PY, 'scripts/dxpost.py', 'wave', od])
+    t = float(re.search(r'^t (\S+)', out, re.M).group(1))
+    h = float(re.search(r'\bh (\S+)', out).group(1))
+    pl, plr = (float(x) for x in re.search(r'plateau stress \[GPa\]\s+(\S+)\s+reference\s+(\S+)',
+                                          out).groups())
+    xf, xr = (float(x) for x in re.search(r'front position \[mm\]\s+(\S+)\s+reference\s+(\S+)',
+                                          out).groups())
+    ov = float(re.search(r'overshoot \(min/plateau - 1\)\s+(\S+)', out).group(1))
+    return ('Numbers it reproduces (`scripts/doc_numbers.py`, checked by `make test`; %d cycles):'
+            '\n\n| quantity | dynx | analytic |\n|---|---|---|\n'
+            '| plateau stress [GPa] | %.7f | %.7f (relative error %+.2e) |\n'
+            '| front (half-plateau crossing) [mm] at t = %.6f ms | %.4f | %.4f (%+.3f mm = '
+            '%+.3f elements) |\n| overshoot min(sigma)/plateau - 1 | %.1e | 0 |'
+            % (cyc, pl, plr, (pl - plr) / plr, t, xf, xr, xf - xr, (xf - xr) / h, ov))
+
+
+BLOCKS['elastic_wave'] = ('decks/elastic_wave/README.md', True, block_elastic_wave)
+
+
+def block_plate_scene(work):
+    """decks/shell_projectile_plate/README.md: the 20 x 20 (the regression case's mesh) and
+    40 x 40 (this deck) rows of docs/studies/seed_scene_orders.md (the same generator and
+    deck; make studies; no rerun here, --check reruns the page's coarsest row)."""
+    rows = {r[0].split(' (')[0]: r for r in page_rows('docs/studies/seed_scene_orders.md', '')
+            if r[0] in ('20 x 20 (h 5 mm)', '40 x 40 (h 2.5 mm)')}
+    if len(rows) != 2:
+        raise SystemExit('doc_numbers_cases: seed_scene_orders.md lacks the plate rows')
+    a, b = rows['20 x 20'], rows['40 x 40']
+    return ('| | 20 x 20 (the regression case\'s mesh) | 40 x 40 (this deck) |\n|---|---|---|\n'
+            '| peak deflection of the plate centre | %s mm at %s ms | %s mm at %s ms |\n'
+            '| projectile rebound speed at 1 ms | %s m/s | %s m/s |\n'
+            '| energy ratio, largest departure from 1 | %s | %s |'
+            % (a[1], a[3], b[1], b[3], a[4], b[4], a[5], b[5]))
+
+
+BLOCKS['plate_scene'] = ('decks/shell_projectile_plate/README.md', True, block_plate_scene)
