@@ -602,6 +602,12 @@ contains
             call par_gather_values(plan, vals, gv)
          end if
          if (par_rank() == 0 .or. .not. eng%root_only) then
+            if (.not. allocated(eng%g%x)) then   ! (root-only decks: from the first event)
+               allocate(eng%g%x(3, eng%g%nn), eng%g%v(3, eng%g%nn), eng%g%f(3, eng%g%nn))
+               eng%g%x = eng%g%x0
+               eng%g%v = eng%g%v0
+               eng%g%f = 0.0_wp
+            end if
             eng%g%x(:, plan%keys) = gv(1:3, :)
             eng%g%v(:, plan%keys) = gv(4:6, :)
             eng%g%f(:, plan%keys) = gv(7:9, :)

@@ -3,9 +3,10 @@
 !> turns the serial model into its sub-model (dx_par_model) and sets up the domain's load,
 !> rigid-body, contact and plot stages; at the end of set-up what of the global model the
 !> run no longer needs is freed (trim_global) and the memory left is logged. Peak memory
-!> (issue 22): g's element state is freed as soon as the rank's is copied from it, and the
-!> ranks other than 0 of a deck without contact and rigid bodies never allocate g's nodal
-!> x, v, f (a serial dump read into g allocates them: dx_par_restart).
+!> (issue 22): g's element state is freed as soon as the rank's is copied from it, and for
+!> a deck without contact and rigid bodies g's nodal x, v, f exist only on rank 0 and only
+!> from the first history event that gathers nodal values (par_engine_output; a serial
+!> dump read into g allocates them: dx_par_restart).
 !> Fixed-order sums: the idea of OpenRadioss /PARITH/ON; single exchange per cycle: ParaDyn
 !> (Hoover et al., LLNL Engineering Thrust Area Report FY97, article 4 of shared/seed).
 !> No module state: everything is in the par_engine_t passed in.
@@ -140,10 +141,11 @@ contains
          call move_alloc(tv0, eng%g%v0)
          call move_alloc(tlab, eng%g%node_label)
       end block
-      ! g's nodal state: on the writer (rank 0), and on every rank of a deck with contact or
-      ! rigid bodies (their stages read it); the other ranks of a root-only deck never fill
-      ! it (the masses: par_engine_mass stores them for the loads' shared nodes)
-      if (me == 0 .or. .not. eng%root_only) then
+      ! g's nodal state: on every rank of a deck with contact or rigid bodies (their stages
+      ! read it); for a root-only deck rank 0 allocates it at the first history event that
+      ! gathers nodal values (par_engine_output) and the other ranks never hold it (the
+      ! masses: par_engine_mass stores them for the loads' shared nodes)
+      if (.not. eng%root_only) then
          allocate(eng%g%x(3, eng%g%nn), eng%g%v(3, eng%g%nn), eng%g%f(3, eng%g%nn))
          eng%g%x = eng%g%x0
          eng%g%v = eng%g%v0
