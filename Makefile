@@ -104,7 +104,7 @@ bin/dynx-thist: build/release/dynx_thist.o build/release/libdynx.a | bin
 
 UNIT_TESTS := $(patsubst tests/unit/%.f90,build/debug/tests/%,$(filter tests/unit/test_%,$(TEST_SRC)))
 MPI_TESTS := build/debug/tests/mpi_par_test build/debug/tests/mpi_par_model_test build/debug/tests/mpi_fail_test \
-             build/debug/tests/mpi_repro_test
+             build/debug/tests/mpi_repro_test build/debug/tests/mpi_mumps_test
 MPI_BENCH := build/release/bench/mpi_shared_bench build/release/bench/repro_sum_bench
 build/release/bench/%: build/release/%.o build/release/libdynx.a
 	@mkdir -p build/release/bench

@@ -4,13 +4,17 @@
 Usage: mpi_implicit_check.py DECK SERIAL_OUT TOL NP [NP ...]
   SERIAL_OUT holds the serial run of DECK (the regression runner's output). For each NP:
   mpirun -np NP bin/dynx -i DECK -o SERIAL_OUT/npNP; every number of nodout (displacements,
-  velocities, accelerations, coordinates), glstat (energies, work, momentum) and the last plot
-  state's stress is compared with the serial run's: the difference relative to the largest
-  magnitude of that quantity over the run must be <= TOL (the case states why: the solve's
-  round-off, or the Newton tolerance). Statics (glstat's kinetic energy 0 throughout): the
-  nodout accelerations are the residual's round-off (f/m after convergence) and are left out.
-  Run to run: the serial run repeated and NP 2 repeated give the same bytes (cmp of nodout,
-  glstat; h5diff of d3plot.h5). Prints the largest difference per NP; exit 1 on a failure.
+  velocities, accelerations, coordinates), glstat (energies; the momentum is left out, the
+  nodout velocities stand for it) and the last plot state's stress is compared with the
+  serial run's: the difference relative to the largest magnitude of that quantity over the
+  run (of a vector: of its three components; of an energy: of glstat's energies) must be
+  <= TOL (the case states why: the solves' round-off). Statics (glstat's kinetic energy 0
+  throughout, or no glstat): the nodout accelerations are the residual's round-off (f/m
+  after convergence) and are left out.
+  Run to run: the serial run repeated gives the same bytes (cmp of nodout, glstat; h5diff of
+  d3plot.h5); NP 2 repeated is reported (identical, or its difference, held to TOL: MUMPS's
+  parallel factorization schedules its fronts dynamically, so the same input may round
+  differently). Prints the largest difference per NP; exit 1 on a failure.
 """
 import os
 import subprocess
@@ -78,11 +82,14 @@ def stress_diff(a, b):
     return max(abs(x - y) for x, y in zip(sa, sb))/scale
 
 
-def same_bytes(a, b):
+def same_bytes(a, b, quiet=False):
     ok = True
     for f in ('nodout', 'glstat'):
+        if not os.path.exists(os.path.join(a, f)):
+            continue
         if subprocess.run(['cmp', '-s', os.path.join(a, f), os.path.join(b, f)]).returncode:
-            print('  %s differs between %s and %s' % (f, a, b))
+            if not quiet:
+                print('  %s differs between %s and %s' % (f, a, b))
             ok = False
     for k in range(3):      # (h5diff was seen to fail once right after a run: retried)
         rc = subprocess.run(['h5diff', '-q', os.path.join(a, 'd3plot.h5'),
@@ -92,7 +99,8 @@ def same_bytes(a, b):
             break
         time.sleep(2)
     if rc:
-        print('  d3plot.h5 differs between %s and %s' % (a, b))
+        if not quiet:
+            print('  d3plot.h5 differs between %s and %s' % (a, b))
         ok = False
     return ok
 
@@ -101,8 +109,10 @@ def main():
     deck, ref, tol = sys.argv[1], sys.argv[2], float(sys.argv[3])
     nps = [int(x) for x in sys.argv[4:]]
     ok = True
-    _, gl = columns(os.path.join(ref, 'glstat'))
-    statics = all(r[3] == 0.0 for r in gl)
+    statics = True
+    if os.path.exists(os.path.join(ref, 'glstat')):
+        _, gl = columns(os.path.join(ref, 'glstat'))
+        statics = all(r[3] == 0.0 for r in gl)
     skip = ('x_acc', 'y_acc', 'z_acc') if statics else ()
     again = os.path.join(ref, 'serial_again')
     if mpirun(0, deck, again) != 0:
@@ -119,7 +129,9 @@ def main():
             ok = False
             continue
         wn = rel_diff(os.path.join(ref, 'nodout'), os.path.join(out, 'nodout'), skip)
-        wg = rel_diff(os.path.join(ref, 'glstat'), os.path.join(out, 'glstat'))
+        wg = ('none', 0.0)
+        if os.path.exists(os.path.join(ref, 'glstat')):
+            wg = rel_diff(os.path.join(ref, 'glstat'), os.path.join(out, 'glstat'))
         ws = stress_diff(ref, out)
         worst = max(wn[1], wg[1], ws)
         good = worst <= tol
@@ -133,10 +145,17 @@ def main():
                 print('NP 2 rerun failed: see %s/log' % out2)
                 ok = False
             else:
-                s = same_bytes(out, out2)
-                print('NP 2 run to run: %s' % ('identical (nodout, glstat, d3plot.h5)' if s
-                                               else 'DIFFERS'))
-                ok = ok and s
+                # MUMPS's parallel factorization picks the processes of a front from the
+                # current loads (its dynamic scheduling): the same input may round
+                # differently from run to run, so NP 2 against NP 2 is held to TOL too
+                s = same_bytes(out, out2, quiet=True)
+                wn = rel_diff(os.path.join(out, 'nodout'), os.path.join(out2, 'nodout'), skip)
+                ws = stress_diff(out, out2)
+                good = max(wn[1], ws) <= tol
+                print('NP 2 run to run: %s' % ('identical (nodout, glstat, d3plot.h5)' if s else
+                      'differs by %.3g (nodout %s), last stress %.3g: %s' % (
+                          wn[1], wn[0], ws, 'PASS' if good else 'FAIL')))
+                ok = ok and good
     return 0 if ok else 1
 
 

@@ -104,6 +104,8 @@ contains
          ! the implicit solver under MPI: the whole model on every rank (replicated, rank 0
          ! writes), its elements split by dx_implicit_par; no rank files
          if (par_rank() > 0) call log_set_quiet(.true.)
+         if (len(partdir) > 0) call log_info('dynx: note: --part '//partdir//' is not used '// &
+            'by the implicit solver (it splits the elements by its own METIS partition)')
          allocate(serial_domain_t :: dom)
          return
       end if

@@ -22,9 +22,14 @@
 !>    from run to run; the committed element fields (stress, history, work) are gathered by a
 !>    sum where only the owner's entry is nonzero (exact).
 !> Across NP the results differ by round-off only (the partial sums' order and MUMPS's
-!> parallel pivot order): equal to the solver's tolerance, not bit for bit
-!> (shared/docs/clarifications.md, "Reproducibility"). A serial run (one rank) never calls
-!> anything here that changes a number (on = .false.).
+!> parallel elimination): equal to the solver's tolerance, not bit for bit
+!> (shared/docs/clarifications.md, "Reproducibility"). Run to run at the same NP: every
+!> input of MUMPS is the same bits (checked by hashing A_loc on each rank and the right-hand
+!> side), but MUMPS's parallel factorization picks the processes of its fronts from the
+!> current loads (the paper's "distributed dynamic scheduling"), so the solution was seen to
+!> differ in the last bit from run to run (rigid_punch, rigid_torsion, friction_block at
+!> NP 2; same input hashes, different solution hash). A serial run is bitwise run to run; a
+!> serial run (one rank) never calls anything here that changes a number (on = .false.).
 module dx_implicit_par
    use dx_kinds, only: wp
    use dx_error, only: error_t
@@ -40,7 +45,7 @@ module dx_implicit_par
    private
    public :: ipar_t, ipar_setup, ipar_entries, ipar_sum, ipar_exact, ipar_bcast, &
              ipar_bcast_int, ipar_first, ipar_agree, ipar_agreed, ipar_comm, ipar_max_flags, &
-             ipar_global, ipar_assemble
+             ipar_global, ipar_assemble, ipar_per_rank
 
    !> This rank's share of an MPI run of the implicit solver.
    type :: ipar_t
@@ -53,6 +58,8 @@ module dx_implicit_par
       !> partial values sent to their owners: entries spos in rank blocks of scnt(0:np-1);
       !> received: entries rpos in rank blocks of rcnt (each block ascending)
       integer, allocatable :: spos(:), scnt(:), rpos(:), rcnt(:)
+      integer, allocatable :: eidx(:)      !< (ne) assembly index of each dense element (0: none)
+      integer :: qbody = huge(1)           !< the rigid bodies' first equation
    end type ipar_t
 
 contains
@@ -84,26 +91,41 @@ contains
 
    !> The owner of every entry of k (the lowest rank whose elements touch it: elements' maps
    !> pos of assembly index eidx(e) of dense element e, 0 not assembled; rank 0 also every
-   !> diagonal and every entry in a row or column >= qbody, the rigid bodies' equations), the
-   !> entries this rank owns (loc) and the partial values it sends and receives.
-   subroutine ipar_entries(ip, k, eidx, qbody)
+   !> diagonal, every entry in a row or column >= qbody, the rigid bodies' equations, and the
+   !> contact pairs' pseudo-elements q1..q2), the entries this rank owns (loc) and the
+   !> partial values it sends and receives. eidx and qbody: given once (kept for the calls
+   !> after a new contact pattern).
+   subroutine ipar_entries(ip, k, q1, q2, eidx, qbody)
       type(ipar_t), intent(inout) :: ip
       type(sparse_sym_t), intent(in) :: k
-      integer, intent(in) :: eidx(:)
-      integer, intent(in) :: qbody
+      integer, intent(in) :: q1, q2
+      integer, intent(in), optional :: eidx(:), qbody
       logical, allocatable :: mine(:)
       integer, allocatable :: owner(:), fill(:), sbuf(:)
       integer :: e, q, p, i, a, r, n
       if (.not. ip%on) return
+      if (present(eidx)) ip%eidx = eidx
+      if (present(qbody)) ip%qbody = qbody
+      if (allocated(ip%scnt)) deallocate(ip%scnt, ip%rcnt, ip%spos, ip%rpos)
       allocate(mine(k%nnz), owner(k%nnz))
       mine = .false.
       owner = huge(1)
       if (ip%me == 0) mine(k%dg) = .true.
       owner(k%dg) = 0
-      where (k%irn >= qbody .or. k%col >= qbody) owner = 0
-      if (ip%me == 0) where (k%irn >= qbody .or. k%col >= qbody) mine = .true.
-      do e = 1, size(eidx)
-         q = eidx(e)
+      where (k%irn >= ip%qbody .or. k%col >= ip%qbody) owner = 0
+      if (ip%me == 0) where (k%irn >= ip%qbody .or. k%col >= ip%qbody) mine = .true.
+      do q = q1, q2                  ! contact pairs: rank 0's
+         do i = 1, k%nde
+            do a = 1, k%nde
+               p = k%pos(a, i, q)
+               if (p <= 0) cycle
+               owner(p) = 0
+               if (ip%me == 0) mine(p) = .true.
+            end do
+         end do
+      end do
+      do e = 1, size(ip%eidx)
+         q = ip%eidx(e)
          if (q <= 0) cycle
          r = ip%epart(e)
          do i = 1, k%nde
@@ -231,6 +253,13 @@ contains
       integer, intent(inout) :: flags(:)
       call par_allreduce(flags, PAR_MAX)
    end subroutine ipar_max_flags
+
+   !> Every rank's value x, in rank order, on every rank ([x] serially).
+   function ipar_per_rank(x) result(v)
+      real(wp), intent(in) :: x
+      real(wp), allocatable :: v(:)
+      call par_allgatherv_real([x], v)
+   end function ipar_per_rank
 
    !> The whole tangent on every rank (after ipar_assemble; the singular-stiffness diagnosis
    !> multiplies by it): the owners' sums, zero elsewhere, summed over the ranks (exact).

@@ -10,7 +10,8 @@
 !> Equations are numbered node by node (x, y, z), the sparse pattern is formed once
 !> (dx_sparse) and its analysis is done once by the caller.
 !> MPI runs (dx_implicit_par): the whole system on every rank, each rank assembles its own
-!> elements, the internal force summed in rank order; contact is refused there.
+!> elements, the internal force summed in rank order; the contact is evaluated alike on
+!> every rank from the summed state, its tangent added by rank 0.
 module dx_implicit_system
    use dx_kinds, only: wp
    use dx_error, only: error_t, set_error, EXIT_NUMERIC
@@ -23,7 +24,8 @@ module dx_implicit_system
    use dx_par, only: par_self_handle, par_size
    use dx_implicit_par, only: ipar_t, ipar_setup, ipar_entries, ipar_sum, ipar_exact, &
                               ipar_bcast, ipar_bcast_int, ipar_first, ipar_agree, ipar_agreed, &
-                              ipar_comm, ipar_max_flags, ipar_global, ipar_assemble
+                              ipar_comm, ipar_max_flags, ipar_global, ipar_assemble, &
+                              ipar_per_rank
    use dx_contact_input, only: CT_NODES_TO_SURFACE, CT_SURFACE_TO_SURFACE, CT_ONE_WAY
    use dx_implicit_contact, only: icontact_t, icon_pairs, icon_assemble, icon_commit, &
                                   icon_pair_nodes
@@ -37,7 +39,7 @@ module dx_implicit_system
              isys_prescribe, isys_comm, isys_gather, isys_scatter, isys_dof_name, &
              isys_fix, isys_null_names, isys_reset, isys_root, isys_mpi, isys_analyse_entries, &
              isys_bcast, isys_bcast_int, isys_agree, isys_agreed, isys_max_flags, isys_global, &
-             isys_nranks, isys_sum_entries
+             isys_nranks, isys_sum_entries, isys_per_rank
 
    !> One block's committed (c) and trial (t) point state: S, Ebar (6, 8, nel), history
    !> (nh, 8, nel); the element's stress work w (committed) and its trial increment dw.
@@ -103,12 +105,6 @@ contains
       end if
       call ipar_setup(model, sys%par, error)
       if (allocated(error)) return
-      if (sys%par%on .and. sys%has_contact) then
-         call set_error(error, '*'//model%contact%iface(1)%name//' (contact '// &
-            str(model%contact%iface(1)%label)//'): the implicit contact is not yet in an MPI '// &
-            'run (the implicit solver runs under MPI without contact); run this deck '// &
-            'serially (without mpirun)'); return
-      end if
       rok = .false.
       if (present(rigid_ok)) rok = rigid_ok
       if (allocated(model%rigid) .and. .not. rok) then
@@ -238,7 +234,7 @@ contains
                eidx(model%blocks(b)%elem(e)) = sys%eoff(b) + e
             end do
          end do
-         call ipar_entries(sys%par, sys%k, eidx, nnode + 1)
+         call ipar_entries(sys%par, sys%k, sys%nel + 1, sys%nel + sys%con%np, eidx, nnode + 1)
       end if
       allocate(sys%bs(size(model%blocks)))
       do b = 1, size(model%blocks)
@@ -289,21 +285,9 @@ contains
                   s%sc(:, :, e), s%ec(:, :, e), s%hc(:, :, e), s%st(:, :, e), s%et(:, :, e), &
                   s%ht(:, :, e), fe(1:3*nen), want_k, ke(1:3*nen, 1:3*nen), s%dw(e), &
                   s%cauchy(:, e), s%havg(:, e), ierr)
-               if (ierr /= 0 .and. sys%par%on) then   ! MPI: the first failure over the ranks
+               if (ierr /= 0) then      ! (MPI: the first failure in serial order over the ranks)
                   kfail = 2*(sys%eoff(b) + e) + merge(0, 1, ierr == TL_ERR_JAC)
                   exit
-               end if
-               if (ierr /= 0) then
-                  if (ierr == TL_ERR_JAC) then
-                     call set_error(error, 'element '//str(model%elem_label(blk%elem(e)))// &
-                        ' (part '//str(model%parts(blk%ipart)%label)//'): a Jacobian <= 0 '// &
-                        '(inverted element)', EXIT_NUMERIC)
-                  else
-                     call set_error(error, 'element '//str(model%elem_label(blk%elem(e)))// &
-                        ' (part '//str(model%parts(blk%ipart)%label)//'): the material '// &
-                        'update failed', EXIT_NUMERIC)
-                  end if
-                  return
                end if
                do a = 1, nen
                   fint(:, blk%conn(a, e)) = fint(:, blk%conn(a, e)) + fe(3*a - 2:3*a)
@@ -314,20 +298,20 @@ contains
          end associate
          if (kfail < huge(kfail)) exit
       end do
-      if (sys%par%on) then
-         call ipar_first(sys%par, kfail)
-         if (kfail < huge(kfail)) then
-            call element_failed(model, sys, kfail, error)
-            return
-         end if
-         call ipar_sum(sys%par, fint)
+      call ipar_first(sys%par, kfail)
+      if (kfail < huge(kfail)) then
+         call element_failed(model, sys, kfail, error)
+         return
       end if
-      if (sys%has_contact) call icon_assemble(model, sys%con, u, want_k, fint, sys%k, sys%nel, &
-                                              sys%rig)
+      call ipar_sum(sys%par, fint)
+      ! (MPI: every rank evaluates the contact alike on the summed forces; rank 0 adds its
+      ! tangent, the pairs' entries are rank 0's)
+      if (sys%has_contact) call icon_assemble(model, sys%con, u, want_k .and. isys_root(sys), &
+                                              fint, sys%k, sys%nel, sys%rig)
    end subroutine isys_assemble
 
-   !> MPI: the message of the failed element of key 2 idx + (0: Jacobian, 1: material), idx
-   !> its assembly index (the same message as the serial run's, on every rank).
+   !> The message of the failed element of key 2 idx + (0: Jacobian, 1: material), idx its
+   !> assembly index (MPI: the same on every rank).
    subroutine element_failed(model, sys, key, error)
       type(model_t), intent(in) :: model
       type(implicit_system_t), intent(in) :: sys
@@ -368,6 +352,7 @@ contains
       if (allocated(error)) return
       call sparse_symbolic(sys%neq, reshape([sys%emap, cmap], [3*TL_NEN, sys%nel + sys%con%np]), &
                            sys%k, unsym=.not. sys%k%sym)
+      call ipar_entries(sys%par, sys%k, sys%nel + 1, sys%nel + sys%con%np)   ! (MPI)
    end subroutine isys_refind
 
    !> The condensed maps of the elements and contact pairs (cmap) that touch rigid bodies
@@ -633,6 +618,13 @@ contains
       type(implicit_system_t), intent(inout) :: sys
       call ipar_assemble(sys%par, sys%k)
    end subroutine isys_sum_entries
+
+   !> Every rank's x in rank order (the end-of-run report; [x] serially).
+   function isys_per_rank(x) result(v)
+      real(wp), intent(in) :: x
+      real(wp), allocatable :: v(:)
+      v = ipar_per_rank(x)
+   end function isys_per_rank
 
    !> MPI: the whole tangent on every rank (the singular-stiffness diagnosis).
    subroutine isys_global(sys)

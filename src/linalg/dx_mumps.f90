@@ -43,6 +43,7 @@ module dx_mumps
       logical :: analysed = .false.    !< JOB = 1 done for the current pattern
       integer :: nnull = 0             !< null pivots of the last factorization
       integer, allocatable :: null_eq(:)   !< their equations
+      real(wp) :: flops = 0.0_wp           !< this process's elimination flops so far (RINFO(3))
       logical :: dist = .false.            !< distributed assembled input (ICNTL(18) = 3)
       integer, allocatable :: loc(:)       !< its entries (positions in the matrix's values)
       real(wp) :: null_tol = 1.0e-12_wp    !< CNTL(3): null pivot threshold relative to ||A||
@@ -131,6 +132,7 @@ contains
          call fail(self, 'factorization (JOB = 2)', error)
          return
       end if
+      self%flops = self%flops + self%id%RINFO(3)
       if (self%id%INFOG(28) > 0) then
          self%nnull = self%id%INFOG(28)
          allocate(self%null_eq(self%nnull))

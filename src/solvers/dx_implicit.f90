@@ -37,7 +37,7 @@ module dx_implicit
    use dx_output, only: output_t
    use dx_checkpoint, only: checkpoint_t, checkpoint_requests
    use dx_domain, only: domain_t
-   use dx_integrator, only: integrator_t, run_options_t, END_FAILED, END_STOPPED, &
+   use dx_integrator, only: integrator_t, run_options_t, END_NORMAL, END_FAILED, END_STOPPED, &
                             serial_fresh_only, close_files
    use dx_explicit, only: init_state
    use dx_sparse, only: sparse_matvec
@@ -47,7 +47,7 @@ module dx_implicit
                                  isys_scatter, isys_null_names, isys_fix, isys_refind, &
                                  isys_reset, isys_root, isys_mpi, isys_analyse_entries, &
                                  isys_bcast, isys_bcast_int, isys_agree, isys_agreed, &
-                                 isys_max_flags, isys_global, isys_sum_entries
+                                 isys_max_flags, isys_global, isys_sum_entries, isys_per_rank
    use dx_implicit_rigid, only: irig_geo, irig_inertia, irig_start_dyn, irig_kinetic, &
                                 irig_velocity
    implicit none
@@ -73,6 +73,7 @@ module dx_implicit
       integer :: nfactor = 0, niter = 0, nsteps = 0, ncut = 0
       real(wp) :: tfac = 0.0_wp, tasm = 0.0_wp, tana = 0.0_wp   !< wall seconds: factor+solve, assembly, analysis
       real(wp) :: hfac = -1.0_wp           !< linear runs: the step of the factorization kept
+      real(wp) :: cfac = 0.0_wp            !< CPU seconds of this process in the factorizations
    contains
       procedure :: start => i_start_agreed
       procedure :: step => i_step_agreed
@@ -461,13 +462,16 @@ contains
 
       !> du = K^-1 r (a singular K: the free nodes and modes).
       subroutine factor_solve()
-         real(wp) :: t0
+         real(wp) :: t0, c0, c1
          t0 = wall_time()
          ! NSOLVR 1 takes elastic materials only: K (and K_eff at the same step) is the same
          ! matrix every step, so its factorization is kept
          if (.not. (self%sys%linear .and. h == self%hfac)) then
             call isys_sum_entries(self%sys)        ! (MPI: each entry on its owner)
+            call cpu_time(c0)
             call self%ms%factor(self%sys%k, error)
+            call cpu_time(c1)
+            self%cfac = self%cfac + (c1 - c0)
             if (allocated(error)) return
             self%nfactor = self%nfactor + 1
             if (self%sys%linear .and. self%ms%nnull == 0) self%hfac = h
@@ -544,6 +548,25 @@ contains
          modes//hint, code)
    end subroutine singular
 
+   !> The factorizations' CPU time and elimination flops (MUMPS RINFO(3)) of each process
+   !> (the MPI balance; noisy wall times on a shared machine are not needed to read it).
+   subroutine factor_report(self)
+      class(implicit_t), intent(in) :: self
+      real(wp), allocatable :: c(:), f(:)
+      character(:), allocatable :: t
+      integer :: r
+      c = isys_per_rank(self%cfac)
+      f = isys_per_rank(self%ms%flops)
+      t = ''
+      do r = 1, min(size(c), 16)
+         if (r > 1) t = t//'; '
+         t = t//'rank '//str(r - 1)//' '//rstr(c(r), 3)//' s, '//rstr(f(r), 3)//' flops'
+      end do
+      call log_info('dynx: implicit: factorizations, CPU time and elimination flops per '// &
+         'process: '//t//' (largest CPU '//rstr(maxval(c), 3)//' s, total '// &
+         rstr(sum(c), 3)//' s)')
+   end subroutine factor_report
+
    !> The cycle boundary: the converged step's time.
    subroutine i_advance(self, model, ck)
       class(implicit_t), intent(inout) :: self
@@ -566,6 +589,7 @@ contains
       ! (MPI: a failure of one rank alone aborts the run: no collective call then)
       if (how /= END_FAILED .or. isys_agreed(self%sys)) call self%ms%finish()
       if (how == END_STOPPED) return
+      if (how == END_NORMAL) call factor_report(self)
       model%time = self%t
       if (how == END_FAILED) then
          if (allocated(self%uc)) model%x = model%x0 + self%uc   ! the last converged state
