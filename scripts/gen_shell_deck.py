@@ -10,6 +10,16 @@ shells, nx by ny elements, length L along x, width B along y, thickness T.
       velocity gradient, the four inner nodes free (patch_tri: the inner quadrilateral cut
       into two triangles N4 = N3; patch_plastic: *MAT_PLASTIC_KINEMATIC (SIGY 0.25, ETAN 0)
       stretched to 5 % with *CONTROL_SHELL ISTUPD = 1)
+  gen_shell_deck.py bend [ELFORM [OUT]]     bending patch test: the MacNeal-Harder patch in
+      its plane rotated out of x-y (thickness 1); the corners driven with the transverse
+      velocity and angular velocities of a uniform curvature rate (no transverse shear:
+      v_n = -(k1 x**2 + k2 y**2 + k12 x y)/2, w = n x grad v_n in the plate axes), the inner
+      nodes free and started on the same field
+  gen_shell_deck.py patch ... and cantilever ...: ELFORM from the environment variable
+      SHELL_ELFORM (default 2)
+  gen_shell_deck.py pressure N [OUT]        a clamped square plate 100 x 100 x 1 mm of N x N
+      shells (SHELL_ELFORM), *MAT_PLASTIC_KINEMATIC, under a uniform pressure (*LOAD_SEGMENT)
+      ramped to 3e-4 GPa in 20 ms: it yields at the edges, then across; the centre in nodout
   gen_shell_deck.py rotation [OUT]           a free plate spinning as a rigid body about an
       in-plane axis (initial velocity omega x r): no strain, internal energy 0
   gen_shell_deck.py mixed [OUT]              hexahedra and shells sharing nodes: a 100 x 10 mm
@@ -29,9 +39,11 @@ shells, nx by ny elements, length L along x, width B along y, thickness T.
       *CONTACT_KW (shell_contact_plates)
 """
 import math
+import os
 import sys
 
 E, RHO = 210.0, 7.85e-6
+ELFORM = int(os.environ.get('SHELL_ELFORM', '2'))
 
 
 def head(title, tend, dplot, dhist, hist_nodes, pr=0.0, extra=''):
@@ -45,7 +57,7 @@ def head(title, tend, dplot, dhist, hist_nodes, pr=0.0, extra=''):
          '*PART', 'plate', '         1         1         1',
          '*SECTION_SHELL',
          '$    SECID    ELFORM      SHRF       NIP',
-         '         1         2  0.833333         3',
+         f'         1{ELFORM:10d}  0.833333         3',
          '$       T1',
          '       1.0',
          '*MAT_ELASTIC', '$      MID        RO         E        PR',
@@ -103,6 +115,35 @@ def cantilever(nx, ny):
     clamp = [j*(nx + 1) + 1 for j in range(ny + 1)]
     for k in range(0, len(clamp), 8):
         s.append(''.join(f'{n:10d}' for n in clamp[k:k + 8]))
+    s += ['*BOUNDARY_SPC_SET', '         1         0         1         1         1'
+          '         1         1         1', '*END']
+    return s
+
+
+def pressure(n):
+    """A clamped square steel plate 100 x 100 x 1 mm of n x n shells (n even: a centre node)
+    under a uniform pressure ramped 0 -> 3e-4 GPa in 20 ms (about 3.7 times the pressure
+    that first yields the clamped edges, q a**2/t**2 0.308 = SIGY) and held to 25 ms;
+    *MAT_PLASTIC_KINEMATIC SIGY 0.25, ETAN 1.0; the centre node in nodout."""
+    a = 100.0
+    nodes, elems = grid(n, n, a, a)
+    centre = (n//2)*(n + 1) + n//2 + 1
+    s = head(f'Clamped plate {n}x{n} under pressure, going plastic (ELFORM {ELFORM})', 25.0,
+             5.0, 0.25, [centre], pr=0.3)
+    k = s.index('*MAT_ELASTIC')
+    s[k:k + 3] = ['*MAT_PLASTIC_KINEMATIC',
+                  '$      MID        RO         E        PR      SIGY      ETAN      BETA',
+                  f'         1{RHO:10.3e}{E:10.1f}     0.300      0.25       1.0       0.0']
+    s += node_cards(nodes) + elem_cards(elems)
+    s += ['*DEFINE_CURVE', '         1', f'{0.0:20.4f}{0.0:20.4e}', f'{20.0:20.4f}{3.0e-4:20.4e}',
+          f'{100.0:20.4f}{3.0e-4:20.4e}']
+    s += ['*LOAD_SEGMENT']
+    for e in elems:
+        s.append(f'{1:10d}{1.0:10.3f}{0.0:10.3f}' + ''.join(f'{q:10d}' for q in e[1:]))
+    edge = [m for m, x, y, z in nodes if x in (0.0, a) or y in (0.0, a)]
+    s += ['*SET_NODE_LIST', '         1']
+    for k in range(0, len(edge), 8):
+        s.append(''.join(f'{q:10d}' for q in edge[k:k + 8]))
     s += ['*BOUNDARY_SPC_SET', '         1         0         1         1         1'
           '         1         1         1', '*END']
     return s
@@ -187,6 +228,52 @@ def patch(tri, plastic=False):
         for n, d in fix:
             s.append(f'{n:10d}         0' + ''.join('         1' if k == d else '         0'
                                                   for k in range(3)))
+    s.append('*END')
+    return s
+
+
+BEND_RATE = (2.0e-11, -1.0e-11, 1.5e-11)   # k1, k2, k12: curvature rates, 1/(mm ms) (small:
+# the residual of the free nodes is the geometric nonlinearity, proportional to the rate)
+
+
+def bend():
+    """Bending patch test (MacNeal & Harder 1985 geometry): uniform curvature rate."""
+    r = rotation_matrix(PATCH_AXIS, PATCH_DEG)
+    k1, k2, k12 = BEND_RATE
+    nodes, vel = [], {}
+    for k, (x, y) in enumerate(PATCH_NODES):
+        p = tuple(float(f'{c:20.13e}') for c in mat_vec(r, [x, y, 0.0]))
+        nodes.append((k + 1,) + p)
+        vn = -0.5*(k1*x*x + k2*y*y + k12*x*y)
+        # rotation rates in the plate axes: v_n = y w_x - x w_y for a rigid rotation, so
+        # w_x = d v_n/dy, w_y = -d v_n/dx (zero transverse shear)
+        wl = [-(k2*y + 0.5*k12*x), k1*x + 0.5*k12*y, 0.0]
+        vel[k + 1] = [float(f'{c:20.13e}') for c in mat_vec(r, [0.0, 0.0, vn]) + mat_vec(r, wl)]
+    elems = [(k + 1,) + q for k, q in enumerate(list(PATCH_QUADS) + [(5, 6, 7, 8)])]
+    s = head('Bending patch test (MacNeal-Harder, rotated; uniform curvature rate)', 1.0, 0.5,
+             0.05, [5, 6, 7, 8], pr=0.3)
+    k = s.index('       1.0')
+    s[k] = '       1.0'
+    s += ['*NODE +'] + [f'{n:20d}{x:20.13e}{y:20.13e}{z:20.13e}' for n, x, y, z in nodes]
+    s += elem_cards(elems)
+    s += ['*DEFINE_CURVE', '         1', f'{0.0:20.4f}{1.0:20.4f}', f'{100.0:20.4f}{1.0:20.4f}']
+    s += ['*INITIAL_VELOCITY_NODE +']
+    for n in vel:
+        s.append(f'{n:20d}' + ''.join(f'{c:20.13e}' for c in vel[n]))
+    s += ['*BOUNDARY_PRESCRIBED_MOTION_NODE +']
+    fix = []
+    for n in (1, 2, 3, 4):
+        for d in (0, 1, 2, 3, 4, 5):
+            dof = d + 1 if d < 3 else d + 2     # 5, 6, 7: rotations about x, y, z
+            if vel[n][d] == 0.0:        # (SF = 0 would mean 1: an SPC instead)
+                fix.append((n, d))
+            else:
+                s.append(f'{n:20d}{dof:20d}{0:20d}{1:20d}{vel[n][d]:20.13e}')
+    if fix:
+        s += ['*BOUNDARY_SPC_NODE']
+        for n, d in fix:
+            s.append(f'{n:10d}         0' + ''.join('         1' if k == d else '         0'
+                                                  for k in range(6)))
     s.append('*END')
     return s
 
@@ -360,6 +447,15 @@ def main():
     elif kind in ('patch', 'patch_tri', 'patch_plastic'):
         lines = patch(kind == 'patch_tri', kind == 'patch_plastic')
         out = sys.argv[2] if len(sys.argv) > 2 else None
+    elif kind == 'bend':
+        global ELFORM
+        if len(sys.argv) > 2:
+            ELFORM = int(sys.argv[2])
+        lines = bend()
+        out = sys.argv[3] if len(sys.argv) > 3 else None
+    elif kind == 'pressure':
+        lines = pressure(int(sys.argv[2]))
+        out = sys.argv[3] if len(sys.argv) > 3 else None
     elif kind == 'rotation':
         lines = rotation()
         out = sys.argv[2] if len(sys.argv) > 2 else None

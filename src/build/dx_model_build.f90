@@ -20,7 +20,7 @@ module dx_model_build
    use dx_model_input, only: model_input_t, origin_t
    use dx_element_types, only: ES_THK, shell_area, etype_of_shell_elform
    use dx_build_twod, only: part_dim, check_dimension, twod_element, build_twod_extras
-   use dx_element_types, only: ETYPE_SHELL_BT, ES_THK, shell_area, ES_BEAM, etype_of_beam_elform, &
+   use dx_element_types, only: ETYPE_SHELL_BT, ETYPE_SHELL_FI, ES_THK, shell_area, ES_BEAM, etype_of_beam_elform, &
                                ETYPE_BEAM_HL
    use dx_beam_build, only: beam_part, beam_index, beam_element, build_point_masses, &
                             section_kind, KIND_NAMES, KIND_CARDS, BEAM_NDAT
@@ -265,7 +265,7 @@ contains
          p%istupd = c%istupd
          ! the plane-stress plasticity algorithm of the laminae (*CONTROL_SHELL MITER)
          model%mats(p%imat)%m%ps_alg = c%miter
-         if (.not. has_lamina_form(model%mats(p%imat)%m) .and. sec%elform <= 12) then
+         if (.not. has_lamina_form(model%mats(p%imat)%m) .and. (sec%elform <= 12 .or. sec%elform == 16)) then
             call set_error(error, w//'part '//str(p%label)//': field MID: material '// &
                str(p%mid)//' (type '//str(model%mats(p%imat)%m%mtype)//') has no plane-'// &
                'stress (shell lamina) form: use it on solids (*SECTION_SOLID or 2D ELFORM '// &
@@ -557,7 +557,7 @@ contains
             etype = etyp(order(start(j)))
             fam = element_family(etype)
             nip = fam%nip
-            if (model%sections(p%isec)%shell) nip = model%sections(p%isec)%nip
+            if (model%sections(p%isec)%shell) nip = fam%npl*model%sections(p%isec)%nip
             if (etype == ETYPE_BEAM_HL) nip = beam_hl_nip(p%bqr, p%bcst)   ! the section rule
             nhv = model%mats(p%imat)%m%nhist()
             pos = start(j)
@@ -647,6 +647,15 @@ contains
          end do
          etyp(e) = etype_of_section(model%parts(model%elem_part(e))%isec)
          f2 = element_family(etyp(e))
+         if (etyp(e) == ETYPE_SHELL_FI .and. conn(4, e) == conn(3, e)) then
+            ! LS-DYNA treats a degenerate quadrilateral of ELFORM 16 as a C0 triangle only
+            ! with *CONTROL_SHELL ESORT = 1 (refused here): no triangle form of type 16 yet
+            call set_error(error, w//'element '//str(lab)//': field N4: a triangle (N4 = '// &
+               'N3) in part '//str(model%parts(model%elem_part(e))%label)//' of *SECTION_'// &
+               'SHELL ELFORM 16 (fully integrated) is not supported: give the triangles a '// &
+               'part of ELFORM 2 (the degenerate Belytschko-Lin-Tsay shell)')
+            return
+         end if
          if (f2%twod) then
             call twod_element(inp, model, conn(1:4, e), e, etyp(e), lab, w, f2%axisym, vol(e), &
                               error)
@@ -687,7 +696,7 @@ contains
             nshw = nshw + 1
             if (nshw <= NLIST) call log_warn(w//'shell element '//str(lab)//' is warped by '// &
                rstr(warp)//' degrees (above *CONTROL_SHELL WRPANG '//rstr(inp%ctrl%wrpang)// &
-               '; the Belytschko-Lin-Tsay shell has no warping correction)')
+               '; the shells of ELFORM 2 and 16 have no warping correction)')
          end if
       end subroutine shell_element
 

@@ -54,17 +54,17 @@ contains
          call read_section_id(blk, ic, c, s)
          call c%int('ELFORM', 2, s%elform)
          if (s%elform == 0) s%elform = 2
-         if (c%ok() .and. all(s%elform /= [2, 12, 13, 14, 15])) call c%fail('ELFORM', 'shell '// &
-            'formulation '//str(s%elform)//' is not supported (supported: 2 Belytschko-Lin-'// &
-            'Tsay; 2D solids 12 plane stress, 13 plane strain, 14 area-weighted and 15 '// &
-            'volume-weighted axisymmetric)')
+         if (c%ok() .and. all(s%elform /= [2, 12, 13, 14, 15, 16])) call c%fail('ELFORM', &
+            'shell formulation '//str(s%elform)//' is not supported (supported: 2 Belytschko-'// &
+            'Lin-Tsay, 16 fully integrated; 2D solids 12 plane stress, 13 plane strain, 14 '// &
+            'area-weighted and 15 volume-weighted axisymmetric)')
          call c%real('SHRF', 1.0_wp, s%shrf)
          if (s%shrf == 0.0_wp) s%shrf = 1.0_wp
          if (c%ok() .and. s%shrf < 0.0_wp) call c%fail('SHRF', 'shear factor must be > 0, '// &
                                                        'got '//rstr(s%shrf))
          call c%int('NIP', 2, s%nip)
          if (s%nip == 0) s%nip = 2
-         if (s%elform >= 12) s%nip = 1     ! 2D solids (dx_quad2d): one point, NIP unused
+         if (s%elform >= 12 .and. s%elform <= 15) s%nip = 1   ! 2D solids (dx_quad2d): NIP unused
          if (c%ok() .and. (s%nip < 1 .or. s%nip > MAX_NIP)) call c%fail('NIP', &
             'through-thickness points '//str(s%nip)//' are not supported (supported: 1 to '// &
             str(MAX_NIP)//'; 3 to '//str(MAX_NIP)//' with *CONTROL_SHELL INTGRD = 1)')

@@ -12,17 +12,20 @@
 !> volume-weighted axisymmetric; Hallquist, DYNA2D, UCID-18756; Flanagan & Belytschko 1981),
 !> resultant beam ELFORM 2 of *SECTION_BEAM (dx_beam_bs: Belytschko, Schwer & Klein 1977,
 !> IJNME 11), Hughes-Liu beam ELFORM 1 with cross-section integration (dx_beam_hl: Hughes & Liu
-!> 1981, CMAME 26, 27).
+!> 1981, CMAME 26, 27), fully integrated shell ELFORM 16 (dx_shell_fi: Bathe & Dvorkin 1985,
+!> IJNME 21).
 module dx_element
    use dx_kinds, only: wp
    use dx_material, only: material_t
    use dx_element_types, only: elem_block_t, part_t, ES_PHIM, block_result_t, family_t, element_family, ELEM_ERR_NEGVOL, &
                                ELEM_ERR_MATERIAL, ETYPE_TET4, ETYPE_SHELL_BT, ETYPE_QUAD2D_PS, &
+                               ETYPE_SHELL_FI, &
                                ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS, ETYPE_BEAM_BS, &
                                ETYPE_BEAM_HL
    use dx_hex8, only: hex8_block, hex8_mass_share
    use dx_tet4, only: tet4_block
    use dx_shell_bt, only: shell_bt_block, shell_bt_rotary_inertia
+   use dx_shell_fi, only: shell_fi_block
    use dx_quad2d, only: quad2d_block
    use dx_beam_bs, only: beam_bs_block, beam_bs_rotary_inertia
    use dx_beam_hl, only: beam_hl_block
@@ -55,6 +58,9 @@ contains
       case (ETYPE_SHELL_BT)
          call shell_bt_block(blk, mat, part, part%shrf, part%lobatto, part%istupd, x, v, w, &
                              dt_old, f, mom, res)
+      case (ETYPE_SHELL_FI)
+         call shell_fi_block(blk, mat, part%shrf, part%lobatto, part%istupd, x, v, w, dt_old, &
+                             f, mom, res)
       case (ETYPE_BEAM_BS)
          call beam_bs_block(blk, mat, x, v, w, dt_old, f, mom, res)
       case (ETYPE_BEAM_HL)
@@ -76,7 +82,7 @@ contains
       real(wp), intent(in) :: rho, mass(:)
       integer, intent(in) :: cnodes(:)
       select case (blk%etype)
-      case (ETYPE_TET4, ETYPE_SHELL_BT, ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, &
+      case (ETYPE_TET4, ETYPE_SHELL_BT, ETYPE_SHELL_FI, ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, &
             ETYPE_QUAD2D_PSS, ETYPE_BEAM_BS, ETYPE_BEAM_HL)
          call blk%es_drop(ES_PHIM)
       case default
@@ -91,7 +97,7 @@ contains
       real(wp), intent(in) :: rho, rotascl
       real(wp), intent(inout) :: rinert(:)
       select case (blk%etype)
-      case (ETYPE_SHELL_BT)
+      case (ETYPE_SHELL_BT, ETYPE_SHELL_FI)     ! the same lumping (dx_shell_fi)
          call shell_bt_rotary_inertia(blk, rho, rotascl, rinert)
       case (ETYPE_BEAM_BS, ETYPE_BEAM_HL)   ! (ROTASCL is *CONTROL_SHELL's: shells only)
          call beam_bs_rotary_inertia(blk, rho, rinert)

@@ -23,6 +23,9 @@
 !> 2 nodes, no face, elem_volume = the length (the caller multiplies by the area), an XDMF
 !> Polyline; the Hughes-Liu beam (ELFORM 1, 2001) shares that row, its nip the section rule's
 !> points (dx_beam_hl). Both carry rotations (family_t%rot).
+!> The fully integrated shell (ELFORM 16,
+!> 1016; dx_shell_fi) is a second row of the shell family (family_t%shell): the same node,
+!> face, edge, mass and plot facts as the BT shell, 2x2 in-plane points (family_t%npl).
 !> Element error codes and the result record of one block pass live here too (dx_element),
 !> and the element block and the part the kernels work on (elem_block_t with its family state
 !> es, part_t): the model holds and re-exports them, so src/elements/ never imports src/model/
@@ -37,6 +40,7 @@ module dx_element_types
    private
    public :: family_t, element_family, elem_volume, elem_moments, elem_length, block_result_t
    public :: ETYPE_HEX8_1PT, ETYPE_HEX8_SRI, ETYPE_TET4, ETYPE_DEFAULT, ETYPE_SHELL_BT
+   public :: ETYPE_SHELL_FI
    public :: etype_of_shell_elform, ES_THK, shell_area, shell_frame, shell_stress_global, &
              shell_axes
    public :: ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS, quad2d_area, &
@@ -58,6 +62,11 @@ module dx_element_types
    integer, parameter :: ETYPE_DEFAULT = ETYPE_HEX8_1PT   !< a block built without a section
    !> shells: 1000 + the *SECTION_SHELL ELFORM (the solid and shell ELFORM numbers overlap)
    integer, parameter :: ETYPE_SHELL_BT = 1002   !< Belytschko-Lin-Tsay quadrilateral (dx_shell_bt)
+   integer, parameter :: ETYPE_SHELL_FI = 1016   !< fully integrated, assumed shear (dx_shell_fi)
+   !> partition weight of the fully integrated shell (the hexahedron's is 1, the BT shell's 3):
+   !> 3 x 3.8, its CPU per element-cycle against the BT shell's (80x16 cantilever plate, NIP
+   !> 3, 9196 cycles: 2020 against 529 ns; docs/history.md, "Shells, part 2: ELFORM 16")
+   integer, parameter :: FI_WEIGHT = 11
    !> 2D solids in the x-y plane (dx_quad2d): plane strain (ELFORM 13), area-weighted (14) and
    !> volume-weighted (15) axisymmetric quadrilaterals, x = r, y = z (the axis)
    integer, parameter :: ETYPE_QUAD2D_PS = 1013, ETYPE_QUAD2D_AW = 1014, ETYPE_QUAD2D_VW = 1015
@@ -66,8 +75,8 @@ module dx_element_types
    integer, parameter :: ETYPE_BEAM_BS = 2002    !< Belytschko-Schwer resultant beam (dx_beam_bs)
    integer, parameter :: ETYPE_BEAM_HL = 2001    !< Hughes-Liu beam, section integration (dx_beam_hl)
    !> every element type, one per family first (lookups by nen or XDMF code take the first)
-   integer, parameter :: ETYPES(5) = [ETYPE_HEX8_1PT, ETYPE_TET4, ETYPE_SHELL_BT, &
-                                      ETYPE_HEX8_SRI, ETYPE_BEAM_BS]
+   integer, parameter :: ETYPES(6) = [ETYPE_HEX8_1PT, ETYPE_TET4, ETYPE_SHELL_BT, &
+                                      ETYPE_HEX8_SRI, ETYPE_BEAM_BS, ETYPE_SHELL_FI]
    integer, parameter :: MAX_NEN = 8          !< most nodes of any family (*ELEMENT_SOLID card)
    integer, parameter :: MAX_FACE_NODES = 4   !< most nodes of a face (a segment)
    integer, parameter :: MAX_FACES = 6        !< most faces of a family
@@ -132,6 +141,12 @@ module dx_element_types
       integer :: weight = 1                !< partition cost weight (measured ns/element-cycle)
       integer :: es_ncol(MAX_ES) = 0       !< columns of each family-state slot (0: none)
       logical :: rot = .false.             !< nodes carry rotations (shells, beams)
+      !> a shell: a mid-surface quadrilateral (a triangle repeats N3) with a thickness
+      !> (ES_THK column 1), stresses in its co-rotational frame (shell_frame)
+      logical :: shell = .false.
+      !> in-plane integration points of a shell (its block's nip = npl x the section's NIP;
+      !> point (g, ip) of in-plane g and through-thickness ip is (g - 1) NIP + ip)
+      integer :: npl = 1
       logical :: twod = .false.            !< a 2D family: x-y plane, the z DOF fixed
       logical :: axisym = .false.          !< 2D axisymmetric: x = r >= 0, volumes per radian
       !> the kernel scatters its forces element-major (do i; do k), not corner-major: the
@@ -262,7 +277,7 @@ contains
          f%mass_share = 0.25_wp
          f%es_ncol = [0, 4, 0, 0, 1, 6, 0]
          f%nip = 1; f%weight = 1
-      case (ETYPE_SHELL_BT)
+      case (ETYPE_SHELL_BT, ETYPE_SHELL_FI)
          ! one face (the mid-surface, normal by the right-hand rule on N1..N4; a triangle
          ! repeats N3), four edges; nip: the section's through-thickness points (block%nip)
          f%name = 'quad4'; f%xdmf = 'Quadrilateral'; f%xdmf_code = 5
@@ -276,7 +291,13 @@ contains
          ! elastic; 100x80 plate and 20x20x20 cube, 300 cycles less 1, three runs each;
          ! docs/history.md, "Shells under MPI")
          f%nip = 2; f%weight = 3
-         f%rot = .true.; f%scatter_em = .true.
+         f%rot = .true.; f%scatter_em = .true.; f%shell = .true.
+         if (etype == ETYPE_SHELL_FI) then
+            ! 2x2 in-plane points, no hourglass modes: the thickness alone
+            f%hgmodes = 0; f%npl = 4
+            f%es_ncol = [0, 0, 0, 1, 0, 0, 0]
+            f%weight = FI_WEIGHT
+         end if
       case (ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS)
          ! a 2D quadrilateral (a triangle repeats N3): no faces (its boundary is edges), one
          ! hourglass mode per direction; V0 is the area (plane strain, unit thickness) or
@@ -337,6 +358,8 @@ contains
       select case (elform)
       case (2)
          etype = ETYPE_SHELL_BT
+      case (16)
+         etype = ETYPE_SHELL_FI
       case (12)
          etype = ETYPE_QUAD2D_PSS
       case (13)
@@ -392,7 +415,7 @@ contains
       real(wp), intent(inout) :: s(6)
       real(wp) :: e1(3), l, sa
       select case (etype)
-      case (ETYPE_SHELL_BT)
+      case (ETYPE_SHELL_BT, ETYPE_SHELL_FI)
          call shell_stress_global(xe(:, 1:4), s)
       case (ETYPE_BEAM_BS, ETYPE_BEAM_HL)
          e1 = xe(:, 2) - xe(:, 1)
@@ -538,7 +561,7 @@ contains
       select case (etype)
       case (ETYPE_TET4)
          vol = tet_volume(xe)
-      case (ETYPE_SHELL_BT)      ! the mid-surface area: the caller multiplies by the thickness
+      case (ETYPE_SHELL_BT, ETYPE_SHELL_FI)      ! the mid-surface area: the caller multiplies by the thickness
          vol = shell_area(xe)
       case (ETYPE_QUAD2D_PS, ETYPE_QUAD2D_PSS)   ! per unit thickness (12: times t, by the caller)
          vol = quad2d_area(xe)
@@ -560,7 +583,7 @@ contains
       select case (etype)
       case (ETYPE_TET4)
          call tet_moments(xe, xref, vol, m1, m2)
-      case (ETYPE_SHELL_BT, ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS, &
+      case (ETYPE_SHELL_BT, ETYPE_SHELL_FI, ETYPE_QUAD2D_PS, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, ETYPE_QUAD2D_PSS, &
             ETYPE_BEAM_BS, ETYPE_BEAM_HL)
          ! rigid shells, rigid 2D parts and beams are refused at build: no moments yet
          vol = 0.0_wp; m1 = 0.0_wp; m2 = 0.0_wp
@@ -593,7 +616,7 @@ contains
          l = norm2(xe(:, 2) - xe(:, 1))
          return
       end if
-      if (etype == ETYPE_SHELL_BT) then    ! the shell's length (dx_shell_bt, ISDO = 0)
+      if (f%shell) then    ! the shell's length (dx_shell_bt, ISDO = 0)
          amax = 0.0_wp
          do k = 1, f%nedges
             amax = max(amax, norm2(xe(:, f%edges(2, k)) - xe(:, f%edges(1, k))))

@@ -457,6 +457,7 @@ contains
       type(model_t), intent(in) :: model
       logical :: rows(NSTATE_FIELDS)
       integer :: p
+      type(family_t) :: fam
       rows = .false.
       if (.not. allocated(model%parts)) return
       ! the beams' resultants when a part has a *SECTION_BEAM (its area: dx_beam_build)
@@ -466,8 +467,10 @@ contains
          associate (is => model%parts(p)%isec)
             if (is >= 1 .and. allocated(model%sections)) then
                if (is <= size(model%sections)) then
-                  if (model%sections(is)%shell .and. etype_of_shell_elform( &
-                      model%sections(is)%elform) == ETYPE_SHELL_BT) rows(F_THICK) = .true.
+                  if (model%sections(is)%shell) then
+                     fam = element_family(etype_of_shell_elform(model%sections(is)%elform))
+                     if (fam%shell) rows(F_THICK) = .true.
+                  end if
                end if
             end if
          end associate
