@@ -10,7 +10,8 @@
 # Beams (issue 17): a 20 000-element cantilever (scripts/gen_beam_deck.py bench), 1000 cycles,
 # of resultant beams (ELFORM 2), of Hughes-Liu beams (ELFORM 1, 2x2 Gauss, elastic) and of
 # Hughes-Liu beams of *MAT_003 yielding (the plastic cantilever's tip rotation, 4x4 Gauss);
-# BENCH_ONLY=beam runs only these rows.
+# BENCH_ONLY=beam runs only these rows. Shells: the 80x16 cantilever plate of ELFORM 2 and 16
+# (BENCH_ONLY=shell).
 # Appends a dated table to docs/performance.md.
 set -e
 cd "$(dirname "$0")/.."
@@ -44,6 +45,22 @@ beam_rows() {
         run_case beam_${kind}_20000 $B/beam_$kind.k 20000
     done
 }
+# Shells (issue 17): the 80x16 cantilever plate of scripts/gen_shell_deck.py (1280 shells,
+# NIP 3, elastic, 1.0 ms: 9196 cycles) of Belytschko-Lin-Tsay (ELFORM 2) and fully integrated
+# (ELFORM 16) shells, side by side; BENCH_ONLY=shell runs only these rows.
+shell_rows() {
+    for ef in 2 16; do
+        SHELL_ELFORM=$ef python3 scripts/gen_shell_deck.py cantilever 80 16 $B/shell_$ef.k
+        sed -i 's/^   15.0000$/    1.0000/' $B/shell_$ef.k
+        run_case shell_elform${ef}_1280 $B/shell_$ef.k 1280
+    done
+}
+if [ "${BENCH_ONLY:-}" = shell ]; then
+    shell_rows
+    cat $B/table.md >> docs/performance.md
+    cat $B/table.md
+    exit 0
+fi
 if [ "${BENCH_ONLY:-}" = beam ]; then
     beam_rows
     cat $B/table.md >> docs/performance.md
@@ -99,5 +116,6 @@ if [ -f ../shared/bench/gen_taylor.py ] && [ "${BENCH_ONLY:-}" != hirate ]; then
     run_case taylor_10k $B/taylor_10k.k 10368
 fi
 [ "${BENCH_ONLY:-}" != hirate ] && beam_rows
+[ "${BENCH_ONLY:-}" != hirate ] && shell_rows
 cat $B/table.md >> docs/performance.md
 cat $B/table.md

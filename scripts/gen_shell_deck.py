@@ -17,6 +17,9 @@ shells, nx by ny elements, length L along x, width B along y, thickness T.
       nodes free and started on the same field
   gen_shell_deck.py patch ... and cantilever ...: ELFORM from the environment variable
       SHELL_ELFORM (default 2)
+  gen_shell_deck.py pressure N [OUT]        a clamped square plate 100 x 100 x 1 mm of N x N
+      shells (SHELL_ELFORM), *MAT_PLASTIC_KINEMATIC, under a uniform pressure (*LOAD_SEGMENT)
+      ramped to 3e-4 GPa in 20 ms: it yields at the edges, then across; the centre in nodout
   gen_shell_deck.py rotation [OUT]           a free plate spinning as a rigid body about an
       in-plane axis (initial velocity omega x r): no strain, internal energy 0
   gen_shell_deck.py mixed [OUT]              hexahedra and shells sharing nodes: a 100 x 10 mm
@@ -112,6 +115,35 @@ def cantilever(nx, ny):
     clamp = [j*(nx + 1) + 1 for j in range(ny + 1)]
     for k in range(0, len(clamp), 8):
         s.append(''.join(f'{n:10d}' for n in clamp[k:k + 8]))
+    s += ['*BOUNDARY_SPC_SET', '         1         0         1         1         1'
+          '         1         1         1', '*END']
+    return s
+
+
+def pressure(n):
+    """A clamped square steel plate 100 x 100 x 1 mm of n x n shells (n even: a centre node)
+    under a uniform pressure ramped 0 -> 3e-4 GPa in 20 ms (about 3.7 times the pressure
+    that first yields the clamped edges, q a**2/t**2 0.308 = SIGY) and held to 25 ms;
+    *MAT_PLASTIC_KINEMATIC SIGY 0.25, ETAN 1.0; the centre node in nodout."""
+    a = 100.0
+    nodes, elems = grid(n, n, a, a)
+    centre = (n//2)*(n + 1) + n//2 + 1
+    s = head(f'Clamped plate {n}x{n} under pressure, going plastic (ELFORM {ELFORM})', 25.0,
+             5.0, 0.25, [centre], pr=0.3)
+    k = s.index('*MAT_ELASTIC')
+    s[k:k + 3] = ['*MAT_PLASTIC_KINEMATIC',
+                  '$      MID        RO         E        PR      SIGY      ETAN      BETA',
+                  f'         1{RHO:10.3e}{E:10.1f}     0.300      0.25       1.0       0.0']
+    s += node_cards(nodes) + elem_cards(elems)
+    s += ['*DEFINE_CURVE', '         1', f'{0.0:20.4f}{0.0:20.4e}', f'{20.0:20.4f}{3.0e-4:20.4e}',
+          f'{100.0:20.4f}{3.0e-4:20.4e}']
+    s += ['*LOAD_SEGMENT']
+    for e in elems:
+        s.append(f'{1:10d}{1.0:10.3f}{0.0:10.3f}' + ''.join(f'{q:10d}' for q in e[1:]))
+    edge = [m for m, x, y, z in nodes if x in (0.0, a) or y in (0.0, a)]
+    s += ['*SET_NODE_LIST', '         1']
+    for k in range(0, len(edge), 8):
+        s.append(''.join(f'{q:10d}' for q in edge[k:k + 8]))
     s += ['*BOUNDARY_SPC_SET', '         1         0         1         1         1'
           '         1         1         1', '*END']
     return s
@@ -420,6 +452,9 @@ def main():
         if len(sys.argv) > 2:
             ELFORM = int(sys.argv[2])
         lines = bend()
+        out = sys.argv[3] if len(sys.argv) > 3 else None
+    elif kind == 'pressure':
+        lines = pressure(int(sys.argv[2]))
         out = sys.argv[3] if len(sys.argv) > 3 else None
     elif kind == 'rotation':
         lines = rotation()

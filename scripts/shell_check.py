@@ -28,6 +28,15 @@
       from history node BALL (the body's lowest/highest node) to PLATE (the plate centre)
       never below GMIN (the contact surface half a thickness off the mid-surface), and BALL
       ends moving against its initial direction (it rebounds).
+  shell_check.py pressure OUT REF T1 TOL1 TOL2 PMIN
+      the clamped plate under a ramped pressure (gen_shell_deck.py pressure): the centre's
+      deflection (first history node) at the first nodout line at or after T1 against the
+      small-deflection clamped-plate value 0.00126 q a**4 / D (Timoshenko & Woinowsky-
+      Krieger, table 35; a = 100, t = 1, E 210, PR 0.3, RHO 7.85e-6, q = 3e-4 t/20) times
+      the ramp's dynamic factor 1 - sin(w t)/(w t) of the first mode (w = 35.99/a**2
+      sqrt(D/(RHO t)), Leissa 1969) within TOL1 relative; the final centre deflection against run REF's (the same plate of another
+      formulation) within TOL2 relative; the largest effective plastic strain of the last
+      plot state at least PMIN (the plate went plastic).
   shell_check.py mirror OUT1 OUT2 NODE TOL
       two runs mirrored in z (the plate struck from either side): NODE's z velocity in OUT2
       is minus that in OUT1 at every nodout line, within TOL relative to the largest.
@@ -234,6 +243,29 @@ def contact(argv):
     return ok and v0*v1 < 0.0
 
 
+def pressure(argv):
+    out, ref, t1, tol1, tol2, pmin = argv[0], argv[1], *map(float, argv[2:6])
+    d = nodout(out)
+    rows = d[sorted(d)[0]]
+    row = [r for r in rows if r[0] >= t1][0]
+    q = 3.0e-4*row[0]/20.0
+    dplate = 210.0*1.0**3/(12.0*(1.0 - 0.3**2))
+    w1 = 35.99/100.0**2*math.sqrt(dplate/7.85e-6)
+    wref = 0.00126*q*100.0**4/dplate*(1.0 - math.sin(w1*row[0])/(w1*row[0]))
+    e1 = abs(abs(row[1][2]) - wref)/wref
+    print(f'centre deflection at t = {row[0]:.4f}: {abs(row[1][2]):.6f}, clamped plate '
+          f'(small deflection, ramp) {wref:.6f}: relative difference {e1:.3e} (tol {tol1:.1e})')
+    dr = nodout(ref)
+    wa, wb = rows[-1][1][2], dr[sorted(dr)[0]][-1][1][2]
+    e2 = abs(wa - wb)/abs(wb)
+    print(f'final centre deflection {wa:.6f} against {wb:.6f} ({ref}): relative difference '
+          f'{e2:.3e} (tol {tol2:.1e})')
+    h5 = out + '/d3plot.h5'
+    ep = max(h5_dataset(h5, f'/states/{h5_last_state(h5)}/eff_plastic_strain'))
+    print(f'largest effective plastic strain {ep:.4e} (at least {pmin:.1e})')
+    return e1 <= tol1 and e2 <= tol2 and ep >= pmin
+
+
 def mirror(argv):
     a, b, node, tol = nodout(argv[0])[int(argv[2])], nodout(argv[1])[int(argv[2])], \
         int(argv[2]), float(argv[3])
@@ -247,7 +279,8 @@ def mirror(argv):
 def main():
     kind, argv = sys.argv[1], sys.argv[2:]
     ok = {'period': period, 'patch': patch, 'rotation': rotation, 'energy': energy,
-          'yield': yield_check, 'contact': contact, 'mirror': mirror}[kind](argv)
+          'yield': yield_check, 'contact': contact, 'mirror': mirror,
+          'pressure': pressure}[kind](argv)
     if not ok:
         print('FAILED')
         sys.exit(1)

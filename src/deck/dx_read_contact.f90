@@ -124,6 +124,9 @@ contains
       if (blk%n >= i0 + 3 .and. c%ok()) then
          call c%seek(i0 + 3)
          call c%int('SOFT', 0, ct%soft)
+         if (c%ok() .and. ct%soft == 2) call c%fail('SOFT', 'SOFT = 2 (segment-based '// &
+            'contact: segment against segment, pinball search) is not supported (supported: '// &
+            '0 segment stiffness, 1 soft constraint)')
          if (c%ok() .and. ct%soft /= 0 .and. ct%soft /= 1) call c%fail('SOFT', 'only SOFT = '// &
             '0 (segment stiffness) and 1 (soft constraint) are supported, got '//str(ct%soft))
          call c%real('SOFSCL', 0.1_wp, ct%sofscl)

@@ -63,9 +63,10 @@ module dx_element_types
    !> shells: 1000 + the *SECTION_SHELL ELFORM (the solid and shell ELFORM numbers overlap)
    integer, parameter :: ETYPE_SHELL_BT = 1002   !< Belytschko-Lin-Tsay quadrilateral (dx_shell_bt)
    integer, parameter :: ETYPE_SHELL_FI = 1016   !< fully integrated, assumed shear (dx_shell_fi)
-   !> partition weight of the fully integrated shell (the hexahedron's is 1; docs/history.md,
-   !> "Shells, part 2": measured ns per element-cycle against the BT shell's)
-   integer, parameter :: FI_WEIGHT = 9
+   !> partition weight of the fully integrated shell (the hexahedron's is 1, the BT shell's 3):
+   !> 3 x 3.8, its CPU per element-cycle against the BT shell's (80x16 cantilever plate, NIP
+   !> 3, 9196 cycles: 2020 against 529 ns; docs/history.md, "Shells, part 2: ELFORM 16")
+   integer, parameter :: FI_WEIGHT = 11
    !> 2D solids in the x-y plane (dx_quad2d): plane strain (ELFORM 13), area-weighted (14) and
    !> volume-weighted (15) axisymmetric quadrilaterals, x = r, y = z (the axis)
    integer, parameter :: ETYPE_QUAD2D_PS = 1013, ETYPE_QUAD2D_AW = 1014, ETYPE_QUAD2D_VW = 1015

@@ -49,7 +49,6 @@ module dx_shell_bt
    implicit none
    private
    public :: shell_bt_block, shell_bt_rotary_inertia, thickness_rule
-   public :: turn_stress, add_resultants     ! (also the fully integrated shell's: dx_shell_fi)
 
    integer, parameter :: NEN = 4
    real(wp), parameter :: HG(4) = [1.0_wp, -1.0_wp, 1.0_wp, -1.0_wp]

@@ -24,7 +24,7 @@ module dx_shell_fi
    use dx_material, only: material_t
    use dx_element_types, only: elem_block_t, part_t, ES_THK, block_result_t, &
                                ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL, shell_frame
-   use dx_shell_bt, only: thickness_rule, turn_stress, add_resultants
+   use dx_shell_bt, only: thickness_rule
    implicit none
    private
    public :: shell_fi_block, shell_fi_bmat
@@ -298,4 +298,34 @@ contains
       vl(1, :) = vl(1, :) + zw*oy
       vl(2, :) = vl(2, :) + zw*ox
    end subroutine unwarp
+
+   !> Turns the in-plane stresses of n points by the angle of cosine c, sine s about the
+   !> normal (the transverse shears as a vector). The BT shell has its own private copy:
+   !> making that one public changed the compiler's inlining of dx_shell_bt and so the last
+   !> bits of every BT run, which must stay as they are.
+   pure subroutine turn_stress(n, c, s, sig)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: c(:), s(:)
+      real(wp), intent(inout) :: sig(:, :)
+      real(wp) :: sxx, syy, sxy, syz, sxz
+      integer :: i
+      do i = 1, n
+         sxx = sig(i, 1); syy = sig(i, 2); sxy = sig(i, 4); syz = sig(i, 5); sxz = sig(i, 6)
+         sig(i, 1) = c(i)**2*sxx - 2.0_wp*c(i)*s(i)*sxy + s(i)**2*syy
+         sig(i, 2) = s(i)**2*sxx + 2.0_wp*c(i)*s(i)*sxy + c(i)**2*syy
+         sig(i, 4) = c(i)*s(i)*(sxx - syy) + (c(i)**2 - s(i)**2)*sxy
+         sig(i, 6) = c(i)*sxz - s(i)*syz
+         sig(i, 5) = s(i)*sxz + c(i)*syz
+      end do
+   end subroutine turn_stress
+
+   !> r += the resultants (N, M, Q) of one lamina of stresses s (xx, yy, xy, yz, zx) at z with
+   !> weight tw
+   pure subroutine add_resultants(r, s, tw, z)
+      real(wp), intent(inout) :: r(8)
+      real(wp), intent(in) :: s(5), tw, z
+      r(1:3) = r(1:3) + tw*s(1:3)
+      r(4:6) = r(4:6) + tw*z*s(1:3)
+      r(7:8) = r(7:8) + tw*s(4:5)
+   end subroutine add_resultants
 end module dx_shell_fi
