@@ -54,7 +54,8 @@
   gen_nr2d_decks.py tiedbar DECK MODE      plane strain: a steel bar 80 x 2 mm cut at x = 40,
                                             the half x < 40 at -10 m/s, the other at rest;
                                             MODE tied, oneway (*CONTACT_2D_AUTOMATIC_TIED,
-                                            _TIED_ONE_WAY), contact (surface to surface), uncut
+                                            _TIED_ONE_WAY; TIETYP 1, oneway blank), contact
+                                            (surface to surface), uncut
 Each of the wave decks writes the history nodes on the diagonal (or the axis of the strip) every 0.2 mm
 of radius; the same mesh with a larger ROUT or LENGTH has the same nodes and elements inside
 (the reference run without reflection, nr2d_check.py). Units: mm, ms, kg, GPa (steel).
@@ -452,7 +453,8 @@ def tiedbar(path, mode, v0=10.0, n=40):
     if mode in ('tied', 'oneway'):
         s += ['$   TBIRTH', f'{0.0:10.1f}',
               '$       VC       VDC       IPF     SLIDE    ISTIFF   TIEDGAP    IGAPCL    TIETYP',
-              f'{0.0:10.1f}{0.0:10.1f}{0:10d}{0:10d}{0:10d}{0.0:10.1f}{0:10d}{1:10d}']
+              f'{0.0:10.1f}{0.0:10.1f}{0:10d}{0:10d}{0:10d}{0.0:10.1f}{0:10d}'
+              + (f'{1:10d}' if mode == 'tied' else '')]   # (oneway: TIETYP blank)
     s += ['*INITIAL_VELOCITY_NODE'] + [f'{k:10d}{v:10.3f}{0.0:10.3f}{0.0:10.3f}'
                                        for k, v in sorted(vx.items())]
     s += ['*END']

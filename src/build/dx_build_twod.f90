@@ -300,7 +300,8 @@ contains
             if (r%tied > 0 .and. r%tietyp == 0) call log_warn(at(inp, r%src)//'TIETYP = 0: '// &
                'LS-DYNA ties by kinematic constraints where it can; dynx ties by a penalty '// &
                'spring (as TIETYP = 1), stiffness SFACT x K L**2/A of the master edge''s element')
-            if (r%istiff == 0 .and. r%tied == 0) call log_warn(at(inp, r%src)//'ISTIFF = 0: dynx scales the '// &
+            if (r%istiff == 0 .and. r%tied == 0) call log_warn(at(inp, r%src)// &
+               'ISTIFF = 0: dynx scales the '// &
                'contact stiffness from the segment stiffness and dimensions (ISTIFF = 2); '// &
                'LS-DYNA''s explicit default is ISTIFF = 1 (segment masses and the step)')
             ci%sofscl = 0.1_wp*r%sfact

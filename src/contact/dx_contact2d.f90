@@ -188,8 +188,9 @@ contains
    !> stiff as the elements, so its node's frequency is the elements' and the tie's together:
    !> 1/dt**2 = 1/dte**2 + omega**2/4 (dte the elements' step, no larger than the tied
    !> nodes' own; omega**2 = npass k (1/m_s + (1 - xi)**2/m_a + xi**2/m_b): two-way ties
-   !> hold a pair of coincident nodes twice). Alone, the bound 2/omega lets the bar of tiedbar (two-way ties on
-   !> coincident nodes) blow up at cycle 28: the pair's mode is 2 k_e/m + 8 k/m.
+   !> hold a pair of coincident nodes twice). Alone, the bound 2/omega lets the bar of
+   !> tiedbar (two-way ties on coincident nodes) blow up at cycle 28: the pair's mode is
+   !> 2 k_e/m + 8 k/m.
    subroutine tie_pass(c, ps, npass, x, mass, dte, dtcrit)
       type(contact2d_t), intent(inout) :: c
       type(c2d_pass_t), intent(in) :: ps
