@@ -78,16 +78,8 @@ contains
       end do
       ext = ext/real(max(1, count(act)), wp)
       mpi = allocated(p%mine) .or. allocated(p%segok)
-      if (mpi) then   ! the box of all the grown boxes here (dx_par_contact idle_reduce)
-         lo = huge(1.0_wp); hi = -huge(1.0_wp)
-         do s = 1, p%nseg
-            if (.not. act(s)) cycle
-            lo = min(lo, blo(:, s))
-            hi = max(hi, bhi(:, s))
-         end do
-         p%sbox(1:3) = lo
-         p%sbox(4:6) = hi
-      end if
+      ! (MPI: the box of all the grown boxes here, for dx_par_contact_ghost idle_reduce)
+      if (mpi) call act_box(p%sbox(1:3), p%sbox(4:6))
       ! MPI runs: only the segments whose grown box reaches this strip's slab (the halo) can
       ! be candidates of its nodes; the grid covers them and the strip's nodes. A node's
       ! candidates (the segments whose grown box holds it, ascending) do not depend on the
@@ -103,12 +95,7 @@ contains
             act(s) = act(s) .and. all(bhi(:, s) >= slo3) .and. all(blo(:, s) <= shi3)
          end do
       end if
-      lo = huge(1.0_wp); hi = -huge(1.0_wp)
-      do s = 1, p%nseg
-         if (.not. act(s)) cycle
-         lo = min(lo, blo(:, s))
-         hi = max(hi, bhi(:, s))
-      end do
+      call act_box(lo, hi)
       glo = lo; ghi = hi        ! the grown segment boxes' box
       slo3 = huge(1.0_wp); shi3 = -huge(1.0_wp)
       do i = 1, p%nnode
@@ -245,6 +232,18 @@ contains
       if (allocated(p%cand)) deallocate(p%cand)
       p%cand = cand(1:nc)
       if (.not. ok) p%cand_ptr = 1
+   contains
+      !> the box of the grown boxes of the segments in act
+      subroutine act_box(a, b)
+         real(wp), intent(out) :: a(3), b(3)
+         integer :: q
+         a = huge(1.0_wp); b = -huge(1.0_wp)
+         do q = 1, p%nseg
+            if (.not. act(q)) cycle
+            a = min(a, blo(:, q))
+            b = max(b, bhi(:, q))
+         end do
+      end subroutine act_box
    end subroutine bucket_sort
 
    !> Unit normals of the slave nodes: the area-weighted mean of their segments' normals.
