@@ -4,6 +4,7 @@
 !> 5 stopped at a checkpoint (signal or wall-clock limit; continue with -r).
 module dx_error
    use, intrinsic :: iso_c_binding, only: c_int
+   use dx_libc, only: c_exit
    implicit none
    private
    public :: error_t, set_error, set_field_error, EXIT_INPUT, EXIT_NUMERIC, EXIT_IO, EXIT_OK, &
@@ -25,13 +26,6 @@ module dx_error
       integer :: nmore = 0                   !< lines in more (at most MAX_MORE)
       integer :: ndrop = 0                   !< further errors past MAX_MORE, only counted
    end type error_t
-
-   interface
-      subroutine c_exit(status) bind(C, name='exit')
-         import :: c_int
-         integer(c_int), value :: status
-      end subroutine c_exit
-   end interface
 
 contains
 

@@ -11,10 +11,13 @@
 !> flock(2)/getpid(2)/gethostname(2) for the output-folder lock.
 module dx_io_sys
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_long, c_ptr, &
-      c_null_ptr, c_size_t, c_int16_t, c_int32_t, c_int64_t, c_associated, c_f_pointer
+      c_null_ptr, c_size_t, c_associated, c_f_pointer
    use dx_error, only: error_t, set_error, EXIT_IO, EXIT_INPUT
    use dx_strings, only: string_t
    use dx_sort, only: sort_names
+   use dx_libc, only: statx_t, c_rename, c_mkdir, c_access, c_fnmatch, c_exit, c_fsync, c_close, &
+      c_truncate, c_time, c_open, c_write, c_read, c_ftruncate, c_errno_location, c_strerror, &
+      c_strlen, c_statx, c_flock, c_getpid, c_gethostname, c_opendir, c_readdir, c_closedir
    implicit none
    private
    public :: sys_rename, sys_mkdir_p, sys_fnmatch, sys_exit, sys_fsync, sys_truncate, &
@@ -31,146 +34,8 @@ module dx_io_sys
    integer(c_int), parameter :: AT_FDCWD = -100_c_int, STATX_TYPE = 1_c_int
    integer, parameter :: EINTR = 4, EIO = 5, EFBIG = 27, ENOSPC = 28, &
                          EROFS = 30, EDQUOT = 122
-
-   !> The head of Linux's struct statx (the same layout on every architecture); 256 bytes.
-   type, bind(C) :: statx_t
-      integer(c_int32_t) :: mask = 0, blksize = 0
-      integer(c_int64_t) :: attributes = 0
-      integer(c_int32_t) :: nlink = 0, uid = 0, gid = 0
-      integer(c_int16_t) :: mode = 0, spare0 = 0
-      integer(c_int64_t) :: rest(28) = 0
-   end type statx_t
-
    integer(c_int), parameter :: W_OK = 2_c_int
    integer(c_int), parameter :: MODE_755 = int(o'755', c_int)
-
-   interface
-      function c_rename(old, new) bind(C, name='rename') result(r)
-         import :: c_int, c_char
-         character(kind=c_char), intent(in) :: old(*), new(*)
-         integer(c_int) :: r
-      end function c_rename
-      function c_mkdir(path, mode) bind(C, name='mkdir') result(r)
-         import :: c_int, c_char
-         character(kind=c_char), intent(in) :: path(*)
-         integer(c_int), value :: mode
-         integer(c_int) :: r
-      end function c_mkdir
-      function c_access(path, mode) bind(C, name='access') result(r)
-         import :: c_int, c_char
-         character(kind=c_char), intent(in) :: path(*)
-         integer(c_int), value :: mode
-         integer(c_int) :: r
-      end function c_access
-      function c_fnmatch(pattern, string, flags) bind(C, name='fnmatch') result(r)
-         import :: c_int, c_char
-         character(kind=c_char), intent(in) :: pattern(*), string(*)
-         integer(c_int), value :: flags
-         integer(c_int) :: r
-      end function c_fnmatch
-      subroutine c_exit(status) bind(C, name='exit')
-         import :: c_int
-         integer(c_int), value :: status
-      end subroutine c_exit
-      function c_fsync(fd) bind(C, name='fsync') result(r)
-         import :: c_int
-         integer(c_int), value :: fd
-         integer(c_int) :: r
-      end function c_fsync
-      function c_close(fd) bind(C, name='close') result(r)
-         import :: c_int
-         integer(c_int), value :: fd
-         integer(c_int) :: r
-      end function c_close
-      function c_truncate(path, length) bind(C, name='truncate') result(r)
-         import :: c_int, c_char, c_long
-         character(kind=c_char), intent(in) :: path(*)
-         integer(c_long), value :: length
-         integer(c_int) :: r
-      end function c_truncate
-      function c_time(tloc) bind(C, name='time') result(t)
-         import :: c_long, c_ptr
-         type(c_ptr), value :: tloc
-         integer(c_long) :: t
-      end function c_time
-      function c_open3(path, flags, mode) bind(C, name='open') result(fd)
-         import :: c_int, c_char
-         character(kind=c_char), intent(in) :: path(*)
-         integer(c_int), value :: flags, mode
-         integer(c_int) :: fd
-      end function c_open3
-      function c_write(fd, buf, n) bind(C, name='write') result(r)
-         import :: c_int, c_char, c_size_t, c_long
-         integer(c_int), value :: fd
-         character(kind=c_char), intent(in) :: buf(*)
-         integer(c_size_t), value :: n
-         integer(c_long) :: r
-      end function c_write
-      function c_read(fd, buf, n) bind(C, name='read') result(r)
-         import :: c_int, c_char, c_size_t, c_long
-         integer(c_int), value :: fd
-         character(kind=c_char), intent(inout) :: buf(*)
-         integer(c_size_t), value :: n
-         integer(c_long) :: r
-      end function c_read
-      function c_ftruncate(fd, length) bind(C, name='ftruncate') result(r)
-         import :: c_int, c_long
-         integer(c_int), value :: fd
-         integer(c_long), value :: length
-         integer(c_int) :: r
-      end function c_ftruncate
-      function c_errno_location() bind(C, name='__errno_location') result(p)
-         import :: c_ptr
-         type(c_ptr) :: p
-      end function c_errno_location
-      function c_strerror(errnum) bind(C, name='strerror') result(p)
-         import :: c_int, c_ptr
-         integer(c_int), value :: errnum
-         type(c_ptr) :: p
-      end function c_strerror
-      function c_strlen(s) bind(C, name='strlen') result(n)
-         import :: c_ptr, c_size_t
-         type(c_ptr), value :: s
-         integer(c_size_t) :: n
-      end function c_strlen
-      function c_statx(dirfd, path, flags, mask, buf) bind(C, name='statx') result(r)
-         import :: c_int, c_char, statx_t
-         integer(c_int), value :: dirfd, flags, mask
-         character(kind=c_char), intent(in) :: path(*)
-         type(statx_t), intent(out) :: buf
-         integer(c_int) :: r
-      end function c_statx
-      function c_flock(fd, op) bind(C, name='flock') result(r)
-         import :: c_int
-         integer(c_int), value :: fd, op
-         integer(c_int) :: r
-      end function c_flock
-      function c_getpid() bind(C, name='getpid') result(p)
-         import :: c_int
-         integer(c_int) :: p
-      end function c_getpid
-      function c_gethostname(name, n) bind(C, name='gethostname') result(r)
-         import :: c_int, c_char, c_size_t
-         character(kind=c_char), intent(inout) :: name(*)
-         integer(c_size_t), value :: n
-         integer(c_int) :: r
-      end function c_gethostname
-      function c_opendir(path) bind(C, name='opendir') result(d)
-         import :: c_char, c_ptr
-         character(kind=c_char), intent(in) :: path(*)
-         type(c_ptr) :: d
-      end function c_opendir
-      function c_readdir(d) bind(C, name='readdir') result(e)
-         import :: c_ptr
-         type(c_ptr), value :: d
-         type(c_ptr) :: e
-      end function c_readdir
-      function c_closedir(d) bind(C, name='closedir') result(r)
-         import :: c_ptr, c_int
-         type(c_ptr), value :: d
-         integer(c_int) :: r
-      end function c_closedir
-   end interface
 
 contains
 
@@ -223,7 +88,7 @@ contains
       character(*), intent(in) :: path
       type(error_t), allocatable, intent(out) :: error
       integer(c_int) :: fd, r
-      fd = c_open3(path//c_null_char, 0_c_int, 0_c_int)
+      fd = c_open(path//c_null_char, 0_c_int, 0_c_int)
       if (fd < 0) then
          call set_error(error, 'cannot open '//path//' to sync it to disk', EXIT_IO)
          return
@@ -296,7 +161,7 @@ contains
       else
          flags = ior(flags, O_TRUNC)
       end if
-      fd = int(c_open3(path//c_null_char, flags, MODE_644))
+      fd = int(c_open(path//c_null_char, flags, MODE_644))
       if (fd < 0) call set_error(error, 'cannot open '//path//' for writing: '// &
                                  sys_strerror(sys_errno()), EXIT_IO)
    end subroutine sys_open_write
@@ -424,7 +289,7 @@ contains
       type(error_t), allocatable, intent(out) :: error
       integer :: e
       locked = .false.
-      fd = int(c_open3(path//c_null_char, ior(ior(O_RDWR, O_CREAT), O_CLOEXEC), MODE_644))
+      fd = int(c_open(path//c_null_char, ior(ior(O_RDWR, O_CREAT), O_CLOEXEC), MODE_644))
       if (fd < 0) then
          call set_error(error, 'cannot open the lock file '//path//': '// &
                         sys_strerror(sys_errno()), EXIT_IO)
@@ -449,7 +314,7 @@ contains
       integer(c_long) :: n
       integer :: i
       text = ''
-      fd = c_open3(path//c_null_char, 0_c_int, 0_c_int)
+      fd = c_open(path//c_null_char, 0_c_int, 0_c_int)
       if (fd < 0) return
       n = c_read(fd, buf, 255_c_size_t)
       if (c_close(fd) /= 0) continue

@@ -23,6 +23,7 @@
 module dx_memory_fault
    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_size_t, c_ptr, c_funptr, &
       c_funloc, c_loc, c_null_ptr, c_f_pointer, c_int64_t, c_char, c_null_char
+   use dx_libc, only: c_open, c_read, c_write, c_close, c_errno_location, c_exit_now
    implicit none
    private
    public :: memory_fault_install
@@ -83,45 +84,12 @@ module dx_memory_fault
          type(rlimit_t), intent(out) :: rl
          integer(c_int) :: r
       end function c_getrlimit
-      function c_open(path, flags) bind(C, name='open') result(fd)
-         import :: c_int, c_char
-         character(kind=c_char), intent(in) :: path(*)
-         integer(c_int), value :: flags
-         integer(c_int) :: fd
-      end function c_open
-      function c_read(fd, buf, n) bind(C, name='read') result(r)
-         import :: c_int, c_char, c_size_t, c_long
-         integer(c_int), value :: fd
-         character(kind=c_char) :: buf(*)
-         integer(c_size_t), value :: n
-         integer(c_long) :: r
-      end function c_read
-      function c_write(fd, buf, n) bind(C, name='write') result(r)
-         import :: c_int, c_char, c_size_t, c_long
-         integer(c_int), value :: fd
-         character(kind=c_char), intent(in) :: buf(*)
-         integer(c_size_t), value :: n
-         integer(c_long) :: r
-      end function c_write
-      function c_close(fd) bind(C, name='close') result(r)
-         import :: c_int
-         integer(c_int), value :: fd
-         integer(c_int) :: r
-      end function c_close
       function c_on_exit(fn, arg) bind(C, name='on_exit') result(r)
          import :: c_int, c_funptr, c_ptr
          type(c_funptr), value :: fn
          type(c_ptr), value :: arg
          integer(c_int) :: r
       end function c_on_exit
-      function c_errno_location() bind(C, name='__errno_location') result(p)
-         import :: c_ptr
-         type(c_ptr) :: p
-      end function c_errno_location
-      subroutine c_exit_now(status) bind(C, name='_exit')
-         import :: c_int
-         integer(c_int), value :: status
-      end subroutine c_exit_now
    end interface
 
 contains
@@ -249,7 +217,7 @@ contains
       integer(c_int) :: fd, r
       integer :: i
       b = 0
-      fd = c_open('/proc/self/statm'//c_null_char, 0_c_int)
+      fd = c_open('/proc/self/statm'//c_null_char, 0_c_int, 0_c_int)
       if (fd < 0) return
       n = c_read(fd, buf, int(size(buf), c_size_t))
       r = c_close(fd)

@@ -23,6 +23,7 @@
 module dx_signals
    use, intrinsic :: iso_c_binding, only: c_int, c_funptr, c_funloc, c_intptr_t
    use dx_memory_fault, only: memory_fault_install
+   use dx_libc, only: c_signal, c_exit_now, c_raise
    implicit none
    private
    public :: signals_install, signal_stop_requested, signal_dump_requested, signal_name, &
@@ -36,24 +37,6 @@ module dx_signals
    integer(c_int), volatile, save :: stop_sig = 0    !< SIGTERM/SIGINT/SIGUSR2 received (number)
    integer(c_int), volatile, save :: dump_cnt = 0    !< SIGUSR1s received (written by the handler)
    integer, save :: dump_done = 0                    !< SIGUSR1 count already served by a dump
-
-   interface
-      function c_signal(sig, handler) bind(C, name='signal') result(old)
-         import :: c_int, c_funptr
-         integer(c_int), value :: sig
-         type(c_funptr), value :: handler
-         type(c_funptr) :: old
-      end function c_signal
-      subroutine c_exit_now(status) bind(C, name='_exit')
-         import :: c_int
-         integer(c_int), value :: status
-      end subroutine c_exit_now
-      function c_raise(sig) bind(C, name='raise') result(r)
-         import :: c_int
-         integer(c_int), value :: sig
-         integer(c_int) :: r
-      end function c_raise
-   end interface
 
 contains
 

@@ -18,25 +18,29 @@ contains
    pure function upper(s) result(u)
       character(*), intent(in) :: s
       character(len(s)) :: u
-      integer :: i, k
-      u = s
-      do i = 1, len(s)
-         k = iachar(s(i:i))
-         if (k >= iachar('a') .and. k <= iachar('z')) u(i:i) = achar(k - 32)
-      end do
+      u = shift_case(s, 'a', 'z', -32)
    end function upper
 
    !> Lower-case copy of s (ASCII).
    pure function lower(s) result(u)
       character(*), intent(in) :: s
       character(len(s)) :: u
+      u = shift_case(s, 'A', 'Z', 32)
+   end function lower
+
+   !> s with the letters first..last moved by d in ASCII (the case change of upper/lower).
+   pure function shift_case(s, first, last, d) result(u)
+      character(*), intent(in) :: s
+      character, intent(in) :: first, last
+      integer, intent(in) :: d
+      character(len(s)) :: u
       integer :: i, k
       u = s
       do i = 1, len(s)
          k = iachar(s(i:i))
-         if (k >= iachar('A') .and. k <= iachar('Z')) u(i:i) = achar(k + 32)
+         if (k >= iachar(first) .and. k <= iachar(last)) u(i:i) = achar(k + d)
       end do
-   end function lower
+   end function shift_case
 
    !> Integer as a trimmed string.
    pure function str_int(i) result(s)

@@ -23,12 +23,14 @@
 module dx_hex8
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_material, only: material_t
-   use dx_erosion, only: erosion_points, erosion_one_point, erosion_now, erosion_strain, &
-                         erosion_strain_mean
+   use dx_erosion, only: erosion_points, erosion_now, erosion_strain, erosion_strain_mean
    use dx_element_types, only: elem_block_t, part_t, ES_WORK, ES_HGS, ES_PHIM, block_result_t, &
                                HEX_ERR_NEGVOL => ELEM_ERR_NEGVOL, &
                                HEX_ERR_MATERIAL => ELEM_ERR_MATERIAL
    use dx_solid_kernels, only: cube_roots, hex8_mass_share   ! (the latter public here too)
+   use dx_solid_point, only: gather_mid, strain_increments, volumes_now, jaumann, &
+                             point_stress, bulk_viscosity, work_rates, stress_forces, &
+                             scatter_forces
    use dx_hex8_geometry, only: hex8_bvectors, hex8_bvectors_chunk, hex8_char_length, &
                                GAMMA_HG, shape_derivs, point_gradients, point_gradients_one
    implicit none
@@ -84,25 +86,6 @@ contains
       end select
    end subroutine hex8_block
 
-   !> Jaumann rotation of stress (Voigt) by the spin increment (w12, w23, w31) = W*dt.
-   pure subroutine jaumann(n, nv, w12, w23, w31, s)
-      integer, intent(in) :: n, nv
-      real(wp), intent(in) :: w12(nv), w23(nv), w31(nv)
-      real(wp), intent(inout) :: s(nv, 6)
-      real(wp) :: d1, d2, d3, d4, d5, d6
-      integer :: i
-      do i = 1, n
-         d1 = 2.0_wp*(w12(i)*s(i,4) - w31(i)*s(i,6))
-         d2 = 2.0_wp*(w23(i)*s(i,5) - w12(i)*s(i,4))
-         d3 = 2.0_wp*(w31(i)*s(i,6) - w23(i)*s(i,5))
-         d4 = w12(i)*(s(i,2) - s(i,1)) + w23(i)*s(i,6) - w31(i)*s(i,5)
-         d5 = w23(i)*(s(i,3) - s(i,2)) + w31(i)*s(i,4) - w12(i)*s(i,6)
-         d6 = w31(i)*(s(i,1) - s(i,3)) + w12(i)*s(i,5) - w23(i)*s(i,4)
-         s(i,1) = s(i,1) + d1; s(i,2) = s(i,2) + d2; s(i,3) = s(i,3) + d3
-         s(i,4) = s(i,4) + d4; s(i,5) = s(i,5) + d5; s(i,6) = s(i,6) + d6
-      end do
-   end subroutine jaumann
-
    subroutine hex8_1pt(blk, mat, part, x, v, dt_old, f, res, time, dtfloor)
       type(elem_block_t), intent(inout) :: blk
       class(material_t), intent(in) :: mat
@@ -119,25 +102,15 @@ contains
       real(wp), dimension(nv_chunk) :: bv, vold, lcb, wo, wn, de, lc
       real(wp) :: lg(nv_chunk, 9), de6(nv_chunk, 6), so(nv_chunk, 6), sn(nv_chunk, 6)
       real(wp) :: deps(blk%nel, 6)
-      real(wp) :: dtl, hdt, l1, l2, l3, l4, l5, l6, l7, l8, l9
+      real(wp) :: hdt, l1, l2, l3, l4, l5, l6, l7, l8, l9
       integer :: ierr(nv_chunk)
-      logical :: failed(nv_chunk)
-      integer :: i, k, n, nn, w
+      integer :: i, k, n, w
       n = blk%nel
       w = blk%esc(ES_WORK)
       ! ---- gather, and the mid-step geometry x(n-1/2) = x(n) - dt/2 v(n-1/2) of the strain
       ! increment and spin
       hdt = 0.5_wp*dt_old
-      do k = 1, 8
-         do i = 1, n
-            nn = blk%conn(k, i)
-            xe(i, k) = x(1, nn); ye(i, k) = x(2, nn); ze(i, k) = x(3, nn)
-            vx(i, k) = v(1, nn); vy(i, k) = v(2, nn); vz(i, k) = v(3, nn)
-            xm(i, k) = xe(i, k) - hdt*vx(i, k)
-            ym(i, k) = ye(i, k) - hdt*vy(i, k)
-            zm(i, k) = ze(i, k) - hdt*vz(i, k)
-         end do
-      end do
+      call gather_mid(blk, n, nv_chunk, 8, x, v, hdt, xe, ye, ze, vx, vy, vz, xm, ym, zm)
       call hex8_bvectors_chunk(n, xm, ym, zm, bx, by, bz, volm)
       ! velocity gradient times V, L_ij V = v_iI B_jI (mid-step B)
       do i = 1, n
@@ -158,26 +131,8 @@ contains
          lg(i, 1) = l1; lg(i, 2) = l2; lg(i, 3) = l3; lg(i, 4) = l4; lg(i, 5) = l5
          lg(i, 6) = l6; lg(i, 7) = l7; lg(i, 8) = l8; lg(i, 9) = l9
       end do
-      do i = 1, n
-         ierr(i) = 0
-         if (.not. (volm(i) > vcrush*blk%vol0(i))) ierr(i) = HEX_ERR_NEGVOL
-         if (.not. (volm(i) > vcrush*blk%vol0(i))) volm(i) = 1.0_wp
-         alive(i) = merge(0.0_wp, 1.0_wp, blk%failed(i))
-         dtl = dt_old/volm(i)
-         de6(i, 1) = lg(i, 1)*dtl
-         de6(i, 2) = lg(i, 2)*dtl
-         de6(i, 3) = lg(i, 3)*dtl
-         de6(i, 4) = 0.5_wp*(lg(i, 4) + lg(i, 5))*dtl
-         de6(i, 5) = 0.5_wp*(lg(i, 6) + lg(i, 7))*dtl
-         de6(i, 6) = 0.5_wp*(lg(i, 8) + lg(i, 9))*dtl
-         w12(i) = 0.5_wp*(lg(i, 4) - lg(i, 5))*dtl
-         w23(i) = 0.5_wp*(lg(i, 6) - lg(i, 7))*dtl
-         w31(i) = 0.5_wp*(lg(i, 8) - lg(i, 9))*dtl
-         trd(i) = (lg(i, 1) + lg(i, 2) + lg(i, 3))/volm(i)
-      end do
-      do k = 1, 6
-         deps(1:n, k) = de6(1:n, k)
-      end do
+      call strain_increments(blk, n, dt_old, lg, volm, ierr, alive, de6, deps, w12, w23, w31, &
+                             trd)
       if (part%ero%on) call erosion_strain(blk, n, de6, w12, w23, w31)   ! strain criteria
       ! ---- geometry at t(n): forces, volume, time step; B(n).v(n-1/2) for the viscous work
       call hex8_bvectors_chunk(n, xe, ye, ze, bx, by, bz, vol)
@@ -189,76 +144,31 @@ contains
          end do
          bv(i) = l1
       end do
-      do i = 1, n
-         vold(i) = blk%vol0(i)*blk%relvol(i)
-         if (.not. (vol(i) > vcrush*blk%vol0(i))) ierr(i) = HEX_ERR_NEGVOL
-         if (.not. (vol(i) > vcrush*blk%vol0(i))) vol(i) = 1.0_wp
-         rv(i) = vol(i)/blk%vol0(i)
-         blk%relvol(i) = rv(i)
-         ein(i) = blk%eint(i)/blk%vol0(i)
-      end do
+      call volumes_now(blk, n, vol, vold, rv, ein, ierr)
       call cube_roots(n, vol, lcb)    ! V**(1/3), the same bits in every SIMD lane (see cube_roots)
       ! the one characteristic length of the time step and the bulk viscosity
       call char_lengths(blk, xe, ye, ze, bx, by, bz, vol, lc)
       ! ---- stress: Jaumann rotation by the spin increment (first order), then the material
-      do k = 1, 6
-         so(1:n, k) = blk%sig(1:n, k, 1)
-      end do
-      call jaumann(n, nv_chunk, w12, w23, w31, so)
-      do k = 1, 6
-         blk%sig(1:n, k, 1) = so(1:n, k)
-      end do
-      if (mat%hv_frame) call mat%rotate_history(n, w12, w23, w31, blk%hv(:, :, 1))
-      call mat%update(n, dt_old, deps, rv, ein, blk%sig(:, :, 1), blk%hv(:, :, 1), ierr)
-      call mat%fails(n, blk%hv(:, :, 1), failed)
-      call erosion_one_point(blk, part, n, rv, dt_old, failed)   ! *MAT_ADD_EROSION
-      call mat%wave_speed(n, rv, blk%hv(:, :, 1), c)
-      if (present(time)) call erosion_now(part, n, time, dtfloor, lc, trd, c, failed)
-      ! ---- erosion (an eroded element keeps zero stress and carries no force from the pass
-      ! it erodes in; the work of its last step with the forces it applied still counts)
-      do i = 1, n
-         if (failed(i) .and. .not. blk%failed(i)) blk%failed(i) = .true.
-      end do
-      do k = 1, 6
-         do i = 1, n
-            sn(i, k) = blk%sig(i, k, 1)
-            if (blk%failed(i)) blk%sig(i, k, 1) = 0.0_wp
-         end do
-      end do
+      ! (erosion: an eroded element keeps zero stress and carries no force from the pass it
+      ! erodes in; the work of its last step with the forces it applied still counts)
+      call point_stress(blk, mat, part, n, dt_old, w12, w23, w31, deps, rv, ein, lc, trd, c, &
+                        so, sn, ierr, time, dtfloor)
       ! ---- bulk viscosity and the centred work of stress and viscosity
       do i = 1, n
          q(i) = bulk_viscosity(part, mat%ro/rv(i), lc(i), trd(i), c(i))
-         wo(i) = volm(i)*(so(i,1)*de6(i,1) + so(i,2)*de6(i,2) + so(i,3)*de6(i,3) &
-                 + 2.0_wp*(so(i,4)*de6(i,4) + so(i,5)*de6(i,5) + so(i,6)*de6(i,6)))
-         wn(i) = volm(i)*(sn(i,1)*de6(i,1) + sn(i,2)*de6(i,2) + sn(i,3)*de6(i,3) &
-                 + 2.0_wp*(sn(i,4)*de6(i,4) + sn(i,5)*de6(i,5) + sn(i,6)*de6(i,6)))
-         if (blk%failed(i)) wn(i) = 0.0_wp   ! eroding now: no force f(n), W(n) = 0
-         if (blk%failed(i)) q(i) = 0.0_wp
       end do
+      call work_rates(blk, n, volm, so, sn, de6, q, wo, wn)
       de(1:n) = trd(1:n)*volm(1:n)     ! B(n-1/2).v(n-1/2)
       call centred_work_block(blk, n, w, dt_old, wo, wn, q, vol, vold, bv, de, alive, res)
       ! ---- internal force f_iI = (sig_ij - q delta_ij) B_jI
-      do k = 1, 8
-         do i = 1, n
-            fx(i, k) = alive(i)*((sn(i,1) - q(i))*bx(i,k) + sn(i,4)*by(i,k) + sn(i,6)*bz(i,k))
-            fy(i, k) = alive(i)*(sn(i,4)*bx(i,k) + (sn(i,2) - q(i))*by(i,k) + sn(i,5)*bz(i,k))
-            fz(i, k) = alive(i)*(sn(i,6)*bx(i,k) + sn(i,5)*by(i,k) + (sn(i,3) - q(i))*bz(i,k))
-         end do
-      end do
+      call stress_forces(n, 8, alive, sn, q, bx, by, bz, fx, fy, fz)
       ! ---- hourglass control
       res%dehg = 0.0_wp
       if (part%qh > 0.0_wp) call hourglass(blk, mat, part, n, dt_old, xe, ye, ze, vx, vy, vz, &
                                            bx, by, bz, vol, lcb, rv, c, w12, w23, w31, &
                                            alive, fx, fy, fz, res%dehg)
       ! ---- scatter (internal force is subtracted)
-      do k = 1, 8
-         do i = 1, n
-            nn = blk%conn(k, i)
-            f(1, nn) = f(1, nn) - fx(i, k)
-            f(2, nn) = f(2, nn) - fy(i, k)
-            f(3, nn) = f(3, nn) - fz(i, k)
-         end do
-      end do
+      call scatter_forces(blk, n, 8, fx, fy, fz, f)
       ! ---- stable time step
       call stable_time_step(blk, part, lc, trd, c, res, lcb)
       call first_error(n, ierr, blk%failed, res)
@@ -463,19 +373,6 @@ contains
       blk%es(1:n, h:h + 11) = fo(1:n, :)
    end subroutine hourglass_gamma_viscous
 
-   !> DYNA bulk viscosity q = rho*l*(Q1*l*e_kk**2 - Q2*c*e_kk) for e_kk < 0, l the element's
-   !> characteristic length of the time step (char_lengths; issue 15: one length for both),
-   !> evaluated as rho*(Q1*(l*e_kk)**2 - Q2*c*(l*e_kk)): l*e_kk = dV/dt/A_max stays bounded
-   !> as a crushed element's V -> 0, where e_kk**2 alone overflows (extreme_crushed_element).
-   pure real(wp) function bulk_viscosity(part, rho, l, trd, c) result(q)
-      type(part_t), intent(in) :: part
-      real(wp), intent(in) :: rho, l, trd, c
-      real(wp) :: lt
-      q = 0.0_wp
-      lt = l*trd
-      if (trd < 0.0_wp) q = rho*(part%q1*lt*lt - part%q2*c*lt)
-   end function bulk_viscosity
-
    !> Sum over the nodes of B_I . v_I for each element (the volume rate V*tr(D) for B at x).
    pure subroutine bdotv(n, bx, by, bz, vx, vy, vz, bv)
       integer, intent(in) :: n
@@ -666,16 +563,7 @@ contains
       w = blk%esc(ES_WORK)
       allocate(dng(3, 8, 8, n))
       call shape_derivs(dn)
-      do k = 1, 8
-         do i = 1, n
-            nn = blk%conn(k, i)
-            xe(i, k) = x(1, nn); ye(i, k) = x(2, nn); ze(i, k) = x(3, nn)
-            vx(i, k) = v(1, nn); vy(i, k) = v(2, nn); vz(i, k) = v(3, nn)
-            xm(i, k) = xe(i, k) - 0.5_wp*dt_old*vx(i, k)
-            ym(i, k) = ye(i, k) - 0.5_wp*dt_old*vy(i, k)
-            zm(i, k) = ze(i, k) - 0.5_wp*dt_old*vz(i, k)
-         end do
-      end do
+      call gather_mid(blk, n, n, 8, x, v, 0.5_wp*dt_old, xe, ye, ze, vx, vy, vz, xm, ym, zm)
       ierr = 0
       call hex8_bvectors(n, n, xe, ye, ze, bx, by, bz, vol)
       call hex8_bvectors(n, n, xm, ym, zm, fx, fy, fz, volm)

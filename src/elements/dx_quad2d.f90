@@ -59,6 +59,7 @@ module dx_quad2d
                                ELEM_ERR_NEGVOL, ETYPE_QUAD2D_AW, ETYPE_QUAD2D_VW, &
                                ETYPE_QUAD2D_PSS
    use dx_hex8, only: centred_work_block, stable_time_step, first_error
+   use dx_solid_point, only: erode_failed
    implicit none
    private
    public :: quad2d_block, quad2d_geometry
@@ -283,15 +284,7 @@ contains
       end if
       call mat%fails(n, blk%hv(:, :, 1), failed)
       call mat%wave_speed(n, rv, blk%hv(:, :, 1), c)
-      do i = 1, n
-         if (failed(i) .and. .not. blk%failed(i)) blk%failed(i) = .true.
-      end do
-      do k = 1, 6
-         do i = 1, n
-            sn(i, k) = blk%sig(i, k, 1)
-            if (blk%failed(i)) blk%sig(i, k, 1) = 0.0_wp
-         end do
-      end do
+      call erode_failed(blk, n, failed, sn)
       ! ---- bulk viscosity and the centred work of stress and viscosity
       do i = 1, n
          q(i) = 0.0_wp

@@ -16,12 +16,13 @@
 module dx_tet4
    use dx_kinds, only: wp, nv_chunk, huge_wp
    use dx_material, only: material_t
-   use dx_erosion, only: erosion_one_point, erosion_now, erosion_strain
+   use dx_erosion, only: erosion_strain
    use dx_element_types, only: elem_block_t, part_t, ES_WORK, block_result_t, ELEM_ERR_NEGVOL, ELEM_ERR_MATERIAL
    use dx_hex8, only: centred_work_block, stable_time_step   ! one copy, inlined in dx_hex8
+   use dx_solid_point, only: gather_mid, strain_increments, volumes_now, point_stress, &
+                             work_rates, stress_forces, scatter_forces
    implicit none
    private
-   real(wp), parameter :: vcrush = epsilon(1.0_wp)   !< collapsed below eps*V0 (as dx_hex8)
    public :: tet4_block, tet4_bvectors
 
    integer, parameter :: NEN = 4
@@ -71,24 +72,14 @@ contains
       real(wp), dimension(nv_chunk) :: bv, vold, lc, wo, wn, de
       real(wp) :: lg(nv_chunk, 9), de6(nv_chunk, 6), so(nv_chunk, 6), sn(nv_chunk, 6)
       real(wp) :: deps(blk%nel, 6)
-      real(wp) :: dtl, hdt, d1, d2, d3, d4, d5, d6
+      real(wp) :: hdt
       integer :: ierr(nv_chunk)
-      logical :: failed(nv_chunk)
-      integer :: i, k, n, nn, w
+      integer :: i, k, n, w
       if (blk%esc(ES_WORK) == 0) call blk%es_add(ES_WORK, 4)
       w = blk%esc(ES_WORK)
       n = blk%nel
       hdt = 0.5_wp*dt_old
-      do k = 1, NEN
-         do i = 1, n
-            nn = blk%conn(k, i)
-            xe(i, k) = x(1, nn); ye(i, k) = x(2, nn); ze(i, k) = x(3, nn)
-            vx(i, k) = v(1, nn); vy(i, k) = v(2, nn); vz(i, k) = v(3, nn)
-            xm(i, k) = xe(i, k) - hdt*vx(i, k)
-            ym(i, k) = ye(i, k) - hdt*vy(i, k)
-            zm(i, k) = ze(i, k) - hdt*vz(i, k)
-         end do
-      end do
+      call gather_mid(blk, n, nv_chunk, NEN, x, v, hdt, xe, ye, ze, vx, vy, vz, xm, ym, zm)
       ! ---- mid-step B: velocity gradient times V, L_ij V = v_iI B_jI
       call tet4_bvectors(n, xm, ym, zm, bx, by, bz, volm)
       lg(1:n, :) = 0.0_wp
@@ -105,26 +96,8 @@ contains
             lg(i, 9) = lg(i, 9) + vx(i, k)*bz(i, k)
          end do
       end do
-      do i = 1, n
-         ierr(i) = 0
-         if (.not. (volm(i) > vcrush*blk%vol0(i))) ierr(i) = ELEM_ERR_NEGVOL
-         if (.not. (volm(i) > vcrush*blk%vol0(i))) volm(i) = 1.0_wp
-         alive(i) = merge(0.0_wp, 1.0_wp, blk%failed(i))
-         dtl = dt_old/volm(i)
-         de6(i, 1) = lg(i, 1)*dtl
-         de6(i, 2) = lg(i, 2)*dtl
-         de6(i, 3) = lg(i, 3)*dtl
-         de6(i, 4) = 0.5_wp*(lg(i, 4) + lg(i, 5))*dtl
-         de6(i, 5) = 0.5_wp*(lg(i, 6) + lg(i, 7))*dtl
-         de6(i, 6) = 0.5_wp*(lg(i, 8) + lg(i, 9))*dtl
-         w12(i) = 0.5_wp*(lg(i, 4) - lg(i, 5))*dtl
-         w23(i) = 0.5_wp*(lg(i, 6) - lg(i, 7))*dtl
-         w31(i) = 0.5_wp*(lg(i, 8) - lg(i, 9))*dtl
-         trd(i) = (lg(i, 1) + lg(i, 2) + lg(i, 3))/volm(i)
-      end do
-      do k = 1, 6
-         deps(1:n, k) = de6(1:n, k)
-      end do
+      call strain_increments(blk, n, dt_old, lg, volm, ierr, alive, de6, deps, w12, w23, w31, &
+                             trd)
       if (part%ero%on) call erosion_strain(blk, n, de6, w12, w23, w31)   ! strain criteria
       ! ---- geometry at t(n): forces, volume, time step; B(n).v(n-1/2) for the viscous work
       call tet4_bvectors(n, xe, ye, ze, bx, by, bz, vol)
@@ -134,78 +107,24 @@ contains
             bv(i) = bv(i) + bx(i, k)*vx(i, k) + by(i, k)*vy(i, k) + bz(i, k)*vz(i, k)
          end do
       end do
-      do i = 1, n
-         vold(i) = blk%vol0(i)*blk%relvol(i)
-         if (.not. (vol(i) > vcrush*blk%vol0(i))) ierr(i) = ELEM_ERR_NEGVOL
-         if (.not. (vol(i) > vcrush*blk%vol0(i))) vol(i) = 1.0_wp
-         rv(i) = vol(i)/blk%vol0(i)
-         blk%relvol(i) = rv(i)
-         ein(i) = blk%eint(i)/blk%vol0(i)
-      end do
+      call volumes_now(blk, n, vol, vold, rv, ein, ierr)
       call char_lengths(n, bx, by, bz, vol, lc)   ! one length for the step and the viscosity
       ! ---- stress: Jaumann rotation by the spin increment (first order), then the material
-      do k = 1, 6
-         so(1:n, k) = blk%sig(1:n, k, 1)
-      end do
-      do i = 1, n
-         d1 = 2.0_wp*(w12(i)*so(i,4) - w31(i)*so(i,6))
-         d2 = 2.0_wp*(w23(i)*so(i,5) - w12(i)*so(i,4))
-         d3 = 2.0_wp*(w31(i)*so(i,6) - w23(i)*so(i,5))
-         d4 = w12(i)*(so(i,2) - so(i,1)) + w23(i)*so(i,6) - w31(i)*so(i,5)
-         d5 = w23(i)*(so(i,3) - so(i,2)) + w31(i)*so(i,4) - w12(i)*so(i,6)
-         d6 = w31(i)*(so(i,1) - so(i,3)) + w12(i)*so(i,5) - w23(i)*so(i,4)
-         so(i,1) = so(i,1) + d1; so(i,2) = so(i,2) + d2; so(i,3) = so(i,3) + d3
-         so(i,4) = so(i,4) + d4; so(i,5) = so(i,5) + d5; so(i,6) = so(i,6) + d6
-      end do
-      do k = 1, 6
-         blk%sig(1:n, k, 1) = so(1:n, k)
-      end do
-      if (mat%hv_frame) call mat%rotate_history(n, w12, w23, w31, blk%hv(:, :, 1))
-      call mat%update(n, dt_old, deps, rv, ein, blk%sig(:, :, 1), blk%hv(:, :, 1), ierr)
-      call mat%fails(n, blk%hv(:, :, 1), failed)
-      call erosion_one_point(blk, part, n, rv, dt_old, failed)   ! *MAT_ADD_EROSION
-      call mat%wave_speed(n, rv, blk%hv(:, :, 1), c)
-      if (present(time)) call erosion_now(part, n, time, dtfloor, lc, trd, c, failed)
-      do i = 1, n
-         if (failed(i) .and. .not. blk%failed(i)) blk%failed(i) = .true.
-      end do
-      do k = 1, 6
-         do i = 1, n
-            sn(i, k) = blk%sig(i, k, 1)
-            if (blk%failed(i)) blk%sig(i, k, 1) = 0.0_wp
-         end do
-      end do
+      call point_stress(blk, mat, part, n, dt_old, w12, w23, w31, deps, rv, ein, lc, trd, c, &
+                        so, sn, ierr, time, dtfloor)
       ! ---- bulk viscosity and the centred work of stress and viscosity
       do i = 1, n
          q(i) = 0.0_wp
          if (trd(i) < 0.0_wp) q(i) = mat%ro/rv(i)*(part%q1*(lc(i)*trd(i))**2 &
                                      - part%q2*c(i)*(lc(i)*trd(i)))   ! (as dx_hex8's)
-         wo(i) = volm(i)*(so(i,1)*de6(i,1) + so(i,2)*de6(i,2) + so(i,3)*de6(i,3) &
-                 + 2.0_wp*(so(i,4)*de6(i,4) + so(i,5)*de6(i,5) + so(i,6)*de6(i,6)))
-         wn(i) = volm(i)*(sn(i,1)*de6(i,1) + sn(i,2)*de6(i,2) + sn(i,3)*de6(i,3) &
-                 + 2.0_wp*(sn(i,4)*de6(i,4) + sn(i,5)*de6(i,5) + sn(i,6)*de6(i,6)))
-         if (blk%failed(i)) wn(i) = 0.0_wp   ! eroding now: no force f(n), W(n) = 0
-         if (blk%failed(i)) q(i) = 0.0_wp
       end do
+      call work_rates(blk, n, volm, so, sn, de6, q, wo, wn)
       de(1:n) = trd(1:n)*volm(1:n)     ! B(n-1/2).v(n-1/2)
       call centred_work_block(blk, n, w, dt_old, wo, wn, q, vol, vold, bv, de, alive, res)
       res%dehg = 0.0_wp
       ! ---- internal force f_iI = (sig_ij - q delta_ij) B_jI, scattered (subtracted)
-      do k = 1, NEN
-         do i = 1, n
-            fx(i, k) = alive(i)*((sn(i,1) - q(i))*bx(i,k) + sn(i,4)*by(i,k) + sn(i,6)*bz(i,k))
-            fy(i, k) = alive(i)*(sn(i,4)*bx(i,k) + (sn(i,2) - q(i))*by(i,k) + sn(i,5)*bz(i,k))
-            fz(i, k) = alive(i)*(sn(i,6)*bx(i,k) + sn(i,5)*by(i,k) + (sn(i,3) - q(i))*bz(i,k))
-         end do
-      end do
-      do k = 1, NEN
-         do i = 1, n
-            nn = blk%conn(k, i)
-            f(1, nn) = f(1, nn) - fx(i, k)
-            f(2, nn) = f(2, nn) - fy(i, k)
-            f(3, nn) = f(3, nn) - fz(i, k)
-         end do
-      end do
+      call stress_forces(n, NEN, alive, sn, q, bx, by, bz, fx, fy, fz)
+      call scatter_forces(blk, n, NEN, fx, fy, fz, f)
       call stable_time_step(blk, part, lc, trd, c, res)
       do i = 1, n
          if (ierr(i) /= 0) then

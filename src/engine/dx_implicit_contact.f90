@@ -42,6 +42,7 @@
 !> The sparse pattern holds one pseudo-element per candidate pair (dx_implicit_system).
 module dx_implicit_contact
    use dx_kinds, only: wp
+   use dx_vec3, only: cross
    use dx_model, only: model_t
    use dx_contact_penalty, only: project_point
    use dx_sparse, only: sparse_sym_t, sparse_add_element
@@ -213,9 +214,9 @@ contains
          integer, intent(in) :: sn(:)
          real(wp) :: v(3)
          if (size(sn) == 4) then
-            v = cross3(xg(:, sn(3)) - xg(:, sn(1)), xg(:, sn(4)) - xg(:, sn(2)))
+            v = cross(xg(:, sn(3)) - xg(:, sn(1)), xg(:, sn(4)) - xg(:, sn(2)))
          else
-            v = cross3(xg(:, sn(2)) - xg(:, sn(1)), xg(:, sn(3)) - xg(:, sn(1)))
+            v = cross(xg(:, sn(2)) - xg(:, sn(1)), xg(:, sn(3)) - xg(:, sn(1)))
          end if
          v = v/max(norm2(v), tiny(1.0_wp))
       end function segn
@@ -377,7 +378,7 @@ contains
          ! the geometric terms once the penetration is below GEO_DEPTH of the segment's size
          ! (its area: |a_1 x a_2| times 4, or 2 for a triangle)
          geo = con%geo .and. gbest**2 <= GEO_DEPTH**2*merge(4.0_wp, 2.0_wp, nsn == 4)* &
-               norm2(cross3(av(:, 1), av(:, 2)))
+               norm2(cross(av(:, 1), av(:, 2)))
          kt = k*outer15(matmul(bnrm, w), matmul(bnrm, w))
          if (.not. geo) then     ! the stick tangent k W^T P W, or slip's symmetric part
             if (mu > 0.0_wp) kt = kt + k*c*matmul(transpose(w), matmul(pn, w))
@@ -475,12 +476,6 @@ contains
       con%actc = con%actt
       con%uc = con%ut
    end subroutine icon_commit
-
-   pure function cross3(a, b) result(c)
-      real(wp), intent(in) :: a(3), b(3)
-      real(wp) :: c(3)
-      c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
-   end function cross3
 
    pure function outer15(a, b) result(m)
       real(wp), intent(in) :: a(15), b(15)

@@ -20,6 +20,7 @@ module dx_plot_states
    use dx_error, only: error_t, set_error, EXIT_IO
    use dx_h5, only: h5_file_t, h5_create, h5_close_keep, h5_create_group
    use dx_io_sys, only: sys_rename, sys_fsync, sys_mkdir_p
+   use dx_libc, only: c_unlink, c_rmdir, c_symlink, c_readlink
    use dx_xdmf, only: state_group
    use dx_plot_fields, only: plot_state_t, plot_state_write, plot_mesh_write
    implicit none
@@ -29,30 +30,6 @@ module dx_plot_states
 
    character(*), parameter :: STATES_DIR = 'd3plot.states'
 
-   interface
-      function c_unlink(path) bind(C, name='unlink') result(r)
-         import :: c_char, c_int
-         character(kind=c_char), intent(in) :: path(*)
-         integer(c_int) :: r
-      end function c_unlink
-      function c_rmdir(path) bind(C, name='rmdir') result(r)
-         import :: c_char, c_int
-         character(kind=c_char), intent(in) :: path(*)
-         integer(c_int) :: r
-      end function c_rmdir
-      function c_symlink(target, path) bind(C, name='symlink') result(r)
-         import :: c_char, c_int
-         character(kind=c_char), intent(in) :: target(*), path(*)
-         integer(c_int) :: r
-      end function c_symlink
-      function c_readlink(path, buf, n) bind(C, name='readlink') result(r)
-         import :: c_char, c_size_t, c_long
-         character(kind=c_char), intent(in) :: path(*)
-         character(kind=c_char), intent(out) :: buf(*)
-         integer(c_size_t), value :: n
-         integer(c_long) :: r
-      end function c_readlink
-   end interface
 
 contains
 

@@ -20,6 +20,7 @@
 module dx_emc_solver
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use dx_kinds, only: wp
+   use dx_vec3, only: cross
    use dx_strings, only: str
    use dx_model, only: model_t
    use dx_dense_solve, only: dense_solve
@@ -93,12 +94,6 @@ contains
       bb = s - a
       e = (a - (s - bb)) + (b - bb)
    end subroutine two_sum
-
-   pure function cross(a, b) result(c)
-      real(wp), intent(in) :: a(3), b(3)
-      real(wp) :: c(3)
-      c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
-   end function cross
 
    !> The state from the model's rigid bodies (principal frames, spatial omega).
    subroutine emc_init_state(model, st)

@@ -43,25 +43,9 @@ program dynx_fuzz
    use dx_explicit, only: init_state
    use dx_log, only: log_set_quiet
    use dx_signals, only: signals_install
+   use dx_libc, only: c_chdir, c_dup, c_close
    implicit none
 
-   interface
-      function c_chdir(path) bind(C, name='chdir') result(r)
-         import :: c_int, c_char
-         character(kind=c_char), intent(in) :: path(*)
-         integer(c_int) :: r
-      end function c_chdir
-      function c_dup(fd) bind(C, name='dup') result(r)
-         import :: c_int
-         integer(c_int), value :: fd
-         integer(c_int) :: r
-      end function c_dup
-      function c_close(fd) bind(C, name='close') result(r)
-         import :: c_int
-         integer(c_int), value :: fd
-         integer(c_int) :: r
-      end function c_close
-   end interface
 
    character(len=4096) :: listfile, arg
    character(len=:), allocatable :: line
