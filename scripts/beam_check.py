@@ -271,6 +271,17 @@ def plastic(argv):
     return resultants([out, str(mrule), '100', str(tol_rule), '0.02']) and ok
 
 
+def plastic_user(argv):
+    """OUT SIGY TS TT RA TOL_M S1 T1 WF1 S2 T2 WF2 ...: a user rule's (*INTEGRATION_BEAM)
+    fully plastic moment about s, the rule's own sum SIGY RA TS TT (TT/2) sum WF |T|"""
+    out = argv[0]
+    sigy, ts, tt, ra, tol_m = map(float, argv[1:6])
+    pts = [tuple(map(float, argv[k:k + 3])) for k in range(6, len(argv), 3)]
+    mrule = sigy*ra*ts*tt*0.5*tt*sum(w*abs(t) for _, t, w in pts)
+    print(f'fully plastic moment of the user rule ({len(pts)} points, RA {ra:g}): {mrule:.10e}')
+    return resultants([out, str(mrule), '100', str(tol_m), '0.02'])
+
+
 def turned(argv):
     """OUT L ANGLE T0 TOL: the tip (first history node) after a rigid turn about y"""
     out, length, ang, t0, tol = argv[0], *map(float, argv[1:5])
@@ -289,7 +300,7 @@ def main():
     cmd, argv = sys.argv[1], sys.argv[2:]
     fn = {'wave': wave, 'order': order, 'rotation': rotation, 'torsion': torsion,
           'tip': tip, 'circle': circle, 'resultants': resultants,
-          'turned': turned, 'plastic': plastic, 'pair': pair,
+          'turned': turned, 'plastic': plastic, 'plastic_user': plastic_user, 'pair': pair,
           'deflection': deflection}.get(cmd)
     if fn is None:
         raise SystemExit(__doc__)

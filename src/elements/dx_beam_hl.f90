@@ -30,7 +30,9 @@
 !> CST 1, the tube of outer and inner diameters D, d: 4 QR points at equal angles (the first on
 !> the s axis) on the ring of radius sqrt((R**2 + r**2)/2), weights A/(4 QR), which integrates
 !> the second moments exactly (dynx's rule: LS-DYNA's tube point count per QR is recalled, not
-!> verified: docs/history.md "Plastic beams"). Tapered sections take the mean of the end
+!> verified: docs/history.md "Plastic beams"); a user rule (QR/IRID = -n, *INTEGRATION_BEAM
+!> n with ICST 0: part%brule) puts point k at (S TS/2, T TT/2) with the area WF A, A = RA TS TT
+!> (LS-DYNA Keyword User's Manual, Vol. I, "*INTEGRATION_BEAM"). Tapered sections take the mean of the end
 !> dimensions (the mid-length section of the one-point rule).
 !> Mass and rotary inertia as dx_beam_bs (rho A L0/2 per node, times max((ISS + ITT)/A,
 !> L0**2/12)). Stable step 2/omega_max of the element with its lumped masses: the largest of
@@ -115,13 +117,22 @@ contains
    end subroutine beam_hl_rule
 
    !> Section values A, ISS, ITT, J, SA and the rule's scales hs, ht of the dimensions
-   !> d1, d2 (CST 0: TS, TT; CST 1: D, d).
-   pure subroutine beam_hl_section(cst, d1, d2, sec, hs, ht)
+   !> d1, d2 (CST 0: TS, TT; CST 1: D, d). With a user rule (rule(1:3, k) = S, T, WF and its
+   !> relative area ra): A = ra TS TT and the second moments are the rule's own sums,
+   !> ISS = A sum WF (T TT/2)**2, ITT = A sum WF (S TS/2)**2.
+   pure subroutine beam_hl_section(cst, d1, d2, sec, hs, ht, rule, ra)
       integer, intent(in) :: cst
       real(wp), intent(in) :: d1, d2
       real(wp), intent(out) :: sec(5), hs, ht
+      real(wp), intent(in), optional :: rule(:, :), ra
       real(wp), parameter :: PI = acos(-1.0_wp)
-      if (cst == 1) then
+      if (present(rule)) then
+         hs = 0.5_wp*d1
+         ht = 0.5_wp*d2
+         sec(1) = ra*(d1*d2)
+         sec(2) = sec(1)*ht*ht*sum(rule(3, :)*rule(2, :)**2)
+         sec(3) = sec(1)*hs*hs*sum(rule(3, :)*rule(1, :)**2)
+      else if (cst == 1) then
          sec(1) = 0.25_wp*PI*(d1*d1 - d2*d2)
          sec(2) = PI*(d1**4 - d2**4)/64.0_wp
          sec(3) = sec(2)
@@ -149,7 +160,7 @@ contains
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: f(:, :), mom(:, :)
       type(block_result_t), intent(out) :: res
-      real(wp) :: ps(MAXP), pt(MAXP), wf(MAXP)
+      real(wp), allocatable :: ps(:), pt(:), wf(:)
       real(wp) :: rate(blk%nel, 6), lmv(blk%nel), hs(blk%nel), ht(blk%nel), q(blk%nel, 6)
       real(wp) :: e1v(3, blk%nel), e2v(3, blk%nel), lv(blk%nel)
       real(wp) :: de5(blk%nel, 5), s5(blk%nel, 5), sec(5)
@@ -169,7 +180,13 @@ contains
       c2 = ym/mat%ro
       shrf = part%shrf
       res%deint = 0.0_wp; res%dehg = 0.0_wp; res%pend = 0.0_wp
-      call beam_hl_rule(part%bqr, part%bcst, ps, pt, wf, np)
+      if (allocated(part%brule)) then       ! a user rule (*INTEGRATION_BEAM)
+         np = size(part%brule, 2)
+         ps = part%brule(1, :); pt = part%brule(2, :); wf = part%brule(3, :)
+      else
+         allocate(ps(MAXP), pt(MAXP), wf(MAXP))
+         call beam_hl_rule(part%bqr, part%bcst, ps, pt, wf, np)
+      end if
       ierr = 0
       ! ---- frames and rates (dx_beam_bs's kinematics)
       do i = 1, n
