@@ -72,12 +72,14 @@ contains
                end if
                call beam_hl_section(sec%cst, 0.5_wp*(sec%bprop(1) + sec%bprop(2)), &
                                     0.5_wp*(sec%bprop(3) + sec%bprop(4)), p%bsec, hs, ht, &
-                                    p%brule, p%bra)
+                                    p%brule, p%bra, loc=sec%bloc)
             else
                call beam_hl_section(sec%cst, 0.5_wp*(sec%bprop(1) + sec%bprop(2)), &
-                                    0.5_wp*(sec%bprop(3) + sec%bprop(4)), p%bsec, hs, ht)
+                                    0.5_wp*(sec%bprop(3) + sec%bprop(4)), p%bsec, hs, ht, &
+                                    loc=sec%bloc)
             end if
             p%bqr = sec%qr
+            p%bloc = sec%bloc
             p%bcst = sec%cst
             p%shrf = sec%shrf
          end if
@@ -222,9 +224,10 @@ contains
             end if
             associate (p => model%parts(model%elem_part(e)))
                if (allocated(p%brule)) then
-                  call beam_hl_section(s%cst, bdat(9), bdat(10), sec, hs, ht, p%brule, p%bra)
+                  call beam_hl_section(s%cst, bdat(9), bdat(10), sec, hs, ht, p%brule, p%bra, &
+                                       loc=s%bloc)
                else
-                  call beam_hl_section(s%cst, bdat(9), bdat(10), sec, hs, ht)
+                  call beam_hl_section(s%cst, bdat(9), bdat(10), sec, hs, ht, loc=s%bloc)
                end if
             end associate
          else

@@ -10,8 +10,9 @@
 !>   the outer and inner diameters at N1 and N2 (CST 1, tube); TS2 = 0 (TT2 = 0) takes TS1
 !>   (TT1); QR 1-5 (LS-DYNA's rules) or QR/IRID = -n, the user rule n of *INTEGRATION_BEAM
 !>   (CST 0 or 2: TS, TT are the thicknesses that scale its points); CST 2 with a built-in rule,
-!>   CST 1 with a user rule, NSLOC or NTLOC /= 0 are refused naming the field. The other
-!>   formulations are refused at ELFORM.
+!>   CST 1 with a user rule and NSLOC, NTLOC other than -1, 0, 1 (or /= 0 on a tube) are
+!>   refused naming the field: NSLOC = 1 puts the nodes' line on the side s = +TS/2 (LS-DYNA's
+!>   reference surface). The other formulations are refused at ELFORM.
 !> *INTEGRATION_BEAM card 1: IRID NIP RA ICST K; card 2 (ICST > 0 only): D1 D2 D3 D4 SREF TREF
 !>   D5 D6; then NIP cards S T WF PID (the manual's layout, Vol. I "*INTEGRATION_BEAM"): the
 !>   point at (S TS/2, T TT/2) with the area WF A, A = RA TS TT. ICST 0 (the user's points) is
@@ -177,8 +178,13 @@ contains
       end do
       do k = 1, 2
          call c%real(trim(LN(k)), 0.0_wp, v)
-         if (c%ok() .and. v /= 0.0_wp) call c%fail(trim(LN(k)), 'reference surface '// &
-            'location '//rstr(v)//' is not supported (supported: 0, the section centre)')
+         if (c%ok() .and. v /= 0.0_wp .and. abs(v) /= 1.0_wp) call c%fail(trim(LN(k)), &
+            'reference surface location '//rstr(v)//' is not supported (supported: 0 the '// &
+            'centre, 1 the side at +1, -1 the side at -1)')
+         if (c%ok() .and. v /= 0.0_wp .and. s%cst == 1) call c%fail(trim(LN(k)), &
+            'reference surface location '//rstr(v)//' on a tubular section (CST 1) is not '// &
+            'supported (supported: 0; the offsets of CST 0 and 2)')
+         s%bloc(k) = v
       end do
       if (s%bprop(2) == 0.0_wp) s%bprop(2) = s%bprop(1)
       if (s%bprop(4) == 0.0_wp) s%bprop(4) = s%bprop(3)

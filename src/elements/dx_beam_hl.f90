@@ -32,7 +32,12 @@
 !> the second moments exactly (dynx's rule: LS-DYNA's tube point count per QR is recalled, not
 !> verified: docs/history.md "Plastic beams"); a user rule (QR/IRID = -n, *INTEGRATION_BEAM
 !> n with ICST 0: part%brule) puts point k at (S TS/2, T TT/2) with the area WF A, A = RA TS TT
-!> (LS-DYNA Keyword User's Manual, Vol. I, "*INTEGRATION_BEAM"). Tapered sections take the mean of the end
+!> (LS-DYNA Keyword User's Manual, Vol. I, "*INTEGRATION_BEAM"). NSLOC, NTLOC (part%bloc, -1, 0
+!> or 1) put the nodes' line on a side of the section, the reference surface of the manual's
+!> *SECTION_BEAM: the points sit at ((S - NSLOC) TS/2, (T - NTLOC) TT/2) from the nodes' line;
+!> the rates and resultants are about that line (work conjugate as above), the section's ISS,
+!> ITT are about it (parallel axes) and the stable step takes the sum of the four modes' omega**2
+!> (the offset couples axial and bending). Tapered sections take the mean of the end
 !> dimensions (the mid-length section of the one-point rule).
 !> Mass and rotary inertia as dx_beam_bs (rho A L0/2 per node, times max((ISS + ITT)/A,
 !> L0**2/12)). Stable step 2/omega_max of the element with its lumped masses: the largest of
@@ -119,12 +124,14 @@ contains
    !> Section values A, ISS, ITT, J, SA and the rule's scales hs, ht of the dimensions
    !> d1, d2 (CST 0: TS, TT; CST 1: D, d). With a user rule (rule(1:3, k) = S, T, WF and its
    !> relative area ra): A = ra TS TT and the second moments are the rule's own sums,
-   !> ISS = A sum WF (T TT/2)**2, ITT = A sum WF (S TS/2)**2.
-   pure subroutine beam_hl_section(cst, d1, d2, sec, hs, ht, rule, ra)
+   !> ISS = A sum WF (T TT/2)**2, ITT = A sum WF (S TS/2)**2. With the reference line loc =
+   !> (NSLOC, NTLOC) the second moments are about that line (parallel axes: + A (NTLOC TT/2)**2,
+   !> + A (NSLOC TS/2)**2).
+   pure subroutine beam_hl_section(cst, d1, d2, sec, hs, ht, rule, ra, loc)
       integer, intent(in) :: cst
       real(wp), intent(in) :: d1, d2
       real(wp), intent(out) :: sec(5), hs, ht
-      real(wp), intent(in), optional :: rule(:, :), ra
+      real(wp), intent(in), optional :: rule(:, :), ra, loc(2)
       real(wp), parameter :: PI = acos(-1.0_wp)
       if (present(rule)) then
          hs = 0.5_wp*d1
@@ -144,6 +151,10 @@ contains
          sec(3) = d2*d1**3/12.0_wp
          hs = 0.5_wp*d1
          ht = 0.5_wp*d2
+      end if
+      if (present(loc)) then
+         sec(2) = sec(2) + sec(1)*(loc(2)*ht)**2
+         sec(3) = sec(3) + sec(1)*(loc(1)*hs)**2
       end if
       sec(4) = sec(2) + sec(3)
       sec(5) = sec(1)
@@ -207,7 +218,7 @@ contains
       q = 0.0_wp
       do ip = 1, np
          do i = 1, n
-            s = ps(ip)*hs(i); t = pt(ip)*ht(i)
+            s = (ps(ip) - part%bloc(1))*hs(i); t = (pt(ip) - part%bloc(2))*ht(i)
             d11 = dt_old*(rate(i, 1) - s*(rate(i, 6) - rate(i, 5)) + t*(rate(i, 4) - rate(i, 3)))/lmv(i)
             g12 = dt_old*(-0.5_wp*(rate(i, 5) + rate(i, 6)) - t*rate(i, 2)/lmv(i))
             g13 = dt_old*(0.5_wp*(rate(i, 3) + rate(i, 4)) + s*rate(i, 2)/lmv(i))
@@ -226,7 +237,7 @@ contains
                sg1 = 0.0_wp; sg2 = 0.0_wp; sg3 = 0.0_wp
             end if
             blk%sig(i, 1, ip) = sg1; blk%sig(i, 4, ip) = sg2; blk%sig(i, 6, ip) = sg3
-            s = ps(ip)*hs(i); t = pt(ip)*ht(i)
+            s = (ps(ip) - part%bloc(1))*hs(i); t = (pt(ip) - part%bloc(2))*ht(i)
             wa = wf(ip)*blk%es(i, c + BM_SEC)
             q(i, 1) = q(i, 1) + wa*sg1
             q(i, 2) = q(i, 2) + wa*(s*sg3 - t*sg2)
@@ -278,6 +289,11 @@ contains
          jn = mn*max((iss + itt)/a, l0*l0/12.0_wp)
          wmax2 = max(4.0_wp*c2/(l*l), 2.0_wp*ym*max(iss, itt)/(l*jn), &
                      shrf*g*a*l*(2.0_wp/(mn*l*l) + 0.5_wp/jn), 2.0_wp*g*tj/(l*jn))
+         if (any(part%bloc /= 0.0_wp)) then
+            ! a reference line off the centre couples the modes: their sum bounds omega**2
+            wmax2 = 4.0_wp*c2/(l*l) + 2.0_wp*ym*max(iss, itt)/(l*jn) + &
+                    shrf*g*a*l*(2.0_wp/(mn*l*l) + 0.5_wp/jn) + 2.0_wp*g*tj/(l*jn)
+         end if
          dte = 2.0_wp/sqrt(wmax2)
          if (blk%failed(i)) dte = huge_wp
          if (dte < res%dt) then

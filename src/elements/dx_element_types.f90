@@ -194,6 +194,8 @@ module dx_element_types
       !> point k (unallocated: the built-in rule bqr); bra its relative area RA
       real(wp), allocatable :: brule(:, :)
       real(wp) :: bra = 1.0_wp
+      !> NSLOC, NTLOC of the section: the nodes' line at (NSLOC TS/2, NTLOC TT/2) of the section
+      real(wp) :: bloc(2) = 0.0_wp
    end type part_t
 
    !> A group of at most nv_chunk elements of one part and one formulation.
