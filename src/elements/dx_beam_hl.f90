@@ -26,7 +26,8 @@
 !> centred work of the resultants on the rates (dx_beam_bs, dx_hex8's centred_work).
 !> Section rules (part%bqr = QR, part%bcst = CST of *SECTION_BEAM; LS-DYNA's numbering):
 !> CST 0, the rectangle TS x TT (s extent TS, t extent TT): QR 1 one point, 2 2x2 Gauss,
-!> 3 3x3 Gauss, 4 3x3 Lobatto, 5 4x4 Gauss (product rules; Abramowitz & Stegun 25.4.29-30);
+!> 3 3x3 Gauss, 4 3x3 Lobatto, 5 4x4 Gauss (product rules; Abramowitz & Stegun 25.4.29-30; the
+!> numbering of the manual's *INITIAL_STRESS_BEAM RULE: 5 = 4x4 Gauss);
 !> CST 1, the tube of outer and inner diameters D, d: 4 QR points at equal angles (the first on
 !> the s axis) on the ring of radius sqrt((R**2 + r**2)/2), weights A/(4 QR), which integrates
 !> the second moments exactly (dynx's rule: LS-DYNA's tube point count per QR is recalled, not
