@@ -271,6 +271,31 @@ def plastic(argv):
     return resultants([out, str(mrule), '100', str(tol_rule), '0.02']) and ok
 
 
+def plastic_user(argv):
+    """OUT SIGY TS TT RA TOL_M S1 T1 WF1 S2 T2 WF2 ...: a user rule's (*INTEGRATION_BEAM)
+    fully plastic moment about s, the rule's own sum SIGY RA TS TT (TT/2) sum WF |T|"""
+    out = argv[0]
+    sigy, ts, tt, ra, tol_m = map(float, argv[1:6])
+    pts = [tuple(map(float, argv[k:k + 3])) for k in range(6, len(argv), 3)]
+    mrule = sigy*ra*ts*tt*0.5*tt*sum(w*abs(t) for _, t, w in pts)
+    print(f'fully plastic moment of the user rule ({len(pts)} points, RA {ra:g}): {mrule:.10e}')
+    return resultants([out, str(mrule), '100', str(tol_m), '0.02'])
+
+
+def offset(argv):
+    """OUT T0 UREF WREF TOL: the tip (first history node) mean x and z displacements over
+    t >= T0 against UREF, WREF (signed), relative errors within TOL"""
+    out, t0, uref, wref, tol = argv[0], *map(float, argv[1:5])
+    d = nodout(out)
+    rows = [r for r in d[sorted(d)[0]] if r[0] >= t0]
+    u = sum(r[1][0] for r in rows)/len(rows)
+    w = sum(r[1][2] for r in rows)/len(rows)
+    eu, ew = abs(u/uref - 1.0), abs(w/wref - 1.0)
+    print(f'offset tip (mean from t = {t0:g}): u {u:.6e} (reference {uref:.6e}, error '
+          f'{eu:.2e}), w {w:.6e} (reference {wref:.6e}, error {ew:.2e}); tol {tol:.1e}')
+    return eu <= tol and ew <= tol
+
+
 def turned(argv):
     """OUT L ANGLE T0 TOL: the tip (first history node) after a rigid turn about y"""
     out, length, ang, t0, tol = argv[0], *map(float, argv[1:5])
@@ -289,7 +314,7 @@ def main():
     cmd, argv = sys.argv[1], sys.argv[2:]
     fn = {'wave': wave, 'order': order, 'rotation': rotation, 'torsion': torsion,
           'tip': tip, 'circle': circle, 'resultants': resultants,
-          'turned': turned, 'plastic': plastic, 'pair': pair,
+          'turned': turned, 'plastic': plastic, 'plastic_user': plastic_user, 'offset': offset, 'pair': pair,
           'deflection': deflection}.get(cmd)
     if fn is None:
         raise SystemExit(__doc__)

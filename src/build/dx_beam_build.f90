@@ -57,9 +57,29 @@ contains
       associate (sec => model%sections(p%isec), m => model%mats(p%imat)%m)
          p%bsec = sec%bprop(1:5)
          if (etype_of_beam_elform(sec%elform) == ETYPE_BEAM_HL) then
-            call beam_hl_section(sec%cst, 0.5_wp*(sec%bprop(1) + sec%bprop(2)), &
-                                 0.5_wp*(sec%bprop(3) + sec%bprop(4)), p%bsec, hs, ht)
+            if (sec%qr < 0) then       ! the user rule -QR of *INTEGRATION_BEAM
+               do k = 1, merge(size(inp%brules), 0, allocated(inp%brules))
+                  if (inp%brules(k)%irid /= -sec%qr) cycle
+                  p%brule = inp%brules(k)%pts
+                  p%bra = inp%brules(k)%ra
+                  exit
+               end do
+               if (.not. allocated(p%brule)) then
+                  call set_error(error, at(inp, inp%section_src(p%isec))//'field QR/IRID: '// &
+                     'section '//str(sec%label)//' uses the user integration rule '// &
+                     str(-sec%qr)//', which no *INTEGRATION_BEAM defines')
+                  return
+               end if
+               call beam_hl_section(sec%cst, 0.5_wp*(sec%bprop(1) + sec%bprop(2)), &
+                                    0.5_wp*(sec%bprop(3) + sec%bprop(4)), p%bsec, hs, ht, &
+                                    p%brule, p%bra, loc=sec%bloc)
+            else
+               call beam_hl_section(sec%cst, 0.5_wp*(sec%bprop(1) + sec%bprop(2)), &
+                                    0.5_wp*(sec%bprop(3) + sec%bprop(4)), p%bsec, hs, ht, &
+                                    loc=sec%bloc)
+            end if
             p%bqr = sec%qr
+            p%bloc = sec%bloc
             p%bcst = sec%cst
             p%shrf = sec%shrf
          end if
@@ -202,7 +222,14 @@ contains
                   'inner diameter is not below the outer one (tubular section, CST 1)')
                return
             end if
-            call beam_hl_section(s%cst, bdat(9), bdat(10), sec, hs, ht)
+            associate (p => model%parts(model%elem_part(e)))
+               if (allocated(p%brule)) then
+                  call beam_hl_section(s%cst, bdat(9), bdat(10), sec, hs, ht, p%brule, p%bra, &
+                                       loc=s%bloc)
+               else
+                  call beam_hl_section(s%cst, bdat(9), bdat(10), sec, hs, ht, loc=s%bloc)
+               end if
+            end associate
          else
             sec = s%bprop(1:5)
             do k = 1, 5

@@ -559,6 +559,7 @@ contains
             nip = fam%nip
             if (model%sections(p%isec)%shell) nip = fam%npl*model%sections(p%isec)%nip
             if (etype == ETYPE_BEAM_HL) nip = beam_hl_nip(p%bqr, p%bcst)   ! the section rule
+            if (etype == ETYPE_BEAM_HL .and. allocated(p%brule)) nip = size(p%brule, 2)
             nhv = model%mats(p%imat)%m%nhist()
             pos = start(j)
             do while (pos < start(j + 1))

@@ -8,8 +8,16 @@
 !>   moment). ELFORM 1 (Hughes-Liu with cross-section integration, dx_beam_hl): card 2
 !>   TS1 TS2 TT1 TT2 NSLOC NTLOC, the thicknesses in s and t at N1 and N2 (CST 0, rectangle) or
 !>   the outer and inner diameters at N1 and N2 (CST 1, tube); TS2 = 0 (TT2 = 0) takes TS1
-!>   (TT1); QR 1-5 (LS-DYNA's rules); a user rule (QR < 0, *INTEGRATION_BEAM), CST 2, NSLOC
-!>   or NTLOC /= 0 are refused naming the field. The other formulations are refused at ELFORM.
+!>   (TT1); QR 1-5 (LS-DYNA's rules) or QR/IRID = -n, the user rule n of *INTEGRATION_BEAM
+!>   (CST 0 or 2: TS, TT are the thicknesses that scale its points); CST 2 with a built-in rule,
+!>   CST 1 with a user rule and NSLOC, NTLOC other than -1, 0, 1 (or /= 0 on a tube) are
+!>   refused naming the field: NSLOC = 1 puts the nodes' line on the side s = +TS/2 (LS-DYNA's
+!>   reference surface). The other formulations are refused at ELFORM.
+!> *INTEGRATION_BEAM card 1: IRID NIP RA ICST K; card 2 (ICST > 0 only): D1 D2 D3 D4 SREF TREF
+!>   D5 D6; then NIP cards S T WF PID (the manual's layout, Vol. I "*INTEGRATION_BEAM"): the
+!>   point at (S TS/2, T TT/2) with the area WF A, A = RA TS TT. ICST 0 (the user's points) is
+!>   read; the standard sections ICST 1-22 are refused naming ICST, a per-point part PID /= 0
+!>   naming PID (one material per section).
 !> *ELEMENT_BEAM card 1: EID PID N1 N2 N3 RT1 RR1 RT2 RR2 LOCAL (i8; long i20); then, in
 !>   the manual's order, the _THICKNESS card PARM1..PARM5 (ELFORM 2: A ISS ITT J SA; 0: the
 !>   section's), the _OFFSET card WX1 WY1 WZ1 WX2 WY2 WZ2 (must be 0: no offsets), the
@@ -26,7 +34,7 @@ module dx_read_beams
    use dx_deck_registry, only: registry_t
    use dx_model, only: section_t
    use dx_model_input, only: model_input_t, add_element, SOLID_CARD_NODES, beam_in_t, &
-                             mass_in_t, origin
+                             mass_in_t, origin, beam_rule_in_t
    use dx_read_nodes_elements, only: section_block, read_section_id, add_section
    implicit none
    private
@@ -48,6 +56,7 @@ contains
       call reg%add('ELEMENT_BEAM_THICKNESS_OFFSET_ORIENTATION', read_element_beam)
       call reg%add('ELEMENT_MASS', read_element_mass)
       call reg%add('ELEMENT_INERTIA', read_element_inertia)
+      call reg%add('INTEGRATION_BEAM', read_integration_beam)
    end subroutine register_beams
 
    !> *SECTION_BEAM: two cards per section (a title card first with _TITLE).
@@ -126,10 +135,17 @@ contains
       real(wp) :: q
       q = qr
       if (q == 0.0_wp) q = 2.0_wp      ! blank: the default 2x2 Gauss
-      if (q < 0.0_wp) then
-         call c%fail('QR/IRID', 'user-defined integration rule '//rstr(-q)//' '// &
-            '(*INTEGRATION_BEAM) is not supported (supported: QR 1 one point, 2 2x2 Gauss, '// &
-            '3 3x3 Gauss, 4 3x3 Lobatto, 5 4x4 Gauss)')
+      if (q < 0.0_wp) then             ! the user rule -q of *INTEGRATION_BEAM (matched at build)
+         if (q /= anint(q)) then
+            call c%fail('QR/IRID', 'user rule number '//rstr(-q)//' is not a whole number')
+         else if (cst == 1) then
+            call c%fail('CST', 'a user integration rule (QR/IRID '//rstr(q)//') on a tubular '// &
+               'section (CST 1) is not supported (supported: CST 0 or 2, TS and TT the '// &
+               'thicknesses that scale the rule''s points)')
+         else
+            s%qr = nint(q)
+            s%cst = 0                  ! the rule's frame: the TS x TT thicknesses
+         end if
          return
       end if
       if (q /= anint(q) .or. q < 1.0_wp .or. q > 5.0_wp) then
@@ -138,8 +154,9 @@ contains
          return
       end if
       if (cst == 2) then
-         call c%fail('CST', 'cross-section type 2 (arbitrary, *INTEGRATION_BEAM) is not '// &
-            'supported (supported: 0 rectangular, 1 tubular)')
+         call c%fail('CST', 'cross-section type 2 (arbitrary) with the built-in rule QR '// &
+            str(nint(q))//' is not supported (supported: 0 rectangular, 1 tubular; CST 2 '// &
+            'with a user rule, QR/IRID < 0 and *INTEGRATION_BEAM)')
          return
       end if
       s%qr = nint(q)
@@ -161,8 +178,13 @@ contains
       end do
       do k = 1, 2
          call c%real(trim(LN(k)), 0.0_wp, v)
-         if (c%ok() .and. v /= 0.0_wp) call c%fail(trim(LN(k)), 'reference surface '// &
-            'location '//rstr(v)//' is not supported (supported: 0, the section centre)')
+         if (c%ok() .and. v /= 0.0_wp .and. abs(v) /= 1.0_wp) call c%fail(trim(LN(k)), &
+            'reference surface location '//rstr(v)//' is not supported (supported: 0 the '// &
+            'centre, 1 the side at +1, -1 the side at -1)')
+         if (c%ok() .and. v /= 0.0_wp .and. s%cst == 1) call c%fail(trim(LN(k)), &
+            'reference surface location '//rstr(v)//' on a tubular section (CST 1) is not '// &
+            'supported (supported: 0; the offsets of CST 0 and 2)')
+         s%bloc(k) = v
       end do
       if (s%bprop(2) == 0.0_wp) s%bprop(2) = s%bprop(1)
       if (s%bprop(4) == 0.0_wp) s%bprop(4) = s%bprop(3)
@@ -181,6 +203,81 @@ contains
             rstr(s%bprop(2))//') (tubular section, CST 1)')
       end if
    end subroutine hl_card
+
+   !> *INTEGRATION_BEAM: card 1 IRID NIP RA ICST K, then (ICST 0) NIP point cards S T WF PID.
+   subroutine read_integration_beam(deck, blk, inp, error)
+      type(deck_t), intent(in) :: deck
+      type(block_t), intent(in) :: blk
+      type(model_input_t), intent(inout) :: inp
+      type(error_t), allocatable, intent(out) :: error
+      integer :: ic, nip, icst, kref, k, pid
+      type(beam_rule_in_t) :: r
+      type(card_t) :: c
+      character(len=19), parameter :: SNAME(7) = ['W-section          ', &
+         'C-section          ', 'angle section      ', 'T-section          ', &
+         'rectangular tubing ', 'Z-section          ', 'trapezoidal section']
+      call deck_cursor(deck, blk, c)
+      ic = 1
+      do while (ic <= blk%n .and. .not. c%halt())
+         call c%seek(ic)
+         r = beam_rule_in_t()
+         call c%int('IRID', 0, r%irid)
+         if (c%ok() .and. r%irid <= 0) call c%fail('IRID', 'rule id must be > 0, got '// &
+                                                   str(r%irid))
+         call c%int('NIP', 0, nip)
+         call c%real('RA', 0.0_wp, r%ra)
+         call c%int('ICST', 0, icst)
+         call c%int('K', 1, kref)           ! the refinement of the standard sections only
+         if (c%ok() .and. icst >= 1 .and. icst <= 7) call c%fail('ICST', 'standard '// &
+            'cross-section type '//str(icst)//' ('//trim(SNAME(icst))//') is not supported '// &
+            '(supported: 0, the user''s points S T WF on NIP cards)')
+         if (c%ok() .and. icst /= 0) call c%fail('ICST', 'standard cross-section type '// &
+            str(icst)//' is not supported (supported: 0, the user''s points S T WF on NIP cards)')
+         if (c%ok() .and. nip <= 0) call c%fail('NIP', 'number of integration points must '// &
+            'be > 0 (ICST 0: the user''s points), got '//str(nip))
+         if (c%ok() .and. .not. (r%ra > 0.0_wp)) call c%fail('RA', 'relative area must be '// &
+            '> 0 (ICST 0: the section area is RA TS TT), got '//rstr(r%ra))
+         if (c%ok() .and. allocated(inp%brules)) then
+            do k = 1, size(inp%brules)
+               if (inp%brules(k)%irid /= r%irid) cycle
+               call c%fail('IRID', 'rule '//str(r%irid)//' is defined twice (first at line '// &
+                  str(inp%brules(k)%src%line)//')')
+               exit
+            end do
+         end if
+         if (c%halt()) exit
+         r%src = origin(blk%ifile, blk%cards(ic)%line, blk%name)
+         allocate(r%pts(3, nip))
+         do k = 1, nip
+            if (ic + 1 > blk%n) then
+               call c%fail_card(ic, 'missing point card '//str(k)//' of '//str(nip)// &
+                                ' (S T WF PID) of rule '//str(r%irid))
+               exit
+            end if
+            ic = ic + 1
+            call c%seek(ic)
+            call c%real('S', 0.0_wp, r%pts(1, k))
+            if (c%ok() .and. abs(r%pts(1, k)) > 1.0_wp) call c%fail('S', 'normalised s '// &
+               'of a point must be in [-1, 1], got '//rstr(r%pts(1, k)))
+            call c%real('T', 0.0_wp, r%pts(2, k))
+            if (c%ok() .and. abs(r%pts(2, k)) > 1.0_wp) call c%fail('T', 'normalised t '// &
+               'of a point must be in [-1, 1], got '//rstr(r%pts(2, k)))
+            call c%real('WF', 0.0_wp, r%pts(3, k))
+            if (c%ok() .and. .not. (r%pts(3, k) > 0.0_wp)) call c%fail('WF', 'weight '// &
+               '(area fraction) of a point must be > 0, got '//rstr(r%pts(3, k)))
+            call c%int('PID', 0, pid)
+            if (c%ok() .and. pid /= 0) call c%fail('PID', 'a part (material) of its own '// &
+               'for a point ('//str(pid)//') is not supported (supported: 0, the element''s '// &
+               'part)')
+            if (c%halt()) exit
+         end do
+         if (c%halt()) exit
+         if (.not. allocated(inp%brules)) allocate(inp%brules(0))
+         inp%brules = [inp%brules, r]
+         ic = ic + 1
+      end do
+      call c%done(error)
+   end subroutine read_integration_beam
 
    !> *ELEMENT_BEAM and its _THICKNESS, _OFFSET, _ORIENTATION options: the element goes to
    !> the element list (N1, N2; the other node fields 0), its extras to inp%beams.

@@ -26,11 +26,19 @@
 !> centred work of the resultants on the rates (dx_beam_bs, dx_hex8's centred_work).
 !> Section rules (part%bqr = QR, part%bcst = CST of *SECTION_BEAM; LS-DYNA's numbering):
 !> CST 0, the rectangle TS x TT (s extent TS, t extent TT): QR 1 one point, 2 2x2 Gauss,
-!> 3 3x3 Gauss, 4 3x3 Lobatto, 5 4x4 Gauss (product rules; Abramowitz & Stegun 25.4.29-30);
+!> 3 3x3 Gauss, 4 3x3 Lobatto, 5 4x4 Gauss (product rules; Abramowitz & Stegun 25.4.29-30; the
+!> numbering of the manual's *INITIAL_STRESS_BEAM RULE: 5 = 4x4 Gauss);
 !> CST 1, the tube of outer and inner diameters D, d: 4 QR points at equal angles (the first on
 !> the s axis) on the ring of radius sqrt((R**2 + r**2)/2), weights A/(4 QR), which integrates
 !> the second moments exactly (dynx's rule: LS-DYNA's tube point count per QR is recalled, not
-!> verified: docs/history.md "Plastic beams"). Tapered sections take the mean of the end
+!> verified: docs/history.md "Plastic beams"); a user rule (QR/IRID = -n, *INTEGRATION_BEAM
+!> n with ICST 0: part%brule) puts point k at (S TS/2, T TT/2) with the area WF A, A = RA TS TT
+!> (LS-DYNA Keyword User's Manual, Vol. I, "*INTEGRATION_BEAM"). NSLOC, NTLOC (part%bloc, -1, 0
+!> or 1) put the nodes' line on a side of the section, the reference surface of the manual's
+!> *SECTION_BEAM: the points sit at ((S - NSLOC) TS/2, (T - NTLOC) TT/2) from the nodes' line;
+!> the rates and resultants are about that line (work conjugate as above), the section's ISS,
+!> ITT are about it (parallel axes) and the stable step takes the sum of the four modes' omega**2
+!> (the offset couples axial and bending). Tapered sections take the mean of the end
 !> dimensions (the mid-length section of the one-point rule).
 !> Mass and rotary inertia as dx_beam_bs (rho A L0/2 per node, times max((ISS + ITT)/A,
 !> L0**2/12)). Stable step 2/omega_max of the element with its lumped masses: the largest of
@@ -115,13 +123,24 @@ contains
    end subroutine beam_hl_rule
 
    !> Section values A, ISS, ITT, J, SA and the rule's scales hs, ht of the dimensions
-   !> d1, d2 (CST 0: TS, TT; CST 1: D, d).
-   pure subroutine beam_hl_section(cst, d1, d2, sec, hs, ht)
+   !> d1, d2 (CST 0: TS, TT; CST 1: D, d). With a user rule (rule(1:3, k) = S, T, WF and its
+   !> relative area ra): A = ra TS TT and the second moments are the rule's own sums,
+   !> ISS = A sum WF (T TT/2)**2, ITT = A sum WF (S TS/2)**2. With the reference line loc =
+   !> (NSLOC, NTLOC) the second moments are about that line (parallel axes: + A (NTLOC TT/2)**2,
+   !> + A (NSLOC TS/2)**2).
+   pure subroutine beam_hl_section(cst, d1, d2, sec, hs, ht, rule, ra, loc)
       integer, intent(in) :: cst
       real(wp), intent(in) :: d1, d2
       real(wp), intent(out) :: sec(5), hs, ht
+      real(wp), intent(in), optional :: rule(:, :), ra, loc(2)
       real(wp), parameter :: PI = acos(-1.0_wp)
-      if (cst == 1) then
+      if (present(rule)) then
+         hs = 0.5_wp*d1
+         ht = 0.5_wp*d2
+         sec(1) = ra*(d1*d2)
+         sec(2) = sec(1)*ht*ht*sum(rule(3, :)*rule(2, :)**2)
+         sec(3) = sec(1)*hs*hs*sum(rule(3, :)*rule(1, :)**2)
+      else if (cst == 1) then
          sec(1) = 0.25_wp*PI*(d1*d1 - d2*d2)
          sec(2) = PI*(d1**4 - d2**4)/64.0_wp
          sec(3) = sec(2)
@@ -133,6 +152,10 @@ contains
          sec(3) = d2*d1**3/12.0_wp
          hs = 0.5_wp*d1
          ht = 0.5_wp*d2
+      end if
+      if (present(loc)) then
+         sec(2) = sec(2) + sec(1)*(loc(2)*ht)**2
+         sec(3) = sec(3) + sec(1)*(loc(1)*hs)**2
       end if
       sec(4) = sec(2) + sec(3)
       sec(5) = sec(1)
@@ -149,7 +172,7 @@ contains
       real(wp), intent(in) :: dt_old
       real(wp), intent(inout) :: f(:, :), mom(:, :)
       type(block_result_t), intent(out) :: res
-      real(wp) :: ps(MAXP), pt(MAXP), wf(MAXP)
+      real(wp), allocatable :: ps(:), pt(:), wf(:)
       real(wp) :: rate(blk%nel, 6), lmv(blk%nel), hs(blk%nel), ht(blk%nel), q(blk%nel, 6)
       real(wp) :: e1v(3, blk%nel), e2v(3, blk%nel), lv(blk%nel)
       real(wp) :: de5(blk%nel, 5), s5(blk%nel, 5), sec(5)
@@ -169,7 +192,13 @@ contains
       c2 = ym/mat%ro
       shrf = part%shrf
       res%deint = 0.0_wp; res%dehg = 0.0_wp; res%pend = 0.0_wp
-      call beam_hl_rule(part%bqr, part%bcst, ps, pt, wf, np)
+      if (allocated(part%brule)) then       ! a user rule (*INTEGRATION_BEAM)
+         np = size(part%brule, 2)
+         ps = part%brule(1, :); pt = part%brule(2, :); wf = part%brule(3, :)
+      else
+         allocate(ps(MAXP), pt(MAXP), wf(MAXP))
+         call beam_hl_rule(part%bqr, part%bcst, ps, pt, wf, np)
+      end if
       ierr = 0
       ! ---- frames and rates (dx_beam_bs's kinematics)
       do i = 1, n
@@ -190,7 +219,7 @@ contains
       q = 0.0_wp
       do ip = 1, np
          do i = 1, n
-            s = ps(ip)*hs(i); t = pt(ip)*ht(i)
+            s = (ps(ip) - part%bloc(1))*hs(i); t = (pt(ip) - part%bloc(2))*ht(i)
             d11 = dt_old*(rate(i, 1) - s*(rate(i, 6) - rate(i, 5)) + t*(rate(i, 4) - rate(i, 3)))/lmv(i)
             g12 = dt_old*(-0.5_wp*(rate(i, 5) + rate(i, 6)) - t*rate(i, 2)/lmv(i))
             g13 = dt_old*(0.5_wp*(rate(i, 3) + rate(i, 4)) + s*rate(i, 2)/lmv(i))
@@ -209,7 +238,7 @@ contains
                sg1 = 0.0_wp; sg2 = 0.0_wp; sg3 = 0.0_wp
             end if
             blk%sig(i, 1, ip) = sg1; blk%sig(i, 4, ip) = sg2; blk%sig(i, 6, ip) = sg3
-            s = ps(ip)*hs(i); t = pt(ip)*ht(i)
+            s = (ps(ip) - part%bloc(1))*hs(i); t = (pt(ip) - part%bloc(2))*ht(i)
             wa = wf(ip)*blk%es(i, c + BM_SEC)
             q(i, 1) = q(i, 1) + wa*sg1
             q(i, 2) = q(i, 2) + wa*(s*sg3 - t*sg2)
@@ -261,6 +290,11 @@ contains
          jn = mn*max((iss + itt)/a, l0*l0/12.0_wp)
          wmax2 = max(4.0_wp*c2/(l*l), 2.0_wp*ym*max(iss, itt)/(l*jn), &
                      shrf*g*a*l*(2.0_wp/(mn*l*l) + 0.5_wp/jn), 2.0_wp*g*tj/(l*jn))
+         if (any(part%bloc /= 0.0_wp)) then
+            ! a reference line off the centre couples the modes: their sum bounds omega**2
+            wmax2 = 4.0_wp*c2/(l*l) + 2.0_wp*ym*max(iss, itt)/(l*jn) + &
+                    shrf*g*a*l*(2.0_wp/(mn*l*l) + 0.5_wp/jn) + 2.0_wp*g*tj/(l*jn)
+         end if
          dte = 2.0_wp/sqrt(wmax2)
          if (blk%failed(i)) dte = huge_wp
          if (dte < res%dt) then

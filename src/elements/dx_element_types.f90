@@ -205,6 +205,12 @@ module dx_element_types
       !> Hughes-Liu beam parts (*SECTION_BEAM ELFORM 1): the section rule QR (1-5) and the
       !> cross-section type CST (0 rectangle, 1 tube); the shear factor is shrf above
       integer :: bqr = 2, bcst = 0
+      !> a user rule (QR/IRID < 0, *INTEGRATION_BEAM ICST 0): brule(1:3, k) = S, T, WF of
+      !> point k (unallocated: the built-in rule bqr); bra its relative area RA
+      real(wp), allocatable :: brule(:, :)
+      real(wp) :: bra = 1.0_wp
+      !> NSLOC, NTLOC of the section: the nodes' line at (NSLOC TS/2, NTLOC TT/2) of the section
+      real(wp) :: bloc(2) = 0.0_wp
    end type part_t
 
    !> A group of at most nv_chunk elements of one part and one formulation.

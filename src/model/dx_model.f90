@@ -60,6 +60,9 @@ module dx_model
       !> ELFORM 1 (Hughes-Liu): bprop(1:4) = TS1 TS2 TT1 TT2 (CST 0) or the outer and inner
       !> diameters D1 D2 d1 d2 (CST 1); the section rule QR and the type CST
       integer :: qr = 2, cst = 0
+      !> ELFORM 1: NSLOC, NTLOC, the reference line (the nodes) at s = NSLOC TS/2, t = NTLOC TT/2
+      !> of the section (-1, 0, 1)
+      real(wp) :: bloc(2) = 0.0_wp
    end type section_t
 
    !> *HOURGLASS (a negative or zero value means: take the *CONTROL_* default)

@@ -23,7 +23,7 @@ module dx_model_input
              motion_in_t, ivel_in_t, out_note_t, set_step_in_t, set_gen_in_t, load_node_in_t, load_seg_in_t, wall_in_t, &
              IVEL_SET, IVEL_NODE, IVEL_GEN, add_node, add_element, origin, input_init, &
              beam_in_t, mass_in_t, nr2d_in_t, edge_press_in_t, deposit_in_t, &
-             c2d_in_t, csys_in_t
+             c2d_in_t, csys_in_t, beam_rule_in_t
 
    integer, parameter :: IVEL_SET = 1   !< *INITIAL_VELOCITY
    integer, parameter :: IVEL_NODE = 2  !< *INITIAL_VELOCITY_NODE
@@ -187,6 +187,15 @@ module dx_model_input
       real(wp) :: parm(5) = 0.0_wp
    end type beam_in_t
 
+   !> one *INTEGRATION_BEAM rule IRID (dx_read_beams; ICST 0, the user's points): the relative
+   !> area RA and the points pts(1:3, k) = S, T, WF (normalised s, t in [-1, 1]; area fraction)
+   type :: beam_rule_in_t
+      integer :: irid = 0
+      real(wp) :: ra = 1.0_wp
+      real(wp), allocatable :: pts(:, :)
+      type(origin_t) :: src
+   end type beam_rule_in_t
+
    !> *ELEMENT_MASS (inertia = .false.) or *ELEMENT_INERTIA card: the point mass and the
    !> inertia tensor IXX IXY IXZ IYY IYZ IZZ at node nid
    type :: mass_in_t
@@ -219,6 +228,8 @@ module dx_model_input
       type(beam_in_t), allocatable :: beams(:)
       !> *ELEMENT_MASS, *ELEMENT_INERTIA (allocated once one is read)
       type(mass_in_t), allocatable :: pmass(:)
+      !> *INTEGRATION_BEAM rules (allocated once one is read; matched to QR/IRID < 0 at build)
+      type(beam_rule_in_t), allocatable :: brules(:)
       ! --- definitions (parts: grown by input_add_part, cut to nparts by input_finish)
       integer :: nparts = 0
       type(part_t), allocatable :: parts(:)

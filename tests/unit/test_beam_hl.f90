@@ -10,12 +10,23 @@
 !>    x**2 + 3 t2**2 + 3 t3**2 = Y(epsp)**2 (round-off; the one-step return is exact for linear
 !>    hardening), with the uniaxial bilinear answer sigma = sy + Et (e - sy/E) for a pure
 !>    axial step (5 and 1.5 times the yield strain: beyond a trial radius of 1.75 Y the
-!>    one-step return takes radial scaling, 5e-3 off here) and the trial shear direction kept.
+!>    one-step return takes radial scaling, 5e-3 off here) and the trial shear direction kept;
+!>  - a user rule (*INTEGRATION_BEAM: part%brule, RA): beam_hl_section's A = RA TS TT and
+!>    the rule's own second moments; one element of beam_hl_block bent quasi-statically (fixed
+!>    nodes, end spins -w, +w about s: no shear, no axial strain) to 12.6 times the web's yield
+!>    strain in 100 steps of 0.38 times it, *MAT_003 elastic-perfectly plastic: the moment
+!>    equals the rule's own fully plastic sum SIGY A (TT/2) sum WF |T| to round-off (1e-13)
+!>    with the full (MITER 2), radial (3) and one-step (4) returns, and N = 0; the fixed
+!>    three-iteration secant (1, the default) within 1e-4 (measured +1.5e-5: three secant
+!>    iterations do not land exactly on the surface at these step sizes).
 program test_beam_hl
    use dx_kinds, only: wp
    use dx_error, only: error_t
    use dx_mat_plastic_kinematic, only: mat_plastic_kinematic_t
-   use dx_beam_hl, only: beam_hl_rule, beam_hl_nip, beam_hl_section
+   use dx_beam_hl, only: beam_hl_rule, beam_hl_nip, beam_hl_section, beam_hl_block
+   use dx_element_types, only: elem_block_t, block_result_t, part_t, ES_BEAM, ES_WORK, &
+                               ETYPE_BEAM_HL, element_family, family_t, BM_TH, BM_RES
+   use dx_beam_bs, only: beam_bs_init
    use dx_assert, only: check, check_close, assert_summary
    implicit none
    real(wp), parameter :: ey = 210.0_wp, pr = 0.3_wp, sy = 0.25_wp, et = 2.1_wp
@@ -61,6 +72,10 @@ program test_beam_hl
    call plastic_step('full return', 5.0_wp)
    pk%ps_alg = 4
    call plastic_step('one-step return', 1.5_wp)
+   call user_rule_plastic_moment(2, 1.0e-13_wp)
+   call user_rule_plastic_moment(3, 1.0e-13_wp)
+   call user_rule_plastic_moment(4, 1.0e-13_wp)
+   call user_rule_plastic_moment(1, 1.0e-4_wp)
    call assert_summary()
 
 contains
@@ -113,4 +128,67 @@ contains
                        what//': x**2 + 3 t2**2 + 3 t3**2 = Y**2')
       call check_close(x(2)/x(3), 2.0_wp, 0.0_wp, 1.0e-12_wp, what//': shear direction kept')
    end subroutine plastic_step
+
+   !> The I-like user rule of beam_hl_user_rule (flanges s +-0.6, t +-0.9, WF 0.2; web
+   !> t +-0.3, WF 0.1; RA 0.5, TS 2, TT 1) on one 10 mm element bent about s.
+   subroutine user_rule_plastic_moment(alg, tol)
+      integer, intent(in) :: alg
+      real(wp), intent(in) :: tol
+      real(wp), parameter :: rule(3, 6) = reshape([-0.6_wp, -0.9_wp, 0.2_wp, &
+         0.6_wp, -0.9_wp, 0.2_wp, 0.0_wp, -0.3_wp, 0.1_wp, 0.0_wp, 0.3_wp, 0.1_wp, &
+         -0.6_wp, 0.9_wp, 0.2_wp, 0.6_wp, 0.9_wp, 0.2_wp], [3, 6])
+      real(wp), parameter :: ra = 0.5_wp, ts = 2.0_wp, tt = 1.0_wp, l0 = 10.0_wp
+      real(wp), parameter :: dt = 1.0e-3_wp, w0 = 1.0_wp, sy0 = 0.05_wp
+      type(mat_plastic_kinematic_t) :: pp
+      type(elem_block_t) :: blk
+      type(block_result_t) :: res
+      type(part_t) :: part
+      type(family_t) :: fam
+      real(wp) :: sec(5), hs, ht, x(3, 2), z(3, 2), w(3, 2), f(3, 2), mom(3, 2), mp, r(6)
+      integer :: k, c
+      call beam_hl_section(0, ts, tt, sec, hs, ht, rule, ra)
+      call check_close(sec(1), ra*ts*tt, 0.0_wp, 1.0e-15_wp, 'user rule: A = RA TS TT')
+      call check_close(sec(2), sec(1)*0.25_wp*tt*tt*(0.8_wp*0.81_wp + 0.2_wp*0.09_wp), 0.0_wp, &
+                       1.0e-14_wp, 'user rule: ISS = A sum WF (T TT/2)**2')
+      call check_close(sec(3), sec(1)*0.25_wp*ts*ts*0.8_wp*0.36_wp, 0.0_wp, 1.0e-14_wp, &
+                       'user rule: ITT = A sum WF (S TS/2)**2')
+      pp%ro = 7.85e-6_wp; pp%e = ey; pp%pr = pr; pp%sigy = sy0; pp%etan = 0.0_wp
+      pp%beta = 1.0_wp
+      call pp%setup(err)
+      pp%ps_alg = alg
+      call check(.not. allocated(err), 'user rule: MAT_003 setup')
+      part%shrf = 5.0_wp/6.0_wp; part%bqr = -3; part%bcst = 0
+      part%brule = rule; part%bra = ra
+      fam = element_family(ETYPE_BEAM_HL)
+      blk%etype = ETYPE_BEAM_HL
+      blk%nel = 1; blk%nip = 6; blk%nhv = pp%nhist()
+      allocate(blk%conn(2, 1), blk%elem(1), blk%sig(1, 6, 6), blk%hv(1, blk%nhv, 6), &
+               blk%vol0(1), blk%relvol(1), blk%eint(1), blk%ehg(1), blk%failed(1))
+      blk%conn(:, 1) = [1, 2]
+      blk%elem = 1
+      blk%sig = 0.0_wp; blk%hv = 0.0_wp
+      blk%vol0 = sec(1)*l0
+      blk%relvol = 1.0_wp; blk%eint = 0.0_wp; blk%ehg = 0.0_wp
+      blk%failed = .false.
+      call blk%es_add(ES_WORK, fam%es_ncol(ES_WORK))
+      call blk%es_add(ES_BEAM, fam%es_ncol(ES_BEAM))
+      call beam_bs_init(blk, 1, [0.0_wp, 1.0_wp, 0.0_wp], sec)
+      c = blk%esc(ES_BEAM)
+      blk%es(1, c + BM_TH:c + BM_TH + 1) = [ts, tt]
+      x(:, 1) = 0.0_wp; x(:, 2) = [l0, 0.0_wp, 0.0_wp]
+      z = 0.0_wp
+      w(:, 1) = [0.0_wp, -w0, 0.0_wp]; w(:, 2) = [0.0_wp, w0, 0.0_wp]
+      ! curvature 2 w0 dt/L0 per step: 100 steps, 2e-2/mm, the web (t = 0.15) at 3e-3 = 12.6
+      ! times the yield strain 0.05/210
+      do k = 1, 100
+         f = 0.0_wp; mom = 0.0_wp
+         call beam_hl_block(blk, pp, part, x, z, w, dt, f, mom, res)
+      end do
+      call check(res%ibad == 0, 'user rule: bending, no error')
+      r = blk%es(1, c + BM_RES:c + BM_RES + 5)
+      mp = sy0*sec(1)*0.5_wp*tt*(0.8_wp*0.9_wp + 0.2_wp*0.3_wp)
+      call check_close(0.5_wp*(r(4) - r(3)), mp, 0.0_wp, tol, 'user rule, MITER '// &
+                       achar(48 + alg)//': fully plastic moment = SIGY A (TT/2) sum WF |T|')
+      call check_close(r(1), 0.0_wp, 1.0e-13_wp*mp/tt, 0.0_wp, 'user rule: N = 0')
+   end subroutine user_rule_plastic_moment
 end program test_beam_hl
