@@ -6,7 +6,7 @@ module dx_read_curves
    use dx_error, only: error_t
    use dx_strings, only: str, rstr
    use dx_deck_cards, only: deck_t, block_t, get_int, get_real, field_error, block_error, &
-                            std_widths, data_start, card_error
+                            std_widths, data_start
    use dx_deck_registry, only: registry_t
    use dx_curve, only: curve_t
    use dx_model_input, only: model_input_t, origin
@@ -86,8 +86,9 @@ contains
          c%y(i) = c%sfo*(o + c%offo)
          if (i > 1) then
             if (.not. (c%x(i) > c%x(i-1))) then
-               call card_error(deck, blk, ic, 'abscissae must increase: point '//str(i)// &
-                  ' has A = '//rstr(a)//' after '//rstr(c%x(i-1)), error)
+               call field_error(deck, blk, ic, 1, wp2, 'A'//str(i), 'abscissae must '// &
+                  'increase: point '//str(i)//' has A = '//rstr(a)//' after '//rstr(c%x(i-1)), &
+                  error)
                return
             end if
          end if

@@ -118,7 +118,7 @@ contains
    subroutine pl_setup(self, error)
       class(mat_piecewise_linear_t), intent(inout) :: self
       type(error_t), allocatable, intent(out) :: error
-      integer :: n, i
+      integer :: n
       call check_elastic_constants(self, self%e, self%pr, error)
       if (allocated(error)) return
       if (self%tdel /= 0.0_wp) then
@@ -143,12 +143,11 @@ contains
          call set_field_error(error, 'LCSR', 'VP = 1 with a rate curve is not supported'); return
       end if
       if (self%bilinear .and. any(self%es /= 0.0_wp)) then
-         ! EPS/ES pairs: the points up to the last with increasing EPS
-         n = 1
-         do i = 2, 8
-            if (self%eps(i) <= self%eps(i-1)) exit
-            n = i
-         end do
+         ! EPS/ES pairs (LS-DYNA: EPS1 < EPS2 < ...; the table ends at the first EPSk = 0
+         ! after EPS1): a non-zero EPSk that does not increase, or one after the end, is
+         ! refused naming the field (never a silently shortened table)
+         call eps_table_length(self%eps, n, error)
+         if (allocated(error)) return
          if (n < 2) then
             call set_error(error, 'fields EPS1-8/ES1-8: at least two points with increasing '// &
                            'EPS are needed'); return
@@ -178,6 +177,38 @@ contains
       end if
       self%hv_eps_p = 1
    end subroutine pl_setup
+
+   !> The number n of EPS1-8 points in the table (LS-DYNA's *MAT_024 cards 3-4): EPS1 >= 0,
+   !> then EPS2, EPS3, ... each > the one before, up to the first EPSk = 0 (k >= 2) which
+   !> ends the table; every EPS after the end must be 0. Errors name the field.
+   subroutine eps_table_length(eps, n, error)
+      real(wp), intent(in) :: eps(8)
+      integer, intent(out) :: n
+      type(error_t), allocatable, intent(out) :: error
+      integer :: i
+      if (.not. (eps(1) >= 0.0_wp)) then
+         call set_field_error(error, 'EPS1', 'plastic strain must be >= 0, got '//rstr(eps(1)))
+         n = 0; return
+      end if
+      n = 1
+      do i = 2, 8
+         if (eps(i) == 0.0_wp) exit
+         if (.not. (eps(i) > eps(i-1))) then
+            call set_field_error(error, 'EPS'//str(i), 'the plastic strains EPS1-8 must '// &
+               'increase: EPS'//str(i)//' = '//rstr(eps(i))//' after EPS'//str(i-1)//' = '// &
+               rstr(eps(i-1))//' (EPSk = 0 ends the table)')
+            return
+         end if
+         n = i
+      end do
+      do i = n + 2, 8
+         if (eps(i) /= 0.0_wp) then
+            call set_field_error(error, 'EPS'//str(i), 'the table ended at EPS'//str(n+1)// &
+               ' = 0; a later value '//rstr(eps(i))//' would be ignored')
+            return
+         end if
+      end do
+   end subroutine eps_table_length
 
    pure integer function pl_nhist(self)
       class(mat_piecewise_linear_t), intent(in) :: self

@@ -101,6 +101,24 @@ program test_materials
    sig = 0.0_wp; hv = 0.0_wp
    s = uniaxial(pl, 0.1_wp, sig, hv)
    call check_close(s, 330.0_wp/1.0025_wp, 0.0_wp, 1.0e-10_wp, 'mat24 EPS/ES table')
+   ! EPS1-8 (LS-DYNA): increasing, the first EPSk = 0 after EPS1 ends the table; a value that
+   ! does not increase or one after the end is refused naming the field (no silent cut)
+   pl%eps(1:4) = [0.0_wp, 0.02_wp, 0.2_wp, 0.05_wp]; pl%es(1:4) = [250.0_wp, 290.0_wp, &
+                                                                   380.0_wp, 400.0_wp]
+   pl%bilinear = .true.
+   call pl%setup(err)
+   call check(allocated(err), 'mat24 EPS4 < EPS3 refused')
+   if (allocated(err)) call check(err%field == 'EPS4', 'mat24 EPS4 < EPS3: names EPS4')
+   pl%eps(1:4) = [0.0_wp, 0.02_wp, 0.0_wp, 0.3_wp]
+   pl%bilinear = .true.
+   call pl%setup(err)
+   call check(allocated(err), 'mat24 EPS4 after the end (EPS3 = 0) refused')
+   if (allocated(err)) call check(err%field == 'EPS4', 'mat24 EPS after the end: names EPS4')
+   pl%eps(1:4) = [0.0_wp, 0.02_wp, 0.2_wp, 0.0_wp]; pl%es(4) = 0.0_wp
+   pl%bilinear = .true.
+   call pl%setup(err)
+   call check(.not. allocated(err), 'mat24 EPS table ended by EPS4 = 0')
+   if (.not. allocated(err)) call check(size(pl%hard%x) == 3, 'mat24 EPS table: 3 points')
    ! Cowper-Symonds VP=0, perfectly plastic, pure shear at a known rate:
    ! effective deviatoric rate = (2/sqrt 3) e12/dt
    pl = mat_piecewise_linear_t()
