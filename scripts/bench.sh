@@ -11,7 +11,12 @@
 # of resultant beams (ELFORM 2), of Hughes-Liu beams (ELFORM 1, 2x2 Gauss, elastic) and of
 # Hughes-Liu beams of *MAT_003 yielding (the plastic cantilever's tip rotation, 4x4 Gauss);
 # BENCH_ONLY=beam runs only these rows. Shells: the 80x16 cantilever plate of ELFORM 2 and 16
-# (BENCH_ONLY=shell).
+# (BENCH_ONLY=shell). 2D solids (issue 19): the round elastic bar of scripts/gen_quad2d_decks.py
+# bar, 20 x 600 quads of ELFORM 13, 14, 15 (plane strain, area- and volume-weighted
+# axisymmetric), and the 2D-vs-3D cost: the 10 x 300 ELFORM 15 bar (quad2d_bar_vw's bar at
+# twice its resolution) against the same bar as a quarter of 3D hexahedra on the same r-z
+# mesh (gen_quad2d_decks.py hexbar: 10 rings x 8 x 300, wedges at the axis, as quad2d_bar_hex),
+# to the same end time, the ratio of their user times (BENCH_ONLY=quad).
 # Appends a dated table to docs/performance.md.
 set -e
 cd "$(dirname "$0")/.."
@@ -55,6 +60,31 @@ shell_rows() {
         run_case shell_elform${ef}_1280 $B/shell_$ef.k 1280
     done
 }
+# 2D solids (issue 19): ns per quad element-cycle, then the axisymmetric bar against its 3D twin
+quad_rows() {
+    for ef in 13 14 15; do
+        mkdir -p $B/quad_$ef
+        python3 scripts/gen_quad2d_decks.py bar $B/quad_$ef $ef 20 600
+        run_case quad_elform${ef}_12000 $B/quad_$ef/deck.k 12000
+    done
+    mkdir -p $B/bar2d $B/bar3d
+    python3 scripts/gen_quad2d_decks.py bar $B/bar2d 15 10 300
+    run_case bar2d_elform15_3000 $B/bar2d/deck.k 3000
+    python3 scripts/gen_quad2d_decks.py hexbar $B/bar3d 10 8 300
+    run_case bar3d_hex_24000 $B/bar3d/deck.k 24000
+    t2=$(tail -1 $B/bar2d_elform15_3000.cpu); t3=$(tail -1 $B/bar3d_hex_24000.cpu)
+    r=$(python3 -c "print('%.3f' % ($t2/$t3) if $t3 > 0 else 'n/a')")
+    { echo ""
+      echo "2D against 3D (the same round bar, same r-z mesh, same end time): user time" \
+           "bar2d_elform15_3000 $t2 s / bar3d_hex_24000 $t3 s = $r"; } >> $B/table.md
+    echo "bench: 2D/3D user time $t2 / $t3 = $r"
+}
+if [ "${BENCH_ONLY:-}" = quad ]; then
+    quad_rows
+    cat $B/table.md >> docs/performance.md
+    cat $B/table.md
+    exit 0
+fi
 if [ "${BENCH_ONLY:-}" = shell ]; then
     shell_rows
     cat $B/table.md >> docs/performance.md
@@ -117,5 +147,6 @@ if [ -f ../shared/bench/gen_taylor.py ] && [ "${BENCH_ONLY:-}" != hirate ]; then
 fi
 [ "${BENCH_ONLY:-}" != hirate ] && beam_rows
 [ "${BENCH_ONLY:-}" != hirate ] && shell_rows
+[ "${BENCH_ONLY:-}" != hirate ] && quad_rows
 cat $B/table.md >> docs/performance.md
 cat $B/table.md

@@ -13,7 +13,7 @@
                                             pressure pulse (0.1 GPa, 2 us) in the cavity; NR = 1:
                                             the outer sphere non-reflecting
   gen_nr2d_decks.py cyl DECK ROUT NR        the same quarter ring in plane strain (ELFORM 13),
-                                            rollers on x = 0 and y = 0: a cylindrical wave
+                                            rollers on x = 0 and y = 0: a cylindrical wave (regression nr2d_cylinder)
   gen_nr2d_decks.py table DECK               axisymmetric (ELFORM 15) free block r 0..20, y 0..10
                                             mm (1 mm elements) under *DYNX_PRESSURE_TABLE on
                                             its top face from the file table.dat beside DECK
