@@ -37,6 +37,14 @@ shells, nx by ny elements, length L along x, width B along y, thickness T.
       shells (part 2) dropped flat at 5 mm/ms on the free 40 x 40 x 1 mm plate, centred; first
       gap 0.1 mm between the contact surfaces (both half a thickness off their mid-surfaces),
       *CONTACT_KW (shell_contact_plates)
+  gen_shell_deck.py circle NX ELFORM [OUT]  a cantilever strip 12 x 1 x 0.1 of NX x 1 shells
+      (E 1.2e6, PR 0, RHO 1: Sze, Liu and Lo 2004's benchmark, E I = 100), clamped at x = 0,
+      at rest under an end moment about y (*LOAD_NODE_POINT DOF 6, M/2 on each tip node)
+      M = 2 pi E I/L raised smoothly (1 - cos) over 80 (10 first periods) and held to 160:
+      the strip rolls into a full circle of radius L/(2 pi), the tip back at the root; the
+      middle and tip nodes of the edge y = 0 in nodout (shell_moment_circle cases); the
+      other nodes held to the plane motion (y and the rotations about x, z fixed) unless the
+      last argument is 'free'
 """
 import math
 import os
@@ -439,6 +447,41 @@ def plates(kw):
     return s
 
 
+def circle(nx, elform, planar=True):
+    """the rolled-up cantilever strip of the module docstring; planar: the other nodes held
+    to the x-z plane's motion (y, the rotations about x and z fixed: exact for PR = 0)"""
+    L, B, T, EC, RC = 12.0, 1.0, 0.1, 1.2e6, 1.0
+    nodes, elems = grid(nx, 1, L, B)
+    tip = [nx + 1, 2*(nx + 1)]
+    s = head(f'Cantilever strip {nx}x1 shells (ELFORM {elform}), end moment 2 pi E I/L '
+             '(rolled into a circle)', 160.0, 20.0, 0.1, [nx//2 + 1, nx + 1])
+    k = s.index('*SECTION_SHELL')
+    s[k + 2] = f'         1{elform:10d}  0.833333         3'
+    s[k + 4] = f'{T:10.4f}'
+    m = s.index('*MAT_ELASTIC')
+    s[m + 2] = f'         1{RC:10.3e}{EC:10.4g}{0.0:10.3f}'
+    s += node_cards(nodes) + elem_cards(elems)
+    s += ['*DEFINE_CURVE', '         1']
+    for i in range(33):
+        t = 2.5*i
+        s.append(f'{t:20.8f}{0.5*(1.0 - math.cos(math.pi*t/80.0)):20.10f}')
+    s.append(f'{1000.0:20.8f}{1.0:20.10f}')
+    mh = 0.5*2.0*math.pi*EC*B*T**3/12.0/L
+    s += ['*LOAD_NODE_POINT', '$     NID       DOF      LCID        SF']
+    s += [f'{n:10d}{6:10d}{1:10d}{mh:10.6f}' for n in tip]
+    s += ['*SET_NODE_LIST', '         1', f'{1:10d}{nx + 2:10d}']
+    s += ['*BOUNDARY_SPC_SET', '         1         0         1         1         1'
+          '         1         1         1']
+    if planar:
+        free = [n for n, x, y, z in nodes if x > 0.0]
+        s += ['*SET_NODE_LIST', '         2']
+        for k in range(0, len(free), 8):
+            s.append(''.join(f'{n:10d}' for n in free[k:k + 8]))
+        s += ['*BOUNDARY_SPC_SET', '         2         0         0         1         0'
+              '         1         0         1']
+    return s + ['*END']
+
+
 def main():
     kind = sys.argv[1]
     if kind == 'cantilever':
@@ -466,6 +509,11 @@ def main():
     elif kind == 'plates':
         lines = plates(sys.argv[2])
         out = sys.argv[3] if len(sys.argv) > 3 else None
+    elif kind == 'circle':
+        free = sys.argv[-1] == 'free'
+        args = sys.argv[:-1] if free else sys.argv
+        lines = circle(int(args[2]), int(args[3]), not free)
+        out = args[4] if len(args) > 4 else None
     elif kind == 'mixed':
         lines = mixed()
         out = sys.argv[2] if len(sys.argv) > 2 else None

@@ -40,6 +40,12 @@
   shell_check.py mirror OUT1 OUT2 NODE TOL
       two runs mirrored in z (the plate struck from either side): NODE's z velocity in OUT2
       is minus that in OUT1 at every nodout line, within TOL relative to the largest.
+  shell_check.py bent OUT M EI L T0 TOL_K TOL_KE
+      a cantilever held bent by an end moment M (gen_shell_deck.py circle): over t >= T0
+      the mean internal energy U (glstat) gives the mean curvature sqrt(2 U/(EI L)) (U =
+      EI k**2 L/2 for a uniform curvature k): within TOL_K relative of M/EI; the hourglass
+      energy below TOL_KE U; the largest kinetic energy over t >= T0 below TOL_KE of the
+      external work (quasi-static; the largest KE/W over the whole run is printed).
 """
 import math
 import sys
@@ -276,11 +282,29 @@ def mirror(argv):
     return len(a) == len(b) and worst <= tol
 
 
+def bent(argv):
+    out, m, ei, length, t0 = argv[0], *map(float, argv[1:5])
+    tol_k, tol_ke = float(argv[5]), float(argv[6])
+    rows = read_table(out + '/glstat')
+    late = [r for r in rows if r[0] >= t0]
+    u = sum(r[4] for r in late)/len(late)
+    k, kref = math.sqrt(2.0*u/(ei*length)), m/ei
+    ek = abs(k/kref - 1.0)
+    hg = max(abs(r[5]) for r in late)/u
+    ke = max(r[3]/r[6] for r in late)
+    ke_all = max(r[3]/r[6] for r in rows if r[6] > 0.0)
+    print(f'bent (from t = {t0:g}): mean internal energy {u:.6f} (M**2 L/(2 EI) '
+          f'{0.5*m*m*length/ei:.6f}), curvature {k:.6f} against M/EI {kref:.6f}: error '
+          f'{ek:.2e} (tol {tol_k:.1e}); hourglass/U {hg:.1e}, KE/W {ke:.2e} (tol {tol_ke:.1e}; '
+          f'over the whole run {ke_all:.2e})')
+    return ek <= tol_k and hg <= tol_ke and ke <= tol_ke
+
+
 def main():
     kind, argv = sys.argv[1], sys.argv[2:]
     ok = {'period': period, 'patch': patch, 'rotation': rotation, 'energy': energy,
           'yield': yield_check, 'contact': contact, 'mirror': mirror,
-          'pressure': pressure}[kind](argv)
+          'pressure': pressure, 'bent': bent}[kind](argv)
     if not ok:
         print('FAILED')
         sys.exit(1)
