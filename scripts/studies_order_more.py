@@ -265,8 +265,11 @@ def subsurface_case(m):
 
     def ns(t):
         return 'not by 3.5' if t is None else '%.1f' % (t * 1e6)
+    import h5py
+    with h5py.File(os.path.join(od, 'd3plot.h5'), 'r') as f:
+        nq = len(f['mesh/part_ids'])
     h = math.pi * 50.0 / (4 * m)            # the arc length of the particle's rim in nm
-    return {'label': 'M = %d (rim arc %.2f nm)' % (m, h), 'h': h, 'P': r['peak'],
+    return {'label': 'M = %d (%d quads, rim arc %.2f nm)' % (m, nq, h), 'h': h, 'P': r['peak'],
             'tp': r['tpeak'] * 1e6,
             'more': ['%.1f' % (r['tpeak'] * 1e6), ns(r['t_crack']), ns(r['t_spall']),
                      '%.1e' % r['ratio_dev']],
