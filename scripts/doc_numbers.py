@@ -418,6 +418,8 @@ BLOCKS = {
 }
 import doc_numbers_cases  # noqa: E402  (docs/extreme-cases.md sections 2-4)
 BLOCKS.update(doc_numbers_cases.BLOCKS)
+import doc_numbers_laser  # noqa: E402  (decks/laser_backside, decks/laser_subsurface)
+BLOCKS.update(doc_numbers_laser.BLOCKS)
 
 
 

@@ -49,6 +49,10 @@ SCENE_PAGES = ['Every scene under `decks/` and the page with its error against r
                '| hertz | [hertz.md](hertz.md) |',
                '| incline_friction | [scene_orders.md](scene_orders.md) |',
                '| knee_insert | [more_scene_orders.md](more_scene_orders.md) |',
+               '| laser_backside | [more_scene_orders.md](more_scene_orders.md) (no order '
+               'expected: crack model without a length scale) |',
+               '| laser_subsurface | [more_scene_orders.md](more_scene_orders.md) (no order '
+               'expected: crack model without a length scale) |',
                "| patch_test | none: constant strain is reproduced to round-off (no discretisation error to refine); the rigid rotation's residual is the prescribed curves' chords, about 1/N^2 in the curve points (decks/patch_test/README.md) |",
                '| pressure_table | [seed_scene_orders.md](seed_scene_orders.md) |',
                '| rod_impact | [scene_orders.md](scene_orders.md) |',
@@ -546,7 +550,8 @@ def readme(build, docs):
          'emc_bars, taylor_bar_axisym, taylor_steinberg), [seed_scene_orders.md]'
          '(seed_scene_orders.md) (brittle_impact, pressure_table, shell_projectile_plate, '
          'shell_box_post: mesh sweeps, Richardson), [more_scene_orders.md](more_scene_orders.md) '
-         '(brittle_impact_2d, cmc_implant, ssnv104, knee_insert: mesh sweeps, Richardson), '
+         '(brittle_impact_2d, cmc_implant, ssnv104, knee_insert, laser_backside, '
+         'laser_subsurface: mesh sweeps, Richardson), '
          '[emc.md](emc.md) (conserving contact: ball in a box, ball in a shell, '
          'bars), [hertz.md](hertz.md), [ball_in_box.md](ball_in_box.md), [spall.md](spall.md), '
          '[lamina.md](lamina.md); the stiff and extreme cases: [stability.md](stability.md). '
