@@ -418,6 +418,8 @@ BLOCKS = {
 }
 import doc_numbers_cases  # noqa: E402  (docs/extreme-cases.md sections 2-4)
 BLOCKS.update(doc_numbers_cases.BLOCKS)
+import doc_numbers_decks  # noqa: E402  (deck READMEs, round 3b)
+BLOCKS.update(doc_numbers_decks.BLOCKS)
 
 
 
@@ -643,6 +645,7 @@ def main():
         results += check_wave_taylor(work)
         results += check_hertz()
         results += check_coverage()
+        results += doc_numbers_decks.checks(compare)
         nf = 0
         for what, bad in results:
             print('%s %s' % ('FAIL' if bad else 'ok  ', what))
