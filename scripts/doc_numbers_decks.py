@@ -416,40 +416,53 @@ def block_emc_matrix(work):
                              % (out.strip().split('\n')[-1], e, p, v, g)])
 
 
-def block_post_miter(work):
-    """decks/shell_box_post/README.md 'The four algorithms': the regression case
-    shell_scene_post's decks (6 per side, 2 ms, MITER 4, 1, 2, 3) and a 12 per side MITER 2 run
-    (gen_shell_scenes.py post 12 --tend 2.0 --dplot 0.2), the largest differences to the
-    MITER 2 run as shell_scene_check.py agree measures them (its check): about 20 CPU s,
-    written by --update (make studies), not rerun by --check."""
+def shell_miter(work, case_name, scene, nfine, tend, dplot, coarse, fine):
+    """The 'four algorithms' table of a seed shell scene: the regression case's decks (MITER
+    4, 1, 2, 3 on its mesh) and a finer MITER 2 run (gen_shell_scenes.py SCENE NFINE), the
+    largest differences to the case's MITER 2 run as shell_scene_check.py agree measures them
+    (the case's check)."""
+    import contextlib
+    import io
     import shell_scene_check as ssc
-    case = os.path.join(ROOT, 'tests/regression/shell_scene_post')
+    case = os.path.join(ROOT, 'tests/regression', case_name)
     od = {}
     for m, deck in (('4', 'deck.k'), ('1', 'deck_miter1.k'), ('2', 'deck_miter2.k'),
                     ('3', 'deck_miter3.k')):
-        od[m] = os.path.join(work, 'post_m' + m)
+        od[m] = os.path.join(work, '%s_m%s' % (scene, m))
         rc, log = sh([DYNX, '-i', os.path.join(case, deck), '-o', od[m]])
         if rc != 0:
-            raise SystemExit('doc_numbers_decks: shell_scene_post %s: exit %d' % (deck, rc))
-    d12 = os.path.join(work, 'post12')
-    sh([PY, 'scripts/gen_shell_scenes.py', 'post', '12', d12, '--tend', '2.0', '--dplot', '0.2'])
-    rc, log = sh([DYNX, '-i', os.path.join(d12, 'deck_miter2.k'), '-o', d12 + '_out'])
+            raise SystemExit('doc_numbers_decks: %s %s: exit %d' % (case_name, deck, rc))
+    df = os.path.join(work, '%s%d' % (scene, nfine))
+    sh([PY, 'scripts/gen_shell_scenes.py', scene, str(nfine), df, '--tend', tend, '--dplot',
+        dplot])
+    rc, log = sh([DYNX, '-i', os.path.join(df, 'deck_miter2.k'), '-o', df + '_out'])
     if rc != 0:
-        raise SystemExit('doc_numbers_decks: post 12 MITER 2: exit %d' % rc)
+        raise SystemExit('doc_numbers_decks: %s %d MITER 2: exit %d' % (scene, nfine, rc))
     mesh = os.path.join(case, 'mesh.k')
     worsts = []
-    import contextlib
-    import io
     with contextlib.redirect_stdout(io.StringIO()):
         ssc.cmd_agree(mesh, od['2'], [od['1'], od['4'], od['3']], {}, worsts=worsts)
-        ssc.cmd_agree(mesh, od['2'], [d12 + '_out'], {}, omesh=os.path.join(d12, 'mesh.k'),
+        ssc.cmd_agree(mesh, od['2'], [df + '_out'], {}, omesh=os.path.join(df, 'mesh.k'),
                       worsts=worsts)
     out = ['| | displacement [mm] | velocity [mm/ms] | von Mises [GPa] |', '|---|---|---|---|']
     for w, label in zip(worsts, ('(b) secant x 3 (MITER 1)', '(a) one-step (MITER 4)',
                                  '(c) radial scaling (MITER 3)',
-                                 'mesh: 6 against 12 per side (both MITER 2)')):
-        out.append('| %s | %.2g | %.2g | %.2g |' % (label, w['disp'], w['vel'], w['vm']))
+                                 'mesh: %s against %s (both MITER 2)' % (coarse, fine))):
+        out.append('| %s | %.3g | %.3g | %.3g |' % (label, w['disp'], w['vel'], w['vm']))
     return '\n'.join(out)
+
+
+def block_post_miter(work):
+    """decks/shell_box_post/README.md 'The four algorithms': shell_scene_post's decks (6 per
+    side, 2 ms) and a 12 per side MITER 2 run: about 20 CPU s, --update only."""
+    return shell_miter(work, 'shell_scene_post', 'post', 12, '2.0', '0.2', '6', '12 per side')
+
+
+def block_plate_miter(work):
+    """decks/shell_projectile_plate/README.md 'The four algorithms': shell_scene_plate's decks
+    (20 x 20, 1 ms) and a 40 x 40 MITER 2 run: about 12 CPU s, --update only."""
+    return shell_miter(work, 'shell_scene_plate', 'plate', 40, '1.0', '0.1', '20 x 20',
+                       '40 x 40')
 
 
 BLOCKS = {
@@ -474,6 +487,9 @@ BLOCKS = {
     'emc_matrix': ('docs/conserving-contact.md', True, block_emc_matrix),
     # the four MITER decks of shell_scene_post and a 12 per side run (about 20 CPU s)
     'post_miter': ('decks/shell_box_post/README.md', False, block_post_miter),
+    # the four MITER decks of shell_scene_plate and a 40 x 40 run (about 12 CPU s): --update
+    # only (the regression case asserts these differences' bounds and order)
+    'plate_miter': ('decks/shell_projectile_plate/README.md', False, block_plate_miter),
     # 2e5 explicit cycles (a minute or two): --update only
     'emc_explicit': ('docs/conserving-contact.md', False, block_emc_explicit),
 }
