@@ -465,6 +465,103 @@ def block_plate_miter(work):
                        '40 x 40')
 
 
+def block_erosion_dtmin(work):
+    """docs/extreme-cases.md 4b: the regression case erosion_dtmin_taylor (eroded energies, the
+    energy-ratio band, finite plot values, as its check) and the same deck run longer (end
+    0.01 ms) with DTMIN 0.5 and 0.9: exit code and the end or the error line (under a second
+    in all)."""
+    import dxpost
+    deck = os.path.join(ROOT, 'tests/regression/erosion_dtmin_taylor/deck.k')
+    od = os.path.join(work, 'ero')
+    rc, log = sh([DYNX, '-i', deck, '-o', od])
+    if rc != 0:
+        raise SystemExit('doc_numbers_decks: erosion_dtmin_taylor: exit %d\n%s' % (rc, log[-1500:]))
+    n, g = dxpost.columns(os.path.join(od, 'glstat'))
+    er = [r[n.index('energy_ratio')] for r in g]
+    _, fin = sh([PY, 'scripts/extreme_check.py', 'finite', od])
+    nonfin = int(re.search(r'(\d+) non-finite values', fin).group(1))
+    text = ('With ERODE = 1 the elements whose step falls below the floor erode instead '
+            '(dx_erosion), and the bar runs on past the floor to its end time (t = %.4g ms, '
+            'exit %d): eroded internal energy %.1f, eroded kinetic energy %.1f (impact-face '
+            'nodes no element holds any more, flying on), energy ratio %.5f to %.5f with the '
+            'eroded energies in it, %s.'
+            % (g[-1][0], rc, g[-1][n.index('eroded_internal_energy')],
+               g[-1][n.index('eroded_kinetic_energy')], min(er), max(er),
+               'every plot value finite' if nonfin == 0 else '%d non-finite values' % nonfin))
+    src = open(deck).read().split('\n')
+    k = [j for j, l in enumerate(src) if l.startswith('*CONTROL_TERMINATION')][0] + 2
+    longer = []
+    for dtmin in ('0.5', '0.9'):
+        src[k] = '   0.01000         0     %s' % dtmin
+        path = os.path.join(work, 'ero_%s.k' % dtmin)
+        with open(path, 'w') as f:
+            f.write('\n'.join(src))
+        rc, log = sh([DYNX, '-i', path, '-o', os.path.join(work, 'ero_%s' % dtmin)])
+        m = re.search(r'normal termination at cycle (\d+), time (\S+), energy ratio (\S+)', log)
+        if rc == 0 and m:
+            longer.append('DTMIN %s: exit 0 at cycle %s, energy ratio %.4f at the end'
+                          % (dtmin, m.group(1), float(m.group(3))))
+        else:
+            err = re.search(r'^dynx: error: (.*)$', log, re.M)
+            longer.append('DTMIN %s: exit %d (%s)' % (dtmin, rc, err.group(1) if err else '?'))
+    return text + ' Run longer (end 0.01 ms): ' + '; '.join(longer) + '.'
+
+
+def block_loaded_start(work):
+    """docs/extreme-cases.md 6a: decks/elastic_wave/deck.k with glstat every cycle (a copy with
+    *DATABASE_GLSTAT 1e-30): the energy ratio over the first cycles of a loaded start."""
+    import dxpost
+    src = open(os.path.join(ROOT, 'decks/elastic_wave/deck.k')).read()
+    src, n = re.subn(r'(\*DATABASE_GLSTAT\s*\n)\s*\S+', r'\1 1.0e-30', src, count=1)
+    if n != 1:
+        raise SystemExit('doc_numbers_decks: decks/elastic_wave/deck.k: no *DATABASE_GLSTAT')
+    path = os.path.join(work, 'wave_cycles.k')
+    with open(path, 'w') as f:
+        f.write(src)
+    od = os.path.join(work, 'wave_cycles')
+    rc, log = sh([DYNX, '-i', path, '-o', od])
+    if rc != 0:
+        raise SystemExit('doc_numbers_decks: elastic_wave: exit %d\n%s' % (rc, log[-1500:]))
+    names, rows = dxpost.columns(os.path.join(od, 'glstat'))
+    ratio = {int(r[1]): r[names.index('energy_ratio')] for r in rows}
+    cyc = (0, 1, 2, 3, 5, 10, 50)
+    return ('Measured (`scripts/doc_numbers.py`, checked by `make test`): `decks/elastic_wave` '
+            '(a prescribed velocity from t = 0) with glstat every cycle, energy ratio at cycles %s: '
+            '%s.' % (', '.join(str(c) for c in cyc), ', '.join('%.3f' % ratio[c] for c in cyc)))
+
+
+def block_contact_sfs(work):
+    """docs/extreme-cases.md, Contact: the two rods (gen_contact_decks.py rod --nx 50 --sfs S)
+    for SFS = 0.01 ... 1000 today: cycles, contact duration against 2L/c, velocities after
+    release and the energy ratio band (contact_post.py rod; six runs of up to 6000 cycles of
+    100 hexes, a few CPU s)."""
+    from contact_post import table as rc_table
+    out = ['| SFS | cycles | contact duration [ms] | striker after [m/s] | target after [m/s] | '
+           'energy ratio range |', '|---|---|---|---|---|---|']
+    for sfs in ('0.01', '0.1', '1', '10', '100', '1000'):
+        deck = os.path.join(work, 'rod_sfs_%s.k' % sfs)
+        sh([PY, 'scripts/gen_contact_decks.py', 'rod', '--nx', '50', '--sfs', sfs, deck])
+        od = os.path.join(work, 'rod_sfs_%s' % sfs)
+        rc, log = sh([DYNX, '-i', deck, '-o', od])
+        if rc != 0:
+            raise SystemExit('doc_numbers_decks: rod SFS %s: exit %d\n%s' % (sfs, rc, log[-1500:]))
+        cyc = int(re.search(r'normal termination at cycle (\d+)', log).group(1))
+        _, post = sh([PY, 'scripts/contact_post.py', 'rod', od, '--nx', '50'])
+        v = {}
+        for m in re.finditer(r'^(.*?\S)\s+(\S+)\s+reference\s+(\S+)', post, re.M):
+            v[m.group(1)] = (float(m.group(2)), float(m.group(3)))
+        dur, t2 = v['contact duration [ms] vs 2L/c']
+        names, rows = rc_table(os.path.join(od, 'rcforc'))
+        held = rows[-1][names.index('nactive')] > 0
+        m = re.search(r'energy ratio min (\S+) max (\S+)', post)
+        out.append('| %s | %d | %s | %.3f | %.3f | %s .. %s |'
+                   % (sfs, cyc, 'never released' if held else '%.5f (%+.2g %%)'
+                      % (dur, 100 * (dur / t2 - 1)),
+                      v['striker velocity after release [m/s]'][0],
+                      v['target velocity after release [m/s]'][0], m.group(1), m.group(2)))
+    return '\n'.join(out)
+
+
 BLOCKS = {
     # reads docs/studies/ball_in_box.md (no run)
     'ball_in_box': ('decks/ball_in_box/README.md', True, block_ball_in_box),
@@ -490,6 +587,12 @@ BLOCKS = {
     # the four MITER decks of shell_scene_plate and a 40 x 40 run (about 12 CPU s): --update
     # only (the regression case asserts these differences' bounds and order)
     'plate_miter': ('decks/shell_projectile_plate/README.md', False, block_plate_miter),
+    # three tiny erosion runs (under a second)
+    'erosion_dtmin': ('docs/extreme-cases.md', True, block_erosion_dtmin),
+    # the elastic wave deck, glstat every cycle (71 cycles)
+    'loaded_start': ('docs/extreme-cases.md', True, block_loaded_start),
+    # six rod runs (up to 6000 cycles of 100 hexes)
+    'contact_sfs': ('docs/extreme-cases.md', True, block_contact_sfs),
     # 2e5 explicit cycles (a minute or two): --update only
     'emc_explicit': ('docs/conserving-contact.md', False, block_emc_explicit),
 }
