@@ -562,6 +562,26 @@ def block_contact_sfs(work):
     return '\n'.join(out)
 
 
+def block_hertz_implicit(work):
+    """decks/hertz/README.md: the regression case implicit_hertz_coarse (n = 4, SFS 100, two
+    Newton load steps; about 2.3 CPU s) against Hertz through contact_post.py hertz, as its
+    check."""
+    od = os.path.join(work, 'implicit_hertz')
+    rc, log = sh([DYNX, '-i', os.path.join(ROOT, 'tests/regression/implicit_hertz_coarse/deck.k'),
+                  '-o', od])
+    if rc != 0:
+        raise SystemExit('doc_numbers_decks: implicit_hertz_coarse: exit %d\n%s' % (rc, log[-1500:]))
+    _, out = sh([PY, 'scripts/contact_post.py', 'hertz', od, '--n', '4', '--zone', '0.8'])
+    a, aref = (float(x) for x in re.search(r'contact radius a \[mm\] vs Hertz\s+(\S+)\s+'
+                                           r'reference\s+(\S+)', out).groups())
+    p, pref = (float(x) for x in re.search(r'peak pressure p0 \[GPa\] vs Hertz\s+(\S+)\s+'
+                                           r'reference\s+(\S+)', out).groups())
+    f = float(re.search(r'force F = (\S+) kN', out).group(1))
+    return ('Measured (`scripts/doc_numbers.py`, checked by `make test`): F = %.3f kN, a = %.4f '
+            'mm (%+.1f %% against Hertz %.4f), p0 = %.3f GPa (%+.1f %% against %.3f).'
+            % (f, a, 100 * (a / aref - 1), aref, p, 100 * (p / pref - 1), pref))
+
+
 BLOCKS = {
     # reads docs/studies/ball_in_box.md (no run)
     'ball_in_box': ('decks/ball_in_box/README.md', True, block_ball_in_box),
@@ -593,6 +613,8 @@ BLOCKS = {
     'loaded_start': ('docs/extreme-cases.md', True, block_loaded_start),
     # six rod runs (up to 6000 cycles of 100 hexes)
     'contact_sfs': ('docs/extreme-cases.md', True, block_contact_sfs),
+    # one implicit Hertz run (n = 4, 2 load steps, about 2.3 CPU s)
+    'hertz_implicit': ('decks/hertz/README.md', True, block_hertz_implicit),
     # 2e5 explicit cycles (a minute or two): --update only
     'emc_explicit': ('docs/conserving-contact.md', False, block_emc_explicit),
 }
