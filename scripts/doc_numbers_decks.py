@@ -5,18 +5,23 @@ the page, whose own cheap rows doc_numbers.py reruns) or reruns the deck when th
 import math
 import os
 import re
-import subprocess
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-DYNX = os.path.join(ROOT, 'bin', 'dynx')
-PY = '/usr/bin/python3'
+from doc_numbers_cases import DYNX, PY, ROOT, sh
 
 
-def sh(cmd):
-    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                       cwd=ROOT)
-    return p.returncode, p.stdout
+def run_generated(work, name, gen, **kw):
+    """Write WORK/NAME.k with gen(path, **kw), run it (exit 0 required), keep its log in
+    WORK/NAME.log: (outdir, log)."""
+    k = os.path.join(work, name + '.k')
+    o = os.path.join(work, name)
+    gen(k, **kw)
+    rc, log = sh([DYNX, '-i', k, '-o', o])
+    if rc != 0:
+        raise SystemExit('doc_numbers_decks: %s: exit %d\n%s' % (name, rc, log[-1500:]))
+    with open(os.path.join(work, name + '.log'), 'w') as f:
+        f.write(log)
+    return o, log
 
 
 def table(path, section=None):
@@ -113,14 +118,7 @@ def block_cmc_loads(work):
     import cmc_implant as ci
 
     def one(name, **kw):
-        k = os.path.join(work, name + '.k')
-        o = os.path.join(work, name)
-        ci.gen(k, n=6, **kw)
-        rc, log = sh([DYNX, '-i', k, '-o', o])
-        if rc != 0:
-            raise SystemExit('doc_numbers_decks: cmc %s: exit %d\n%s' % (name, rc, log[-1500:]))
-        with open(os.path.join(work, name + '.log'), 'w') as f:
-            f.write(log)
+        o, _ = run_generated(work, name, ci.gen, n=6, **kw)
         its = sum(len(q) for q in ci.newton_log(os.path.join(work, name + '.log')))
         return ci.result(o) + (its,)
     out = ['| load | socket | peak pressure MPa | max von Mises MPa | max plastic strain | '
@@ -222,14 +220,7 @@ def block_knee_flex(work):
     import knee_insert as ki
 
     def one(name, **kw):
-        k = os.path.join(work, name + '.k')
-        o = os.path.join(work, name)
-        ki.gen(k, n=4, **kw)
-        rc, log = sh([DYNX, '-i', k, '-o', o])
-        if rc != 0:
-            raise SystemExit('doc_numbers_decks: knee %s: exit %d\n%s' % (name, rc, log[-1500:]))
-        with open(os.path.join(work, name + '.log'), 'w') as f:
-            f.write(log)
+        o, log = run_generated(work, name, ki.gen, n=4, **kw)
         its = sum(1 for l in log.split('\n') if 'residual ratio' in l)
         return ki.result(o) + (its,)
     out = ['| flexion | condyle R mm | Reff mm | F N | peak -sigma_zz MPa | max von Mises MPa | '
