@@ -420,6 +420,8 @@ import doc_numbers_cases  # noqa: E402  (docs/extreme-cases.md sections 2-4)
 BLOCKS.update(doc_numbers_cases.BLOCKS)
 import doc_numbers_laser  # noqa: E402  (decks/laser_backside, decks/laser_subsurface)
 BLOCKS.update(doc_numbers_laser.BLOCKS)
+import doc_numbers_decks  # noqa: E402  (deck READMEs, round 3b)
+BLOCKS.update(doc_numbers_decks.BLOCKS)
 
 
 
@@ -645,6 +647,7 @@ def main():
         results += check_wave_taylor(work)
         results += check_hertz()
         results += check_coverage()
+        results += doc_numbers_decks.checks(compare)
         nf = 0
         for what, bad in results:
             print('%s %s' % ('FAIL' if bad else 'ok  ', what))
