@@ -90,8 +90,11 @@ BRITTLE2D = {
               'no fracture-energy regularisation, so the damage localises with the mesh and the '
               'damaged region need not converge (Bazant & Oh 1983, crack band theory); the '
               'fringe is also read on cells, in steps of h. What is listed is what dynx gives: '
-              'the outer diameter falls and the depth grows with n. The energy error comes with '
-              'the cracking (docs/design.md), not the non-reflecting boundary (unchanged by the '
+              'the outer diameter stays at 0.91-0.95 mm (within one n 16 element), the inner '
+              'diameter and the depth grow with n. Contact: card 3 ISTIFF 1, the soft '
+              'constraint (ISTIFF 0\'s segment penalty created +4.1 % of the impact energy in '
+              'axisymmetry: review2 C1, docs/history.md). The energy error comes with the '
+              'cracking (docs/design.md), not the non-reflecting boundary (unchanged by the '
               'centred dashpot).'}
 
 
