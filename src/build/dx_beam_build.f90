@@ -52,13 +52,15 @@ contains
       type(part_t), intent(inout) :: p
       character(*), intent(in) :: w
       type(error_t), allocatable, intent(out) :: error
-      integer :: k, n, first
+      integer :: k, n, first, nrule
       real(wp) :: hs, ht
       associate (sec => model%sections(p%isec), m => model%mats(p%imat)%m)
          p%bsec = sec%bprop(1:5)
          if (etype_of_beam_elform(sec%elform) == ETYPE_BEAM_HL) then
             if (sec%qr < 0) then       ! the user rule -QR of *INTEGRATION_BEAM
-               do k = 1, merge(size(inp%brules), 0, allocated(inp%brules))
+               nrule = 0        ! (merge would evaluate size() of an unallocated array)
+               if (allocated(inp%brules)) nrule = size(inp%brules)
+               do k = 1, nrule
                   if (inp%brules(k)%irid /= -sec%qr) cycle
                   p%brule = inp%brules(k)%pts
                   p%bra = inp%brules(k)%ra
